@@ -1,0 +1,8 @@
+//! SIMD batch kernels over all particles: the kick to an observation time and the moment sums.
+//!
+//! Each kernel has a plain scalar twin; the `scalar` feature makes the dispatching functions use
+//! the twins (so CI tests both paths), and the tests compare the two with a fixed seed. SIMD is
+//! `wide::f64x4`, which picks SSE2/AVX/NEON at compile time (x86_64's baseline is SSE2).
+
+pub mod kick;
+pub mod sums;

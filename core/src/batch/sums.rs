@@ -1,0 +1,169 @@
+//! Moment sums over all particles, accumulated with SIMD: the raw moments GRW (6)-(9) and
+//! `|v|^4`, `|v|^6` in one pass, then the central `|c|^4`, `|c|^6` and `max |c|^2`
+//! (`c = v - V`) in a second pass once the bulk velocity `V` is known.
+//!
+//! Sums are taken lane-wise over blocks of four particles and reduced at the end, in a fixed
+//! order, so results depend only on the particle values.
+
+use crate::math::{Real, max};
+use crate::vec3::Vec3;
+use wide::f64x4;
+
+/// Unnormalized moment sums of a particle system.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Sums {
+    /// Number of particles `n`.
+    pub n: usize,
+    /// `sum v` (GRW (7) times n).
+    pub s1: [Real; 3],
+    /// `sum v v^T`, upper triangle `[xx, yy, zz, xy, xz, yz]` (GRW (8) times n).
+    pub s2: [Real; 6],
+    /// `sum v |v|^2` (twice GRW (9) times n).
+    pub s3: [Real; 3],
+    /// `sum |v|^4`.
+    pub s4: Real,
+    /// `sum |v|^6`.
+    pub s6: Real,
+    /// `sum |v - V|^4` with `V = s1 / n`.
+    pub c4: Real,
+    /// `sum |v - V|^6`.
+    pub c6: Real,
+    /// `max |v - V|^2`.
+    pub max_c2: Real,
+}
+
+/// The sums of the velocities `(vx, vy, vz)` (equal lengths, at least one particle): SIMD
+/// unless the `scalar` feature is on.
+pub fn accumulate(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
+    if cfg!(feature = "scalar") { accumulate_scalar(vx, vy, vz) } else { accumulate_simd(vx, vy, vz) }
+}
+
+/// Scalar twin of [`accumulate`].
+pub fn accumulate_scalar(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
+    let n = vx.len();
+    let mut s = Sums { n, ..Sums::default() };
+    for i in 0..n {
+        let (x, y, z) = (vx[i], vy[i], vz[i]);
+        let v2 = x * x + y * y + z * z;
+        s.s1[0] += x;
+        s.s1[1] += y;
+        s.s1[2] += z;
+        s.s2[0] += x * x;
+        s.s2[1] += y * y;
+        s.s2[2] += z * z;
+        s.s2[3] += x * y;
+        s.s2[4] += x * z;
+        s.s2[5] += y * z;
+        s.s3[0] += x * v2;
+        s.s3[1] += y * v2;
+        s.s3[2] += z * v2;
+        s.s4 += v2 * v2;
+        s.s6 += v2 * v2 * v2;
+    }
+    let bulk = bulk_of(&s);
+    for i in 0..n {
+        let c = Vec3::new(vx[i], vy[i], vz[i]) - bulk;
+        let c2 = c.norm2();
+        s.c4 += c2 * c2;
+        s.c6 += c2 * c2 * c2;
+        s.max_c2 = max(s.max_c2, c2);
+    }
+    s
+}
+
+fn bulk_of(s: &Sums) -> Vec3 {
+    let inv = 1.0 / s.n as Real;
+    Vec3::new(s.s1[0] * inv, s.s1[1] * inv, s.s1[2] * inv)
+}
+
+#[inline(always)]
+fn load(s: &[Real]) -> f64x4 {
+    f64x4::from([s[0], s[1], s[2], s[3]])
+}
+
+/// SIMD kernel of [`accumulate`]: four particles per lane-step.
+pub fn accumulate_simd(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
+    let n = vx.len();
+    let blocks = n / 4;
+    let z = f64x4::ZERO;
+    let (mut a1, mut a2, mut a3) = (z, z, z);
+    let (mut xx, mut yy, mut zz, mut xy, mut xz, mut yz) = (z, z, z, z, z, z);
+    let (mut b1, mut b2, mut b3, mut q4, mut q6) = (z, z, z, z, z);
+    for b in 0..blocks {
+        let k = 4 * b;
+        let (x, y, w) = (load(&vx[k..]), load(&vy[k..]), load(&vz[k..]));
+        let v2 = x * x + y * y + w * w;
+        a1 += x;
+        a2 += y;
+        a3 += w;
+        xx += x * x;
+        yy += y * y;
+        zz += w * w;
+        xy += x * y;
+        xz += x * w;
+        yz += y * w;
+        b1 += x * v2;
+        b2 += y * v2;
+        b3 += w * v2;
+        let v4 = v2 * v2;
+        q4 += v4;
+        q6 += v4 * v2;
+    }
+    let mut s = Sums {
+        n,
+        s1: [a1.reduce_add(), a2.reduce_add(), a3.reduce_add()],
+        s2: [
+            xx.reduce_add(),
+            yy.reduce_add(),
+            zz.reduce_add(),
+            xy.reduce_add(),
+            xz.reduce_add(),
+            yz.reduce_add(),
+        ],
+        s3: [b1.reduce_add(), b2.reduce_add(), b3.reduce_add()],
+        s4: q4.reduce_add(),
+        s6: q6.reduce_add(),
+        ..Sums::default()
+    };
+    for i in 4 * blocks..n {
+        let (x, y, w) = (vx[i], vy[i], vz[i]);
+        let v2 = x * x + y * y + w * w;
+        s.s1[0] += x;
+        s.s1[1] += y;
+        s.s1[2] += w;
+        s.s2[0] += x * x;
+        s.s2[1] += y * y;
+        s.s2[2] += w * w;
+        s.s2[3] += x * y;
+        s.s2[4] += x * w;
+        s.s2[5] += y * w;
+        s.s3[0] += x * v2;
+        s.s3[1] += y * v2;
+        s.s3[2] += w * v2;
+        s.s4 += v2 * v2;
+        s.s6 += v2 * v2 * v2;
+    }
+    let bulk = bulk_of(&s);
+    let (bx, by, bz) = (f64x4::splat(bulk.x), f64x4::splat(bulk.y), f64x4::splat(bulk.z));
+    let (mut c4, mut c6, mut m2) = (z, z, z);
+    for b in 0..blocks {
+        let k = 4 * b;
+        let (x, y, w) = (load(&vx[k..]) - bx, load(&vy[k..]) - by, load(&vz[k..]) - bz);
+        let c2 = x * x + y * y + w * w;
+        let c4v = c2 * c2;
+        c4 += c4v;
+        c6 += c4v * c2;
+        m2 = m2.max(c2);
+    }
+    s.c4 = c4.reduce_add();
+    s.c6 = c6.reduce_add();
+    s.max_c2 = m2.to_array().into_iter().fold(0.0, max);
+    for i in 4 * blocks..n {
+        let c = Vec3::new(vx[i], vy[i], vz[i]) - bulk;
+        let c2 = c.norm2();
+        s.c4 += c2 * c2;
+        s.c6 += c2 * c2 * c2;
+        s.max_c2 = max(s.max_c2, c2);
+    }
+    s
+}

@@ -1,0 +1,45 @@
+//! Drives: what acts on every particle between collisions.
+//!
+//! A drive is applied lazily, particle by particle, from its last-kick time to the time it is
+//! needed (GRW Section 3 steps 2.5-2.6, RW Algorithm 3), and in one batch to every particle at
+//! an observation time (GRW step 3.1). The event loop is generic over [`Drive`].
+
+pub mod none;
+pub mod white_noise;
+
+pub use none::NoDrive;
+pub use white_noise::WhiteNoise;
+
+use crate::math::Real;
+use crate::particles::Particles;
+use crate::rng::Rng;
+use crate::vec3::Vec3;
+
+/// A drive acting on each particle independently between collisions.
+pub trait Drive: Copy {
+    /// False for a drive that does nothing (then no kick is ever computed).
+    const ACTS: bool;
+
+    /// The velocity after the drive acted on `v` for a time `dt >= 0`.
+    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3;
+
+    /// Brings particle `i` to time `t`: `v_i := evolve(v_i, t - t_i)`, `t_i := t`.
+    #[inline(always)]
+    fn kick<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, i: usize, t: Real, rng: &mut R) {
+        if Self::ACTS {
+            let v = self.evolve(p.velocity(i), t - p.kick_time(i), rng);
+            p.set_velocity(i, v);
+            p.set_kick_time(i, t);
+        }
+    }
+
+    /// Brings every particle to time `t` (GRW step 3.1). The default goes particle by particle;
+    /// drives override it with a batch kernel.
+    fn kick_all<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
+        if Self::ACTS {
+            for i in 0..p.len() {
+                self.kick(p, i, t, rng);
+            }
+        }
+    }
+}

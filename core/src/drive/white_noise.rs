@@ -1,0 +1,41 @@
+//! Uniform white-noise heating: the Brownian kick GRW (18), RW (9),
+//! `v(t + dt) = v(t) + sqrt(2 beta dt) xi`, `xi` standard normal in R^3, which solves the
+//! heating term `beta Laplace_v f` of GRW (1) exactly for any `dt`.
+
+use super::Drive;
+use crate::batch::kick::white_noise_kick_all;
+use crate::math::{Real, sqrt};
+use crate::particles::Particles;
+use crate::rng::Rng;
+use crate::sample::standard_normal3;
+use crate::vec3::Vec3;
+
+/// White noise of strength `beta >= 0` (GRW (1)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WhiteNoise {
+    beta: Real,
+}
+
+impl WhiteNoise {
+    /// `None` unless `beta` is finite and `>= 0`.
+    pub fn new(beta: Real) -> Option<Self> {
+        if beta.is_finite() && beta >= 0.0 { Some(WhiteNoise { beta }) } else { None }
+    }
+    /// The heating strength `beta`.
+    pub fn beta(&self) -> Real {
+        self.beta
+    }
+}
+
+impl Drive for WhiteNoise {
+    const ACTS: bool = true;
+
+    #[inline(always)]
+    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
+        v + sqrt(2.0 * self.beta * dt) * standard_normal3(rng)
+    }
+
+    fn kick_all<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
+        white_noise_kick_all(2.0 * self.beta, p, t, rng);
+    }
+}

@@ -1,0 +1,165 @@
+//! The no-splitting scheme: GRW Section 3 ("Algorithm"), RW Algorithm 3.
+//!
+//! A Markov jump process with no time step: waiting times `tau ~ Exp(rate)` with the majorant
+//! rate `2 pi gamma C_lambda (n - 1) Umax^lambda` (GRW step 2.1, RW (20)); a uniform ordered
+//! pair `i != j`; both partners kicked lazily from their last-kick times (GRW (18), steps
+//! 2.5-2.6); the pair is fictitious with probability `1 - (|v_i - v_j| / Umax)^lambda` (GRW (20));
+//! otherwise `e` uniform on the sphere and the inelastic map GRW (3). Before each observation
+//! every particle is kicked to the observation time (step 3.1) and a fresh waiting time is drawn
+//! afterwards (RW step 3.3; exact by memorylessness).
+//!
+//! The adaptive majorant: `Umax = 2 max_i |v_i - V|` at the start (step 1.4). After every kick
+//! and every collision it becomes `max(Umax, 2|v_i - V|, 2|v_j - V|)`: the bound that really
+//! holds (RW (21) and the text around it; GRW's step 2.7 omits the factor 2). Because the
+//! untouched particles keep diffusing between their kicks, a candidate's relative speed can still
+//! exceed the `Umax` that generated its waiting time; then the kernel is truncated there
+//! (RW (19)), the pair is accepted, and [`Counts::overshoots`] counts it. At each observation,
+//! with every particle synchronized, `V` and `Umax` are recomputed exactly.
+//!
+//! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
+//! collisions, and none of that bookkeeping is compiled in.
+
+use super::{Counts, EngineError};
+use crate::collision::inelastic;
+use crate::drive::Drive;
+use crate::kernel::Kernel;
+use crate::math::{Real, max};
+use crate::moments::Observables;
+use crate::particles::Particles;
+use crate::restitution::Restitution;
+use crate::rng::{Rng, uniform_pair, uniform01};
+use crate::sample::{standard_exponential, unit_sphere};
+use crate::vec3::Vec3;
+
+/// The exact (no-splitting) event loop for kernel `K`, drive `D` and restitution law `A`.
+#[derive(Clone, Debug)]
+pub struct NoSplitting<K, D, A> {
+    kernel: K,
+    drive: D,
+    restitution: A,
+    t: Real,
+    umax: Real,
+    vref: Vec3,
+    counts: Counts,
+}
+
+impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
+    /// Starts the scheme at time `t0` on the particles `p` (already holding the initial
+    /// velocities): sets every last-kick time to `t0` and `Umax = 2 max |v_i - V|`
+    /// (GRW steps 1.1-1.4). Returns the observables at `t0`.
+    pub fn start(
+        kernel: K,
+        drive: D,
+        restitution: A,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(Self, Observables), EngineError> {
+        if !t0.is_finite() {
+            return Err(EngineError::TimeBackwards);
+        }
+        p.reset_kick_times(t0);
+        let mut s = NoSplitting {
+            kernel,
+            drive,
+            restitution,
+            t: t0,
+            umax: 0.0,
+            vref: Vec3::ZERO,
+            counts: Counts::default(),
+        };
+        let obs = s.synchronized(p)?;
+        Ok((s, obs))
+    }
+
+    /// Current time of the system.
+    pub fn time(&self) -> Real {
+        self.t
+    }
+
+    /// Current majorant of the relative speed (0 for kernels that need none).
+    pub fn umax(&self) -> Real {
+        self.umax
+    }
+
+    /// Event counts so far.
+    pub fn counts(&self) -> Counts {
+        self.counts
+    }
+
+    /// The kernel.
+    pub fn kernel(&self) -> &K {
+        &self.kernel
+    }
+
+    /// Runs the process to time `t_end >= time()`, kicks every particle to `t_end` and returns
+    /// the observables there (GRW steps 2-3, RW Algorithm 3).
+    pub fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<Observables, EngineError> {
+        if !(t_end >= self.t) || !t_end.is_finite() {
+            return Err(EngineError::TimeBackwards);
+        }
+        let n = p.len();
+        let mut rate = self.kernel.majorant_rate(n, self.umax);
+        loop {
+            let t_next = self.t + standard_exponential(rng) / rate;
+            if !(t_next < t_end) {
+                break;
+            }
+            self.t = t_next;
+            let (i, j) = uniform_pair(rng, n);
+            self.drive.kick(p, i, t_next, rng);
+            self.drive.kick(p, j, t_next, rng);
+            let (vi, vj) = (p.velocity(i), p.velocity(j));
+            let u = vi - vj;
+            self.counts.candidates += 1;
+            if K::USES_UMAX {
+                let urel = u.norm();
+                let umax_event = self.umax;
+                if urel > umax_event {
+                    self.counts.overshoots += 1;
+                }
+                if D::ACTS {
+                    self.umax = max(self.umax, 2.0 * max((vi - self.vref).norm(), (vj - self.vref).norm()));
+                }
+                if uniform01(rng) >= self.kernel.acceptance(urel, umax_event) {
+                    self.counts.fictitious += 1;
+                    if self.umax != umax_event {
+                        rate = self.kernel.majorant_rate(n, self.umax);
+                    }
+                    continue;
+                }
+            }
+            let e = unit_sphere(rng);
+            let alpha = self.restitution.coefficient(u, e);
+            let (a, b) = inelastic(vi, vj, e, alpha);
+            p.set_velocity(i, a);
+            p.set_velocity(j, b);
+            self.counts.collisions += 1;
+            if K::USES_UMAX {
+                self.umax = max(self.umax, 2.0 * max((a - self.vref).norm(), (b - self.vref).norm()));
+                rate = self.kernel.majorant_rate(n, self.umax);
+            }
+        }
+        self.t = t_end;
+        self.drive.kick_all(p, t_end, rng);
+        self.synchronized(p)
+    }
+
+    /// Observables of the synchronized system; refreshes `V` and `Umax` from them.
+    fn synchronized(&mut self, p: &Particles<'_>) -> Result<Observables, EngineError> {
+        let obs = Observables::of(p);
+        if !obs.is_finite() {
+            return Err(EngineError::NonFinite);
+        }
+        self.counts.observations += 1;
+        if K::USES_UMAX {
+            self.vref = obs.bulk;
+            self.umax = 2.0 * obs.max_peculiar_speed;
+        }
+        Ok(obs)
+    }
+}

@@ -1,0 +1,72 @@
+//! The floating-point shim: one scalar alias and every elementary function the core uses.
+//!
+//! All floating-point math in `gdsmc-core` goes through this module so that a single-precision
+//! build (for FPUs without double precision, such as thumbv7em's) stays a contained change:
+//! switch [`Real`] and the `libm` functions below to their `f32` forms. Without `std`, `libm`
+//! provides the functions; on x86_64 its `sqrt` compiles to the SSE2 instruction.
+
+/// The scalar type of the whole core.
+pub type Real = f64;
+
+/// pi.
+pub const PI: Real = core::f64::consts::PI;
+
+/// Square root.
+#[inline(always)]
+pub fn sqrt(x: Real) -> Real {
+    libm::sqrt(x)
+}
+
+/// Natural logarithm.
+#[inline(always)]
+pub fn ln(x: Real) -> Real {
+    libm::log(x)
+}
+
+/// Exponential.
+#[inline(always)]
+pub fn exp(x: Real) -> Real {
+    libm::exp(x)
+}
+
+/// `exp(x) - 1`, accurate for small `x`.
+#[inline(always)]
+pub fn exp_m1(x: Real) -> Real {
+    libm::expm1(x)
+}
+
+/// `x` to the power `y`.
+#[inline(always)]
+pub fn powf(x: Real, y: Real) -> Real {
+    libm::pow(x, y)
+}
+
+/// Sine and cosine of `x`.
+#[inline(always)]
+pub fn sin_cos(x: Real) -> (Real, Real) {
+    libm::sincos(x)
+}
+
+/// Absolute value.
+#[inline(always)]
+pub fn abs(x: Real) -> Real {
+    libm::fabs(x)
+}
+
+/// Error function.
+#[inline(always)]
+pub fn erf(x: Real) -> Real {
+    libm::erf(x)
+}
+
+/// Larger of two values (NaN-ignoring, as `f64::max`).
+#[inline(always)]
+pub fn max(a: Real, b: Real) -> Real {
+    libm::fmax(a, b)
+}
+
+/// Smaller of two values (NaN-ignoring, as `f64::min`).
+#[inline(always)]
+pub fn min(a: Real, b: Real) -> Real {
+    libm::fmin(a, b)
+}

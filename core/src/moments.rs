@@ -1,0 +1,131 @@
+//! Observables of a particle system, from the moment sums of [`crate::batch::sums`].
+//!
+//! Densities are per particle (`rho = 1`, GRW's normalization). Two temperatures are kept, and
+//! every number says which it is:
+//!
+//! - `t_raw = (1/3n) sum |v|^2`: the temperature of GRW Section 1 (after (12)) and RW (23), which
+//!   assume the bulk velocity zero. GRW (13) and RW (24) are exact for it.
+//! - `t_bulk = (1/3n) sum |v - V|^2 = (2/3) e` with `e` of GRW (11): about the bulk velocity, as
+//!   BRS (8) and MS use it.
+
+use crate::batch::sums::{Sums, accumulate};
+use crate::math::{Real, sqrt};
+use crate::particles::Particles;
+use crate::vec3::Vec3;
+
+/// The moments and derived quantities of one particle system at one time.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Observables {
+    /// Bulk velocity `V = m / rho`, GRW (10).
+    pub bulk: Vec3,
+    /// `(1/3n) sum |v|^2`: GRW/RW temperature (RW (23)).
+    pub t_raw: Real,
+    /// `(1/3n) sum |v - V|^2`: temperature about the bulk velocity, GRW (11), BRS (8).
+    pub t_bulk: Real,
+    /// Pressure `p = rho T` (about the bulk velocity), GRW Section 1.
+    pub pressure: Real,
+    /// Stress tensor `P = M - rho V V^T`, upper triangle `[xx, yy, zz, xy, xz, yz]`.
+    pub stress: [Real; 6],
+    /// Heat flux `q = r - (M + (tr M / 2 - rho |V|^2) I) V`, GRW Section 1
+    /// (equals `(1/2n) sum c |c|^2`, `c = v - V`).
+    pub heat_flux: Vec3,
+    /// Momentum flow `M = (1/n) sum v v^T`, GRW (8), upper triangle.
+    pub momentum_flow: [Real; 6],
+    /// Energy flow `r = (1/2n) sum v |v|^2`, GRW (9).
+    pub energy_flow: Vec3,
+    /// `<|v|^4>`, raw.
+    pub v4: Real,
+    /// `<|v|^6>`, raw.
+    pub v6: Real,
+    /// `<|v - V|^4>`.
+    pub c4: Real,
+    /// `<|v - V|^6>`.
+    pub c6: Real,
+    /// Fourth cumulant MS (3) with `d = 3`: `a2 = <c^4> / (15 T^2) - 1` (about the bulk).
+    pub a2: Real,
+    /// Sixth cumulant MS (70) with `d = 3`: `a3 = 1 + 3 a2 - <c^6> / (105 T^3)`.
+    pub a3: Real,
+    /// RW (29): `(1/T) (1/2 |P - pI|_F^2 + 2/(5T) |q|^2 + gamma^2 / (120 T^2))^{1/2}`,
+    /// `gamma = <|c|^4> - 15 T^2`, with `T = t_bulk` (peculiar velocities throughout).
+    pub crit: Real,
+    /// `max |v - V|`: half the majorant `Umax` of GRW step 1.4.
+    pub max_peculiar_speed: Real,
+}
+
+impl Observables {
+    /// Observables of the current velocities of `p` (which the caller has brought to one time).
+    pub fn of(p: &Particles<'_>) -> Self {
+        let (vx, vy, vz) = p.components();
+        Self::from_sums(&accumulate(vx, vy, vz))
+    }
+
+    /// Observables from moment sums.
+    pub fn from_sums(s: &Sums) -> Self {
+        let inv = 1.0 / s.n as Real;
+        let bulk = Vec3::new(s.s1[0] * inv, s.s1[1] * inv, s.s1[2] * inv);
+        let m: [Real; 6] = core::array::from_fn(|k| s.s2[k] * inv);
+        let r = Vec3::new(0.5 * s.s3[0] * inv, 0.5 * s.s3[1] * inv, 0.5 * s.s3[2] * inv);
+        let tr = m[0] + m[1] + m[2];
+        let v2 = bulk.norm2();
+        let t_raw = tr / 3.0;
+        let t_bulk = (tr - v2) / 3.0;
+        let bb = [
+            bulk.x * bulk.x,
+            bulk.y * bulk.y,
+            bulk.z * bulk.z,
+            bulk.x * bulk.y,
+            bulk.x * bulk.z,
+            bulk.y * bulk.z,
+        ];
+        let stress: [Real; 6] = core::array::from_fn(|k| m[k] - bb[k]);
+        let diag = 0.5 * tr - v2;
+        let mv = Vec3::new(
+            m[0] * bulk.x + m[3] * bulk.y + m[4] * bulk.z,
+            m[3] * bulk.x + m[1] * bulk.y + m[5] * bulk.z,
+            m[4] * bulk.x + m[5] * bulk.y + m[2] * bulk.z,
+        );
+        let heat_flux = r - (mv + diag * bulk);
+        let c4 = s.c4 * inv;
+        let c6 = s.c6 * inv;
+        let t = t_bulk;
+        let a2 = c4 / (15.0 * t * t) - 1.0;
+        let a3 = 1.0 + 3.0 * a2 - c6 / (105.0 * t * t * t);
+        let dev = [stress[0] - t, stress[1] - t, stress[2] - t];
+        let frob2 = dev[0] * dev[0]
+            + dev[1] * dev[1]
+            + dev[2] * dev[2]
+            + 2.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]);
+        let gamma = c4 - 15.0 * t * t;
+        let crit = sqrt(0.5 * frob2 + 2.0 / (5.0 * t) * heat_flux.norm2() + gamma * gamma / (120.0 * t * t)) / t;
+        Observables {
+            bulk,
+            t_raw,
+            t_bulk,
+            pressure: t_bulk,
+            stress,
+            heat_flux,
+            momentum_flow: m,
+            energy_flow: r,
+            v4: s.s4 * inv,
+            v6: s.s6 * inv,
+            c4,
+            c6,
+            a2,
+            a3,
+            crit,
+            max_peculiar_speed: sqrt(s.max_c2),
+        }
+    }
+
+    /// True when every field is finite (no silent NaN).
+    pub fn is_finite(&self) -> bool {
+        self.bulk.is_finite()
+            && self.t_raw.is_finite()
+            && self.t_bulk.is_finite()
+            && self.c4.is_finite()
+            && self.c6.is_finite()
+            && self.v6.is_finite()
+            && self.crit.is_finite()
+            && self.heat_flux.is_finite()
+    }
+}

@@ -1,0 +1,48 @@
+//! Samplers, each exact in distribution (up to floating-point rounding).
+//!
+//! One file per distribution, as in rand_distr. Every sampler is a small `Copy` value with a
+//! `sample(&self, rng)` method generic over [`crate::rng::Rng`]; parameters are validated by a
+//! fallible constructor that names the bad parameter.
+
+pub mod exponential;
+pub mod maxwellian;
+pub mod mixture;
+pub mod normal;
+pub mod partner;
+pub mod sphere;
+#[allow(missing_docs)]
+pub mod ziggurat_tables;
+
+pub use exponential::standard_exponential;
+pub use maxwellian::Maxwellian;
+pub use mixture::MaxwellianMixture;
+pub use normal::{standard_normal, standard_normal3};
+pub use partner::BackgroundPartner;
+pub use sphere::unit_sphere;
+
+/// A parameter of a sampler that is out of its domain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamError {
+    /// A mass that is not finite and positive.
+    Mass,
+    /// A temperature that is not finite and non-negative.
+    Temperature,
+    /// A drift velocity with a non-finite component.
+    Drift,
+    /// A mixture weight that is not finite and non-negative, or weights summing to zero.
+    Weight,
+    /// More mixture components than the mixture's capacity.
+    Capacity,
+}
+
+impl core::fmt::Display for ParamError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            ParamError::Mass => "mass must be finite and > 0",
+            ParamError::Temperature => "temperature must be finite and >= 0",
+            ParamError::Drift => "drift velocity must be finite",
+            ParamError::Weight => "mixture weights must be finite, >= 0 and not all 0",
+            ParamError::Capacity => "too many mixture components",
+        })
+    }
+}
