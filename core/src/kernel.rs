@@ -55,7 +55,11 @@ pub trait Kernel: Copy {
 
 fn check_strength(gamma: Real, c: Real) -> Result<Real, KernelError> {
     let s = gamma * c;
-    if s.is_finite() && s > 0.0 { Ok(s) } else { Err(KernelError::Strength) }
+    if s.is_finite() && s > 0.0 {
+        Ok(s)
+    } else {
+        Err(KernelError::Strength)
+    }
 }
 
 /// Maxwell pseudo-molecules `B = gamma C_0` (GRW: `C_0 = 1/(4 pi)`; RW (22): `C_0 = 1/pi`).
@@ -67,7 +71,9 @@ pub struct Maxwell {
 impl Maxwell {
     /// `B = gamma * c0`.
     pub fn new(gamma: Real, c0: Real) -> Result<Self, KernelError> {
-        Ok(Maxwell { strength: check_strength(gamma, c0)? })
+        Ok(Maxwell {
+            strength: check_strength(gamma, c0)?,
+        })
     }
     /// `gamma * C_0`.
     pub fn strength(&self) -> Real {
@@ -103,7 +109,9 @@ pub struct HardSpheres {
 impl HardSpheres {
     /// `B = gamma * c1 * |u|`.
     pub fn new(gamma: Real, c1: Real) -> Result<Self, KernelError> {
-        Ok(HardSpheres { strength: check_strength(gamma, c1)? })
+        Ok(HardSpheres {
+            strength: check_strength(gamma, c1)?,
+        })
     }
     /// `gamma * C_1`.
     pub fn strength(&self) -> Real {
@@ -143,7 +151,10 @@ impl Vhs {
         if !(0.0..=1.0).contains(&lambda) {
             return Err(KernelError::Lambda);
         }
-        Ok(Vhs { strength: check_strength(gamma, c)?, lambda })
+        Ok(Vhs {
+            strength: check_strength(gamma, c)?,
+            lambda,
+        })
     }
     /// `gamma * C_lambda`.
     pub fn strength(&self) -> Real {
@@ -159,7 +170,11 @@ impl Kernel for Vhs {
     }
     #[inline(always)]
     fn acceptance(&self, urel: Real, umax: Real) -> Real {
-        if urel < umax { powf(urel / umax, self.lambda) } else { 1.0 }
+        if urel < umax {
+            powf(urel / umax, self.lambda)
+        } else {
+            1.0
+        }
     }
     #[inline(always)]
     fn pair_rate(&self, urel: Real) -> Real {

@@ -64,7 +64,11 @@ impl Observables {
         let inv = 1.0 / s.n as Real;
         let bulk = Vec3::new(s.s1[0] * inv, s.s1[1] * inv, s.s1[2] * inv);
         let m: [Real; 6] = core::array::from_fn(|k| s.s2[k] * inv);
-        let r = Vec3::new(0.5 * s.s3[0] * inv, 0.5 * s.s3[1] * inv, 0.5 * s.s3[2] * inv);
+        let r = Vec3::new(
+            0.5 * s.s3[0] * inv,
+            0.5 * s.s3[1] * inv,
+            0.5 * s.s3[2] * inv,
+        );
         let tr = m[0] + m[1] + m[2];
         let v2 = bulk.norm2();
         let t_raw = tr / 3.0;
@@ -96,7 +100,9 @@ impl Observables {
             + dev[2] * dev[2]
             + 2.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]);
         let gamma = c4 - 15.0 * t * t;
-        let crit = sqrt(0.5 * frob2 + 2.0 / (5.0 * t) * heat_flux.norm2() + gamma * gamma / (120.0 * t * t)) / t;
+        let crit = sqrt(
+            0.5 * frob2 + 2.0 / (5.0 * t) * heat_flux.norm2() + gamma * gamma / (120.0 * t * t),
+        ) / t;
         Observables {
             bulk,
             t_raw,

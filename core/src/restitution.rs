@@ -19,7 +19,11 @@ pub struct Constant(Real);
 impl Constant {
     /// `None` unless `0 < alpha <= 1`.
     pub fn new(alpha: Real) -> Option<Self> {
-        if alpha > 0.0 && alpha <= 1.0 { Some(Constant(alpha)) } else { None }
+        if alpha > 0.0 && alpha <= 1.0 {
+            Some(Constant(alpha))
+        } else {
+            None
+        }
     }
     /// The coefficient.
     pub fn alpha(&self) -> Real {

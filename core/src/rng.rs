@@ -141,7 +141,10 @@ mod tests {
         for (i, row) in counts.iter().enumerate() {
             for (j, &c) in row.iter().enumerate() {
                 if i != j {
-                    assert!((c as f64 - 10_000.0).abs() < 4.06 * 97.5, "pair ({i},{j}): {c}");
+                    assert!(
+                        (c as f64 - 10_000.0).abs() < 4.06 * 97.5,
+                        "pair ({i},{j}): {c}"
+                    );
                 }
             }
         }

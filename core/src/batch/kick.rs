@@ -52,7 +52,12 @@ pub fn box_muller4<R: Rng + ?Sized>(rng: &mut R) -> (f64x4, f64x4) {
         uniform_open01(rng),
         uniform_open01(rng),
     ]);
-    let u2 = f64x4::from([uniform01(rng), uniform01(rng), uniform01(rng), uniform01(rng)]);
+    let u2 = f64x4::from([
+        uniform01(rng),
+        uniform01(rng),
+        uniform01(rng),
+        uniform01(rng),
+    ]);
     let r = (f64x4::splat(-2.0) * u1.ln()).sqrt();
     let (s, c) = (f64x4::splat(2.0 * PI) * u2).sin_cos();
     (r * c, r * s)

@@ -35,13 +35,20 @@ pub struct Sums {
 /// The sums of the velocities `(vx, vy, vz)` (equal lengths, at least one particle): SIMD
 /// unless the `scalar` feature is on.
 pub fn accumulate(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
-    if cfg!(feature = "scalar") { accumulate_scalar(vx, vy, vz) } else { accumulate_simd(vx, vy, vz) }
+    if cfg!(feature = "scalar") {
+        accumulate_scalar(vx, vy, vz)
+    } else {
+        accumulate_simd(vx, vy, vz)
+    }
 }
 
 /// Scalar twin of [`accumulate`].
 pub fn accumulate_scalar(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
     let n = vx.len();
-    let mut s = Sums { n, ..Sums::default() };
+    let mut s = Sums {
+        n,
+        ..Sums::default()
+    };
     for i in 0..n {
         let (x, y, z) = (vx[i], vy[i], vz[i]);
         let v2 = x * x + y * y + z * z;
@@ -144,11 +151,19 @@ pub fn accumulate_simd(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
         s.s6 += v2 * v2 * v2;
     }
     let bulk = bulk_of(&s);
-    let (bx, by, bz) = (f64x4::splat(bulk.x), f64x4::splat(bulk.y), f64x4::splat(bulk.z));
+    let (bx, by, bz) = (
+        f64x4::splat(bulk.x),
+        f64x4::splat(bulk.y),
+        f64x4::splat(bulk.z),
+    );
     let (mut c4, mut c6, mut m2) = (z, z, z);
     for b in 0..blocks {
         let k = 4 * b;
-        let (x, y, w) = (load(&vx[k..]) - bx, load(&vy[k..]) - by, load(&vz[k..]) - bz);
+        let (x, y, w) = (
+            load(&vx[k..]) - bx,
+            load(&vy[k..]) - by,
+            load(&vz[k..]) - bz,
+        );
         let c2 = x * x + y * y + w * w;
         let c4v = c2 * c2;
         c4 += c4v;

@@ -19,7 +19,11 @@ pub struct WhiteNoise {
 impl WhiteNoise {
     /// `None` unless `beta` is finite and `>= 0`.
     pub fn new(beta: Real) -> Option<Self> {
-        if beta.is_finite() && beta >= 0.0 { Some(WhiteNoise { beta }) } else { None }
+        if beta.is_finite() && beta >= 0.0 {
+            Some(WhiteNoise { beta })
+        } else {
+            None
+        }
     }
     /// The heating strength `beta`.
     pub fn beta(&self) -> Real {

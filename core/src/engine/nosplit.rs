@@ -123,7 +123,10 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                     self.counts.overshoots += 1;
                 }
                 if D::ACTS {
-                    self.umax = max(self.umax, 2.0 * max((vi - self.vref).norm(), (vj - self.vref).norm()));
+                    self.umax = max(
+                        self.umax,
+                        2.0 * max((vi - self.vref).norm(), (vj - self.vref).norm()),
+                    );
                 }
                 if uniform01(rng) >= self.kernel.acceptance(urel, umax_event) {
                     self.counts.fictitious += 1;
@@ -140,7 +143,10 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             p.set_velocity(j, b);
             self.counts.collisions += 1;
             if K::USES_UMAX {
-                self.umax = max(self.umax, 2.0 * max((a - self.vref).norm(), (b - self.vref).norm()));
+                self.umax = max(
+                    self.umax,
+                    2.0 * max((a - self.vref).norm(), (b - self.vref).norm()),
+                );
                 rate = self.kernel.majorant_rate(n, self.umax);
             }
         }

@@ -36,12 +36,22 @@ impl Maxwellian {
         if !drift.is_finite() {
             return Err(ParamError::Drift);
         }
-        Ok(Maxwellian { mass, temperature, drift, scale: sqrt(temperature / mass) })
+        Ok(Maxwellian {
+            mass,
+            temperature,
+            drift,
+            scale: sqrt(temperature / mass),
+        })
     }
 
     /// The standard Maxwellian GRW (27): unit mass and temperature, no drift.
     pub fn standard() -> Self {
-        Maxwellian { mass: 1.0, temperature: 1.0, drift: Vec3::ZERO, scale: 1.0 }
+        Maxwellian {
+            mass: 1.0,
+            temperature: 1.0,
+            drift: Vec3::ZERO,
+            scale: 1.0,
+        }
     }
 
     /// Mass.

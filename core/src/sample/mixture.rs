@@ -34,7 +34,10 @@ impl<const CAP: usize> Default for MaxwellianMixture<CAP> {
 impl<const CAP: usize> MaxwellianMixture<CAP> {
     /// An empty mixture.
     pub const fn new() -> Self {
-        MaxwellianMixture { components: heapless::Vec::new(), total: 0.0 }
+        MaxwellianMixture {
+            components: heapless::Vec::new(),
+            total: 0.0,
+        }
     }
 
     /// Adds a component with weight `weight >= 0` (weights need not sum to one).
@@ -42,7 +45,9 @@ impl<const CAP: usize> MaxwellianMixture<CAP> {
         if !(weight.is_finite() && weight >= 0.0) {
             return Err(ParamError::Weight);
         }
-        self.components.push((weight, m)).map_err(|_| ParamError::Capacity)?;
+        self.components
+            .push((weight, m))
+            .map_err(|_| ParamError::Capacity)?;
         self.total += weight;
         Ok(())
     }
@@ -67,8 +72,7 @@ impl<const CAP: usize> MaxwellianMixture<CAP> {
         let u = self.mean();
         let mut t = 0.0;
         for (w, c) in &self.components {
-            t += (*w / self.total)
-                * (3.0 * c.temperature() / c.mass() + (c.drift() - u).norm2())
+            t += (*w / self.total) * (3.0 * c.temperature() / c.mass() + (c.drift() - u).norm2())
                 / 3.0;
         }
         t

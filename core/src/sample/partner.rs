@@ -29,7 +29,10 @@ pub struct BackgroundPartner {
 impl BackgroundPartner {
     /// The partner density of the background `bg` (its mass, temperature and drift).
     pub fn new(bg: &Maxwellian) -> Self {
-        BackgroundPartner { drift: bg.drift(), b: sqrt(2.0 * bg.temperature() / bg.mass()) }
+        BackgroundPartner {
+            drift: bg.drift(),
+            b: sqrt(2.0 * bg.temperature() / bg.mass()),
+        }
     }
 
     /// `b = (2 T^B / m^B)^{1/2}` of BRS (28).
