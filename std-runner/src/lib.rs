@@ -1,1 +1,17 @@
+//! # gdsmc
+//!
+//! The runner of the gdsmc DSMC engine: scenes (TOML), ensembles over all cores with
+//! deterministic streams, statistics with 99.9% confidence intervals, exact references and
+//! output files. The `gdsmc` command is a thin shell over this library.
 
+pub mod columns;
+pub mod ensemble;
+pub mod error;
+pub mod output;
+pub mod reference;
+pub mod references;
+pub mod scene;
+pub mod stats;
+pub mod summary;
+
+pub use error::Error;

@@ -1,0 +1,88 @@
+//! The observables written per time point: a fixed list of named columns.
+
+use gdsmc_core::moments::Observables;
+
+/// One observable column of observables.csv.
+#[derive(Clone, Copy, Debug)]
+pub struct Column {
+    /// Column name.
+    pub name: &'static str,
+    /// What it is, with its paper and equation.
+    pub doc: &'static str,
+    /// How to read it from the observables.
+    pub get: fn(&Observables) -> f64,
+}
+
+/// Every observable column, in file order.
+pub const COLUMNS: &[Column] = &[
+    Column {
+        name: "T",
+        doc: "temperature (1/3n) sum |v|^2 as GRW/RW use it (RW (23))",
+        get: |o| o.t_raw,
+    },
+    Column {
+        name: "T_bulk",
+        doc: "temperature about the bulk velocity, GRW (11), BRS (8)",
+        get: |o| o.t_bulk,
+    },
+    Column {
+        name: "V_x",
+        doc: "bulk velocity, x (GRW (10))",
+        get: |o| o.bulk.x,
+    },
+    Column {
+        name: "V_y",
+        doc: "bulk velocity, y",
+        get: |o| o.bulk.y,
+    },
+    Column {
+        name: "V_z",
+        doc: "bulk velocity, z",
+        get: |o| o.bulk.z,
+    },
+    Column {
+        name: "V_norm",
+        doc: "|V|, the bulk speed (GRW Tables 1-2 report its maximum)",
+        get: |o| o.bulk.norm(),
+    },
+    Column {
+        name: "p",
+        doc: "pressure rho T_bulk (GRW Section 1)",
+        get: |o| o.pressure,
+    },
+    Column {
+        name: "q_norm",
+        doc: "|q|, the heat flux (GRW Section 1)",
+        get: |o| o.heat_flux.norm(),
+    },
+    Column {
+        name: "v4",
+        doc: "<|v|^4>, raw",
+        get: |o| o.v4,
+    },
+    Column {
+        name: "v6",
+        doc: "<|v|^6>, raw",
+        get: |o| o.v6,
+    },
+    Column {
+        name: "a2",
+        doc: "fourth cumulant, MS (3)",
+        get: |o| o.a2,
+    },
+    Column {
+        name: "a3",
+        doc: "sixth cumulant, MS (70)",
+        get: |o| o.a3,
+    },
+    Column {
+        name: "crit",
+        doc: "deviation-from-Maxwell criterion, RW (29)",
+        get: |o| o.crit,
+    },
+];
+
+/// Index of the column named `name`.
+pub fn index(name: &str) -> Option<usize> {
+    COLUMNS.iter().position(|c| c.name == name)
+}

@@ -1,0 +1,223 @@
+//! Ensembles: many independent particle systems of one scene, run in parallel.
+//!
+//! Ensemble `k` uses the seed's Xoshiro256++ generator jumped `k` times. Ensembles are grouped
+//! in fixed chunks of [`CHUNK`]; each chunk is accumulated in ensemble order and the chunks are
+//! merged in chunk order, so the statistics are bit-identical for any number of threads.
+//!
+//! The engine is composed at compile time: [`with_engine`] turns the scene's kernel and drive
+//! into concrete types and calls a generic job, so each combination gets its own loop.
+
+use crate::columns::COLUMNS;
+use crate::error::Error;
+use crate::scene::{DriveChoice, KernelChoice, Scene};
+use crate::stats::Accumulator;
+use gdsmc_core::drive::{Drive, NoDrive, WhiteNoise};
+use gdsmc_core::engine::{Counts, NoSplitting};
+use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
+use gdsmc_core::moments::Observables;
+use gdsmc_core::particles::Particles;
+use gdsmc_core::restitution::Constant;
+use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
+use gdsmc_core::sample::{Maxwellian, MaxwellianMixture};
+use gdsmc_core::vec3::Vec3;
+use rayon::prelude::*;
+use std::time::{Duration, Instant};
+
+/// Ensembles per chunk: the unit of parallel work and of the fixed merge order.
+pub const CHUNK: u64 = 8;
+/// Chunks handed to the pool at once (bounds memory; independent of the thread count).
+const BATCH: u64 = 256;
+/// Most mixture components an initial distribution may have.
+pub const MAX_COMPONENTS: usize = 16;
+
+/// A job generic over the engine's static types.
+pub trait EngineJob {
+    /// What the job returns.
+    type Output;
+    /// Runs with concrete kernel and drive types.
+    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync>(
+        self,
+        kernel: K,
+        drive: D,
+    ) -> Self::Output;
+}
+
+/// Calls `job` with the scene's kernel and drive as concrete types (static dispatch).
+pub fn with_engine<J: EngineJob>(scene: &Scene, job: J) -> J::Output {
+    match scene.kernel {
+        KernelChoice::Maxwell { gamma, c } => {
+            with_drive(scene, Maxwell::new(gamma, c).expect("validated"), job)
+        }
+        KernelChoice::HardSpheres { gamma, c } => {
+            with_drive(scene, HardSpheres::new(gamma, c).expect("validated"), job)
+        }
+        KernelChoice::Vhs { gamma, c, lambda } => {
+            with_drive(scene, Vhs::new(gamma, c, lambda).expect("validated"), job)
+        }
+    }
+}
+
+fn with_drive<K: Kernel + Send + Sync, J: EngineJob>(scene: &Scene, k: K, job: J) -> J::Output {
+    match scene.drive {
+        DriveChoice::None => job.run(k, NoDrive),
+        DriveChoice::WhiteNoise(beta) => job.run(k, WhiteNoise::new(beta).expect("validated")),
+    }
+}
+
+/// The initial distribution of a scene as a core sampler.
+pub fn initial_sampler(scene: &Scene) -> MaxwellianMixture<MAX_COMPONENTS> {
+    let mut mix = MaxwellianMixture::new();
+    for &(w, m, t, u) in &scene.initial.components {
+        let mx = Maxwellian::new(m, t, Vec3::new(u[0], u[1], u[2])).expect("validated");
+        mix.push(w, mx).expect("validated");
+    }
+    mix
+}
+
+/// Runs one ensemble: the observables at every observation time, row-major
+/// (`times x COLUMNS`), and the event counts.
+pub fn run_ensemble<K: Kernel, D: Drive>(
+    scene: &Scene,
+    kernel: K,
+    drive: D,
+    mut rng: Xoshiro256PlusPlus,
+) -> Result<(Vec<f64>, Counts), gdsmc_core::engine::EngineError> {
+    let n = scene.n;
+    let mut buf = vec![0.0; 4 * n];
+    let mut p = Particles::from_buffer(&mut buf, n).expect("n >= 2 validated");
+    let f0 = initial_sampler(scene);
+    p.fill_with(0.0, || f0.sample(&mut rng).expect("validated weights"));
+    let alpha = Constant::new(scene.restitution).expect("validated");
+    let (mut engine, obs0) = NoSplitting::start(kernel, drive, alpha, &mut p, 0.0)?;
+    let mut out = Vec::with_capacity(scene.times.len() * COLUMNS.len());
+    for &t in &scene.times {
+        let obs: Observables = if t == 0.0 {
+            obs0
+        } else {
+            engine.advance_to(&mut p, t, &mut rng)?
+        };
+        out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
+    }
+    Ok((out, engine.counts()))
+}
+
+/// Statistics of a finished (or interrupted) run.
+#[derive(Clone, Debug)]
+pub struct RunStats {
+    /// Observation times.
+    pub times: Vec<f64>,
+    /// Per (time, column) statistics, row-major `times x COLUMNS`.
+    pub acc: Accumulator,
+    /// Event counts summed over ensembles.
+    pub counts: Counts,
+    /// Ensembles finished.
+    pub ensembles: u64,
+    /// Wall time.
+    pub wall: Duration,
+    /// Threads used.
+    pub threads: usize,
+}
+
+impl RunStats {
+    /// Mean of column `col` at time index `ti`.
+    pub fn mean(&self, ti: usize, col: usize) -> f64 {
+        self.acc.mean(ti * COLUMNS.len() + col)
+    }
+    /// Half-width of the 99.9% confidence interval of column `col` at time index `ti`.
+    pub fn ci(&self, ti: usize, col: usize) -> f64 {
+        self.acc.ci(ti * COLUMNS.len() + col)
+    }
+}
+
+struct EnsembleJob<'a> {
+    scene: &'a Scene,
+    threads: usize,
+    progress: &'a (dyn Fn(u64) + Sync),
+}
+
+impl EngineJob for EnsembleJob<'_> {
+    type Output = Result<(Accumulator, Counts, u64), Error>;
+
+    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync>(
+        self,
+        kernel: K,
+        drive: D,
+    ) -> Self::Output {
+        let scene = self.scene;
+        let width = scene.times.len() * COLUMNS.len();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(self.threads)
+            .build()
+            .expect("thread pool");
+        let mut total = Accumulator::new(width);
+        let mut counts = Counts::default();
+        let mut streams = Streams::new(scene.seed);
+        let m = scene.ensembles;
+        let mut first = 0u64;
+        while first < m {
+            let last = (first + BATCH * CHUNK).min(m);
+            let rngs: Vec<Xoshiro256PlusPlus> =
+                (&mut streams).take((last - first) as usize).collect();
+            let chunks: Vec<Result<(Accumulator, Counts), Error>> =
+                pool.install(|| {
+                    rngs.par_chunks(CHUNK as usize)
+                        .enumerate()
+                        .map(|(ci, rs)| {
+                            let mut acc = Accumulator::new(width);
+                            let mut cnt = Counts::default();
+                            for (k, r) in rs.iter().enumerate() {
+                                let e = first + ci as u64 * CHUNK + k as u64;
+                                let (row, c) = run_ensemble(scene, kernel, drive, r.clone())
+                                    .map_err(|err| Error::Engine {
+                                        ensemble: e,
+                                        message: err.to_string(),
+                                    })?;
+                                acc.push(&row);
+                                cnt = cnt.add(&c);
+                            }
+                            (self.progress)(rs.len() as u64);
+                            Ok((acc, cnt))
+                        })
+                        .collect()
+                });
+            for ch in chunks {
+                let (a, c) = ch?;
+                total.merge(&a);
+                counts = counts.add(&c);
+            }
+            first = last;
+        }
+        Ok((total, counts, m))
+    }
+}
+
+/// Runs every ensemble of `scene` on `threads` threads (0: all cores); `progress` is called
+/// with the number of ensembles each finished chunk adds.
+pub fn run(
+    scene: &Scene,
+    threads: usize,
+    progress: &(dyn Fn(u64) + Sync),
+) -> Result<RunStats, Error> {
+    let threads = if threads == 0 {
+        rayon::current_num_threads()
+    } else {
+        threads
+    };
+    let start = Instant::now();
+    let (acc, counts, ensembles) = with_engine(
+        scene,
+        EnsembleJob {
+            scene,
+            threads,
+            progress,
+        },
+    )?;
+    Ok(RunStats {
+        times: scene.times.clone(),
+        acc,
+        counts,
+        ensembles,
+        wall: start.elapsed(),
+        threads,
+    })
+}

@@ -1,0 +1,124 @@
+//! Output files. Every file is written to a temporary name beside its target and renamed into
+//! place, so an interrupted run never leaves a half-written file where a good one was.
+
+use crate::columns::COLUMNS;
+use crate::ensemble::RunStats;
+use crate::error::Error;
+use crate::references::ReferenceCurve;
+use crate::scene::Scene;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// Writes `bytes` to `path` atomically (temporary file, flush, rename).
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    let err = |source| Error::Write {
+        path: path.to_path_buf(),
+        source,
+    };
+    let mut tmp = PathBuf::from(path);
+    tmp.set_extension(format!(
+        "{}.partial",
+        path.extension().and_then(|e| e.to_str()).unwrap_or("")
+    ));
+    let mut f = std::fs::File::create(&tmp).map_err(err)?;
+    f.write_all(bytes).map_err(err)?;
+    f.sync_all().map_err(err)?;
+    drop(f);
+    std::fs::rename(&tmp, path).map_err(err)
+}
+
+/// observables.csv: `t`, then `NAME` and `NAME_ci` for every observable, then the reference
+/// columns. Numbers are written with full round-trip precision.
+pub fn observables_csv(stats: &RunStats, refs: &[ReferenceCurve]) -> Result<Vec<u8>, csv::Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut header = vec!["t".to_string()];
+    for c in COLUMNS {
+        header.push(c.name.to_string());
+        header.push(format!("{}_ci", c.name));
+    }
+    for r in refs {
+        header.push(r.name.to_string());
+    }
+    w.write_record(&header)?;
+    for (ti, &t) in stats.times.iter().enumerate() {
+        let mut rec = vec![format!("{t:?}")];
+        for ci in 0..COLUMNS.len() {
+            rec.push(format!("{:?}", stats.mean(ti, ci)));
+            rec.push(format!("{:?}", stats.ci(ti, ci)));
+        }
+        for r in refs {
+            rec.push(format!("{:?}", (r.curve)(t)));
+        }
+        w.write_record(&rec)?;
+    }
+    w.into_inner().map_err(|e| e.into_error().into())
+}
+
+/// summary.json: scene, seed, version, timing, counts and the errors against references.
+pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> serde_json::Value {
+    let last = stats.times.len() - 1;
+    let mut errors = Vec::new();
+    for r in refs {
+        let col = crate::columns::index(r.of).expect("reference of a known column");
+        let (mut e_max, mut t_at) = (0.0f64, 0.0);
+        for (ti, &t) in stats.times.iter().enumerate() {
+            let exact = (r.curve)(t);
+            let e = ((stats.mean(ti, col) - exact) / exact).abs();
+            if e > e_max {
+                e_max = e;
+                t_at = t;
+            }
+        }
+        let exact_end = (r.curve)(stats.times[last]);
+        errors.push(serde_json::json!({
+            "observable": r.of,
+            "reference": r.name,
+            "source": r.source,
+            "E_end": ((stats.mean(last, col) - exact_end) / exact_end).abs(),
+            "Conf_end": stats.ci(last, col) / exact_end.abs(),
+            "E_max": e_max,
+            "t_of_E_max": t_at,
+        }));
+    }
+    let c = stats.counts;
+    serde_json::json!({
+        "gdsmc_version": env!("CARGO_PKG_VERSION"),
+        "scene": scene.name,
+        "description": scene.description,
+        "n": scene.n,
+        "ensembles": stats.ensembles,
+        "seed": scene.seed,
+        "threads": stats.threads,
+        "wall_seconds": stats.wall.as_secs_f64(),
+        "counts": {
+            "candidates": c.candidates,
+            "collisions": c.collisions,
+            "fictitious": c.fictitious,
+            "majorant_overshoots": c.overshoots,
+            "observations": c.observations,
+            "kicks": c.kicks(scene.n),
+        },
+        "errors": errors,
+    })
+}
+
+/// Writes observables.csv and summary.json into `dir` (created if missing).
+pub fn write_all(
+    dir: &Path,
+    scene: &Scene,
+    stats: &RunStats,
+    refs: &[ReferenceCurve],
+) -> Result<(), Error> {
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let csv_path = dir.join("observables.csv");
+    let bytes = observables_csv(stats, refs).map_err(|e| Error::Write {
+        path: csv_path.clone(),
+        source: std::io::Error::other(e.to_string()),
+    })?;
+    write_atomic(&csv_path, &bytes)?;
+    let json = serde_json::to_vec_pretty(&summary_json(scene, stats, refs)).expect("json");
+    write_atomic(&dir.join("summary.json"), &json)
+}

@@ -1,0 +1,613 @@
+//! Scenes: a TOML file that names only the physics a setting uses.
+//!
+//! ```toml
+//! name = "GRW Example 3"
+//! [particles]
+//! n = 1024
+//! initial = { kind = "maxwellian", temperature = 1.0 }
+//! [collisions]
+//! kernel = "maxwell"          # "maxwell" | "hard-spheres" | "vhs" (then `lambda`)
+//! gamma = 4.0                 # collision-rate constant of GRW (1)
+//! c = 0.07957747154594767     # C_lambda = 1/(4 pi)
+//! restitution = 0.5
+//! [drive]
+//! kind = "white-noise"        # "white-noise" (then `beta`) | "none"
+//! beta = 1.0
+//! [observe]
+//! t_end = 8.0
+//! intervals = 32              # observation times k t_end / intervals, k = 0..=intervals
+//! [run]
+//! ensembles = 1000
+//! seed = 1
+//! ```
+//!
+//! Every key but `collisions.kernel`, `collisions.restitution` and `observe.t_end` has a
+//! default; unknown keys are errors. Values out of their domain are reported with the file,
+//! line and dotted key.
+
+use crate::error::Error;
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// A scene file as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// Human-readable name.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Free text: which paper and example the scene reproduces.
+    #[serde(default)]
+    pub description: Option<String>,
+    /// Particle count and initial distribution.
+    #[serde(default)]
+    pub particles: ParticlesSpec,
+    /// Kernel and restitution.
+    pub collisions: CollisionsSpec,
+    /// What acts between collisions (default: no drive).
+    #[serde(default)]
+    pub drive: DriveSpec,
+    /// Observation times.
+    pub observe: ObserveSpec,
+    /// Ensembles and seed.
+    #[serde(default)]
+    pub run: RunSpec,
+}
+
+/// `[particles]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParticlesSpec {
+    /// Number of particles per ensemble (>= 2). Default 1024.
+    #[serde(default = "default_n")]
+    pub n: Spanned<i64>,
+    /// Initial distribution. Default: the standard Maxwellian GRW (27).
+    #[serde(default)]
+    pub initial: InitialSpec,
+}
+
+fn default_n() -> Spanned<i64> {
+    Spanned::new(0..0, 1024)
+}
+
+impl Default for ParticlesSpec {
+    fn default() -> Self {
+        ParticlesSpec {
+            n: default_n(),
+            initial: InitialSpec::default(),
+        }
+    }
+}
+
+/// One weighted component of a mixture (BRS (35)).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ComponentSpec {
+    /// Weight (>= 0; weights need not sum to one).
+    pub weight: Spanned<f64>,
+    /// Mass (> 0). Default 1.
+    #[serde(default = "one")]
+    pub mass: Spanned<f64>,
+    /// Temperature (>= 0). Default 1.
+    #[serde(default = "one")]
+    pub temperature: Spanned<f64>,
+    /// Drift velocity. Default 0.
+    #[serde(default)]
+    pub drift: Option<Spanned<[f64; 3]>>,
+}
+
+fn one() -> Spanned<f64> {
+    Spanned::new(0..0, 1.0)
+}
+
+/// `particles.initial.kind`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum InitialKind {
+    /// A Maxwellian (BRS (36)) with `mass`, `temperature`, `drift`.
+    #[default]
+    Maxwellian,
+    /// A mixture of Maxwellians (BRS (35)) given as `components`.
+    Mixture,
+}
+
+/// `particles.initial`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct InitialSpec {
+    /// Which kind of distribution. Default `"maxwellian"`.
+    #[serde(default)]
+    pub kind: InitialKind,
+    /// Mass of the Maxwellian (> 0). Default 1.
+    #[serde(default)]
+    pub mass: Option<Spanned<f64>>,
+    /// Temperature of the Maxwellian (>= 0). Default 1.
+    #[serde(default)]
+    pub temperature: Option<Spanned<f64>>,
+    /// Drift of the Maxwellian. Default 0.
+    #[serde(default)]
+    pub drift: Option<Spanned<[f64; 3]>>,
+    /// Components of a mixture.
+    #[serde(default)]
+    pub components: Option<Spanned<Vec<ComponentSpec>>>,
+}
+
+/// `collisions.kernel`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum KernelKind {
+    /// Maxwell pseudo-molecules, `B = gamma C_0`.
+    Maxwell,
+    /// Hard spheres, `B = gamma C_1 |u|`.
+    HardSpheres,
+    /// Variable hard spheres, `B = gamma C_lambda |u|^lambda`.
+    Vhs,
+}
+
+/// `[collisions]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CollisionsSpec {
+    /// The kernel.
+    pub kernel: KernelKind,
+    /// VHS exponent in [0, 1] (only for `kernel = "vhs"`).
+    #[serde(default)]
+    pub lambda: Option<Spanned<f64>>,
+    /// Collision-rate constant gamma of GRW (1) (> 0). Default 1.
+    #[serde(default = "one")]
+    pub gamma: Spanned<f64>,
+    /// Kernel constant C_lambda (> 0). Default 1/(4 pi).
+    #[serde(default = "default_c")]
+    pub c: Spanned<f64>,
+    /// Restitution coefficient alpha in (0, 1].
+    pub restitution: Spanned<f64>,
+}
+
+fn default_c() -> Spanned<f64> {
+    Spanned::new(0..0, 1.0 / (4.0 * std::f64::consts::PI))
+}
+
+/// `drive.kind`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum DriveKind {
+    /// No drive: the freely cooling gas.
+    #[default]
+    None,
+    /// White-noise heating of strength `beta` (GRW (1), (18)).
+    WhiteNoise,
+}
+
+/// `[drive]`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct DriveSpec {
+    /// Which drive. Default `"none"`.
+    #[serde(default)]
+    pub kind: DriveKind,
+    /// White-noise strength beta >= 0 (required for `"white-noise"`).
+    #[serde(default)]
+    pub beta: Option<Spanned<f64>>,
+}
+
+/// `[observe]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObserveSpec {
+    /// Start time. Default 0.
+    #[serde(default)]
+    pub t_start: Option<Spanned<f64>>,
+    /// Final time (> t_start).
+    pub t_end: Spanned<f64>,
+    /// Number of equal intervals between observations (>= 1). Default 32.
+    #[serde(default)]
+    pub intervals: Option<Spanned<i64>>,
+}
+
+/// `[run]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RunSpec {
+    /// Number of independent ensembles (>= 1). Default 100.
+    #[serde(default = "default_ensembles")]
+    pub ensembles: Spanned<i64>,
+    /// Seed of the run's generator. Default 1.
+    #[serde(default = "default_seed")]
+    pub seed: Spanned<i64>,
+}
+
+fn default_ensembles() -> Spanned<i64> {
+    Spanned::new(0..0, 100)
+}
+fn default_seed() -> Spanned<i64> {
+    Spanned::new(0..0, 1)
+}
+
+impl Default for RunSpec {
+    fn default() -> Self {
+        RunSpec {
+            ensembles: default_ensembles(),
+            seed: default_seed(),
+        }
+    }
+}
+
+/// The validated kernel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum KernelChoice {
+    /// Maxwell pseudo-molecules with `gamma C_0`.
+    Maxwell {
+        /// gamma of GRW (1).
+        gamma: f64,
+        /// C_0.
+        c: f64,
+    },
+    /// Hard spheres.
+    HardSpheres {
+        /// gamma of GRW (1).
+        gamma: f64,
+        /// C_1.
+        c: f64,
+    },
+    /// VHS.
+    Vhs {
+        /// gamma of GRW (1).
+        gamma: f64,
+        /// C_lambda.
+        c: f64,
+        /// lambda.
+        lambda: f64,
+    },
+}
+
+/// The validated drive.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DriveChoice {
+    /// No drive.
+    None,
+    /// White noise with this beta.
+    WhiteNoise(f64),
+}
+
+/// The validated initial distribution: weighted Maxwellians `(weight, mass, temperature, drift)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Initial {
+    /// Components (one for a plain Maxwellian).
+    pub components: Vec<(f64, f64, f64, [f64; 3])>,
+}
+
+/// A validated scene, ready to run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// Name (file stem when the file names none).
+    pub name: String,
+    /// Description.
+    pub description: String,
+    /// Particles per ensemble.
+    pub n: usize,
+    /// Initial distribution.
+    pub initial: Initial,
+    /// Kernel.
+    pub kernel: KernelChoice,
+    /// Restitution coefficient.
+    pub restitution: f64,
+    /// Drive.
+    pub drive: DriveChoice,
+    /// Observation times, increasing.
+    pub times: Vec<f64>,
+    /// Ensembles.
+    pub ensembles: u64,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// Turns byte offsets into 1-based line numbers.
+struct Lines<'a> {
+    path: &'a Path,
+    text: &'a str,
+}
+
+impl Lines<'_> {
+    fn line(&self, span: std::ops::Range<usize>) -> usize {
+        if span == (0..0) {
+            return 0;
+        }
+        self.text[..span.start.min(self.text.len())]
+            .bytes()
+            .filter(|&b| b == b'\n')
+            .count()
+            + 1
+    }
+    fn invalid<T>(
+        &self,
+        span: std::ops::Range<usize>,
+        key: &str,
+        message: impl Into<String>,
+    ) -> Result<T, Error> {
+        Err(Error::Invalid {
+            path: self.path.to_path_buf(),
+            line: self.line(span),
+            key: key.to_string(),
+            message: message.into(),
+        })
+    }
+}
+
+fn finite(l: &Lines<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
+    let x = *v.get_ref();
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        l.invalid(v.span(), key, format!("must be a finite number, got {x}"))
+    }
+}
+
+fn positive(l: &Lines<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
+    let x = finite(l, v, key)?;
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        l.invalid(v.span(), key, format!("must be > 0, got {x}"))
+    }
+}
+
+fn non_negative(l: &Lines<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
+    let x = finite(l, v, key)?;
+    if x >= 0.0 {
+        Ok(x)
+    } else {
+        l.invalid(
+            v.span(),
+            key,
+            format!("must be >= 0 (a negative value is not a rate), got {x}"),
+        )
+    }
+}
+
+fn drift(l: &Lines<'_>, d: &Option<Spanned<[f64; 3]>>, key: &str) -> Result<[f64; 3], Error> {
+    match d {
+        None => Ok([0.0; 3]),
+        Some(d) if d.get_ref().iter().all(|x| x.is_finite()) => Ok(*d.get_ref()),
+        Some(d) => l.invalid(d.span(), key, "must be three finite numbers"),
+    }
+}
+
+fn opt_or_one(v: &Option<Spanned<f64>>) -> Spanned<f64> {
+    v.clone().unwrap_or_else(one)
+}
+
+impl SceneFile {
+    /// Validates the file's values; `path` and `text` are used to name the line of a bad value.
+    pub fn validate(&self, path: &Path, text: &str) -> Result<Scene, Error> {
+        let l = Lines { path, text };
+        let n = *self.particles.n.get_ref();
+        if n < 2 {
+            return l.invalid(
+                self.particles.n.span(),
+                "particles.n",
+                format!("must be >= 2 (a pair is needed to collide), got {n}"),
+            );
+        }
+        let ini = &self.particles.initial;
+        let initial = match ini.kind {
+            InitialKind::Maxwellian => {
+                if let Some(c) = &ini.components {
+                    return l.invalid(
+                        c.span(),
+                        "particles.initial.components",
+                        "is only used with kind = \"mixture\"",
+                    );
+                }
+                let mass = positive(&l, &opt_or_one(&ini.mass), "particles.initial.mass")?;
+                let t = non_negative(
+                    &l,
+                    &opt_or_one(&ini.temperature),
+                    "particles.initial.temperature",
+                )?;
+                let u = drift(&l, &ini.drift, "particles.initial.drift")?;
+                Initial {
+                    components: vec![(1.0, mass, t, u)],
+                }
+            }
+            InitialKind::Mixture => {
+                for (key, span) in [
+                    ("mass", ini.mass.as_ref().map(|s| s.span())),
+                    ("temperature", ini.temperature.as_ref().map(|s| s.span())),
+                    ("drift", ini.drift.as_ref().map(|s| s.span())),
+                ] {
+                    if let Some(span) = span {
+                        return l.invalid(
+                            span,
+                            &format!("particles.initial.{key}"),
+                            "belongs in each of `components` for kind = \"mixture\"",
+                        );
+                    }
+                }
+                let Some(components) = &ini.components else {
+                    return l.invalid(
+                        0..0,
+                        "particles.initial.components",
+                        "is required with kind = \"mixture\"",
+                    );
+                };
+                if components.get_ref().is_empty() {
+                    return l.invalid(
+                        components.span(),
+                        "particles.initial.components",
+                        "must hold at least one component",
+                    );
+                }
+                let mut out = Vec::new();
+                for (k, c) in components.get_ref().iter().enumerate() {
+                    let key = format!("particles.initial.components[{k}]");
+                    let w = non_negative(&l, &c.weight, &format!("{key}.weight"))?;
+                    let mass = positive(&l, &c.mass, &format!("{key}.mass"))?;
+                    let t = non_negative(&l, &c.temperature, &format!("{key}.temperature"))?;
+                    let u = drift(&l, &c.drift, &format!("{key}.drift"))?;
+                    out.push((w, mass, t, u));
+                }
+                if out.len() > crate::ensemble::MAX_COMPONENTS {
+                    return l.invalid(
+                        components.span(),
+                        "particles.initial.components",
+                        format!(
+                            "holds {} components; at most {} are supported",
+                            out.len(),
+                            crate::ensemble::MAX_COMPONENTS
+                        ),
+                    );
+                }
+                if out.iter().map(|c| c.0).sum::<f64>() <= 0.0 {
+                    return l.invalid(
+                        components.span(),
+                        "particles.initial.components",
+                        "weights must not all be 0",
+                    );
+                }
+                Initial { components: out }
+            }
+        };
+        let c = &self.collisions;
+        let gamma = positive(&l, &c.gamma, "collisions.gamma")?;
+        let cc = positive(&l, &c.c, "collisions.c")?;
+        let kernel = match c.kernel {
+            KernelKind::Maxwell | KernelKind::HardSpheres if c.lambda.is_some() => {
+                let s = c.lambda.as_ref().unwrap().span();
+                return l.invalid(s, "collisions.lambda", "is only used with kernel = \"vhs\"");
+            }
+            KernelKind::Maxwell => KernelChoice::Maxwell { gamma, c: cc },
+            KernelKind::HardSpheres => KernelChoice::HardSpheres { gamma, c: cc },
+            KernelKind::Vhs => {
+                let Some(lam) = &c.lambda else {
+                    return l.invalid(
+                        0..0,
+                        "collisions.lambda",
+                        "is required with kernel = \"vhs\"",
+                    );
+                };
+                let x = finite(&l, lam, "collisions.lambda")?;
+                if !(0.0..=1.0).contains(&x) {
+                    return l.invalid(
+                        lam.span(),
+                        "collisions.lambda",
+                        format!("must lie in [0, 1], got {x}"),
+                    );
+                }
+                KernelChoice::Vhs {
+                    gamma,
+                    c: cc,
+                    lambda: x,
+                }
+            }
+        };
+        let alpha = finite(&l, &c.restitution, "collisions.restitution")?;
+        if !(alpha > 0.0 && alpha <= 1.0) {
+            return l.invalid(
+                c.restitution.span(),
+                "collisions.restitution",
+                format!("must lie in (0, 1], got {alpha}"),
+            );
+        }
+        let drive = match (self.drive.kind, &self.drive.beta) {
+            (DriveKind::None, None) => DriveChoice::None,
+            (DriveKind::None, Some(b)) => {
+                return l.invalid(
+                    b.span(),
+                    "drive.beta",
+                    "is only used with kind = \"white-noise\"",
+                );
+            }
+            (DriveKind::WhiteNoise, Some(b)) => {
+                DriveChoice::WhiteNoise(non_negative(&l, b, "drive.beta")?)
+            }
+            (DriveKind::WhiteNoise, None) => {
+                return l.invalid(
+                    0..0,
+                    "drive.beta",
+                    "is required with kind = \"white-noise\"",
+                );
+            }
+        };
+        let t0 = match &self.observe.t_start {
+            Some(s) => non_negative(&l, s, "observe.t_start")?,
+            None => 0.0,
+        };
+        let t1 = finite(&l, &self.observe.t_end, "observe.t_end")?;
+        if t1 <= t0 {
+            return l.invalid(
+                self.observe.t_end.span(),
+                "observe.t_end",
+                format!("must be later than observe.t_start = {t0}, got {t1}"),
+            );
+        }
+        let k = match &self.observe.intervals {
+            Some(s) => {
+                let k = *s.get_ref();
+                if !(1..=10_000_000).contains(&k) {
+                    return l.invalid(
+                        s.span(),
+                        "observe.intervals",
+                        format!("must lie in 1..=10000000, got {k}"),
+                    );
+                }
+                k as usize
+            }
+            None => 32,
+        };
+        let times = (0..=k)
+            .map(|i| t0 + (t1 - t0) * i as f64 / k as f64)
+            .collect();
+        let m = *self.run.ensembles.get_ref();
+        if m < 1 {
+            return l.invalid(
+                self.run.ensembles.span(),
+                "run.ensembles",
+                format!("must be >= 1, got {m}"),
+            );
+        }
+        let seed = *self.run.seed.get_ref();
+        if seed < 0 {
+            return l.invalid(
+                self.run.seed.span(),
+                "run.seed",
+                format!("must be >= 0, got {seed}"),
+            );
+        }
+        let name = self.name.clone().unwrap_or_else(|| {
+            path.file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        });
+        Ok(Scene {
+            name,
+            description: self.description.clone().unwrap_or_default(),
+            n: n as usize,
+            initial,
+            kernel,
+            restitution: alpha,
+            drive,
+            times,
+            ensembles: m as u64,
+            seed: seed as u64,
+        })
+    }
+}
+
+/// Parses and validates scene text; `path` names the source in errors.
+pub fn parse(path: &Path, text: &str) -> Result<Scene, Error> {
+    let file: SceneFile = toml::from_str(text).map_err(|e| Error::Parse {
+        path: PathBuf::from(path),
+        message: e.to_string().trim_end().to_string(),
+    })?;
+    file.validate(path, text)
+}
+
+/// Reads, parses and validates a scene file.
+pub fn load(path: &Path) -> Result<Scene, Error> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    parse(path, &text)
+}

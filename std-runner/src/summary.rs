@@ -1,0 +1,68 @@
+//! The short text summary `gdsmc run` prints.
+
+use crate::columns::{COLUMNS, index};
+use crate::ensemble::RunStats;
+use crate::references::ReferenceCurve;
+use crate::scene::Scene;
+use std::fmt::Write;
+
+/// The summary: scene, sizes, timing, counts, and a table of T, T_bulk, a2 and crit at up to
+/// nine observation times, with the references beside them.
+pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String {
+    let mut s = String::new();
+    let c = stats.counts;
+    let _ = writeln!(s, "scene      {}", scene.name);
+    if !scene.description.is_empty() {
+        let _ = writeln!(s, "           {}", scene.description);
+    }
+    let _ = writeln!(
+        s,
+        "run        n = {}, ensembles = {}, seed = {}, threads = {}, wall = {:.2} s",
+        scene.n,
+        stats.ensembles,
+        scene.seed,
+        stats.threads,
+        stats.wall.as_secs_f64()
+    );
+    let _ = writeln!(
+        s,
+        "events     {} collisions, {} fictitious, {} majorant overshoots ({:.3e} collisions/s)",
+        c.collisions,
+        c.fictitious,
+        c.overshoots,
+        c.collisions as f64 / stats.wall.as_secs_f64().max(1e-9)
+    );
+    let shown = ["T", "T_bulk", "a2", "crit"];
+    let _ = write!(s, "\n{:>8}", "t");
+    for name in shown {
+        let _ = write!(s, " {:>24}", format!("{name} +- 99.9% CI"));
+        if let Some(r) = refs.iter().find(|r| r.of == name) {
+            let _ = write!(s, " {:>12}", r.name);
+        }
+    }
+    let _ = writeln!(s);
+    let nt = stats.times.len();
+    let step = nt.div_ceil(9).max(1);
+    let mut rows: Vec<usize> = (0..nt).step_by(step).collect();
+    if *rows.last().unwrap() != nt - 1 {
+        rows.push(nt - 1);
+    }
+    for ti in rows {
+        let _ = write!(s, "{:>8.4}", stats.times[ti]);
+        for name in shown {
+            let col = index(name).unwrap();
+            let _ = write!(
+                s,
+                " {:>13.6} +- {:<8.2e}",
+                stats.mean(ti, col),
+                stats.ci(ti, col)
+            );
+            if let Some(r) = refs.iter().find(|r| r.of == name) {
+                let _ = write!(s, " {:>12.6}", (r.curve)(stats.times[ti]));
+            }
+        }
+        let _ = writeln!(s);
+    }
+    let _ = COLUMNS;
+    s
+}
