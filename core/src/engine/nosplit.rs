@@ -99,14 +99,15 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         t_end: Real,
         rng: &mut R,
     ) -> Result<Observables, EngineError> {
-        if !(t_end >= self.t) || !t_end.is_finite() {
+        if !t_end.is_finite() || t_end < self.t {
             return Err(EngineError::TimeBackwards);
         }
         let n = p.len();
         let mut rate = self.kernel.majorant_rate(n, self.umax);
         loop {
             let t_next = self.t + standard_exponential(rng) / rate;
-            if !(t_next < t_end) {
+            // Not `t_next >= t_end` alone: a zero rate with a zero draw gives NaN, which stops too.
+            if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
                 break;
             }
             self.t = t_next;

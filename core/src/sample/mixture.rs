@@ -81,7 +81,7 @@ impl<const CAP: usize> MaxwellianMixture<CAP> {
     /// One velocity; `Err(ParamError::Weight)` when there is no component of positive weight.
     #[inline]
     pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Result<Vec3, ParamError> {
-        if !(self.total > 0.0) {
+        if self.total.is_nan() || self.total <= 0.0 {
             return Err(ParamError::Weight);
         }
         let target = uniform01(rng) * self.total;
