@@ -7,7 +7,10 @@ use std::path::PathBuf;
 
 /// Path of a shipped scene file.
 pub fn scene_path(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("scenes").join(format!("{name}.toml"))
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("scenes")
+        .join(format!("{name}.toml"))
 }
 
 /// A shipped scene with `n` particles, `m` ensembles and this seed.
@@ -32,5 +35,9 @@ pub fn at(stats: &RunStats, ti: usize, name: &str) -> (f64, f64) {
 
 /// Index of the observation time `t` (exactly one of the scene's times).
 pub fn time_index(stats: &RunStats, t: f64) -> usize {
-    stats.times.iter().position(|&x| (x - t).abs() < 1e-12).expect("observation time")
+    stats
+        .times
+        .iter()
+        .position(|&x| (x - t).abs() < 1e-12)
+        .expect("observation time")
 }

@@ -26,7 +26,10 @@ fn temperature_error_falls_fourfold_per_fourfold_n() {
         let (e, conf) = ((t - exact).abs() / exact, c / exact);
         // The error itself matches the exact finite-n bias within its confidence.
         let bias = (mt.finite_n_raw_mean(n, 8.0) - exact) / exact;
-        assert!((e - bias).abs() <= conf, "n = {n}: E_end {e} +- {conf}, exact bias {bias}");
+        assert!(
+            (e - bias).abs() <= conf,
+            "n = {n}: E_end {e} +- {conf}, exact bias {bias}"
+        );
         // RW Table 1 (no splitting, N = 10,000): 0.359, 0.0939, 0.0229 for n = 16, 64, 256.
         errs.push((e, conf));
     }
@@ -34,7 +37,13 @@ fn temperature_error_falls_fourfold_per_fourfold_n() {
         let ((e1, c1), (e2, c2)) = (w[0], w[1]);
         let lo = (e1 - c1) / (e2 + c2);
         let hi = (e1 + c1) / (e2 - c2);
-        assert!(lo <= 4.0 && 4.0 <= hi, "convergence factor interval [{lo}, {hi}] misses 4");
-        assert!(lo > 2.0 && hi < 16.0, "convergence factor interval [{lo}, {hi}] too wide to tell");
+        assert!(
+            lo <= 4.0 && 4.0 <= hi,
+            "convergence factor interval [{lo}, {hi}] misses 4"
+        );
+        assert!(
+            lo > 2.0 && hi < 16.0,
+            "convergence factor interval [{lo}, {hi}] too wide to tell"
+        );
     }
 }

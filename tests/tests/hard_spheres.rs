@@ -14,8 +14,15 @@ fn example5_converges_in_n() {
         .map(|(k, &(n, m))| {
             let st = run(&shipped("grw-example5", n, m, 500 + k as u64));
             // Every candidate above the majorant is counted; they must stay rare.
-            assert!(st.counts.overshoots * 10_000 < st.counts.candidates, "overshoots {:?}", st.counts);
-            assert!(st.counts.fictitious > 0, "hard spheres must see fictitious collisions");
+            assert!(
+                st.counts.overshoots * 10_000 < st.counts.candidates,
+                "overshoots {:?}",
+                st.counts
+            );
+            assert!(
+                st.counts.fictitious > 0,
+                "hard spheres must see fictitious collisions"
+            );
             at(&st, time_index(&st, 2.0), "T")
         })
         .collect();
@@ -23,9 +30,15 @@ fn example5_converges_in_n() {
     let c1 = runs[0].1 + runs[1].1;
     let d2 = runs[1].0 - runs[2].0;
     let c2 = runs[1].1 + runs[2].1;
-    assert!(d1.abs() > c1 && d2.abs() > c2, "differences not resolved: {d1} +- {c1}, {d2} +- {c2}");
+    assert!(
+        d1.abs() > c1 && d2.abs() > c2,
+        "differences not resolved: {d1} +- {c1}, {d2} +- {c2}"
+    );
     assert!(d1.signum() == d2.signum(), "not monotone in n: {d1}, {d2}");
     let lo = (d1.abs() - c1) / (d2.abs() + c2);
     let hi = (d1.abs() + c1) / (d2.abs() - c2);
-    assert!(lo <= 4.0 && 4.0 <= hi, "ratio interval [{lo}, {hi}] misses 4");
+    assert!(
+        lo <= 4.0 && 4.0 <= hi,
+        "ratio interval [{lo}, {hi}] misses 4"
+    );
 }

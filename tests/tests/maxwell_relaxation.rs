@@ -22,13 +22,22 @@ fn finite_n_means_are_exact_examples_3_and_4() {
             let ti = time_index(&st, t);
             let (tb, cb) = at(&st, ti, "T_bulk");
             let eb = mt.finite_n_bulk_mean(n, t);
-            assert!((tb - eb).abs() <= cb, "{scene} t={t}: T_bulk {tb} +- {cb}, exact (1-1/n)T = {eb}");
+            assert!(
+                (tb - eb).abs() <= cb,
+                "{scene} t={t}: T_bulk {tb} +- {cb}, exact (1-1/n)T = {eb}"
+            );
             let (tr, cr) = at(&st, ti, "T");
             let er = mt.finite_n_raw_mean(n, t);
-            assert!((tr - er).abs() <= cr, "{scene} t={t}: T {tr} +- {cr}, exact finite-n mean {er}");
+            assert!(
+                (tr - er).abs() <= cr,
+                "{scene} t={t}: T {tr} +- {cr}, exact finite-n mean {er}"
+            );
             // And the bias is really there: at n = 8 the infinite-n curve is far outside (t > 0).
             if t >= 1.0 {
-                assert!((tr - mt.at(t)).abs() > cr, "{scene} t={t}: finite-n bias not resolved");
+                assert!(
+                    (tr - mt.at(t)).abs() > cr,
+                    "{scene} t={t}: finite-n bias not resolved"
+                );
             }
         }
     }
@@ -47,7 +56,10 @@ fn large_n_follows_grw_13() {
             let exact = mt.at(t);
             for col in ["T", "T_bulk"] {
                 let (m, c) = at(&st, ti, col);
-                assert!((m - exact).abs() <= c, "{scene} t={t}: {col} = {m} +- {c}, GRW (13) {exact}");
+                assert!(
+                    (m - exact).abs() <= c,
+                    "{scene} t={t}: {col} = {m} +- {c}, GRW (13) {exact}"
+                );
             }
             // The bulk velocity stays near zero (GRW Remark 1): each component within its CI.
             for col in ["V_x", "V_y", "V_z"] {
