@@ -8,8 +8,10 @@ use crate::math::Real;
 pub use rand_core::{Rng, SeedableRng};
 pub use rand_xoshiro::Xoshiro256PlusPlus;
 
-/// 2^-53, the spacing of the doubles produced by [`uniform_open01`].
+/// 2^-53, the spacing of the doubles produced by [`uniform01`].
 const TWO_POW_M53: Real = 1.0 / 9_007_199_254_740_992.0;
+/// 2^-52, the spacing of the doubles produced by [`uniform_open01`].
+const TWO_POW_M52: Real = 1.0 / 4_503_599_627_370_496.0;
 
 /// The generator of ensemble 0 of a run with this seed (SplitMix64 seeding of Xoshiro256++).
 pub fn seeded(seed: u64) -> Xoshiro256PlusPlus {
@@ -49,11 +51,12 @@ impl Iterator for Streams {
     }
 }
 
-/// A uniform double in the open interval (0, 1): `(k + 1/2) 2^-53` for a uniform 53-bit `k`.
-/// Never 0 and never 1, so a logarithm may follow.
+/// A uniform double in the open interval (0, 1): `(k + 1/2) 2^-52` for a uniform 52-bit `k`,
+/// the midpoints of 2^52 equal cells. Never 0 and never 1 (with 53 bits the top value
+/// `1 - 2^-54` would round to 1), so a logarithm may follow.
 #[inline(always)]
 pub fn uniform_open01<R: Rng + ?Sized>(rng: &mut R) -> Real {
-    ((rng.next_u64() >> 11) as Real + 0.5) * TWO_POW_M53
+    ((rng.next_u64() >> 12) as Real + 0.5) * TWO_POW_M52
 }
 
 /// A uniform double in [0, 1): `k 2^-53` for a uniform 53-bit `k`.
@@ -112,6 +115,8 @@ mod tests {
         let hi = uniform_open01(&mut Fixed(u64::MAX));
         assert!(lo > 0.0 && lo < 1e-15);
         assert!(hi < 1.0 && hi > 1.0 - 1e-15);
+        assert_eq!(lo, 2f64.powi(-53));
+        assert_eq!(hi, 1.0 - 2f64.powi(-53));
         assert!(uniform01(&mut Fixed(0)) == 0.0);
         assert!(uniform01(&mut Fixed(u64::MAX)) < 1.0);
     }
