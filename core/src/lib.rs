@@ -14,12 +14,12 @@
 //!
 //! ```
 //! use gdsmc_core::{drive::WhiteNoise, engine::NoSplitting, kernel::Maxwell, math::PI,
-//!                  particles::Particles, restitution::Constant, rng::seeded,
+//!                  particles::{Particle, Particles}, restitution::Constant, rng::seeded,
 //!                  sample::Maxwellian};
 //! // GRW Example 3 with 64 particles: alpha = 1/2, beta = 1, gamma = 4, C0 = 1/(4 pi).
 //! let n = 64;
-//! let mut buf = vec![0.0; 4 * n];
-//! let mut p = Particles::from_buffer(&mut buf, n).unwrap();
+//! let mut buf = vec![Particle::default(); n];
+//! let mut p = Particles::new(&mut buf).unwrap();
 //! let mut rng = seeded(1);
 //! let f0 = Maxwellian::standard();
 //! p.fill_with(0.0, || f0.sample(&mut rng));

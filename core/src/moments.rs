@@ -55,8 +55,7 @@ pub struct Observables {
 impl Observables {
     /// Observables of the current velocities of `p` (which the caller has brought to one time).
     pub fn of(p: &Particles<'_>) -> Self {
-        let (vx, vy, vz) = p.components();
-        Self::from_sums(&accumulate(vx, vy, vz))
+        Self::from_sums(&accumulate(p.as_slice()))
     }
 
     /// Observables from moment sums.

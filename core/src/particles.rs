@@ -1,74 +1,89 @@
-//! The particle system: velocities and last-kick times in caller-owned buffers.
+//! The particle system: velocities and last-kick times in a caller-owned buffer.
 //!
-//! Structure of arrays (`vx`, `vy`, `vz`, `t_kick`), so that the batch kernels (kicks, moments)
-//! run over contiguous lanes. The core never allocates: the caller hands in the slices, either
-//! four separate ones or one buffer of `4 n` reals ([`Particles::from_buffer`]).
+//! One [`Particle`] per particle, 32 bytes aligned to 32: the collision loop touches particles
+//! at random, and this layout makes each touch a single cache line (with four separate arrays
+//! it would be four). The batch kernels load four particles as four `f64x4` rows and transpose
+//! them into lanes. The core never allocates: the caller hands in the slice.
 
 use crate::math::Real;
 use crate::vec3::Vec3;
 
-/// Why a set of buffers cannot hold a particle system.
+/// One particle: velocity and the time it was last kicked (RW Algorithm 3's `sigma_j`, GRW's
+/// `t_j`). `#[repr(C)]` for the C ABI; 32 bytes, aligned to 32.
+#[repr(C, align(32))]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Particle {
+    /// Velocity, x.
+    pub vx: Real,
+    /// Velocity, y.
+    pub vy: Real,
+    /// Velocity, z.
+    pub vz: Real,
+    /// Time of the last kick.
+    pub t_kick: Real,
+}
+
+impl Particle {
+    /// A particle with velocity `v` last kicked at `t`.
+    #[inline(always)]
+    pub const fn new(v: Vec3, t: Real) -> Self {
+        Particle {
+            vx: v.x,
+            vy: v.y,
+            vz: v.z,
+            t_kick: t,
+        }
+    }
+
+    /// The velocity.
+    #[inline(always)]
+    pub fn velocity(&self) -> Vec3 {
+        Vec3::new(self.vx, self.vy, self.vz)
+    }
+
+    /// Sets the velocity.
+    #[inline(always)]
+    pub fn set_velocity(&mut self, v: Vec3) {
+        self.vx = v.x;
+        self.vy = v.y;
+        self.vz = v.z;
+    }
+}
+
+/// Why a buffer cannot hold a particle system.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ParticlesError {
     /// Fewer than two particles: no pair can collide.
     TooFew,
-    /// The four buffers differ in length (or a single buffer is not `4 n` long).
-    LengthMismatch,
 }
 
 impl core::fmt::Display for ParticlesError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(match self {
             ParticlesError::TooFew => "a particle system needs n >= 2 particles",
-            ParticlesError::LengthMismatch => "velocity and time buffers differ in length",
         })
     }
 }
 
-/// `n >= 2` particles: velocity components and the time each was last kicked (RW Algorithm 3's
-/// `sigma_j`; GRW's `t_j`).
+/// `n >= 2` particles in a caller-owned slice.
 #[derive(Debug)]
 pub struct Particles<'a> {
-    vx: &'a mut [Real],
-    vy: &'a mut [Real],
-    vz: &'a mut [Real],
-    t_kick: &'a mut [Real],
+    p: &'a mut [Particle],
 }
 
 impl<'a> Particles<'a> {
-    /// A system over four caller buffers of equal length `n >= 2`.
-    pub fn new(
-        vx: &'a mut [Real],
-        vy: &'a mut [Real],
-        vz: &'a mut [Real],
-        t_kick: &'a mut [Real],
-    ) -> Result<Self, ParticlesError> {
-        let n = vx.len();
-        if vy.len() != n || vz.len() != n || t_kick.len() != n {
-            return Err(ParticlesError::LengthMismatch);
-        }
-        if n < 2 {
+    /// A system over a caller buffer of `n >= 2` particles.
+    pub fn new(p: &'a mut [Particle]) -> Result<Self, ParticlesError> {
+        if p.len() < 2 {
             return Err(ParticlesError::TooFew);
         }
-        Ok(Particles { vx, vy, vz, t_kick })
-    }
-
-    /// A system of `n` particles in one caller buffer of exactly `4 n` reals, laid out as
-    /// `[vx; n][vy; n][vz; n][t_kick; n]`.
-    pub fn from_buffer(buf: &'a mut [Real], n: usize) -> Result<Self, ParticlesError> {
-        if n.checked_mul(4) != Some(buf.len()) {
-            return Err(ParticlesError::LengthMismatch);
-        }
-        let (vx, rest) = buf.split_at_mut(n);
-        let (vy, rest) = rest.split_at_mut(n);
-        let (vz, t_kick) = rest.split_at_mut(n);
-        Self::new(vx, vy, vz, t_kick)
+        Ok(Particles { p })
     }
 
     /// Number of particles.
     #[inline(always)]
     pub fn len(&self) -> usize {
-        self.vx.len()
+        self.p.len()
     }
 
     /// Always false: a system holds at least two particles.
@@ -80,50 +95,48 @@ impl<'a> Particles<'a> {
     /// Velocity of particle `i`.
     #[inline(always)]
     pub fn velocity(&self, i: usize) -> Vec3 {
-        Vec3::new(self.vx[i], self.vy[i], self.vz[i])
+        self.p[i].velocity()
     }
 
     /// Sets the velocity of particle `i`.
     #[inline(always)]
     pub fn set_velocity(&mut self, i: usize, v: Vec3) {
-        self.vx[i] = v.x;
-        self.vy[i] = v.y;
-        self.vz[i] = v.z;
+        self.p[i].set_velocity(v);
     }
 
     /// Time particle `i` was last kicked.
     #[inline(always)]
     pub fn kick_time(&self, i: usize) -> Real {
-        self.t_kick[i]
+        self.p[i].t_kick
     }
 
-    /// Sets the time particle `i` was last kicked.
+    /// Particle `i`, mutable.
     #[inline(always)]
-    pub fn set_kick_time(&mut self, i: usize, t: Real) {
-        self.t_kick[i] = t;
+    pub fn get_mut(&mut self, i: usize) -> &mut Particle {
+        &mut self.p[i]
     }
 
     /// Sets every particle's last-kick time to `t` (start of a run).
     pub fn reset_kick_times(&mut self, t: Real) {
-        self.t_kick.fill(t);
+        for q in self.p.iter_mut() {
+            q.t_kick = t;
+        }
     }
 
-    /// The velocity components, read-only.
-    pub fn components(&self) -> (&[Real], &[Real], &[Real]) {
-        (self.vx, self.vy, self.vz)
+    /// The particles, read-only.
+    pub fn as_slice(&self) -> &[Particle] {
+        self.p
     }
 
-    /// All four buffers, mutable: for the batch kernels.
-    pub fn lanes_mut(&mut self) -> (&mut [Real], &mut [Real], &mut [Real], &mut [Real]) {
-        (self.vx, self.vy, self.vz, self.t_kick)
+    /// The particles, mutable: for the batch kernels.
+    pub fn as_mut_slice(&mut self) -> &mut [Particle] {
+        self.p
     }
 
     /// Fills the velocities from a sampler and sets every last-kick time to `t0`.
     pub fn fill_with(&mut self, t0: Real, mut sample: impl FnMut() -> Vec3) {
-        for i in 0..self.len() {
-            let v = sample();
-            self.set_velocity(i, v);
+        for q in self.p.iter_mut() {
+            *q = Particle::new(sample(), t0);
         }
-        self.reset_kick_times(t0);
     }
 }

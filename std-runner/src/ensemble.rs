@@ -15,7 +15,7 @@ use gdsmc_core::drive::{Drive, NoDrive, WhiteNoise};
 use gdsmc_core::engine::{Counts, NoSplitting};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
-use gdsmc_core::particles::Particles;
+use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
 use gdsmc_core::sample::{Maxwellian, MaxwellianMixture};
@@ -83,8 +83,8 @@ pub fn run_ensemble<K: Kernel, D: Drive>(
     mut rng: Xoshiro256PlusPlus,
 ) -> Result<(Vec<f64>, Counts), gdsmc_core::engine::EngineError> {
     let n = scene.n;
-    let mut buf = vec![0.0; 4 * n];
-    let mut p = Particles::from_buffer(&mut buf, n).expect("n >= 2 validated");
+    let mut buf = vec![Particle::default(); n];
+    let mut p = Particles::new(&mut buf).expect("n >= 2 validated");
     let f0 = initial_sampler(scene);
     p.fill_with(0.0, || f0.sample(&mut rng).expect("validated weights"));
     let alpha = Constant::new(scene.restitution).expect("validated");

@@ -1,14 +1,17 @@
 //! The white-noise kick of every particle to an observation time (GRW Section 3 step 3.1,
 //! RW Algorithm 3 step 3.1): `v_i += sqrt(2 beta (t - t_i)) xi_i`, `t_i := t`.
 //!
-//! The SIMD kernel draws its normals four lanes at a time by the Box-Muller transform
-//! (`r = sqrt(-2 ln u1)`, `(r cos 2 pi u2, r sin 2 pi u2)`, exact in distribution), with `u1` in
-//! the open interval (0, 1). Eight particles take three Box-Muller batches (24 normals).
-//! The remainder (`n mod 8` particles) uses the scalar ziggurat.
+//! Normals are drawn by the scalar ziggurat in particle order (x, y, z), exactly as the scalar
+//! twin draws them, so the two kernels give bit-identical results from the same generator.
+//! The SIMD kernel takes four particles at a time: the four 32-byte particles are loaded as
+//! `f64x4` rows and transposed into `vx`, `vy`, `vz`, `t` lanes, the four scale factors
+//! `sqrt(2 beta (t - t_i))` and the updates are computed lane-wise, and the rows are transposed
+//! back. (A Box-Muller SIMD normal generator using `wide`'s `ln` and `sin_cos` was measured at
+//! 43 M particles/s against the ziggurat's 90 M/s on SSE2, and dropped.)
 
-use crate::math::{PI, Real, sqrt};
-use crate::particles::Particles;
-use crate::rng::{Rng, uniform_open01, uniform01};
+use crate::math::{Real, sqrt};
+use crate::particles::{Particle, Particles};
+use crate::rng::Rng;
 use crate::sample::standard_normal3;
 use wide::f64x4;
 
@@ -28,85 +31,72 @@ pub fn white_noise_kick_all<R: Rng + ?Sized>(
     }
 }
 
-/// Scalar twin: particle by particle, ziggurat normals.
+#[inline(always)]
+fn kick_one<R: Rng + ?Sized>(two_beta: Real, q: &mut Particle, t: Real, rng: &mut R) {
+    let s = sqrt(two_beta * (t - q.t_kick));
+    let v = q.velocity() + s * standard_normal3(rng);
+    q.set_velocity(v);
+    q.t_kick = t;
+}
+
+/// Scalar twin: particle by particle.
 pub fn white_noise_kick_all_scalar<R: Rng + ?Sized>(
     two_beta: Real,
     p: &mut Particles<'_>,
     t: Real,
     rng: &mut R,
 ) {
-    for i in 0..p.len() {
-        let s = sqrt(two_beta * (t - p.kick_time(i)));
-        let v = p.velocity(i) + s * standard_normal3(rng);
-        p.set_velocity(i, v);
-        p.set_kick_time(i, t);
+    for q in p.as_mut_slice() {
+        kick_one(two_beta, q, t, rng);
     }
 }
 
-/// Four pairs of independent standard normals by Box-Muller.
+/// Loads four particles and transposes them into `[vx, vy, vz, t_kick]` lanes.
 #[inline(always)]
-pub fn box_muller4<R: Rng + ?Sized>(rng: &mut R) -> (f64x4, f64x4) {
-    let u1 = f64x4::from([
-        uniform_open01(rng),
-        uniform_open01(rng),
-        uniform_open01(rng),
-        uniform_open01(rng),
-    ]);
-    let u2 = f64x4::from([
-        uniform01(rng),
-        uniform01(rng),
-        uniform01(rng),
-        uniform01(rng),
-    ]);
-    let r = (f64x4::splat(-2.0) * u1.ln()).sqrt();
-    let (s, c) = (f64x4::splat(2.0 * PI) * u2).sin_cos();
-    (r * c, r * s)
+pub fn load4(q: &[Particle]) -> [f64x4; 4] {
+    let row = |p: &Particle| f64x4::from([p.vx, p.vy, p.vz, p.t_kick]);
+    f64x4::transpose([row(&q[0]), row(&q[1]), row(&q[2]), row(&q[3])])
 }
 
+/// Transposes `[vx, vy, vz, t_kick]` lanes back and stores four particles.
 #[inline(always)]
-fn load(s: &[Real]) -> f64x4 {
-    f64x4::from([s[0], s[1], s[2], s[3]])
+pub fn store4(q: &mut [Particle], lanes: [f64x4; 4]) {
+    let rows = f64x4::transpose(lanes);
+    for (p, r) in q.iter_mut().zip(rows) {
+        let [vx, vy, vz, t_kick] = r.to_array();
+        *p = Particle { vx, vy, vz, t_kick };
+    }
 }
 
-#[inline(always)]
-fn store(d: &mut [Real], v: f64x4) {
-    d[..4].copy_from_slice(&v.to_array());
-}
-
-/// SIMD kernel: eight particles per step, three Box-Muller batches.
+/// SIMD kernel: four particles per step.
 pub fn white_noise_kick_all_simd<R: Rng + ?Sized>(
     two_beta: Real,
     p: &mut Particles<'_>,
     t: Real,
     rng: &mut R,
 ) {
-    let n = p.len();
-    let blocks = n / 8;
-    {
-        let (vx, vy, vz, tk) = p.lanes_mut();
-        let tb = f64x4::splat(two_beta);
-        let tt = f64x4::splat(t);
-        for b in 0..blocks {
-            let o = 8 * b;
-            let (gx0, gx1) = box_muller4(rng);
-            let (gy0, gy1) = box_muller4(rng);
-            let (gz0, gz1) = box_muller4(rng);
-            for (k, gx, gy, gz) in [(o, gx0, gy0, gz0), (o + 4, gx1, gy1, gz1)] {
-                let s = (tb * (tt - load(&tk[k..k + 4]))).sqrt();
-                let new_vx = load(&vx[k..k + 4]) + s * gx;
-                store(&mut vx[k..k + 4], new_vx);
-                let new_vy = load(&vy[k..k + 4]) + s * gy;
-                store(&mut vy[k..k + 4], new_vy);
-                let new_vz = load(&vz[k..k + 4]) + s * gz;
-                store(&mut vz[k..k + 4], new_vz);
-            }
-            tk[o..o + 8].fill(t);
+    let tb = f64x4::splat(two_beta);
+    let tt = f64x4::splat(t);
+    let mut chunks = p.as_mut_slice().chunks_exact_mut(4);
+    for q in &mut chunks {
+        let mut g = [[0.0; 4]; 3];
+        for k in 0..4 {
+            let z = standard_normal3(rng);
+            g[0][k] = z.x;
+            g[1][k] = z.y;
+            g[2][k] = z.z;
         }
+        let [x, y, z, tk] = load4(q);
+        let s = (tb * (tt - tk)).sqrt();
+        let lanes = [
+            x + s * f64x4::from(g[0]),
+            y + s * f64x4::from(g[1]),
+            z + s * f64x4::from(g[2]),
+            tt,
+        ];
+        store4(q, lanes);
     }
-    for i in 8 * blocks..n {
-        let s = sqrt(two_beta * (t - p.kick_time(i)));
-        let v = p.velocity(i) + s * standard_normal3(rng);
-        p.set_velocity(i, v);
-        p.set_kick_time(i, t);
+    for q in chunks.into_remainder() {
+        kick_one(two_beta, q, t, rng);
     }
 }

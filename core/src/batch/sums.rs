@@ -5,7 +5,9 @@
 //! Sums are taken lane-wise over blocks of four particles and reduced at the end, in a fixed
 //! order, so results depend only on the particle values.
 
+use super::kick::load4;
 use crate::math::{Real, max};
+use crate::particles::Particle;
 use crate::vec3::Vec3;
 use wide::f64x4;
 
@@ -32,48 +34,56 @@ pub struct Sums {
     pub max_c2: Real,
 }
 
-/// The sums of the velocities `(vx, vy, vz)` (equal lengths, at least one particle): SIMD
-/// unless the `scalar` feature is on.
-pub fn accumulate(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
+/// The sums over the particles `q` (at least one): SIMD unless the `scalar` feature is on.
+pub fn accumulate(q: &[Particle]) -> Sums {
     if cfg!(feature = "scalar") {
-        accumulate_scalar(vx, vy, vz)
+        accumulate_scalar(q)
     } else {
-        accumulate_simd(vx, vy, vz)
+        accumulate_simd(q)
     }
 }
 
+/// Adds one particle's raw moments.
+#[inline(always)]
+fn add_raw(s: &mut Sums, x: Real, y: Real, z: Real) {
+    let v2 = x * x + y * y + z * z;
+    s.s1[0] += x;
+    s.s1[1] += y;
+    s.s1[2] += z;
+    s.s2[0] += x * x;
+    s.s2[1] += y * y;
+    s.s2[2] += z * z;
+    s.s2[3] += x * y;
+    s.s2[4] += x * z;
+    s.s2[5] += y * z;
+    s.s3[0] += x * v2;
+    s.s3[1] += y * v2;
+    s.s3[2] += z * v2;
+    s.s4 += v2 * v2;
+    s.s6 += v2 * v2 * v2;
+}
+
+/// Adds one particle's central moments about `bulk`.
+#[inline(always)]
+fn add_central(s: &mut Sums, p: &Particle, bulk: Vec3) {
+    let c2 = (p.velocity() - bulk).norm2();
+    s.c4 += c2 * c2;
+    s.c6 += c2 * c2 * c2;
+    s.max_c2 = max(s.max_c2, c2);
+}
+
 /// Scalar twin of [`accumulate`].
-pub fn accumulate_scalar(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
-    let n = vx.len();
+pub fn accumulate_scalar(q: &[Particle]) -> Sums {
     let mut s = Sums {
-        n,
+        n: q.len(),
         ..Sums::default()
     };
-    for i in 0..n {
-        let (x, y, z) = (vx[i], vy[i], vz[i]);
-        let v2 = x * x + y * y + z * z;
-        s.s1[0] += x;
-        s.s1[1] += y;
-        s.s1[2] += z;
-        s.s2[0] += x * x;
-        s.s2[1] += y * y;
-        s.s2[2] += z * z;
-        s.s2[3] += x * y;
-        s.s2[4] += x * z;
-        s.s2[5] += y * z;
-        s.s3[0] += x * v2;
-        s.s3[1] += y * v2;
-        s.s3[2] += z * v2;
-        s.s4 += v2 * v2;
-        s.s6 += v2 * v2 * v2;
+    for p in q {
+        add_raw(&mut s, p.vx, p.vy, p.vz);
     }
     let bulk = bulk_of(&s);
-    for i in 0..n {
-        let c = Vec3::new(vx[i], vy[i], vz[i]) - bulk;
-        let c2 = c.norm2();
-        s.c4 += c2 * c2;
-        s.c6 += c2 * c2 * c2;
-        s.max_c2 = max(s.max_c2, c2);
+    for p in q {
+        add_central(&mut s, p, bulk);
     }
     s
 }
@@ -83,22 +93,16 @@ fn bulk_of(s: &Sums) -> Vec3 {
     Vec3::new(s.s1[0] * inv, s.s1[1] * inv, s.s1[2] * inv)
 }
 
-#[inline(always)]
-fn load(s: &[Real]) -> f64x4 {
-    f64x4::from([s[0], s[1], s[2], s[3]])
-}
-
-/// SIMD kernel of [`accumulate`]: four particles per lane-step.
-pub fn accumulate_simd(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
-    let n = vx.len();
+/// SIMD kernel of [`accumulate`]: four particles per lane-step (loaded and transposed).
+pub fn accumulate_simd(q: &[Particle]) -> Sums {
+    let n = q.len();
     let blocks = n / 4;
     let z = f64x4::ZERO;
     let (mut a1, mut a2, mut a3) = (z, z, z);
     let (mut xx, mut yy, mut zz, mut xy, mut xz, mut yz) = (z, z, z, z, z, z);
     let (mut b1, mut b2, mut b3, mut q4, mut q6) = (z, z, z, z, z);
     for b in 0..blocks {
-        let k = 4 * b;
-        let (x, y, w) = (load(&vx[k..]), load(&vy[k..]), load(&vz[k..]));
+        let [x, y, w, _] = load4(&q[4 * b..]);
         let v2 = x * x + y * y + w * w;
         a1 += x;
         a2 += y;
@@ -132,23 +136,8 @@ pub fn accumulate_simd(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
         s6: q6.reduce_add(),
         ..Sums::default()
     };
-    for i in 4 * blocks..n {
-        let (x, y, w) = (vx[i], vy[i], vz[i]);
-        let v2 = x * x + y * y + w * w;
-        s.s1[0] += x;
-        s.s1[1] += y;
-        s.s1[2] += w;
-        s.s2[0] += x * x;
-        s.s2[1] += y * y;
-        s.s2[2] += w * w;
-        s.s2[3] += x * y;
-        s.s2[4] += x * w;
-        s.s2[5] += y * w;
-        s.s3[0] += x * v2;
-        s.s3[1] += y * v2;
-        s.s3[2] += w * v2;
-        s.s4 += v2 * v2;
-        s.s6 += v2 * v2 * v2;
+    for p in &q[4 * blocks..] {
+        add_raw(&mut s, p.vx, p.vy, p.vz);
     }
     let bulk = bulk_of(&s);
     let (bx, by, bz) = (
@@ -158,12 +147,8 @@ pub fn accumulate_simd(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
     );
     let (mut c4, mut c6, mut m2) = (z, z, z);
     for b in 0..blocks {
-        let k = 4 * b;
-        let (x, y, w) = (
-            load(&vx[k..]) - bx,
-            load(&vy[k..]) - by,
-            load(&vz[k..]) - bz,
-        );
+        let [x, y, w, _] = load4(&q[4 * b..]);
+        let (x, y, w) = (x - bx, y - by, w - bz);
         let c2 = x * x + y * y + w * w;
         let c4v = c2 * c2;
         c4 += c4v;
@@ -173,12 +158,8 @@ pub fn accumulate_simd(vx: &[Real], vy: &[Real], vz: &[Real]) -> Sums {
     s.c4 = c4.reduce_add();
     s.c6 = c6.reduce_add();
     s.max_c2 = m2.to_array().into_iter().fold(0.0, max);
-    for i in 4 * blocks..n {
-        let c = Vec3::new(vx[i], vy[i], vz[i]) - bulk;
-        let c2 = c.norm2();
-        s.c4 += c2 * c2;
-        s.c6 += c2 * c2 * c2;
-        s.max_c2 = max(s.max_c2, c2);
+    for p in &q[4 * blocks..] {
+        add_central(&mut s, p, bulk);
     }
     s
 }

@@ -27,9 +27,10 @@ pub trait Drive: Copy {
     #[inline(always)]
     fn kick<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, i: usize, t: Real, rng: &mut R) {
         if Self::ACTS {
-            let v = self.evolve(p.velocity(i), t - p.kick_time(i), rng);
-            p.set_velocity(i, v);
-            p.set_kick_time(i, t);
+            let q = p.get_mut(i);
+            let v = self.evolve(q.velocity(), t - q.t_kick, rng);
+            q.set_velocity(v);
+            q.t_kick = t;
         }
     }
 
