@@ -13,6 +13,7 @@ use crate::math::{Real, sqrt};
 use crate::particles::{Particle, Particles};
 use crate::rng::Rng;
 use crate::sample::standard_normal3;
+use crate::vec3::Vec3;
 use wide::f64x4;
 
 /// Kicks every particle to time `t` with strength `two_beta = 2 beta` (SIMD unless the
@@ -79,13 +80,9 @@ pub fn white_noise_kick_all_simd<R: Rng + ?Sized>(
     let tt = f64x4::splat(t);
     let mut chunks = p.as_mut_slice().chunks_exact_mut(4);
     for q in &mut chunks {
-        let mut g = [[0.0; 4]; 3];
-        for k in 0..4 {
-            let z = standard_normal3(rng);
-            g[0][k] = z.x;
-            g[1][k] = z.y;
-            g[2][k] = z.z;
-        }
+        // Normals in particle order, as the scalar twin draws them.
+        let g: [Vec3; 4] = core::array::from_fn(|_| standard_normal3(rng));
+        let lane = |f: fn(&Vec3) -> Real| f64x4::from([f(&g[0]), f(&g[1]), f(&g[2]), f(&g[3])]);
         let [x, y, z, tk] = load4(q);
         let s = (tb * (tt - tk)).sqrt();
         let lanes = [
