@@ -86,9 +86,9 @@ pub fn white_noise_kick_all_simd<R: Rng + ?Sized>(
         let [x, y, z, tk] = load4(q);
         let s = (tb * (tt - tk)).sqrt();
         let lanes = [
-            x + s * f64x4::from(g[0]),
-            y + s * f64x4::from(g[1]),
-            z + s * f64x4::from(g[2]),
+            x + s * lane(|v| v.x),
+            y + s * lane(|v| v.y),
+            z + s * lane(|v| v.z),
             tt,
         ];
         store4(q, lanes);
