@@ -70,3 +70,12 @@ pub fn max(a: Real, b: Real) -> Real {
 pub fn min(a: Real, b: Real) -> Real {
     libm::fmin(a, b)
 }
+
+/// Four lanes of [`Real`] for the SIMD batch kernels.
+pub type RealX4 = wide::f64x4;
+
+/// A value in [1, 2) whose mantissa is the top 52 bits of `bits` (the ziggurat's uniform).
+#[inline(always)]
+pub fn one_to_two(bits: u64) -> Real {
+    f64::from_bits((bits >> 12) | 0x3ff0_0000_0000_0000)
+}

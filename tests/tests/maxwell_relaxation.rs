@@ -43,24 +43,35 @@ fn finite_n_means_are_exact_examples_3_and_4() {
     }
 }
 
-/// At large n the systematic error (about 5/n relative for T) is far inside the confidence
-/// interval, and the ensemble mean follows GRW (13) itself.
+/// At large n the mean bulk temperature follows GRW (13) itself: its exact bias, -T(t)/n, is
+/// asserted to be under a quarter of the confidence half-width before the comparison. GRW's raw
+/// temperature carries a larger bias, (T0 + 2 beta t)/n - T(t)/n, which for Example 4 at
+/// n = 4096 is as large as the interval; it is compared with its exact finite-n mean.
 #[test]
 fn large_n_follows_grw_13() {
     for (scene, seed) in [("grw-example3", 201), ("grw-example4", 202)] {
-        let s = shipped(scene, 4096, 600, seed);
+        let n = 4096;
+        let s = shipped(scene, n, 600, seed);
         let mt = maxwell_temperature(&s).unwrap();
         let st = run(&s);
         for t in [0.0, 1.0, 2.0, 3.0, 4.0, 6.0, 8.0] {
             let ti = time_index(&st, t);
             let exact = mt.at(t);
-            for col in ["T", "T_bulk"] {
-                let (m, c) = at(&st, ti, col);
-                assert!(
-                    (m - exact).abs() <= c,
-                    "{scene} t={t}: {col} = {m} +- {c}, GRW (13) {exact}"
-                );
-            }
+            let (m, c) = at(&st, ti, "T_bulk");
+            assert!(
+                (mt.finite_n_bulk_mean(n, t) - exact).abs() < 0.25 * c,
+                "{scene} t={t}: bias not negligible"
+            );
+            assert!(
+                (m - exact).abs() <= c,
+                "{scene} t={t}: T_bulk = {m} +- {c}, GRW (13) {exact}"
+            );
+            let (m, c) = at(&st, ti, "T");
+            let e = mt.finite_n_raw_mean(n, t);
+            assert!(
+                (m - e).abs() <= c,
+                "{scene} t={t}: T = {m} +- {c}, exact finite-n mean {e}"
+            );
             // The bulk velocity stays near zero (GRW Remark 1): each component within its CI.
             for col in ["V_x", "V_y", "V_z"] {
                 let (m, c) = at(&st, ti, col);

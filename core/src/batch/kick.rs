@@ -4,17 +4,16 @@
 //! Normals are drawn by the scalar ziggurat in particle order (x, y, z), exactly as the scalar
 //! twin draws them, so the two kernels give bit-identical results from the same generator.
 //! The SIMD kernel takes four particles at a time: the four 32-byte particles are loaded as
-//! `f64x4` rows and transposed into `vx`, `vy`, `vz`, `t` lanes, the four scale factors
+//! `RealX4` rows and transposed into `vx`, `vy`, `vz`, `t` lanes, the four scale factors
 //! `sqrt(2 beta (t - t_i))` and the updates are computed lane-wise, and the rows are transposed
 //! back. (A Box-Muller SIMD normal generator using `wide`'s `ln` and `sin_cos` was measured at
 //! 43 M particles/s against the ziggurat's 90 M/s on SSE2, and dropped.)
 
-use crate::math::{Real, sqrt};
+use crate::math::{Real, RealX4, sqrt};
 use crate::particles::{Particle, Particles};
 use crate::rng::Rng;
 use crate::sample::standard_normal3;
 use crate::vec3::Vec3;
-use wide::f64x4;
 
 /// Kicks every particle to time `t` with strength `two_beta = 2 beta` (SIMD unless the
 /// `scalar` feature is on).
@@ -54,15 +53,15 @@ pub fn white_noise_kick_all_scalar<R: Rng + ?Sized>(
 
 /// Loads four particles and transposes them into `[vx, vy, vz, t_kick]` lanes.
 #[inline(always)]
-pub fn load4(q: &[Particle]) -> [f64x4; 4] {
-    let row = |p: &Particle| f64x4::from([p.vx, p.vy, p.vz, p.t_kick]);
-    f64x4::transpose([row(&q[0]), row(&q[1]), row(&q[2]), row(&q[3])])
+pub fn load4(q: &[Particle]) -> [RealX4; 4] {
+    let row = |p: &Particle| RealX4::from([p.vx, p.vy, p.vz, p.t_kick]);
+    RealX4::transpose([row(&q[0]), row(&q[1]), row(&q[2]), row(&q[3])])
 }
 
 /// Transposes `[vx, vy, vz, t_kick]` lanes back and stores four particles.
 #[inline(always)]
-pub fn store4(q: &mut [Particle], lanes: [f64x4; 4]) {
-    let rows = f64x4::transpose(lanes);
+pub fn store4(q: &mut [Particle], lanes: [RealX4; 4]) {
+    let rows = RealX4::transpose(lanes);
     for (p, r) in q.iter_mut().zip(rows) {
         let [vx, vy, vz, t_kick] = r.to_array();
         *p = Particle { vx, vy, vz, t_kick };
@@ -76,13 +75,13 @@ pub fn white_noise_kick_all_simd<R: Rng + ?Sized>(
     t: Real,
     rng: &mut R,
 ) {
-    let tb = f64x4::splat(two_beta);
-    let tt = f64x4::splat(t);
+    let tb = RealX4::splat(two_beta);
+    let tt = RealX4::splat(t);
     let mut chunks = p.as_mut_slice().chunks_exact_mut(4);
     for q in &mut chunks {
         // Normals in particle order, as the scalar twin draws them.
         let g: [Vec3; 4] = core::array::from_fn(|_| standard_normal3(rng));
-        let lane = |f: fn(&Vec3) -> Real| f64x4::from([f(&g[0]), f(&g[1]), f(&g[2]), f(&g[3])]);
+        let lane = |f: fn(&Vec3) -> Real| RealX4::from([f(&g[0]), f(&g[1]), f(&g[2]), f(&g[3])]);
         let [x, y, z, tk] = load4(q);
         let s = (tb * (tt - tk)).sqrt();
         let lanes = [

@@ -6,10 +6,9 @@
 //! order, so results depend only on the particle values.
 
 use super::kick::load4;
-use crate::math::{Real, max};
+use crate::math::{Real, RealX4, max};
 use crate::particles::Particle;
 use crate::vec3::Vec3;
-use wide::f64x4;
 
 /// Unnormalized moment sums of a particle system.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -97,7 +96,7 @@ fn bulk_of(s: &Sums) -> Vec3 {
 pub fn accumulate_simd(q: &[Particle]) -> Sums {
     let n = q.len();
     let blocks = n / 4;
-    let z = f64x4::ZERO;
+    let z = RealX4::ZERO;
     let (mut a1, mut a2, mut a3) = (z, z, z);
     let (mut xx, mut yy, mut zz, mut xy, mut xz, mut yz) = (z, z, z, z, z, z);
     let (mut b1, mut b2, mut b3, mut q4, mut q6) = (z, z, z, z, z);
@@ -141,9 +140,9 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
     }
     let bulk = bulk_of(&s);
     let (bx, by, bz) = (
-        f64x4::splat(bulk.x),
-        f64x4::splat(bulk.y),
-        f64x4::splat(bulk.z),
+        RealX4::splat(bulk.x),
+        RealX4::splat(bulk.y),
+        RealX4::splat(bulk.z),
     );
     let (mut c4, mut c6, mut m2) = (z, z, z);
     for b in 0..blocks {

@@ -10,7 +10,7 @@
 //! ```
 
 use super::ziggurat_tables::{EXP_F, EXP_R, EXP_X};
-use crate::math::{Real, exp, ln};
+use crate::math::{Real, exp, ln, one_to_two};
 use crate::rng::{Rng, uniform_open01, uniform01};
 
 /// One standard exponential variate.
@@ -19,7 +19,7 @@ pub fn standard_exponential<R: Rng + ?Sized>(rng: &mut R) -> Real {
     loop {
         let bits = rng.next_u64();
         let i = (bits & 0xff) as usize;
-        let u = f64::from_bits((bits >> 12) | 0x3ff0_0000_0000_0000) - 1.0;
+        let u = one_to_two(bits) - 1.0;
         let x = u * EXP_X[i];
         if x < EXP_X[i + 1] {
             return x;

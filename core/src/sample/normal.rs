@@ -11,15 +11,9 @@
 //! ```
 
 use super::ziggurat_tables::{NORM_F, NORM_R, NORM_X};
-use crate::math::{Real, exp, ln};
+use crate::math::{Real, abs, exp, ln, one_to_two};
 use crate::rng::{Rng, uniform_open01, uniform01};
 use crate::vec3::Vec3;
-
-/// A double in [1, 2) from the top 52 bits of `bits`.
-#[inline(always)]
-fn one_to_two(bits: u64) -> Real {
-    f64::from_bits((bits >> 12) | 0x3ff0_0000_0000_0000)
-}
 
 /// One standard normal variate.
 #[inline]
@@ -30,7 +24,7 @@ pub fn standard_normal<R: Rng + ?Sized>(rng: &mut R) -> Real {
         // Uniform in [-1, 1) from the top 52 bits; the layer index uses the low 8 bits.
         let u = 2.0 * one_to_two(bits) - 3.0;
         let x = u * NORM_X[i];
-        if x.abs() < NORM_X[i + 1] {
+        if abs(x) < NORM_X[i + 1] {
             return x;
         }
         if i == 0 {
