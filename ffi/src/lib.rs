@@ -1,11 +1,33 @@
-//! C ABI for gdsmc-core.
+//! # gdsmc-ffi: the C ABI of gdsmc
 //!
-//! This crate is a shell until the C ABI issue: it builds the static and shared libraries that
-//! `include/gdsmc.h` will describe, and exports the library version only.
+//! Builds `libgdsmc.a` and `libgdsmc.so`; `include/gdsmc.h` is generated from this crate by
+//! cbindgen (`ffi/cbindgen.toml`). Conventions, after rustls-ffi:
+//!
+//! - every fallible function returns a [`gdsmc_status`]; on failure a message for the calling
+//!   thread is kept and [`gdsmc_last_error`] copies it into a caller buffer;
+//! - no panic crosses the boundary: each exported function runs inside `catch_unwind` and a
+//!   panic becomes `GDSMC_PANIC`;
+//! - pointers are checked for null and alignment; enumerations from C are taken as integers and
+//!   checked; the only global mutable state is the thread-local error message;
+//! - a simulation handle is not thread-safe: use one handle from one thread at a time.
+//!   Distinct handles may run on distinct threads concurrently.
 
-/// The gdsmc version as a NUL-terminated C string (static storage, never freed).
+#![allow(non_camel_case_types)]
+
+mod config;
+mod engine;
+mod guard;
+mod observables;
+mod sim;
+mod status;
+
+pub use config::*;
+pub use observables::*;
+pub use sim::*;
+pub use status::*;
+
+/// The gdsmc version as a NUL-terminated string in static storage (never free it).
 #[unsafe(no_mangle)]
 pub extern "C" fn gdsmc_version() -> *const core::ffi::c_char {
-    // SAFETY-free: a pointer into a static, NUL-terminated byte string.
     concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
 }

@@ -156,6 +156,13 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         self.synchronized(p)
     }
 
+    /// Re-synchronizes after the caller changed velocities between calls: every last-kick time
+    /// becomes the current time and `V`, `Umax` are recomputed. Returns the observables.
+    pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        p.reset_kick_times(self.t);
+        self.synchronized(p)
+    }
+
     /// Observables of the synchronized system; refreshes `V` and `Umax` from them.
     fn synchronized(&mut self, p: &Particles<'_>) -> Result<Observables, EngineError> {
         let obs = Observables::of(p);

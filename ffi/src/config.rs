@@ -1,0 +1,166 @@
+//! Configuration: a plain C struct with a defaults function, or a scene given as TOML text.
+
+use crate::guard::{check_ptr, guard};
+use crate::status::{Failure, fail, gdsmc_status};
+use gdsmc::scene::{DriveChoice, KernelChoice};
+use std::ffi::{CStr, c_char};
+
+/// Maxwell pseudo-molecules, `B = gamma C` (GRW, `lambda = 0`).
+pub const GDSMC_KERNEL_MAXWELL: u32 = 0;
+/// Hard spheres, `B = gamma C |u|` (GRW (4)).
+pub const GDSMC_KERNEL_HARD_SPHERES: u32 = 1;
+/// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)).
+pub const GDSMC_KERNEL_VHS: u32 = 2;
+
+/// No drive: the freely cooling gas.
+pub const GDSMC_DRIVE_NONE: u32 = 0;
+/// White-noise heating of strength `beta` (GRW (1), (18)).
+pub const GDSMC_DRIVE_WHITE_NOISE: u32 = 1;
+
+/// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
+pub const GDSMC_SCHEME_NO_SPLITTING: u32 = 0;
+
+/// Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or
+/// gdsmc_config_from_toml, then change fields. Enumerations are plain integers
+/// (`GDSMC_KERNEL_*`, `GDSMC_DRIVE_*`, `GDSMC_SCHEME_*`) checked on use.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct gdsmc_config {
+    /// Number of particles, >= 2.
+    pub n: u64,
+    /// Seed of the Xoshiro256++ generator.
+    pub seed: u64,
+    /// Stream: the seed's generator is jumped this many times (2^128 draws each), so streams
+    /// 0, 1, 2, ... of one seed are independent ensembles, exactly those of `gdsmc run`.
+    pub stream: u64,
+    /// One of `GDSMC_KERNEL_*`.
+    pub kernel: u32,
+    /// One of `GDSMC_DRIVE_*`.
+    pub drive: u32,
+    /// One of `GDSMC_SCHEME_*`.
+    pub scheme: u32,
+    /// Collision-rate constant gamma of GRW (1), > 0.
+    pub gamma: f64,
+    /// Kernel constant C_lambda, > 0.
+    pub c: f64,
+    /// VHS exponent in [0, 1] (used with GDSMC_KERNEL_VHS only).
+    pub lambda: f64,
+    /// Restitution coefficient alpha in (0, 1].
+    pub restitution: f64,
+    /// White-noise strength beta >= 0 (used with GDSMC_DRIVE_WHITE_NOISE only).
+    pub beta: f64,
+    /// Mass of the initial Maxwellian, > 0.
+    pub mass: f64,
+    /// Temperature of the initial Maxwellian, >= 0.
+    pub temperature: f64,
+    /// Drift velocity of the initial Maxwellian.
+    pub drift: [f64; 3],
+}
+
+impl gdsmc_config {
+    /// GRW Example 3 with 1024 particles.
+    pub fn example3() -> Self {
+        gdsmc_config {
+            n: 1024,
+            seed: 1,
+            stream: 0,
+            kernel: GDSMC_KERNEL_MAXWELL,
+            drive: GDSMC_DRIVE_WHITE_NOISE,
+            scheme: GDSMC_SCHEME_NO_SPLITTING,
+            gamma: 4.0,
+            c: 1.0 / (4.0 * std::f64::consts::PI),
+            lambda: 0.0,
+            restitution: 0.5,
+            beta: 1.0,
+            mass: 1.0,
+            temperature: 1.0,
+            drift: [0.0; 3],
+        }
+    }
+}
+
+/// Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
+/// alpha = 1/2, white noise beta = 1, standard Maxwellian start) with n = 1024 and seed 1.
+///
+/// # Safety
+/// `out` must be NULL or point to writable memory for one gdsmc_config.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_config_default(out: *mut gdsmc_config) -> gdsmc_status {
+    guard(|| {
+        check_ptr(out, "out")?;
+        // SAFETY: checked non-null and aligned; the caller provides writable memory.
+        unsafe { out.write(gdsmc_config::example3()) };
+        Ok(())
+    })
+}
+
+/// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files;
+/// observation times and ensemble counts are ignored). Fails with GDSMC_PARSE_ERROR or
+/// GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out` is untouched then.
+/// Only a single-Maxwellian initial distribution can be expressed in gdsmc_config.
+///
+/// # Safety
+/// `toml` must be NULL or a NUL-terminated string; `out` NULL or writable for one gdsmc_config.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_config_from_toml(
+    toml: *const c_char,
+    out: *mut gdsmc_config,
+) -> gdsmc_status {
+    guard(|| {
+        check_ptr(toml, "toml")?;
+        check_ptr(out, "out")?;
+        // SAFETY: non-null; the caller promises a NUL-terminated string.
+        let text = unsafe { CStr::from_ptr(toml) };
+        let Ok(text) = text.to_str() else {
+            return fail(gdsmc_status::GDSMC_PARSE_ERROR, "scene text is not UTF-8");
+        };
+        let cfg = from_scene_text(text)?;
+        // SAFETY: checked non-null and aligned.
+        unsafe { out.write(cfg) };
+        Ok(())
+    })
+}
+
+fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
+    let path = std::path::Path::new("<toml>");
+    let scene = gdsmc::scene::parse(path, text).map_err(|e| {
+        let status = match e {
+            gdsmc::Error::Parse { .. } => gdsmc_status::GDSMC_PARSE_ERROR,
+            _ => gdsmc_status::GDSMC_INVALID_ARGUMENT,
+        };
+        Failure(status, e.to_string())
+    })?;
+    let [(_, mass, temperature, drift)] = scene.initial.components[..] else {
+        return fail(
+            gdsmc_status::GDSMC_INVALID_ARGUMENT,
+            "<toml>: `particles.initial` must be a single Maxwellian for gdsmc_config",
+        );
+    };
+    let mut cfg = gdsmc_config {
+        n: scene.n as u64,
+        seed: scene.seed,
+        restitution: scene.restitution,
+        mass,
+        temperature,
+        drift,
+        lambda: 0.0,
+        beta: 0.0,
+        ..gdsmc_config::example3()
+    };
+    (cfg.kernel, cfg.gamma, cfg.c) = match scene.kernel {
+        KernelChoice::Maxwell { gamma, c } => (GDSMC_KERNEL_MAXWELL, gamma, c),
+        KernelChoice::HardSpheres { gamma, c } => (GDSMC_KERNEL_HARD_SPHERES, gamma, c),
+        KernelChoice::Vhs { gamma, c, lambda } => {
+            cfg.lambda = lambda;
+            (GDSMC_KERNEL_VHS, gamma, c)
+        }
+    };
+    match scene.drive {
+        DriveChoice::None => cfg.drive = GDSMC_DRIVE_NONE,
+        DriveChoice::WhiteNoise(b) => {
+            cfg.drive = GDSMC_DRIVE_WHITE_NOISE;
+            cfg.beta = b;
+        }
+    }
+    Ok(cfg)
+}

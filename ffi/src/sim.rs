@@ -1,0 +1,424 @@
+//! The simulation handle: create (on the heap, or in caller memory), advance, read, write,
+//! reseed, destroy.
+
+use crate::config::gdsmc_config;
+use crate::engine::{AnyEngine, engine_error, validate};
+use crate::guard::{check_ptr, guard};
+use crate::observables::gdsmc_observables;
+use crate::status::{Failure, fail, gdsmc_status};
+use gdsmc_core::moments::Observables;
+use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::rng::{Xoshiro256PlusPlus, seeded, stream};
+use gdsmc_core::sample::Maxwellian;
+use gdsmc_core::vec3::Vec3;
+use std::ffi::c_void;
+use std::mem::{align_of, size_of};
+
+const ALIVE: u64 = 0x6764_736d_635f_6f6b; // "gdsmc_ok"
+const DEAD: u64 = 0x6764_736d_635f_7878; // "gdsmc_xx"
+
+/// A simulation: `n` particles, its engine, generator and current time. Opaque to C.
+pub struct gdsmc_sim {
+    magic: u64,
+    owned: bool,
+    n: usize,
+    particles: *mut Particle,
+    engine: AnyEngine,
+    rng: Xoshiro256PlusPlus,
+    last: Observables,
+}
+
+/// The particles of a live handle. The returned view must not outlive the handle's borrow by
+/// its caller (each exported function makes one view and drops it before returning).
+fn particles_of<'a>(particles: *mut Particle, n: usize) -> Particles<'a> {
+    // SAFETY: a live handle's `particles` points to `n` initialized particles owned by it (a
+    // boxed slice, or the caller's memory behind the header); only this view touches them.
+    let slice = unsafe { std::slice::from_raw_parts_mut(particles, n) };
+    Particles::new(slice).expect("n >= 2 checked at creation")
+}
+
+/// Fills the particles and builds the handle's contents (not yet placed).
+fn build(
+    c: &gdsmc_config,
+    particles: *mut Particle,
+    n: usize,
+    owned: bool,
+) -> Result<gdsmc_sim, Failure> {
+    let mut rng = stream(c.seed, c.stream);
+    let f0 = Maxwellian::new(
+        c.mass,
+        c.temperature,
+        Vec3::new(c.drift[0], c.drift[1], c.drift[2]),
+    )
+    .expect("validated");
+    // SAFETY: `particles` points to room for `n` particles (see callers); every one is written
+    // here before any is read.
+    let slice = unsafe {
+        for i in 0..n {
+            particles.add(i).write(Particle::default());
+        }
+        std::slice::from_raw_parts_mut(particles, n)
+    };
+    let mut p = Particles::new(slice).expect("n >= 2 validated");
+    p.fill_with(0.0, || f0.sample(&mut rng));
+    let (engine, last) = AnyEngine::start(c, &mut p)?;
+    Ok(gdsmc_sim {
+        magic: ALIVE,
+        owned,
+        n,
+        particles,
+        engine,
+        rng,
+        last,
+    })
+}
+
+fn read_config(cfg: *const gdsmc_config) -> Result<gdsmc_config, Failure> {
+    check_ptr(cfg, "config")?;
+    // SAFETY: checked non-null and aligned; the caller provides a readable gdsmc_config.
+    let c = unsafe { cfg.read() };
+    validate(&c)?;
+    Ok(c)
+}
+
+/// A live handle from a caller pointer, or the status saying why not.
+fn live<'a>(sim: *mut gdsmc_sim) -> Result<&'a mut gdsmc_sim, Failure> {
+    check_ptr(sim, "sim")?;
+    // SAFETY: non-null and aligned; the caller passes a handle from gdsmc. The magic word tells
+    // a live handle from a destroyed one made with gdsmc_sim_init_in (whose memory stays valid).
+    let s = unsafe { &mut *sim };
+    if s.magic != ALIVE {
+        return fail(
+            gdsmc_status::GDSMC_INVALID_HANDLE,
+            "`sim` is not a live simulation (destroyed?)",
+        );
+    }
+    Ok(s)
+}
+
+/// Creates a simulation on the heap from `*config`: `n` particles drawn from the initial
+/// Maxwellian with the configured seed, time 0. On success `*out` holds the new handle, which
+/// the caller owns and must pass to gdsmc_sim_destroy. On failure `*out` is set to NULL (when
+/// `out` is valid) and the last-error message names the bad field.
+///
+/// # Safety
+/// `config` must be NULL or point to a gdsmc_config; `out` NULL or writable for one pointer.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_create(
+    config: *const gdsmc_config,
+    out: *mut *mut gdsmc_sim,
+) -> gdsmc_status {
+    guard(|| {
+        check_ptr(out, "out")?;
+        // SAFETY: checked non-null and aligned.
+        unsafe { out.write(std::ptr::null_mut()) };
+        let c = read_config(config)?;
+        let n = c.n as usize;
+        let buf: Box<[Particle]> = vec![Particle::default(); n].into_boxed_slice();
+        let ptr = Box::into_raw(buf).cast::<Particle>();
+        match build(&c, ptr, n, true) {
+            Ok(s) => {
+                // SAFETY: checked non-null and aligned.
+                unsafe { out.write(Box::into_raw(Box::new(s))) };
+                Ok(())
+            }
+            Err(e) => {
+                // SAFETY: `ptr` came from Box::into_raw of a boxed slice of length n just above.
+                drop(unsafe { Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)) });
+                Err(e)
+            }
+        }
+    })
+}
+
+fn header_bytes() -> usize {
+    size_of::<gdsmc_sim>().next_multiple_of(align_of::<Particle>())
+}
+
+/// For the allocation-free variant: the number of bytes and the alignment a caller buffer must
+/// have to hold a simulation of `n` particles (the handle's header followed by the particles).
+///
+/// # Safety
+/// `bytes` and `align` must be NULL or writable for one size_t each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_footprint(
+    n: u64,
+    bytes: *mut usize,
+    align: *mut usize,
+) -> gdsmc_status {
+    guard(|| {
+        check_ptr(bytes, "bytes")?;
+        check_ptr(align, "align")?;
+        if n < 2 {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                format!("n must be >= 2, got {n}"),
+            );
+        }
+        let Some(total) = (n as usize)
+            .checked_mul(size_of::<Particle>())
+            .and_then(|b| b.checked_add(header_bytes()))
+            .filter(|&b| b <= isize::MAX as usize)
+        else {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                format!("n = {n} is too large"),
+            );
+        };
+        // SAFETY: both checked non-null and aligned.
+        unsafe {
+            bytes.write(total);
+            align.write(align_of::<gdsmc_sim>().max(align_of::<Particle>()));
+        }
+        Ok(())
+    })
+}
+
+/// The allocation-free variant of gdsmc_sim_create: builds the simulation inside `memory`
+/// (`size` bytes, aligned as gdsmc_sim_footprint says; gdsmc allocates nothing). `*out`
+/// becomes a handle pointing into `memory`. The caller keeps owning the memory; call
+/// gdsmc_sim_destroy before reusing or freeing it. After destroy, calls with the old handle
+/// return GDSMC_INVALID_HANDLE as long as the memory is untouched.
+///
+/// # Safety
+/// `memory` must be NULL or point to `size` writable bytes that outlive the handle and are not
+/// otherwise accessed while it lives; `config` as in gdsmc_sim_create; `out` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_init_in(
+    memory: *mut c_void,
+    size: usize,
+    config: *const gdsmc_config,
+    out: *mut *mut gdsmc_sim,
+) -> gdsmc_status {
+    guard(|| {
+        check_ptr(out, "out")?;
+        // SAFETY: checked non-null and aligned.
+        unsafe { out.write(std::ptr::null_mut()) };
+        let c = read_config(config)?;
+        if memory.is_null() {
+            return fail(gdsmc_status::GDSMC_NULL_POINTER, "`memory` is NULL");
+        }
+        let align = align_of::<gdsmc_sim>().max(align_of::<Particle>());
+        if !(memory as usize).is_multiple_of(align) {
+            return fail(
+                gdsmc_status::GDSMC_MISALIGNED,
+                format!("`memory` is not aligned to {align} bytes"),
+            );
+        }
+        let n = c.n as usize;
+        let need = header_bytes() + n * size_of::<Particle>();
+        if size < need {
+            return fail(
+                gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
+                format!("`memory` holds {size} bytes; n = {n} needs {need} (gdsmc_sim_footprint)"),
+            );
+        }
+        let head = memory.cast::<gdsmc_sim>();
+        // SAFETY: `memory` has `need` bytes aligned to `align`; the particles start at an offset
+        // that is a multiple of their alignment, after the header.
+        let particles = unsafe { memory.cast::<u8>().add(header_bytes()).cast::<Particle>() };
+        let s = build(&c, particles, n, false)?;
+        // SAFETY: the header fits before the particles and `head` is aligned.
+        unsafe {
+            head.write(s);
+            out.write(head);
+        }
+        Ok(())
+    })
+}
+
+/// Runs the simulation to time `t` (>= its current time), kicks every particle there and, if
+/// `out` is not NULL, writes the observables at `t` to `*out`. GDSMC_TIME_BACKWARDS for an
+/// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_advance(
+    sim: *mut gdsmc_sim,
+    t: f64,
+    out: *mut gdsmc_observables,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        if !out.is_null() {
+            check_ptr(out, "out")?;
+        }
+        let mut rng = s.rng.clone();
+        let mut p = particles_of(s.particles, s.n);
+        let o = s
+            .engine
+            .advance(&mut p, t, &mut rng)
+            .map_err(engine_error)?;
+        s.rng = rng;
+        s.last = o;
+        if !out.is_null() {
+            // SAFETY: checked non-null and aligned.
+            unsafe {
+                out.write(gdsmc_observables::new(
+                    s.engine.time(),
+                    &o,
+                    &s.engine.counts(),
+                ))
+            };
+        }
+        Ok(())
+    })
+}
+
+/// Writes the observables at the simulation's current time to `*out`.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_observables(
+    sim: *mut gdsmc_sim,
+    out: *mut gdsmc_observables,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        // SAFETY: checked non-null and aligned.
+        unsafe {
+            out.write(gdsmc_observables::new(
+                s.engine.time(),
+                &s.last,
+                &s.engine.counts(),
+            ))
+        };
+        Ok(())
+    })
+}
+
+/// The number of particles in `*n`.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `n` NULL or writable for one uint64_t.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_particle_count(
+    sim: *mut gdsmc_sim,
+    n: *mut u64,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(n, "n")?;
+        // SAFETY: checked non-null and aligned.
+        unsafe { n.write(s.n as u64) };
+        Ok(())
+    })
+}
+
+/// Copies the velocities out: `out[3i], out[3i+1], out[3i+2]` = particle i's x, y, z, for
+/// `len >= 3 n` doubles (GDSMC_BUFFER_TOO_SMALL otherwise). All particles are at the current
+/// time after create, advance and set_velocities.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_get_velocities(
+    sim: *mut gdsmc_sim,
+    out: *mut f64,
+    len: usize,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        if len / 3 < s.n {
+            return fail(
+                gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
+                format!("`len` = {len} < 3 n = {}", 3 * s.n),
+            );
+        }
+        // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
+        let dst = unsafe { std::slice::from_raw_parts_mut(out, 3 * s.n) };
+        let p = particles_of(s.particles, s.n);
+        for (d, q) in dst.chunks_exact_mut(3).zip(p.as_slice()) {
+            d.copy_from_slice(&[q.vx, q.vy, q.vz]);
+        }
+        Ok(())
+    })
+}
+
+/// Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
+/// current time; the majorant and observables are recomputed. Non-finite values are refused
+/// with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_set_velocities(
+    sim: *mut gdsmc_sim,
+    velocities: *const f64,
+    len: usize,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(velocities, "velocities")?;
+        if len / 3 < s.n {
+            return fail(
+                gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
+                format!("`len` = {len} < 3 n = {}", 3 * s.n),
+            );
+        }
+        // SAFETY: non-null, aligned, `len >= 3 n` readable doubles.
+        let src = unsafe { std::slice::from_raw_parts(velocities, 3 * s.n) };
+        if let Some(k) = src.iter().position(|x| !x.is_finite()) {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                format!("velocities[{k}] is not finite"),
+            );
+        }
+        let mut p = particles_of(s.particles, s.n);
+        for (i, v) in src.chunks_exact(3).enumerate() {
+            p.set_velocity(i, Vec3::new(v[0], v[1], v[2]));
+        }
+        let o = s.engine.resync(&mut p).map_err(engine_error)?;
+        s.last = o;
+        Ok(())
+    })
+}
+
+/// Restarts the random numbers from `seed`, stream 0 (the particles' state is kept).
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_reseed(sim: *mut gdsmc_sim, seed: u64) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        s.rng = seeded(seed);
+        Ok(())
+    })
+}
+
+/// Destroys the simulation `*sim` and sets `*sim` to NULL. Heap handles are freed; for a handle
+/// made by gdsmc_sim_init_in the caller's memory is left to the caller (marked dead, so later
+/// calls with a copy of the old handle report GDSMC_INVALID_HANDLE). A NULL `*sim` is a no-op.
+///
+/// # Safety
+/// `sim` must be NULL or point to NULL or to a handle from gdsmc not destroyed before.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_destroy(sim: *mut *mut gdsmc_sim) -> gdsmc_status {
+    guard(|| {
+        check_ptr(sim, "sim")?;
+        // SAFETY: checked non-null and aligned.
+        let h = unsafe { sim.read() };
+        if h.is_null() {
+            return Ok(());
+        }
+        let s = live(h)?;
+        s.magic = DEAD;
+        if s.owned {
+            let (ptr, n) = (s.particles, s.n);
+            // SAFETY: an owned handle was made by gdsmc_sim_create: the header by Box::new and
+            // the particles by a boxed slice of length n; neither is used again.
+            unsafe {
+                drop(Box::from_raw(h));
+                drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)));
+            }
+        }
+        // SAFETY: checked non-null and aligned.
+        unsafe { sim.write(std::ptr::null_mut()) };
+        Ok(())
+    })
+}

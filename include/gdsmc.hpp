@@ -1,0 +1,99 @@
+// gdsmc.hpp: a small RAII wrapper over the C ABI of gdsmc (include/gdsmc.h). Header-only,
+// C++17. Errors become gdsmc::Error exceptions carrying the status and the message.
+#ifndef GDSMC_HPP
+#define GDSMC_HPP
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gdsmc.h"
+
+namespace gdsmc {
+
+// A failed gdsmc call: its status and message (from gdsmc_last_error).
+class Error : public std::runtime_error {
+public:
+    Error(gdsmc_status status, const std::string &what)
+        : std::runtime_error(what), status_(status) {}
+    gdsmc_status status() const noexcept { return status_; }
+
+private:
+    gdsmc_status status_;
+};
+
+// Throws gdsmc::Error unless `s` is GDSMC_OK.
+inline void check(gdsmc_status s, const char *call) {
+    if (s == GDSMC_OK) return;
+    std::string msg(gdsmc_last_error(nullptr, 0) + 1, '\0');
+    gdsmc_last_error(&msg[0], msg.size());
+    msg.pop_back();
+    throw Error(s, std::string(call) + ": " + msg);
+}
+
+// The defaults (GRW Example 3), to be modified field by field.
+inline gdsmc_config default_config() {
+    gdsmc_config c;
+    check(gdsmc_config_default(&c), "gdsmc_config_default");
+    return c;
+}
+
+// A configuration from scene TOML text.
+inline gdsmc_config config_from_toml(const std::string &toml) {
+    gdsmc_config c;
+    check(gdsmc_config_from_toml(toml.c_str(), &c), "gdsmc_config_from_toml");
+    return c;
+}
+
+// Owns a heap simulation; destroyed with the object. Movable, not copyable; not thread-safe.
+class Simulation {
+public:
+    explicit Simulation(const gdsmc_config &c) { check(gdsmc_sim_create(&c, &sim_), "gdsmc_sim_create"); }
+    ~Simulation() { gdsmc_sim_destroy(&sim_); }
+    Simulation(const Simulation &) = delete;
+    Simulation &operator=(const Simulation &) = delete;
+    Simulation(Simulation &&o) noexcept : sim_(std::exchange(o.sim_, nullptr)) {}
+    Simulation &operator=(Simulation &&o) noexcept {
+        if (this != &o) {
+            gdsmc_sim_destroy(&sim_);
+            sim_ = std::exchange(o.sim_, nullptr);
+        }
+        return *this;
+    }
+
+    // Runs to time t and returns the observables there.
+    gdsmc_observables advance(double t) {
+        gdsmc_observables o;
+        check(gdsmc_sim_advance(sim_, t, &o), "gdsmc_sim_advance");
+        return o;
+    }
+    gdsmc_observables observables() const {
+        gdsmc_observables o;
+        check(gdsmc_sim_observables(sim_, &o), "gdsmc_sim_observables");
+        return o;
+    }
+    std::size_t size() const {
+        uint64_t n = 0;
+        check(gdsmc_sim_particle_count(sim_, &n), "gdsmc_sim_particle_count");
+        return static_cast<std::size_t>(n);
+    }
+    // Velocities as x0, y0, z0, x1, ...
+    std::vector<double> velocities() const {
+        std::vector<double> v(3 * size());
+        check(gdsmc_sim_get_velocities(sim_, v.data(), v.size()), "gdsmc_sim_get_velocities");
+        return v;
+    }
+    void set_velocities(const std::vector<double> &v) {
+        check(gdsmc_sim_set_velocities(sim_, v.data(), v.size()), "gdsmc_sim_set_velocities");
+    }
+    void reseed(uint64_t seed) { check(gdsmc_sim_reseed(sim_, seed), "gdsmc_sim_reseed"); }
+    gdsmc_sim *raw() noexcept { return sim_; }
+
+private:
+    gdsmc_sim *sim_ = nullptr;
+};
+
+}  // namespace gdsmc
+
+#endif  // GDSMC_HPP
