@@ -41,7 +41,8 @@ pub struct Observables {
     pub c4: Real,
     /// `<|v - V|^6>`.
     pub c6: Real,
-    /// Fourth cumulant MS (3) with `d = 3`: `a2 = <c^4> / (15 T^2) - 1` (about the bulk).
+    /// Fourth cumulant MS (3) with `d = 3`: `a2 = <c^4> / (15 T^2) - 1` (about the bulk);
+    /// NaN (undefined) when `t_bulk = 0`, as are `a3` and `crit`.
     pub a2: Real,
     /// Sixth cumulant MS (70) with `d = 3`: `a3 = 1 + 3 a2 - <c^6> / (105 T^3)`.
     pub a3: Real,
@@ -122,15 +123,17 @@ impl Observables {
         }
     }
 
-    /// True when every field is finite (no silent NaN).
+    /// True when every moment is finite (no silent NaN). The ratios `a2`, `a3` and `crit`
+    /// are not checked: they are undefined (NaN) for a gas at zero temperature, a valid state.
     pub fn is_finite(&self) -> bool {
         self.bulk.is_finite()
             && self.t_raw.is_finite()
             && self.t_bulk.is_finite()
+            && self.stress.iter().all(|x| x.is_finite())
+            && self.heat_flux.is_finite()
+            && self.v4.is_finite()
+            && self.v6.is_finite()
             && self.c4.is_finite()
             && self.c6.is_finite()
-            && self.v6.is_finite()
-            && self.crit.is_finite()
-            && self.heat_flux.is_finite()
     }
 }

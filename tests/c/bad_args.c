@@ -1,0 +1,208 @@
+/*
+ * Every kind of bad argument to the C ABI, with the status each must give, and the
+ * allocation-free variant end to end. Run under valgrind in CI (no errors, no leaks).
+ * Prints "N passed, M failed" and exits non-zero on any failure.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "gdsmc.h"
+
+static int passed = 0, failed = 0;
+
+#define EXPECT(cond, ...)                                        \
+    do {                                                         \
+        if (cond) {                                              \
+            passed++;                                            \
+        } else {                                                 \
+            failed++;                                            \
+            fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__); \
+            fprintf(stderr, __VA_ARGS__);                        \
+            fprintf(stderr, "\n");                               \
+        }                                                        \
+    } while (0)
+
+static char msg[1024];
+
+/* Status equals `want` and the last-error message contains `needle`. */
+static void expect_status(gdsmc_status got, gdsmc_status want, const char *needle, int line) {
+    gdsmc_last_error(msg, sizeof msg);
+    if (got == want && (needle == NULL || strstr(msg, needle) != NULL)) {
+        passed++;
+    } else {
+        failed++;
+        fprintf(stderr, "FAIL line %d: status %d (want %d), message \"%s\" (want \"%s\")\n", line,
+                (int)got, (int)want, msg, needle ? needle : "");
+    }
+}
+#define STATUS(call, want, needle) expect_status((call), (want), (needle), __LINE__)
+
+static gdsmc_config base(void) {
+    gdsmc_config c;
+    gdsmc_config_default(&c);
+    c.n = 64;
+    return c;
+}
+
+static void config_errors(void) {
+    gdsmc_sim *sim = (gdsmc_sim *)0x1;
+    STATUS(gdsmc_config_default(NULL), GDSMC_NULL_POINTER, "`out` is NULL");
+    STATUS(gdsmc_sim_create(NULL, &sim), GDSMC_NULL_POINTER, "`config` is NULL");
+    EXPECT(sim == NULL, "create must clear *out on failure");
+    gdsmc_config c = base();
+    STATUS(gdsmc_sim_create(&c, NULL), GDSMC_NULL_POINTER, "`out` is NULL");
+
+    c = base(); c.n = 1;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.n must be >= 2");
+    c = base(); c.kernel = 7;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.kernel = 7");
+    c = base(); c.drive = 99;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.drive = 99");
+    c = base(); c.scheme = 3;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 3");
+    c = base(); c.restitution = 1.5;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
+    c = base(); c.restitution = 0.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
+    c = base(); c.restitution = NAN;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
+    c = base(); c.beta = -1.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.beta");
+    c = base(); c.gamma = 0.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.gamma");
+    c = base(); c.kernel = GDSMC_KERNEL_VHS; c.lambda = 2.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.lambda");
+    c = base(); c.temperature = INFINITY;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.temperature");
+    c = base(); c.drift[1] = NAN;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.drift");
+
+    /* A misaligned config pointer. */
+    unsigned char raw[sizeof(gdsmc_config) + 16];
+    gdsmc_config *odd = (gdsmc_config *)(raw + 1);
+    STATUS(gdsmc_sim_create(odd, &sim), GDSMC_MISALIGNED, "not aligned");
+}
+
+static void toml_errors(void) {
+    gdsmc_config c;
+    STATUS(gdsmc_config_from_toml(NULL, &c), GDSMC_NULL_POINTER, "`toml` is NULL");
+    STATUS(gdsmc_config_from_toml("[collisions\n", &c), GDSMC_PARSE_ERROR, "line 1");
+    const char *bad_alpha =
+        "[collisions]\nkernel = \"maxwell\"\nrestitution = 2.0\n[observe]\nt_end = 1.0\n";
+    STATUS(gdsmc_config_from_toml(bad_alpha, &c), GDSMC_INVALID_ARGUMENT,
+           "<toml>:3: `collisions.restitution` must lie in (0, 1]");
+    const char *unknown = "[collisions]\nkernel = \"maxwell\"\nrestitution = 0.5\nfoo = 1\n[observe]\nt_end = 1.0\n";
+    STATUS(gdsmc_config_from_toml(unknown, &c), GDSMC_PARSE_ERROR, "unknown field `foo`");
+    const char *good =
+        "[particles]\nn = 100\n[collisions]\nkernel = \"hard-spheres\"\ngamma = 4.0\nrestitution = 0.5\n"
+        "[drive]\nkind = \"white-noise\"\nbeta = 0.125\n[observe]\nt_end = 2.0\n[run]\nseed = 9\n";
+    STATUS(gdsmc_config_from_toml(good, &c), GDSMC_OK, "");
+    EXPECT(c.n == 100 && c.kernel == GDSMC_KERNEL_HARD_SPHERES && c.beta == 0.125 && c.seed == 9 &&
+               c.drive == GDSMC_DRIVE_WHITE_NOISE && c.restitution == 0.5 && c.gamma == 4.0,
+           "TOML fields not carried over");
+}
+
+static void handle_errors(void) {
+    gdsmc_config c = base();
+    gdsmc_sim *sim = NULL;
+    gdsmc_observables o;
+    STATUS(gdsmc_sim_advance(NULL, 1.0, &o), GDSMC_NULL_POINTER, "`sim` is NULL");
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 0.5, &o), GDSMC_OK, "");
+    EXPECT(o.t == 0.5 && o.temperature > 0.0 && o.collisions > 0, "advance gave t=%g T=%g", o.t,
+           o.temperature);
+    STATUS(gdsmc_sim_advance(sim, 0.25, &o), GDSMC_TIME_BACKWARDS, "before the current time");
+    STATUS(gdsmc_sim_advance(sim, NAN, &o), GDSMC_TIME_BACKWARDS, "");
+    STATUS(gdsmc_sim_advance(sim, 0.75, NULL), GDSMC_OK, "");
+    STATUS(gdsmc_sim_observables(sim, NULL), GDSMC_NULL_POINTER, "`out` is NULL");
+
+    uint64_t n = 0;
+    STATUS(gdsmc_sim_particle_count(sim, &n), GDSMC_OK, "");
+    EXPECT(n == 64, "particle count %llu", (unsigned long long)n);
+    double v[3 * 64];
+    STATUS(gdsmc_sim_get_velocities(sim, v, 3 * 64 - 1), GDSMC_BUFFER_TOO_SMALL, "len");
+    STATUS(gdsmc_sim_get_velocities(sim, NULL, 3 * 64), GDSMC_NULL_POINTER, "`out` is NULL");
+    STATUS(gdsmc_sim_get_velocities(sim, (double *)((char *)v + 1), 3 * 64 - 1), GDSMC_MISALIGNED, "");
+    STATUS(gdsmc_sim_get_velocities(sim, v, 3 * 64), GDSMC_OK, "");
+
+    /* Non-finite input is refused and leaves the state unchanged. */
+    double w[3 * 64];
+    memcpy(w, v, sizeof v);
+    w[17] = NAN;
+    STATUS(gdsmc_sim_set_velocities(sim, w, 3 * 64), GDSMC_INVALID_ARGUMENT, "velocities[17]");
+    double u[3 * 64];
+    gdsmc_sim_get_velocities(sim, u, 3 * 64);
+    EXPECT(memcmp(u, v, sizeof v) == 0, "refused set_velocities changed the state");
+    /* A valid write: all zero velocities give zero temperature. */
+    memset(w, 0, sizeof w);
+    STATUS(gdsmc_sim_set_velocities(sim, w, 3 * 64), GDSMC_OK, "");
+    STATUS(gdsmc_sim_observables(sim, &o), GDSMC_OK, "");
+    EXPECT(o.temperature == 0.0 && o.t == 0.75, "after set: T=%g t=%g", o.temperature, o.t);
+    STATUS(gdsmc_sim_reseed(sim, 5), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 1.0, &o), GDSMC_OK, "");
+    EXPECT(o.temperature > 0.0, "white noise must heat a cold gas");
+
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+    EXPECT(sim == NULL, "destroy must clear the handle");
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, ""); /* NULL handle: no-op */
+    STATUS(gdsmc_sim_destroy(NULL), GDSMC_NULL_POINTER, "");
+    STATUS(gdsmc_sim_advance(sim, 2.0, &o), GDSMC_NULL_POINTER, "");
+}
+
+static void allocation_free(void) {
+    size_t bytes = 0, align = 0;
+    STATUS(gdsmc_sim_footprint(1, &bytes, &align), GDSMC_INVALID_ARGUMENT, "n must be >= 2");
+    STATUS(gdsmc_sim_footprint(64, NULL, &align), GDSMC_NULL_POINTER, "");
+    STATUS(gdsmc_sim_footprint(UINT64_MAX, &bytes, &align), GDSMC_INVALID_ARGUMENT, "too large");
+    gdsmc_config c = base();
+    c.n = 2048;
+    STATUS(gdsmc_sim_footprint(c.n, &bytes, &align), GDSMC_OK, "");
+    EXPECT(bytes >= 32 * c.n && align >= 32 && (align & (align - 1)) == 0, "footprint %zu align %zu",
+           bytes, align);
+
+    unsigned char *mem = aligned_alloc(align, bytes + align);
+    gdsmc_sim *sim = NULL;
+    STATUS(gdsmc_sim_init_in(NULL, bytes, &c, &sim), GDSMC_NULL_POINTER, "`memory` is NULL");
+    STATUS(gdsmc_sim_init_in(mem + 8, bytes, &c, &sim), GDSMC_MISALIGNED, "not aligned");
+    STATUS(gdsmc_sim_init_in(mem, bytes - 1, &c, &sim), GDSMC_BUFFER_TOO_SMALL, "gdsmc_sim_footprint");
+    STATUS(gdsmc_sim_init_in(mem, bytes, &c, &sim), GDSMC_OK, "");
+    EXPECT((void *)sim == (void *)mem, "handle must live in the caller's memory");
+
+    /* GRW Example 3 to t = 8 in caller memory: T near 8/3 (one ensemble of 2048 particles:
+     * relative standard deviation about 2%, so 15% is a loose sanity bound). */
+    gdsmc_observables o;
+    STATUS(gdsmc_sim_advance(sim, 8.0, &o), GDSMC_OK, "");
+    EXPECT(fabs(o.temperature - 8.0 / 3.0) < 0.15 * 8.0 / 3.0, "T(8) = %g", o.temperature);
+
+    gdsmc_sim *copy = sim;
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+    EXPECT(sim == NULL, "destroy must clear the handle");
+    STATUS(gdsmc_sim_advance(copy, 9.0, &o), GDSMC_INVALID_HANDLE, "not a live simulation");
+    STATUS(gdsmc_sim_destroy(&copy), GDSMC_INVALID_HANDLE, "");
+    free(mem);
+}
+
+static void last_error_buffer(void) {
+    gdsmc_config_default(NULL);
+    size_t need = gdsmc_last_error(NULL, 0);
+    EXPECT(need == strlen("`out` is NULL"), "need %zu", need);
+    char small[4] = {'x', 'x', 'x', 'x'};
+    size_t got = gdsmc_last_error(small, sizeof small);
+    EXPECT(got == need && small[3] == '\0' && strncmp(small, "`ou", 3) == 0, "truncation");
+    gdsmc_config c;
+    gdsmc_config_default(&c);
+    EXPECT(gdsmc_last_error(NULL, 0) == 0, "success clears the message");
+}
+
+int main(void) {
+    printf("gdsmc %s C ABI checks\n", gdsmc_version());
+    config_errors();
+    toml_errors();
+    handle_errors();
+    allocation_free();
+    last_error_buffer();
+    printf("%d passed, %d failed\n", passed, failed);
+    return failed != 0;
+}
