@@ -1,8 +1,56 @@
 //! Event loops. [`NoSplitting`] is the exact scheme of GRW Section 3 / RW Algorithm 3.
 
+pub mod event;
 pub mod nosplit;
+pub mod splitting;
 
 pub use nosplit::NoSplitting;
+pub use splitting::{Splitting, SplittingOrder};
+
+use crate::math::Real;
+use crate::moments::Observables;
+use crate::particles::Particles;
+use crate::rng::Rng;
+
+/// What a caller needs from any event loop: advance to an observation time, read counts.
+pub trait EventLoop {
+    /// Runs to `t_end` and returns the observables there (every particle at `t_end`).
+    fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<Observables, EngineError>;
+    /// Current time.
+    fn time(&self) -> Real;
+    /// Event counts so far.
+    fn counts(&self) -> Counts;
+}
+
+macro_rules! impl_event_loop {
+    ($t:ident) => {
+        impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop
+            for $t<K, D, A>
+        {
+            fn advance_to<R: Rng + ?Sized>(
+                &mut self,
+                p: &mut Particles<'_>,
+                t_end: Real,
+                rng: &mut R,
+            ) -> Result<Observables, EngineError> {
+                $t::advance_to(self, p, t_end, rng)
+            }
+            fn time(&self) -> Real {
+                $t::time(self)
+            }
+            fn counts(&self) -> Counts {
+                $t::counts(self)
+            }
+        }
+    };
+}
+impl_event_loop!(NoSplitting);
+impl_event_loop!(Splitting);
 
 /// Event counts of a run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -46,6 +94,9 @@ pub enum EngineError {
     TimeBackwards,
     /// A velocity or moment became non-finite (overflow, NaN input).
     NonFinite,
+    /// A time-stepped scheme was asked for a time that is not on its grid `t0 + k dt`, or
+    /// its time step is not finite and positive.
+    OffGrid,
 }
 
 impl core::fmt::Display for EngineError {
@@ -53,6 +104,7 @@ impl core::fmt::Display for EngineError {
         f.write_str(match self {
             EngineError::TimeBackwards => "observation time lies before the current time",
             EngineError::NonFinite => "a velocity or moment became non-finite",
+            EngineError::OffGrid => "the time is not a multiple of the scheme's time step",
         })
     }
 }

@@ -19,17 +19,16 @@
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
 
+use super::event::{Majorant, candidate};
 use super::{Counts, EngineError};
-use crate::collision::inelastic;
 use crate::drive::Drive;
 use crate::kernel::Kernel;
-use crate::math::{Real, max};
+use crate::math::Real;
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
-use crate::rng::{Rng, uniform_pair, uniform01};
-use crate::sample::{standard_exponential, unit_sphere};
-use crate::vec3::Vec3;
+use crate::rng::{Rng, uniform_pair};
+use crate::sample::standard_exponential;
 
 /// The exact (no-splitting) event loop for kernel `K`, drive `D` and restitution law `A`.
 #[derive(Clone, Debug)]
@@ -38,8 +37,7 @@ pub struct NoSplitting<K, D, A> {
     drive: D,
     restitution: A,
     t: Real,
-    umax: Real,
-    vref: Vec3,
+    maj: Majorant,
     counts: Counts,
 }
 
@@ -63,8 +61,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             drive,
             restitution,
             t: t0,
-            umax: 0.0,
-            vref: Vec3::ZERO,
+            maj: Majorant::default(),
             counts: Counts::default(),
         };
         let obs = s.synchronized(p)?;
@@ -78,7 +75,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
 
     /// Current majorant of the relative speed (0 for kernels that need none).
     pub fn umax(&self) -> Real {
-        self.umax
+        self.maj.umax
     }
 
     /// Event counts so far.
@@ -103,7 +100,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             return Err(EngineError::TimeBackwards);
         }
         let n = p.len();
-        let mut rate = self.kernel.majorant_rate(n, self.umax);
+        let mut rate = self.kernel.majorant_rate(n, self.maj.umax);
         loop {
             let t_next = self.t + standard_exponential(rng) / rate;
             // Not `t_next >= t_end` alone: a zero rate with a zero draw gives NaN, which stops too.
@@ -114,41 +111,9 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             let (i, j) = uniform_pair(rng, n);
             self.drive.kick(p, i, t_next, rng);
             self.drive.kick(p, j, t_next, rng);
-            let (vi, vj) = (p.velocity(i), p.velocity(j));
-            let u = vi - vj;
-            self.counts.candidates += 1;
-            if K::USES_UMAX {
-                let urel = u.norm();
-                let umax_event = self.umax;
-                if urel > umax_event {
-                    self.counts.overshoots += 1;
-                }
-                if D::ACTS {
-                    self.umax = max(
-                        self.umax,
-                        2.0 * max((vi - self.vref).norm(), (vj - self.vref).norm()),
-                    );
-                }
-                if uniform01(rng) >= self.kernel.acceptance(urel, umax_event) {
-                    self.counts.fictitious += 1;
-                    if self.umax != umax_event {
-                        rate = self.kernel.majorant_rate(n, self.umax);
-                    }
-                    continue;
-                }
-            }
-            let e = unit_sphere(rng);
-            let alpha = self.restitution.coefficient(u, e);
-            let (a, b) = inelastic(vi, vj, e, alpha);
-            p.set_velocity(i, a);
-            p.set_velocity(j, b);
-            self.counts.collisions += 1;
-            if K::USES_UMAX {
-                self.umax = max(
-                    self.umax,
-                    2.0 * max((a - self.vref).norm(), (b - self.vref).norm()),
-                );
-                rate = self.kernel.majorant_rate(n, self.umax);
+            let (k, a) = (&self.kernel, &self.restitution);
+            if candidate(k, a, p, i, j, &mut self.maj, D::ACTS, &mut self.counts, rng) {
+                rate = self.kernel.majorant_rate(n, self.maj.umax);
             }
         }
         self.t = t_end;
@@ -171,8 +136,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         }
         self.counts.observations += 1;
         if K::USES_UMAX {
-            self.vref = obs.bulk;
-            self.umax = 2.0 * obs.max_peculiar_speed;
+            self.maj = Majorant { umax: 2.0 * obs.max_peculiar_speed, vref: obs.bulk };
         }
         Ok(obs)
     }
