@@ -41,6 +41,7 @@ pub(crate) fn engine_error(e: EngineError) -> Failure {
     let s = match e {
         EngineError::TimeBackwards => gdsmc_status::GDSMC_TIME_BACKWARDS,
         EngineError::NonFinite => gdsmc_status::GDSMC_NON_FINITE,
+        EngineError::OffGrid => gdsmc_status::GDSMC_INVALID_ARGUMENT,
     };
     Failure(s, e.to_string())
 }

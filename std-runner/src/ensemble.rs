@@ -9,10 +9,10 @@
 
 use crate::columns::COLUMNS;
 use crate::error::Error;
-use crate::scene::{DriveChoice, KernelChoice, Scene};
+use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
 use crate::stats::Accumulator;
 use gdsmc_core::drive::{Drive, NoDrive, WhiteNoise};
-use gdsmc_core::engine::{Counts, NoSplitting};
+use gdsmc_core::engine::{Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
@@ -81,20 +81,43 @@ pub fn run_ensemble<K: Kernel, D: Drive>(
     kernel: K,
     drive: D,
     mut rng: Xoshiro256PlusPlus,
-) -> Result<(Vec<f64>, Counts), gdsmc_core::engine::EngineError> {
+) -> Result<(Vec<f64>, Counts), EngineError> {
     let n = scene.n;
     let mut buf = vec![Particle::default(); n];
     let mut p = Particles::new(&mut buf).expect("n >= 2 validated");
     let f0 = initial_sampler(scene);
     p.fill_with(0.0, || f0.sample(&mut rng).expect("validated weights"));
     let alpha = Constant::new(scene.restitution).expect("validated");
-    let (mut engine, obs0) = NoSplitting::start(kernel, drive, alpha, &mut p, 0.0)?;
+    match scene.scheme {
+        SchemeChoice::NoSplitting => {
+            let (e, o) = NoSplitting::start(kernel, drive, alpha, &mut p, 0.0)?;
+            observe(scene, e, o, &mut p, &mut rng)
+        }
+        SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => {
+            let order = if matches!(scene.scheme, SchemeChoice::Euler(_)) {
+                SplittingOrder::Euler
+            } else {
+                SplittingOrder::Strang
+            };
+            let (e, o) = Splitting::start(kernel, drive, alpha, order, dt, &mut p, 0.0)?;
+            observe(scene, e, o, &mut p, &mut rng)
+        }
+    }
+}
+
+fn observe<E: EventLoop>(
+    scene: &Scene,
+    mut engine: E,
+    obs0: Observables,
+    p: &mut Particles<'_>,
+    rng: &mut Xoshiro256PlusPlus,
+) -> Result<(Vec<f64>, Counts), EngineError> {
     let mut out = Vec::with_capacity(scene.times.len() * COLUMNS.len());
     for &t in &scene.times {
-        let obs: Observables = if t == 0.0 {
+        let obs = if t == 0.0 {
             obs0
         } else {
-            engine.advance_to(&mut p, t, &mut rng)?
+            engine.advance_to(p, t, rng)?
         };
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
     }

@@ -37,6 +37,10 @@ enum Command {
         /// Output directory (default: out/SCENE-NAME).
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Override any scene value, e.g. --set collisions.restitution=0.4 (repeatable; the
+        /// value is TOML, a bare word is a string). Validated like the file.
+        #[arg(long = "set", value_name = "KEY.PATH=VALUE")]
+        set: Vec<String>,
     },
 }
 
@@ -60,8 +64,9 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
             seed,
             threads,
             out,
+            set,
         } => {
-            let mut sc = scene::load(&path)?;
+            let mut sc = scene::load_with_overrides(&path, &set)?;
             let flag = |key: &str, message: String| gdsmc::Error::Invalid {
                 path: PathBuf::from(format!("--{key}")),
                 line: 0,

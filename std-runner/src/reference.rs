@@ -60,6 +60,46 @@ impl MaxwellTemperature {
     /// `T(t) + (1/n) [T_0 (1 - e^{-kt}) + 2 beta (t - (1 - e^{-kt}) / k)]`: an `O(1/n)` bias,
     /// which is why GRW/RW's error tables fall by a factor 4 per fourfold `n`.
     pub fn finite_n_raw_mean(&self, n: usize, t: f64) -> f64 {
-        self.finite_n_bulk_mean(n, t) + (self.t0 + 2.0 * self.beta * t) / n as f64
+        self.finite_n_bulk_mean(n, t) + self.bulk_to_raw(n, t)
+    }
+
+    /// `E |P(t)|^2 / (3 n^2) = (T_0 + 2 beta t) / n`: what the raw temperature's mean adds to
+    /// the bulk one (zero-mean start; collisions keep `P`, kicks make it a random walk).
+    pub fn bulk_to_raw(&self, n: usize, t: f64) -> f64 {
+        (self.t0 + 2.0 * self.beta * t) / n as f64
+    }
+
+    /// The exact ensemble mean of `T_bulk` of the splitting schemes (RW Algorithms 1 and 2)
+    /// with time step `dt` at the grid time `t = m dt`, `n` particles.
+    ///
+    /// With `X = E[S - |P|^2/n] = 3 n E T_bulk`: a collision step of length `h` multiplies `X` by
+    /// `exp(-k h)` (the collision process alone, as in `finite_n_bulk_mean`), a kicking step of
+    /// length `dt` adds `6 (n - 1) beta dt`. Euler: `X' = a X + b`, `a = exp(-k dt)`,
+    /// `b = 6 (n - 1) beta dt`; Strang: `X' = a X + exp(-k dt / 2) b`. So
+    /// `X_m = a^m X_0 + b' (1 - a^m) / (1 - a)`, `X_0 = 3 (n - 1) T_0`. The stationary values are
+    /// `(1 - 1/n) 2 beta dt / (1 - e^{-k dt})` (Euler: first order in dt) and
+    /// `(1 - 1/n) (2 beta / k) (k dt / 2) / sinh(k dt / 2)` (Strang: second order), which give
+    /// RW Tables 3 and 4.
+    pub fn splitting_bulk_mean(&self, n: usize, dt: f64, strang: bool, t: f64) -> f64 {
+        let m = (t / dt).round();
+        let nf = n as f64;
+        let x0 = 3.0 * (nf - 1.0) * self.t0;
+        let b = 6.0
+            * (nf - 1.0)
+            * self.beta
+            * dt
+            * if strang {
+                (-0.5 * self.k * dt).exp()
+            } else {
+                1.0
+            };
+        let a = (-self.k * dt).exp();
+        let am = a.powf(m);
+        let geometric = if self.k == 0.0 {
+            m
+        } else {
+            (1.0 - am) / (1.0 - a)
+        };
+        (am * x0 + b * geometric) / (3.0 * nf)
     }
 }

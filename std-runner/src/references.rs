@@ -2,7 +2,7 @@
 
 use crate::ensemble::initial_sampler;
 use crate::reference::MaxwellTemperature;
-use crate::scene::{DriveChoice, KernelChoice, Scene};
+use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
 
 /// A named reference curve `t -> value` for an observable column.
 pub struct ReferenceCurve {
@@ -51,6 +51,19 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             of: "T_bulk",
             source: "GRW (13)-(14)",
             curve: Box::new(move |t| mt.at(t)),
+        });
+        // The exact ensemble mean at this n (and time step): the scheme's whole systematic error.
+        let n = scene.n;
+        let finite: Box<dyn Fn(f64) -> f64 + Send + Sync> = match scene.scheme {
+            SchemeChoice::NoSplitting => Box::new(move |t| mt.finite_n_bulk_mean(n, t)),
+            SchemeChoice::Euler(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, false, t)),
+            SchemeChoice::Strang(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, true, t)),
+        };
+        out.push(ReferenceCurve {
+            name: "T_bulk_mean_n",
+            of: "T_bulk",
+            source: "exact mean at this n and scheme (reference::MaxwellTemperature)",
+            curve: finite,
         });
     }
     out

@@ -48,6 +48,9 @@ pub struct SceneFile {
     /// What acts between collisions (default: no drive).
     #[serde(default)]
     pub drive: DriveSpec,
+    /// The scheme (default: the exact no-splitting scheme).
+    #[serde(default)]
+    pub scheme: SchemeSpec,
     /// Observation times.
     pub observe: ObserveSpec,
     /// Ensembles and seed.
@@ -191,6 +194,42 @@ pub struct DriveSpec {
     pub beta: Option<Spanned<f64>>,
 }
 
+/// `scheme.kind`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SchemeKind {
+    /// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
+    #[default]
+    NoSplitting,
+    /// Euler splitting with time step `dt` (RW Algorithm 1).
+    Euler,
+    /// Strang splitting with time step `dt` (RW Algorithm 2).
+    Strang,
+}
+
+/// `[scheme]`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct SchemeSpec {
+    /// Which scheme. Default `"no-splitting"`.
+    #[serde(default)]
+    pub kind: SchemeKind,
+    /// Time step (> 0) of the splitting schemes; observation times must be multiples of it.
+    #[serde(default)]
+    pub dt: Option<Spanned<f64>>,
+}
+
+/// The validated scheme.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SchemeChoice {
+    /// No splitting.
+    NoSplitting,
+    /// Euler splitting with this time step.
+    Euler(f64),
+    /// Strang splitting with this time step.
+    Strang(f64),
+}
+
 /// `[observe]`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -294,6 +333,8 @@ pub struct Scene {
     pub restitution: f64,
     /// Drive.
     pub drive: DriveChoice,
+    /// Scheme.
+    pub scheme: SchemeChoice,
     /// Observation times, increasing.
     pub times: Vec<f64>,
     /// Ensembles.
@@ -555,9 +596,42 @@ impl SceneFile {
             }
             None => 32,
         };
-        let times = (0..=k)
+        let times: Vec<f64> = (0..=k)
             .map(|i| t0 + (t1 - t0) * i as f64 / k as f64)
             .collect();
+        let scheme = match (self.scheme.kind, &self.scheme.dt) {
+            (SchemeKind::NoSplitting, None) => SchemeChoice::NoSplitting,
+            (SchemeKind::NoSplitting, Some(d)) => {
+                return l.invalid(d.span(), "scheme.dt", "is only used with kind = \"euler\" or \"strang\" (no splitting has no time step)");
+            }
+            (_, None) => {
+                return l.invalid(
+                    0..0,
+                    "scheme.dt",
+                    "is required with kind = \"euler\" or \"strang\"",
+                );
+            }
+            (kind, Some(d)) => {
+                let dt = positive(&l, d, "scheme.dt")?;
+                if let Some(t) = times.iter().find(|&&t| {
+                    let k = t / dt;
+                    (k - k.round()).abs() > 1e-9 * (1.0 + k)
+                }) {
+                    return l.invalid(
+                        d.span(),
+                        "scheme.dt",
+                        format!(
+                            "must divide every observation time; {t} is not a multiple of {dt}"
+                        ),
+                    );
+                }
+                if kind == SchemeKind::Euler {
+                    SchemeChoice::Euler(dt)
+                } else {
+                    SchemeChoice::Strang(dt)
+                }
+            }
+        };
         let m = *self.run.ensembles.get_ref();
         if m < 1 {
             return l.invalid(
@@ -587,6 +661,7 @@ impl SceneFile {
             kernel,
             restitution: alpha,
             drive,
+            scheme,
             times,
             ensembles: m as u64,
             seed: seed as u64,
@@ -610,4 +685,75 @@ pub fn load(path: &Path) -> Result<Scene, Error> {
         source,
     })?;
     parse(path, &text)
+}
+
+/// Applies `--set key.path=value` overrides to scene text and validates the result. The file
+/// is validated first, so its own errors keep their line numbers; an override's error names
+/// the override. Values are TOML (`0.4`, `"hard-spheres"`, `[1.0, 0.0, 0.0]`); a bare word
+/// that is not TOML is taken as a string (`--set collisions.kernel=vhs`).
+pub fn parse_with_overrides(path: &Path, text: &str, overrides: &[String]) -> Result<Scene, Error> {
+    let scene = parse(path, text)?;
+    if overrides.is_empty() {
+        return Ok(scene);
+    }
+    let bad = |key: &str, message: String| Error::Invalid {
+        path: PathBuf::from("--set"),
+        line: 0,
+        key: key.to_string(),
+        message,
+    };
+    let mut doc: toml::Table = toml::from_str(text).map_err(|e| Error::Parse {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    for o in overrides {
+        let Some((key, raw)) = o.split_once('=') else {
+            return Err(bad(o, "must have the form key.path=value".into()));
+        };
+        let key = key.trim();
+        let value: toml::Value = match toml::from_str::<toml::Table>(&format!("v = {raw}")) {
+            Ok(mut t) => t.remove("v").expect("parsed"),
+            Err(_) => toml::Value::String(raw.trim().to_string()),
+        };
+        let parts: Vec<&str> = key.split('.').collect();
+        if parts.iter().any(|p| p.is_empty()) {
+            return Err(bad(key, "is not a dotted key path".into()));
+        }
+        let mut table = &mut doc;
+        for part in &parts[..parts.len() - 1] {
+            let entry = table
+                .entry(part.to_string())
+                .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+            table = match entry {
+                toml::Value::Table(t) => t,
+                _ => return Err(bad(key, format!("`{part}` is a value, not a table"))),
+            };
+        }
+        table.insert(parts[parts.len() - 1].to_string(), value);
+    }
+    let merged = toml::to_string(&doc).expect("a table serializes");
+    let keys: Vec<&str> = overrides
+        .iter()
+        .filter_map(|o| o.split_once('=').map(|(k, _)| k.trim()))
+        .collect();
+    parse(Path::new("--set"), &merged).map_err(|e| match e {
+        Error::Invalid { key, message, .. } => bad(&key, message),
+        Error::Parse { message, .. } => {
+            let first = message.lines().last().unwrap_or("").trim().to_string();
+            bad(
+                &keys.join(", "),
+                format!("does not fit the scene schema: {first}"),
+            )
+        }
+        other => other,
+    })
+}
+
+/// Reads a scene file and applies `--set` overrides.
+pub fn load_with_overrides(path: &Path, overrides: &[String]) -> Result<Scene, Error> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    parse_with_overrides(path, &text, overrides)
 }

@@ -36,8 +36,8 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
     let _ = write!(s, "\n{:>8}", "t");
     for name in shown {
         let _ = write!(s, " {:>24}", format!("{name} +- 99.9% CI"));
-        if let Some(r) = refs.iter().find(|r| r.of == name) {
-            let _ = write!(s, " {:>12}", r.name);
+        for r in refs.iter().filter(|r| r.of == name) {
+            let _ = write!(s, " {:>13}", r.name);
         }
     }
     let _ = writeln!(s);
@@ -57,8 +57,8 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
                 stats.mean(ti, col),
                 stats.ci(ti, col)
             );
-            if let Some(r) = refs.iter().find(|r| r.of == name) {
-                let _ = write!(s, " {:>12.6}", (r.curve)(stats.times[ti]));
+            for r in refs.iter().filter(|r| r.of == name) {
+                let _ = write!(s, " {:>13.6}", (r.curve)(stats.times[ti]));
             }
         }
         let _ = writeln!(s);

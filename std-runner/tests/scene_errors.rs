@@ -88,3 +88,67 @@ fn kernel_specific_keys() {
         "{e}"
     );
 }
+
+mod overrides {
+    use gdsmc::scene::{SchemeChoice, parse_with_overrides};
+    use std::path::Path;
+
+    fn with(sets: &[&str]) -> Result<gdsmc::scene::Scene, String> {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        parse_with_overrides(Path::new("bad.toml"), super::GOOD, &sets).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn set_reaches_nested_keys_and_new_tables() {
+        let s = with(&[
+            "collisions.restitution=0.4",
+            "particles.n=10",
+            "scheme.kind=strang",
+            "scheme.dt=0.125",
+            "observe.intervals=8",
+        ])
+        .unwrap();
+        assert_eq!(s.restitution, 0.4);
+        assert_eq!(s.n, 10);
+        assert_eq!(s.scheme, SchemeChoice::Strang(0.125));
+        let s = with(&["collisions.kernel=vhs", "collisions.lambda=0.5"]).unwrap();
+        assert!(
+            matches!(s.kernel, gdsmc::scene::KernelChoice::Vhs { lambda, .. } if lambda == 0.5)
+        );
+    }
+
+    #[test]
+    fn set_is_validated_like_the_file() {
+        let e = with(&["collisions.restitution=1.5"]).unwrap_err();
+        assert_eq!(
+            e,
+            "--set: `collisions.restitution` must lie in (0, 1], got 1.5"
+        );
+        let e = with(&["particles.m=3"]).unwrap_err();
+        assert!(
+            e.starts_with("--set: `particles.m` does not fit the scene schema")
+                && e.contains("unknown field `m`"),
+            "{e}"
+        );
+        let e = with(&["particles.n"]).unwrap_err();
+        assert!(e.contains("must have the form key.path=value"), "{e}");
+        let e = with(&["particles.n.x=3"]).unwrap_err();
+        assert!(e.contains("`n` is a value, not a table"), "{e}");
+        let e = with(&["scheme.kind=euler"]).unwrap_err();
+        assert!(e.contains("`scheme.dt` is required"), "{e}");
+        let e = with(&["scheme.kind=euler", "scheme.dt=0.3"]).unwrap_err();
+        assert!(
+            e.contains("`scheme.dt` must divide every observation time"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn file_errors_keep_their_lines_even_with_overrides() {
+        let bad = super::GOOD.replace("n = 64", "n = 1");
+        let e = parse_with_overrides(Path::new("bad.toml"), &bad, &["particles.n=10".into()])
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("bad.toml:3: `particles.n`"), "{e}");
+    }
+}

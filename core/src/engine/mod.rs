@@ -29,8 +29,8 @@ pub trait EventLoop {
 
 macro_rules! impl_event_loop {
     ($t:ident) => {
-        impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop
-            for $t<K, D, A>
+        impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution>
+            EventLoop for $t<K, D, A>
         {
             fn advance_to<R: Rng + ?Sized>(
                 &mut self,

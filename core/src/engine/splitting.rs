@@ -163,7 +163,10 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         }
         self.counts.observations += 1;
         if K::USES_UMAX {
-            self.maj = Majorant { umax: 2.0 * obs.max_peculiar_speed, vref: obs.bulk };
+            self.maj = Majorant {
+                umax: 2.0 * obs.max_peculiar_speed,
+                vref: obs.bulk,
+            };
         }
         Ok(obs)
     }

@@ -1,0 +1,102 @@
+//! RW Algorithms 1 and 2: Euler and Strang splitting of the heated Maxwell gas (RW (27)).
+//!
+//! For the Maxwell kernel the ensemble mean of T_bulk of each splitting scheme is known
+//! exactly at every n and dt (`MaxwellTemperature::splitting_bulk_mean`); the simulated means
+//! must match it within their 99.9% confidence intervals, and must differ from the no-splitting
+//! value where the time-step error is resolved. The convergence factors of the temperature
+//! error in dt are then near 2 (Euler) and 4 (Strang), RW Table 2.
+
+use gdsmc::references::maxwell_temperature;
+use gdsmc::scene::{Scene, SchemeChoice};
+use gdsmc_validation::*;
+
+fn scheme(name: &str, n: usize, m: u64, seed: u64, s: SchemeChoice) -> Scene {
+    let mut sc = shipped(name, n, m, seed);
+    sc.scheme = s;
+    sc
+}
+
+#[test]
+fn splitting_means_are_exact_at_small_n() {
+    let n = 8;
+    for (k, s) in [SchemeChoice::Euler(1.0), SchemeChoice::Strang(1.0)]
+        .into_iter()
+        .enumerate()
+    {
+        let mut sc = scheme("rw-transient", n, 40_000, 600 + k as u64, s);
+        sc.times = (0..=8).map(f64::from).collect();
+        let mt = maxwell_temperature(&sc).unwrap();
+        let st = run(&sc);
+        let strang = matches!(s, SchemeChoice::Strang(_));
+        for t in [1.0, 2.0, 4.0, 8.0] {
+            let (m, c) = at(&st, time_index(&st, t), "T_bulk");
+            let exact = mt.splitting_bulk_mean(n, 1.0, strang, t);
+            assert!(
+                (m - exact).abs() <= c,
+                "{s:?} t={t}: T_bulk {m} +- {c}, exact {exact}"
+            );
+            let nosplit = mt.finite_n_bulk_mean(n, t);
+            assert!(
+                (m - nosplit).abs() > c,
+                "{s:?} t={t}: time-step error not resolved"
+            );
+        }
+    }
+}
+
+#[test]
+fn euler_is_first_order_and_strang_second_order() {
+    // RW Table 2 (n = 4096, t in [0, 8], dt = 8/K): E_max = max_k |T(t_k) - T_k| / T(t_k).
+    // Each simulated E_max is compared with the exact value of the scheme's mean at this n
+    // within its confidence; the factors per halving of dt must be near 2 and 4.
+    let n = 4096;
+    let cases: [(SchemeChoice, &[f64], f64); 2] = [
+        (SchemeChoice::Euler(0.0), &[2.0, 1.0, 0.5, 0.25], 2.0),
+        (SchemeChoice::Strang(0.0), &[2.0, 1.0, 0.5], 4.0),
+    ];
+    for (kind, dts, order_factor) in cases {
+        let mut errs = Vec::new();
+        for (k, &dt) in dts.iter().enumerate() {
+            let s = match kind {
+                SchemeChoice::Euler(_) => SchemeChoice::Euler(dt),
+                _ => SchemeChoice::Strang(dt),
+            };
+            let mut sc = scheme("rw-transient", n, 150, 700 + k as u64, s);
+            let kk = (8.0 / dt).round() as usize;
+            sc.times = (0..=kk).map(|i| i as f64 * dt).collect();
+            let mt = maxwell_temperature(&sc).unwrap();
+            let st = run(&sc);
+            let strang = matches!(s, SchemeChoice::Strang(_));
+            let (mut e, mut conf, mut e_exact) = (0.0f64, 0.0, 0.0f64);
+            for (ti, &t) in st.times.iter().enumerate() {
+                let (m, c) = at(&st, ti, "T");
+                let exact_curve = mt.at(t);
+                let mean_n = mt.splitting_bulk_mean(n, dt, strang, t) + mt.bulk_to_raw(n, t);
+                assert!(
+                    (m - mean_n).abs() <= c,
+                    "{s:?} t={t}: T {m} +- {c}, exact mean {mean_n}"
+                );
+                let ek = (m - exact_curve).abs() / exact_curve;
+                if ek > e {
+                    e = ek;
+                    conf = c / exact_curve;
+                }
+                e_exact = e_exact.max((mean_n - exact_curve).abs() / exact_curve);
+            }
+            errs.push((e, conf, e_exact));
+        }
+        for w in errs.windows(2) {
+            let ((e1, c1, x1), (e2, c2, x2)) = (w[0], w[1]);
+            let (lo, hi) = ((e1 - c1) / (e2 + c2), (e1 + c1) / (e2 - c2));
+            assert!(
+                lo <= x1 / x2 && x1 / x2 <= hi,
+                "{kind:?}: factor of exact errors {} outside [{lo}, {hi}]",
+                x1 / x2
+            );
+            assert!(
+                lo < order_factor * 1.5 && hi > order_factor / 1.5,
+                "{kind:?}: factor interval [{lo}, {hi}] far from {order_factor}"
+            );
+        }
+    }
+}
