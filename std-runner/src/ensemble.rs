@@ -11,7 +11,10 @@ use crate::columns::COLUMNS;
 use crate::error::Error;
 use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
 use crate::stats::Accumulator;
-use gdsmc_core::drive::{Drive, NoDrive, WhiteNoise};
+use gdsmc_core::drive::{
+    Drive, HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground, NoDrive,
+    WhiteNoise,
+};
 use gdsmc_core::engine::{Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
@@ -61,6 +64,23 @@ fn with_drive<K: Kernel + Send + Sync, J: EngineJob>(scene: &Scene, k: K, job: J
     match scene.drive {
         DriveChoice::None => job.run(k, NoDrive),
         DriveChoice::WhiteNoise(beta) => job.run(k, WhiteNoise::new(beta).expect("validated")),
+        DriveChoice::HostMedium {
+            hard_spheres,
+            c1,
+            density,
+            mass,
+            temperature,
+            drift,
+        } => {
+            let bg = Maxwellian::new(mass, temperature, Vec3::new(drift[0], drift[1], drift[2]))
+                .expect("validated");
+            let params = HostMediumParams::new(bg, density, c1).expect("validated");
+            if hard_spheres {
+                job.run(k, HostMedium::new(params, HardSphereBackground))
+            } else {
+                job.run(k, HostMedium::new(params, MaxwellBackground))
+            }
+        }
     }
 }
 

@@ -63,7 +63,9 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         let (mut e_max, mut t_at) = (0.0f64, 0.0);
         for (ti, &t) in stats.times.iter().enumerate() {
             let exact = (r.curve)(t);
-            let e = ((stats.mean(ti, col) - exact) / exact).abs();
+            // Relative where the reference is non-zero, absolute where it vanishes (V components).
+            let d = (stats.mean(ti, col) - exact).abs();
+            let e = if exact != 0.0 { d / exact.abs() } else { d };
             if e > e_max {
                 e_max = e;
                 t_at = t;
@@ -74,8 +76,8 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "observable": r.of,
             "reference": r.name,
             "source": r.source,
-            "E_end": ((stats.mean(last, col) - exact_end) / exact_end).abs(),
-            "Conf_end": stats.ci(last, col) / exact_end.abs(),
+            "E_end": (stats.mean(last, col) - exact_end).abs() / if exact_end != 0.0 { exact_end.abs() } else { 1.0 },
+            "Conf_end": stats.ci(last, col) / if exact_end != 0.0 { exact_end.abs() } else { 1.0 },
             "E_max": e_max,
             "t_of_E_max": t_at,
         }));

@@ -103,3 +103,68 @@ impl MaxwellTemperature {
         (am * x0 + b * geometric) / (3.0 * nf)
     }
 }
+
+/// BRS (14)-(17): the exact bulk velocity and temperature of a Maxwell-kernel granular gas in
+/// a Maxwellian host medium (`B_1 = C_1`, `B_2 = C_2`, constant restitution `e`, unit grain mass,
+/// grain density `rho = 1`). BRS writes them in the time `rho^B C_1 t`; here `t` is the
+/// simulation's own time, so every rate carries the factor `s = rho^B C_1`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HostMediumMaxwell {
+    /// Initial bulk velocity `u_0`.
+    pub u0: [f64; 3],
+    /// Background drift `u^B`.
+    pub ub: [f64; 3],
+    /// Initial temperature (about the bulk velocity).
+    pub t0: f64,
+    /// Background temperature `T^B`.
+    pub tb: f64,
+    /// Mass ratio `alpha = m^B / (1 + m^B)` (BRS (3)).
+    pub alpha: f64,
+    /// `s = rho^B C_1`.
+    pub s: f64,
+    /// `Kn = C_2 / (rho^B C_1)` (BRS (12) with `rho = 1`).
+    pub kn: f64,
+    /// Restitution coefficient `e`.
+    pub e: f64,
+}
+
+impl HostMediumMaxwell {
+    /// The bulk velocity BRS (14): `u^B + (u_0 - u^B) exp(-4 pi alpha s t)`.
+    pub fn bulk(&self, t: f64) -> [f64; 3] {
+        let f = (-4.0 * std::f64::consts::PI * self.alpha * self.s * t).exp();
+        std::array::from_fn(|k| self.ub[k] + (self.u0[k] - self.ub[k]) * f)
+    }
+
+    /// `A, B, C, D` of BRS (17).
+    pub fn coefficients(&self) -> (f64, f64, f64, f64) {
+        let pi = std::f64::consts::PI;
+        let a = self.alpha;
+        let du2: f64 = (0..3).map(|k| (self.u0[k] - self.ub[k]).powi(2)).sum();
+        (
+            8.0 / 3.0 * pi * a * a * du2,
+            8.0 * pi * a,
+            8.0 * pi * a * (1.0 - a) + pi * self.kn * (1.0 - self.e * self.e),
+            8.0 * pi * a * (1.0 - a) * self.tb,
+        )
+    }
+
+    /// The temperature BRS (15) (or (16) when `B = C`).
+    pub fn temperature(&self, t: f64) -> f64 {
+        let (a, b, c, d) = self.coefficients();
+        let x = self.s * t;
+        if (b - c).abs() < 1e-12 * b.abs().max(c.abs()) {
+            return self.t0 * (-b * x).exp()
+                + d / b * (1.0 - (-b * x).exp())
+                + a * x * (-b * x).exp();
+        }
+        self.t0 * (-c * x).exp()
+            + d / c * (1.0 - (-c * x).exp())
+            + a / (c - b) * ((-b * x).exp() - (-c * x).exp())
+    }
+
+    /// The equilibrium temperature BRS (18), `T* = D / C`.
+    pub fn equilibrium(&self) -> f64 {
+        let (_, _, c, d) = self.coefficients();
+        d / c
+    }
+}

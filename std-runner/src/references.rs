@@ -1,7 +1,7 @@
 //! Which reference curves apply to a scene, as extra columns beside the observables.
 
 use crate::ensemble::initial_sampler;
-use crate::reference::MaxwellTemperature;
+use crate::reference::{HostMediumMaxwell, MaxwellTemperature};
 use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
 
 /// A named reference curve `t -> value` for an observable column.
@@ -24,6 +24,7 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
     let beta = match scene.drive {
         DriveChoice::None => 0.0,
         DriveChoice::WhiteNoise(b) => b,
+        DriveChoice::HostMedium { .. } => return None,
     };
     let t0 = initial_sampler(scene).temperature();
     Some(MaxwellTemperature::new(
@@ -35,9 +36,62 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
     ))
 }
 
+/// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
+pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
+    let KernelChoice::Maxwell { gamma, c } = scene.kernel else {
+        return None;
+    };
+    let DriveChoice::HostMedium {
+        hard_spheres: false,
+        c1,
+        density,
+        mass,
+        temperature,
+        drift,
+    } = scene.drive
+    else {
+        return None;
+    };
+    let f0 = initial_sampler(scene);
+    let u0 = f0.mean();
+    Some(HostMediumMaxwell {
+        u0: u0.to_array(),
+        ub: drift,
+        t0: f0.temperature(),
+        tb: temperature,
+        alpha: mass / (1.0 + mass),
+        s: density * c1,
+        kn: gamma * c / (density * c1),
+        e: scene.restitution,
+    })
+}
+
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     let mut out = Vec::new();
+    if let Some(h) = host_medium_maxwell(scene) {
+        for (k, (name, of)) in [
+            ("V_x_exact", "V_x"),
+            ("V_y_exact", "V_y"),
+            ("V_z_exact", "V_z"),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            out.push(ReferenceCurve {
+                name,
+                of,
+                source: "BRS (14)",
+                curve: Box::new(move |t| h.bulk(t)[k]),
+            });
+        }
+        out.push(ReferenceCurve {
+            name: "T_bulk_exact",
+            of: "T_bulk",
+            source: "BRS (15)-(17)",
+            curve: Box::new(move |t| h.temperature(t)),
+        });
+    }
     if let Some(mt) = maxwell_temperature(scene) {
         let v0 = initial_sampler(scene).mean().norm2() / 3.0;
         out.push(ReferenceCurve {

@@ -180,6 +180,18 @@ pub enum DriveKind {
     None,
     /// White-noise heating of strength `beta` (GRW (1), (18)).
     WhiteNoise,
+    /// Elastic collisions with a Maxwellian host medium (BRS).
+    HostMedium,
+}
+
+/// `drive.kernel` of a host medium.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BackgroundKind {
+    /// `B_1 = C_1` (BRS (11)).
+    Maxwell,
+    /// `B_1 = C_1 |g|` (BRS (19)).
+    HardSpheres,
 }
 
 /// `[drive]`.
@@ -192,6 +204,24 @@ pub struct DriveSpec {
     /// White-noise strength beta >= 0 (required for `"white-noise"`).
     #[serde(default)]
     pub beta: Option<Spanned<f64>>,
+    /// Host medium: background kernel (required for `"host-medium"`).
+    #[serde(default)]
+    pub kernel: Option<BackgroundKind>,
+    /// Host medium: kernel constant C_1 > 0. Default 1.
+    #[serde(default)]
+    pub c: Option<Spanned<f64>>,
+    /// Host medium: number density rho^B > 0. Default 1.
+    #[serde(default)]
+    pub density: Option<Spanned<f64>>,
+    /// Host medium: background particle mass m^B > 0. Default 1.
+    #[serde(default)]
+    pub mass: Option<Spanned<f64>>,
+    /// Host medium: background temperature T^B >= 0. Default 1.
+    #[serde(default)]
+    pub temperature: Option<Spanned<f64>>,
+    /// Host medium: background drift u^B. Default 0.
+    #[serde(default)]
+    pub drift: Option<Spanned<[f64; 3]>>,
 }
 
 /// `scheme.kind`.
@@ -307,6 +337,21 @@ pub enum DriveChoice {
     None,
     /// White noise with this beta.
     WhiteNoise(f64),
+    /// A Maxwellian host medium (unit-mass grains).
+    HostMedium {
+        /// Hard-sphere (true) or Maxwell (false) background kernel.
+        hard_spheres: bool,
+        /// C_1.
+        c1: f64,
+        /// rho^B.
+        density: f64,
+        /// m^B.
+        mass: f64,
+        /// T^B.
+        temperature: f64,
+        /// u^B.
+        drift: [f64; 3],
+    },
 }
 
 /// The validated initial distribution: weighted Maxwellians `(weight, mass, temperature, drift)`.
@@ -550,24 +595,65 @@ impl SceneFile {
                 format!("must lie in (0, 1], got {alpha}"),
             );
         }
-        let drive = match (self.drive.kind, &self.drive.beta) {
-            (DriveKind::None, None) => DriveChoice::None,
-            (DriveKind::None, Some(b)) => {
+        let d = &self.drive;
+        let host_keys = [
+            ("kernel", d.kernel.is_some()),
+            ("c", d.c.is_some()),
+            ("density", d.density.is_some()),
+            ("mass", d.mass.is_some()),
+            ("temperature", d.temperature.is_some()),
+            ("drift", d.drift.is_some()),
+        ];
+        if d.kind != DriveKind::HostMedium {
+            if let Some((k, _)) = host_keys.iter().find(|(_, set)| *set) {
+                return l.invalid(
+                    0..0,
+                    &format!("drive.{k}"),
+                    "is only used with kind = \"host-medium\"",
+                );
+            }
+        }
+        if d.kind != DriveKind::WhiteNoise {
+            if let Some(b) = &d.beta {
                 return l.invalid(
                     b.span(),
                     "drive.beta",
                     "is only used with kind = \"white-noise\"",
                 );
             }
-            (DriveKind::WhiteNoise, Some(b)) => {
-                DriveChoice::WhiteNoise(non_negative(&l, b, "drive.beta")?)
-            }
-            (DriveKind::WhiteNoise, None) => {
-                return l.invalid(
-                    0..0,
-                    "drive.beta",
-                    "is required with kind = \"white-noise\"",
-                );
+        }
+        let drive = match d.kind {
+            DriveKind::None => DriveChoice::None,
+            DriveKind::WhiteNoise => match &d.beta {
+                Some(b) => DriveChoice::WhiteNoise(non_negative(&l, b, "drive.beta")?),
+                None => {
+                    return l.invalid(
+                        0..0,
+                        "drive.beta",
+                        "is required with kind = \"white-noise\"",
+                    );
+                }
+            },
+            DriveKind::HostMedium => {
+                let Some(kernel) = d.kernel else {
+                    return l.invalid(
+                        0..0,
+                        "drive.kernel",
+                        "is required with kind = \"host-medium\" (\"maxwell\" or \"hard-spheres\")",
+                    );
+                };
+                DriveChoice::HostMedium {
+                    hard_spheres: kernel == BackgroundKind::HardSpheres,
+                    c1: positive(&l, &opt_or_one(&d.c), "drive.c")?,
+                    density: positive(&l, &opt_or_one(&d.density), "drive.density")?,
+                    mass: positive(&l, &opt_or_one(&d.mass), "drive.mass")?,
+                    temperature: non_negative(
+                        &l,
+                        &opt_or_one(&d.temperature),
+                        "drive.temperature",
+                    )?,
+                    drift: drift(&l, &d.drift, "drive.drift")?,
+                }
             }
         };
         let t0 = match &self.observe.t_start {

@@ -4,9 +4,11 @@
 //! needed (GRW Section 3 steps 2.5-2.6, RW Algorithm 3), and in one batch to every particle at
 //! an observation time (GRW step 3.1). The event loop is generic over [`Drive`].
 
+pub mod host_medium;
 pub mod none;
 pub mod white_noise;
 
+pub use host_medium::{HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground};
 pub use none::NoDrive;
 pub use white_noise::WhiteNoise;
 

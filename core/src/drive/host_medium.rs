@@ -1,0 +1,178 @@
+//! A host medium: elastic collisions of each grain with a fixed Maxwellian background
+//! (BRS Section 2, `J_EL`; the map BRS (2) with the mass ratio BRS (3)).
+//!
+//! Each grain meets the background independently of the others, so its background collisions
+//! form a Poisson process of its own, with rate `E_1(v)` of BRS (26). This drive simulates that
+//! process lazily, grain by grain, from the grain's last-kick time to the time it is needed,
+//! exactly as the white-noise kicks are (GRW Section 3): there is no time step and no particle
+//! choice by weights at all. The superposition of the grains' independent processes is the
+//! background part of BRS's Algorithms 1 and 2 (total rate `pi_1 = sum_i E_1(v_i)`, grain `i`
+//! chosen with probability `E_1(v_i) / pi_1`), so the choice BRS makes with an alias table,
+//! rebuilt after every collision, costs nothing here: O(1) per event, exact.
+//!
+//! - Maxwell background kernel `B_1 = C_1` (BRS (11)): rate `4 pi C_1 rho^B`, partner from
+//!   `M^B`, direction uniform (BRS Algorithm 1, steps 2.3.1-2.3.4).
+//! - Hard-sphere background kernel `B_1 = C_1 |g|` (BRS (19)): thinning against the majorant
+//!   `E_1max(v) = C_1 rho^B (4 pi a + 8 pi^{1/2} b)`, `a = |v - u^B|`, `b = (2 T^B/m^B)^{1/2}`
+//!   (BRS (28)); the partner from the mixture `a/(a + 2b/sqrt(pi))` of `M^B` and the density
+//!   BRS (29); rejected with probability `1 - |v - w| / (|v - u^B| + |w - u^B|)` (BRS
+//!   Algorithm 2). The majorant is recomputed after each background event, when `v` changes.
+//!
+//! Grains have unit mass; `T^B`, `m^B` are the background's temperature and mass.
+
+use super::Drive;
+use crate::collision::{MassRatio, elastic_background};
+use crate::math::{PI, Real, sqrt};
+use crate::rng::{Rng, uniform01};
+use crate::sample::{BackgroundPartner, Maxwellian, standard_exponential, unit_sphere};
+use crate::vec3::Vec3;
+
+/// The grain-background collision kernel `B_1`.
+pub trait BackgroundKernel: Copy {
+    /// Draws the next real background collision of a grain at velocity `v` within `dt`:
+    /// the post-collisional velocity and the time used, or `None` if none happens in `dt`.
+    fn next<R: Rng + ?Sized>(
+        &self,
+        m: &HostMediumParams,
+        v: Vec3,
+        dt: Real,
+        rng: &mut R,
+    ) -> Option<(Vec3, Real)>;
+}
+
+/// The background Maxwellian and the constants derived from it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HostMediumParams {
+    /// Background Maxwellian `M^B` (mass, temperature, drift).
+    pub background: Maxwellian,
+    /// Number density `rho^B`.
+    pub density: Real,
+    /// Kernel constant `C_1`.
+    pub c1: Real,
+    ratio: MassRatio,
+    partner: BackgroundPartner,
+}
+
+/// A host-medium parameter out of its domain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HostMediumError {
+    /// The density is not finite and positive.
+    Density,
+    /// `C_1` is not finite and positive.
+    Strength,
+}
+
+impl HostMediumParams {
+    /// The background `bg` with density `density` and kernel constant `c1`, for unit-mass
+    /// grains.
+    pub fn new(bg: Maxwellian, density: Real, c1: Real) -> Result<Self, HostMediumError> {
+        if !(density.is_finite() && density > 0.0) {
+            return Err(HostMediumError::Density);
+        }
+        if !(c1.is_finite() && c1 > 0.0) {
+            return Err(HostMediumError::Strength);
+        }
+        let ratio = MassRatio::new(1.0, bg.mass()).expect("Maxwellian mass is positive");
+        Ok(HostMediumParams {
+            background: bg,
+            density,
+            c1,
+            ratio,
+            partner: BackgroundPartner::new(&bg),
+        })
+    }
+
+    /// The mass ratio `alpha = m^B / (m + m^B)` of BRS (3) (unit grain mass).
+    pub fn mass_ratio(&self) -> Real {
+        self.ratio.get()
+    }
+}
+
+/// Maxwell background kernel `B_1 = C_1`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MaxwellBackground;
+
+impl BackgroundKernel for MaxwellBackground {
+    #[inline]
+    fn next<R: Rng + ?Sized>(
+        &self,
+        m: &HostMediumParams,
+        v: Vec3,
+        dt: Real,
+        rng: &mut R,
+    ) -> Option<(Vec3, Real)> {
+        let tau = standard_exponential(rng) / (4.0 * PI * m.c1 * m.density);
+        if tau >= dt {
+            return None;
+        }
+        let w = m.background.sample(rng);
+        let omega = unit_sphere(rng);
+        Some((elastic_background(v, w, omega, m.ratio).0, tau))
+    }
+}
+
+/// Hard-sphere background kernel `B_1 = C_1 |g|`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct HardSphereBackground;
+
+impl BackgroundKernel for HardSphereBackground {
+    #[inline]
+    fn next<R: Rng + ?Sized>(
+        &self,
+        m: &HostMediumParams,
+        v: Vec3,
+        dt: Real,
+        rng: &mut R,
+    ) -> Option<(Vec3, Real)> {
+        let ub = m.background.drift();
+        let b = m.partner.b();
+        let a = (v - ub).norm();
+        let bound = m.c1 * m.density * (4.0 * PI * a + 8.0 * sqrt(PI) * b);
+        let mut used = 0.0;
+        loop {
+            used += standard_exponential(rng) / bound;
+            if used >= dt {
+                return None;
+            }
+            let mean_partner = 2.0 * b / sqrt(PI);
+            let w = if uniform01(rng) * (a + mean_partner) < a {
+                m.background.sample(rng)
+            } else {
+                m.partner.sample(rng)
+            };
+            let omega = unit_sphere(rng);
+            if uniform01(rng) * (a + (w - ub).norm()) < (v - w).norm() {
+                return Some((elastic_background(v, w, omega, m.ratio).0, used));
+            }
+        }
+    }
+}
+
+/// The host-medium drive with background kernel `B`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HostMedium<B> {
+    /// Background parameters.
+    pub params: HostMediumParams,
+    kernel: B,
+}
+
+impl<B: BackgroundKernel> HostMedium<B> {
+    /// A host medium with these parameters and kernel.
+    pub fn new(params: HostMediumParams, kernel: B) -> Self {
+        HostMedium { params, kernel }
+    }
+}
+
+impl<B: BackgroundKernel> Drive for HostMedium<B> {
+    const ACTS: bool = true;
+
+    #[inline]
+    fn evolve<R: Rng + ?Sized>(&self, mut v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
+        let mut left = dt;
+        while let Some((v1, used)) = self.kernel.next(&self.params, v, left, rng) {
+            v = v1;
+            left -= used;
+        }
+        v
+    }
+}
