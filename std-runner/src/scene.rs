@@ -604,23 +604,23 @@ impl SceneFile {
             ("temperature", d.temperature.is_some()),
             ("drift", d.drift.is_some()),
         ];
-        if d.kind != DriveKind::HostMedium {
-            if let Some((k, _)) = host_keys.iter().find(|(_, set)| *set) {
-                return l.invalid(
-                    0..0,
-                    &format!("drive.{k}"),
-                    "is only used with kind = \"host-medium\"",
-                );
-            }
+        if d.kind != DriveKind::HostMedium
+            && let Some((k, _)) = host_keys.iter().find(|(_, set)| *set)
+        {
+            return l.invalid(
+                0..0,
+                &format!("drive.{k}"),
+                "is only used with kind = \"host-medium\"",
+            );
         }
-        if d.kind != DriveKind::WhiteNoise {
-            if let Some(b) = &d.beta {
-                return l.invalid(
-                    b.span(),
-                    "drive.beta",
-                    "is only used with kind = \"white-noise\"",
-                );
-            }
+        if d.kind != DriveKind::WhiteNoise
+            && let Some(b) = &d.beta
+        {
+            return l.invalid(
+                b.span(),
+                "drive.beta",
+                "is only used with kind = \"white-noise\"",
+            );
         }
         let drive = match d.kind {
             DriveKind::None => DriveChoice::None,
