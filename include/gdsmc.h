@@ -35,8 +35,23 @@
 // White-noise heating of strength `beta` (GRW (1), (18)).
 #define GDSMC_DRIVE_WHITE_NOISE 1
 
+// Elastic collisions with a Maxwellian host medium (BRS), the `background_*` fields.
+#define GDSMC_DRIVE_HOST_MEDIUM 2
+
+// Host-medium kernel `B_1 = C_1` (BRS (11)).
+#define GDSMC_BACKGROUND_MAXWELL 0
+
+// Host-medium kernel `B_1 = C_1 |g|` (BRS (19)).
+#define GDSMC_BACKGROUND_HARD_SPHERES 1
+
 // The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
 #define GDSMC_SCHEME_NO_SPLITTING 0
+
+// Euler splitting with time step `dt` (RW Algorithm 1).
+#define GDSMC_SCHEME_EULER 1
+
+// Strang splitting with time step `dt` (RW Algorithm 2).
+#define GDSMC_SCHEME_STRANG 2
 
 // The result of every fallible gdsmc call.
 typedef enum {
@@ -99,6 +114,21 @@ typedef struct {
     double temperature;
     // Drift velocity of the initial Maxwellian.
     double drift[3];
+    // Time step of the splitting schemes, > 0; times passed to gdsmc_sim_advance must be
+    // multiples of it. Unused by GDSMC_SCHEME_NO_SPLITTING.
+    double dt;
+    // Host medium (GDSMC_DRIVE_HOST_MEDIUM): one of `GDSMC_BACKGROUND_*`.
+    uint32_t background_kernel;
+    // Host medium: kernel constant C_1 > 0.
+    double background_c;
+    // Host medium: number density rho^B > 0.
+    double background_density;
+    // Host medium: background particle mass m^B > 0 (grains have unit mass).
+    double background_mass;
+    // Host medium: background temperature T^B >= 0.
+    double background_temperature;
+    // Host medium: background drift u^B.
+    double background_drift[3];
 } gdsmc_config;
 
 // Moments and derived quantities of a simulation at its current time, and its event counts.
@@ -143,7 +173,8 @@ extern "C" {
 const char *gdsmc_version(void);
 
 // Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
-// alpha = 1/2, white noise beta = 1, standard Maxwellian start) with n = 1024 and seed 1.
+// alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
+// seed 1, stream 0; dt = 1/4 and a unit host medium for when those are switched on.
 //
 // # Safety
 // `out` must be NULL or point to writable memory for one gdsmc_config.

@@ -2,7 +2,7 @@
 
 use crate::guard::{check_ptr, guard};
 use crate::status::{Failure, fail, gdsmc_status};
-use gdsmc::scene::{DriveChoice, KernelChoice};
+use gdsmc::scene::{DriveChoice, KernelChoice, SchemeChoice};
 use std::ffi::{CStr, c_char};
 
 /// Maxwell pseudo-molecules, `B = gamma C` (GRW, `lambda = 0`).
@@ -16,9 +16,20 @@ pub const GDSMC_KERNEL_VHS: u32 = 2;
 pub const GDSMC_DRIVE_NONE: u32 = 0;
 /// White-noise heating of strength `beta` (GRW (1), (18)).
 pub const GDSMC_DRIVE_WHITE_NOISE: u32 = 1;
+/// Elastic collisions with a Maxwellian host medium (BRS), the `background_*` fields.
+pub const GDSMC_DRIVE_HOST_MEDIUM: u32 = 2;
+
+/// Host-medium kernel `B_1 = C_1` (BRS (11)).
+pub const GDSMC_BACKGROUND_MAXWELL: u32 = 0;
+/// Host-medium kernel `B_1 = C_1 |g|` (BRS (19)).
+pub const GDSMC_BACKGROUND_HARD_SPHERES: u32 = 1;
 
 /// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
 pub const GDSMC_SCHEME_NO_SPLITTING: u32 = 0;
+/// Euler splitting with time step `dt` (RW Algorithm 1).
+pub const GDSMC_SCHEME_EULER: u32 = 1;
+/// Strang splitting with time step `dt` (RW Algorithm 2).
+pub const GDSMC_SCHEME_STRANG: u32 = 2;
 
 /// Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or
 /// gdsmc_config_from_toml, then change fields. Enumerations are plain integers
@@ -55,6 +66,21 @@ pub struct gdsmc_config {
     pub temperature: f64,
     /// Drift velocity of the initial Maxwellian.
     pub drift: [f64; 3],
+    /// Time step of the splitting schemes, > 0; times passed to gdsmc_sim_advance must be
+    /// multiples of it. Unused by GDSMC_SCHEME_NO_SPLITTING.
+    pub dt: f64,
+    /// Host medium (GDSMC_DRIVE_HOST_MEDIUM): one of `GDSMC_BACKGROUND_*`.
+    pub background_kernel: u32,
+    /// Host medium: kernel constant C_1 > 0.
+    pub background_c: f64,
+    /// Host medium: number density rho^B > 0.
+    pub background_density: f64,
+    /// Host medium: background particle mass m^B > 0 (grains have unit mass).
+    pub background_mass: f64,
+    /// Host medium: background temperature T^B >= 0.
+    pub background_temperature: f64,
+    /// Host medium: background drift u^B.
+    pub background_drift: [f64; 3],
 }
 
 impl gdsmc_config {
@@ -75,12 +101,20 @@ impl gdsmc_config {
             mass: 1.0,
             temperature: 1.0,
             drift: [0.0; 3],
+            dt: 0.25,
+            background_kernel: GDSMC_BACKGROUND_MAXWELL,
+            background_c: 1.0,
+            background_density: 1.0,
+            background_mass: 1.0,
+            background_temperature: 1.0,
+            background_drift: [0.0; 3],
         }
     }
 }
 
 /// Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
-/// alpha = 1/2, white noise beta = 1, standard Maxwellian start) with n = 1024 and seed 1.
+/// alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
+/// seed 1, stream 0; dt = 1/4 and a unit host medium for when those are switched on.
 ///
 /// # Safety
 /// `out` must be NULL or point to writable memory for one gdsmc_config.
@@ -161,6 +195,31 @@ fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
             cfg.drive = GDSMC_DRIVE_WHITE_NOISE;
             cfg.beta = b;
         }
+        DriveChoice::HostMedium {
+            hard_spheres,
+            c1,
+            density,
+            mass,
+            temperature,
+            drift,
+        } => {
+            cfg.drive = GDSMC_DRIVE_HOST_MEDIUM;
+            cfg.background_kernel = if hard_spheres {
+                GDSMC_BACKGROUND_HARD_SPHERES
+            } else {
+                GDSMC_BACKGROUND_MAXWELL
+            };
+            cfg.background_c = c1;
+            cfg.background_density = density;
+            cfg.background_mass = mass;
+            cfg.background_temperature = temperature;
+            cfg.background_drift = drift;
+        }
     }
+    (cfg.scheme, cfg.dt) = match scene.scheme {
+        SchemeChoice::NoSplitting => (GDSMC_SCHEME_NO_SPLITTING, cfg.dt),
+        SchemeChoice::Euler(dt) => (GDSMC_SCHEME_EULER, dt),
+        SchemeChoice::Strang(dt) => (GDSMC_SCHEME_STRANG, dt),
+    };
     Ok(cfg)
 }

@@ -1,36 +1,49 @@
-//! The engine behind a handle: one monomorphized event loop per (kernel, drive), chosen once at
-//! creation; dispatch happens per call, never per collision.
+//! The engine behind a handle: one monomorphized event loop per (scheme, kernel, drive), chosen
+//! once at creation; dispatch happens per call, never per collision. An enum, not a box, so the
+//! allocation-free variant allocates nothing.
 
 use crate::config::*;
 use crate::status::{Failure, fail, gdsmc_status};
-use gdsmc_core::drive::{NoDrive, WhiteNoise};
-use gdsmc_core::engine::{Counts, EngineError, NoSplitting};
+use gdsmc_core::drive::{
+    HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground, NoDrive, WhiteNoise,
+};
+use gdsmc_core::engine::{Counts, EngineError, NoSplitting, Splitting, SplittingOrder};
 use gdsmc_core::kernel::{HardSpheres, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::Particles;
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::Xoshiro256PlusPlus;
+use gdsmc_core::sample::Maxwellian;
+use gdsmc_core::vec3::Vec3;
 
-pub(crate) enum AnyEngine {
-    MaxwellWhite(NoSplitting<Maxwell, WhiteNoise, Constant>),
-    MaxwellNone(NoSplitting<Maxwell, NoDrive, Constant>),
-    HardWhite(NoSplitting<HardSpheres, WhiteNoise, Constant>),
-    HardNone(NoSplitting<HardSpheres, NoDrive, Constant>),
-    VhsWhite(NoSplitting<Vhs, WhiteNoise, Constant>),
-    VhsNone(NoSplitting<Vhs, NoDrive, Constant>),
-}
+type HmM = HostMedium<MaxwellBackground>;
+type HmH = HostMedium<HardSphereBackground>;
 
-macro_rules! each {
-    ($e:expr, $x:ident => $body:expr) => {
-        match $e {
-            AnyEngine::MaxwellWhite($x) => $body,
-            AnyEngine::MaxwellNone($x) => $body,
-            AnyEngine::HardWhite($x) => $body,
-            AnyEngine::HardNone($x) => $body,
-            AnyEngine::VhsWhite($x) => $body,
-            AnyEngine::VhsNone($x) => $body,
+macro_rules! any_engine {
+    ($($v:ident => $e:ident<$k:ty, $d:ty>),* $(,)?) => {
+        pub(crate) enum AnyEngine { $($v($e<$k, $d, Constant>)),* }
+        $(impl From<$e<$k, $d, Constant>> for AnyEngine {
+            fn from(e: $e<$k, $d, Constant>) -> Self { AnyEngine::$v(e) }
+        })*
+        macro_rules! each {
+            ($x:expr, $y:ident => $body:expr) => { match $x { $(AnyEngine::$v($y) => $body),* } };
         }
     };
+}
+
+any_engine! {
+    NsMw => NoSplitting<Maxwell, WhiteNoise>, NsMn => NoSplitting<Maxwell, NoDrive>,
+    NsMhm => NoSplitting<Maxwell, HmM>, NsMhh => NoSplitting<Maxwell, HmH>,
+    NsHw => NoSplitting<HardSpheres, WhiteNoise>, NsHn => NoSplitting<HardSpheres, NoDrive>,
+    NsHhm => NoSplitting<HardSpheres, HmM>, NsHhh => NoSplitting<HardSpheres, HmH>,
+    NsVw => NoSplitting<Vhs, WhiteNoise>, NsVn => NoSplitting<Vhs, NoDrive>,
+    NsVhm => NoSplitting<Vhs, HmM>, NsVhh => NoSplitting<Vhs, HmH>,
+    SpMw => Splitting<Maxwell, WhiteNoise>, SpMn => Splitting<Maxwell, NoDrive>,
+    SpMhm => Splitting<Maxwell, HmM>, SpMhh => Splitting<Maxwell, HmH>,
+    SpHw => Splitting<HardSpheres, WhiteNoise>, SpHn => Splitting<HardSpheres, NoDrive>,
+    SpHhm => Splitting<HardSpheres, HmM>, SpHhh => Splitting<HardSpheres, HmH>,
+    SpVw => Splitting<Vhs, WhiteNoise>, SpVn => Splitting<Vhs, NoDrive>,
+    SpVhm => Splitting<Vhs, HmM>, SpVhh => Splitting<Vhs, HmH>,
 }
 
 fn invalid<T>(msg: String) -> Result<T, Failure> {
@@ -43,7 +56,13 @@ pub(crate) fn engine_error(e: EngineError) -> Failure {
         EngineError::NonFinite => gdsmc_status::GDSMC_NON_FINITE,
         EngineError::OffGrid => gdsmc_status::GDSMC_INVALID_ARGUMENT,
     };
-    Failure(s, e.to_string())
+    let msg = match e {
+        EngineError::OffGrid => {
+            "the time is not a multiple of config.dt (splitting schemes)".to_string()
+        }
+        _ => e.to_string(),
+    };
+    Failure(s, msg)
 }
 
 /// Checks every field of a configuration, naming the first bad one.
@@ -60,7 +79,7 @@ pub(crate) fn validate(c: &gdsmc_config) -> Result<(), Failure> {
             c.stream
         ));
     }
-    if c.scheme != GDSMC_SCHEME_NO_SPLITTING {
+    if c.scheme > GDSMC_SCHEME_STRANG {
         return invalid(format!(
             "config.scheme = {} is not a GDSMC_SCHEME_* value",
             c.scheme
@@ -72,7 +91,7 @@ pub(crate) fn validate(c: &gdsmc_config) -> Result<(), Failure> {
             c.kernel
         ));
     }
-    if c.drive > GDSMC_DRIVE_WHITE_NOISE {
+    if c.drive > GDSMC_DRIVE_HOST_MEDIUM {
         return invalid(format!(
             "config.drive = {} is not a GDSMC_DRIVE_* value",
             c.drive
@@ -111,6 +130,24 @@ pub(crate) fn validate(c: &gdsmc_config) -> Result<(), Failure> {
     if c.drive == GDSMC_DRIVE_WHITE_NOISE {
         nonneg(c.beta, "beta")?;
     }
+    if c.drive == GDSMC_DRIVE_HOST_MEDIUM {
+        if c.background_kernel > GDSMC_BACKGROUND_HARD_SPHERES {
+            return invalid(format!(
+                "config.background_kernel = {} is not a GDSMC_BACKGROUND_* value",
+                c.background_kernel
+            ));
+        }
+        pos(c.background_c, "background_c")?;
+        pos(c.background_density, "background_density")?;
+        pos(c.background_mass, "background_mass")?;
+        nonneg(c.background_temperature, "background_temperature")?;
+        if c.background_drift.iter().any(|x| !x.is_finite()) {
+            return invalid("config.background_drift must be finite".into());
+        }
+    }
+    if c.scheme != GDSMC_SCHEME_NO_SPLITTING {
+        pos(c.dt, "dt")?;
+    }
     if c.drift.iter().any(|x| !x.is_finite()) {
         return invalid("config.drift must be finite".into());
     }
@@ -120,33 +157,86 @@ pub(crate) fn validate(c: &gdsmc_config) -> Result<(), Failure> {
     Ok(())
 }
 
+fn start_with<K, D>(
+    c: &gdsmc_config,
+    k: K,
+    d: D,
+    p: &mut Particles<'_>,
+) -> Result<(AnyEngine, Observables), Failure>
+where
+    K: gdsmc_core::kernel::Kernel,
+    D: gdsmc_core::drive::Drive,
+    NoSplitting<K, D, Constant>: Into<AnyEngine>,
+    Splitting<K, D, Constant>: Into<AnyEngine>,
+{
+    let a = Constant::new(c.restitution).expect("validated");
+    if c.scheme == GDSMC_SCHEME_NO_SPLITTING {
+        let (e, o) = NoSplitting::start(k, d, a, p, 0.0).map_err(engine_error)?;
+        Ok((e.into(), o))
+    } else {
+        let order = if c.scheme == GDSMC_SCHEME_EULER {
+            SplittingOrder::Euler
+        } else {
+            SplittingOrder::Strang
+        };
+        let (e, o) = Splitting::start(k, d, a, order, c.dt, p, 0.0).map_err(engine_error)?;
+        Ok((e.into(), o))
+    }
+}
+
+fn with_drive<K>(
+    c: &gdsmc_config,
+    k: K,
+    p: &mut Particles<'_>,
+) -> Result<(AnyEngine, Observables), Failure>
+where
+    K: gdsmc_core::kernel::Kernel,
+    NoSplitting<K, WhiteNoise, Constant>: Into<AnyEngine>,
+    NoSplitting<K, NoDrive, Constant>: Into<AnyEngine>,
+    NoSplitting<K, HmM, Constant>: Into<AnyEngine>,
+    NoSplitting<K, HmH, Constant>: Into<AnyEngine>,
+    Splitting<K, WhiteNoise, Constant>: Into<AnyEngine>,
+    Splitting<K, NoDrive, Constant>: Into<AnyEngine>,
+    Splitting<K, HmM, Constant>: Into<AnyEngine>,
+    Splitting<K, HmH, Constant>: Into<AnyEngine>,
+{
+    match c.drive {
+        GDSMC_DRIVE_NONE => start_with(c, k, NoDrive, p),
+        GDSMC_DRIVE_WHITE_NOISE => start_with(c, k, WhiteNoise::new(c.beta).expect("validated"), p),
+        _ => {
+            let d = c.background_drift;
+            let bg = Maxwellian::new(
+                c.background_mass,
+                c.background_temperature,
+                Vec3::new(d[0], d[1], d[2]),
+            )
+            .expect("validated");
+            let params =
+                HostMediumParams::new(bg, c.background_density, c.background_c).expect("validated");
+            if c.background_kernel == GDSMC_BACKGROUND_HARD_SPHERES {
+                start_with(c, k, HostMedium::new(params, HardSphereBackground), p)
+            } else {
+                start_with(c, k, HostMedium::new(params, MaxwellBackground), p)
+            }
+        }
+    }
+}
+
 impl AnyEngine {
     /// Starts the engine of a validated configuration on initialized particles.
     pub(crate) fn start(
         c: &gdsmc_config,
         p: &mut Particles<'_>,
     ) -> Result<(Self, Observables), Failure> {
-        let a = Constant::new(c.restitution).expect("validated");
-        let white = c.drive == GDSMC_DRIVE_WHITE_NOISE;
-        let w = WhiteNoise::new(c.beta).unwrap_or(WhiteNoise::new(0.0).expect("0 is valid"));
-        macro_rules! go {
-            ($k:expr) => {{
-                let k = $k;
-                if white {
-                    let (e, o) = NoSplitting::start(k, w, a, p, 0.0).map_err(engine_error)?;
-                    (e.into(), o)
-                } else {
-                    let (e, o) = NoSplitting::start(k, NoDrive, a, p, 0.0).map_err(engine_error)?;
-                    (e.into(), o)
-                }
-            }};
+        match c.kernel {
+            GDSMC_KERNEL_MAXWELL => {
+                with_drive(c, Maxwell::new(c.gamma, c.c).expect("validated"), p)
+            }
+            GDSMC_KERNEL_HARD_SPHERES => {
+                with_drive(c, HardSpheres::new(c.gamma, c.c).expect("validated"), p)
+            }
+            _ => with_drive(c, Vhs::new(c.gamma, c.c, c.lambda).expect("validated"), p),
         }
-        let r: (AnyEngine, Observables) = match c.kernel {
-            GDSMC_KERNEL_MAXWELL => go!(Maxwell::new(c.gamma, c.c).expect("validated")),
-            GDSMC_KERNEL_HARD_SPHERES => go!(HardSpheres::new(c.gamma, c.c).expect("validated")),
-            _ => go!(Vhs::new(c.gamma, c.c, c.lambda).expect("validated")),
-        };
-        Ok(r)
     }
 
     pub(crate) fn advance(
@@ -170,19 +260,3 @@ impl AnyEngine {
         each!(self, e => e.counts())
     }
 }
-
-macro_rules! from_engine {
-    ($v:ident, $k:ty, $d:ty) => {
-        impl From<NoSplitting<$k, $d, Constant>> for AnyEngine {
-            fn from(e: NoSplitting<$k, $d, Constant>) -> Self {
-                AnyEngine::$v(e)
-            }
-        }
-    };
-}
-from_engine!(MaxwellWhite, Maxwell, WhiteNoise);
-from_engine!(MaxwellNone, Maxwell, NoDrive);
-from_engine!(HardWhite, HardSpheres, WhiteNoise);
-from_engine!(HardNone, HardSpheres, NoDrive);
-from_engine!(VhsWhite, Vhs, WhiteNoise);
-from_engine!(VhsNone, Vhs, NoDrive);

@@ -184,6 +184,36 @@ static void allocation_free(void) {
     free(mem);
 }
 
+static void schemes_and_host_medium(void) {
+    gdsmc_config c = base();
+    gdsmc_sim *sim = NULL;
+    gdsmc_observables o;
+    c.scheme = 7;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 7");
+    c = base(); c.scheme = GDSMC_SCHEME_STRANG; c.dt = 0.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.dt");
+    c.dt = 0.25;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 0.3, &o), GDSMC_INVALID_ARGUMENT, "multiple of config.dt");
+    STATUS(gdsmc_sim_advance(sim, 0.5, &o), GDSMC_OK, "");
+    EXPECT(o.t == 0.5, "strang t = %g", o.t);
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+
+    c = base(); c.drive = GDSMC_DRIVE_HOST_MEDIUM; c.background_kernel = 5;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.background_kernel = 5");
+    c.background_kernel = GDSMC_BACKGROUND_HARD_SPHERES; c.background_density = -1.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.background_density");
+    /* BRS Example 2 (Maxwell kernels): the bulk velocity relaxes towards u^B = (0, 1, 0) as
+     * 1 - exp(-2 pi t); at t = 1 that is 0.998, one ensemble of 2048 grains is within 0.1. */
+    c = base(); c.n = 2048; c.drive = GDSMC_DRIVE_HOST_MEDIUM;
+    c.kernel = GDSMC_KERNEL_MAXWELL; c.gamma = 1.0; c.c = 0.125;
+    c.background_kernel = GDSMC_BACKGROUND_MAXWELL; c.background_drift[1] = 1.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 1.0, &o), GDSMC_OK, "");
+    EXPECT(fabs(o.bulk_velocity[1] - 1.0) < 0.1, "V_y(1) = %g", o.bulk_velocity[1]);
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+}
+
 static void last_error_buffer(void) {
     gdsmc_config_default(NULL);
     size_t need = gdsmc_last_error(NULL, 0);
@@ -202,6 +232,7 @@ int main(void) {
     toml_errors();
     handle_errors();
     allocation_free();
+    schemes_and_host_medium();
     last_error_buffer();
     printf("%d passed, %d failed\n", passed, failed);
     return failed != 0;

@@ -21,6 +21,8 @@ pub trait EventLoop {
         t_end: Real,
         rng: &mut R,
     ) -> Result<Observables, EngineError>;
+    /// Re-synchronizes after the caller changed the velocities (all at the current time).
+    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError>;
     /// Current time.
     fn time(&self) -> Real;
     /// Event counts so far.
@@ -39,6 +41,9 @@ macro_rules! impl_event_loop {
                 rng: &mut R,
             ) -> Result<Observables, EngineError> {
                 $t::advance_to(self, p, t_end, rng)
+            }
+            fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+                $t::resync(self, p)
             }
             fn time(&self) -> Real {
                 $t::time(self)

@@ -116,6 +116,13 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         self.synchronized(p)
     }
 
+    /// Re-synchronizes after the caller changed velocities between calls: every last-kick time
+    /// becomes the current time and `V`, `Umax` are recomputed. Returns the observables.
+    pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        p.reset_kick_times(self.time());
+        self.synchronized(p)
+    }
+
     fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, rng: &mut R) {
         let t1 = self.t0 + (self.steps + 1) as Real * self.dt;
         match self.order {
