@@ -144,6 +144,37 @@ fn observe<E: EventLoop>(
     Ok((out, engine.counts()))
 }
 
+/// Steady-state averages (RW Section 4.2): every observable averaged over the observation
+/// times from `first` on, per ensemble; `acc` holds those averages' statistics over ensembles.
+#[derive(Clone, Debug)]
+pub struct SteadyStats {
+    /// Index of the first observation time averaged.
+    pub first: usize,
+    /// Number of observation times averaged.
+    pub points: usize,
+    /// Statistics over ensembles of the per-ensemble averages (one entry per column).
+    pub acc: Accumulator,
+}
+
+impl SteadyStats {
+    /// Mean over ensembles of the steady-state average of column `col`, and the half-width of
+    /// its 99.9% confidence interval. With one ensemble the interval comes from the spread of
+    /// the observation points, taken as independent (RW Section 4.2 spaces them for that).
+    pub fn mean_ci(&self, stats: &RunStats, col: usize) -> (f64, f64) {
+        if self.acc.count() > 1 {
+            return (self.acc.mean(col), self.acc.ci(col));
+        }
+        let xs: Vec<f64> = (self.first..stats.times.len())
+            .map(|ti| stats.mean(ti, col))
+            .collect();
+        let mut a = Accumulator::new(1);
+        for x in xs {
+            a.push(&[x]);
+        }
+        (a.mean(0), a.ci(0))
+    }
+}
+
 /// Statistics of a finished (or interrupted) run.
 #[derive(Clone, Debug)]
 pub struct RunStats {
@@ -159,6 +190,8 @@ pub struct RunStats {
     pub wall: Duration,
     /// Threads used.
     pub threads: usize,
+    /// Steady-state averages, when the scene asks for them.
+    pub steady: Option<SteadyStats>,
 }
 
 impl RunStats {
@@ -179,7 +212,7 @@ struct EnsembleJob<'a> {
 }
 
 impl EngineJob for EnsembleJob<'_> {
-    type Output = Result<(Accumulator, Counts, u64), Error>;
+    type Output = Result<(Accumulator, Accumulator, Counts, u64), Error>;
 
     fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync>(
         self,
@@ -192,45 +225,63 @@ impl EngineJob for EnsembleJob<'_> {
             .num_threads(self.threads)
             .build()
             .expect("thread pool");
+        let ncol = COLUMNS.len();
+        let first = scene.steady_from.unwrap_or(0);
+        let steady_of = |row: &[f64]| -> Vec<f64> {
+            let pts = scene.times.len() - first;
+            (0..ncol)
+                .map(|c| {
+                    (first..scene.times.len())
+                        .map(|ti| row[ti * ncol + c])
+                        .sum::<f64>()
+                        / pts as f64
+                })
+                .collect()
+        };
         let mut total = Accumulator::new(width);
+        let mut steady = Accumulator::new(ncol);
         let mut counts = Counts::default();
         let mut streams = Streams::new(scene.seed);
         let m = scene.ensembles;
-        let mut first = 0u64;
-        while first < m {
-            let last = (first + BATCH * CHUNK).min(m);
+        let mut start = 0u64;
+        while start < m {
+            let last = (start + BATCH * CHUNK).min(m);
             let rngs: Vec<Xoshiro256PlusPlus> =
-                (&mut streams).take((last - first) as usize).collect();
-            let chunks: Vec<Result<(Accumulator, Counts), Error>> =
+                (&mut streams).take((last - start) as usize).collect();
+            type Chunk = Result<(Accumulator, Accumulator, Counts), Error>;
+            let chunks: Vec<Chunk> =
                 pool.install(|| {
                     rngs.par_chunks(CHUNK as usize)
                         .enumerate()
                         .map(|(ci, rs)| {
                             let mut acc = Accumulator::new(width);
+                            let mut st = Accumulator::new(ncol);
                             let mut cnt = Counts::default();
                             for (k, r) in rs.iter().enumerate() {
-                                let e = first + ci as u64 * CHUNK + k as u64;
+                                let e = start + ci as u64 * CHUNK + k as u64;
                                 let (row, c) = run_ensemble(scene, kernel, drive, r.clone())
                                     .map_err(|err| Error::Engine {
                                         ensemble: e,
                                         message: err.to_string(),
                                     })?;
                                 acc.push(&row);
+                                st.push(&steady_of(&row));
                                 cnt = cnt.add(&c);
                             }
                             (self.progress)(rs.len() as u64);
-                            Ok((acc, cnt))
+                            Ok((acc, st, cnt))
                         })
                         .collect()
                 });
             for ch in chunks {
-                let (a, c) = ch?;
+                let (a, st, c) = ch?;
                 total.merge(&a);
+                steady.merge(&st);
                 counts = counts.add(&c);
             }
-            first = last;
+            start = last;
         }
-        Ok((total, counts, m))
+        Ok((total, steady, counts, m))
     }
 }
 
@@ -247,7 +298,7 @@ pub fn run(
         threads
     };
     let start = Instant::now();
-    let (acc, counts, ensembles) = with_engine(
+    let (acc, st, counts, ensembles) = with_engine(
         scene,
         EnsembleJob {
             scene,
@@ -255,6 +306,11 @@ pub fn run(
             progress,
         },
     )?;
+    let steady = scene.steady_from.map(|first| SteadyStats {
+        first,
+        points: scene.times.len() - first,
+        acc: st,
+    });
     Ok(RunStats {
         times: scene.times.clone(),
         acc,
@@ -262,5 +318,6 @@ pub fn run(
         ensembles,
         wall: start.elapsed(),
         threads,
+        steady,
     })
 }

@@ -83,7 +83,19 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         }));
     }
     let c = stats.counts;
+    let steady = stats.steady.as_ref().map(|st| {
+        let cols: serde_json::Map<String, serde_json::Value> = COLUMNS
+            .iter()
+            .enumerate()
+            .map(|(i, col)| {
+                let (m, ci) = st.mean_ci(stats, i);
+                (col.name.to_string(), serde_json::json!({ "mean": m, "ci": ci }))
+            })
+            .collect();
+        serde_json::json!({ "from": stats.times[st.first], "points": st.points, "observables": cols })
+    });
     serde_json::json!({
+        "steady_state": steady,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
         "scene": scene.name,
         "description": scene.description,

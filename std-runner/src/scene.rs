@@ -272,6 +272,10 @@ pub struct ObserveSpec {
     /// Number of equal intervals between observations (>= 1). Default 32.
     #[serde(default)]
     pub intervals: Option<Spanned<i64>>,
+    /// Steady state: average every observable over the observation times `t >= steady_from`
+    /// (per ensemble, then over ensembles; RW Section 4.2). Optional.
+    #[serde(default)]
+    pub steady_from: Option<Spanned<f64>>,
 }
 
 /// `[run]`.
@@ -382,6 +386,8 @@ pub struct Scene {
     pub scheme: SchemeChoice,
     /// Observation times, increasing.
     pub times: Vec<f64>,
+    /// Index of the first observation time of the steady-state average, if any.
+    pub steady_from: Option<usize>,
     /// Ensembles.
     pub ensembles: u64,
     /// Seed.
@@ -718,6 +724,18 @@ impl SceneFile {
                 }
             }
         };
+        let steady_from = match &self.observe.steady_from {
+            None => None,
+            Some(sf) => {
+                let x = finite(&l, sf, "observe.steady_from")?;
+                match times.iter().position(|&t| t >= x - 1e-12 * (1.0 + x.abs())) {
+                    Some(i) if i + 1 < times.len() => Some(i),
+                    _ => {
+                        return l.invalid(sf.span(), "observe.steady_from", format!("must leave at least two observation times at or after it (t_end = {t1}), got {x}"));
+                    }
+                }
+            }
+        };
         let m = *self.run.ensembles.get_ref();
         if m < 1 {
             return l.invalid(
@@ -749,6 +767,7 @@ impl SceneFile {
             drive,
             scheme,
             times,
+            steady_from,
             ensembles: m as u64,
             seed: seed as u64,
         })

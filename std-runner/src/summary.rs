@@ -63,6 +63,17 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         }
         let _ = writeln!(s);
     }
+    if let Some(st) = &stats.steady {
+        let _ = writeln!(
+            s,
+            "\nsteady state: averages over the {} observation times t >= {} (RW Section 4.2)",
+            st.points, stats.times[st.first]
+        );
+        for name in ["T", "T_bulk", "a2", "a3", "crit"] {
+            let (m, ci) = st.mean_ci(stats, index(name).unwrap());
+            let _ = writeln!(s, "  {name:<8} {m:>13.6} +- {ci:.2e}");
+        }
+    }
     let _ = COLUMNS;
     s
 }

@@ -95,3 +95,33 @@ fn brs_tables_1_and_2() {
         );
     }
 }
+
+/// BRS Examples 4 and 5 (hard spheres): the kinetic equilibrium temperatures 0.953 and 0.732.
+/// The steady-state average over t in [0.5, 4] per ensemble, then over ensembles, must lie
+/// within its 99.9% confidence half-width of the paper's value, widened by the paper's
+/// rounding (5e-4) and by the O(1/n) finite-particle bias (about T/n, as for the Maxwell gas).
+#[test]
+fn brs_examples_4_and_5_equilibrium_temperatures() {
+    for (k, (name, paper)) in [("brs-example4", 0.953), ("brs-example5", 0.732)]
+        .into_iter()
+        .enumerate()
+    {
+        let n = 4096;
+        let s = shipped(name, n, 200, 830 + k as u64);
+        let st = run(&s);
+        let steady = st
+            .steady
+            .as_ref()
+            .expect("the scene asks for a steady-state average");
+        let (t, ci) = steady.mean_ci(&st, gdsmc::columns::index("T_bulk").unwrap());
+        let allowance = ci + 5e-4 + paper / n as f64;
+        assert!(
+            (t - paper).abs() <= allowance,
+            "{name}: T* = {t} +- {ci}, paper {paper}"
+        );
+        assert!(
+            ci < 1e-3,
+            "{name}: interval {ci} too wide to check three digits"
+        );
+    }
+}
