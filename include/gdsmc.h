@@ -38,6 +38,12 @@
 // Elastic collisions with a Maxwellian host medium (BRS), the `background_*` fields.
 #define GDSMC_DRIVE_HOST_MEDIUM 2
 
+// The Gaussian thermostat `F = m zeta v` (MS (12)), field `zeta`.
+#define GDSMC_DRIVE_GAUSSIAN 3
+
+// The constant force along the velocity `F = m g v/|v|` (MS (14)), field `g`.
+#define GDSMC_DRIVE_CONSTANT_FORCE 4
+
 // Host-medium kernel `B_1 = C_1` (BRS (11)).
 #define GDSMC_BACKGROUND_MAXWELL 0
 
@@ -108,6 +114,10 @@ typedef struct {
     double restitution;
     // White-noise strength beta >= 0 (used with GDSMC_DRIVE_WHITE_NOISE only).
     double beta;
+    // Gaussian thermostat rate zeta (GDSMC_DRIVE_GAUSSIAN only), finite.
+    double zeta;
+    // Constant force per unit mass g >= 0 (GDSMC_DRIVE_CONSTANT_FORCE only).
+    double g;
     // Mass of the initial Maxwellian, > 0.
     double mass;
     // Temperature of the initial Maxwellian, >= 0.

@@ -59,7 +59,9 @@ impl Observables {
         Self::from_sums(&accumulate(p.as_slice()))
     }
 
-    /// Observables from moment sums.
+    /// Observables from moment sums. The raw quantities (`t_raw`, `M`, `r`, `v4`, `v6`) come
+    /// from the raw sums, everything about the bulk velocity from the central sums, which keep
+    /// their accuracy when `|V|` is large against the thermal speed (cooling gases, drifts).
     pub fn from_sums(s: &Sums) -> Self {
         let inv = 1.0 / s.n as Real;
         let bulk = Vec3::new(s.s1[0] * inv, s.s1[1] * inv, s.s1[2] * inv);
@@ -69,26 +71,16 @@ impl Observables {
             0.5 * s.s3[1] * inv,
             0.5 * s.s3[2] * inv,
         );
-        let tr = m[0] + m[1] + m[2];
-        let v2 = bulk.norm2();
-        let t_raw = tr / 3.0;
-        let t_bulk = (tr - v2) / 3.0;
-        let bb = [
-            bulk.x * bulk.x,
-            bulk.y * bulk.y,
-            bulk.z * bulk.z,
-            bulk.x * bulk.y,
-            bulk.x * bulk.z,
-            bulk.y * bulk.z,
-        ];
-        let stress: [Real; 6] = core::array::from_fn(|k| m[k] - bb[k]);
-        let diag = 0.5 * tr - v2;
-        let mv = Vec3::new(
-            m[0] * bulk.x + m[3] * bulk.y + m[4] * bulk.z,
-            m[3] * bulk.x + m[1] * bulk.y + m[5] * bulk.z,
-            m[4] * bulk.x + m[5] * bulk.y + m[2] * bulk.z,
+        let t_raw = (m[0] + m[1] + m[2]) / 3.0;
+        // GRW Section 1: P = M - rho V V^T and q = r - (M + (tr M/2 - rho |V|^2) I) V are the
+        // central second moment and half the central third moment.
+        let stress: [Real; 6] = core::array::from_fn(|k| s.c2[k] * inv);
+        let t_bulk = (stress[0] + stress[1] + stress[2]) / 3.0;
+        let heat_flux = Vec3::new(
+            0.5 * s.c3[0] * inv,
+            0.5 * s.c3[1] * inv,
+            0.5 * s.c3[2] * inv,
         );
-        let heat_flux = r - (mv + diag * bulk);
         let c4 = s.c4 * inv;
         let c6 = s.c6 * inv;
         let t = t_bulk;

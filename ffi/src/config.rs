@@ -18,6 +18,10 @@ pub const GDSMC_DRIVE_NONE: u32 = 0;
 pub const GDSMC_DRIVE_WHITE_NOISE: u32 = 1;
 /// Elastic collisions with a Maxwellian host medium (BRS), the `background_*` fields.
 pub const GDSMC_DRIVE_HOST_MEDIUM: u32 = 2;
+/// The Gaussian thermostat `F = m zeta v` (MS (12)), field `zeta`.
+pub const GDSMC_DRIVE_GAUSSIAN: u32 = 3;
+/// The constant force along the velocity `F = m g v/|v|` (MS (14)), field `g`.
+pub const GDSMC_DRIVE_CONSTANT_FORCE: u32 = 4;
 
 /// Host-medium kernel `B_1 = C_1` (BRS (11)).
 pub const GDSMC_BACKGROUND_MAXWELL: u32 = 0;
@@ -60,6 +64,10 @@ pub struct gdsmc_config {
     pub restitution: f64,
     /// White-noise strength beta >= 0 (used with GDSMC_DRIVE_WHITE_NOISE only).
     pub beta: f64,
+    /// Gaussian thermostat rate zeta (GDSMC_DRIVE_GAUSSIAN only), finite.
+    pub zeta: f64,
+    /// Constant force per unit mass g >= 0 (GDSMC_DRIVE_CONSTANT_FORCE only).
+    pub g: f64,
     /// Mass of the initial Maxwellian, > 0.
     pub mass: f64,
     /// Temperature of the initial Maxwellian, >= 0.
@@ -98,6 +106,8 @@ impl gdsmc_config {
             lambda: 0.0,
             restitution: 0.5,
             beta: 1.0,
+            zeta: 0.0,
+            g: 0.0,
             mass: 1.0,
             temperature: 1.0,
             drift: [0.0; 3],
@@ -194,6 +204,14 @@ fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
         DriveChoice::WhiteNoise(b) => {
             cfg.drive = GDSMC_DRIVE_WHITE_NOISE;
             cfg.beta = b;
+        }
+        DriveChoice::Gaussian(z) => {
+            cfg.drive = GDSMC_DRIVE_GAUSSIAN;
+            cfg.zeta = z;
+        }
+        DriveChoice::ConstantForce(g) => {
+            cfg.drive = GDSMC_DRIVE_CONSTANT_FORCE;
+            cfg.g = g;
         }
         DriveChoice::HostMedium {
             hard_spheres,

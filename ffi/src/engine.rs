@@ -5,7 +5,8 @@
 use crate::config::*;
 use crate::status::{Failure, fail, gdsmc_status};
 use gdsmc_core::drive::{
-    HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground, NoDrive, WhiteNoise,
+    ConstantForce, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
+    MaxwellBackground, NoDrive, WhiteNoise,
 };
 use gdsmc_core::engine::{Counts, EngineError, NoSplitting, Splitting, SplittingOrder};
 use gdsmc_core::kernel::{HardSpheres, Maxwell, Vhs};
@@ -18,6 +19,8 @@ use gdsmc_core::vec3::Vec3;
 
 type HmM = HostMedium<MaxwellBackground>;
 type HmH = HostMedium<HardSphereBackground>;
+type Ga = GaussianThermostat;
+type Cf = ConstantForce;
 
 macro_rules! any_engine {
     ($($v:ident => $e:ident<$k:ty, $d:ty>),* $(,)?) => {
@@ -44,6 +47,18 @@ any_engine! {
     SpHhm => Splitting<HardSpheres, HmM>, SpHhh => Splitting<HardSpheres, HmH>,
     SpVw => Splitting<Vhs, WhiteNoise>, SpVn => Splitting<Vhs, NoDrive>,
     SpVhm => Splitting<Vhs, HmM>, SpVhh => Splitting<Vhs, HmH>,
+    NsMga => NoSplitting<Maxwell, Ga>,
+    NsMcf => NoSplitting<Maxwell, Cf>,
+    NsHga => NoSplitting<HardSpheres, Ga>,
+    NsHcf => NoSplitting<HardSpheres, Cf>,
+    NsVga => NoSplitting<Vhs, Ga>,
+    NsVcf => NoSplitting<Vhs, Cf>,
+    SpMga => Splitting<Maxwell, Ga>,
+    SpMcf => Splitting<Maxwell, Cf>,
+    SpHga => Splitting<HardSpheres, Ga>,
+    SpHcf => Splitting<HardSpheres, Cf>,
+    SpVga => Splitting<Vhs, Ga>,
+    SpVcf => Splitting<Vhs, Cf>,
 }
 
 fn invalid<T>(msg: String) -> Result<T, Failure> {
@@ -91,7 +106,7 @@ pub(crate) fn validate(c: &gdsmc_config) -> Result<(), Failure> {
             c.kernel
         ));
     }
-    if c.drive > GDSMC_DRIVE_HOST_MEDIUM {
+    if c.drive > GDSMC_DRIVE_CONSTANT_FORCE {
         return invalid(format!(
             "config.drive = {} is not a GDSMC_DRIVE_* value",
             c.drive
@@ -129,6 +144,12 @@ pub(crate) fn validate(c: &gdsmc_config) -> Result<(), Failure> {
     }
     if c.drive == GDSMC_DRIVE_WHITE_NOISE {
         nonneg(c.beta, "beta")?;
+    }
+    if c.drive == GDSMC_DRIVE_GAUSSIAN && !c.zeta.is_finite() {
+        return invalid(format!("config.zeta must be finite, got {}", c.zeta));
+    }
+    if c.drive == GDSMC_DRIVE_CONSTANT_FORCE {
+        nonneg(c.g, "g")?;
     }
     if c.drive == GDSMC_DRIVE_HOST_MEDIUM {
         if c.background_kernel > GDSMC_BACKGROUND_HARD_SPHERES {
@@ -199,10 +220,20 @@ where
     Splitting<K, NoDrive, Constant>: Into<AnyEngine>,
     Splitting<K, HmM, Constant>: Into<AnyEngine>,
     Splitting<K, HmH, Constant>: Into<AnyEngine>,
+    NoSplitting<K, Ga, Constant>: Into<AnyEngine>,
+    NoSplitting<K, Cf, Constant>: Into<AnyEngine>,
+    Splitting<K, Ga, Constant>: Into<AnyEngine>,
+    Splitting<K, Cf, Constant>: Into<AnyEngine>,
 {
     match c.drive {
         GDSMC_DRIVE_NONE => start_with(c, k, NoDrive, p),
         GDSMC_DRIVE_WHITE_NOISE => start_with(c, k, WhiteNoise::new(c.beta).expect("validated"), p),
+        GDSMC_DRIVE_GAUSSIAN => {
+            start_with(c, k, GaussianThermostat::new(c.zeta).expect("validated"), p)
+        }
+        GDSMC_DRIVE_CONSTANT_FORCE => {
+            start_with(c, k, ConstantForce::new(c.g).expect("validated"), p)
+        }
         _ => {
             let d = c.background_drift;
             let bg = Maxwellian::new(

@@ -12,8 +12,8 @@ use crate::error::Error;
 use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
 use crate::stats::Accumulator;
 use gdsmc_core::drive::{
-    Drive, HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground, NoDrive,
-    WhiteNoise,
+    ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
+    MaxwellBackground, NoDrive, WhiteNoise,
 };
 use gdsmc_core::engine::{Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
@@ -64,6 +64,10 @@ fn with_drive<K: Kernel + Send + Sync, J: EngineJob>(scene: &Scene, k: K, job: J
     match scene.drive {
         DriveChoice::None => job.run(k, NoDrive),
         DriveChoice::WhiteNoise(beta) => job.run(k, WhiteNoise::new(beta).expect("validated")),
+        DriveChoice::Gaussian(zeta) => {
+            job.run(k, GaussianThermostat::new(zeta).expect("validated"))
+        }
+        DriveChoice::ConstantForce(g) => job.run(k, ConstantForce::new(g).expect("validated")),
         DriveChoice::HostMedium {
             hard_spheres,
             c1,

@@ -13,6 +13,8 @@ pub struct MaxwellTemperature {
     pub k: f64,
     /// White-noise strength beta.
     pub beta: f64,
+    /// Gaussian thermostat rate zeta (MS (12)); 0 without one.
+    pub zeta: f64,
 }
 
 impl MaxwellTemperature {
@@ -22,21 +24,35 @@ impl MaxwellTemperature {
             t0,
             k: gamma * std::f64::consts::PI * c0 * (1.0 - alpha * alpha),
             beta,
+            zeta: 0.0,
         }
+    }
+
+    /// With a Gaussian thermostat `F = m zeta v` (MS (12)), which adds `2 zeta T` to `dT/dt`:
+    /// `T(t) = T_0 exp(-(k - 2 zeta) t)` (no white noise).
+    pub fn with_gaussian(mut self, zeta: f64) -> Self {
+        self.zeta = zeta;
+        self
+    }
+
+    /// The net decay rate `k - 2 zeta`.
+    fn rate(&self) -> f64 {
+        self.k - 2.0 * self.zeta
     }
 
     /// `T(t)`; for `alpha = 1` (`k = 0`) the limit `T_0 + 2 beta t` (RW, after (25)).
     pub fn at(&self, t: f64) -> f64 {
-        if self.k == 0.0 {
+        let r = self.rate();
+        if r == 0.0 {
             return self.t0 + 2.0 * self.beta * t;
         }
-        let e = (-self.k * t).exp();
-        self.t0 * e + 2.0 * self.beta / self.k * (1.0 - e)
+        let e = (-r * t).exp();
+        self.t0 * e + 2.0 * self.beta / r * (1.0 - e)
     }
 
     /// `T_inf = 2 beta / k` (GRW (14), RW (25)).
     pub fn stationary(&self) -> f64 {
-        2.0 * self.beta / self.k
+        2.0 * self.beta / self.rate()
     }
 
     /// The exact mean over ensembles of the bulk temperature `T_bulk` of an `n`-particle system
@@ -66,7 +82,7 @@ impl MaxwellTemperature {
     /// `E |P(t)|^2 / (3 n^2) = (T_0 + 2 beta t) / n`: what the raw temperature's mean adds to
     /// the bulk one (zero-mean start; collisions keep `P`, kicks make it a random walk).
     pub fn bulk_to_raw(&self, n: usize, t: f64) -> f64 {
-        (self.t0 + 2.0 * self.beta * t) / n as f64
+        (self.t0 * (2.0 * self.zeta * t).exp() + 2.0 * self.beta * t) / n as f64
     }
 
     /// The exact ensemble mean of `T_bulk` of the splitting schemes (RW Algorithms 1 and 2)
@@ -93,7 +109,7 @@ impl MaxwellTemperature {
             } else {
                 1.0
             };
-        let a = (-self.k * dt).exp();
+        let a = (-self.rate() * dt).exp();
         let am = a.powf(m);
         let geometric = if self.k == 0.0 {
             m

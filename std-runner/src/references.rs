@@ -21,19 +21,14 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
     let KernelChoice::Maxwell { gamma, c } = scene.kernel else {
         return None;
     };
-    let beta = match scene.drive {
-        DriveChoice::None => 0.0,
-        DriveChoice::WhiteNoise(b) => b,
-        DriveChoice::HostMedium { .. } => return None,
-    };
     let t0 = initial_sampler(scene).temperature();
-    Some(MaxwellTemperature::new(
-        t0,
-        scene.restitution,
-        beta,
-        gamma,
-        c,
-    ))
+    let m = |beta| MaxwellTemperature::new(t0, scene.restitution, beta, gamma, c);
+    match scene.drive {
+        DriveChoice::None => Some(m(0.0)),
+        DriveChoice::WhiteNoise(b) => Some(m(b)),
+        DriveChoice::Gaussian(z) => Some(m(0.0).with_gaussian(z)),
+        DriveChoice::ConstantForce(_) | DriveChoice::HostMedium { .. } => None,
+    }
 }
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.

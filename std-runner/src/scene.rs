@@ -182,6 +182,10 @@ pub enum DriveKind {
     WhiteNoise,
     /// Elastic collisions with a Maxwellian host medium (BRS).
     HostMedium,
+    /// The Gaussian thermostat `F = m zeta v` (MS (12)); key `zeta`.
+    Gaussian,
+    /// The constant-magnitude force along `v`, `F = m g v_hat` (MS (14)); key `g`.
+    ConstantForce,
 }
 
 /// `drive.kernel` of a host medium.
@@ -204,6 +208,12 @@ pub struct DriveSpec {
     /// White-noise strength beta >= 0 (required for `"white-noise"`).
     #[serde(default)]
     pub beta: Option<Spanned<f64>>,
+    /// Gaussian thermostat rate zeta (required for `"gaussian"`).
+    #[serde(default)]
+    pub zeta: Option<Spanned<f64>>,
+    /// Constant force per unit mass g >= 0 (required for `"constant-force"`).
+    #[serde(default)]
+    pub g: Option<Spanned<f64>>,
     /// Host medium: background kernel (required for `"host-medium"`).
     #[serde(default)]
     pub kernel: Option<BackgroundKind>,
@@ -341,6 +351,10 @@ pub enum DriveChoice {
     None,
     /// White noise with this beta.
     WhiteNoise(f64),
+    /// The Gaussian thermostat with this zeta.
+    Gaussian(f64),
+    /// The constant force with this g.
+    ConstantForce(f64),
     /// A Maxwellian host medium (unit-mass grains).
     HostMedium {
         /// Hard-sphere (true) or Maxwell (false) background kernel.
@@ -619,14 +633,20 @@ impl SceneFile {
                 "is only used with kind = \"host-medium\"",
             );
         }
-        if d.kind != DriveKind::WhiteNoise
-            && let Some(b) = &d.beta
-        {
-            return l.invalid(
-                b.span(),
-                "drive.beta",
-                "is only used with kind = \"white-noise\"",
-            );
+        for (key, kind, v, name) in [
+            ("beta", DriveKind::WhiteNoise, &d.beta, "white-noise"),
+            ("zeta", DriveKind::Gaussian, &d.zeta, "gaussian"),
+            ("g", DriveKind::ConstantForce, &d.g, "constant-force"),
+        ] {
+            if d.kind != kind
+                && let Some(b) = v
+            {
+                return l.invalid(
+                    b.span(),
+                    &format!("drive.{key}"),
+                    format!("is only used with kind = \"{name}\""),
+                );
+            }
         }
         let drive = match d.kind {
             DriveKind::None => DriveChoice::None,
@@ -637,6 +657,22 @@ impl SceneFile {
                         0..0,
                         "drive.beta",
                         "is required with kind = \"white-noise\"",
+                    );
+                }
+            },
+            DriveKind::Gaussian => match &d.zeta {
+                Some(z) => DriveChoice::Gaussian(finite(&l, z, "drive.zeta")?),
+                None => {
+                    return l.invalid(0..0, "drive.zeta", "is required with kind = \"gaussian\"");
+                }
+            },
+            DriveKind::ConstantForce => match &d.g {
+                Some(g) => DriveChoice::ConstantForce(non_negative(&l, g, "drive.g")?),
+                None => {
+                    return l.invalid(
+                        0..0,
+                        "drive.g",
+                        "is required with kind = \"constant-force\"",
                     );
                 }
             },

@@ -25,7 +25,12 @@ pub struct Sums {
     pub s4: Real,
     /// `sum |v|^6`.
     pub s6: Real,
-    /// `sum |v - V|^4` with `V = s1 / n`.
+    /// `sum c c^T`, `c = v - V`, `V = s1 / n`, upper triangle `[xx, yy, zz, xy, xz, yz]`:
+    /// accumulated about `V` so that the temperature keeps its digits however large `|V|` is.
+    pub c2: [Real; 6],
+    /// `sum c |c|^2`.
+    pub c3: [Real; 3],
+    /// `sum |v - V|^4`.
     pub c4: Real,
     /// `sum |v - V|^6`.
     pub c6: Real,
@@ -65,7 +70,17 @@ fn add_raw(s: &mut Sums, x: Real, y: Real, z: Real) {
 /// Adds one particle's central moments about `bulk`.
 #[inline(always)]
 fn add_central(s: &mut Sums, p: &Particle, bulk: Vec3) {
-    let c2 = (p.velocity() - bulk).norm2();
+    let c = p.velocity() - bulk;
+    let c2 = c.norm2();
+    s.c2[0] += c.x * c.x;
+    s.c2[1] += c.y * c.y;
+    s.c2[2] += c.z * c.z;
+    s.c2[3] += c.x * c.y;
+    s.c2[4] += c.x * c.z;
+    s.c2[5] += c.y * c.z;
+    s.c3[0] += c.x * c2;
+    s.c3[1] += c.y * c2;
+    s.c3[2] += c.z * c2;
     s.c4 += c2 * c2;
     s.c6 += c2 * c2 * c2;
     s.max_c2 = max(s.max_c2, c2);
@@ -145,15 +160,35 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
         RealX4::splat(bulk.z),
     );
     let (mut c4, mut c6, mut m2) = (z, z, z);
+    let (mut cxx, mut cyy, mut czz, mut cxy, mut cxz, mut cyz) = (z, z, z, z, z, z);
+    let (mut d1, mut d2, mut d3) = (z, z, z);
     for b in 0..blocks {
         let [x, y, w, _] = load4(&q[4 * b..]);
         let (x, y, w) = (x - bx, y - by, w - bz);
         let c2 = x * x + y * y + w * w;
+        cxx += x * x;
+        cyy += y * y;
+        czz += w * w;
+        cxy += x * y;
+        cxz += x * w;
+        cyz += y * w;
+        d1 += x * c2;
+        d2 += y * c2;
+        d3 += w * c2;
         let c4v = c2 * c2;
         c4 += c4v;
         c6 += c4v * c2;
         m2 = m2.max(c2);
     }
+    s.c2 = [
+        cxx.reduce_add(),
+        cyy.reduce_add(),
+        czz.reduce_add(),
+        cxy.reduce_add(),
+        cxz.reduce_add(),
+        cyz.reduce_add(),
+    ];
+    s.c3 = [d1.reduce_add(), d2.reduce_add(), d3.reduce_add()];
     s.c4 = c4.reduce_add();
     s.c6 = c6.reduce_add();
     s.max_c2 = m2.to_array().into_iter().fold(0.0, max);

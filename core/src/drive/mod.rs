@@ -6,10 +6,12 @@
 
 pub mod host_medium;
 pub mod none;
+pub mod thermostat;
 pub mod white_noise;
 
 pub use host_medium::{HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground};
 pub use none::NoDrive;
+pub use thermostat::{ConstantForce, GaussianThermostat};
 pub use white_noise::WhiteNoise;
 
 use crate::math::Real;

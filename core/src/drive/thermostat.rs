@@ -1,0 +1,95 @@
+//! The deterministic thermostats of MS: the Gaussian force `F = m zeta v` (MS (12), (13)) and
+//! the constant-magnitude force along the velocity `F = m g v_hat` (MS (14), (15)).
+//!
+//! Both act on each particle alone, and both are solved exactly for any time: the Gaussian
+//! force scales the velocity, `v(t + h) = e^{zeta h} v(t)` (MS (61)); the constant force keeps
+//! the direction and adds `g h` to the speed, `v(t + h) = v(t) + g h v_hat(t)`. So they are
+//! applied lazily, particle by particle, in the no-splitting scheme, like the white noise.
+//!
+//! The constant force does not keep the total momentum in a finite system; MS (62) subtracts
+//! the mean increment, `w_i = g h (v_hat_i - k)`, `k = N^{-1} sum_i v_hat_i`. The batch kick of
+//! all particles ([`Drive::kick_all`], used by the splitting and time-stepped schemes at every
+//! step and by the no-splitting scheme at observations) applies that correction, generalized to
+//! per-particle time spans `h_i` (the mean of `g h_i v_hat_i` is subtracted). A particle at rest
+//! has no direction and is left at rest.
+
+use super::Drive;
+use crate::math::{Real, exp};
+use crate::particles::Particles;
+use crate::rng::Rng;
+use crate::vec3::Vec3;
+
+/// The Gaussian thermostat `F = m zeta v` (MS (12)): `v -> e^{zeta h} v` (MS (61)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GaussianThermostat {
+    zeta: Real,
+}
+
+impl GaussianThermostat {
+    /// `None` unless `zeta` is finite (negative values cool).
+    pub fn new(zeta: Real) -> Option<Self> {
+        zeta.is_finite().then_some(GaussianThermostat { zeta })
+    }
+    /// The rate `zeta`.
+    pub fn zeta(&self) -> Real {
+        self.zeta
+    }
+}
+
+impl Drive for GaussianThermostat {
+    const ACTS: bool = true;
+    #[inline(always)]
+    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, _rng: &mut R) -> Vec3 {
+        exp(self.zeta * dt) * v
+    }
+}
+
+/// The constant-magnitude force along the velocity `F = m g v_hat` (MS (14)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConstantForce {
+    g: Real,
+}
+
+impl ConstantForce {
+    /// `None` unless `g` is finite and `>= 0`.
+    pub fn new(g: Real) -> Option<Self> {
+        (g.is_finite() && g >= 0.0).then_some(ConstantForce { g })
+    }
+    /// The force per unit mass `g`.
+    pub fn g(&self) -> Real {
+        self.g
+    }
+
+    #[inline(always)]
+    fn increment(&self, v: Vec3, dt: Real) -> Vec3 {
+        let s = v.norm();
+        if s > 0.0 {
+            (self.g * dt / s) * v
+        } else {
+            Vec3::ZERO
+        }
+    }
+}
+
+impl Drive for ConstantForce {
+    const ACTS: bool = true;
+    #[inline(always)]
+    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, _rng: &mut R) -> Vec3 {
+        v + self.increment(v, dt)
+    }
+
+    /// All particles to `t` with the momentum-keeping correction of MS (62).
+    fn kick_all<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, t: Real, _rng: &mut R) {
+        let n = p.len();
+        let mut mean = Vec3::ZERO;
+        for q in p.as_slice() {
+            mean += self.increment(q.velocity(), t - q.t_kick);
+        }
+        mean = (1.0 / n as Real) * mean;
+        for q in p.as_mut_slice() {
+            let v = q.velocity();
+            q.set_velocity(v + self.increment(v, t - q.t_kick) - mean);
+            q.t_kick = t;
+        }
+    }
+}
