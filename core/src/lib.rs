@@ -38,6 +38,7 @@
 
 pub mod batch;
 pub mod collision;
+pub mod collisional;
 pub mod drive;
 pub mod engine;
 pub mod kernel;

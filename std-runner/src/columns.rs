@@ -86,3 +86,16 @@ pub const COLUMNS: &[Column] = &[
 pub fn index(name: &str) -> Option<usize> {
     COLUMNS.iter().position(|c| c.name == name)
 }
+
+/// The extra columns a scene can ask for, computed by the runner beside the core observables.
+pub const COLLISIONAL: [&str; 2] = ["mu2", "mu4"];
+
+/// The column names of a scene's observables.csv, in order: [`COLUMNS`], then `mu2`, `mu4`
+/// (MS (67)) when `observe.collisional_pairs` is set.
+pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
+    let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
+    if scene.collisional_pairs > 0 {
+        v.extend(COLLISIONAL);
+    }
+    v
+}

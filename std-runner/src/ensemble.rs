@@ -7,10 +7,11 @@
 //! The engine is composed at compile time: [`with_engine`] turns the scene's kernel and drive
 //! into concrete types and calls a generic job, so each combination gets its own loop.
 
-use crate::columns::COLUMNS;
+use crate::columns::{COLUMNS, names};
 use crate::error::Error;
 use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
 use crate::stats::Accumulator;
+use gdsmc_core::collisional::collisional_moments;
 use gdsmc_core::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
     MaxwellBackground, NoDrive, WhiteNoise,
@@ -136,7 +137,10 @@ fn observe<E: EventLoop>(
     p: &mut Particles<'_>,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Result<(Vec<f64>, Counts), EngineError> {
-    let mut out = Vec::with_capacity(scene.times.len() * COLUMNS.len());
+    let mut out = Vec::with_capacity(scene.times.len() * (COLUMNS.len() + 2));
+    // Diagnostics draw from their own stream, so they never change the trajectory.
+    let mut diag = rng.clone();
+    diag.long_jump();
     for &t in &scene.times {
         let obs = if t == 0.0 {
             obs0
@@ -144,6 +148,17 @@ fn observe<E: EventLoop>(
             engine.advance_to(p, t, rng)?
         };
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
+        if scene.collisional_pairs > 0 {
+            let (mu2, mu4) = collisional_moments(
+                p,
+                obs.bulk,
+                obs.t_bulk,
+                scene.restitution,
+                scene.collisional_pairs,
+                &mut diag,
+            );
+            out.extend([mu2, mu4]);
+        }
     }
     Ok((out, engine.counts()))
 }
@@ -184,7 +199,9 @@ impl SteadyStats {
 pub struct RunStats {
     /// Observation times.
     pub times: Vec<f64>,
-    /// Per (time, column) statistics, row-major `times x COLUMNS`.
+    /// Column names (see [`crate::columns::names`]).
+    pub names: Vec<&'static str>,
+    /// Per (time, column) statistics, row-major `times x names`.
     pub acc: Accumulator,
     /// Event counts summed over ensembles.
     pub counts: Counts,
@@ -201,11 +218,15 @@ pub struct RunStats {
 impl RunStats {
     /// Mean of column `col` at time index `ti`.
     pub fn mean(&self, ti: usize, col: usize) -> f64 {
-        self.acc.mean(ti * COLUMNS.len() + col)
+        self.acc.mean(ti * self.names.len() + col)
     }
     /// Half-width of the 99.9% confidence interval of column `col` at time index `ti`.
     pub fn ci(&self, ti: usize, col: usize) -> f64 {
-        self.acc.ci(ti * COLUMNS.len() + col)
+        self.acc.ci(ti * self.names.len() + col)
+    }
+    /// Index of the column `name`.
+    pub fn col(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| *n == name)
     }
 }
 
@@ -224,12 +245,12 @@ impl EngineJob for EnsembleJob<'_> {
         drive: D,
     ) -> Self::Output {
         let scene = self.scene;
-        let width = scene.times.len() * COLUMNS.len();
+        let ncol = names(scene).len();
+        let width = scene.times.len() * ncol;
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(self.threads)
             .build()
             .expect("thread pool");
-        let ncol = COLUMNS.len();
         let first = scene.steady_from.unwrap_or(0);
         let steady_of = |row: &[f64]| -> Vec<f64> {
             let pts = scene.times.len() - first;
@@ -317,6 +338,7 @@ pub fn run(
     });
     Ok(RunStats {
         times: scene.times.clone(),
+        names: names(scene),
         acc,
         counts,
         ensembles,

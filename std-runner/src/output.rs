@@ -1,7 +1,6 @@
 //! Output files. Every file is written to a temporary name beside its target and renamed into
 //! place, so an interrupted run never leaves a half-written file where a good one was.
 
-use crate::columns::COLUMNS;
 use crate::ensemble::RunStats;
 use crate::error::Error;
 use crate::references::ReferenceCurve;
@@ -32,9 +31,9 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 pub fn observables_csv(stats: &RunStats, refs: &[ReferenceCurve]) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let mut header = vec!["t".to_string()];
-    for c in COLUMNS {
-        header.push(c.name.to_string());
-        header.push(format!("{}_ci", c.name));
+    for c in &stats.names {
+        header.push(c.to_string());
+        header.push(format!("{c}_ci"));
     }
     for r in refs {
         header.push(r.name.to_string());
@@ -42,7 +41,7 @@ pub fn observables_csv(stats: &RunStats, refs: &[ReferenceCurve]) -> Result<Vec<
     w.write_record(&header)?;
     for (ti, &t) in stats.times.iter().enumerate() {
         let mut rec = vec![format!("{t:?}")];
-        for ci in 0..COLUMNS.len() {
+        for ci in 0..stats.names.len() {
             rec.push(format!("{:?}", stats.mean(ti, ci)));
             rec.push(format!("{:?}", stats.ci(ti, ci)));
         }
@@ -59,7 +58,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     let last = stats.times.len() - 1;
     let mut errors = Vec::new();
     for r in refs {
-        let col = crate::columns::index(r.of).expect("reference of a known column");
+        let col = stats.col(r.of).expect("reference of a known column");
         let (mut e_max, mut t_at) = (0.0f64, 0.0);
         for (ti, &t) in stats.times.iter().enumerate() {
             let exact = (r.curve)(t);
@@ -84,12 +83,13 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     }
     let c = stats.counts;
     let steady = stats.steady.as_ref().map(|st| {
-        let cols: serde_json::Map<String, serde_json::Value> = COLUMNS
+        let cols: serde_json::Map<String, serde_json::Value> = stats
+            .names
             .iter()
             .enumerate()
             .map(|(i, col)| {
                 let (m, ci) = st.mean_ci(stats, i);
-                (col.name.to_string(), serde_json::json!({ "mean": m, "ci": ci }))
+                (col.to_string(), serde_json::json!({ "mean": m, "ci": ci }))
             })
             .collect();
         serde_json::json!({ "from": stats.times[st.first], "points": st.points, "observables": cols })

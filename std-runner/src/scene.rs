@@ -282,6 +282,10 @@ pub struct ObserveSpec {
     /// Number of equal intervals between observations (>= 1). Default 32.
     #[serde(default)]
     pub intervals: Option<Spanned<i64>>,
+    /// Collisional moments mu2, mu4 (MS (67)) from this many random pairs per observation
+    /// (0 or absent: not computed).
+    #[serde(default)]
+    pub collisional_pairs: Option<Spanned<i64>>,
     /// Steady state: average every observable over the observation times `t >= steady_from`
     /// (per ensemble, then over ensembles; RW Section 4.2). Optional.
     #[serde(default)]
@@ -402,6 +406,8 @@ pub struct Scene {
     pub times: Vec<f64>,
     /// Index of the first observation time of the steady-state average, if any.
     pub steady_from: Option<usize>,
+    /// Random pairs per observation for mu2, mu4 (0: off).
+    pub collisional_pairs: u64,
     /// Ensembles.
     pub ensembles: u64,
     /// Seed.
@@ -772,6 +778,17 @@ impl SceneFile {
                 }
             }
         };
+        let collisional_pairs = match &self.observe.collisional_pairs {
+            None => 0,
+            Some(k) if *k.get_ref() >= 0 => *k.get_ref() as u64,
+            Some(k) => {
+                return l.invalid(
+                    k.span(),
+                    "observe.collisional_pairs",
+                    format!("must be >= 0, got {}", k.get_ref()),
+                );
+            }
+        };
         let m = *self.run.ensembles.get_ref();
         if m < 1 {
             return l.invalid(
@@ -804,6 +821,7 @@ impl SceneFile {
             scheme,
             times,
             steady_from,
+            collisional_pairs,
             ensembles: m as u64,
             seed: seed as u64,
         })

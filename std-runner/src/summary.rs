@@ -1,6 +1,5 @@
 //! The short text summary `gdsmc run` prints.
 
-use crate::columns::{COLUMNS, index};
 use crate::ensemble::RunStats;
 use crate::references::ReferenceCurve;
 use crate::scene::Scene;
@@ -50,7 +49,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
     for ti in rows {
         let _ = write!(s, "{:>8.4}", stats.times[ti]);
         for name in shown {
-            let col = index(name).unwrap();
+            let col = stats.col(name).unwrap();
             let _ = write!(
                 s,
                 " {:>13.6} +- {:<8.2e}",
@@ -69,11 +68,11 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             "\nsteady state: averages over the {} observation times t >= {} (RW Section 4.2)",
             st.points, stats.times[st.first]
         );
-        for name in ["T", "T_bulk", "a2", "a3", "crit"] {
-            let (m, ci) = st.mean_ci(stats, index(name).unwrap());
+        for name in ["T", "T_bulk", "a2", "a3", "crit", "mu2", "mu4"] {
+            let Some(col) = stats.col(name) else { continue };
+            let (m, ci) = st.mean_ci(stats, col);
             let _ = writeln!(s, "  {name:<8} {m:>13.6} +- {ci:.2e}");
         }
     }
-    let _ = COLUMNS;
     s
 }

@@ -1,6 +1,5 @@
 //! Helpers for the cross-crate validation tests: load a shipped scene, resize it, run it.
 
-use gdsmc::columns::index;
 use gdsmc::ensemble::{self, RunStats};
 use gdsmc::scene::{self, Scene};
 use std::path::PathBuf;
@@ -29,7 +28,7 @@ pub fn run(s: &Scene) -> RunStats {
 
 /// Mean and 99.9% CI half-width of column `name` at time index `ti`.
 pub fn at(stats: &RunStats, ti: usize, name: &str) -> (f64, f64) {
-    let c = index(name).expect("known column");
+    let c = stats.col(name).expect("known column");
     (stats.mean(ti, c), stats.ci(ti, c))
 }
 

@@ -113,7 +113,7 @@ fn brs_examples_4_and_5_equilibrium_temperatures() {
             .steady
             .as_ref()
             .expect("the scene asks for a steady-state average");
-        let (t, ci) = steady.mean_ci(&st, gdsmc::columns::index("T_bulk").unwrap());
+        let (t, ci) = steady.mean_ci(&st, st.col("T_bulk").unwrap());
         let allowance = ci + 5e-4 + paper / n as f64;
         assert!(
             (t - paper).abs() <= allowance,
