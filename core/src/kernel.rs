@@ -51,6 +51,11 @@ pub trait Kernel: Copy {
 
     /// The exponent `lambda` of `|u|^lambda`.
     fn lambda(&self) -> Real;
+
+    /// This kernel as hard spheres, if it is (for the schemes that need the impact form).
+    fn as_hard_spheres(&self) -> Option<HardSpheres> {
+        None
+    }
 }
 
 fn check_strength(gamma: Real, c: Real) -> Result<Real, KernelError> {
@@ -135,6 +140,9 @@ impl Kernel for HardSpheres {
     }
     fn lambda(&self) -> Real {
         1.0
+    }
+    fn as_hard_spheres(&self) -> Option<HardSpheres> {
+        Some(*self)
     }
 }
 

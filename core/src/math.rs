@@ -59,6 +59,12 @@ pub fn erf(x: Real) -> Real {
     libm::erf(x)
 }
 
+/// Largest integer value not greater than `x`.
+#[inline(always)]
+pub fn floor(x: Real) -> Real {
+    libm::floor(x)
+}
+
 /// Larger of two values (NaN-ignoring, as `f64::max`).
 #[inline(always)]
 pub fn max(a: Real, b: Real) -> Real {

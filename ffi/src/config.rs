@@ -238,6 +238,12 @@ fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
         SchemeChoice::NoSplitting => (GDSMC_SCHEME_NO_SPLITTING, cfg.dt),
         SchemeChoice::Euler(dt) => (GDSMC_SCHEME_EULER, dt),
         SchemeChoice::Strang(dt) => (GDSMC_SCHEME_STRANG, dt),
+        SchemeChoice::TimeStepped(_) => {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                "<toml>: `scheme.kind` \"time-stepped\" is not available through the C ABI yet",
+            );
+        }
     };
     Ok(cfg)
 }

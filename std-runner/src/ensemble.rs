@@ -16,7 +16,9 @@ use gdsmc_core::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
     MaxwellBackground, NoDrive, WhiteNoise,
 };
-use gdsmc_core::engine::{Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder};
+use gdsmc_core::engine::{
+    Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder, TimeStepped,
+};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
@@ -116,6 +118,13 @@ pub fn run_ensemble<K: Kernel, D: Drive>(
     match scene.scheme {
         SchemeChoice::NoSplitting => {
             let (e, o) = NoSplitting::start(kernel, drive, alpha, &mut p, 0.0)?;
+            observe(scene, e, o, &mut p, &mut rng)
+        }
+        SchemeChoice::TimeStepped(f) => {
+            let hs = kernel
+                .as_hard_spheres()
+                .expect("validated: the time-stepped scheme needs hard spheres");
+            let (e, o) = TimeStepped::start(hs, drive, alpha, f, &mut p, 0.0)?;
             observe(scene, e, o, &mut p, &mut rng)
         }
         SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => {

@@ -107,6 +107,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             SchemeChoice::NoSplitting => Box::new(move |t| mt.finite_n_bulk_mean(n, t)),
             SchemeChoice::Euler(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, false, t)),
             SchemeChoice::Strang(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, true, t)),
+            SchemeChoice::TimeStepped(_) => return out,
         };
         out.push(ReferenceCurve {
             name: "T_bulk_mean_n",

@@ -245,6 +245,9 @@ pub enum SchemeKind {
     Euler,
     /// Strang splitting with time step `dt` (RW Algorithm 2).
     Strang,
+    /// The time-stepped scheme of MS Section 3 (hard spheres), step `step_factor` mean free
+    /// paths over the thermal speed.
+    TimeStepped,
 }
 
 /// `[scheme]`.
@@ -257,6 +260,9 @@ pub struct SchemeSpec {
     /// Time step (> 0) of the splitting schemes; observation times must be multiples of it.
     #[serde(default)]
     pub dt: Option<Spanned<f64>>,
+    /// Time-stepped scheme: `h = step_factor * lambda / v0(t)` (MS: 0.01). Default 0.01.
+    #[serde(default)]
+    pub step_factor: Option<Spanned<f64>>,
 }
 
 /// The validated scheme.
@@ -268,6 +274,8 @@ pub enum SchemeChoice {
     Euler(f64),
     /// Strang splitting with this time step.
     Strang(f64),
+    /// MS's time-stepped scheme with this step factor.
+    TimeStepped(f64),
 }
 
 /// `[observe]`.
@@ -733,10 +741,34 @@ impl SceneFile {
         let times: Vec<f64> = (0..=k)
             .map(|i| t0 + (t1 - t0) * i as f64 / k as f64)
             .collect();
-        let scheme = match (self.scheme.kind, &self.scheme.dt) {
+        let sch = &self.scheme;
+        if sch.kind != SchemeKind::TimeStepped
+            && let Some(f) = &sch.step_factor
+        {
+            return l.invalid(
+                f.span(),
+                "scheme.step_factor",
+                "is only used with kind = \"time-stepped\"",
+            );
+        }
+        let scheme = match (sch.kind, &sch.dt) {
+            (SchemeKind::NoSplitting | SchemeKind::TimeStepped, Some(d)) => {
+                return l.invalid(
+                    d.span(),
+                    "scheme.dt",
+                    "is only used with kind = \"euler\" or \"strang\"",
+                );
+            }
             (SchemeKind::NoSplitting, None) => SchemeChoice::NoSplitting,
-            (SchemeKind::NoSplitting, Some(d)) => {
-                return l.invalid(d.span(), "scheme.dt", "is only used with kind = \"euler\" or \"strang\" (no splitting has no time step)");
+            (SchemeKind::TimeStepped, None) => {
+                if !matches!(kernel, KernelChoice::HardSpheres { .. }) {
+                    return l.invalid(0..0, "scheme.kind", "\"time-stepped\" (MS Section 3) needs collisions.kernel = \"hard-spheres\"");
+                }
+                let f = match &sch.step_factor {
+                    Some(f) => positive(&l, f, "scheme.step_factor")?,
+                    None => 0.01,
+                };
+                SchemeChoice::TimeStepped(f)
             }
             (_, None) => {
                 return l.invalid(

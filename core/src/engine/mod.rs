@@ -3,9 +3,11 @@
 pub mod event;
 pub mod nosplit;
 pub mod splitting;
+pub mod time_stepped;
 
 pub use nosplit::NoSplitting;
 pub use splitting::{Splitting, SplittingOrder};
+pub use time_stepped::TimeStepped;
 
 use crate::math::Real;
 use crate::moments::Observables;
@@ -56,6 +58,26 @@ macro_rules! impl_event_loop {
 }
 impl_event_loop!(NoSplitting);
 impl_event_loop!(Splitting);
+
+impl<D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop for TimeStepped<D, A> {
+    fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<Observables, EngineError> {
+        TimeStepped::advance_to(self, p, t_end, rng)
+    }
+    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        TimeStepped::resync(self, p)
+    }
+    fn time(&self) -> Real {
+        TimeStepped::time(self)
+    }
+    fn counts(&self) -> Counts {
+        TimeStepped::counts(self)
+    }
+}
 
 /// Event counts of a run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
