@@ -150,6 +150,13 @@ pub(crate) fn validate(c: &gdsmc_config) -> Result<(), Failure> {
     }
     if c.drive == GDSMC_DRIVE_CONSTANT_FORCE {
         nonneg(c.g, "g")?;
+        if c.scheme == GDSMC_SCHEME_NO_SPLITTING {
+            return invalid(
+                "config.drive = GDSMC_DRIVE_CONSTANT_FORCE needs a splitting scheme: its momentum-keeping \
+                 correction (MS (62)) couples all particles at every step"
+                    .into(),
+            );
+        }
     }
     if c.drive == GDSMC_DRIVE_HOST_MEDIUM {
         if c.background_kernel > GDSMC_BACKGROUND_HARD_SPHERES {

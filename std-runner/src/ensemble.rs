@@ -29,8 +29,9 @@ use gdsmc_core::vec3::Vec3;
 use rayon::prelude::*;
 use std::time::{Duration, Instant};
 
-/// Ensembles per chunk: the unit of parallel work and of the fixed merge order.
-pub const CHUNK: u64 = 8;
+/// Ensembles per chunk: the unit of parallel work and of the fixed merge order (one, so that
+/// even a handful of long ensembles spreads over every core).
+pub const CHUNK: u64 = 1;
 /// Chunks handed to the pool at once (bounds memory; independent of the thread count).
 const BATCH: u64 = 256;
 /// Most mixture components an initial distribution may have.

@@ -184,3 +184,47 @@ impl HostMediumMaxwell {
         d / c
     }
 }
+
+/// The Sonine estimates of the fourth cumulant `a2(alpha)` of MS, for `d = 3`.
+pub mod sonine {
+    const D: f64 = 3.0;
+
+    /// MS (5): the homogeneous cooling state and the Gaussian thermostat (van Noije, Ernst).
+    pub fn a2_cooling_5(a: f64) -> f64 {
+        16.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
+            / (9.0 + 24.0 * D - a * (41.0 - 8.0 * D) + 30.0 * (1.0 - a) * a * a)
+    }
+    /// MS (10): the stochastic (white-noise) thermostat.
+    pub fn a2_white_noise_10(a: f64) -> f64 {
+        16.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
+            / (73.0 + 56.0 * D - 3.0 * a * (35.0 + 8.0 * D) + 30.0 * (1.0 - a) * a * a)
+    }
+    /// MS (32): the stochastic thermostat, the other linearization.
+    pub fn a2_white_noise_32(a: f64) -> f64 {
+        4.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
+            / (19.0 + 14.0 * D - 3.0 * a * (9.0 + 2.0 * D) + 6.0 * (1.0 - a) * a * a)
+    }
+    /// MS (40): the Gaussian thermostat, better than (5) for alpha < 0.5.
+    pub fn a2_gaussian_40(a: f64) -> f64 {
+        16.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
+            / (25.0 + 24.0 * D - a * (57.0 - 8.0 * D) - 2.0 * (1.0 - a) * a * a)
+    }
+    /// MS (50): the constant-force thermostat (about 20% too small in magnitude, MS).
+    pub fn a2_constant_force_50(a: f64) -> f64 {
+        -16.0 * (1.0 - a) * (1.0 + 2.0 * a * a)
+            / (63.0 + 40.0 * D - a * (95.0 + 8.0 * D) + 30.0 * (1.0 - a) * a * a)
+    }
+    /// MS (76): the constant-force thermostat, improved.
+    pub fn a2_constant_force_76(a: f64) -> f64 {
+        -240.0 * (1.0 - a) * (1.0 + 2.0 * a * a) / (1957.0 - 1125.0 * a + 390.0 * (1.0 - a) * a * a)
+    }
+    /// `mu_2^(0) = pi^{(d-1)/2} / (sqrt(2) Gamma(d/2)) (1 - alpha^2) = sqrt(2 pi)(1 - alpha^2)`,
+    /// MS (27).
+    pub fn mu2_maxwellian(a: f64) -> f64 {
+        (2.0 * std::f64::consts::PI).sqrt() * (1.0 - a * a)
+    }
+    /// `mu_4^(0) = (d + 3/2 + alpha^2) mu_2^(0)`, MS (29).
+    pub fn mu4_maxwellian(a: f64) -> f64 {
+        (D + 1.5 + a * a) * mu2_maxwellian(a)
+    }
+}

@@ -821,6 +821,9 @@ impl SceneFile {
                 );
             }
         };
+        if matches!(drive, DriveChoice::ConstantForce(_)) && scheme == SchemeChoice::NoSplitting {
+            return l.invalid(0..0, "scheme.kind", "must be \"time-stepped\", \"euler\" or \"strang\" with drive.kind = \"constant-force\": its momentum-keeping correction (MS (62)) couples all particles at every step, which the lazy no-splitting scheme cannot do");
+        }
         let m = *self.run.ensembles.get_ref();
         if m < 1 {
             return l.invalid(

@@ -15,6 +15,7 @@ pub use thermostat::{ConstantForce, GaussianThermostat};
 pub use white_noise::WhiteNoise;
 
 use crate::math::Real;
+use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
@@ -23,6 +24,11 @@ use crate::vec3::Vec3;
 pub trait Drive: Copy {
     /// False for a drive that does nothing (then no kick is ever computed).
     const ACTS: bool;
+
+    /// Called by the event loops whenever every particle is at one time, with the observables
+    /// there (drives that act about the bulk velocity take it from here). Default: nothing.
+    #[inline(always)]
+    fn observe(&mut self, _obs: &Observables) {}
 
     /// The velocity after the drive acted on `v` for a time `dt >= 0`.
     fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3;

@@ -1,10 +1,14 @@
 //! The deterministic thermostats of MS: the Gaussian force `F = m zeta v` (MS (12), (13)) and
 //! the constant-magnitude force along the velocity `F = m g v_hat` (MS (14), (15)).
 //!
-//! Both act on each particle alone, and both are solved exactly for any time: the Gaussian
-//! force scales the velocity, `v(t + h) = e^{zeta h} v(t)` (MS (61)); the constant force keeps
-//! the direction and adds `g h` to the speed, `v(t + h) = v(t) + g h v_hat(t)`. So they are
-//! applied lazily, particle by particle, in the no-splitting scheme, like the white noise.
+//! Both act on each particle alone, and both are solved exactly for any time. They act on the
+//! peculiar velocity `c = v - V` (MS's velocities, of a gas at rest), with `V` the bulk
+//! velocity, which both keep: the Gaussian force scales it, `c(t + h) = e^{zeta h} c(t)`
+//! (MS (61)); the constant force keeps its direction and adds `g h` to its length,
+//! `c(t + h) = c(t) + g h c_hat(t)`. So they are applied lazily, particle by particle, in the
+//! no-splitting scheme, like the white noise. `V` is taken from the observables at every
+//! synchronization ([`Drive::observe`]); in exact arithmetic it never changes, and taking it
+//! afresh keeps rounding from being amplified by `e^{zeta t}`.
 //!
 //! The constant force does not keep the total momentum in a finite system; MS (62) subtracts
 //! the mean increment, `w_i = g h (v_hat_i - k)`, `k = N^{-1} sum_i v_hat_i`. The batch kick of
@@ -15,6 +19,7 @@
 
 use super::Drive;
 use crate::math::{Real, exp};
+use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
@@ -23,12 +28,16 @@ use crate::vec3::Vec3;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GaussianThermostat {
     zeta: Real,
+    center: Vec3,
 }
 
 impl GaussianThermostat {
     /// `None` unless `zeta` is finite (negative values cool).
     pub fn new(zeta: Real) -> Option<Self> {
-        zeta.is_finite().then_some(GaussianThermostat { zeta })
+        zeta.is_finite().then_some(GaussianThermostat {
+            zeta,
+            center: Vec3::ZERO,
+        })
     }
     /// The rate `zeta`.
     pub fn zeta(&self) -> Real {
@@ -38,9 +47,12 @@ impl GaussianThermostat {
 
 impl Drive for GaussianThermostat {
     const ACTS: bool = true;
+    fn observe(&mut self, obs: &Observables) {
+        self.center = obs.bulk;
+    }
     #[inline(always)]
     fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, _rng: &mut R) -> Vec3 {
-        exp(self.zeta * dt) * v
+        self.center + exp(self.zeta * dt) * (v - self.center)
     }
 }
 
@@ -48,12 +60,16 @@ impl Drive for GaussianThermostat {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ConstantForce {
     g: Real,
+    center: Vec3,
 }
 
 impl ConstantForce {
     /// `None` unless `g` is finite and `>= 0`.
     pub fn new(g: Real) -> Option<Self> {
-        (g.is_finite() && g >= 0.0).then_some(ConstantForce { g })
+        (g.is_finite() && g >= 0.0).then_some(ConstantForce {
+            g,
+            center: Vec3::ZERO,
+        })
     }
     /// The force per unit mass `g`.
     pub fn g(&self) -> Real {
@@ -73,6 +89,9 @@ impl ConstantForce {
 
 impl Drive for ConstantForce {
     const ACTS: bool = true;
+    fn observe(&mut self, obs: &Observables) {
+        self.center = obs.bulk;
+    }
     #[inline(always)]
     fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, _rng: &mut R) -> Vec3 {
         v + self.increment(v, dt)

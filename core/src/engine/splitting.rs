@@ -169,6 +169,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
             return Err(EngineError::NonFinite);
         }
         self.counts.observations += 1;
+        self.drive.observe(&obs);
         if K::USES_UMAX {
             self.maj = Majorant {
                 umax: 2.0 * obs.max_peculiar_speed,

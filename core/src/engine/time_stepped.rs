@@ -132,6 +132,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
                 return Err(EngineError::NonFinite);
             }
             self.temperature = o.t_bulk;
+            self.drive.observe(&o);
             obs = Some(o);
         }
         self.counts.observations += 1;
@@ -184,6 +185,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
             return Err(EngineError::NonFinite);
         }
         self.temperature = obs.t_bulk;
+        self.drive.observe(&obs);
         Ok(obs)
     }
 
