@@ -1,15 +1,65 @@
 //! Restitution laws: the coefficient `alpha` used in GRW (3) for a given pair and direction.
 //!
 //! The engine is generic over [`Restitution`]; a constant coefficient compiles to a constant.
+//!
+//! A law may give a value outside [0, 1] (the impact-speed law at high impact speeds); the
+//! event loops then use the nearest value in [0, 1] and count the collision in
+//! [`crate::engine::Counts::clamped`].
 
-use crate::math::Real;
+use crate::math::{Real, powf, sqrt};
 use crate::vec3::Vec3;
 
 /// A law giving the restitution coefficient of a collision with relative velocity `u` and
 /// direction `e` (GRW (3)).
 pub trait Restitution: Copy {
-    /// The coefficient, in (0, 1].
+    /// True when the law can leave [0, 1] (then the loops clamp and count).
+    const CAN_LEAVE_UNIT_INTERVAL: bool;
+    /// The coefficient (before clamping).
     fn coefficient(&self, u: Vec3, e: Vec3) -> Real;
+}
+
+/// The impact-speed law BRS (9)-(10): `1 - e = 2 beta_0 |g . n|^delta`, with the normal impact
+/// speed `|g . n|^2 = (|g|^2 - |g| |g . w_hat|) / 2` (BRS (10)), `g = u` the relative velocity
+/// and `w_hat = e` the direction of GRW (3). `delta = 1/5`: viscoelastic spheres; `delta = 0`:
+/// constant `e = 1 - 2 beta_0`. For impact speeds above `(1/(2 beta_0))^{1/delta}` the law gives
+/// `e < 0`; gdsmc then takes `e = 0` (a perfectly inelastic normal impact) and counts it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ImpactSpeed {
+    beta0: Real,
+    delta: Real,
+}
+
+impl ImpactSpeed {
+    /// `None` unless `beta0 >= 0` and `delta >= 0` are finite.
+    pub fn new(beta0: Real, delta: Real) -> Option<Self> {
+        (beta0.is_finite() && beta0 >= 0.0 && delta.is_finite() && delta >= 0.0)
+            .then_some(ImpactSpeed { beta0, delta })
+    }
+    /// `beta_0`.
+    pub fn beta0(&self) -> Real {
+        self.beta0
+    }
+    /// `delta`.
+    pub fn delta(&self) -> Real {
+        self.delta
+    }
+    /// The normal impact speed `|g . n|` of BRS (10).
+    #[inline]
+    pub fn normal_speed(u: Vec3, e: Vec3) -> Real {
+        let un = u.norm();
+        sqrt(crate::math::max(
+            0.0,
+            0.5 * (un * un - un * crate::math::abs(u.dot(e))),
+        ))
+    }
+}
+
+impl Restitution for ImpactSpeed {
+    const CAN_LEAVE_UNIT_INTERVAL: bool = true;
+    #[inline]
+    fn coefficient(&self, u: Vec3, e: Vec3) -> Real {
+        1.0 - 2.0 * self.beta0 * powf(Self::normal_speed(u, e), self.delta)
+    }
 }
 
 /// A constant restitution coefficient `alpha` in (0, 1] (GRW (3), BRS (9) with `delta = 0`).
@@ -32,6 +82,7 @@ impl Constant {
 }
 
 impl Restitution for Constant {
+    const CAN_LEAVE_UNIT_INTERVAL: bool = false;
     #[inline(always)]
     fn coefficient(&self, _u: Vec3, _e: Vec3) -> Real {
         self.0

@@ -174,6 +174,12 @@ fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
         };
         Failure(status, e.to_string())
     })?;
+    if scene.impact_speed.is_some() {
+        return fail(
+            gdsmc_status::GDSMC_INVALID_ARGUMENT,
+            "<toml>: `collisions.impact_speed_law` is not available through the C ABI yet",
+        );
+    }
     let [(_, mass, temperature, drift)] = scene.initial.components[..] else {
         return fail(
             gdsmc_status::GDSMC_INVALID_ARGUMENT,

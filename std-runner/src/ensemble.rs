@@ -22,7 +22,7 @@ use gdsmc_core::engine::{
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
-use gdsmc_core::restitution::Constant;
+use gdsmc_core::restitution::{Constant, ImpactSpeed, Restitution};
 use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
 use gdsmc_core::sample::{Maxwellian, MaxwellianMixture};
 use gdsmc_core::vec3::Vec3;
@@ -42,11 +42,25 @@ pub trait EngineJob {
     /// What the job returns.
     type Output;
     /// Runs with concrete kernel and drive types.
-    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync>(
+    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync, A: Restitution + Send + Sync>(
         self,
         kernel: K,
         drive: D,
+        law: A,
     ) -> Self::Output;
+}
+
+/// Calls `job` with the scene's restitution law as a concrete type.
+fn with_law<K: Kernel + Send + Sync, D: Drive + Send + Sync, J: EngineJob>(
+    scene: &Scene,
+    k: K,
+    d: D,
+    job: J,
+) -> J::Output {
+    match scene.impact_speed {
+        None => job.run(k, d, Constant::new(scene.restitution).expect("validated")),
+        Some((beta0, delta)) => job.run(k, d, ImpactSpeed::new(beta0, delta).expect("validated")),
+    }
 }
 
 /// Calls `job` with the scene's kernel and drive as concrete types (static dispatch).
@@ -66,12 +80,19 @@ pub fn with_engine<J: EngineJob>(scene: &Scene, job: J) -> J::Output {
 
 fn with_drive<K: Kernel + Send + Sync, J: EngineJob>(scene: &Scene, k: K, job: J) -> J::Output {
     match scene.drive {
-        DriveChoice::None => job.run(k, NoDrive),
-        DriveChoice::WhiteNoise(beta) => job.run(k, WhiteNoise::new(beta).expect("validated")),
-        DriveChoice::Gaussian(zeta) => {
-            job.run(k, GaussianThermostat::new(zeta).expect("validated"))
+        DriveChoice::None => with_law(scene, k, NoDrive, job),
+        DriveChoice::WhiteNoise(beta) => {
+            with_law(scene, k, WhiteNoise::new(beta).expect("validated"), job)
         }
-        DriveChoice::ConstantForce(g) => job.run(k, ConstantForce::new(g).expect("validated")),
+        DriveChoice::Gaussian(zeta) => with_law(
+            scene,
+            k,
+            GaussianThermostat::new(zeta).expect("validated"),
+            job,
+        ),
+        DriveChoice::ConstantForce(g) => {
+            with_law(scene, k, ConstantForce::new(g).expect("validated"), job)
+        }
         DriveChoice::HostMedium {
             hard_spheres,
             c1,
@@ -84,9 +105,9 @@ fn with_drive<K: Kernel + Send + Sync, J: EngineJob>(scene: &Scene, k: K, job: J
                 .expect("validated");
             let params = HostMediumParams::new(bg, density, c1).expect("validated");
             if hard_spheres {
-                job.run(k, HostMedium::new(params, HardSphereBackground))
+                with_law(scene, k, HostMedium::new(params, HardSphereBackground), job)
             } else {
-                job.run(k, HostMedium::new(params, MaxwellBackground))
+                with_law(scene, k, HostMedium::new(params, MaxwellBackground), job)
             }
         }
     }
@@ -104,10 +125,11 @@ pub fn initial_sampler(scene: &Scene) -> MaxwellianMixture<MAX_COMPONENTS> {
 
 /// Runs one ensemble: the observables at every observation time, row-major
 /// (`times x COLUMNS`), and the event counts.
-pub fn run_ensemble<K: Kernel, D: Drive>(
+pub fn run_ensemble<K: Kernel, D: Drive, A: Restitution>(
     scene: &Scene,
     kernel: K,
     drive: D,
+    alpha: A,
     mut rng: Xoshiro256PlusPlus,
 ) -> Result<(Vec<f64>, Counts), EngineError> {
     let n = scene.n;
@@ -115,7 +137,6 @@ pub fn run_ensemble<K: Kernel, D: Drive>(
     let mut p = Particles::new(&mut buf).expect("n >= 2 validated");
     let f0 = initial_sampler(scene);
     p.fill_with(0.0, || f0.sample(&mut rng).expect("validated weights"));
-    let alpha = Constant::new(scene.restitution).expect("validated");
     match scene.scheme {
         SchemeChoice::NoSplitting => {
             let (e, o) = NoSplitting::start(kernel, drive, alpha, &mut p, 0.0)?;
@@ -249,10 +270,11 @@ struct EnsembleJob<'a> {
 impl EngineJob for EnsembleJob<'_> {
     type Output = Result<(Accumulator, Accumulator, Counts, u64), Error>;
 
-    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync>(
+    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync, A: Restitution + Send + Sync>(
         self,
         kernel: K,
         drive: D,
+        law: A,
     ) -> Self::Output {
         let scene = self.scene;
         let ncol = names(scene).len();
@@ -284,30 +306,29 @@ impl EngineJob for EnsembleJob<'_> {
             let rngs: Vec<Xoshiro256PlusPlus> =
                 (&mut streams).take((last - start) as usize).collect();
             type Chunk = Result<(Accumulator, Accumulator, Counts), Error>;
-            let chunks: Vec<Chunk> =
-                pool.install(|| {
-                    rngs.par_chunks(CHUNK as usize)
-                        .enumerate()
-                        .map(|(ci, rs)| {
-                            let mut acc = Accumulator::new(width);
-                            let mut st = Accumulator::new(ncol);
-                            let mut cnt = Counts::default();
-                            for (k, r) in rs.iter().enumerate() {
-                                let e = start + ci as u64 * CHUNK + k as u64;
-                                let (row, c) = run_ensemble(scene, kernel, drive, r.clone())
-                                    .map_err(|err| Error::Engine {
-                                        ensemble: e,
-                                        message: err.to_string(),
-                                    })?;
-                                acc.push(&row);
-                                st.push(&steady_of(&row));
-                                cnt = cnt.add(&c);
-                            }
-                            (self.progress)(rs.len() as u64);
-                            Ok((acc, st, cnt))
-                        })
-                        .collect()
-                });
+            let chunks: Vec<Chunk> = pool.install(|| {
+                rngs.par_chunks(CHUNK as usize)
+                    .enumerate()
+                    .map(|(ci, rs)| {
+                        let mut acc = Accumulator::new(width);
+                        let mut st = Accumulator::new(ncol);
+                        let mut cnt = Counts::default();
+                        for (k, r) in rs.iter().enumerate() {
+                            let e = start + ci as u64 * CHUNK + k as u64;
+                            let (row, c) = run_ensemble(scene, kernel, drive, law, r.clone())
+                                .map_err(|err| Error::Engine {
+                                    ensemble: e,
+                                    message: err.to_string(),
+                                })?;
+                            acc.push(&row);
+                            st.push(&steady_of(&row));
+                            cnt = cnt.add(&c);
+                        }
+                        (self.progress)(rs.len() as u64);
+                        Ok((acc, st, cnt))
+                    })
+                    .collect()
+            });
             for ch in chunks {
                 let (a, st, c) = ch?;
                 total.merge(&a);

@@ -109,6 +109,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "collisions": c.collisions,
             "fictitious": c.fictitious,
             "majorant_overshoots": c.overshoots,
+            "restitution_clamped": c.clamped,
             "observations": c.observations,
             "kicks": c.kicks(scene.n),
         },

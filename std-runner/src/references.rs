@@ -18,6 +18,9 @@ pub struct ReferenceCurve {
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
 pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
+    if scene.impact_speed.is_some() {
+        return None;
+    }
     let KernelChoice::Maxwell { gamma, c } = scene.kernel else {
         return None;
     };
@@ -33,6 +36,9 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
 pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
+    if scene.impact_speed.is_some() {
+        return None;
+    }
     let KernelChoice::Maxwell { gamma, c } = scene.kernel else {
         return None;
     };

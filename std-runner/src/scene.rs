@@ -163,8 +163,22 @@ pub struct CollisionsSpec {
     /// Kernel constant C_lambda (> 0). Default 1/(4 pi).
     #[serde(default = "default_c")]
     pub c: Spanned<f64>,
-    /// Restitution coefficient alpha in (0, 1].
-    pub restitution: Spanned<f64>,
+    /// Restitution coefficient alpha in (0, 1] (a constant law).
+    #[serde(default)]
+    pub restitution: Option<Spanned<f64>>,
+    /// The impact-speed law BRS (9)-(10) instead of a constant: `{ beta0 = ..., delta = ... }`.
+    #[serde(default)]
+    pub impact_speed_law: Option<Spanned<ImpactSpeedSpec>>,
+}
+
+/// `collisions.impact_speed_law`: `1 - e = 2 beta0 |g . n|^delta` (BRS (9)-(10)).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ImpactSpeedSpec {
+    /// `beta_0 >= 0`.
+    pub beta0: f64,
+    /// `delta >= 0` (1/5: viscoelastic spheres).
+    pub delta: f64,
 }
 
 fn default_c() -> Spanned<f64> {
@@ -404,8 +418,11 @@ pub struct Scene {
     pub initial: Initial,
     /// Kernel.
     pub kernel: KernelChoice,
-    /// Restitution coefficient.
+    /// Restitution coefficient of a constant law (for the impact-speed law: `1 - 2 beta0`, the
+    /// value at unit normal impact speed, used by nothing that assumes a constant law).
     pub restitution: f64,
+    /// The impact-speed law `(beta0, delta)` of BRS (9)-(10), when the scene uses it.
+    pub impact_speed: Option<(f64, f64)>,
     /// Drive.
     pub drive: DriveChoice,
     /// Scheme.
@@ -621,14 +638,40 @@ impl SceneFile {
                 }
             }
         };
-        let alpha = finite(&l, &c.restitution, "collisions.restitution")?;
-        if !(alpha > 0.0 && alpha <= 1.0) {
-            return l.invalid(
-                c.restitution.span(),
-                "collisions.restitution",
-                format!("must lie in (0, 1], got {alpha}"),
-            );
-        }
+        let (alpha, impact_speed) = match (&c.restitution, &c.impact_speed_law) {
+            (Some(r), None) => {
+                let alpha = finite(&l, r, "collisions.restitution")?;
+                if !(alpha > 0.0 && alpha <= 1.0) {
+                    return l.invalid(
+                        r.span(),
+                        "collisions.restitution",
+                        format!("must lie in (0, 1], got {alpha}"),
+                    );
+                }
+                (alpha, None)
+            }
+            (None, Some(law)) => {
+                let ImpactSpeedSpec { beta0, delta } = *law.get_ref();
+                if !(beta0.is_finite() && beta0 >= 0.0 && delta.is_finite() && delta >= 0.0) {
+                    return l.invalid(law.span(), "collisions.impact_speed_law", format!("needs finite beta0 >= 0 and delta >= 0, got beta0 = {beta0}, delta = {delta}"));
+                }
+                (1.0 - 2.0 * beta0, Some((beta0, delta)))
+            }
+            (Some(r), Some(_)) => {
+                return l.invalid(
+                    r.span(),
+                    "collisions.restitution",
+                    "and collisions.impact_speed_law exclude each other",
+                );
+            }
+            (None, None) => {
+                return l.invalid(
+                    0..0,
+                    "collisions.restitution",
+                    "is required (a coefficient in (0, 1]), or give collisions.impact_speed_law",
+                );
+            }
+        };
         let d = &self.drive;
         let host_keys = [
             ("kernel", d.kernel.is_some()),
@@ -824,6 +867,9 @@ impl SceneFile {
         if matches!(drive, DriveChoice::ConstantForce(_)) && scheme == SchemeChoice::NoSplitting {
             return l.invalid(0..0, "scheme.kind", "must be \"time-stepped\", \"euler\" or \"strang\" with drive.kind = \"constant-force\": its momentum-keeping correction (MS (62)) couples all particles at every step, which the lazy no-splitting scheme cannot do");
         }
+        if impact_speed.is_some() && collisional_pairs > 0 {
+            return l.invalid(0..0, "observe.collisional_pairs", "assumes a constant restitution coefficient (MS (65)-(66)); not available with collisions.impact_speed_law");
+        }
         let m = *self.run.ensembles.get_ref();
         if m < 1 {
             return l.invalid(
@@ -852,6 +898,7 @@ impl SceneFile {
             initial,
             kernel,
             restitution: alpha,
+            impact_speed,
             drive,
             scheme,
             times,
@@ -884,7 +931,8 @@ pub fn load(path: &Path) -> Result<Scene, Error> {
 /// Applies `--set key.path=value` overrides to scene text and validates the result. The file
 /// is validated first, so its own errors keep their line numbers; an override's error names
 /// the override. Values are TOML (`0.4`, `"hard-spheres"`, `[1.0, 0.0, 0.0]`); a bare word
-/// that is not TOML is taken as a string (`--set collisions.kernel=vhs`).
+/// that is not TOML is taken as a string (`--set collisions.kernel=vhs`); an empty value removes
+/// the key (`--set collisions.restitution=`).
 pub fn parse_with_overrides(path: &Path, text: &str, overrides: &[String]) -> Result<Scene, Error> {
     let scene = parse(path, text)?;
     if overrides.is_empty() {
@@ -905,6 +953,8 @@ pub fn parse_with_overrides(path: &Path, text: &str, overrides: &[String]) -> Re
             return Err(bad(o, "must have the form key.path=value".into()));
         };
         let key = key.trim();
+        // An empty value removes the key (`--set collisions.restitution=`).
+        let remove = raw.trim().is_empty();
         let value: toml::Value = match toml::from_str::<toml::Table>(&format!("v = {raw}")) {
             Ok(mut t) => t.remove("v").expect("parsed"),
             Err(_) => toml::Value::String(raw.trim().to_string()),
@@ -923,7 +973,11 @@ pub fn parse_with_overrides(path: &Path, text: &str, overrides: &[String]) -> Re
                 _ => return Err(bad(key, format!("`{part}` is a value, not a table"))),
             };
         }
-        table.insert(parts[parts.len() - 1].to_string(), value);
+        if remove {
+            table.remove(parts[parts.len() - 1]);
+        } else {
+            table.insert(parts[parts.len() - 1].to_string(), value);
+        }
     }
     let merged = toml::to_string(&doc).expect("a table serializes");
     let keys: Vec<&str> = overrides

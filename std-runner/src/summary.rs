@@ -25,10 +25,11 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
     );
     let _ = writeln!(
         s,
-        "events     {} collisions, {} fictitious, {} majorant overshoots ({:.3e} collisions/s)",
+        "events     {} collisions, {} fictitious, {} majorant overshoots, {} restitution clamped to [0, 1] ({:.3e} collisions/s)",
         c.collisions,
         c.fictitious,
         c.overshoots,
+        c.clamped,
         c.collisions as f64 / stats.wall.as_secs_f64().max(1e-9)
     );
     let shown = ["T", "T_bulk", "a2", "crit"];

@@ -66,7 +66,7 @@ pub fn candidate<K: Kernel, A: Restitution, R: Rng + ?Sized>(
         }
     }
     let e = unit_sphere(rng);
-    let alpha = restitution.coefficient(u, e);
+    let alpha = clamped_coefficient(restitution, u, e, counts);
     let (a, b) = inelastic(vi, vj, e, alpha);
     p.set_velocity(i, a);
     p.set_velocity(j, b);
@@ -76,4 +76,16 @@ pub fn candidate<K: Kernel, A: Restitution, R: Rng + ?Sized>(
         maj.cover(b);
     }
     maj.umax != umax_event
+}
+
+/// The restitution coefficient of a law, clamped to [0, 1] (counted in
+/// [`Counts::clamped`] when it had to be).
+#[inline(always)]
+pub fn clamped_coefficient<A: Restitution>(a: &A, u: Vec3, e: Vec3, counts: &mut Counts) -> Real {
+    let alpha = a.coefficient(u, e);
+    if A::CAN_LEAVE_UNIT_INTERVAL && !(0.0..=1.0).contains(&alpha) {
+        counts.clamped += 1;
+        return if alpha > 1.0 { 1.0 } else { 0.0 };
+    }
+    alpha
 }

@@ -93,6 +93,8 @@ pub struct Counts {
     pub overshoots: u64,
     /// Observations (synchronizing kicks of all particles).
     pub observations: u64,
+    /// Collisions whose restitution law gave a value outside [0, 1], clamped to it.
+    pub clamped: u64,
 }
 
 impl Counts {
@@ -104,6 +106,7 @@ impl Counts {
             fictitious: self.fictitious + o.fictitious,
             overshoots: self.overshoots + o.overshoots,
             observations: self.observations + o.observations,
+            clamped: self.clamped + o.clamped,
         }
     }
 
