@@ -110,6 +110,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "fictitious": c.fictitious,
             "majorant_overshoots": c.overshoots,
             "restitution_clamped": c.clamped,
+            "majorant_refreshes": c.refreshes,
             "observations": c.observations,
             "kicks": c.kicks(scene.n),
         },

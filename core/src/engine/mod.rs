@@ -95,6 +95,8 @@ pub struct Counts {
     pub observations: u64,
     /// Collisions whose restitution law gave a value outside [0, 1], clamped to it.
     pub clamped: u64,
+    /// Majorant refreshes between observations (no-splitting scheme, loose bound).
+    pub refreshes: u64,
 }
 
 impl Counts {
@@ -107,6 +109,7 @@ impl Counts {
             overshoots: self.overshoots + o.overshoots,
             observations: self.observations + o.observations,
             clamped: self.clamped + o.clamped,
+            refreshes: self.refreshes + o.refreshes,
         }
     }
 

@@ -14,7 +14,10 @@
 //! untouched particles keep diffusing between their kicks, a candidate's relative speed can still
 //! exceed the `Umax` that generated its waiting time; then the kernel is truncated there
 //! (RW (19)), the pair is accepted, and [`Counts::overshoots`] counts it. At each observation,
-//! with every particle synchronized, `V` and `Umax` are recomputed exactly.
+//! with every particle synchronized, `V` and `Umax` are recomputed exactly; and so they are
+//! between observations whenever, over the last `2n` candidates, more than half were fictitious
+//! (a cooling gas leaves the bound loose): every particle is kicked to the current time first,
+//! as at an observation, so the process stays the same ([`Counts::refreshes`]).
 //!
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
@@ -39,6 +42,7 @@ pub struct NoSplitting<K, D, A> {
     t: Real,
     maj: Majorant,
     counts: Counts,
+    refresh_after: u64,
 }
 
 impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
@@ -63,6 +67,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             t: t0,
             maj: Majorant::default(),
             counts: Counts::default(),
+            refresh_after: 2 * p.len() as u64,
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
@@ -101,7 +106,27 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         }
         let n = p.len();
         let mut rate = self.kernel.majorant_rate(n, self.maj.umax);
+        // Candidates and fictitious ones since the majorant was last made exact.
+        let (mut window, mut wasted) = (0u64, 0u64);
         loop {
+            if K::USES_UMAX && window >= self.refresh_after && 2 * wasted > window {
+                // The bound may have gone loose (a cooling gas): make it exact again. Kicking
+                // every particle to the current time is what an observation does; the process
+                // stays exact, and the O(n) cost is amortized over the window. A refresh that
+                // gains little doubles the window, so a steady gas soon stops paying for it.
+                let before = self.maj.umax;
+                self.drive.kick_all(p, self.t, rng);
+                self.synchronized(p)?;
+                self.counts.observations -= 1;
+                self.counts.refreshes += 1;
+                rate = self.kernel.majorant_rate(n, self.maj.umax);
+                (window, wasted) = (0, 0);
+                self.refresh_after = if self.maj.umax > 0.8 * before {
+                    self.refresh_after.saturating_mul(2)
+                } else {
+                    2 * n as u64
+                };
+            }
             let t_next = self.t + standard_exponential(rng) / rate;
             // Not `t_next >= t_end` alone: a zero rate with a zero draw gives NaN, which stops too.
             if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
@@ -112,9 +137,12 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             self.drive.kick(p, i, t_next, rng);
             self.drive.kick(p, j, t_next, rng);
             let (k, a) = (&self.kernel, &self.restitution);
+            let before = self.counts.fictitious;
             if candidate(k, a, p, i, j, &mut self.maj, D::ACTS, &mut self.counts, rng) {
                 rate = self.kernel.majorant_rate(n, self.maj.umax);
             }
+            window += 1;
+            wasted += self.counts.fictitious - before;
         }
         self.t = t_end;
         self.drive.kick_all(p, t_end, rng);
