@@ -27,6 +27,7 @@ use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
 use gdsmc_core::sample::{Maxwellian, MaxwellianMixture};
 use gdsmc_core::vec3::Vec3;
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// Ensembles per chunk: the unit of parallel work and of the fixed merge order (one, so that
@@ -265,10 +266,14 @@ struct EnsembleJob<'a> {
     scene: &'a Scene,
     threads: usize,
     progress: &'a (dyn Fn(u64) + Sync),
+    stop: &'a AtomicBool,
 }
 
+/// What the parallel part hands back: statistics, steady statistics, counts, ensembles merged.
+type Merged = (Accumulator, Accumulator, Counts, u64);
+
 impl EngineJob for EnsembleJob<'_> {
-    type Output = Result<(Accumulator, Accumulator, Counts, u64), Error>;
+    type Output = Result<Merged, Error>;
 
     fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync, A: Restitution + Send + Sync>(
         self,
@@ -305,11 +310,15 @@ impl EngineJob for EnsembleJob<'_> {
             let last = (start + BATCH * CHUNK).min(m);
             let rngs: Vec<Xoshiro256PlusPlus> =
                 (&mut streams).take((last - start) as usize).collect();
-            type Chunk = Result<(Accumulator, Accumulator, Counts), Error>;
+            // `None`: the chunk was skipped because the run was interrupted.
+            type Chunk = Result<Option<(Accumulator, Accumulator, Counts)>, Error>;
             let chunks: Vec<Chunk> = pool.install(|| {
                 rngs.par_chunks(CHUNK as usize)
                     .enumerate()
                     .map(|(ci, rs)| {
+                        if self.stop.load(Ordering::Relaxed) {
+                            return Ok(None);
+                        }
                         let mut acc = Accumulator::new(width);
                         let mut st = Accumulator::new(ncol);
                         let mut cnt = Counts::default();
@@ -325,15 +334,21 @@ impl EngineJob for EnsembleJob<'_> {
                             cnt = cnt.add(&c);
                         }
                         (self.progress)(rs.len() as u64);
-                        Ok((acc, st, cnt))
+                        Ok(Some((acc, st, cnt)))
                     })
                     .collect()
             });
-            for ch in chunks {
-                let (a, st, c) = ch?;
-                total.merge(&a);
-                steady.merge(&st);
-                counts = counts.add(&c);
+            // Merge in ensemble order, and only an unbroken prefix: an interrupted run keeps
+            // exactly what a full run with fewer ensembles would have.
+            for (ci, ch) in chunks.into_iter().enumerate() {
+                match ch? {
+                    Some((a, st, c)) => {
+                        total.merge(&a);
+                        steady.merge(&st);
+                        counts = counts.add(&c);
+                    }
+                    None => return Ok((total, steady, counts, start + ci as u64 * CHUNK)),
+                }
             }
             start = last;
         }
@@ -348,6 +363,18 @@ pub fn run(
     threads: usize,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<RunStats, Error> {
+    run_interruptible(scene, threads, progress, &AtomicBool::new(false))
+}
+
+/// As [`run`], stopping early when `stop` becomes true (Ctrl-C): ensembles already running
+/// finish, and the statistics cover the first `RunStats::ensembles` ensembles, exactly those a
+/// run with that many ensembles would give.
+pub fn run_interruptible(
+    scene: &Scene,
+    threads: usize,
+    progress: &(dyn Fn(u64) + Sync),
+    stop: &AtomicBool,
+) -> Result<RunStats, Error> {
     let threads = if threads == 0 {
         rayon::current_num_threads()
     } else {
@@ -360,6 +387,7 @@ pub fn run(
             scene,
             threads,
             progress,
+            stop,
         },
     )?;
     let steady = scene.steady_from.map(|first| SteadyStats {

@@ -41,6 +41,9 @@ pub enum Error {
         /// The engine's message.
         message: String,
     },
+    /// The run was interrupted (Ctrl-C); what was finished has been written.
+    #[error("interrupted")]
+    Interrupted,
     /// An output file could not be written.
     #[error("{path}: cannot write: {source}")]
     Write {

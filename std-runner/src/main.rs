@@ -48,6 +48,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
+        Err(gdsmc::Error::Interrupted) => ExitCode::from(130),
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE
@@ -91,12 +92,49 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
             if let Some(s) = seed {
                 sc.seed = s;
             }
-            let stats = ensemble::run(&sc, threads, &|_| {})?;
+            let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+            {
+                let stop = stop.clone();
+                // A second Ctrl-C ends the process at once.
+                let _ = ctrlc::set_handler(move || {
+                    if stop.swap(true, std::sync::atomic::Ordering::SeqCst) {
+                        std::process::exit(130);
+                    }
+                    eprintln!(
+                        "\ninterrupted: finishing the running ensembles and keeping what is done (Ctrl-C again to quit)"
+                    );
+                });
+            }
+            let bar = indicatif::ProgressBar::with_draw_target(
+                Some(sc.ensembles),
+                indicatif::ProgressDrawTarget::stderr(),
+            );
+            bar.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} ensembles, {per_sec}, ETA {eta}",
+                )
+                .expect("template"),
+            );
+            if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+                bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+            }
+            let stats = ensemble::run_interruptible(&sc, threads, &|k| bar.inc(k), &stop)?;
+            bar.finish_and_clear();
+            let interrupted = stats.ensembles < sc.ensembles;
+            if interrupted {
+                eprintln!("kept {} of {} ensembles", stats.ensembles, sc.ensembles);
+                if stats.ensembles == 0 {
+                    return Err(gdsmc::Error::Interrupted);
+                }
+            }
             let refs = references::for_scene(&sc);
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
             output::write_all(&dir, &sc, &stats, &refs)?;
             print!("{}", summary::text(&sc, &stats, &refs));
             println!("\nwrote {}", dir.join("observables.csv").display());
+            if interrupted {
+                return Err(gdsmc::Error::Interrupted);
+            }
             Ok(())
         }
     }

@@ -101,6 +101,8 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         "description": scene.description,
         "n": scene.n,
         "ensembles": stats.ensembles,
+        "ensembles_requested": scene.ensembles,
+        "interrupted": stats.ensembles < scene.ensembles,
         "seed": scene.seed,
         "threads": stats.threads,
         "wall_seconds": stats.wall.as_secs_f64(),

@@ -44,3 +44,36 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
         output::observables_csv(&sc, &[]).unwrap()
     );
 }
+
+#[test]
+fn an_interrupted_run_keeps_a_prefix_equal_to_a_shorter_run() {
+    use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+    let s = shipped("grw-example3", 64, 400, 9);
+    let stop = AtomicBool::new(false);
+    let done = AtomicU64::new(0);
+    let st = gdsmc::ensemble::run_interruptible(
+        &s,
+        2,
+        &|k| {
+            if done.fetch_add(k, Ordering::SeqCst) + k >= 37 {
+                stop.store(true, Ordering::SeqCst);
+            }
+        },
+        &stop,
+    )
+    .unwrap();
+    // Ensembles finish out of order; the kept prefix may be shorter than the count done.
+    assert!(
+        st.ensembles >= 1 && st.ensembles < 400,
+        "kept {}",
+        st.ensembles
+    );
+    let mut shorter = s.clone();
+    shorter.ensembles = st.ensembles;
+    let full = gdsmc::ensemble::run(&shorter, 1, &|_| {}).unwrap();
+    let refs = references::for_scene(&s);
+    assert_eq!(
+        output::observables_csv(&st, &refs).unwrap(),
+        output::observables_csv(&full, &refs).unwrap()
+    );
+}
