@@ -120,7 +120,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     })
 }
 
-/// Writes observables.csv and summary.json into `dir` (created if missing).
+/// Writes observables.csv, summary.json and the SVG charts into `dir` (created if missing).
 pub fn write_all(
     dir: &Path,
     scene: &Scene,
@@ -138,5 +138,6 @@ pub fn write_all(
     })?;
     write_atomic(&csv_path, &bytes)?;
     let json = serde_json::to_vec_pretty(&summary_json(scene, stats, refs)).expect("json");
-    write_atomic(&dir.join("summary.json"), &json)
+    write_atomic(&dir.join("summary.json"), &json)?;
+    crate::charts::write_charts(dir, &scene.name, stats, refs)
 }
