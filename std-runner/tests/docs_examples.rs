@@ -1,0 +1,67 @@
+//! Every TOML example in docs/scenes.md is a valid part of a scene: merged into a minimal scene,
+//! it parses and validates. Every shipped scene validates too.
+
+use gdsmc::scene::parse;
+use std::path::{Path, PathBuf};
+
+const BASE: &str = r#"
+[collisions]
+kernel = "maxwell"
+restitution = 0.5
+[observe]
+t_end = 1.0
+intervals = 4
+"#;
+
+fn merge(base: &mut toml::Table, part: toml::Table) {
+    for (k, v) in part {
+        match (base.get_mut(&k), v) {
+            (Some(toml::Value::Table(b)), toml::Value::Table(p)) => merge(b, p),
+            (_, v) => {
+                base.insert(k, v);
+            }
+        }
+    }
+}
+
+#[test]
+fn docs_examples_are_valid_scenes() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let doc = std::fs::read_to_string(root.join("docs/scenes.md")).unwrap();
+    let mut blocks = 0;
+    for block in doc.split("```toml\n").skip(1) {
+        let text = block.split("```").next().unwrap();
+        let part: toml::Table = toml::from_str(text).unwrap_or_else(|e| panic!("{text}\n{e}"));
+        let mut scene: toml::Table = toml::from_str(BASE).unwrap();
+        // An example with its own restitution law replaces the base's constant.
+        if part
+            .get("collisions")
+            .and_then(|c| c.get("impact_speed_law"))
+            .is_some()
+        {
+            scene["collisions"]
+                .as_table_mut()
+                .unwrap()
+                .remove("restitution");
+        }
+        merge(&mut scene, part);
+        let merged = toml::to_string(&scene).unwrap();
+        parse(Path::new("docs/scenes.md"), &merged).unwrap_or_else(|e| panic!("{merged}\n{e}"));
+        blocks += 1;
+    }
+    assert!(blocks >= 10, "found {blocks} examples");
+}
+
+#[test]
+fn shipped_scenes_are_valid() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let mut k = 0;
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "toml") {
+            gdsmc::scene::load(&p).unwrap_or_else(|e| panic!("{e}"));
+            k += 1;
+        }
+    }
+    assert!(k >= 19, "{k} scenes");
+}
