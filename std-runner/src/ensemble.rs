@@ -210,7 +210,7 @@ pub struct SteadyStats {
 impl SteadyStats {
     /// Mean over ensembles of the steady-state average of column `col`, and the half-width of
     /// its 99.9% confidence interval. With one ensemble the interval comes from the spread of
-    /// the observation points, taken as independent (RW Section 4.2 spaces them for that).
+    /// the observation points (RW Section 4.2), widened for their lag-1 autocorrelation.
     pub fn mean_ci(&self, stats: &RunStats, col: usize) -> (f64, f64) {
         if self.acc.count() > 1 {
             return (self.acc.mean(col), self.acc.ci(col));
@@ -219,10 +219,22 @@ impl SteadyStats {
             .map(|ti| stats.mean(ti, col))
             .collect();
         let mut a = Accumulator::new(1);
-        for x in xs {
+        for &x in &xs {
             a.push(&[x]);
         }
-        (a.mean(0), a.ci(0))
+        // Successive observations of one system are correlated; with the lag-1
+        // autocorrelation r (an AR(1) model), the variance of their mean is larger by
+        // (1 + r)/(1 - r). Points spaced as RW Section 4.2 spaces them have r near 0.2.
+        let m = a.mean(0);
+        let var = a.variance(0);
+        let r = if xs.len() > 2 && var > 0.0 {
+            let cov: f64 =
+                xs.windows(2).map(|w| (w[0] - m) * (w[1] - m)).sum::<f64>() / (xs.len() - 1) as f64;
+            (cov / var).clamp(0.0, 0.99)
+        } else {
+            0.0
+        };
+        (m, a.ci(0) * ((1.0 + r) / (1.0 - r)).sqrt())
     }
 }
 

@@ -1,0 +1,62 @@
+//! RW Section 4.2: steady-state temperatures averaged over M = 65 observation points s_m =
+//! 8 + 2m (one ensemble, n = 65536, as RW), with the
+//! 99.9% half-width from their spread, widened for their lag-1 autocorrelation. RW Tables 3-5 (alpha = 1/2, beta = 1, T_inf = 8/3) and
+//! Table 6 / RW (30) (beta = 37.5, T_inf = 100).
+//!
+//! Checks: no splitting lands on the exact T_inf (RW (25)) times (1 - 1/n) within the interval;
+//! the splitting schemes land on their exact stationary values (`splitting_bulk_mean` at large
+//! t: Euler 2 beta dt/(1 - e^{-k dt}), Strang (2 beta/k)(k dt/2)/sinh(k dt/2), times (1 - 1/n))
+//! and on RW's published T_inf within RW's Conf plus ours.
+
+use gdsmc::references::maxwell_temperature;
+use gdsmc::scene::SchemeChoice;
+use gdsmc_validation::*;
+
+fn steady_t(name: &str, scheme: SchemeChoice, seed: u64) -> (f64, f64, f64) {
+    let mut s = shipped(name, 65_536, 1, seed);
+    s.scheme = scheme;
+    let mt = maxwell_temperature(&s).unwrap();
+    let st = run(&s);
+    let (m, c) = st
+        .steady
+        .as_ref()
+        .unwrap()
+        .mean_ci(&st, st.col("T_bulk").unwrap());
+    let exact = match scheme {
+        SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(s.n, dt, false, 136.0),
+        SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(s.n, dt, true, 136.0),
+        _ => mt.finite_n_bulk_mean(s.n, 136.0),
+    };
+    (m, c, exact)
+}
+
+#[test]
+fn rw_tables_3_to_5() {
+    // (scheme, RW's T_inf, RW's Conf)
+    let rows = [
+        (SchemeChoice::NoSplitting, 2.6684, 0.0040),
+        (SchemeChoice::Euler(0.25), 2.9226, 0.0046),
+        (SchemeChoice::Strang(1.0), 2.6055, 0.0040),
+        (SchemeChoice::Strang(0.25), 2.6620, 0.0038),
+    ];
+    for (k, (scheme, paper, conf)) in rows.into_iter().enumerate() {
+        let (m, c, exact) = steady_t("rw-steady", scheme, 1200 + k as u64);
+        assert!(
+            (m - exact).abs() <= c,
+            "{scheme:?}: T_inf {m} +- {c}, exact {exact}"
+        );
+        assert!(
+            (m - paper).abs() <= c + conf,
+            "{scheme:?}: T_inf {m} +- {c}, RW {paper} +- {conf}"
+        );
+    }
+}
+
+#[test]
+fn rw_30_gives_t_inf_100() {
+    let (m, c, exact) = steady_t("rw-steady-30", SchemeChoice::NoSplitting, 1210);
+    assert!((exact - 100.0 * (1.0 - 1.0 / 65_536.0)).abs() < 1e-9);
+    assert!((m - exact).abs() <= c, "T_inf {m} +- {c}, exact {exact}");
+    // RW Table 6, no splitting: 99.981 +- 0.1877.
+    assert!((m - 99.981).abs() <= c + 0.1877);
+}
