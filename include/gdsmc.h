@@ -149,6 +149,8 @@ typedef struct {
     double temperature;
     // Temperature about the bulk velocity (GRW (11), BRS (8)).
     double temperature_bulk;
+    // log10 of temperature_bulk: finite where a cooling gas's temperature underflows.
+    double log10_temperature_bulk;
     // Bulk velocity (GRW (10)).
     double bulk_velocity[3];
     // Pressure `rho T_bulk`.

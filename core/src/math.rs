@@ -23,6 +23,12 @@ pub fn ln(x: Real) -> Real {
     libm::log(x)
 }
 
+/// Base-10 logarithm.
+#[inline(always)]
+pub fn log10(x: Real) -> Real {
+    libm::log10(x)
+}
+
 /// Exponential.
 #[inline(always)]
 pub fn exp(x: Real) -> Real {

@@ -9,7 +9,7 @@
 //!   BRS (8) and MS use it.
 
 use crate::batch::sums::{Sums, accumulate};
-use crate::math::{Real, sqrt};
+use crate::math::{Real, log10, sqrt};
 use crate::particles::Particles;
 use crate::vec3::Vec3;
 
@@ -51,6 +51,9 @@ pub struct Observables {
     pub crit: Real,
     /// `max |v - V|`: half the majorant `Umax` of GRW step 1.4.
     pub max_peculiar_speed: Real,
+    /// `log10 t_bulk`, kept finite when the engine has rescaled a cooling gas far below the
+    /// smallest double (see [`Observables::in_units`]).
+    pub log10_t_bulk: Real,
 }
 
 impl Observables {
@@ -112,6 +115,72 @@ impl Observables {
             a3,
             crit,
             max_peculiar_speed: sqrt(s.max_c2),
+            log10_t_bulk: log10(t_bulk),
+        }
+    }
+
+    /// The observables of velocities `offset + s v` given those of `v` (a cooling gas stored
+    /// rescaled, see [`crate::engine::NoSplitting`]): central moments scale with powers of `s`,
+    /// the raw ones are rebuilt from them and the bulk velocity (GRW Section 1 inverted;
+    /// `<|v|^4> = |V|^4 + 4 V.P.V + <|c|^4> + 6 |V|^2 T + 8 V.q`). `<|v|^6>` needs moments not
+    /// kept and is NaN when both `s != 1` and `offset != 0`. `log10_t_bulk` stays finite where
+    /// `t_bulk` underflows.
+    pub fn in_units(&self, s: Real, offset: Vec3) -> Observables {
+        if s == 1.0 && offset == Vec3::ZERO {
+            return *self;
+        }
+        let s2 = s * s;
+        let bulk = offset + s * self.bulk;
+        let stress: [Real; 6] = core::array::from_fn(|k| s2 * self.stress[k]);
+        let t_bulk = s2 * self.t_bulk;
+        let heat_flux = (s2 * s) * self.heat_flux;
+        let c4 = s2 * s2 * self.c4;
+        let c6 = s2 * s2 * s2 * self.c6;
+        let bb = [
+            bulk.x * bulk.x,
+            bulk.y * bulk.y,
+            bulk.z * bulk.z,
+            bulk.x * bulk.y,
+            bulk.x * bulk.z,
+            bulk.y * bulk.z,
+        ];
+        let m: [Real; 6] = core::array::from_fn(|k| stress[k] + bb[k]);
+        let v2 = bulk.norm2();
+        let mv = Vec3::new(
+            m[0] * bulk.x + m[3] * bulk.y + m[4] * bulk.z,
+            m[3] * bulk.x + m[1] * bulk.y + m[5] * bulk.z,
+            m[4] * bulk.x + m[5] * bulk.y + m[2] * bulk.z,
+        );
+        let energy_flow = heat_flux + mv + (0.5 * (m[0] + m[1] + m[2]) - v2) * bulk;
+        let pv = Vec3::new(
+            stress[0] * bulk.x + stress[3] * bulk.y + stress[4] * bulk.z,
+            stress[3] * bulk.x + stress[1] * bulk.y + stress[5] * bulk.z,
+            stress[4] * bulk.x + stress[5] * bulk.y + stress[2] * bulk.z,
+        );
+        let v4 = v2 * v2 + 4.0 * bulk.dot(pv) + c4 + 6.0 * v2 * t_bulk + 8.0 * bulk.dot(heat_flux);
+        let v6 = if offset == Vec3::ZERO {
+            s2 * s2 * s2 * self.v6
+        } else {
+            Real::NAN
+        };
+        Observables {
+            bulk,
+            t_raw: t_bulk + v2 / 3.0,
+            t_bulk,
+            pressure: t_bulk,
+            stress,
+            heat_flux,
+            momentum_flow: m,
+            energy_flow,
+            v4,
+            v6,
+            c4,
+            c6,
+            a2: self.a2,
+            a3: self.a3,
+            crit: self.crit,
+            max_peculiar_speed: s * self.max_peculiar_speed,
+            log10_t_bulk: self.log10_t_bulk + 2.0 * log10(s),
         }
     }
 

@@ -297,4 +297,8 @@ impl AnyEngine {
     pub(crate) fn counts(&self) -> Counts {
         each!(self, e => e.counts())
     }
+
+    pub(crate) fn velocity_map(&self) -> (f64, Vec3) {
+        each!(self, e => gdsmc_core::engine::EventLoop::velocity_map(e))
+    }
 }

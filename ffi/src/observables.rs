@@ -13,6 +13,8 @@ pub struct gdsmc_observables {
     pub temperature: f64,
     /// Temperature about the bulk velocity (GRW (11), BRS (8)).
     pub temperature_bulk: f64,
+    /// log10 of temperature_bulk: finite where a cooling gas's temperature underflows.
+    pub log10_temperature_bulk: f64,
     /// Bulk velocity (GRW (10)).
     pub bulk_velocity: [f64; 3],
     /// Pressure `rho T_bulk`.
@@ -45,6 +47,7 @@ impl gdsmc_observables {
             t,
             temperature: o.t_raw,
             temperature_bulk: o.t_bulk,
+            log10_temperature_bulk: o.log10_t_bulk,
             bulk_velocity: o.bulk.to_array(),
             pressure: o.pressure,
             stress: o.stress,

@@ -332,8 +332,10 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
         // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
         let dst = unsafe { std::slice::from_raw_parts_mut(out, 3 * s.n) };
         let p = particles_of(s.particles, s.n);
+        let (scale, offset) = s.engine.velocity_map();
         for (d, q) in dst.chunks_exact_mut(3).zip(p.as_slice()) {
-            d.copy_from_slice(&[q.vx, q.vy, q.vz]);
+            let v = offset + scale * q.velocity();
+            d.copy_from_slice(&[v.x, v.y, v.z]);
         }
         Ok(())
     })

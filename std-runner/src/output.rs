@@ -113,6 +113,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "majorant_overshoots": c.overshoots,
             "restitution_clamped": c.clamped,
             "majorant_refreshes": c.refreshes,
+            "rescales": c.rescales,
             "observations": c.observations,
             "kicks": c.kicks(scene.n),
         },

@@ -29,6 +29,10 @@ pub trait EventLoop {
     fn time(&self) -> Real;
     /// Event counts so far.
     fn counts(&self) -> Counts;
+    /// The map `v_phys = offset + scale v` from stored to physical velocities, `(scale, offset)`.
+    fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
+        (1.0, crate::vec3::Vec3::ZERO)
+    }
 }
 
 macro_rules! impl_event_loop {
@@ -56,8 +60,32 @@ macro_rules! impl_event_loop {
         }
     };
 }
-impl_event_loop!(NoSplitting);
 impl_event_loop!(Splitting);
+
+impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop
+    for NoSplitting<K, D, A>
+{
+    fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<Observables, EngineError> {
+        NoSplitting::advance_to(self, p, t_end, rng)
+    }
+    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        NoSplitting::resync(self, p)
+    }
+    fn time(&self) -> Real {
+        NoSplitting::time(self)
+    }
+    fn counts(&self) -> Counts {
+        NoSplitting::counts(self)
+    }
+    fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
+        NoSplitting::velocity_map(self)
+    }
+}
 
 impl<D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop for TimeStepped<D, A> {
     fn advance_to<R: Rng + ?Sized>(
@@ -97,6 +125,8 @@ pub struct Counts {
     pub clamped: u64,
     /// Majorant refreshes between observations (no-splitting scheme, loose bound).
     pub refreshes: u64,
+    /// Rescalings of a cooling gas's stored velocities (no-splitting scheme, no drive).
+    pub rescales: u64,
 }
 
 impl Counts {
@@ -110,6 +140,7 @@ impl Counts {
             observations: self.observations + o.observations,
             clamped: self.clamped + o.clamped,
             refreshes: self.refreshes + o.refreshes,
+            rescales: self.rescales + o.rescales,
         }
     }
 

@@ -15,9 +15,21 @@
 //! exceed the `Umax` that generated its waiting time; then the kernel is truncated there
 //! (RW (19)), the pair is accepted, and [`Counts::overshoots`] counts it. At each observation,
 //! with every particle synchronized, `V` and `Umax` are recomputed exactly; and so they are
-//! between observations whenever, over the last `2n` candidates, more than half were fictitious
-//! (a cooling gas leaves the bound loose): every particle is kicked to the current time first,
-//! as at an observation, so the process stays the same ([`Counts::refreshes`]).
+//! between observations: with a drive, whenever more than half of the last `2n` (then `4n`, ...)
+//! candidates were fictitious, after kicking every particle to the current time as an
+//! observation does, so the process stays the same ([`Counts::refreshes`]); with no drive (every
+//! particle always current) every `2n` candidates.
+//!
+//! A gas with no drive cools for ever (the homogeneous cooling state). Its peculiar velocities,
+//! stored beside a bulk velocity `V`, would lose digits (and stop at a rounding floor near
+//! `T ~ (1e-16 |V|)^2`), and its temperature would underflow. So that it can be followed for as
+//! long as asked, when at a synchronization (every `2n` candidates) its temperature has fallen
+//! below `1e-8 max(1, |V|^2)` ([`RESCALE_BELOW`]), the velocities are stored rescaled:
+//! `v_phys = offset + scale v`, the stored peculiar velocities at unit temperature. The collision maps are linear and the fictitious-collision
+//! test depends on ratios only, so the stored system evolves by the same rules, with the
+//! physical majorant rate `scale^lambda` times the stored one: time is not rescaled, the event
+//! rate is. Observables are returned in physical units, `log10_t_bulk` included, which stays
+//! finite where the temperature itself would underflow ([`Counts::rescales`]).
 //!
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
@@ -26,12 +38,13 @@ use super::event::{Majorant, candidate};
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
-use crate::math::Real;
+use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_pair};
 use crate::sample::standard_exponential;
+use crate::vec3::Vec3;
 
 /// The exact (no-splitting) event loop for kernel `K`, drive `D` and restitution law `A`.
 #[derive(Clone, Debug)]
@@ -43,7 +56,15 @@ pub struct NoSplitting<K, D, A> {
     maj: Majorant,
     counts: Counts,
     refresh_after: u64,
+    scale: Real,
+    offset: Vec3,
+    rescale_below: Real,
 }
+
+/// A gas with no drive is rescaled when its stored temperature falls below this times
+/// `max(1, |V|^2)` (stored units): the peculiar velocities then still carry 12 of their 16
+/// digits beside the bulk velocity (module docs).
+pub const RESCALE_BELOW: Real = 1e-8;
 
 impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     /// Starts the scheme at time `t0` on the particles `p` (already holding the initial
@@ -68,6 +89,9 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             maj: Majorant::default(),
             counts: Counts::default(),
             refresh_after: 2 * p.len() as u64,
+            scale: 1.0,
+            offset: Vec3::ZERO,
+            rescale_below: RESCALE_BELOW,
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
@@ -105,23 +129,32 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             return Err(EngineError::TimeBackwards);
         }
         let n = p.len();
-        let mut rate = self.kernel.majorant_rate(n, self.maj.umax);
+        let mut rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
         // Candidates and fictitious ones since the majorant was last made exact.
         let (mut window, mut wasted) = (0u64, 0u64);
         loop {
-            if K::USES_UMAX && window >= self.refresh_after && 2 * wasted > window {
-                // The bound may have gone loose (a cooling gas): make it exact again. Kicking
-                // every particle to the current time is what an observation does; the process
-                // stays exact, and the O(n) cost is amortized over the window. A refresh that
-                // gains little doubles the window, so a steady gas soon stops paying for it.
-                let before = self.maj.umax;
+            if !D::ACTS && window >= 2 * n as u64 {
+                // No drive: every particle is always at the current time. A synchronization
+                // every 2n candidates keeps the majorant exact and rescales a cooling gas
+                // before its peculiar velocities lose digits (module docs).
+                self.synchronized(p)?;
+                self.counts.observations -= 1;
+                rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
+                (window, wasted) = (0, 0);
+            } else if D::ACTS && K::USES_UMAX && window >= self.refresh_after && 2 * wasted > window
+            {
+                // The bound may have gone loose: make it exact again. Kicking every particle to
+                // the current time is what an observation does; the process stays exact, and the
+                // O(n) cost is amortized over the window. A refresh that gains little doubles
+                // the window, so a steady gas soon stops paying for it.
+                let before = self.scale * self.maj.umax;
                 self.drive.kick_all(p, self.t, rng);
                 self.synchronized(p)?;
                 self.counts.observations -= 1;
                 self.counts.refreshes += 1;
-                rate = self.kernel.majorant_rate(n, self.maj.umax);
+                rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
                 (window, wasted) = (0, 0);
-                self.refresh_after = if self.maj.umax > 0.8 * before {
+                self.refresh_after = if self.scale * self.maj.umax > 0.8 * before {
                     self.refresh_after.saturating_mul(2)
                 } else {
                     2 * n as u64
@@ -139,7 +172,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             let (k, a) = (&self.kernel, &self.restitution);
             let before = self.counts.fictitious;
             if candidate(k, a, p, i, j, &mut self.maj, D::ACTS, &mut self.counts, rng) {
-                rate = self.kernel.majorant_rate(n, self.maj.umax);
+                rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
             }
             window += 1;
             wasted += self.counts.fictitious - before;
@@ -152,15 +185,33 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     /// Re-synchronizes after the caller changed velocities between calls: every last-kick time
     /// becomes the current time and `V`, `Umax` are recomputed. Returns the observables.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        // The caller's velocities are physical.
+        (self.scale, self.offset) = (1.0, Vec3::ZERO);
         p.reset_kick_times(self.t);
         self.synchronized(p)
     }
 
-    /// Observables of the synchronized system; refreshes `V` and `Umax` from them.
-    fn synchronized(&mut self, p: &Particles<'_>) -> Result<Observables, EngineError> {
-        let obs = Observables::of(p);
+    /// Observables of the synchronized system (in physical units); refreshes `V` and `Umax`,
+    /// and rescales a cooling gas whose stored temperature fell below the threshold.
+    fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        let mut obs = Observables::of(p);
         if !obs.is_finite() {
             return Err(EngineError::NonFinite);
+        }
+        if !D::ACTS
+            && obs.t_bulk > 0.0
+            && obs.t_bulk < self.rescale_below * max(1.0, obs.bulk.norm2())
+        {
+            // v_phys = offset + scale v: store the peculiar velocities at unit temperature.
+            let s = 1.0 / sqrt(obs.t_bulk);
+            for q in p.as_mut_slice() {
+                let v = q.velocity();
+                q.set_velocity(s * (v - obs.bulk));
+            }
+            self.offset += self.scale * obs.bulk;
+            self.scale /= s;
+            self.counts.rescales += 1;
+            obs = Observables::of(p);
         }
         self.counts.observations += 1;
         self.drive.observe(&obs);
@@ -170,6 +221,18 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                 vref: obs.bulk,
             };
         }
-        Ok(obs)
+        Ok(obs.in_units(self.scale, self.offset))
+    }
+
+    /// Sets the stored temperature below which a gas with no drive is rescaled (default
+    /// [`RESCALE_BELOW`]; 0 never rescales).
+    pub fn set_rescale_below(&mut self, t: Real) {
+        self.rescale_below = t;
+    }
+
+    /// The map from stored to physical velocities, `v_phys = offset + scale v` (identity unless
+    /// a cooling gas was rescaled).
+    pub fn velocity_map(&self) -> (Real, Vec3) {
+        (self.scale, self.offset)
     }
 }
