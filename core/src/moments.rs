@@ -37,6 +37,10 @@ pub struct Observables {
     pub v4: Real,
     /// `<|v|^6>`, raw.
     pub v6: Real,
+    /// `<|v - V|>`.
+    pub c1: Real,
+    /// `<|v - V|^3>`.
+    pub c3: Real,
     /// `<|v - V|^4>`.
     pub c4: Real,
     /// `<|v - V|^6>`.
@@ -86,6 +90,7 @@ impl Observables {
         );
         let c4 = s.c4 * inv;
         let c6 = s.c6 * inv;
+        let (c1, c3) = (s.c1 * inv, s.c3n * inv);
         let t = t_bulk;
         let a2 = c4 / (15.0 * t * t) - 1.0;
         let a3 = 1.0 + 3.0 * a2 - c6 / (105.0 * t * t * t);
@@ -109,6 +114,8 @@ impl Observables {
             energy_flow: r,
             v4: s.s4 * inv,
             v6: s.s6 * inv,
+            c1,
+            c3,
             c4,
             c6,
             a2,
@@ -136,6 +143,7 @@ impl Observables {
         let heat_flux = (s2 * s) * self.heat_flux;
         let c4 = s2 * s2 * self.c4;
         let c6 = s2 * s2 * s2 * self.c6;
+        let (c1, c3) = (s * self.c1, s2 * s * self.c3);
         let bb = [
             bulk.x * bulk.x,
             bulk.y * bulk.y,
@@ -174,6 +182,8 @@ impl Observables {
             energy_flow,
             v4,
             v6,
+            c1,
+            c3,
             c4,
             c6,
             a2: self.a2,

@@ -42,7 +42,14 @@ fn simd_sums_equal_scalar_sums() {
                 "n = {n}: {x} vs {y}"
             );
         }
-        for (x, y) in [(a.s4, b.s4), (a.s6, b.s6), (a.c4, b.c4), (a.c6, b.c6)] {
+        for (x, y) in [
+            (a.s4, b.s4),
+            (a.s6, b.s6),
+            (a.c1, b.c1),
+            (a.c3n, b.c3n),
+            (a.c4, b.c4),
+            (a.c6, b.c6),
+        ] {
             assert!(rel(x, y) < 1e-13, "n = {n}: {x} vs {y}");
         }
         assert!(rel(a.max_c2, b.max_c2) < 1e-13, "n = {n}");

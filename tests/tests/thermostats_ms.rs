@@ -100,7 +100,7 @@ fn constant_force_alpha_08() {
     );
 }
 
-/// MS Table 1, all twelve direct mu4 values (reduced sizes: n = 2048, 16 ensembles, 20,000 pairs
+/// MS Table 1, all twelve direct mu4 values and their indirect routes (reduced sizes: n = 2048, 16 ensembles, 20,000 pairs
 /// per observation, steady average over t in [20, 100]).
 #[test]
 fn ms_table_1_all_cells() {
@@ -131,4 +131,24 @@ fn ms_table_1_all_cells() {
             );
         }
     }
+}
+
+/// The same white-noise steady state from MS's own time-stepped scheme (h = 0.01 lambda / v0).
+#[test]
+fn white_noise_alpha_08_time_stepped() {
+    let mut s = shipped("ms-white-noise", 2048, 16, 1400);
+    s.scheme = gdsmc::scene::SchemeChoice::TimeStepped(0.01);
+    s.collisional_pairs = 20_000;
+    let st = run(&s);
+    let (mu4, c4) = get(&st, "mu4");
+    assert!(
+        (mu4 - 4.499).abs() <= c4 + 5e-4,
+        "mu4 {mu4} +- {c4}, MS Table 1: 4.499"
+    );
+    let (a2, ca) = get(&st, "a2");
+    let est = a2_white_noise_10(0.8);
+    assert!(
+        (a2 - est).abs() <= ca + 1e-3,
+        "a2 {a2} +- {ca}, MS (10) {est}"
+    );
 }

@@ -6,7 +6,7 @@
 //! order, so results depend only on the particle values.
 
 use super::kick::load4;
-use crate::math::{Real, RealX4, max};
+use crate::math::{Real, RealX4, max, sqrt};
 use crate::particles::Particle;
 use crate::vec3::Vec3;
 
@@ -30,6 +30,10 @@ pub struct Sums {
     pub c2: [Real; 6],
     /// `sum c |c|^2`.
     pub c3: [Real; 3],
+    /// `sum |v - V|` (the odd moments enter MS (44)).
+    pub c1: Real,
+    /// `sum |v - V|^3`.
+    pub c3n: Real,
     /// `sum |v - V|^4`.
     pub c4: Real,
     /// `sum |v - V|^6`.
@@ -81,6 +85,9 @@ fn add_central(s: &mut Sums, p: &Particle, bulk: Vec3) {
     s.c3[0] += c.x * c2;
     s.c3[1] += c.y * c2;
     s.c3[2] += c.z * c2;
+    let cn = sqrt(c2);
+    s.c1 += cn;
+    s.c3n += cn * c2;
     s.c4 += c2 * c2;
     s.c6 += c2 * c2 * c2;
     s.max_c2 = max(s.max_c2, c2);
@@ -160,6 +167,7 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
         RealX4::splat(bulk.z),
     );
     let (mut c4, mut c6, mut m2) = (z, z, z);
+    let (mut e1, mut e3) = (z, z);
     let (mut cxx, mut cyy, mut czz, mut cxy, mut cxz, mut cyz) = (z, z, z, z, z, z);
     let (mut d1, mut d2, mut d3) = (z, z, z);
     for b in 0..blocks {
@@ -176,6 +184,9 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
         d2 += y * c2;
         d3 += w * c2;
         let c4v = c2 * c2;
+        let cn = c2.sqrt();
+        e1 += cn;
+        e3 += cn * c2;
         c4 += c4v;
         c6 += c4v * c2;
         m2 = m2.max(c2);
@@ -189,6 +200,8 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
         cyz.reduce_add(),
     ];
     s.c3 = [d1.reduce_add(), d2.reduce_add(), d3.reduce_add()];
+    s.c1 = e1.reduce_add();
+    s.c3n = e3.reduce_add();
     s.c4 = c4.reduce_add();
     s.c6 = c6.reduce_add();
     s.max_c2 = m2.to_array().into_iter().fold(0.0, max);
