@@ -57,35 +57,14 @@ macro_rules! impl_event_loop {
             fn counts(&self) -> Counts {
                 $t::counts(self)
             }
+            fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
+                $t::velocity_map(self)
+            }
         }
     };
 }
+impl_event_loop!(NoSplitting);
 impl_event_loop!(Splitting);
-
-impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop
-    for NoSplitting<K, D, A>
-{
-    fn advance_to<R: Rng + ?Sized>(
-        &mut self,
-        p: &mut Particles<'_>,
-        t_end: Real,
-        rng: &mut R,
-    ) -> Result<Observables, EngineError> {
-        NoSplitting::advance_to(self, p, t_end, rng)
-    }
-    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        NoSplitting::resync(self, p)
-    }
-    fn time(&self) -> Real {
-        NoSplitting::time(self)
-    }
-    fn counts(&self) -> Counts {
-        NoSplitting::counts(self)
-    }
-    fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
-        NoSplitting::velocity_map(self)
-    }
-}
 
 impl<D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop for TimeStepped<D, A> {
     fn advance_to<R: Rng + ?Sized>(

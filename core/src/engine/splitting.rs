@@ -84,6 +84,11 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         self.t0 + self.steps as Real * self.dt
     }
 
+    /// Stored and physical velocities coincide: `(1, 0)` (see [`super::NoSplitting::velocity_map`]).
+    pub fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
+        (1.0, crate::vec3::Vec3::ZERO)
+    }
+
     /// The time step.
     pub fn dt(&self) -> Real {
         self.dt
