@@ -8,6 +8,7 @@ pub mod charts;
 pub mod columns;
 pub mod ensemble;
 pub mod error;
+pub mod hydro;
 pub mod output;
 pub mod reference;
 pub mod references;

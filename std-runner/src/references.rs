@@ -67,9 +67,78 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
     })
 }
 
+/// The BRS (21), (22) closure models of a hard-sphere gas in a hard-sphere host medium.
+pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
+    use crate::hydro::{Closure, HydroModel};
+    let KernelChoice::HardSpheres { gamma, c } = scene.kernel else {
+        return None;
+    };
+    let DriveChoice::HostMedium {
+        hard_spheres: true,
+        c1,
+        density,
+        mass,
+        temperature,
+        drift,
+    } = scene.drive
+    else {
+        return None;
+    };
+    if scene.impact_speed.is_some() {
+        return None;
+    }
+    let m = |closure| HydroModel {
+        alpha: mass / (1.0 + mass),
+        tb: temperature,
+        ub: drift,
+        k: gamma * c / (density * density * c1),
+        beta: (1.0 - scene.restitution) / 2.0,
+        s: density * density * c1,
+        closure,
+    };
+    Some([m(Closure::LocalEquilibrium), m(Closure::Grad)])
+}
+
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     let mut out = Vec::new();
+    if let Some(models) = hydro_models(scene) {
+        let f0 = initial_sampler(scene);
+        let t_end = scene.times.last().copied().unwrap_or(1.0);
+        for (model, (tn, vn, src)) in models.iter().zip([
+            (
+                "T_bulk_hydro21",
+                "V_y_hydro21",
+                "BRS (21), local equilibrium",
+            ),
+            ("T_bulk_hydro22", "V_y_hydro22", "BRS (22), Grad"),
+        ]) {
+            match crate::hydro::Trajectory::new(
+                model,
+                f0.mean().to_array(),
+                f0.temperature(),
+                t_end,
+            ) {
+                Ok(tr) => {
+                    let tr = std::sync::Arc::new(tr);
+                    let tr2 = tr.clone();
+                    out.push(ReferenceCurve {
+                        name: tn,
+                        of: "T_bulk",
+                        source: src,
+                        curve: Box::new(move |t| tr.temperature(t)),
+                    });
+                    out.push(ReferenceCurve {
+                        name: vn,
+                        of: "V_y",
+                        source: src,
+                        curve: Box::new(move |t| tr2.bulk(t, 1)),
+                    });
+                }
+                Err(e) => eprintln!("{src}: not integrated ({e})"),
+            }
+        }
+    }
     if let Some(h) = host_medium_maxwell(scene) {
         for (k, (name, of)) in [
             ("V_x_exact", "V_x"),

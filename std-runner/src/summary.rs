@@ -72,7 +72,13 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         for name in ["T", "T_bulk", "a2", "a3", "crit", "mu2", "mu4"] {
             let Some(col) = stats.col(name) else { continue };
             let (m, ci) = st.mean_ci(stats, col);
-            let _ = writeln!(s, "  {name:<8} {m:>13.6} +- {ci:.2e}");
+            let _ = write!(s, "  {name:<8} {m:>13.6} +- {ci:.2e}");
+            // References beside it, at the last observation time.
+            let t_last = stats.times[stats.times.len() - 1];
+            for r in refs.iter().filter(|r| r.of == name) {
+                let _ = write!(s, "   {} {:.6}", r.name, (r.curve)(t_last));
+            }
+            let _ = writeln!(s);
         }
     }
     s
