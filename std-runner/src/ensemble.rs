@@ -19,6 +19,7 @@ use gdsmc_core::drive::{
 use gdsmc_core::engine::{
     Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder, TimeStepped,
 };
+use gdsmc_core::histogram::radial_shells;
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
@@ -169,7 +170,7 @@ fn observe<E: EventLoop>(
     p: &mut Particles<'_>,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Result<(Vec<f64>, Counts), EngineError> {
-    let mut out = Vec::with_capacity(scene.times.len() * (COLUMNS.len() + 2));
+    let mut out = Vec::with_capacity(scene.times.len() * (COLUMNS.len() + 2) + 1);
     // Diagnostics draw from their own stream, so they never change the trajectory.
     let mut diag = rng.clone();
     diag.long_jump();
@@ -191,6 +192,27 @@ fn observe<E: EventLoop>(
             );
             out.extend([mu2, mu4]);
         }
+    }
+    // The histogram of the last observation rides at the end of the row (see `split_row`).
+    if let Some((k, radius)) = scene.histogram {
+        let mut h = vec![0.0; k + 1];
+        let (scale, offset) = engine.velocity_map();
+        if scale == 1.0 && offset == gdsmc_core::vec3::Vec3::ZERO {
+            radial_shells(p, radius, &mut h);
+        } else {
+            // A rescaled cooling gas: shells of the physical speeds.
+            for q in p.as_slice() {
+                let v = offset + scale * q.velocity();
+                let r = v.norm();
+                let i = if r >= radius {
+                    k
+                } else {
+                    ((r * k as f64 / radius) as usize).min(k - 1)
+                };
+                h[i] += 1.0 / p.len() as f64;
+            }
+        }
+        out.extend(h);
     }
     Ok((out, engine.counts()))
 }
@@ -257,6 +279,9 @@ pub struct RunStats {
     pub threads: usize,
     /// Steady-state averages, when the scene asks for them.
     pub steady: Option<SteadyStats>,
+    /// The radial-shell histogram at the last observation (radius R, statistics of the K + 1
+    /// shell weights over ensembles), when the scene asks for it.
+    pub histogram: Option<(f64, Accumulator)>,
 }
 
 impl RunStats {
@@ -281,8 +306,9 @@ struct EnsembleJob<'a> {
     stop: &'a AtomicBool,
 }
 
-/// What the parallel part hands back: statistics, steady statistics, counts, ensembles merged.
-type Merged = (Accumulator, Accumulator, Counts, u64);
+/// What the parallel part hands back: statistics, steady statistics, histogram statistics,
+/// counts, ensembles merged.
+type Merged = (Accumulator, Accumulator, Accumulator, Counts, u64);
 
 impl EngineJob for EnsembleJob<'_> {
     type Output = Result<Merged, Error>;
@@ -312,8 +338,10 @@ impl EngineJob for EnsembleJob<'_> {
                 })
                 .collect()
         };
+        let hist_len = scene.histogram.map_or(0, |(k, _)| k + 1);
         let mut total = Accumulator::new(width);
         let mut steady = Accumulator::new(ncol);
+        let mut hist = Accumulator::new(hist_len);
         let mut counts = Counts::default();
         let mut streams = Streams::new(scene.seed);
         let m = scene.ensembles;
@@ -323,7 +351,7 @@ impl EngineJob for EnsembleJob<'_> {
             let rngs: Vec<Xoshiro256PlusPlus> =
                 (&mut streams).take((last - start) as usize).collect();
             // `None`: the chunk was skipped because the run was interrupted.
-            type Chunk = Result<Option<(Accumulator, Accumulator, Counts)>, Error>;
+            type Chunk = Result<Option<(Accumulator, Accumulator, Accumulator, Counts)>, Error>;
             let chunks: Vec<Chunk> = pool.install(|| {
                 rngs.par_chunks(CHUNK as usize)
                     .enumerate()
@@ -333,6 +361,7 @@ impl EngineJob for EnsembleJob<'_> {
                         }
                         let mut acc = Accumulator::new(width);
                         let mut st = Accumulator::new(ncol);
+                        let mut hi = Accumulator::new(hist_len);
                         let mut cnt = Counts::default();
                         for (k, r) in rs.iter().enumerate() {
                             let e = start + ci as u64 * CHUNK + k as u64;
@@ -341,12 +370,14 @@ impl EngineJob for EnsembleJob<'_> {
                                     ensemble: e,
                                     message: err.to_string(),
                                 })?;
-                            acc.push(&row);
-                            st.push(&steady_of(&row));
+                            let (row, h) = row.split_at(width);
+                            acc.push(row);
+                            st.push(&steady_of(row));
+                            hi.push(h);
                             cnt = cnt.add(&c);
                         }
                         (self.progress)(rs.len() as u64);
-                        Ok(Some((acc, st, cnt)))
+                        Ok(Some((acc, st, hi, cnt)))
                     })
                     .collect()
             });
@@ -354,17 +385,18 @@ impl EngineJob for EnsembleJob<'_> {
             // exactly what a full run with fewer ensembles would have.
             for (ci, ch) in chunks.into_iter().enumerate() {
                 match ch? {
-                    Some((a, st, c)) => {
+                    Some((a, st, h, c)) => {
                         total.merge(&a);
                         steady.merge(&st);
+                        hist.merge(&h);
                         counts = counts.add(&c);
                     }
-                    None => return Ok((total, steady, counts, start + ci as u64 * CHUNK)),
+                    None => return Ok((total, steady, hist, counts, start + ci as u64 * CHUNK)),
                 }
             }
             start = last;
         }
-        Ok((total, steady, counts, m))
+        Ok((total, steady, hist, counts, m))
     }
 }
 
@@ -393,7 +425,7 @@ pub fn run_interruptible(
         threads
     };
     let start = Instant::now();
-    let (acc, st, counts, ensembles) = with_engine(
+    let (acc, st, hist, counts, ensembles) = with_engine(
         scene,
         EnsembleJob {
             scene,
@@ -402,6 +434,7 @@ pub fn run_interruptible(
             stop,
         },
     )?;
+    let histogram = scene.histogram.map(|(_, radius)| (radius, hist));
     let steady = scene.steady_from.map(|first| SteadyStats {
         first,
         points: scene.times.len() - first,
@@ -416,5 +449,6 @@ pub fn run_interruptible(
         wall: start.elapsed(),
         threads,
         steady,
+        histogram,
     })
 }

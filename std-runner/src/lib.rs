@@ -15,5 +15,6 @@ pub mod references;
 pub mod scene;
 pub mod stats;
 pub mod summary;
+pub mod tails;
 
 pub use error::Error;

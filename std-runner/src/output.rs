@@ -53,6 +53,42 @@ pub fn observables_csv(stats: &RunStats, refs: &[ReferenceCurve]) -> Result<Vec<
     w.into_inner().map_err(|e| e.into_error().into())
 }
 
+/// histograms.csv: the radial-shell histogram at the last observation (GRW (31)-(33)):
+/// `r_lo, r_hi, f, f_ci` per shell (the weight of the shell, and its 99.9% half-width), and
+/// `density` = `f` over the shell volume; the last shell is `[R, inf)`.
+pub fn histograms_csv(
+    radius: f64,
+    hist: &crate::stats::Accumulator,
+) -> Result<Vec<u8>, csv::Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(["r_lo", "r_hi", "f", "f_ci", "density"])?;
+    let k = hist.len() - 1;
+    for i in 0..=k {
+        let lo = radius * i as f64 / k as f64;
+        let hi = if i == k {
+            f64::INFINITY
+        } else {
+            radius * (i + 1) as f64 / k as f64
+        };
+        let vol = 4.0 / 3.0 * std::f64::consts::PI * (hi.powi(3) - lo.powi(3));
+        w.write_record([
+            format!("{lo:?}"),
+            format!("{hi:?}"),
+            format!("{:?}", hist.mean(i)),
+            format!("{:?}", hist.ci(i)),
+            format!(
+                "{:?}",
+                if vol.is_finite() {
+                    hist.mean(i) / vol
+                } else {
+                    0.0
+                }
+            ),
+        ])?;
+    }
+    w.into_inner().map_err(|e| e.into_error().into())
+}
+
 /// summary.json: scene, seed, version, timing, counts and the errors against references.
 pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> serde_json::Value {
     let last = stats.times.len() - 1;
@@ -94,7 +130,26 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             .collect();
         serde_json::json!({ "from": stats.times[st.first], "points": st.points, "observables": cols })
     });
+    let tail = stats
+        .histogram
+        .as_ref()
+        .and_then(|(radius, h)| crate::tails::fit(*radius, h))
+        .map(|f| {
+            let lambda = match scene.kernel {
+                crate::scene::KernelChoice::Maxwell { .. } => 0.0,
+                crate::scene::KernelChoice::HardSpheres { .. } => 1.0,
+                crate::scene::KernelChoice::Vhs { lambda, .. } => lambda,
+            };
+            serde_json::json!({
+                "k0": 1,
+                "slope": f.slope,
+                "slope_ci": f.slope_ci,
+                "shells_used": f.points.len(),
+                "reference_exponent_grw_16": 1.0 + lambda / 2.0,
+            })
+        });
     serde_json::json!({
+        "tail": tail,
         "steady_state": steady,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
         "scene": scene.name,
@@ -140,5 +195,13 @@ pub fn write_all(
     write_atomic(&csv_path, &bytes)?;
     let json = serde_json::to_vec_pretty(&summary_json(scene, stats, refs)).expect("json");
     write_atomic(&dir.join("summary.json"), &json)?;
+    if let Some((radius, h)) = &stats.histogram {
+        let path = dir.join("histograms.csv");
+        let bytes = histograms_csv(*radius, h).map_err(|e| Error::Write {
+            path: path.clone(),
+            source: std::io::Error::other(e.to_string()),
+        })?;
+        write_atomic(&path, &bytes)?;
+    }
     crate::charts::write_charts(dir, &scene.name, stats, refs)
 }

@@ -56,6 +56,19 @@ pub struct SceneFile {
     /// Ensembles and seed.
     #[serde(default)]
     pub run: RunSpec,
+    /// Radial-shell histogram of the speed at the last observation time (GRW (31)-(33)).
+    #[serde(default)]
+    pub histogram: Option<HistogramSpec>,
+}
+
+/// `[histogram]`: `shells` (K) shells of width `radius / shells`, plus `|v| >= radius`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HistogramSpec {
+    /// Number of shells K (GRW: 128).
+    pub shells: Spanned<i64>,
+    /// Outer radius R (GRW: 40, 16, 24 for Examples 6-8).
+    pub radius: Spanned<f64>,
 }
 
 /// `[particles]`.
@@ -433,6 +446,8 @@ pub struct Scene {
     pub steady_from: Option<usize>,
     /// Random pairs per observation for mu2, mu4 (0: off).
     pub collisional_pairs: u64,
+    /// Radial-shell histogram `(K, R)` at the last observation, if asked.
+    pub histogram: Option<(usize, f64)>,
     /// Ensembles.
     pub ensembles: u64,
     /// Seed.
@@ -867,6 +882,20 @@ impl SceneFile {
         if matches!(drive, DriveChoice::ConstantForce(_)) && scheme == SchemeChoice::NoSplitting {
             return l.invalid(0..0, "scheme.kind", "must be \"time-stepped\", \"euler\" or \"strang\" with drive.kind = \"constant-force\": its momentum-keeping correction (MS (62)) couples all particles at every step, which the lazy no-splitting scheme cannot do");
         }
+        let histogram = match &self.histogram {
+            None => None,
+            Some(h) => {
+                let k = *h.shells.get_ref();
+                if !(1..=100_000).contains(&k) {
+                    return l.invalid(
+                        h.shells.span(),
+                        "histogram.shells",
+                        format!("must lie in 1..=100000, got {k}"),
+                    );
+                }
+                Some((k as usize, positive(&l, &h.radius, "histogram.radius")?))
+            }
+        };
         if impact_speed.is_some() && collisional_pairs > 0 {
             return l.invalid(0..0, "observe.collisional_pairs", "assumes a constant restitution coefficient (MS (65)-(66)); not available with collisions.impact_speed_law");
         }
@@ -904,6 +933,7 @@ impl SceneFile {
             times,
             steady_from,
             collisional_pairs,
+            histogram,
             ensembles: m as u64,
             seed: seed as u64,
         })

@@ -63,6 +63,22 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         }
         let _ = writeln!(s);
     }
+    if let Some((radius, h)) = &stats.histogram {
+        match crate::tails::fit(*radius, h) {
+            Some(f) => {
+                let _ = writeln!(
+                    s,
+                    "\ntail (GRW Section 4.3, k0 = 1, {} shells): exponent {:.3} +- {:.3} (GRW (16): 1 + lambda/2)",
+                    f.points.len(),
+                    f.slope,
+                    f.slope_ci
+                );
+            }
+            None => {
+                let _ = writeln!(s, "\ntail: too few resolved shells for a fit");
+            }
+        }
+    }
     if let Some(st) = &stats.steady {
         let _ = writeln!(
             s,

@@ -1,0 +1,28 @@
+//! Radial-shell histograms of the speed, GRW (31)-(33): shells `r_k = k R / K`, `k = 1..K`;
+//! `f_1` counts `|v| < r_1`, `f_k` counts `r_{k-1} <= |v| < r_k`, `f_{K+1}` counts `|v| >= R`,
+//! each with the particle weight `g = 1/n`.
+
+use crate::math::{Real, sqrt};
+use crate::particles::Particles;
+
+/// Adds the shell weights of `p` to `out` (`K + 1` entries, the last one for `|v| >= R`),
+/// for shells of width `radius / (out.len() - 1)`. Returns `false` (adding nothing) when `out`
+/// has fewer than two entries or `radius` is not finite and positive.
+pub fn radial_shells(p: &Particles<'_>, radius: Real, out: &mut [Real]) -> bool {
+    let k = out.len().saturating_sub(1);
+    if k == 0 || !(radius.is_finite() && radius > 0.0) {
+        return false;
+    }
+    let g = 1.0 / p.len() as Real;
+    let per = k as Real / radius;
+    for q in p.as_slice() {
+        let r = sqrt(q.velocity().norm2());
+        let i = if r >= radius {
+            k
+        } else {
+            ((r * per) as usize).min(k - 1)
+        };
+        out[i] += g;
+    }
+    true
+}

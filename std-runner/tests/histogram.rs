@@ -1,0 +1,62 @@
+//! The radial-shell histogram (GRW (31)-(33)) of the initial standard Maxwellian against the
+//! exact shell probabilities of the chi distribution with 3 degrees of freedom,
+//! `P(|v| < r) = erf(r / sqrt 2) - sqrt(2/pi) r exp(-r^2/2)`. Each of the 17 shells within its
+//! 99.9% half-width scaled to a Bonferroni family level of 99.9% (z = 4.0 instead of 3.2).
+
+use gdsmc::{ensemble, scene};
+use std::path::PathBuf;
+
+fn chi3_cdf(r: f64) -> f64 {
+    libm::erf(r / 2f64.sqrt()) - (2.0 / std::f64::consts::PI).sqrt() * r * (-0.5 * r * r).exp()
+}
+
+#[test]
+fn initial_shells_are_maxwellian() {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
+    let mut s = scene::load(&p).unwrap();
+    s.n = 5000;
+    s.ensembles = 40;
+    s.times = vec![0.0];
+    s.histogram = Some((16, 4.0));
+    let st = ensemble::run(&s, 0, &|_| {}).unwrap();
+    let (radius, h) = st.histogram.as_ref().unwrap();
+    assert_eq!(h.len(), 17);
+    let mut total = 0.0;
+    let mut exact_hist = gdsmc::stats::Accumulator::new(17);
+    let mut exact_row = vec![0.0; 17];
+    for k in 0..17 {
+        let lo = radius * k as f64 / 16.0;
+        let exact = if k == 16 {
+            1.0 - chi3_cdf(*radius)
+        } else {
+            chi3_cdf(lo + 0.25) - chi3_cdf(lo)
+        };
+        exact_row[k] = exact;
+        let (m, ci) = (h.mean(k), h.ci(k));
+        total += m;
+        if exact > 1e-6 {
+            assert!(
+                (m - exact).abs() <= ci * 4.0 / 3.2,
+                "shell {k}: {m} +- {ci}, exact {exact}"
+            );
+        }
+    }
+    assert!((total - 1.0).abs() < 1e-12, "weights sum to one: {total}");
+    // The tail fit of the simulated shells matches the fit of the exact shells within its
+    // interval (the same shells: the exact histogram is resolved everywhere).
+    exact_hist.push(&exact_row);
+    let fit = gdsmc::tails::fit(*radius, h).expect("enough resolved shells");
+    let want = gdsmc::tails::fit(*radius, &exact_hist).expect("exact fit");
+    assert!(
+        (fit.slope - want.slope).abs() <= fit.slope_ci,
+        "slope {} +- {} vs exact shells {}",
+        fit.slope,
+        fit.slope_ci,
+        want.slope
+    );
+    assert!(
+        want.slope > 1.5 && want.slope < 2.5,
+        "a Maxwellian's shells give an exponent near 2: {}",
+        want.slope
+    );
+}
