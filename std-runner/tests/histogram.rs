@@ -24,14 +24,14 @@ fn initial_shells_are_maxwellian() {
     let mut total = 0.0;
     let mut exact_hist = gdsmc::stats::Accumulator::new(17);
     let mut exact_row = vec![0.0; 17];
-    for k in 0..17 {
+    for (k, slot) in exact_row.iter_mut().enumerate() {
         let lo = radius * k as f64 / 16.0;
         let exact = if k == 16 {
             1.0 - chi3_cdf(*radius)
         } else {
             chi3_cdf(lo + 0.25) - chi3_cdf(lo)
         };
-        exact_row[k] = exact;
+        *slot = exact;
         let (m, ci) = (h.mean(k), h.ci(k));
         total += m;
         if exact > 1e-6 {
