@@ -4,19 +4,38 @@
 
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
+use crate::vec3::Vec3;
 
 /// Adds the shell weights of `p` to `out` (`K + 1` entries, the last one for `|v| >= R`),
 /// for shells of width `radius / (out.len() - 1)`. Returns `false` (adding nothing) when `out`
 /// has fewer than two entries or `radius` is not finite and positive.
 pub fn radial_shells(p: &Particles<'_>, radius: Real, out: &mut [Real]) -> bool {
+    radial_shells_mapped(p, radius, 1.0, Vec3::ZERO, out)
+}
+
+/// As [`radial_shells`], for the physical velocities `offset + scale v` of a system stored
+/// rescaled (a cooling gas, [`crate::engine::NoSplitting::velocity_map`]).
+pub fn radial_shells_mapped(
+    p: &Particles<'_>,
+    radius: Real,
+    scale: Real,
+    offset: Vec3,
+    out: &mut [Real],
+) -> bool {
     let k = out.len().saturating_sub(1);
     if k == 0 || !(radius.is_finite() && radius > 0.0) {
         return false;
     }
     let g = 1.0 / p.len() as Real;
     let per = k as Real / radius;
+    let identity = scale == 1.0 && offset == Vec3::ZERO;
     for q in p.as_slice() {
-        let r = sqrt(q.velocity().norm2());
+        let v = if identity {
+            q.velocity()
+        } else {
+            offset + scale * q.velocity()
+        };
+        let r = sqrt(v.norm2());
         let i = if r >= radius {
             k
         } else {

@@ -73,6 +73,17 @@ fn build(
     })
 }
 
+/// A buffer of `len` doubles must hold `3 n` velocity components.
+fn check_len(len: usize, n: usize) -> Result<(), Failure> {
+    if len / 3 < n {
+        return fail(
+            gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
+            format!("`len` = {len} < 3 n = {}", 3 * n),
+        );
+    }
+    Ok(())
+}
+
 fn read_config(cfg: *const gdsmc_config) -> Result<gdsmc_config, Failure> {
     check_ptr(cfg, "config")?;
     // SAFETY: checked non-null and aligned; the caller provides a readable gdsmc_config.
@@ -323,12 +334,7 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
     guard(|| {
         let s = live(sim)?;
         check_ptr(out, "out")?;
-        if len / 3 < s.n {
-            return fail(
-                gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
-                format!("`len` = {len} < 3 n = {}", 3 * s.n),
-            );
-        }
+        check_len(len, s.n)?;
         // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
         let dst = unsafe { std::slice::from_raw_parts_mut(out, 3 * s.n) };
         let p = particles_of(s.particles, s.n);
@@ -356,12 +362,7 @@ pub unsafe extern "C" fn gdsmc_sim_set_velocities(
     guard(|| {
         let s = live(sim)?;
         check_ptr(velocities, "velocities")?;
-        if len / 3 < s.n {
-            return fail(
-                gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
-                format!("`len` = {len} < 3 n = {}", 3 * s.n),
-            );
-        }
+        check_len(len, s.n)?;
         // SAFETY: non-null, aligned, `len >= 3 n` readable doubles.
         let src = unsafe { std::slice::from_raw_parts(velocities, 3 * s.n) };
         if let Some(k) = src.iter().position(|x| !x.is_finite()) {

@@ -19,7 +19,7 @@ use gdsmc_core::drive::{
 use gdsmc_core::engine::{
     Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder, TimeStepped,
 };
-use gdsmc_core::histogram::radial_shells;
+use gdsmc_core::histogram::radial_shells_mapped;
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
@@ -193,25 +193,11 @@ fn observe<E: EventLoop>(
             out.extend([mu2, mu4]);
         }
     }
-    // The histogram of the last observation rides at the end of the row (see `split_row`).
+    // The histogram of the last observation rides at the end of the row (split off in the job).
     if let Some((k, radius)) = scene.histogram {
         let mut h = vec![0.0; k + 1];
         let (scale, offset) = engine.velocity_map();
-        if scale == 1.0 && offset == gdsmc_core::vec3::Vec3::ZERO {
-            radial_shells(p, radius, &mut h);
-        } else {
-            // A rescaled cooling gas: shells of the physical speeds.
-            for q in p.as_slice() {
-                let v = offset + scale * q.velocity();
-                let r = v.norm();
-                let i = if r >= radius {
-                    k
-                } else {
-                    ((r * k as f64 / radius) as usize).min(k - 1)
-                };
-                h[i] += 1.0 / p.len() as f64;
-            }
-        }
+        radial_shells_mapped(p, radius, scale, offset, &mut h);
         out.extend(h);
     }
     Ok((out, engine.counts()))
