@@ -76,6 +76,21 @@ pub const COLUMNS: &[Column] = &[
         get: |o| o.a3,
     },
     Column {
+        name: "c1",
+        doc: "<c> with c = |v - V| / v0, v0 = sqrt(2 T_bulk) (MS (4); enters MS (44) and (52))",
+        get: |o| o.c1 / (2.0 * o.t_bulk).sqrt(),
+    },
+    Column {
+        name: "c3",
+        doc: "<c^3> with c = |v - V| / v0 (MS (4); enters MS (44))",
+        get: |o| o.c3 / (2.0 * o.t_bulk).powf(1.5),
+    },
+    Column {
+        name: "log10_T_bulk",
+        doc: "log10 T_bulk, finite where a cooling gas's temperature underflows (HCS, Haff's law)",
+        get: |o| o.log10_t_bulk,
+    },
+    Column {
         name: "crit",
         doc: "deviation-from-Maxwell criterion, RW (29)",
         get: |o| o.crit,

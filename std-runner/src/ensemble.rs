@@ -182,10 +182,14 @@ fn observe<E: EventLoop>(
         };
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
         if scene.collisional_pairs > 0 {
+            // mu2, mu4 are reduced by v0, so any velocity units do: take the bulk velocity
+            // and temperature of the stored velocities (a cooling gas is stored rescaled, and
+            // its physical temperature may have underflowed).
+            let (bulk, t_bulk) = stored_bulk_temperature(p);
             let (mu2, mu4) = collisional_moments(
                 p,
-                obs.bulk,
-                obs.t_bulk,
+                bulk,
+                t_bulk,
                 scene.restitution,
                 scene.collisional_pairs,
                 &mut diag,
@@ -201,6 +205,21 @@ fn observe<E: EventLoop>(
         out.extend(h);
     }
     Ok((out, engine.counts()))
+}
+
+/// Bulk velocity and temperature (about it) of the velocities as stored.
+fn stored_bulk_temperature(p: &Particles<'_>) -> (Vec3, f64) {
+    let n = p.len() as f64;
+    let mut v = Vec3::ZERO;
+    for q in p.as_slice() {
+        v += q.velocity();
+    }
+    let bulk = (1.0 / n) * v;
+    let mut s = 0.0;
+    for q in p.as_slice() {
+        s += (q.velocity() - bulk).norm2();
+    }
+    (bulk, s / (3.0 * n))
 }
 
 /// Steady-state averages (RW Section 4.2): every observable averaged over the observation

@@ -44,6 +44,9 @@ pub enum Error {
     /// The run was interrupted (Ctrl-C); what was finished has been written.
     #[error("interrupted")]
     Interrupted,
+    /// `gdsmc reproduce`: figures that do not agree with the paper's.
+    #[error("{} figure(s) disagree with the paper: {}", .0.len(), .0.join("; "))]
+    Disagrees(Vec<String>),
     /// An output file could not be written.
     #[error("{path}: cannot write: {source}")]
     Write {

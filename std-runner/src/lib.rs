@@ -12,6 +12,7 @@ pub mod hydro;
 pub mod output;
 pub mod reference;
 pub mod references;
+pub mod reproduce;
 pub mod scene;
 pub mod stats;
 pub mod summary;

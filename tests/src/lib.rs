@@ -21,6 +21,16 @@ pub fn shipped(name: &str, n: usize, m: u64, seed: u64) -> Scene {
     s
 }
 
+/// A shipped scene with `--set` overrides, `n` particles, `m` ensembles and this seed.
+pub fn shipped_set(name: &str, set: &[&str], n: usize, m: u64, seed: u64) -> Scene {
+    let set: Vec<String> = set.iter().map(|s| s.to_string()).collect();
+    let mut s = scene::load_with_overrides(&scene_path(name), &set).expect("valid overrides");
+    s.n = n;
+    s.ensembles = m;
+    s.seed = seed;
+    s
+}
+
 /// Runs a scene on all cores.
 pub fn run(s: &Scene) -> RunStats {
     ensemble::run(s, 0, &|_| {}).expect("run succeeds")

@@ -107,3 +107,39 @@ fn hard_spheres_follow_haffs_law_over_ten_decades() {
         );
     }
 }
+
+/// MS Section 2.2: in reduced variables the homogeneous cooling state is the steady state of
+/// the Gaussian thermostat. The collisional moments (MS (67)) of a cooling gas, which the
+/// engine stores rescaled far below T = 1e-8, must equal the Gaussian thermostat's within the
+/// two runs' 99.9% half-widths (alpha = 0.8: T falls by about five decades over the average).
+#[test]
+fn cooling_gas_has_the_gaussian_thermostats_collisional_moments() {
+    let common = [
+        "collisions.restitution=0.8",
+        "observe.collisional_pairs=20000",
+    ];
+    let mut hcs_set = common.to_vec();
+    hcs_set.extend([
+        "observe.t_end=20000",
+        "observe.intervals=50",
+        "observe.steady_from=2000",
+    ]);
+    let hcs = run(&shipped_set("hcs-hard-spheres", &hcs_set, 2048, 16, 1500));
+    let gauss = run(&shipped_set("ms-gaussian", &common, 2048, 16, 1501));
+    let get = |st: &gdsmc::ensemble::RunStats, c: &str| {
+        st.steady.as_ref().unwrap().mean_ci(st, st.col(c).unwrap())
+    };
+    let t_last = at(&hcs, hcs.times.len() - 1, "log10_T_bulk").0;
+    assert!(
+        t_last < -8.0,
+        "the cooling gas must be stored rescaled: log10 T = {t_last}"
+    );
+    for c in ["mu2", "mu4", "a2"] {
+        let (a, ca) = get(&hcs, c);
+        let (b, cb) = get(&gauss, c);
+        assert!(
+            a.is_finite() && (a - b).abs() <= ca + cb,
+            "{c}: HCS {a} +- {ca}, Gaussian thermostat {b} +- {cb}"
+        );
+    }
+}
