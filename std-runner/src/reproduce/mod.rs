@@ -403,7 +403,7 @@ mod tests {
 
     #[test]
     fn rounding_is_half_the_third_digit() {
-        assert!((rounding(0.895e-1) - 0.5e-3).abs() < 1e-15);
+        assert!((rounding(0.895e-1) - 0.5e-4).abs() < 1e-15);
         assert!((rounding(2.6684) - 0.005).abs() < 1e-15);
         assert_eq!(rounding(0.0), 0.0);
     }
