@@ -45,3 +45,37 @@ pub fn radial_shells_mapped(
     }
     true
 }
+
+/// Adds the weights of the marginal histogram of velocity component `axis` (0, 1 or 2) of the
+/// physical velocities `offset + scale v` to `out`: `K = out.len() - 2` bins of width `2R / K`
+/// over `[-R, R)`, then `out[K]` for components below `-R` and `out[K + 1]` for those at or
+/// above `R`; particle weight `1/n`. It estimates BRS's integrated distribution
+/// `f_1(t, v_1) = int f(t, v) dv_2 dv_3` (BRS Figure 4). Returns `false` (adding nothing) when
+/// `out` has fewer than three entries, `axis > 2` or `radius` is not finite and positive.
+pub fn component_bins(
+    p: &Particles<'_>,
+    axis: usize,
+    radius: Real,
+    scale: Real,
+    offset: Vec3,
+    out: &mut [Real],
+) -> bool {
+    let k = out.len().saturating_sub(2);
+    if k == 0 || axis > 2 || !(radius.is_finite() && radius > 0.0) {
+        return false;
+    }
+    let g = 1.0 / p.len() as Real;
+    let per = k as Real / (2.0 * radius);
+    for q in p.as_slice() {
+        let v = (offset + scale * q.velocity()).to_array()[axis];
+        let i = if v < -radius {
+            k
+        } else if v >= radius {
+            k + 1
+        } else {
+            (((v + radius) * per) as usize).min(k - 1)
+        };
+        out[i] += g;
+    }
+    true
+}

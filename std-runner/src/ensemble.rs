@@ -19,7 +19,7 @@ use gdsmc_core::drive::{
 use gdsmc_core::engine::{
     Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder, TimeStepped,
 };
-use gdsmc_core::histogram::radial_shells_mapped;
+use gdsmc_core::histogram::{component_bins, radial_shells_mapped};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
@@ -174,12 +174,37 @@ fn observe<E: EventLoop>(
     // Diagnostics draw from their own stream, so they never change the trajectory.
     let mut diag = rng.clone();
     diag.long_jump();
-    for &t in &scene.times {
+    let nt = scene.times.len();
+    let mut reduced = vec![0.0; scene.reduced_histogram.map_or(0, |(k, _)| k + 1)];
+    let mut reduced_points = 0u32;
+    let reduced_from = scene.steady_from.unwrap_or(nt - 1);
+    let marginal_len = scene.marginal_histogram.map_or(0, |(_, k, _)| k + 2);
+    let (mut marginal_first, mut marginal_last) =
+        (vec![0.0; marginal_len], vec![0.0; marginal_len]);
+    for (ti, &t) in scene.times.iter().enumerate() {
         let obs = if t == 0.0 {
             obs0
         } else {
             engine.advance_to(p, t, rng)?
         };
+        if let Some((_, c_max)) = scene.reduced_histogram
+            && ti >= reduced_from
+        {
+            // c = (v - V) / v0 in the stored units (exact for a gas stored rescaled).
+            let (bulk, t_bulk) = stored_bulk_temperature(p);
+            let inv = 1.0 / (2.0 * t_bulk).sqrt();
+            radial_shells_mapped(p, c_max, inv, -inv * bulk, &mut reduced);
+            reduced_points += 1;
+        }
+        if let Some((axis, _, radius)) = scene.marginal_histogram {
+            let (scale, offset) = engine.velocity_map();
+            if ti == 0 {
+                component_bins(p, axis, radius, scale, offset, &mut marginal_first);
+            }
+            if ti == nt - 1 {
+                component_bins(p, axis, radius, scale, offset, &mut marginal_last);
+            }
+        }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
         if scene.collisional_pairs > 0 {
             // mu2, mu4 are reduced by v0, so any velocity units do: take the bulk velocity
@@ -204,6 +229,11 @@ fn observe<E: EventLoop>(
         radial_shells_mapped(p, radius, scale, offset, &mut h);
         out.extend(h);
     }
+    if reduced_points > 0 {
+        out.extend(reduced.iter().map(|x| x / reduced_points as f64));
+    }
+    out.extend(marginal_first);
+    out.extend(marginal_last);
     Ok((out, engine.counts()))
 }
 
@@ -287,6 +317,12 @@ pub struct RunStats {
     /// The radial-shell histogram at the last observation (radius R, statistics of the K + 1
     /// shell weights over ensembles), when the scene asks for it.
     pub histogram: Option<(f64, Accumulator)>,
+    /// The reduced-speed histogram (`c_max`, statistics of the K + 1 shell weights of
+    /// `c = |v - V| / v0`, each ensemble's averaged over the steady observations).
+    pub reduced: Option<(f64, Accumulator)>,
+    /// The marginal histogram (axis 0..=2, R, statistics of the K + 2 weights at the first
+    /// and at the last observation).
+    pub marginal: Option<(usize, f64, Accumulator, Accumulator)>,
 }
 
 impl RunStats {
@@ -343,7 +379,7 @@ impl EngineJob for EnsembleJob<'_> {
                 })
                 .collect()
         };
-        let hist_len = scene.histogram.map_or(0, |(k, _)| k + 1);
+        let hist_len = scene.extra_len();
         let mut total = Accumulator::new(width);
         let mut steady = Accumulator::new(ncol);
         let mut hist = Accumulator::new(hist_len);
@@ -439,7 +475,17 @@ pub fn run_interruptible(
             stop,
         },
     )?;
-    let histogram = scene.histogram.map(|(_, radius)| (radius, hist));
+    let mut at = 0;
+    let mut take = |len: usize| {
+        let a = hist.slice(at..at + len);
+        at += len;
+        a
+    };
+    let histogram = scene.histogram.map(|(k, radius)| (radius, take(k + 1)));
+    let reduced = scene.reduced_histogram.map(|(k, c)| (c, take(k + 1)));
+    let marginal = scene
+        .marginal_histogram
+        .map(|(axis, k, r)| (axis, r, take(k + 2), take(k + 2)));
     let steady = scene.steady_from.map(|first| SteadyStats {
         first,
         points: scene.times.len() - first,
@@ -455,5 +501,7 @@ pub fn run_interruptible(
         threads,
         steady,
         histogram,
+        reduced,
+        marginal,
     })
 }

@@ -6,6 +6,7 @@
 
 pub mod charts;
 pub mod columns;
+pub mod distribution;
 pub mod ensemble;
 pub mod error;
 pub mod hydro;

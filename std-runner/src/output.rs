@@ -148,7 +148,21 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
                 "reference_exponent_grw_16": 1.0 + lambda / 2.0,
             })
         });
+    let reduced = crate::distribution::reduced(scene, stats).map(|r| {
+        serde_json::json!({
+            "a2": r.a2.0,
+            "a2_ci": r.a2.1,
+            "tail_law": r.tail.map(|t| serde_json::json!({
+                "equation": t.equation,
+                "amplitude": t.amplitude,
+                "power": t.power,
+                "mu2_from": t.mu2_source,
+            })),
+            "file": "reduced.csv",
+        })
+    });
     serde_json::json!({
+        "reduced_distribution": reduced,
         "tail": tail,
         "steady_state": steady,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
@@ -203,5 +217,110 @@ pub fn write_all(
         })?;
         write_atomic(&path, &bytes)?;
     }
-    crate::charts::write_charts(dir, &scene.name, stats, refs)
+    let reduced = crate::distribution::reduced(scene, stats);
+    let marginal = crate::distribution::marginal(stats);
+    let csv_err = |path: &Path, e: csv::Error| Error::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(e.to_string()),
+    };
+    if let Some(r) = &reduced {
+        let path = dir.join("reduced.csv");
+        let bytes = reduced_csv(r).map_err(|e| csv_err(&path, e))?;
+        write_atomic(&path, &bytes)?;
+    }
+    if let Some(m) = &marginal {
+        let path = dir.join("marginal.csv");
+        let bytes = marginal_csv(m).map_err(|e| csv_err(&path, e))?;
+        write_atomic(&path, &bytes)?;
+    }
+    crate::charts::write_charts(dir, &scene.name, stats, refs)?;
+    crate::charts::write_distribution_charts(
+        dir,
+        &scene.name,
+        stats,
+        reduced.as_ref(),
+        marginal.as_ref(),
+    )
+}
+
+/// reduced.csv: MS's reduced distribution per shell of `c = |v - V| / v0`: `c_lo, c_hi, f,
+/// f_ci` (shell weight), `density` (f~(c)), `phi` (the Maxwellian, shell-averaged), `ratio,
+/// ratio_ci` (f/phi), `delta, delta_ci` (MS (45)), `s2` (S_2(c^2)), `G, G_maxwell` (MS (69),
+/// (71) or (77); empty without a tail law).
+pub fn reduced_csv(r: &crate::distribution::Reduced) -> Result<Vec<u8>, csv::Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "c_lo",
+        "c_hi",
+        "f",
+        "f_ci",
+        "density",
+        "phi",
+        "ratio",
+        "ratio_ci",
+        "delta",
+        "delta_ci",
+        "s2",
+        "G",
+        "G_maxwell",
+    ])?;
+    let g = |x: f64| {
+        if x.is_nan() {
+            String::new()
+        } else {
+            format!("{x:?}")
+        }
+    };
+    for sh in &r.shells {
+        w.write_record([
+            format!("{:?}", sh.c_lo),
+            format!("{:?}", sh.c_hi),
+            format!("{:?}", sh.f.0),
+            format!("{:?}", sh.f.1),
+            format!("{:?}", sh.density),
+            format!("{:?}", sh.phi),
+            format!("{:?}", sh.ratio.0),
+            format!("{:?}", sh.ratio.1),
+            format!("{:?}", sh.delta.0),
+            format!("{:?}", sh.delta.1),
+            format!("{:?}", sh.s2),
+            g(sh.g),
+            g(sh.g_maxwell),
+        ])?;
+    }
+    w.into_inner().map_err(|e| e.into_error().into())
+}
+
+/// marginal.csv: the marginal density of one velocity component (BRS Figure 4) per bin,
+/// `v_lo, v_hi, first, first_ci, first_maxwell, last, last_ci, last_maxwell` (densities at the
+/// first and last observation, each beside the Maxwellian with that time's bulk velocity
+/// and temperature).
+pub fn marginal_csv(m: &crate::distribution::Marginal) -> Result<Vec<u8>, csv::Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "v_lo",
+        "v_hi",
+        "first",
+        "first_ci",
+        "first_maxwell",
+        "last",
+        "last_ci",
+        "last_maxwell",
+    ])?;
+    for b in &m.bins {
+        w.write_record(
+            [
+                b.v_lo,
+                b.v_hi,
+                b.first.0,
+                b.first.1,
+                b.first_maxwell,
+                b.last.0,
+                b.last.1,
+                b.last_maxwell,
+            ]
+            .map(|x| format!("{x:?}")),
+        )?;
+    }
+    w.into_inner().map_err(|e| e.into_error().into())
 }

@@ -228,3 +228,61 @@ pub mod sonine {
         (D + 1.5 + a * a) * mu2_maxwellian(a)
     }
 }
+
+/// The high-energy tails of MS Section 2 (hard spheres, `d = 3`) and the reference shapes
+/// against which MS plot the reduced distribution: the Maxwellian shells and the Sonine
+/// polynomial `S_2`.
+pub mod tail {
+    use std::f64::consts::PI;
+
+    /// `beta_1` of MS (A.7) for `d = 3`: `pi Gamma(1) / Gamma(2) = pi`.
+    pub const BETA_1: f64 = PI;
+
+    /// MS (36), white noise: `f(c) ~ K exp(-A c^{3/2})`, `A = (2/3) (2 d beta_1 / mu_2)^{1/2}`.
+    pub fn a_white_noise_36(mu2: f64) -> f64 {
+        2.0 / 3.0 * (6.0 * BETA_1 / mu2).sqrt()
+    }
+
+    /// MS (42), Gaussian thermostat (and the cooling state): `f(c) ~ K exp(-A c)`,
+    /// `A = d beta_1 / mu_2`.
+    pub fn a_gaussian_42(mu2: f64) -> f64 {
+        3.0 * BETA_1 / mu2
+    }
+
+    /// MS (52), constant force: `f(c) ~ K exp(-A' c^2)`, `A' = beta_1 <c> / mu_2` (MS find the
+    /// fitted amplitude below this, MS (54)).
+    pub fn a_constant_force_52(mu2: f64, c_mean: f64) -> f64 {
+        BETA_1 * c_mean / mu2
+    }
+
+    /// The Sonine polynomial `S_2(x) = x^2/2 - 5x/2 + 15/8` (`d = 3`), MS (24)-(25); MS plot
+    /// `Delta(c)` against `S_2(c^2)`.
+    pub fn sonine_s2(x: f64) -> f64 {
+        0.5 * x * x - 2.5 * x + 15.0 / 8.0
+    }
+
+    /// `phi(c) = pi^{-3/2} exp(-c^2)`, the reduced Maxwellian of MS.
+    pub fn phi(c: f64) -> f64 {
+        (-c * c).exp() / PI.powf(1.5)
+    }
+
+    /// The weight of `phi` in the shell `a <= |c| < b`: `F(b) - F(a)`,
+    /// `F(c) = erf(c) - 2 c exp(-c^2) / sqrt(pi)` (exact; `b` may be infinite).
+    pub fn phi_shell(a: f64, b: f64) -> f64 {
+        let f = |c: f64| {
+            if c.is_infinite() {
+                1.0
+            } else {
+                libm::erf(c) - 2.0 * c * (-c * c).exp() / PI.sqrt()
+            }
+        };
+        f(b) - f(a)
+    }
+
+    /// The weight of the normal law of mean `u` and variance `t` (a Maxwellian's velocity
+    /// component, unit mass) in `[a, b)`.
+    pub fn normal_bin(u: f64, t: f64, a: f64, b: f64) -> f64 {
+        let s = (2.0 * t).sqrt();
+        0.5 * (libm::erf((b - u) / s) - libm::erf((a - u) / s))
+    }
+}

@@ -59,6 +59,29 @@ pub struct SceneFile {
     /// Radial-shell histogram of the speed at the last observation time (GRW (31)-(33)).
     #[serde(default)]
     pub histogram: Option<HistogramSpec>,
+    /// Histogram of the reduced speed `c = |v - V| / v0` (MS): f(c), Delta(c), G(c).
+    #[serde(default)]
+    pub reduced_histogram: Option<HistogramSpec>,
+    /// Marginal histogram of one velocity component (BRS Figure 4).
+    #[serde(default)]
+    pub marginal_histogram: Option<MarginalSpec>,
+}
+
+/// `[marginal_histogram]`: `bins` bins over `[-radius, radius)` of velocity component `axis`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MarginalSpec {
+    /// Component 1, 2 or 3 (BRS's `v_1`, `v_2`, `v_3`). Default 1.
+    #[serde(default = "default_axis")]
+    pub axis: Spanned<i64>,
+    /// Number of bins.
+    pub bins: Spanned<i64>,
+    /// Half-width R of the binned range.
+    pub radius: Spanned<f64>,
+}
+
+fn default_axis() -> Spanned<i64> {
+    Spanned::new(0..0, 1)
 }
 
 /// `[histogram]`: `shells` (K) shells of width `radius / shells`, plus `|v| >= radius`.
@@ -448,10 +471,25 @@ pub struct Scene {
     pub collisional_pairs: u64,
     /// Radial-shell histogram `(K, R)` at the last observation, if asked.
     pub histogram: Option<(usize, f64)>,
+    /// Reduced-speed histogram `(K, c_max)`: shells of `c = |v - V| / sqrt(2 T_bulk)`,
+    /// averaged over the steady-state observations (or the last one), if asked.
+    pub reduced_histogram: Option<(usize, f64)>,
+    /// Marginal histogram `(axis 0..=2, bins, R)` at the first and last observation, if asked.
+    pub marginal_histogram: Option<(usize, usize, f64)>,
     /// Ensembles.
     pub ensembles: u64,
     /// Seed.
     pub seed: u64,
+}
+
+impl Scene {
+    /// Values each ensemble appends after its observables: the speed histogram, the reduced
+    /// histogram and the marginal histograms (first and last observation).
+    pub fn extra_len(&self) -> usize {
+        self.histogram.map_or(0, |(k, _)| k + 1)
+            + self.reduced_histogram.map_or(0, |(k, _)| k + 1)
+            + self.marginal_histogram.map_or(0, |(_, k, _)| 2 * (k + 2))
+    }
 }
 
 /// Turns byte offsets into 1-based line numbers.
@@ -493,6 +531,15 @@ fn finite(l: &Lines<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
     } else {
         l.invalid(v.span(), key, format!("must be a finite number, got {x}"))
     }
+}
+
+/// A bin or shell count in 1..=100000.
+fn count(l: &Lines<'_>, v: &Spanned<i64>, key: &str) -> Result<usize, Error> {
+    let k = *v.get_ref();
+    if !(1..=100_000).contains(&k) {
+        return l.invalid(v.span(), key, format!("must lie in 1..=100000, got {k}"));
+    }
+    Ok(k as usize)
 }
 
 fn positive(l: &Lines<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
@@ -882,18 +929,31 @@ impl SceneFile {
         if matches!(drive, DriveChoice::ConstantForce(_)) && scheme == SchemeChoice::NoSplitting {
             return l.invalid(0..0, "scheme.kind", "must be \"time-stepped\", \"euler\" or \"strang\" with drive.kind = \"constant-force\": its momentum-keeping correction (MS (62)) couples all particles at every step, which the lazy no-splitting scheme cannot do");
         }
-        let histogram = match &self.histogram {
+        let shells = |h: &Option<HistogramSpec>, table: &str| -> Result<_, Error> {
+            let Some(h) = h else { return Ok(None) };
+            let key = format!("{table}.shells");
+            let k = count(&l, &h.shells, &key)?;
+            Ok(Some((
+                k,
+                positive(&l, &h.radius, &format!("{table}.radius"))?,
+            )))
+        };
+        let histogram = shells(&self.histogram, "histogram")?;
+        let reduced_histogram = shells(&self.reduced_histogram, "reduced_histogram")?;
+        let marginal_histogram = match &self.marginal_histogram {
             None => None,
             Some(h) => {
-                let k = *h.shells.get_ref();
-                if !(1..=100_000).contains(&k) {
+                let axis = *h.axis.get_ref();
+                if !(1..=3).contains(&axis) {
                     return l.invalid(
-                        h.shells.span(),
-                        "histogram.shells",
-                        format!("must lie in 1..=100000, got {k}"),
+                        h.axis.span(),
+                        "marginal_histogram.axis",
+                        format!("must be 1, 2 or 3 (the velocity component), got {axis}"),
                     );
                 }
-                Some((k as usize, positive(&l, &h.radius, "histogram.radius")?))
+                let k = count(&l, &h.bins, "marginal_histogram.bins")?;
+                let r = positive(&l, &h.radius, "marginal_histogram.radius")?;
+                Some((axis as usize - 1, k, r))
             }
         };
         if impact_speed.is_some() && collisional_pairs > 0 {
@@ -934,6 +994,8 @@ impl SceneFile {
             steady_from,
             collisional_pairs,
             histogram,
+            reduced_histogram,
+            marginal_histogram,
             ensembles: m as u64,
             seed: seed as u64,
         })

@@ -50,6 +50,15 @@ impl Accumulator {
         }
     }
 
+    /// The statistics of the quantities in `range` alone.
+    pub fn slice(&self, range: std::ops::Range<usize>) -> Accumulator {
+        Accumulator {
+            count: self.count,
+            mean: self.mean[range.clone()].to_vec(),
+            m2: self.m2[range].to_vec(),
+        }
+    }
+
     /// Merges another accumulator (Chan, Golub, LeVeque 1979).
     pub fn merge(&mut self, o: &Accumulator) {
         if o.count == 0 {

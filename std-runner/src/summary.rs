@@ -79,6 +79,49 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             }
         }
     }
+    if let Some(r) = crate::distribution::reduced(scene, stats) {
+        let _ = writeln!(
+            s,
+            "\nreduced distribution (MS), c = |v - V| / v0, a2 = {:.5} +- {:.1e}:",
+            r.a2.0, r.a2.1
+        );
+        if let Some(t) = &r.tail {
+            let _ = writeln!(
+                s,
+                "  tail law {}: f(c) ~ K exp(-A c^{}), A = {:.4} (mu2 from {})",
+                t.equation, t.power, t.amplitude, t.mu2_source
+            );
+        }
+        let _ = writeln!(
+            s,
+            "  {:>6} {:>22} {:>22} {:>9} {:>11}",
+            "c", "f/phi", "Delta (MS (45))", "S2(c^2)", "G(c)"
+        );
+        let k = r.shells.len() - 1;
+        let c_max = r.shells[k].c_lo;
+        for target in [0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0] {
+            if target >= c_max {
+                break;
+            }
+            let i = ((target / c_max * k as f64) as usize).min(k - 1);
+            let sh = &r.shells[i];
+            let mid = 0.5 * (sh.c_lo + sh.c_hi);
+            let _ = writeln!(
+                s,
+                "  {:>6.3} {:>11.4} +- {:<8.1e} {:>11.4} +- {:<8.1e} {:>9.4} {:>11.4}",
+                mid, sh.ratio.0, sh.ratio.1, sh.delta.0, sh.delta.1, sh.s2, sh.g
+            );
+        }
+    }
+    if let Some(m) = crate::distribution::marginal(stats) {
+        let _ = writeln!(
+            s,
+            "\nmarginal distribution of v_{} (BRS Figure 4) at t = {} and t = {}: marginal.csv, marginal.svg",
+            m.axis + 1,
+            m.times.0,
+            m.times.1
+        );
+    }
     if let Some(st) = &stats.steady {
         let _ = writeln!(
             s,

@@ -79,6 +79,32 @@ fn times_out_of_order() {
 }
 
 #[test]
+fn histogram_tables_are_validated() {
+    let e = err(&format!(
+        "{GOOD}[marginal_histogram]\naxis = 4\nbins = 10\nradius = 3.0\n"
+    ));
+    assert!(
+        e.contains("bad.toml:13: `marginal_histogram.axis` must be 1, 2 or 3"),
+        "{e}"
+    );
+    let e = err(&format!(
+        "{GOOD}[reduced_histogram]\nshells = 0\nradius = 3.0\n"
+    ));
+    assert!(
+        e.contains("bad.toml:13: `reduced_histogram.shells` must lie in 1..=100000, got 0"),
+        "{e}"
+    );
+    let e = err(&format!(
+        "{GOOD}[reduced_histogram]\nshells = 10\nradius = -1.0\n"
+    ));
+    assert!(e.contains("bad.toml:14: `reduced_histogram.radius`"), "{e}");
+    let e = err(&format!(
+        "{GOOD}[marginal_histogram]\nbins = 10\nradius = 3.0\nbin = 2\n"
+    ));
+    assert!(e.contains("unknown field `bin`"), "{e}");
+}
+
+#[test]
 fn kernel_specific_keys() {
     let e = err(&GOOD.replace("kernel = \"maxwell\"", "kernel = \"vhs\""));
     assert!(e.contains("`collisions.lambda` is required"), "{e}");
