@@ -433,12 +433,21 @@ pub fn write_distribution_charts(
     }
     if let Some(r) = reduced {
         let bounded: Vec<_> = r.shells.iter().filter(|s| s.c_hi.is_finite()).collect();
-        // Delta(c) is drawn where it is resolved: up to the first shell whose weight has a
-        // relative half-width above 20% (MS Figures 2, 5, 9 stop near c = 3 for that reason).
-        let resolved = bounded
+        // Delta(c) is drawn where it is resolved: shells whose weight has a relative
+        // half-width below 20% (MS Figures 2, 5, 9 stop near c = 3 for that reason), and
+        // S_2 over the same range.
+        let ok = |s: &crate::distribution::ReducedShell| s.f.0 > 0.0 && s.f.1 < 0.2 * s.f.0;
+        let c_top = bounded
             .iter()
-            .position(|s| !(s.f.0 > 0.0 && s.f.1 < 0.2 * s.f.0))
-            .unwrap_or(bounded.len());
+            .filter(|s| ok(s))
+            .map(|s| s.c_hi)
+            .fold(0.0, f64::max);
+        let resolved_delta: Vec<(f64, f64, f64)> = bounded
+            .iter()
+            .filter(|s| ok(s))
+            .map(|s| (0.5 * (s.c_lo + s.c_hi), s.delta.0, s.delta.1))
+            .collect();
+        let resolved = bounded.iter().take_while(|s| s.c_hi <= c_top).count();
         let mid = |s: &crate::distribution::ReducedShell| 0.5 * (s.c_lo + s.c_hi);
         let run = |f: &dyn Fn(&crate::distribution::ReducedShell) -> (f64, f64)| {
             bounded
@@ -488,7 +497,7 @@ pub fn write_distribution_charts(
                 &[
                     Series {
                         label: "run, 99.9% bars".into(),
-                        points: run(&|s| s.delta)[..resolved].to_vec(),
+                        points: resolved_delta,
                         style: Style::Points,
                         color: BLUE,
                     },

@@ -310,6 +310,8 @@ pub struct RunStats {
     pub ensembles: u64,
     /// Wall time.
     pub wall: Duration,
+    /// CPU time of the process during the run (all threads).
+    pub cpu: Duration,
     /// Threads used.
     pub threads: usize,
     /// Steady-state averages, when the scene asks for them.
@@ -466,6 +468,7 @@ pub fn run_interruptible(
         threads
     };
     let start = Instant::now();
+    let cpu0 = cpu_time::ProcessTime::try_now().ok();
     let (acc, st, hist, counts, ensembles) = with_engine(
         scene,
         EnsembleJob {
@@ -498,6 +501,7 @@ pub fn run_interruptible(
         counts,
         ensembles,
         wall: start.elapsed(),
+        cpu: cpu0.map_or(Duration::ZERO, |c| c.elapsed()),
         threads,
         steady,
         histogram,

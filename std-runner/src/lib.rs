@@ -4,6 +4,7 @@
 //! deterministic streams, statistics with 99.9% confidence intervals, exact references and
 //! output files. The `gdsmc` command is a thin shell over this library.
 
+pub mod bench;
 pub mod charts;
 pub mod columns;
 pub mod distribution;

@@ -92,6 +92,58 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Measure speed: the hot loops, work against precision, thread scaling.
+    #[command(subcommand)]
+    Bench(Bench),
+}
+
+#[derive(Subcommand)]
+enum Bench {
+    /// Throughput of the no-splitting loop (n = 10^3 ... 10^7, three kernels, heated
+    /// alpha = 0.5 and elastic alpha = 1), the batch kick and moment kernels, and the
+    /// machine's limits (random numbers per second, random reads per second).
+    ///
+    /// One line per case:
+    ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y>
+    ///   case=<name> n=<n> particles_per_s=<x>
+    #[command(verbatim_doc_comment)]
+    Throughput {
+        /// Particle numbers of the event-loop cases (comma-separated).
+        #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000, 10_000_000])]
+        sizes: Vec<usize>,
+        /// Measuring time per case, seconds.
+        #[arg(long, default_value_t = 1.5)]
+        seconds: f64,
+    },
+    /// Error against CPU time for no splitting, Strang and Euler splitting over a ladder of
+    /// n and time steps (RW Section 4.2), on a steady Maxwell-gas scene such as
+    /// scenes/rw-steady.toml. Writes work_precision.csv and work_precision.svg and prints the
+    /// CPU cost of a 1% error per scheme and its ratio to no splitting (RW: Euler about 100).
+    WorkPrecision {
+        /// The scene (a Maxwell gas with white noise and observe.steady_from).
+        scene: PathBuf,
+        /// Independent runs per configuration (each one ensemble, as RW).
+        #[arg(long, default_value_t = 8)]
+        runs: u64,
+        /// A small ladder (n <= 4096) for a quick look.
+        #[arg(long)]
+        quick: bool,
+        /// Worker threads (default: all cores).
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
+        /// Output directory (default: out/work-precision).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// The same run on 1 thread and on all cores: the speed-up, and a check that the
+    /// statistics are bit-identical.
+    Scaling {
+        /// The scene.
+        scene: PathBuf,
+        /// Threads of the parallel run (default: all cores).
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
+    },
 }
 
 fn main() -> ExitCode {
@@ -194,6 +246,78 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
             seed,
             out,
         } => reproduce(&names, quick, threads, seed, out),
+        Command::Bench(b) => bench(b),
+    }
+}
+
+fn bench(b: Bench) -> Result<(), gdsmc::Error> {
+    use gdsmc::bench;
+    match b {
+        Bench::Throughput { sizes, seconds } => {
+            let o = bench::throughput::Options {
+                sizes,
+                budget: std::time::Duration::from_secs_f64(seconds.max(0.01)),
+            };
+            bench::throughput::run(&o, |l| println!("{l}"));
+            Ok(())
+        }
+        Bench::WorkPrecision {
+            scene: path,
+            runs,
+            quick,
+            threads,
+            out,
+        } => {
+            let sc = scene::load(&path)?;
+            let ladder = bench::work_precision::default_ladder(quick);
+            println!(
+                "{:<13} {:>7} {:>6} {:>5} {:>12} {:>22} {:>12} {:>12}",
+                "scheme", "n", "K", "runs", "cpu s/run", "T mean +- 99.9%", "T exact", "error"
+            );
+            let points = bench::work_precision::measure(&sc, &ladder, runs, threads, |p| {
+                let k = if p.config.dt > 0.0 {
+                    format!("{}", (8.0 / p.config.dt).round())
+                } else {
+                    "-".into()
+                };
+                println!(
+                    "{:<13} {:>7} {:>6} {:>5} {:>12.4e} {:>11.5} +- {:<8.1e} {:>12.5} {:>12.3e}",
+                    p.config.scheme,
+                    p.config.n,
+                    k,
+                    p.runs,
+                    p.cpu,
+                    p.mean.0,
+                    p.mean.1,
+                    p.exact_mean,
+                    p.error
+                );
+            })?;
+            let dir = out.unwrap_or_else(|| PathBuf::from("out").join("work-precision"));
+            let text = bench::work_precision::write(&dir, &sc.name, &points)?;
+            print!("\n{text}");
+            println!("wrote {}", dir.join("work_precision.svg").display());
+            Ok(())
+        }
+        Bench::Scaling {
+            scene: path,
+            threads,
+        } => {
+            let sc = scene::load(&path)?;
+            let k = if threads == 0 {
+                std::thread::available_parallelism().map_or(1, |n| n.get())
+            } else {
+                threads
+            };
+            let (one, many, same) = bench::scaling::measure(&sc, k)?;
+            println!(
+                "case=ensemble-scaling scene={} ensembles={} threads=1 wall_s={one:.3} threads={k} wall_s={many:.3} speedup={:.2} bit_identical={same}",
+                sc.name,
+                sc.ensembles,
+                one / many
+            );
+            Ok(())
+        }
     }
 }
 

@@ -175,6 +175,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         "seed": scene.seed,
         "threads": stats.threads,
         "wall_seconds": stats.wall.as_secs_f64(),
+        "cpu_seconds": stats.cpu.as_secs_f64(),
         "counts": {
             "candidates": c.candidates,
             "collisions": c.collisions,

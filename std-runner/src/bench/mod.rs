@@ -1,0 +1,6 @@
+//! `gdsmc bench`: throughput of the hot loops beside the machine's limits, work against
+//! precision of the schemes, and the scaling of ensembles with threads.
+
+pub mod scaling;
+pub mod throughput;
+pub mod work_precision;

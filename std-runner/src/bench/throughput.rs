@@ -1,0 +1,251 @@
+//! `gdsmc bench throughput`: the speed of the hot loops, one line per case, beside the
+//! machine's own limits (random numbers per second, random reads per second).
+//!
+//! Lines have the form `case=<name> kernel=<k> n=<n> collisions_per_s=<x> attempts_per_s=<y>`
+//! for the no-splitting event loop (GRW Section 3 / RW Algorithm 3), and
+//! `case=<name> n=<n> particles_per_s=<x>` (or `numbers_per_s`, `reads_per_s`) for the
+//! batch kernels and the limits.
+
+use gdsmc_core::batch::{kick, sums};
+use gdsmc_core::drive::{Drive, NoDrive, WhiteNoise};
+use gdsmc_core::engine::NoSplitting;
+use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
+use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::restitution::Constant;
+use gdsmc_core::rng::{Rng, seeded, uniform_index};
+use gdsmc_core::sample::{Maxwellian, standard_normal};
+use std::f64::consts::PI;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+/// What to measure.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Particle numbers of the event-loop cases (default 10^3, 10^5, 10^6, 10^7).
+    pub sizes: Vec<usize>,
+    /// Minimum measuring time per case.
+    pub budget: Duration,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            sizes: vec![1_000, 100_000, 1_000_000, 10_000_000],
+            budget: Duration::from_millis(1500),
+        }
+    }
+}
+
+fn system(n: usize, seed: u64) -> Vec<Particle> {
+    let mut buf = vec![Particle::default(); n];
+    let mut p = Particles::new(&mut buf).expect("n >= 2");
+    let mut rng = seeded(seed);
+    let f0 = Maxwellian::standard();
+    p.fill_with(0.0, || f0.sample(&mut rng));
+    buf
+}
+
+/// Runs the event loop in growing time steps until `budget` has passed; returns
+/// (collisions per second, attempts per second).
+fn event_loop<K: Kernel, D: Drive>(
+    kernel: K,
+    drive: D,
+    alpha: f64,
+    n: usize,
+    budget: Duration,
+) -> (f64, f64) {
+    let mut buf = system(n, 1);
+    let mut p = Particles::new(&mut buf).expect("n >= 2");
+    let mut rng = seeded(2);
+    let law = Constant::new(alpha).expect("alpha in (0, 1]");
+    let (mut e, _) = NoSplitting::start(kernel, drive, law, &mut p, 0.0).expect("finite start");
+    // Each advance ends with an observation (O(n)); steps of at least 4 n attempts keep its
+    // share small.
+    let mut dt = 1e-3;
+    loop {
+        let c0 = e.counts();
+        let t = e.time() + dt;
+        e.advance_to(&mut p, t, &mut rng).expect("finite");
+        if e.counts().candidates - c0.candidates >= 4 * n as u64 {
+            break;
+        }
+        dt *= 2.0;
+    }
+    let c0 = e.counts();
+    let start = Instant::now();
+    while start.elapsed() < budget {
+        let t = e.time() + dt;
+        black_box(e.advance_to(&mut p, t, &mut rng).expect("finite"));
+    }
+    let s = start.elapsed().as_secs_f64();
+    let c = e.counts();
+    (
+        (c.collisions - c0.collisions) as f64 / s,
+        (c.candidates - c0.candidates) as f64 / s,
+    )
+}
+
+/// Repeats `f` (which handles `per` items) until `budget` has passed; items per second.
+fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
+    f();
+    let start = Instant::now();
+    let mut k = 0u64;
+    while start.elapsed() < budget {
+        f();
+        k += 1;
+    }
+    (k as f64 * per as f64) / start.elapsed().as_secs_f64()
+}
+
+/// One event-loop case: `(alpha, heated)` to (collisions, attempts) per second.
+type LoopCase<'a> = dyn Fn(f64, bool) -> (f64, f64) + 'a;
+
+/// Every case, as output lines, handed to `line` as they are measured.
+pub fn run(o: &Options, mut line: impl FnMut(String)) {
+    let g = 4.0;
+    let c = 1.0 / (4.0 * PI);
+    for &n in &o.sizes {
+        let kernels: [(&str, &LoopCase); 3] = [
+            ("maxwell", &|a, heated| {
+                let k = Maxwell::new(g, c).expect("valid");
+                if heated {
+                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
+                } else {
+                    event_loop(k, NoDrive, a, n, o.budget)
+                }
+            }),
+            ("hard-spheres", &|a, heated| {
+                let k = HardSpheres::new(g, c).expect("valid");
+                if heated {
+                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
+                } else {
+                    event_loop(k, NoDrive, a, n, o.budget)
+                }
+            }),
+            ("vhs", &|a, heated| {
+                let k = Vhs::new(g, c, 0.5).expect("valid");
+                if heated {
+                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
+                } else {
+                    event_loop(k, NoDrive, a, n, o.budget)
+                }
+            }),
+        ];
+        for (name, f) in kernels {
+            for (case, alpha, heated) in [
+                ("nosplit-white-noise-alpha0.5", 0.5, true),
+                ("nosplit-elastic-alpha1", 1.0, false),
+            ] {
+                let (coll, att) = f(alpha, heated);
+                line(format!(
+                    "case={case} kernel={name} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e}"
+                ));
+            }
+        }
+    }
+    for n in [1_000usize, 1_000_000] {
+        let mut buf = system(n, 3);
+        let mut p = Particles::new(&mut buf).expect("n >= 2");
+        let mut rng = seeded(4);
+        let mut t = 0.0;
+        let r = rate(o.budget, n, || {
+            t += 1e-3;
+            kick::white_noise_kick_all(2.0, &mut p, t, &mut rng);
+        });
+        line(format!(
+            "case=kick-white-noise n={n} particles_per_s={r:.4e}"
+        ));
+        let buf = system(n, 5);
+        let r = rate(o.budget, n, || {
+            black_box(sums::accumulate(&buf));
+        });
+        line(format!("case=moment-sums n={n} particles_per_s={r:.4e}"));
+    }
+    // The machine's limits for the loops above.
+    let mut rng = seeded(6);
+    let r = rate(o.budget, 1 << 16, || {
+        let mut x = 0u64;
+        for _ in 0..1 << 16 {
+            x ^= rng.next_u64();
+        }
+        black_box(x);
+    });
+    line(format!("case=limit-xoshiro256pp numbers_per_s={r:.4e}"));
+    let r = rate(o.budget, 1 << 16, || {
+        let mut x = 0.0;
+        for _ in 0..1 << 16 {
+            x += standard_normal(&mut rng);
+        }
+        black_box(x);
+    });
+    line(format!("case=limit-normal-ziggurat numbers_per_s={r:.4e}"));
+    for n in [1_000usize, 10_000_000] {
+        let buf = system(n, 7);
+        // Independent random reads (the addresses do not depend on earlier loads), as the
+        // event loop's pair choice: bounded by memory-level parallelism, not latency alone.
+        let r = rate(o.budget, 1 << 16, || {
+            let mut x = 0.0;
+            for _ in 0..1 << 16 {
+                x += buf[uniform_index(&mut rng, n)].vx;
+            }
+            black_box(x);
+        });
+        line(format!("case=limit-random-read n={n} reads_per_s={r:.4e}"));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lines_have_the_documented_form() {
+        let o = Options {
+            sizes: vec![64],
+            budget: Duration::from_millis(5),
+        };
+        let mut lines = Vec::new();
+        run(&o, |l| lines.push(l));
+        let loops: Vec<_> = lines
+            .iter()
+            .filter(|l| l.starts_with("case=nosplit"))
+            .collect();
+        assert_eq!(loops.len(), 6);
+        for l in &loops {
+            let keys: Vec<&str> = l
+                .split(' ')
+                .map(|kv| kv.split('=').next().unwrap())
+                .collect();
+            assert_eq!(
+                keys,
+                ["case", "kernel", "n", "collisions_per_s", "attempts_per_s"],
+                "{l}"
+            );
+            let num = |k: &str| -> f64 {
+                l.split(' ')
+                    .find_map(|kv| kv.strip_prefix(&format!("{k}=")))
+                    .unwrap()
+                    .parse()
+                    .unwrap()
+            };
+            assert!(num("attempts_per_s") >= num("collisions_per_s"));
+            assert!(num("collisions_per_s") > 0.0);
+        }
+        assert!(
+            lines
+                .iter()
+                .any(|l| l.contains("kernel=maxwell n=64 ") && l.contains("elastic-alpha1"))
+        );
+        for k in [
+            "kick-white-noise",
+            "moment-sums",
+            "limit-xoshiro256pp",
+            "limit-random-read",
+        ] {
+            assert!(
+                lines.iter().any(|l| l.starts_with(&format!("case={k}"))),
+                "{k}"
+            );
+        }
+    }
+}

@@ -1,0 +1,273 @@
+//! `gdsmc bench work-precision SCENE`: error against CPU time for each scheme over a ladder of
+//! its parameters (RW Section 4.2: no splitting, Strang and Euler splitting).
+//!
+//! For a steady-state scene with an exact stationary temperature (the Maxwell gas, RW (25)),
+//! every configuration runs `R` independent steady-state runs (each one ensemble, as RW). Its
+//! error is the 99.9% bound of the error one run makes, `|mean - T_inf| + 3.2 sd`, relative
+//! to `T_inf`, with `mean` and `sd` over the R runs (the first term is the scheme's systematic
+//! error, the second the noise of one run); its cost is the CPU time of one run. The cost of a
+//! 1% error on each curve is read off by log-log interpolation, and the ratios to the
+//! no-splitting scheme are RW's efficiency comparison (RW: Euler about 100, Strang about 2).
+
+use crate::charts::{Series, Style, profile_svg};
+use crate::ensemble;
+use crate::error::Error;
+use crate::output::write_atomic;
+use crate::references::maxwell_temperature;
+use crate::scene::{Scene, SchemeChoice};
+use crate::stats::LAMBDA_999;
+use plotters::style::{BLUE, GREEN, RED};
+use std::path::Path;
+
+/// One configuration: scheme, size, time step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Config {
+    /// Scheme name (`no-splitting`, `strang`, `euler`).
+    pub scheme: &'static str,
+    /// Particles.
+    pub n: usize,
+    /// Time step (0 for no splitting).
+    pub dt: f64,
+}
+
+/// The measured point of a configuration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Point {
+    /// The configuration.
+    pub config: Config,
+    /// Runs.
+    pub runs: u64,
+    /// CPU seconds per run.
+    pub cpu: f64,
+    /// Mean of the runs' steady temperature and its 99.9% half-width.
+    pub mean: (f64, f64),
+    /// Standard deviation of one run's steady temperature.
+    pub sd: f64,
+    /// The exact expected value of the estimator (finite n, time step), reference.rs.
+    pub exact_mean: f64,
+    /// Relative error bound of one run: `(|mean - T_inf| + 3.2 sd) / T_inf`.
+    pub error: f64,
+}
+
+/// The default ladder for RW's steady state (RW Tables 3-5; `K = 8 / dt`).
+pub fn default_ladder(quick: bool) -> Vec<Config> {
+    let ns: &[usize] = if quick {
+        &[256, 1024, 4096]
+    } else {
+        &[256, 1024, 4096, 16384, 65536]
+    };
+    let (n_split, ks_strang, ks_euler): (usize, &[u32], &[u32]) = if quick {
+        (4096, &[4, 8, 16], &[32, 128, 512])
+    } else {
+        (65536, &[8, 16, 32, 64], &[32, 256, 512, 2048])
+    };
+    let mut v: Vec<Config> = ns
+        .iter()
+        .map(|&n| Config {
+            scheme: "no-splitting",
+            n,
+            dt: 0.0,
+        })
+        .collect();
+    for &k in ks_strang {
+        v.push(Config {
+            scheme: "strang",
+            n: n_split,
+            dt: 8.0 / k as f64,
+        });
+    }
+    for &k in ks_euler {
+        v.push(Config {
+            scheme: "euler",
+            n: n_split,
+            dt: 8.0 / k as f64,
+        });
+    }
+    v
+}
+
+/// Measures every configuration with `runs` runs each; `done` is called after each.
+pub fn measure(
+    base: &Scene,
+    ladder: &[Config],
+    runs: u64,
+    threads: usize,
+    mut done: impl FnMut(&Point),
+) -> Result<Vec<Point>, Error> {
+    let mt = maxwell_temperature(base).ok_or_else(|| Error::Invalid {
+        path: "work-precision".into(),
+        line: 0,
+        key: base.name.clone(),
+        message: "needs a Maxwell-kernel scene with an exact stationary temperature (white noise)"
+            .into(),
+    })?;
+    let Some(first) = base.steady_from else {
+        return Err(Error::Invalid {
+            path: "work-precision".into(),
+            line: 0,
+            key: format!("{}: observe.steady_from", base.name),
+            message: "must be set: the error is that of the steady-state average".into(),
+        });
+    };
+    let t_inf = mt.stationary();
+    let mut out = Vec::new();
+    for (k, c) in ladder.iter().enumerate() {
+        let mut s = base.clone();
+        s.n = c.n;
+        s.ensembles = runs;
+        s.seed = base.seed.wrapping_add(k as u64);
+        s.scheme = match c.scheme {
+            "strang" => SchemeChoice::Strang(c.dt),
+            "euler" => SchemeChoice::Euler(c.dt),
+            _ => SchemeChoice::NoSplitting,
+        };
+        let st = ensemble::run(&s, threads, &|_| {})?;
+        let steady = st.steady.as_ref().expect("steady_from set");
+        let col = st.col("T").expect("the raw temperature column");
+        let mean = (steady.acc.mean(col), steady.acc.ci(col));
+        let sd = steady.acc.variance(col).sqrt();
+        let pts = &s.times[first..];
+        let exact_mean = pts
+            .iter()
+            .map(|&t| {
+                let bulk = match s.scheme {
+                    SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(s.n, dt, true, t),
+                    SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(s.n, dt, false, t),
+                    _ => mt.finite_n_bulk_mean(s.n, t),
+                };
+                bulk + mt.bulk_to_raw(s.n, t)
+            })
+            .sum::<f64>()
+            / pts.len() as f64;
+        let p = Point {
+            config: *c,
+            runs,
+            cpu: st.cpu.as_secs_f64() / runs as f64,
+            mean,
+            sd,
+            exact_mean,
+            error: ((mean.0 - t_inf).abs() + LAMBDA_999 * sd) / t_inf,
+        };
+        done(&p);
+        out.push(p);
+    }
+    Ok(out)
+}
+
+/// The CPU cost at which a scheme's curve first reaches `target` relative error: with the
+/// points ordered by cost, log-log interpolation between the first point at or below the
+/// target and the one before it; `None` when no point reaches it.
+pub fn cost_at(points: &[Point], scheme: &str, target: f64) -> Option<f64> {
+    let mut v: Vec<&Point> = points
+        .iter()
+        .filter(|p| p.config.scheme == scheme)
+        .collect();
+    v.sort_by(|a, b| a.cpu.total_cmp(&b.cpu));
+    let i = v.iter().position(|p| p.error <= target)?;
+    if i == 0 {
+        return Some(v[0].cpu);
+    }
+    let (a, b) = (v[i - 1], v[i]);
+    let f = (target.ln() - a.error.ln()) / (b.error.ln() - a.error.ln());
+    Some((a.cpu.ln() + f * (b.cpu.ln() - a.cpu.ln())).exp())
+}
+
+/// The CSV of the points.
+pub fn csv(points: &[Point]) -> Result<Vec<u8>, csv::Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "scheme",
+        "n",
+        "dt",
+        "K",
+        "runs",
+        "cpu_s_per_run",
+        "T_mean",
+        "T_mean_ci",
+        "T_sd_one_run",
+        "T_exact_mean",
+        "error_bound",
+    ])?;
+    for p in points {
+        let k = if p.config.dt > 0.0 {
+            format!("{}", (8.0 / p.config.dt).round())
+        } else {
+            String::new()
+        };
+        w.write_record([
+            p.config.scheme.to_string(),
+            p.config.n.to_string(),
+            format!("{:?}", p.config.dt),
+            k,
+            p.runs.to_string(),
+            format!("{:?}", p.cpu),
+            format!("{:?}", p.mean.0),
+            format!("{:?}", p.mean.1),
+            format!("{:?}", p.sd),
+            format!("{:?}", p.exact_mean),
+            format!("{:?}", p.error),
+        ])?;
+    }
+    w.into_inner().map_err(|e| e.into_error().into())
+}
+
+/// The chart: error bound against CPU seconds per run, both on log scales (the x axis as
+/// log10), a curve per scheme.
+pub fn chart(title: &str, points: &[Point]) -> Result<String, String> {
+    let series: Vec<Series> = [("no-splitting", BLUE), ("strang", GREEN), ("euler", RED)]
+        .into_iter()
+        .map(|(scheme, color)| {
+            let mut pts: Vec<(f64, f64, f64)> = points
+                .iter()
+                .filter(|p| p.config.scheme == scheme && p.cpu > 0.0)
+                .map(|p| (p.cpu.log10(), p.error, 0.0))
+                .collect();
+            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+            Series {
+                label: scheme.to_string(),
+                points: pts,
+                style: Style::Line,
+                color,
+            }
+        })
+        .collect();
+    profile_svg(
+        title,
+        "log10 CPU seconds per run",
+        "relative error of one run (99.9% bound)",
+        true,
+        &series,
+    )
+}
+
+/// Writes work_precision.csv and work_precision.svg into `dir`; returns the summary text.
+pub fn write(dir: &Path, scene: &str, points: &[Point]) -> Result<String, Error> {
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let path = dir.join("work_precision.csv");
+    let bytes = csv(points).map_err(|e| Error::Write {
+        path: path.clone(),
+        source: std::io::Error::other(e.to_string()),
+    })?;
+    write_atomic(&path, &bytes)?;
+    match chart(&format!("{scene}: work against precision (RW 4.2)"), points) {
+        Ok(svg) => write_atomic(&dir.join("work_precision.svg"), svg.as_bytes())?,
+        Err(e) => eprintln!("work_precision.svg: not drawn ({e})"),
+    }
+    let mut s = String::new();
+    let base = cost_at(points, "no-splitting", 0.01);
+    for scheme in ["no-splitting", "strang", "euler"] {
+        let c = cost_at(points, scheme, 0.01);
+        let ratio = match (c, base) {
+            (Some(c), Some(b)) => format!("{:.1}", c / b),
+            _ => "-".into(),
+        };
+        s.push_str(&format!(
+            "{scheme:<13} CPU per run at 1% error: {:>12}   ratio to no splitting: {ratio}\n",
+            c.map_or("not reached".into(), |c| format!("{c:.3e} s"))
+        ));
+    }
+    Ok(s)
+}
