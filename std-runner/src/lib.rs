@@ -19,5 +19,6 @@ pub mod scene;
 pub mod stats;
 pub mod summary;
 pub mod tails;
+pub mod warnings;
 
 pub use error::Error;

@@ -128,6 +128,9 @@ enum Bench {
         /// A small ladder (n <= 4096) for a quick look.
         #[arg(long)]
         quick: bool,
+        /// The relative error at which the costs are compared (RW: 0.01).
+        #[arg(long, default_value_t = 0.01)]
+        target: f64,
         /// Worker threads (default: all cores).
         #[arg(long, default_value_t = 0)]
         threads: usize,
@@ -265,6 +268,7 @@ fn bench(b: Bench) -> Result<(), gdsmc::Error> {
             scene: path,
             runs,
             quick,
+            target,
             threads,
             out,
         } => {
@@ -294,7 +298,7 @@ fn bench(b: Bench) -> Result<(), gdsmc::Error> {
                 );
             })?;
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join("work-precision"));
-            let text = bench::work_precision::write(&dir, &sc.name, &points)?;
+            let text = bench::work_precision::write(&dir, &sc.name, &points, target)?;
             print!("\n{text}");
             println!("wrote {}", dir.join("work_precision.svg").display());
             Ok(())

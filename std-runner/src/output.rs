@@ -161,7 +161,12 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "file": "reduced.csv",
         })
     });
+    let warnings: Vec<serde_json::Value> = crate::warnings::check(scene, stats)
+        .into_iter()
+        .map(|w| serde_json::json!({ "code": w.code, "message": w.message }))
+        .collect();
     serde_json::json!({
+        "warnings": warnings,
         "reduced_distribution": reduced,
         "tail": tail,
         "steady_state": steady,

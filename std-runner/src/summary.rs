@@ -123,6 +123,16 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             m.times.1
         );
     }
+    let warnings = crate::warnings::check(scene, stats);
+    if !warnings.is_empty() {
+        let _ = writeln!(
+            s,
+            "\nWARNINGS (the diagnostics say these numbers need care):"
+        );
+        for w in &warnings {
+            let _ = writeln!(s, "  [{}] {}", w.code, w.message);
+        }
+    }
     if let Some(st) = &stats.steady {
         let _ = writeln!(
             s,

@@ -1,0 +1,125 @@
+//! Warnings: where a run's own diagnostics say its numbers cannot be trusted as they stand.
+//! Each names the diagnostic that fired, the size of the expected error and what to do; the
+//! stability study in docs/stability.md lists them with the failures they reveal.
+
+use crate::ensemble::RunStats;
+use crate::scene::{DriveChoice, Scene, SchemeChoice};
+
+/// Expected relative errors above this fire the step-size warnings.
+pub const STEP_ERROR: f64 = 0.01;
+/// Truncated-kernel events above this fraction of candidates fire the majorant warning.
+pub const OVERSHOOT_FRACTION: f64 = 1e-5;
+/// Clamped restitution coefficients above this fraction of collisions fire a warning.
+pub const CLAMPED_FRACTION: f64 = 1e-4;
+/// Peculiar speeds below this fraction of the bulk speed lose digits in stored velocities.
+pub const PRECISION_RATIO: f64 = 1e-6;
+
+/// One warning.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Warning {
+    /// Short code: `splitting-step`, `time-step`, `majorant`, `restitution-clamped`,
+    /// `precision`.
+    pub code: &'static str,
+    /// What fired, how large the error is expected to be, and what to do.
+    pub message: String,
+}
+
+/// The energy relaxation rate `k = nu (1 - alpha^2) / 4` from the run's collision frequency
+/// per particle `nu = 2 N_coll / (n M t_end)` (for the Maxwell gas exactly GRW (13)'s
+/// `gamma pi C0 (1 - alpha^2)`; for other kernels the mean over the run).
+fn relaxation_rate(scene: &Scene, stats: &RunStats) -> Option<f64> {
+    // Every run starts at t = 0, whatever its first observation time.
+    let t_end = *stats.times.last()?;
+    if t_end <= 0.0 || stats.ensembles == 0 {
+        return None;
+    }
+    let nu =
+        2.0 * stats.counts.collisions as f64 / (scene.n as f64 * stats.ensembles as f64 * t_end);
+    Some(nu * (1.0 - scene.restitution * scene.restitution) / 4.0)
+}
+
+/// Every warning of a finished run.
+pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
+    let mut w = Vec::new();
+    let c = stats.counts;
+    // Splitting schemes: the stationary temperature of the Maxwell gas is off by exactly
+    // k dt / 2 (Euler) and (k dt)^2 / 24 (Strang) to leading order (reference.rs,
+    // splitting_bulk_mean; RW Tables 2-4 and 6).
+    if let (SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt), Some(k)) =
+        (scene.scheme, relaxation_rate(scene, stats))
+    {
+        let euler = matches!(scene.scheme, SchemeChoice::Euler(_));
+        let err = if euler {
+            k * dt / 2.0
+        } else {
+            (k * dt).powi(2) / 24.0
+        };
+        if err > STEP_ERROR {
+            w.push(Warning {
+                code: "splitting-step",
+                message: format!(
+                    "{} splitting with dt = {dt}: k dt = {:.3} (k = {k:.3}, the energy relaxation rate from the collision counts), so the temperature is expected off by about {:.1}% ({}; exact for the Maxwell gas, RW Tables 2-6). Use a smaller scheme.dt or the exact no-splitting scheme.",
+                    if euler { "Euler" } else { "Strang" },
+                    k * dt,
+                    100.0 * err,
+                    if euler { "k dt / 2" } else { "(k dt)^2 / 24" },
+                ),
+            });
+        }
+    }
+    // The MS time-stepped scheme decouples drive and collisions over h = f lambda / v0, an
+    // Euler-like splitting with k h = (1 - alpha^2) f / 4 per mean free time.
+    if let SchemeChoice::TimeStepped(f) = scene.scheme {
+        let a = scene.restitution;
+        let err = (1.0 - a * a) * f / 8.0;
+        if err > STEP_ERROR {
+            w.push(Warning {
+                code: "time-step",
+                message: format!(
+                    "time-stepped scheme with step_factor = {f}: the step is {f} mean free times, an Euler-like splitting error of about {:.1}% ((1 - alpha^2) f / 8). MS use 0.01.",
+                    100.0 * err
+                ),
+            });
+        }
+    }
+    if c.candidates > 0 && c.overshoots as f64 > OVERSHOOT_FRACTION * c.candidates as f64 {
+        w.push(Warning {
+            code: "majorant",
+            message: format!(
+                "{} of {} candidate pairs had a collision rate above the majorant that generated them (Umax of the no-splitting scheme, omega_max of the time-stepped scheme): the kernel was truncated there (RW (19)), which underweights the fastest pairs. Start from a larger majorant (time-stepped: a smaller scheme.step_factor or a start nearer the steady temperature).",
+                c.overshoots, c.candidates
+            ),
+        });
+    }
+    if c.collisions > 0 && c.clamped as f64 > CLAMPED_FRACTION * c.collisions as f64 {
+        w.push(Warning {
+            code: "restitution-clamped",
+            message: format!(
+                "{} of {} collisions had a restitution coefficient outside [0, 1] from the impact-speed law (BRS (9)-(10)), clamped: the law does not hold at these impact speeds; reduce beta0 or delta.",
+                c.clamped, c.collisions
+            ),
+        });
+    }
+    // Stored velocities keep about 16 digits of v = V + c; when |c| << |V| the peculiar
+    // velocities, and with them T_bulk, a2, a3 and crit, lose digits. The no-splitting
+    // scheme without drive stores a cooling gas rescaled about V and keeps every digit.
+    let rescaled = scene.scheme == SchemeChoice::NoSplitting && scene.drive == DriveChoice::None;
+    let (Some(tb), Some(vn), false) = (stats.col("T_bulk"), stats.col("V_norm"), rescaled) else {
+        return w;
+    };
+    for (ti, &t) in stats.times.iter().enumerate() {
+        let (temp, v) = (stats.mean(ti, tb), stats.mean(ti, vn));
+        let lost =
+            !temp.is_finite() || temp <= 0.0 || (v > 0.0 && temp.sqrt() < PRECISION_RATIO * v);
+        if lost {
+            w.push(Warning {
+                code: "precision",
+                message: format!(
+                    "at t = {t}: T_bulk = {temp:.3e} beside a bulk speed {v:.3e}: the peculiar velocities are below {PRECISION_RATIO:e} of the stored velocities (or underflowed), so T_bulk, a2, a3 and crit have lost digits from here on. The no-splitting scheme rescales a cooling gas (exact over any number of decades); the splitting schemes do not."
+                ),
+            });
+            break;
+        }
+    }
+    w
+}
