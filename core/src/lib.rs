@@ -33,7 +33,7 @@
 //! ```
 
 #![no_std]
-#![forbid(unsafe_code)]
+#![deny(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod batch;
@@ -46,6 +46,7 @@ pub mod kernel;
 pub mod math;
 pub mod moments;
 pub mod particles;
+pub mod prefetch;
 pub mod restitution;
 pub mod rng;
 pub mod sample;

@@ -98,6 +98,12 @@ impl<'a> Particles<'a> {
         self.p[i].velocity()
     }
 
+    /// Hints that particle `i` will be touched soon ([`crate::prefetch::prefetch`]).
+    #[inline(always)]
+    pub fn prefetch(&self, i: usize) {
+        crate::prefetch::prefetch(&self.p[i]);
+    }
+
     /// Sets the velocity of particle `i`.
     #[inline(always)]
     pub fn set_velocity(&mut self, i: usize, v: Vec3) {

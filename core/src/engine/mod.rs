@@ -2,6 +2,7 @@
 
 pub mod event;
 pub mod nosplit;
+pub mod pairs;
 pub mod splitting;
 pub mod time_stepped;
 

@@ -35,6 +35,7 @@
 //! collisions, and none of that bookkeeping is compiled in.
 
 use super::event::{Majorant, candidate};
+use super::pairs::PairsAhead;
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
@@ -42,7 +43,7 @@ use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
-use crate::rng::{Rng, uniform_pair};
+use crate::rng::Rng;
 use crate::sample::standard_exponential;
 use crate::vec3::Vec3;
 
@@ -59,6 +60,7 @@ pub struct NoSplitting<K, D, A> {
     scale: Real,
     offset: Vec3,
     rescale_below: Real,
+    pairs: PairsAhead,
 }
 
 /// A gas with no drive is rescaled when its stored temperature falls below this times
@@ -92,6 +94,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             scale: 1.0,
             offset: Vec3::ZERO,
             rescale_below: RESCALE_BELOW,
+            pairs: PairsAhead::default(),
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
@@ -166,7 +169,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                 break;
             }
             self.t = t_next;
-            let (i, j) = uniform_pair(rng, n);
+            let (i, j) = self.pairs.next(p, rng);
             self.drive.kick(p, i, t_next, rng);
             self.drive.kick(p, j, t_next, rng);
             let (k, a) = (&self.kernel, &self.restitution);

@@ -11,6 +11,7 @@
 //! Observation times must lie on the grid `t0 + k dt`.
 
 use super::event::{Majorant, candidate};
+use super::pairs::PairsAhead;
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
@@ -18,7 +19,7 @@ use crate::math::{Real, abs};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
-use crate::rng::{Rng, uniform_pair};
+use crate::rng::Rng;
 use crate::sample::standard_exponential;
 
 /// Which splitting: RW Algorithm 1 or 2.
@@ -42,6 +43,7 @@ pub struct Splitting<K, D, A> {
     steps: u64,
     maj: Majorant,
     counts: Counts,
+    pairs: PairsAhead,
 }
 
 impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
@@ -74,6 +76,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
             steps: 0,
             maj: Majorant::default(),
             counts: Counts::default(),
+            pairs: PairsAhead::default(),
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
@@ -160,7 +163,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
             if s.partial_cmp(&h) != Some(core::cmp::Ordering::Less) {
                 return;
             }
-            let (i, j) = uniform_pair(rng, n);
+            let (i, j) = self.pairs.next(p, rng);
             let (k, a) = (&self.kernel, &self.restitution);
             if candidate(k, a, p, i, j, &mut self.maj, false, &mut self.counts, rng) {
                 rate = self.kernel.majorant_rate(n, self.maj.umax);

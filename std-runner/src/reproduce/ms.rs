@@ -44,7 +44,7 @@ const GAUSSIAN_08: &str = "MS's 4.414 / 4.412 imply mu2 = 0.895 with a2 = -0.013
 
 fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
     let (n, m, pairs) = if o.quick {
-        (2048, 24, 20_000)
+        (4096, 16, 20_000)
     } else {
         (16384, 32, 100_000)
     };
