@@ -52,17 +52,24 @@ pub struct Point {
     pub error: f64,
 }
 
-/// The default ladder for RW's steady state (RW Tables 3-5; `K = 8 / dt`).
+/// The default ladder for RW's steady state (RW Tables 3-5; `K = 8 / dt`): no splitting over
+/// `n`, each splitting over `n` and `K` (its cheapest way to an error is read off the lower
+/// envelope of its points).
 pub fn default_ladder(quick: bool) -> Vec<Config> {
-    let ns: &[usize] = if quick {
-        &[256, 1024, 4096]
+    let (ns, ns_split, ks_strang, ks_euler): (&[usize], &[usize], &[u32], &[u32]) = if quick {
+        (
+            &[256, 1024, 4096],
+            &[1024, 4096],
+            &[4, 8, 16],
+            &[32, 128, 512],
+        )
     } else {
-        &[256, 1024, 4096, 16384, 65536]
-    };
-    let (n_split, ks_strang, ks_euler): (usize, &[u32], &[u32]) = if quick {
-        (4096, &[4, 8, 16], &[32, 128, 512])
-    } else {
-        (65536, &[8, 16, 32, 64], &[32, 256, 512, 2048])
+        (
+            &[256, 1024, 4096, 16384, 65536],
+            &[4096, 16384, 65536],
+            &[8, 16, 32, 64],
+            &[32, 256, 512, 2048],
+        )
     };
     let mut v: Vec<Config> = ns
         .iter()
@@ -72,21 +79,36 @@ pub fn default_ladder(quick: bool) -> Vec<Config> {
             dt: 0.0,
         })
         .collect();
-    for &k in ks_strang {
-        v.push(Config {
-            scheme: "strang",
-            n: n_split,
-            dt: 8.0 / k as f64,
-        });
-    }
-    for &k in ks_euler {
-        v.push(Config {
-            scheme: "euler",
-            n: n_split,
-            dt: 8.0 / k as f64,
-        });
+    for (scheme, ks) in [("strang", ks_strang), ("euler", ks_euler)] {
+        for &n in ns_split {
+            for &k in ks {
+                v.push(Config {
+                    scheme,
+                    n,
+                    dt: 8.0 / k as f64,
+                });
+            }
+        }
     }
     v
+}
+
+/// The lower envelope of a scheme's points: ordered by cost, each point that has a smaller
+/// error than every cheaper one (the cheapest way to each error the ladder offers).
+pub fn front(points: &[Point], scheme: &str) -> Vec<Point> {
+    let mut v: Vec<Point> = points
+        .iter()
+        .filter(|p| p.config.scheme == scheme)
+        .copied()
+        .collect();
+    v.sort_by(|a, b| a.cpu.total_cmp(&b.cpu));
+    let mut out: Vec<Point> = Vec::new();
+    for p in v {
+        if out.last().is_none_or(|q| p.error < q.error) {
+            out.push(p);
+        }
+    }
+    out
 }
 
 /// Measures every configuration with `runs` runs each; `done` is called after each.
@@ -154,15 +176,11 @@ pub fn measure(
     Ok(out)
 }
 
-/// The CPU cost at which a scheme's curve first reaches `target` relative error: with the
-/// points ordered by cost, log-log interpolation between the first point at or below the
-/// target and the one before it; `None` when no point reaches it.
+/// The CPU cost at which a scheme's lower envelope ([`front`]) reaches `target` relative
+/// error: log-log interpolation between the first envelope point at or below the target and
+/// the one before it; `None` when no point reaches it.
 pub fn cost_at(points: &[Point], scheme: &str, target: f64) -> Option<f64> {
-    let mut v: Vec<&Point> = points
-        .iter()
-        .filter(|p| p.config.scheme == scheme)
-        .collect();
-    v.sort_by(|a, b| a.cpu.total_cmp(&b.cpu));
+    let v = front(points, scheme);
     let i = v.iter().position(|p| p.error <= target)?;
     if i == 0 {
         return Some(v[0].cpu);
@@ -212,25 +230,34 @@ pub fn csv(points: &[Point]) -> Result<Vec<u8>, csv::Error> {
 }
 
 /// The chart: error bound against CPU seconds per run, both on log scales (the x axis as
-/// log10), a curve per scheme.
+/// log10): every configuration as a point, each scheme's lower envelope as a line.
 pub fn chart(title: &str, points: &[Point]) -> Result<String, String> {
-    let series: Vec<Series> = [("no-splitting", BLUE), ("strang", GREEN), ("euler", RED)]
-        .into_iter()
-        .map(|(scheme, color)| {
-            let mut pts: Vec<(f64, f64, f64)> = points
-                .iter()
-                .filter(|p| p.config.scheme == scheme && p.cpu > 0.0)
+    let mut series = Vec::new();
+    for (scheme, color) in [("no-splitting", BLUE), ("strang", GREEN), ("euler", RED)] {
+        let pts = |v: &[Point]| -> Vec<(f64, f64, f64)> {
+            v.iter()
+                .filter(|p| p.cpu > 0.0)
                 .map(|p| (p.cpu.log10(), p.error, 0.0))
-                .collect();
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            Series {
-                label: scheme.to_string(),
-                points: pts,
-                style: Style::Line,
-                color,
-            }
-        })
-        .collect();
+                .collect()
+        };
+        let all: Vec<Point> = points
+            .iter()
+            .filter(|p| p.config.scheme == scheme)
+            .copied()
+            .collect();
+        series.push(Series {
+            label: format!("{scheme}: lower envelope"),
+            points: pts(&front(points, scheme)),
+            style: Style::Line,
+            color,
+        });
+        series.push(Series {
+            label: format!("{scheme}: configurations"),
+            points: pts(&all),
+            style: Style::Points,
+            color,
+        });
+    }
     profile_svg(
         title,
         "log10 CPU seconds per run",
