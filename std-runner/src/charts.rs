@@ -9,7 +9,17 @@ use plotters::prelude::*;
 use std::path::Path;
 
 /// The observables drawn, when present.
-pub const CHARTED: [&str; 8] = ["T", "T_bulk", "V_norm", "a2", "a3", "crit", "mu2", "mu4"];
+pub const CHARTED: [&str; 9] = [
+    "T",
+    "T_bulk",
+    "log10_T_bulk",
+    "V_norm",
+    "a2",
+    "a3",
+    "crit",
+    "mu2",
+    "mu4",
+];
 
 /// One chart as SVG text.
 pub fn chart_svg(
