@@ -7,13 +7,16 @@
 //! batch kernels and the limits.
 
 use gdsmc_core::batch::{kick, sums};
-use gdsmc_core::drive::{Drive, NoDrive, WhiteNoise};
+use gdsmc_core::drive::{
+    Drive, HardSphereBackground, HostMedium, HostMediumParams, NoDrive, WhiteNoise,
+};
 use gdsmc_core::engine::NoSplitting;
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::{Rng, seeded, uniform_index};
 use gdsmc_core::sample::{Maxwellian, standard_normal};
+use gdsmc_core::vec3::Vec3;
 use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -131,6 +134,19 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
                 }
             }),
         ];
+        // BRS Example 4: hard spheres in a hard-sphere host medium (C1 = 1, C2 = 1/8,
+        // m^B = 1, T^B = 1, u^B = (0, 1, 0)); the lazy per-grain background process rides on
+        // the kicks of the event loop.
+        let bg = Maxwellian::new(1.0, 1.0, Vec3::new(0.0, 1.0, 0.0)).expect("valid");
+        let hm = HostMedium::new(
+            HostMediumParams::new(bg, 1.0, 1.0).expect("valid"),
+            HardSphereBackground,
+        );
+        let k = HardSpheres::new(1.0, 0.125).expect("valid");
+        let (coll, att) = event_loop(k, hm, 0.5, n, o.budget);
+        line(format!(
+            "case=nosplit-host-medium-alpha0.5 kernel=hard-spheres n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e}"
+        ));
         for (name, f) in kernels {
             for (case, alpha, heated) in [
                 ("nosplit-white-noise-alpha0.5", 0.5, true),
@@ -210,7 +226,7 @@ mod tests {
             .iter()
             .filter(|l| l.starts_with("case=nosplit"))
             .collect();
-        assert_eq!(loops.len(), 6);
+        assert_eq!(loops.len(), 7);
         for l in &loops {
             let keys: Vec<&str> = l
                 .split(' ')
