@@ -99,9 +99,11 @@ enum Command {
 
 #[derive(Subcommand)]
 enum Bench {
-    /// Throughput of the no-splitting loop (n = 10^3 ... 10^7, three kernels, heated
-    /// alpha = 0.5 and elastic alpha = 1), the batch kick and moment kernels, and the
-    /// machine's limits (random numbers per second, random reads per second).
+    /// Throughput of the hot loops beside the machine's limits.
+    ///
+    /// The no-splitting loop (n = 10^3 ... 10^7, three kernels, heated alpha = 0.5, elastic
+    /// alpha = 1, a host medium), the batch kick and moment kernels, and the machine's
+    /// limits (random numbers per second, independent random reads per second).
     ///
     /// One line per case:
     ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y>
@@ -115,8 +117,9 @@ enum Bench {
         #[arg(long, default_value_t = 1.5)]
         seconds: f64,
     },
-    /// Error against CPU time for no splitting, Strang and Euler splitting over a ladder of
-    /// n and time steps (RW Section 4.2), on a steady Maxwell-gas scene such as
+    /// Error against CPU time of no splitting, Strang and Euler splitting (RW Section 4.2).
+    ///
+    /// Runs each scheme over a ladder of n and time steps on a steady Maxwell-gas scene such as
     /// scenes/rw-steady.toml. Writes work_precision.csv and work_precision.svg and prints the
     /// CPU cost of a 1% error per scheme and its ratio to no splitting (RW: Euler about 100).
     WorkPrecision {
@@ -138,8 +141,7 @@ enum Bench {
         #[arg(long)]
         out: Option<PathBuf>,
     },
-    /// The same run on 1 thread and on all cores: the speed-up, and a check that the
-    /// statistics are bit-identical.
+    /// The same run on 1 thread and on all cores: the speed-up and a bit-identity check.
     Scaling {
         /// The scene.
         scene: PathBuf,

@@ -299,3 +299,42 @@ pub fn write(dir: &Path, scene: &str, points: &[Point], target: f64) -> Result<S
     }
     Ok(s)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pt(scheme: &'static str, cpu: f64, error: f64) -> Point {
+        Point {
+            config: Config {
+                scheme,
+                n: 1,
+                dt: 0.0,
+            },
+            runs: 1,
+            cpu,
+            mean: (0.0, 0.0),
+            sd: 0.0,
+            exact_mean: 0.0,
+            error,
+        }
+    }
+
+    #[test]
+    fn envelope_and_cost_at_a_target() {
+        let pts = [
+            pt("euler", 1.0, 0.1),
+            pt("euler", 2.0, 0.2), // dearer and worse: not on the envelope
+            pt("euler", 10.0, 0.001),
+            pt("no-splitting", 0.5, 0.005),
+        ];
+        let f = front(&pts, "euler");
+        assert_eq!(f.len(), 2);
+        // log-log between (1, 0.1) and (10, 0.001): error 0.01 at cpu sqrt(10).
+        let c = cost_at(&pts, "euler", 0.01).unwrap();
+        assert!((c - 10f64.sqrt()).abs() < 1e-12, "{c}");
+        assert_eq!(cost_at(&pts, "no-splitting", 0.01), Some(0.5));
+        assert_eq!(cost_at(&pts, "strang", 0.01), None);
+        assert_eq!(cost_at(&pts, "euler", 1e-4), None);
+    }
+}
