@@ -34,6 +34,11 @@ fn tolerance(c: &super::Cell) -> String {
     }
 }
 
+/// Text for a markdown table cell: pipes escaped (`||V||_inf`).
+fn cell_text(x: &str) -> String {
+    x.replace('|', "\\|")
+}
+
 /// One table for the terminal: a line per cell.
 pub fn text(t: &Table) -> String {
     let mut s = String::new();
@@ -99,8 +104,14 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
         .flat_map(|t| t.rows.iter().map(move |r| (t, r)))
         .flat_map(|(t, r)| {
             r.cells.iter().filter_map(move |c| {
-                c.disputed
-                    .map(|why| format!("- `{}` {}, {}: {why}", t.name, r.label, c.quantity))
+                c.disputed.map(|why| {
+                    format!(
+                        "- `{}` {}, {}: {why}",
+                        t.name,
+                        r.label,
+                        cell_text(&c.quantity)
+                    )
+                })
             })
         })
         .collect();
@@ -136,11 +147,11 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
                 let _ = writeln!(
                     s,
                     "| {} | {} | {} | {:.1} | {} | {} | {} | {} | {} | {} | {} |",
-                    r.label,
+                    cell_text(&r.label),
                     r.n,
                     r.ensembles,
                     r.seconds,
-                    c.quantity,
+                    cell_text(&c.quantity),
                     fmt(c.paper),
                     fmt(c.ours),
                     if c.ours_ci > 0.0 {
