@@ -187,11 +187,16 @@ fn observe<E: EventLoop>(
         } else {
             engine.advance_to(p, t, rng)?
         };
-        if let Some((_, c_max)) = scene.reduced_histogram
-            && ti >= reduced_from
+        // Bulk velocity and temperature in the stored units, once per observation, for the
+        // diagnostics reduced by v0 (exact for a gas stored rescaled, whose physical
+        // temperature may have underflowed).
+        let wants_reduced = scene.reduced_histogram.is_some() && ti >= reduced_from;
+        let stored =
+            (wants_reduced || scene.collisional_pairs > 0).then(|| stored_bulk_temperature(p));
+        if let (Some((_, c_max)), true, Some((bulk, t_bulk))) =
+            (scene.reduced_histogram, wants_reduced, stored)
         {
-            // c = (v - V) / v0 in the stored units (exact for a gas stored rescaled).
-            let (bulk, t_bulk) = stored_bulk_temperature(p);
+            // c = (v - V) / v0.
             let inv = 1.0 / (2.0 * t_bulk).sqrt();
             radial_shells_mapped(p, c_max, inv, -inv * bulk, &mut reduced);
             reduced_points += 1;
@@ -206,11 +211,8 @@ fn observe<E: EventLoop>(
             }
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
-        if scene.collisional_pairs > 0 {
-            // mu2, mu4 are reduced by v0, so any velocity units do: take the bulk velocity
-            // and temperature of the stored velocities (a cooling gas is stored rescaled, and
-            // its physical temperature may have underflowed).
-            let (bulk, t_bulk) = stored_bulk_temperature(p);
+        if let (true, Some((bulk, t_bulk))) = (scene.collisional_pairs > 0, stored) {
+            // mu2, mu4 are reduced by v0, so the stored units do.
             let (mu2, mu4) = collisional_moments(
                 p,
                 bulk,

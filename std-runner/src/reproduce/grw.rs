@@ -15,7 +15,7 @@ pub const TABLE1: Entry = Entry {
             o,
             seed,
             "grw-table1",
-            "GRW Table 1: E_max and ||V||_inf of Example 3 (heated Maxwell gas, beta = 1)",
+            TABLE1.title,
             "grw-example3",
             &[
                 (64, 0.895e-1, 0.672e-2),
@@ -37,7 +37,7 @@ pub const TABLE2: Entry = Entry {
             o,
             seed,
             "grw-table2",
-            "GRW Table 2: E_max and ||V||_inf of Example 4 (heated Maxwell gas, beta = 1/8)",
+            TABLE2.title,
             "grw-example4",
             &[
                 (64, 0.130, 0.306e-2),
