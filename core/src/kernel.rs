@@ -10,7 +10,11 @@ use crate::math::{PI, Real, powf};
 /// A kernel parameter out of its domain.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum KernelError {
-    /// The rate constant (gamma times C_lambda) is not finite and positive.
+    /// The collision-rate constant gamma of GRW (1) is not finite and positive.
+    Gamma,
+    /// The kernel constant C_lambda is not finite and positive.
+    C,
+    /// The rate constant (gamma times C_lambda) is not finite and positive (over- or underflow).
     Strength,
     /// The VHS exponent is outside [0, 1].
     Lambda,
@@ -19,6 +23,8 @@ pub enum KernelError {
 impl core::fmt::Display for KernelError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(match self {
+            KernelError::Gamma => "collision-rate constant gamma must be finite and > 0",
+            KernelError::C => "kernel constant C must be finite and > 0",
             KernelError::Strength => "collision rate constant gamma * C must be finite and > 0",
             KernelError::Lambda => "VHS exponent lambda must lie in [0, 1]",
         })
@@ -59,6 +65,12 @@ pub trait Kernel: Copy {
 }
 
 fn check_strength(gamma: Real, c: Real) -> Result<Real, KernelError> {
+    if !(gamma.is_finite() && gamma > 0.0) {
+        return Err(KernelError::Gamma);
+    }
+    if !(c.is_finite() && c > 0.0) {
+        return Err(KernelError::C);
+    }
     let s = gamma * c;
     if s.is_finite() && s > 0.0 {
         Ok(s)
@@ -156,13 +168,11 @@ pub struct Vhs {
 impl Vhs {
     /// `B = gamma * c * |u|^lambda`.
     pub fn new(gamma: Real, c: Real, lambda: Real) -> Result<Self, KernelError> {
+        let strength = check_strength(gamma, c)?;
         if !(0.0..=1.0).contains(&lambda) {
             return Err(KernelError::Lambda);
         }
-        Ok(Vhs {
-            strength: check_strength(gamma, c)?,
-            lambda,
-        })
+        Ok(Vhs { strength, lambda })
     }
     /// `gamma * C_lambda`.
     pub fn strength(&self) -> Real {

@@ -46,6 +46,7 @@ pub mod kernel;
 pub mod math;
 pub mod moments;
 pub mod particles;
+pub mod physics;
 pub mod prefetch;
 pub mod restitution;
 pub mod rng;

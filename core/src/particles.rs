@@ -55,14 +55,30 @@ impl Particle {
 pub enum ParticlesError {
     /// Fewer than two particles: no pair can collide.
     TooFew,
+    /// More particles than a slice can address (`n * 32` bytes above `isize::MAX`).
+    TooMany,
 }
 
 impl core::fmt::Display for ParticlesError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(match self {
             ParticlesError::TooFew => "a particle system needs n >= 2 particles",
+            ParticlesError::TooMany => "n particles of 32 bytes exceed the address space",
         })
     }
+}
+
+/// The rule for a particle count: `n >= 2` (a pair is needed to collide) and `n` particles fit
+/// in memory. The one place this is checked: [`Particles::new`] and
+/// [`crate::physics::Physics::validate`] call it.
+pub fn check_count(n: usize) -> Result<(), ParticlesError> {
+    if n < 2 {
+        return Err(ParticlesError::TooFew);
+    }
+    if n > isize::MAX as usize / core::mem::size_of::<Particle>() {
+        return Err(ParticlesError::TooMany);
+    }
+    Ok(())
 }
 
 /// `n >= 2` particles in a caller-owned slice.
@@ -74,9 +90,7 @@ pub struct Particles<'a> {
 impl<'a> Particles<'a> {
     /// A system over a caller buffer of `n >= 2` particles.
     pub fn new(p: &'a mut [Particle]) -> Result<Self, ParticlesError> {
-        if p.len() < 2 {
-            return Err(ParticlesError::TooFew);
-        }
+        check_count(p.len())?;
         Ok(Particles { p })
     }
 

@@ -29,11 +29,26 @@ pub struct ImpactSpeed {
     delta: Real,
 }
 
+/// A parameter of [`ImpactSpeed`] out of its domain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImpactSpeedError {
+    /// `beta_0` is not finite and `>= 0`.
+    Beta0,
+    /// `delta` is not finite and `>= 0`.
+    Delta,
+}
+
 impl ImpactSpeed {
-    /// `None` unless `beta0 >= 0` and `delta >= 0` are finite.
-    pub fn new(beta0: Real, delta: Real) -> Option<Self> {
-        (beta0.is_finite() && beta0 >= 0.0 && delta.is_finite() && delta >= 0.0)
-            .then_some(ImpactSpeed { beta0, delta })
+    /// The law with `beta0 >= 0` and `delta >= 0`, both finite; the error names the one that
+    /// is not.
+    pub fn new(beta0: Real, delta: Real) -> Result<Self, ImpactSpeedError> {
+        if !(beta0.is_finite() && beta0 >= 0.0) {
+            return Err(ImpactSpeedError::Beta0);
+        }
+        if !(delta.is_finite() && delta >= 0.0) {
+            return Err(ImpactSpeedError::Delta);
+        }
+        Ok(ImpactSpeed { beta0, delta })
     }
     /// `beta_0`.
     pub fn beta0(&self) -> Real {

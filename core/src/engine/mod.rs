@@ -87,6 +87,16 @@ impl<D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop for T
     }
 }
 
+/// The rule for a time step or step factor of the stepped schemes: finite and > 0
+/// ([`EngineError::OffGrid`] otherwise).
+pub fn check_step(h: Real) -> Result<Real, EngineError> {
+    if h.is_finite() && h > 0.0 {
+        Ok(h)
+    } else {
+        Err(EngineError::OffGrid)
+    }
+}
+
 /// Event counts of a run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Counts {
@@ -141,6 +151,8 @@ pub enum EngineError {
     /// A time-stepped scheme was asked for a time that is not on its grid `t0 + k dt`, or
     /// its time step is not finite and positive.
     OffGrid,
+    /// The particle buffer does not hold the `n` particles the physics names.
+    ParticleCount,
 }
 
 impl core::fmt::Display for EngineError {
@@ -149,6 +161,7 @@ impl core::fmt::Display for EngineError {
             EngineError::TimeBackwards => "observation time lies before the current time",
             EngineError::NonFinite => "a velocity or moment became non-finite",
             EngineError::OffGrid => "the time is not a multiple of the scheme's time step",
+            EngineError::ParticleCount => "the particle buffer does not hold n particles",
         })
     }
 }

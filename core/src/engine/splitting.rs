@@ -59,9 +59,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(Self, Observables), EngineError> {
-        if !(dt.is_finite() && dt > 0.0) {
-            return Err(EngineError::OffGrid);
-        }
+        super::check_step(dt)?;
         if !t0.is_finite() {
             return Err(EngineError::TimeBackwards);
         }

@@ -55,9 +55,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(Self, Observables), EngineError> {
-        if !(step_factor.is_finite() && step_factor > 0.0) {
-            return Err(EngineError::OffGrid);
-        }
+        super::check_step(step_factor)?;
         if !t0.is_finite() {
             return Err(EngineError::TimeBackwards);
         }

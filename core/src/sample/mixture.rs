@@ -78,12 +78,18 @@ impl<const CAP: usize> MaxwellianMixture<CAP> {
         t
     }
 
-    /// One velocity; `Err(ParamError::Weight)` when there is no component of positive weight.
-    #[inline]
-    pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Result<Vec3, ParamError> {
+    /// `Err(ParamError::Weight)` when no component has positive weight (nothing to sample).
+    pub fn check(&self) -> Result<(), ParamError> {
         if self.total.is_nan() || self.total <= 0.0 {
             return Err(ParamError::Weight);
         }
+        Ok(())
+    }
+
+    /// One velocity; `Err(ParamError::Weight)` when there is no component of positive weight.
+    #[inline]
+    pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Result<Vec3, ParamError> {
+        self.check()?;
         let target = uniform01(rng) * self.total;
         let mut acc = 0.0;
         let mut chosen = None;

@@ -1,0 +1,162 @@
+//! What [`super::Physics::validate`] reports: which parameter ([`Param`]) breaks which rule
+//! ([`Problem`]). Front ends name the parameter in their own words (a scene key such as
+//! `collisions.restitution`, a C field such as `config.restitution`) and print the problem as
+//! it is, so the same bad value gives the same message everywhere.
+
+use crate::math::Real;
+
+/// A parameter of [`super::Physics`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Param {
+    /// The particle count `n`.
+    N,
+    /// The list of initial components as a whole.
+    Components,
+    /// Weight of initial component `k`.
+    Weight(usize),
+    /// Mass of initial component `k`.
+    Mass(usize),
+    /// Temperature of initial component `k`.
+    Temperature(usize),
+    /// Drift of initial component `k`.
+    Drift(usize),
+    /// The collision-rate constant gamma of GRW (1).
+    Gamma,
+    /// The kernel constant C_lambda.
+    C,
+    /// The VHS exponent lambda.
+    Lambda,
+    /// The constant restitution coefficient alpha.
+    Restitution,
+    /// `beta_0` of the impact-speed law BRS (9).
+    Beta0,
+    /// `delta` of the impact-speed law BRS (9).
+    Delta,
+    /// The white-noise strength beta.
+    Beta,
+    /// The Gaussian thermostat rate zeta.
+    Zeta,
+    /// The constant force per unit mass g.
+    G,
+    /// Host medium: kernel constant C_1.
+    BackgroundC,
+    /// Host medium: number density rho^B.
+    BackgroundDensity,
+    /// Host medium: particle mass m^B.
+    BackgroundMass,
+    /// Host medium: temperature T^B.
+    BackgroundTemperature,
+    /// Host medium: drift u^B.
+    BackgroundDrift,
+    /// The time step of a splitting scheme.
+    Dt,
+    /// The step factor of the time-stepped scheme.
+    StepFactor,
+    /// The scheme itself (it does not fit the kernel or the drive).
+    Scheme,
+}
+
+impl core::fmt::Display for Param {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Param::N => f.write_str("n"),
+            Param::Components => f.write_str("components"),
+            Param::Weight(k) => write!(f, "components[{k}].weight"),
+            Param::Mass(k) => write!(f, "components[{k}].mass"),
+            Param::Temperature(k) => write!(f, "components[{k}].temperature"),
+            Param::Drift(k) => write!(f, "components[{k}].drift"),
+            Param::Gamma => f.write_str("gamma"),
+            Param::C => f.write_str("c"),
+            Param::Lambda => f.write_str("lambda"),
+            Param::Restitution => f.write_str("restitution"),
+            Param::Beta0 => f.write_str("beta0"),
+            Param::Delta => f.write_str("delta"),
+            Param::Beta => f.write_str("beta"),
+            Param::Zeta => f.write_str("zeta"),
+            Param::G => f.write_str("g"),
+            Param::BackgroundC => f.write_str("background_c"),
+            Param::BackgroundDensity => f.write_str("background_density"),
+            Param::BackgroundMass => f.write_str("background_mass"),
+            Param::BackgroundTemperature => f.write_str("background_temperature"),
+            Param::BackgroundDrift => f.write_str("background_drift"),
+            Param::Dt => f.write_str("dt"),
+            Param::StepFactor => f.write_str("step_factor"),
+            Param::Scheme => f.write_str("scheme"),
+        }
+    }
+}
+
+/// The rule a parameter breaks, with the offending value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Problem {
+    /// Not a finite number.
+    NotFinite(Real),
+    /// Must be > 0.
+    NotPositive(Real),
+    /// Must be >= 0.
+    Negative(Real),
+    /// Must lie in the interval written in `range` (e.g. `"(0, 1]"`).
+    OutOfRange {
+        /// The value.
+        value: Real,
+        /// The allowed interval, as text.
+        range: &'static str,
+    },
+    /// A vector with a non-finite component.
+    NotFiniteVector,
+    /// Fewer than two particles.
+    TooFewParticles(usize),
+    /// More particles than memory can address.
+    TooManyParticles(usize),
+    /// No initial component.
+    NoComponents,
+    /// Every initial weight is 0.
+    AllWeightsZero,
+    /// The rate constant `gamma * C` is not finite and positive (over- or underflow).
+    Strength(Real),
+    /// The parameter does not fit the rest of the description (the message says why).
+    DoesNotFit(&'static str),
+}
+
+impl core::fmt::Display for Problem {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match *self {
+            Problem::NotFinite(x) => write!(f, "must be a finite number, got {x}"),
+            Problem::NotPositive(x) => write!(f, "must be > 0, got {x}"),
+            Problem::Negative(x) => write!(f, "must be >= 0, got {x}"),
+            Problem::OutOfRange { value, range } => write!(f, "must lie in {range}, got {value}"),
+            Problem::NotFiniteVector => f.write_str("must be three finite numbers"),
+            Problem::TooFewParticles(n) => {
+                write!(f, "must be >= 2 (a pair is needed to collide), got {n}")
+            }
+            Problem::TooManyParticles(n) => write!(
+                f,
+                "= {n} is too large: {n} particles of 32 bytes exceed the address space"
+            ),
+            Problem::NoComponents => f.write_str("must hold at least one component"),
+            Problem::AllWeightsZero => f.write_str("weights must not all be 0"),
+            Problem::Strength(s) => write!(
+                f,
+                "makes the rate constant gamma * C = {s}, which must be finite and > 0"
+            ),
+            Problem::DoesNotFit(why) => f.write_str(why),
+        }
+    }
+}
+
+/// A parameter of a [`super::Physics`] out of its domain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhysicsError {
+    /// Which parameter.
+    pub param: Param,
+    /// What is wrong with it.
+    pub problem: Problem,
+}
+
+impl core::fmt::Display for PhysicsError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "{} {}", self.param, self.problem)
+    }
+}
+
+impl core::error::Error for PhysicsError {}

@@ -1,0 +1,228 @@
+//! One physics description from every front end to the event loop.
+//!
+//! [`Physics`] is plain data: the particle count, the initial distribution, the collision
+//! kernel, the restitution law, the drive and the scheme, each with its parameters, as a scene
+//! file, a C `gdsmc_config` or a firmware's constant names them. [`Physics::validate`] is the
+//! one place where every physical rule is checked (`n >= 2`, `0 < alpha <= 1`, positive rates,
+//! the impact-speed law's range, which scheme fits which kernel and drive, ...); it returns a
+//! [`Model`] holding the validated building blocks, or a [`PhysicsError`] naming the parameter
+//! ([`Param`]) and what is wrong with it ([`Problem`]). Front ends name the parameter in their
+//! own words (a scene key, a C field) and print the problem as it is, so every front end gives
+//! the same message for the same bad value.
+//!
+//! [`Model::start`] is the one dispatch from the description to the statically composed event
+//! loop: one `match` per level (kernel, drive, restitution law, scheme) builds an [`Engine`],
+//! a nest of small enums whose leaves are the monomorphized loops
+//! ([`crate::engine::NoSplitting`], [`crate::engine::Splitting`],
+//! [`crate::engine::TimeStepped`]). Calls on an [`Engine`] are dispatched once per call (per
+//! observation), never per collision, so unused physics costs nothing in the loop.
+//!
+//! ```
+//! use gdsmc_core::physics::{DriveChoice, KernelChoice, Physics, RestitutionLaw, SchemeChoice};
+//! use gdsmc_core::{engine::EventLoop, particles::{Particle, Particles}, rng::seeded};
+//! // GRW Example 3 with 64 particles: alpha = 1/2, beta = 1, gamma = 4, C0 = 1/(4 pi).
+//! let physics = Physics::new(
+//!     64,
+//!     KernelChoice::Maxwell { gamma: 4.0, c: 0.25 / core::f64::consts::PI },
+//!     RestitutionLaw::Constant(0.5),
+//!     DriveChoice::WhiteNoise(1.0),
+//!     SchemeChoice::NoSplitting,
+//! );
+//! let model = physics.validate().unwrap();
+//! let mut buf = [Particle::default(); 64];
+//! let mut p = Particles::new(&mut buf).unwrap();
+//! let mut rng = seeded(1);
+//! let (mut engine, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+//! let obs = engine.advance_to(&mut p, 8.0, &mut rng).unwrap();
+//! assert!(obs.t_raw > 1.0); // heated towards T_inf = 8/3
+//! // A bad value names its parameter and the rule it breaks:
+//! let bad = Physics { restitution: RestitutionLaw::Constant(1.5), ..physics };
+//! assert_eq!(bad.validate().unwrap_err().to_string(), "restitution must lie in (0, 1], got 1.5");
+//! ```
+
+pub mod engine;
+pub mod error;
+pub mod model;
+
+pub use engine::Engine;
+pub use error::{Param, PhysicsError, Problem};
+pub use model::Model;
+
+use crate::math::Real;
+
+/// Most components an initial mixture of Maxwellians may have (BRS (35)).
+pub const MAX_COMPONENTS: usize = 16;
+
+/// The collision kernel `B = gamma C_lambda |u|^lambda` (GRW (1), (4), (5)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum KernelChoice {
+    /// Maxwell pseudo-molecules, `B = gamma C_0` (GRW, `lambda = 0`).
+    Maxwell {
+        /// Collision-rate constant gamma of GRW (1), > 0.
+        gamma: Real,
+        /// Kernel constant C_0, > 0.
+        c: Real,
+    },
+    /// Hard spheres, `B = gamma C_1 |u|` (GRW (4)).
+    HardSpheres {
+        /// Collision-rate constant gamma of GRW (1), > 0.
+        gamma: Real,
+        /// Kernel constant C_1, > 0.
+        c: Real,
+    },
+    /// Variable hard spheres, `B = gamma C_lambda |u|^lambda` (GRW (5), RW (18)).
+    Vhs {
+        /// Collision-rate constant gamma of GRW (1), > 0.
+        gamma: Real,
+        /// Kernel constant C_lambda, > 0.
+        c: Real,
+        /// Exponent lambda in [0, 1].
+        lambda: Real,
+    },
+}
+
+/// The restitution law of GRW (3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RestitutionLaw {
+    /// A constant coefficient alpha in (0, 1].
+    Constant(Real),
+    /// The impact-speed law BRS (9)-(10): `1 - e = 2 beta0 |g . n|^delta`, `beta0, delta >= 0`.
+    ImpactSpeed {
+        /// `beta_0 >= 0`.
+        beta0: Real,
+        /// `delta >= 0` (1/5: viscoelastic spheres).
+        delta: Real,
+    },
+}
+
+impl RestitutionLaw {
+    /// The coefficient of a constant law; `None` for the impact-speed law (whatever assumes a
+    /// constant coefficient, e.g. GRW (13) or MS (65)-(66), must not use it).
+    pub fn constant(&self) -> Option<Real> {
+        match *self {
+            RestitutionLaw::Constant(alpha) => Some(alpha),
+            RestitutionLaw::ImpactSpeed { .. } => None,
+        }
+    }
+}
+
+/// The grain-background kernel of a host medium.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BackgroundKernel {
+    /// `B_1 = C_1` (BRS (11)).
+    Maxwell,
+    /// `B_1 = C_1 |g|` (BRS (19)).
+    HardSpheres,
+}
+
+/// What acts on every particle between collisions.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DriveChoice {
+    /// No drive: the freely cooling gas.
+    None,
+    /// White-noise heating of strength beta >= 0 (GRW (1), (18)).
+    WhiteNoise(Real),
+    /// The Gaussian thermostat `F = m zeta v` with a finite rate zeta (MS (12)).
+    Gaussian(Real),
+    /// The constant force along the velocity, `F = m g v_hat`, g >= 0 (MS (14)); needs a
+    /// stepped scheme (MS (62) couples all particles).
+    ConstantForce(Real),
+    /// Elastic collisions of unit-mass grains with a Maxwellian host medium (BRS Section 2).
+    HostMedium {
+        /// The grain-background kernel.
+        kernel: BackgroundKernel,
+        /// Kernel constant C_1 > 0.
+        c1: Real,
+        /// Number density rho^B > 0.
+        density: Real,
+        /// Background particle mass m^B > 0.
+        mass: Real,
+        /// Background temperature T^B >= 0.
+        temperature: Real,
+        /// Background drift u^B.
+        drift: [Real; 3],
+    },
+}
+
+/// The scheme that advances the system in time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SchemeChoice {
+    /// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
+    NoSplitting,
+    /// Euler splitting with this time step > 0 (RW Algorithm 1).
+    Euler(Real),
+    /// Strang splitting with this time step > 0 (RW Algorithm 2).
+    Strang(Real),
+    /// MS's time-stepped scheme (MS Section 3; hard spheres) with this step factor > 0
+    /// (`h = factor lambda / v0`; MS: 0.01).
+    TimeStepped(Real),
+}
+
+/// One weighted Maxwellian of the initial distribution (BRS (35), (36)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Component {
+    /// Weight >= 0 (weights need not sum to one, but not all may be 0).
+    pub weight: Real,
+    /// Mass > 0.
+    pub mass: Real,
+    /// Temperature >= 0.
+    pub temperature: Real,
+    /// Drift velocity.
+    pub drift: [Real; 3],
+}
+
+impl Component {
+    /// The standard Maxwellian of GRW (27): unit weight, mass and temperature, no drift.
+    pub const STANDARD: Component = Component {
+        weight: 1.0,
+        mass: 1.0,
+        temperature: 1.0,
+        drift: [0.0; 3],
+    };
+}
+
+/// Everything physical about a simulation, as plain data; see the module docs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Physics {
+    /// Particles per system, >= 2.
+    pub n: usize,
+    /// The initial distribution: a mixture of at most [`MAX_COMPONENTS`] Maxwellians.
+    pub initial: heapless::Vec<Component, MAX_COMPONENTS>,
+    /// The collision kernel.
+    pub kernel: KernelChoice,
+    /// The restitution law.
+    pub restitution: RestitutionLaw,
+    /// The drive.
+    pub drive: DriveChoice,
+    /// The scheme.
+    pub scheme: SchemeChoice,
+}
+
+impl Physics {
+    /// A description with the standard Maxwellian GRW (27) as initial distribution.
+    pub fn new(
+        n: usize,
+        kernel: KernelChoice,
+        restitution: RestitutionLaw,
+        drive: DriveChoice,
+        scheme: SchemeChoice,
+    ) -> Self {
+        let mut initial = heapless::Vec::new();
+        // Capacity MAX_COMPONENTS >= 1: the push cannot fail.
+        let _ = initial.push(Component::STANDARD);
+        Physics {
+            n,
+            initial,
+            kernel,
+            restitution,
+            drive,
+            scheme,
+        }
+    }
+
+    /// Checks every physical rule and returns the validated [`Model`], or the first
+    /// parameter out of its domain.
+    pub fn validate(&self) -> Result<Model, PhysicsError> {
+        Model::new(self)
+    }
+}

@@ -1,0 +1,430 @@
+//! The validated physics: the building blocks of the event loop, each made by its own
+//! constructor (which holds the rule) from the parameters of a [`Physics`].
+
+use super::engine::{ByDrive, ByLaw, ByScheme, Engine};
+use super::error::{Param, PhysicsError, Problem};
+use super::{BackgroundKernel, DriveChoice, KernelChoice, Physics, RestitutionLaw, SchemeChoice};
+use super::{Component, MAX_COMPONENTS};
+use crate::drive::host_medium::HostMediumError;
+use crate::drive::{
+    ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
+    MaxwellBackground, NoDrive, WhiteNoise,
+};
+use crate::engine::{EngineError, NoSplitting, Splitting, SplittingOrder, TimeStepped, check_step};
+use crate::kernel::{HardSpheres, Kernel, KernelError, Maxwell, Vhs};
+use crate::math::Real;
+use crate::moments::Observables;
+use crate::particles::{Particles, ParticlesError, check_count};
+use crate::restitution::{Constant, ImpactSpeed, ImpactSpeedError, Restitution};
+use crate::rng::Rng;
+use crate::sample::{Maxwellian, MaxwellianMixture, ParamError};
+use crate::vec3::Vec3;
+
+/// The validated kernel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum KernelModel {
+    Maxwell(Maxwell),
+    HardSpheres(HardSpheres),
+    Vhs(Vhs),
+}
+
+/// The validated restitution law.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum LawModel {
+    Constant(Constant),
+    ImpactSpeed(ImpactSpeed),
+}
+
+/// The validated drive.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum DriveModel {
+    None,
+    WhiteNoise(WhiteNoise),
+    Gaussian(GaussianThermostat),
+    ConstantForce(ConstantForce),
+    HostMaxwell(HostMedium<MaxwellBackground>),
+    HostHardSpheres(HostMedium<HardSphereBackground>),
+}
+
+/// The validated scheme; the time-stepped scheme carries its hard-sphere kernel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum SchemeModel {
+    NoSplitting,
+    Splitting(SplittingOrder, Real),
+    TimeStepped(HardSpheres, Real),
+}
+
+/// A [`Physics`] whose every rule holds, ready to start engines ([`Model::start`]).
+#[derive(Clone, Debug)]
+pub struct Model {
+    physics: Physics,
+    initial: MaxwellianMixture<MAX_COMPONENTS>,
+    kernel: KernelModel,
+    law: LawModel,
+    drive: DriveModel,
+    scheme: SchemeModel,
+}
+
+fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
+    Err(PhysicsError { param, problem })
+}
+
+/// The problem of a value that a constructor refused for not being finite and > 0.
+fn not_positive(param: Param, x: Real) -> PhysicsError {
+    let problem = if x.is_finite() {
+        Problem::NotPositive(x)
+    } else {
+        Problem::NotFinite(x)
+    };
+    PhysicsError { param, problem }
+}
+
+/// The problem of a value that a constructor refused for not being finite and >= 0.
+fn negative(param: Param, x: Real) -> PhysicsError {
+    let problem = if x.is_finite() {
+        Problem::Negative(x)
+    } else {
+        Problem::NotFinite(x)
+    };
+    PhysicsError { param, problem }
+}
+
+fn particle_count(n: usize) -> Result<(), PhysicsError> {
+    check_count(n).or_else(|e| match e {
+        ParticlesError::TooFew => err(Param::N, Problem::TooFewParticles(n)),
+        ParticlesError::TooMany => err(Param::N, Problem::TooManyParticles(n)),
+    })
+}
+
+fn vec3(v: [Real; 3]) -> Vec3 {
+    Vec3::new(v[0], v[1], v[2])
+}
+
+/// A Maxwellian (BRS (36)) from [`Maxwellian::new`], its refusal named by `names`.
+fn maxwellian(
+    mass: Real,
+    temperature: Real,
+    drift: [Real; 3],
+    names: [Param; 3],
+) -> Result<Maxwellian, PhysicsError> {
+    Maxwellian::new(mass, temperature, vec3(drift)).map_err(|e| match e {
+        ParamError::Temperature => negative(names[1], temperature),
+        ParamError::Drift => PhysicsError {
+            param: names[2],
+            problem: Problem::NotFiniteVector,
+        },
+        _ => not_positive(names[0], mass),
+    })
+}
+
+/// The initial mixture (BRS (35)); the component rules live in [`Maxwellian::new`] and
+/// [`MaxwellianMixture::push`].
+fn initial(components: &[Component]) -> Result<MaxwellianMixture<MAX_COMPONENTS>, PhysicsError> {
+    if components.is_empty() {
+        return err(Param::Components, Problem::NoComponents);
+    }
+    let mut mix = MaxwellianMixture::new();
+    for (k, c) in components.iter().enumerate() {
+        let names = [Param::Mass(k), Param::Temperature(k), Param::Drift(k)];
+        let m = maxwellian(c.mass, c.temperature, c.drift, names)?;
+        mix.push(c.weight, m)
+            .map_err(|_| negative(Param::Weight(k), c.weight))?;
+    }
+    if mix.check().is_err() {
+        return err(Param::Components, Problem::AllWeightsZero);
+    }
+    Ok(mix)
+}
+
+fn kernel(k: KernelChoice) -> Result<KernelModel, PhysicsError> {
+    let (gamma, c) = match k {
+        KernelChoice::Maxwell { gamma, c }
+        | KernelChoice::HardSpheres { gamma, c }
+        | KernelChoice::Vhs { gamma, c, .. } => (gamma, c),
+    };
+    let refused = |e| match e {
+        KernelError::Gamma => not_positive(Param::Gamma, gamma),
+        KernelError::C => not_positive(Param::C, c),
+        KernelError::Strength => PhysicsError {
+            param: Param::Gamma,
+            problem: Problem::Strength(gamma * c),
+        },
+        KernelError::Lambda => {
+            let KernelChoice::Vhs { lambda, .. } = k else {
+                unreachable!("only VHS has an exponent")
+            };
+            PhysicsError {
+                param: Param::Lambda,
+                problem: Problem::OutOfRange {
+                    value: lambda,
+                    range: "[0, 1]",
+                },
+            }
+        }
+    };
+    Ok(match k {
+        KernelChoice::Maxwell { .. } => {
+            KernelModel::Maxwell(Maxwell::new(gamma, c).map_err(refused)?)
+        }
+        KernelChoice::HardSpheres { .. } => {
+            KernelModel::HardSpheres(HardSpheres::new(gamma, c).map_err(refused)?)
+        }
+        KernelChoice::Vhs { lambda, .. } => {
+            KernelModel::Vhs(Vhs::new(gamma, c, lambda).map_err(refused)?)
+        }
+    })
+}
+
+fn law(r: RestitutionLaw) -> Result<LawModel, PhysicsError> {
+    match r {
+        RestitutionLaw::Constant(alpha) => {
+            Constant::new(alpha)
+                .map(LawModel::Constant)
+                .ok_or(PhysicsError {
+                    param: Param::Restitution,
+                    problem: Problem::OutOfRange {
+                        value: alpha,
+                        range: "(0, 1]",
+                    },
+                })
+        }
+        RestitutionLaw::ImpactSpeed { beta0, delta } => ImpactSpeed::new(beta0, delta)
+            .map(LawModel::ImpactSpeed)
+            .map_err(|e| match e {
+                ImpactSpeedError::Beta0 => negative(Param::Beta0, beta0),
+                ImpactSpeedError::Delta => negative(Param::Delta, delta),
+            }),
+    }
+}
+
+fn drive(d: DriveChoice) -> Result<DriveModel, PhysicsError> {
+    Ok(match d {
+        DriveChoice::None => DriveModel::None,
+        DriveChoice::WhiteNoise(beta) => DriveModel::WhiteNoise(
+            WhiteNoise::new(beta).ok_or_else(|| negative(Param::Beta, beta))?,
+        ),
+        DriveChoice::Gaussian(zeta) => {
+            DriveModel::Gaussian(GaussianThermostat::new(zeta).ok_or(PhysicsError {
+                param: Param::Zeta,
+                problem: Problem::NotFinite(zeta),
+            })?)
+        }
+        DriveChoice::ConstantForce(g) => {
+            DriveModel::ConstantForce(ConstantForce::new(g).ok_or_else(|| negative(Param::G, g))?)
+        }
+        DriveChoice::HostMedium {
+            kernel,
+            c1,
+            density,
+            mass,
+            temperature,
+            drift,
+        } => {
+            let names = [
+                Param::BackgroundMass,
+                Param::BackgroundTemperature,
+                Param::BackgroundDrift,
+            ];
+            let bg = maxwellian(mass, temperature, drift, names)?;
+            let params = HostMediumParams::new(bg, density, c1).map_err(|e| match e {
+                HostMediumError::Density => not_positive(Param::BackgroundDensity, density),
+                HostMediumError::Strength => not_positive(Param::BackgroundC, c1),
+            })?;
+            match kernel {
+                BackgroundKernel::Maxwell => {
+                    DriveModel::HostMaxwell(HostMedium::new(params, MaxwellBackground))
+                }
+                BackgroundKernel::HardSpheres => {
+                    DriveModel::HostHardSpheres(HostMedium::new(params, HardSphereBackground))
+                }
+            }
+        }
+    })
+}
+
+fn scheme(s: SchemeChoice, k: KernelModel, d: DriveChoice) -> Result<SchemeModel, PhysicsError> {
+    Ok(match s {
+        SchemeChoice::NoSplitting => {
+            if let DriveChoice::ConstantForce(_) = d {
+                return err(
+                    Param::Scheme,
+                    Problem::DoesNotFit(
+                        "must be time-stepped, Euler or Strang with the constant-force drive: its \
+                         momentum-keeping correction (MS (62)) couples all particles at every \
+                         step, which the lazy no-splitting scheme cannot do",
+                    ),
+                );
+            }
+            SchemeModel::NoSplitting
+        }
+        SchemeChoice::Euler(dt) => SchemeModel::Splitting(
+            SplittingOrder::Euler,
+            check_step(dt).map_err(|_| not_positive(Param::Dt, dt))?,
+        ),
+        SchemeChoice::Strang(dt) => SchemeModel::Splitting(
+            SplittingOrder::Strang,
+            check_step(dt).map_err(|_| not_positive(Param::Dt, dt))?,
+        ),
+        SchemeChoice::TimeStepped(f) => {
+            let f = check_step(f).map_err(|_| not_positive(Param::StepFactor, f))?;
+            let KernelModel::HardSpheres(hs) = k else {
+                return err(
+                    Param::Scheme,
+                    Problem::DoesNotFit("time-stepped (MS Section 3) needs the hard-sphere kernel"),
+                );
+            };
+            SchemeModel::TimeStepped(hs, f)
+        }
+    })
+}
+
+impl Model {
+    /// Validates `physics` (see [`Physics::validate`]).
+    pub fn new(physics: &Physics) -> Result<Self, PhysicsError> {
+        particle_count(physics.n)?;
+        let initial = initial(&physics.initial)?;
+        let kernel = kernel(physics.kernel)?;
+        let law = law(physics.restitution)?;
+        let drive = drive(physics.drive)?;
+        let scheme = scheme(physics.scheme, kernel, physics.drive)?;
+        Ok(Model {
+            physics: physics.clone(),
+            initial,
+            kernel,
+            law,
+            drive,
+            scheme,
+        })
+    }
+
+    /// The description this model was validated from.
+    pub fn physics(&self) -> &Physics {
+        &self.physics
+    }
+
+    /// Particles per system.
+    pub fn n(&self) -> usize {
+        self.physics.n
+    }
+
+    /// The initial distribution as a sampler.
+    pub fn initial(&self) -> &MaxwellianMixture<MAX_COMPONENTS> {
+        &self.initial
+    }
+
+    /// Draws every particle's velocity from the initial distribution (one uniform for the
+    /// component, then the Maxwellian; particle by particle) and sets its last-kick time to
+    /// `t0`. Fails with [`EngineError::ParticleCount`] unless `p` holds `n` particles.
+    pub fn initialize<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        t0: Real,
+        rng: &mut R,
+    ) -> Result<(), EngineError> {
+        if p.len() != self.n() {
+            return Err(EngineError::ParticleCount);
+        }
+        let mut bad = false;
+        p.fill_with(t0, || {
+            // The weights were validated: a positive total, so sampling cannot fail.
+            self.initial.sample(rng).unwrap_or_else(|_| {
+                bad = true;
+                Vec3::ZERO
+            })
+        });
+        if bad {
+            return Err(EngineError::NonFinite);
+        }
+        Ok(())
+    }
+
+    /// Starts the statically composed engine of this physics at `t0` on `p` (which holds the
+    /// initial velocities): the one dispatch from the description to the event loop. Returns
+    /// the engine and the observables at `t0`.
+    pub fn start(
+        &self,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(Engine, Observables), EngineError> {
+        if p.len() != self.n() {
+            return Err(EngineError::ParticleCount);
+        }
+        match self.kernel {
+            KernelModel::Maxwell(k) => wrap(self.by_drive(k, p, t0), Engine::Maxwell),
+            KernelModel::HardSpheres(k) => wrap(self.by_drive(k, p, t0), Engine::HardSpheres),
+            KernelModel::Vhs(k) => wrap(self.by_drive(k, p, t0), Engine::Vhs),
+        }
+    }
+
+    /// [`Model::initialize`] then [`Model::start`].
+    pub fn launch<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        t0: Real,
+        rng: &mut R,
+    ) -> Result<(Engine, Observables), EngineError> {
+        self.initialize(p, t0, rng)?;
+        self.start(p, t0)
+    }
+
+    fn by_drive<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByDrive<K>, Observables), EngineError> {
+        match self.drive {
+            DriveModel::None => wrap(self.by_law(k, NoDrive, p, t0), ByDrive::None),
+            DriveModel::WhiteNoise(d) => wrap(self.by_law(k, d, p, t0), ByDrive::WhiteNoise),
+            DriveModel::Gaussian(d) => wrap(self.by_law(k, d, p, t0), ByDrive::Gaussian),
+            DriveModel::ConstantForce(d) => wrap(self.by_law(k, d, p, t0), ByDrive::ConstantForce),
+            DriveModel::HostMaxwell(d) => wrap(self.by_law(k, d, p, t0), ByDrive::HostMaxwell),
+            DriveModel::HostHardSpheres(d) => {
+                wrap(self.by_law(k, d, p, t0), ByDrive::HostHardSpheres)
+            }
+        }
+    }
+
+    fn by_law<K: Kernel, D: Drive>(
+        &self,
+        k: K,
+        d: D,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByLaw<K, D>, Observables), EngineError> {
+        match self.law {
+            LawModel::Constant(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::Constant),
+            LawModel::ImpactSpeed(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::ImpactSpeed),
+        }
+    }
+
+    fn by_scheme<K: Kernel, D: Drive, A: Restitution>(
+        &self,
+        k: K,
+        d: D,
+        a: A,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByScheme<K, D, A>, Observables), EngineError> {
+        match self.scheme {
+            SchemeModel::NoSplitting => {
+                wrap(NoSplitting::start(k, d, a, p, t0), ByScheme::NoSplitting)
+            }
+            SchemeModel::Splitting(order, dt) => wrap(
+                Splitting::start(k, d, a, order, dt, p, t0),
+                ByScheme::Splitting,
+            ),
+            SchemeModel::TimeStepped(hs, f) => wrap(
+                TimeStepped::start(hs, d, a, f, p, t0),
+                ByScheme::TimeStepped,
+            ),
+        }
+    }
+}
+
+fn wrap<E, F>(
+    r: Result<(E, Observables), EngineError>,
+    f: impl FnOnce(E) -> F,
+) -> Result<(F, Observables), EngineError> {
+    r.map(|(e, o)| (f(e), o))
+}
