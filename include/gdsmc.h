@@ -59,6 +59,17 @@
 // Strang splitting with time step `dt` (RW Algorithm 2).
 #define GDSMC_SCHEME_STRANG 2
 
+// MS's time-stepped scheme (MS Section 3; hard spheres only) with step `step_factor` mean
+// free paths over the thermal speed.
+#define GDSMC_SCHEME_TIME_STEPPED 3
+
+// A constant restitution coefficient, field `restitution`.
+#define GDSMC_RESTITUTION_CONSTANT 0
+
+// The impact-speed law BRS (9)-(10), `1 - e = 2 beta0 |g . n|^delta`, fields `impact_beta0`
+// and `impact_delta`.
+#define GDSMC_RESTITUTION_IMPACT_SPEED 1
+
 // The result of every fallible gdsmc call.
 typedef enum {
     // Success.
@@ -82,6 +93,8 @@ typedef enum {
     GDSMC_PARSE_ERROR = 8,
     // gdsmc panicked; the panic was caught at the boundary. Please report it.
     GDSMC_PANIC = 9,
+    // Memory for the particles could not be allocated (gdsmc_sim_create).
+    GDSMC_OUT_OF_MEMORY = 10,
 } gdsmc_status;
 
 // A simulation: `n` particles, its engine, generator and current time. Opaque to C.
@@ -104,14 +117,21 @@ typedef struct {
     uint32_t drive;
     // One of `GDSMC_SCHEME_*`.
     uint32_t scheme;
+    // One of `GDSMC_RESTITUTION_*`.
+    uint32_t restitution_law;
     // Collision-rate constant gamma of GRW (1), > 0.
     double gamma;
     // Kernel constant C_lambda, > 0.
     double c;
     // VHS exponent in [0, 1] (used with GDSMC_KERNEL_VHS only).
     double lambda;
-    // Restitution coefficient alpha in (0, 1].
+    // Restitution coefficient alpha in (0, 1] (GDSMC_RESTITUTION_CONSTANT only).
     double restitution;
+    // `beta_0 >= 0` of the impact-speed law (GDSMC_RESTITUTION_IMPACT_SPEED only).
+    double impact_beta0;
+    // `delta >= 0` of the impact-speed law (GDSMC_RESTITUTION_IMPACT_SPEED only; 1/5:
+    // viscoelastic spheres).
+    double impact_delta;
     // White-noise strength beta >= 0 (used with GDSMC_DRIVE_WHITE_NOISE only).
     double beta;
     // Gaussian thermostat rate zeta (GDSMC_DRIVE_GAUSSIAN only), finite.
@@ -125,8 +145,10 @@ typedef struct {
     // Drift velocity of the initial Maxwellian.
     double drift[3];
     // Time step of the splitting schemes, > 0; times passed to gdsmc_sim_advance must be
-    // multiples of it. Unused by GDSMC_SCHEME_NO_SPLITTING.
+    // multiples of it. Used by GDSMC_SCHEME_EULER and GDSMC_SCHEME_STRANG only.
     double dt;
+    // Step factor of GDSMC_SCHEME_TIME_STEPPED, > 0: `h = step_factor lambda / v0` (MS: 0.01).
+    double step_factor;
     // Host medium (GDSMC_DRIVE_HOST_MEDIUM): one of `GDSMC_BACKGROUND_*`.
     uint32_t background_kernel;
     // Host medium: kernel constant C_1 > 0.
@@ -186,16 +208,19 @@ const char *gdsmc_version(void);
 
 // Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
 // alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
-// seed 1, stream 0; dt = 1/4 and a unit host medium for when those are switched on.
+// seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS) and a unit host medium for when those
+// are switched on.
 //
 // # Safety
 // `out` must be NULL or point to writable memory for one gdsmc_config.
 gdsmc_status gdsmc_config_default(gdsmc_config *out);
 
-// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files;
-// observation times and ensemble counts are ignored). Fails with GDSMC_PARSE_ERROR or
-// GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out` is untouched then.
-// Only a single-Maxwellian initial distribution can be expressed in gdsmc_config.
+// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files,
+// read and validated by the same code; observation times and ensemble counts are ignored).
+// Every kernel, drive, scheme and restitution law of the command is available. Fails with
+// GDSMC_PARSE_ERROR or GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out`
+// is untouched then. Only a single-Maxwellian initial distribution can be expressed in
+// gdsmc_config (a mixture is refused with a message).
 //
 // # Safety
 // `toml` must be NULL or a NUL-terminated string; `out` NULL or writable for one gdsmc_config.

@@ -2,7 +2,6 @@
 
 use crate::guard::{check_ptr, guard};
 use crate::status::{Failure, fail, gdsmc_status};
-use gdsmc::scene::{DriveChoice, KernelChoice, SchemeChoice};
 use std::ffi::{CStr, c_char};
 
 /// Maxwell pseudo-molecules, `B = gamma C` (GRW, `lambda = 0`).
@@ -34,6 +33,15 @@ pub const GDSMC_SCHEME_NO_SPLITTING: u32 = 0;
 pub const GDSMC_SCHEME_EULER: u32 = 1;
 /// Strang splitting with time step `dt` (RW Algorithm 2).
 pub const GDSMC_SCHEME_STRANG: u32 = 2;
+/// MS's time-stepped scheme (MS Section 3; hard spheres only) with step `step_factor` mean
+/// free paths over the thermal speed.
+pub const GDSMC_SCHEME_TIME_STEPPED: u32 = 3;
+
+/// A constant restitution coefficient, field `restitution`.
+pub const GDSMC_RESTITUTION_CONSTANT: u32 = 0;
+/// The impact-speed law BRS (9)-(10), `1 - e = 2 beta0 |g . n|^delta`, fields `impact_beta0`
+/// and `impact_delta`.
+pub const GDSMC_RESTITUTION_IMPACT_SPEED: u32 = 1;
 
 /// Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or
 /// gdsmc_config_from_toml, then change fields. Enumerations are plain integers
@@ -54,14 +62,21 @@ pub struct gdsmc_config {
     pub drive: u32,
     /// One of `GDSMC_SCHEME_*`.
     pub scheme: u32,
+    /// One of `GDSMC_RESTITUTION_*`.
+    pub restitution_law: u32,
     /// Collision-rate constant gamma of GRW (1), > 0.
     pub gamma: f64,
     /// Kernel constant C_lambda, > 0.
     pub c: f64,
     /// VHS exponent in [0, 1] (used with GDSMC_KERNEL_VHS only).
     pub lambda: f64,
-    /// Restitution coefficient alpha in (0, 1].
+    /// Restitution coefficient alpha in (0, 1] (GDSMC_RESTITUTION_CONSTANT only).
     pub restitution: f64,
+    /// `beta_0 >= 0` of the impact-speed law (GDSMC_RESTITUTION_IMPACT_SPEED only).
+    pub impact_beta0: f64,
+    /// `delta >= 0` of the impact-speed law (GDSMC_RESTITUTION_IMPACT_SPEED only; 1/5:
+    /// viscoelastic spheres).
+    pub impact_delta: f64,
     /// White-noise strength beta >= 0 (used with GDSMC_DRIVE_WHITE_NOISE only).
     pub beta: f64,
     /// Gaussian thermostat rate zeta (GDSMC_DRIVE_GAUSSIAN only), finite.
@@ -75,8 +90,10 @@ pub struct gdsmc_config {
     /// Drift velocity of the initial Maxwellian.
     pub drift: [f64; 3],
     /// Time step of the splitting schemes, > 0; times passed to gdsmc_sim_advance must be
-    /// multiples of it. Unused by GDSMC_SCHEME_NO_SPLITTING.
+    /// multiples of it. Used by GDSMC_SCHEME_EULER and GDSMC_SCHEME_STRANG only.
     pub dt: f64,
+    /// Step factor of GDSMC_SCHEME_TIME_STEPPED, > 0: `h = step_factor lambda / v0` (MS: 0.01).
+    pub step_factor: f64,
     /// Host medium (GDSMC_DRIVE_HOST_MEDIUM): one of `GDSMC_BACKGROUND_*`.
     pub background_kernel: u32,
     /// Host medium: kernel constant C_1 > 0.
@@ -101,10 +118,13 @@ impl gdsmc_config {
             kernel: GDSMC_KERNEL_MAXWELL,
             drive: GDSMC_DRIVE_WHITE_NOISE,
             scheme: GDSMC_SCHEME_NO_SPLITTING,
+            restitution_law: GDSMC_RESTITUTION_CONSTANT,
             gamma: 4.0,
             c: 1.0 / (4.0 * std::f64::consts::PI),
             lambda: 0.0,
             restitution: 0.5,
+            impact_beta0: 0.0,
+            impact_delta: 0.0,
             beta: 1.0,
             zeta: 0.0,
             g: 0.0,
@@ -112,6 +132,7 @@ impl gdsmc_config {
             temperature: 1.0,
             drift: [0.0; 3],
             dt: 0.25,
+            step_factor: gdsmc_scene::DEFAULT_STEP_FACTOR,
             background_kernel: GDSMC_BACKGROUND_MAXWELL,
             background_c: 1.0,
             background_density: 1.0,
@@ -124,7 +145,8 @@ impl gdsmc_config {
 
 /// Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
 /// alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
-/// seed 1, stream 0; dt = 1/4 and a unit host medium for when those are switched on.
+/// seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS) and a unit host medium for when those
+/// are switched on.
 ///
 /// # Safety
 /// `out` must be NULL or point to writable memory for one gdsmc_config.
@@ -138,10 +160,12 @@ pub unsafe extern "C" fn gdsmc_config_default(out: *mut gdsmc_config) -> gdsmc_s
     })
 }
 
-/// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files;
-/// observation times and ensemble counts are ignored). Fails with GDSMC_PARSE_ERROR or
-/// GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out` is untouched then.
-/// Only a single-Maxwellian initial distribution can be expressed in gdsmc_config.
+/// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files,
+/// read and validated by the same code; observation times and ensemble counts are ignored).
+/// Every kernel, drive, scheme and restitution law of the command is available. Fails with
+/// GDSMC_PARSE_ERROR or GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out`
+/// is untouched then. Only a single-Maxwellian initial distribution can be expressed in
+/// gdsmc_config (a mixture is refused with a message).
 ///
 /// # Safety
 /// `toml` must be NULL or a NUL-terminated string; `out` NULL or writable for one gdsmc_config.
@@ -167,89 +191,14 @@ pub unsafe extern "C" fn gdsmc_config_from_toml(
 
 fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
     let path = std::path::Path::new("<toml>");
-    let scene = gdsmc::scene::parse(path, text).map_err(|e| {
+    let scene = gdsmc_scene::parse(path, text).map_err(|e| {
         let status = match e {
-            gdsmc::Error::Parse { .. } => gdsmc_status::GDSMC_PARSE_ERROR,
+            gdsmc_scene::Error::Parse { .. } => gdsmc_status::GDSMC_PARSE_ERROR,
             _ => gdsmc_status::GDSMC_INVALID_ARGUMENT,
         };
         Failure(status, e.to_string())
     })?;
-    if scene.impact_speed.is_some() {
-        return fail(
-            gdsmc_status::GDSMC_INVALID_ARGUMENT,
-            "<toml>: `collisions.impact_speed_law` is not available through the C ABI yet",
-        );
-    }
-    let [(_, mass, temperature, drift)] = scene.initial.components[..] else {
-        return fail(
-            gdsmc_status::GDSMC_INVALID_ARGUMENT,
-            "<toml>: `particles.initial` must be a single Maxwellian for gdsmc_config",
-        );
-    };
-    let mut cfg = gdsmc_config {
-        n: scene.n as u64,
-        seed: scene.seed,
-        restitution: scene.restitution,
-        mass,
-        temperature,
-        drift,
-        lambda: 0.0,
-        beta: 0.0,
-        ..gdsmc_config::example3()
-    };
-    (cfg.kernel, cfg.gamma, cfg.c) = match scene.kernel {
-        KernelChoice::Maxwell { gamma, c } => (GDSMC_KERNEL_MAXWELL, gamma, c),
-        KernelChoice::HardSpheres { gamma, c } => (GDSMC_KERNEL_HARD_SPHERES, gamma, c),
-        KernelChoice::Vhs { gamma, c, lambda } => {
-            cfg.lambda = lambda;
-            (GDSMC_KERNEL_VHS, gamma, c)
-        }
-    };
-    match scene.drive {
-        DriveChoice::None => cfg.drive = GDSMC_DRIVE_NONE,
-        DriveChoice::WhiteNoise(b) => {
-            cfg.drive = GDSMC_DRIVE_WHITE_NOISE;
-            cfg.beta = b;
-        }
-        DriveChoice::Gaussian(z) => {
-            cfg.drive = GDSMC_DRIVE_GAUSSIAN;
-            cfg.zeta = z;
-        }
-        DriveChoice::ConstantForce(g) => {
-            cfg.drive = GDSMC_DRIVE_CONSTANT_FORCE;
-            cfg.g = g;
-        }
-        DriveChoice::HostMedium {
-            hard_spheres,
-            c1,
-            density,
-            mass,
-            temperature,
-            drift,
-        } => {
-            cfg.drive = GDSMC_DRIVE_HOST_MEDIUM;
-            cfg.background_kernel = if hard_spheres {
-                GDSMC_BACKGROUND_HARD_SPHERES
-            } else {
-                GDSMC_BACKGROUND_MAXWELL
-            };
-            cfg.background_c = c1;
-            cfg.background_density = density;
-            cfg.background_mass = mass;
-            cfg.background_temperature = temperature;
-            cfg.background_drift = drift;
-        }
-    }
-    (cfg.scheme, cfg.dt) = match scene.scheme {
-        SchemeChoice::NoSplitting => (GDSMC_SCHEME_NO_SPLITTING, cfg.dt),
-        SchemeChoice::Euler(dt) => (GDSMC_SCHEME_EULER, dt),
-        SchemeChoice::Strang(dt) => (GDSMC_SCHEME_STRANG, dt),
-        SchemeChoice::TimeStepped(_) => {
-            return fail(
-                gdsmc_status::GDSMC_INVALID_ARGUMENT,
-                "<toml>: `scheme.kind` \"time-stepped\" is not available through the C ABI yet",
-            );
-        }
-    };
+    let mut cfg = gdsmc_config::from_physics(&scene.physics)?;
+    cfg.seed = scene.seed;
     Ok(cfg)
 }

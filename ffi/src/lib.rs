@@ -15,9 +15,9 @@
 #![allow(non_camel_case_types)]
 
 mod config;
-mod engine;
 mod guard;
 mod observables;
+mod physics;
 mod sim;
 mod status;
 

@@ -2,14 +2,14 @@
 //! reseed, destroy.
 
 use crate::config::gdsmc_config;
-use crate::engine::{AnyEngine, engine_error, validate};
 use crate::guard::{check_ptr, guard};
 use crate::observables::gdsmc_observables;
-use crate::status::{Failure, fail, gdsmc_status};
+use crate::status::{Failure, engine_error, fail, gdsmc_status};
+use gdsmc_core::engine::EventLoop;
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::physics::{Engine, Model, Physics};
 use gdsmc_core::rng::{Xoshiro256PlusPlus, seeded, stream};
-use gdsmc_core::sample::Maxwellian;
 use gdsmc_core::vec3::Vec3;
 use std::ffi::c_void;
 use std::mem::{align_of, size_of};
@@ -23,7 +23,7 @@ pub struct gdsmc_sim {
     owned: bool,
     n: usize,
     particles: *mut Particle,
-    engine: AnyEngine,
+    engine: Engine,
     rng: Xoshiro256PlusPlus,
     last: Observables,
 }
@@ -37,20 +37,16 @@ fn particles_of<'a>(particles: *mut Particle, n: usize) -> Particles<'a> {
     Particles::new(slice).expect("n >= 2 checked at creation")
 }
 
-/// Fills the particles and builds the handle's contents (not yet placed).
+/// Fills the particles from the initial distribution and starts the engine (the core's one
+/// dispatch, [`Model::launch`]); builds the handle's contents (not yet placed).
 fn build(
     c: &gdsmc_config,
+    model: &Model,
     particles: *mut Particle,
     n: usize,
     owned: bool,
 ) -> Result<gdsmc_sim, Failure> {
     let mut rng = stream(c.seed, c.stream);
-    let f0 = Maxwellian::new(
-        c.mass,
-        c.temperature,
-        Vec3::new(c.drift[0], c.drift[1], c.drift[2]),
-    )
-    .expect("validated");
     // SAFETY: `particles` points to room for `n` particles (see callers); every one is written
     // here before any is read.
     let slice = unsafe {
@@ -59,9 +55,9 @@ fn build(
         }
         std::slice::from_raw_parts_mut(particles, n)
     };
-    let mut p = Particles::new(slice).expect("n >= 2 validated");
-    p.fill_with(0.0, || f0.sample(&mut rng));
-    let (engine, last) = AnyEngine::start(c, &mut p)?;
+    let mut p = Particles::new(slice)
+        .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, e.to_string()))?;
+    let (engine, last) = model.launch(&mut p, 0.0, &mut rng).map_err(engine_error)?;
     Ok(gdsmc_sim {
         magic: ALIVE,
         owned,
@@ -84,12 +80,22 @@ fn check_len(len: usize, n: usize) -> Result<(), Failure> {
     Ok(())
 }
 
-fn read_config(cfg: *const gdsmc_config) -> Result<gdsmc_config, Failure> {
+/// The caller's configuration and its validated model.
+fn read_config(cfg: *const gdsmc_config) -> Result<(gdsmc_config, Model), Failure> {
     check_ptr(cfg, "config")?;
     // SAFETY: checked non-null and aligned; the caller provides a readable gdsmc_config.
     let c = unsafe { cfg.read() };
-    validate(&c)?;
-    Ok(c)
+    if c.stream > 1 << 24 {
+        return fail(
+            gdsmc_status::GDSMC_INVALID_ARGUMENT,
+            format!(
+                "config.stream = {} is above 2^24 (each costs a jump)",
+                c.stream
+            ),
+        );
+    }
+    let model = c.model()?;
+    Ok((c, model))
 }
 
 /// A live handle from a caller pointer, or the status saying why not.
@@ -123,11 +129,21 @@ pub unsafe extern "C" fn gdsmc_sim_create(
         check_ptr(out, "out")?;
         // SAFETY: checked non-null and aligned.
         unsafe { out.write(std::ptr::null_mut()) };
-        let c = read_config(config)?;
-        let n = c.n as usize;
-        let buf: Box<[Particle]> = vec![Particle::default(); n].into_boxed_slice();
-        let ptr = Box::into_raw(buf).cast::<Particle>();
-        match build(&c, ptr, n, true) {
+        let (c, model) = read_config(config)?;
+        let n = model.n();
+        let mut buf: Vec<Particle> = Vec::new();
+        if buf.try_reserve_exact(n).is_err() {
+            return fail(
+                gdsmc_status::GDSMC_OUT_OF_MEMORY,
+                format!(
+                    "n = {n} particles ({} bytes) cannot be allocated",
+                    n.saturating_mul(size_of::<Particle>())
+                ),
+            );
+        }
+        buf.resize(n, Particle::default());
+        let ptr = Box::into_raw(buf.into_boxed_slice()).cast::<Particle>();
+        match build(&c, &model, ptr, n, true) {
             Ok(s) => {
                 // SAFETY: checked non-null and aligned.
                 unsafe { out.write(Box::into_raw(Box::new(s))) };
@@ -160,13 +176,15 @@ pub unsafe extern "C" fn gdsmc_sim_footprint(
     guard(|| {
         check_ptr(bytes, "bytes")?;
         check_ptr(align, "align")?;
-        if n < 2 {
+        // The particle-count rule of the core (n >= 2, addressable).
+        let n = usize::try_from(n).unwrap_or(usize::MAX);
+        if let Err(e) = Physics::check_n(n) {
             return fail(
                 gdsmc_status::GDSMC_INVALID_ARGUMENT,
-                format!("n must be >= 2, got {n}"),
+                format!("n {}", e.problem),
             );
         }
-        let Some(total) = (n as usize)
+        let Some(total) = n
             .checked_mul(size_of::<Particle>())
             .and_then(|b| b.checked_add(header_bytes()))
             .filter(|&b| b <= isize::MAX as usize)
@@ -205,7 +223,7 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
         check_ptr(out, "out")?;
         // SAFETY: checked non-null and aligned.
         unsafe { out.write(std::ptr::null_mut()) };
-        let c = read_config(config)?;
+        let (c, model) = read_config(config)?;
         if memory.is_null() {
             return fail(gdsmc_status::GDSMC_NULL_POINTER, "`memory` is NULL");
         }
@@ -216,7 +234,7 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
                 format!("`memory` is not aligned to {align} bytes"),
             );
         }
-        let n = c.n as usize;
+        let n = model.n();
         let need = header_bytes() + n * size_of::<Particle>();
         if size < need {
             return fail(
@@ -228,7 +246,7 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
         // SAFETY: `memory` has `need` bytes aligned to `align`; the particles start at an offset
         // that is a multiple of their alignment, after the header.
         let particles = unsafe { memory.cast::<u8>().add(header_bytes()).cast::<Particle>() };
-        let s = build(&c, particles, n, false)?;
+        let s = build(&c, &model, particles, n, false)?;
         // SAFETY: the header fits before the particles and `head` is aligned.
         unsafe {
             head.write(s);
@@ -259,7 +277,7 @@ pub unsafe extern "C" fn gdsmc_sim_advance(
         let mut p = particles_of(s.particles, s.n);
         let o = s
             .engine
-            .advance(&mut p, t, &mut rng)
+            .advance_to(&mut p, t, &mut rng)
             .map_err(engine_error)?;
         s.rng = rng;
         s.last = o;

@@ -28,6 +28,25 @@ pub enum gdsmc_status {
     GDSMC_PARSE_ERROR = 8,
     /// gdsmc panicked; the panic was caught at the boundary. Please report it.
     GDSMC_PANIC = 9,
+    /// Memory for the particles could not be allocated (gdsmc_sim_create).
+    GDSMC_OUT_OF_MEMORY = 10,
+}
+
+/// The status and message of an engine's refusal.
+pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
+    use gdsmc_core::engine::EngineError;
+    let s = match e {
+        EngineError::TimeBackwards => gdsmc_status::GDSMC_TIME_BACKWARDS,
+        EngineError::NonFinite => gdsmc_status::GDSMC_NON_FINITE,
+        EngineError::OffGrid | EngineError::ParticleCount => gdsmc_status::GDSMC_INVALID_ARGUMENT,
+    };
+    let msg = match e {
+        EngineError::OffGrid => {
+            "the time is not a multiple of config.dt (splitting schemes)".to_string()
+        }
+        _ => e.to_string(),
+    };
+    Failure(s, msg)
 }
 
 /// An error: its status and message.

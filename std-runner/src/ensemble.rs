@@ -4,28 +4,21 @@
 //! in fixed chunks of [`CHUNK`]; each chunk is accumulated in ensemble order and the chunks are
 //! merged in chunk order, so the statistics are bit-identical for any number of threads.
 //!
-//! The engine is composed at compile time: [`with_engine`] turns the scene's kernel and drive
-//! into concrete types and calls a generic job, so each combination gets its own loop.
+//! The engine is composed at compile time: the core's [`Model::start`] turns the scene's
+//! physics into one statically composed event loop per ensemble.
 
 use crate::columns::{COLUMNS, names};
 use crate::error::Error;
-use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
+use crate::scene::Scene;
 use crate::stats::Accumulator;
 use gdsmc_core::collisional::collisional_moments;
-use gdsmc_core::drive::{
-    ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
-    MaxwellBackground, NoDrive, WhiteNoise,
-};
-use gdsmc_core::engine::{
-    Counts, EngineError, EventLoop, NoSplitting, Splitting, SplittingOrder, TimeStepped,
-};
+use gdsmc_core::engine::{Counts, EngineError, EventLoop};
 use gdsmc_core::histogram::{component_bins, radial_shells_mapped};
-use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
-use gdsmc_core::restitution::{Constant, ImpactSpeed, Restitution};
+use gdsmc_core::physics::{MAX_COMPONENTS, Model};
 use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
-use gdsmc_core::sample::{Maxwellian, MaxwellianMixture};
+use gdsmc_core::sample::MaxwellianMixture;
 use gdsmc_core::vec3::Vec3;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -36,131 +29,23 @@ use std::time::{Duration, Instant};
 pub const CHUNK: u64 = 1;
 /// Chunks handed to the pool at once (bounds memory; independent of the thread count).
 const BATCH: u64 = 256;
-/// Most mixture components an initial distribution may have.
-pub const MAX_COMPONENTS: usize = 16;
 
-/// A job generic over the engine's static types.
-pub trait EngineJob {
-    /// What the job returns.
-    type Output;
-    /// Runs with concrete kernel and drive types.
-    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync, A: Restitution + Send + Sync>(
-        self,
-        kernel: K,
-        drive: D,
-        law: A,
-    ) -> Self::Output;
+/// The initial distribution of a scene as a core sampler (`None` if its physics is invalid).
+pub fn initial_sampler(scene: &Scene) -> Option<MaxwellianMixture<MAX_COMPONENTS>> {
+    scene.physics.validate().ok().map(|m| m.initial().clone())
 }
 
-/// Calls `job` with the scene's restitution law as a concrete type.
-fn with_law<K: Kernel + Send + Sync, D: Drive + Send + Sync, J: EngineJob>(
+/// Runs one ensemble of `scene` (whose physics `model` is) from the generator `rng`: the
+/// observables at every observation time, row-major (`times x COLUMNS`), and the event counts.
+pub fn run_ensemble(
     scene: &Scene,
-    k: K,
-    d: D,
-    job: J,
-) -> J::Output {
-    match scene.impact_speed {
-        None => job.run(k, d, Constant::new(scene.restitution).expect("validated")),
-        Some((beta0, delta)) => job.run(k, d, ImpactSpeed::new(beta0, delta).expect("validated")),
-    }
-}
-
-/// Calls `job` with the scene's kernel and drive as concrete types (static dispatch).
-pub fn with_engine<J: EngineJob>(scene: &Scene, job: J) -> J::Output {
-    match scene.kernel {
-        KernelChoice::Maxwell { gamma, c } => {
-            with_drive(scene, Maxwell::new(gamma, c).expect("validated"), job)
-        }
-        KernelChoice::HardSpheres { gamma, c } => {
-            with_drive(scene, HardSpheres::new(gamma, c).expect("validated"), job)
-        }
-        KernelChoice::Vhs { gamma, c, lambda } => {
-            with_drive(scene, Vhs::new(gamma, c, lambda).expect("validated"), job)
-        }
-    }
-}
-
-fn with_drive<K: Kernel + Send + Sync, J: EngineJob>(scene: &Scene, k: K, job: J) -> J::Output {
-    match scene.drive {
-        DriveChoice::None => with_law(scene, k, NoDrive, job),
-        DriveChoice::WhiteNoise(beta) => {
-            with_law(scene, k, WhiteNoise::new(beta).expect("validated"), job)
-        }
-        DriveChoice::Gaussian(zeta) => with_law(
-            scene,
-            k,
-            GaussianThermostat::new(zeta).expect("validated"),
-            job,
-        ),
-        DriveChoice::ConstantForce(g) => {
-            with_law(scene, k, ConstantForce::new(g).expect("validated"), job)
-        }
-        DriveChoice::HostMedium {
-            hard_spheres,
-            c1,
-            density,
-            mass,
-            temperature,
-            drift,
-        } => {
-            let bg = Maxwellian::new(mass, temperature, Vec3::new(drift[0], drift[1], drift[2]))
-                .expect("validated");
-            let params = HostMediumParams::new(bg, density, c1).expect("validated");
-            if hard_spheres {
-                with_law(scene, k, HostMedium::new(params, HardSphereBackground), job)
-            } else {
-                with_law(scene, k, HostMedium::new(params, MaxwellBackground), job)
-            }
-        }
-    }
-}
-
-/// The initial distribution of a scene as a core sampler.
-pub fn initial_sampler(scene: &Scene) -> MaxwellianMixture<MAX_COMPONENTS> {
-    let mut mix = MaxwellianMixture::new();
-    for &(w, m, t, u) in &scene.initial.components {
-        let mx = Maxwellian::new(m, t, Vec3::new(u[0], u[1], u[2])).expect("validated");
-        mix.push(w, mx).expect("validated");
-    }
-    mix
-}
-
-/// Runs one ensemble: the observables at every observation time, row-major
-/// (`times x COLUMNS`), and the event counts.
-pub fn run_ensemble<K: Kernel, D: Drive, A: Restitution>(
-    scene: &Scene,
-    kernel: K,
-    drive: D,
-    alpha: A,
+    model: &Model,
     mut rng: Xoshiro256PlusPlus,
 ) -> Result<(Vec<f64>, Counts), EngineError> {
-    let n = scene.n;
-    let mut buf = vec![Particle::default(); n];
-    let mut p = Particles::new(&mut buf).expect("n >= 2 validated");
-    let f0 = initial_sampler(scene);
-    p.fill_with(0.0, || f0.sample(&mut rng).expect("validated weights"));
-    match scene.scheme {
-        SchemeChoice::NoSplitting => {
-            let (e, o) = NoSplitting::start(kernel, drive, alpha, &mut p, 0.0)?;
-            observe(scene, e, o, &mut p, &mut rng)
-        }
-        SchemeChoice::TimeStepped(f) => {
-            let hs = kernel
-                .as_hard_spheres()
-                .expect("validated: the time-stepped scheme needs hard spheres");
-            let (e, o) = TimeStepped::start(hs, drive, alpha, f, &mut p, 0.0)?;
-            observe(scene, e, o, &mut p, &mut rng)
-        }
-        SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => {
-            let order = if matches!(scene.scheme, SchemeChoice::Euler(_)) {
-                SplittingOrder::Euler
-            } else {
-                SplittingOrder::Strang
-            };
-            let (e, o) = Splitting::start(kernel, drive, alpha, order, dt, &mut p, 0.0)?;
-            observe(scene, e, o, &mut p, &mut rng)
-        }
-    }
+    let mut buf = vec![Particle::default(); model.n()];
+    let mut p = Particles::new(&mut buf).map_err(|_| EngineError::ParticleCount)?;
+    let (engine, obs0) = model.launch(&mut p, 0.0, &mut rng)?;
+    observe(scene, engine, obs0, &mut p, &mut rng)
 }
 
 fn observe<E: EventLoop>(
@@ -211,16 +96,15 @@ fn observe<E: EventLoop>(
             }
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
-        if let (true, Some((bulk, t_bulk))) = (scene.collisional_pairs > 0, stored) {
+        // The scene allows collisional pairs with a constant restitution law only.
+        if let (true, Some((bulk, t_bulk)), Some(alpha)) = (
+            scene.collisional_pairs > 0,
+            stored,
+            scene.physics.restitution.constant(),
+        ) {
             // mu2, mu4 are reduced by v0, so the stored units do.
-            let (mu2, mu4) = collisional_moments(
-                p,
-                bulk,
-                t_bulk,
-                scene.restitution,
-                scene.collisional_pairs,
-                &mut diag,
-            );
+            let (mu2, mu4) =
+                collisional_moments(p, bulk, t_bulk, alpha, scene.collisional_pairs, &mut diag);
             out.extend([mu2, mu4]);
         }
     }
@@ -346,6 +230,7 @@ impl RunStats {
 
 struct EnsembleJob<'a> {
     scene: &'a Scene,
+    model: &'a Model,
     threads: usize,
     progress: &'a (dyn Fn(u64) + Sync),
     stop: &'a AtomicBool,
@@ -355,16 +240,9 @@ struct EnsembleJob<'a> {
 /// counts, ensembles merged.
 type Merged = (Accumulator, Accumulator, Accumulator, Counts, u64);
 
-impl EngineJob for EnsembleJob<'_> {
-    type Output = Result<Merged, Error>;
-
-    fn run<K: Kernel + Send + Sync, D: Drive + Send + Sync, A: Restitution + Send + Sync>(
-        self,
-        kernel: K,
-        drive: D,
-        law: A,
-    ) -> Self::Output {
-        let scene = self.scene;
+impl EnsembleJob<'_> {
+    fn run(self) -> Result<Merged, Error> {
+        let (scene, model) = (self.scene, self.model);
         let ncol = names(scene).len();
         let width = scene.times.len() * ncol;
         let pool = rayon::ThreadPoolBuilder::new()
@@ -410,10 +288,12 @@ impl EngineJob for EnsembleJob<'_> {
                         let mut cnt = Counts::default();
                         for (k, r) in rs.iter().enumerate() {
                             let e = start + ci as u64 * CHUNK + k as u64;
-                            let (row, c) = run_ensemble(scene, kernel, drive, law, r.clone())
-                                .map_err(|err| Error::Engine {
-                                    ensemble: e,
-                                    message: err.to_string(),
+                            let (row, c) =
+                                run_ensemble(scene, model, r.clone()).map_err(|err| {
+                                    Error::Engine {
+                                        ensemble: e,
+                                        message: err.to_string(),
+                                    }
                                 })?;
                             let (row, h) = row.split_at(width);
                             acc.push(row);
@@ -471,15 +351,18 @@ pub fn run_interruptible(
     };
     let start = Instant::now();
     let cpu0 = cpu_time::ProcessTime::try_now().ok();
-    let (acc, st, hist, counts, ensembles) = with_engine(
+    let model = scene
+        .physics
+        .validate()
+        .map_err(|e| Error::Physics(e.to_string()))?;
+    let (acc, st, hist, counts, ensembles) = EnsembleJob {
         scene,
-        EnsembleJob {
-            scene,
-            threads,
-            progress,
-            stop,
-        },
-    )?;
+        model: &model,
+        threads,
+        progress,
+        stop,
+    }
+    .run()?;
     let mut at = 0;
     let mut take = |len: usize| {
         let a = hist.slice(at..at + len);

@@ -5,31 +5,17 @@ use std::path::PathBuf;
 /// Everything that can stop a run.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
-    /// The scene file could not be read.
-    #[error("{path}: cannot read scene file: {source}")]
-    Read {
-        /// The file.
-        path: PathBuf,
-        /// The I/O error.
-        source: std::io::Error,
-    },
-    /// The scene file is not valid TOML or does not match the schema (unknown key, wrong type).
-    #[error("{path}: {message}")]
-    Parse {
-        /// The file.
-        path: PathBuf,
-        /// The parser's message, with line and column.
-        message: String,
-    },
-    /// A value is out of its domain.
-    #[error("{}: `{key}` {message}", location(path, *line))]
-    Invalid {
-        /// The file (or `--flag` for command-line values).
-        path: PathBuf,
-        /// 1-based line of the value (0 when it came from the command line).
-        line: usize,
-        /// Dotted key path.
-        key: String,
+    /// A scene could not be read, parsed or validated (file, line and key named).
+    #[error(transparent)]
+    Scene(#[from] gdsmc_scene::Error),
+    /// A physics description built in code (not from a scene file) is invalid.
+    #[error("{0}")]
+    Physics(String),
+    /// A command-line argument is out of its domain.
+    #[error("{flag}: {message}")]
+    Argument {
+        /// The flag or argument.
+        flag: String,
         /// What is wrong.
         message: String,
     },
@@ -55,12 +41,4 @@ pub enum Error {
         /// The I/O error.
         source: std::io::Error,
     },
-}
-
-fn location(path: &std::path::Path, line: usize) -> String {
-    if line == 0 {
-        path.display().to_string()
-    } else {
-        format!("{}:{line}", path.display())
-    }
 }

@@ -15,7 +15,7 @@ pub mod output;
 pub mod reference;
 pub mod references;
 pub mod reproduce;
-pub mod scene;
+pub use gdsmc_scene as scene;
 pub mod stats;
 pub mod summary;
 pub mod tails;

@@ -174,31 +174,15 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
             out,
             set,
         } => {
-            let mut sc = scene::load_with_overrides(&path, &set)?;
-            let flag = |key: &str, message: String| gdsmc::Error::Invalid {
-                path: PathBuf::from(format!("--{key}")),
-                line: 0,
-                key: key.to_string(),
-                message,
-            };
-            if let Some(n) = n {
-                if n < 2 {
-                    return Err(flag(
-                        "n",
-                        format!("must be >= 2 (a pair is needed to collide), got {n}"),
-                    ));
-                }
-                sc.n = n as usize;
-            }
-            if let Some(m) = ensembles {
-                if m < 1 {
-                    return Err(flag("ensembles", format!("must be >= 1, got {m}")));
-                }
-                sc.ensembles = m as u64;
-            }
-            if let Some(s) = seed {
-                sc.seed = s;
-            }
+            // --n, --ensembles and --seed are overrides of their scene keys: the same
+            // validation as the file's, errors naming the flag.
+            let mut overrides: Vec<scene::Override> =
+                set.into_iter().map(scene::Override::set).collect();
+            overrides.extend(n.map(|n| scene::Override::flag("n", "particles.n", n)));
+            overrides
+                .extend(ensembles.map(|m| scene::Override::flag("ensembles", "run.ensembles", m)));
+            overrides.extend(seed.map(|s| scene::Override::flag("seed", "run.seed", s)));
+            let sc = scene::load_with(&path, &overrides)?;
             let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             {
                 let stop = stop.clone();

@@ -135,7 +135,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         .as_ref()
         .and_then(|(radius, h)| crate::tails::fit(*radius, h))
         .map(|f| {
-            let lambda = match scene.kernel {
+            let lambda = match scene.physics.kernel {
                 crate::scene::KernelChoice::Maxwell { .. } => 0.0,
                 crate::scene::KernelChoice::HardSpheres { .. } => 1.0,
                 crate::scene::KernelChoice::Vhs { lambda, .. } => lambda,
@@ -173,7 +173,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
         "scene": scene.name,
         "description": scene.description,
-        "n": scene.n,
+        "n": scene.n(),
         "ensembles": stats.ensembles,
         "ensembles_requested": scene.ensembles,
         "interrupted": stats.ensembles < scene.ensembles,
@@ -190,7 +190,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "majorant_refreshes": c.refreshes,
             "rescales": c.rescales,
             "observations": c.observations,
-            "kicks": c.kicks(scene.n),
+            "kicks": c.kicks(scene.n()),
         },
         "errors": errors,
     })

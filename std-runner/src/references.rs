@@ -2,7 +2,7 @@
 
 use crate::ensemble::initial_sampler;
 use crate::reference::{HostMediumMaxwell, MaxwellTemperature};
-use crate::scene::{DriveChoice, KernelChoice, Scene, SchemeChoice};
+use crate::scene::{BackgroundKernel, DriveChoice, KernelChoice, Scene, SchemeChoice};
 
 /// A named reference curve `t -> value` for an observable column.
 pub struct ReferenceCurve {
@@ -18,15 +18,13 @@ pub struct ReferenceCurve {
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
 pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
-    if scene.impact_speed.is_some() {
-        return None;
-    }
-    let KernelChoice::Maxwell { gamma, c } = scene.kernel else {
+    let alpha = scene.physics.restitution.constant()?;
+    let KernelChoice::Maxwell { gamma, c } = scene.physics.kernel else {
         return None;
     };
-    let t0 = initial_sampler(scene).temperature();
-    let m = |beta| MaxwellTemperature::new(t0, scene.restitution, beta, gamma, c);
-    match scene.drive {
+    let t0 = initial_sampler(scene)?.temperature();
+    let m = |beta| MaxwellTemperature::new(t0, alpha, beta, gamma, c);
+    match scene.physics.drive {
         DriveChoice::None => Some(m(0.0)),
         DriveChoice::WhiteNoise(b) => Some(m(b)),
         DriveChoice::Gaussian(z) => Some(m(0.0).with_gaussian(z)),
@@ -36,24 +34,22 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
 pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
-    if scene.impact_speed.is_some() {
-        return None;
-    }
-    let KernelChoice::Maxwell { gamma, c } = scene.kernel else {
+    let alpha = scene.physics.restitution.constant()?;
+    let KernelChoice::Maxwell { gamma, c } = scene.physics.kernel else {
         return None;
     };
     let DriveChoice::HostMedium {
-        hard_spheres: false,
+        kernel: BackgroundKernel::Maxwell,
         c1,
         density,
         mass,
         temperature,
         drift,
-    } = scene.drive
+    } = scene.physics.drive
     else {
         return None;
     };
-    let f0 = initial_sampler(scene);
+    let f0 = initial_sampler(scene)?;
     let u0 = f0.mean();
     Some(HostMediumMaxwell {
         u0: u0.to_array(),
@@ -63,36 +59,34 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
         alpha: mass / (1.0 + mass),
         s: density * c1,
         kn: gamma * c / (density * c1),
-        e: scene.restitution,
+        e: alpha,
     })
 }
 
 /// The BRS (21), (22) closure models of a hard-sphere gas in a hard-sphere host medium.
 pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
     use crate::hydro::{Closure, HydroModel};
-    let KernelChoice::HardSpheres { gamma, c } = scene.kernel else {
+    let KernelChoice::HardSpheres { gamma, c } = scene.physics.kernel else {
         return None;
     };
     let DriveChoice::HostMedium {
-        hard_spheres: true,
+        kernel: BackgroundKernel::HardSpheres,
         c1,
         density,
         mass,
         temperature,
         drift,
-    } = scene.drive
+    } = scene.physics.drive
     else {
         return None;
     };
-    if scene.impact_speed.is_some() {
-        return None;
-    }
+    let alpha = scene.physics.restitution.constant()?;
     let m = |closure| HydroModel {
         alpha: mass / (1.0 + mass),
         tb: temperature,
         ub: drift,
         k: gamma * c / (density * density * c1),
-        beta: (1.0 - scene.restitution) / 2.0,
+        beta: (1.0 - alpha) / 2.0,
         s: density * density * c1,
         closure,
     };
@@ -102,8 +96,7 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     let mut out = Vec::new();
-    if let Some(models) = hydro_models(scene) {
-        let f0 = initial_sampler(scene);
+    if let (Some(models), Some(f0)) = (hydro_models(scene), initial_sampler(scene)) {
         let t_end = scene.times.last().copied().unwrap_or(1.0);
         for (model, (tn, vn, src)) in models.iter().zip([
             (
@@ -162,8 +155,8 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             curve: Box::new(move |t| h.temperature(t)),
         });
     }
-    if let Some(mt) = maxwell_temperature(scene) {
-        let v0 = initial_sampler(scene).mean().norm2() / 3.0;
+    if let (Some(mt), Some(f0)) = (maxwell_temperature(scene), initial_sampler(scene)) {
+        let v0 = f0.mean().norm2() / 3.0;
         out.push(ReferenceCurve {
             name: "T_exact",
             of: "T",
@@ -177,8 +170,8 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             curve: Box::new(move |t| mt.at(t)),
         });
         // The exact ensemble mean at this n (and time step): the scheme's whole systematic error.
-        let n = scene.n;
-        let finite: Box<dyn Fn(f64) -> f64 + Send + Sync> = match scene.scheme {
+        let n = scene.n();
+        let finite: Box<dyn Fn(f64) -> f64 + Send + Sync> = match scene.physics.scheme {
             SchemeChoice::NoSplitting => Box::new(move |t| mt.finite_n_bulk_mean(n, t)),
             SchemeChoice::Euler(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, false, t)),
             SchemeChoice::Strang(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, true, t)),

@@ -17,7 +17,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
     let _ = writeln!(
         s,
         "run        n = {}, ensembles = {}, seed = {}, threads = {}, wall = {:.2} s, cpu = {:.2} s",
-        scene.n,
+        scene.n(),
         stats.ensembles,
         scene.seed,
         stats.threads,

@@ -3,7 +3,7 @@
 //! stability study in docs/stability.md lists them with the failures they reveal.
 
 use crate::ensemble::RunStats;
-use crate::scene::{DriveChoice, Scene, SchemeChoice};
+use crate::scene::{DriveChoice, RestitutionLaw, Scene, SchemeChoice};
 
 /// Expected relative errors above this fire the step-size warnings.
 pub const STEP_ERROR: f64 = 0.01;
@@ -34,8 +34,18 @@ fn relaxation_rate(scene: &Scene, stats: &RunStats) -> Option<f64> {
         return None;
     }
     let nu =
-        2.0 * stats.counts.collisions as f64 / (scene.n as f64 * stats.ensembles as f64 * t_end);
-    Some(nu * (1.0 - scene.restitution * scene.restitution) / 4.0)
+        2.0 * stats.counts.collisions as f64 / (scene.n() as f64 * stats.ensembles as f64 * t_end);
+    let a = typical_alpha(scene);
+    Some(nu * (1.0 - a * a) / 4.0)
+}
+
+/// The restitution coefficient the step-error estimates use: the constant, or for the
+/// impact-speed law BRS (9) its value at unit normal impact speed, `1 - 2 beta0` (in [0, 1]).
+fn typical_alpha(scene: &Scene) -> f64 {
+    match scene.physics.restitution {
+        RestitutionLaw::Constant(a) => a,
+        RestitutionLaw::ImpactSpeed { beta0, .. } => (1.0 - 2.0 * beta0).clamp(0.0, 1.0),
+    }
 }
 
 /// Every warning of a finished run.
@@ -46,9 +56,9 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     // k dt / 2 (Euler) and (k dt)^2 / 24 (Strang) to leading order (reference.rs,
     // splitting_bulk_mean; RW Tables 2-4 and 6).
     if let (SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt), Some(k)) =
-        (scene.scheme, relaxation_rate(scene, stats))
+        (scene.physics.scheme, relaxation_rate(scene, stats))
     {
-        let euler = matches!(scene.scheme, SchemeChoice::Euler(_));
+        let euler = matches!(scene.physics.scheme, SchemeChoice::Euler(_));
         let err = if euler {
             k * dt / 2.0
         } else {
@@ -69,8 +79,8 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     }
     // The MS time-stepped scheme decouples drive and collisions over h = f lambda / v0, an
     // Euler-like splitting with k h = (1 - alpha^2) f / 4 per mean free time.
-    if let SchemeChoice::TimeStepped(f) = scene.scheme {
-        let a = scene.restitution;
+    if let SchemeChoice::TimeStepped(f) = scene.physics.scheme {
+        let a = typical_alpha(scene);
         let err = (1.0 - a * a) * f / 8.0;
         if err > STEP_ERROR {
             w.push(Warning {
@@ -103,7 +113,8 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     // Stored velocities keep about 16 digits of v = V + c; when |c| << |V| the peculiar
     // velocities, and with them T_bulk, a2, a3 and crit, lose digits. The no-splitting
     // scheme without drive stores a cooling gas rescaled about V and keeps every digit.
-    let rescaled = scene.scheme == SchemeChoice::NoSplitting && scene.drive == DriveChoice::None;
+    let rescaled = scene.physics.scheme == SchemeChoice::NoSplitting
+        && scene.physics.drive == DriveChoice::None;
     let (Some(tb), Some(vn), false) = (stats.col("T_bulk"), stats.col("V_norm"), rescaled) else {
         return w;
     };

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 fn a_run_writes_csv_json_and_svg() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
     let mut s = scene::load(&path).unwrap();
-    s.n = 32;
+    s.physics.n = 32;
     s.ensembles = 10;
     let st = ensemble::run(&s, 1, &|_| {}).unwrap();
     let refs = references::for_scene(&s);

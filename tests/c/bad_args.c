@@ -60,8 +60,8 @@ static void config_errors(void) {
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.kernel = 7");
     c = base(); c.drive = 99;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.drive = 99");
-    c = base(); c.scheme = 3;
-    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 3");
+    c = base(); c.scheme = 4;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 4");
     c = base(); c.restitution = 1.5;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
     c = base(); c.restitution = 0.0;
@@ -214,6 +214,36 @@ static void schemes_and_host_medium(void) {
     STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
 }
 
+/* The time-stepped scheme and the impact-speed law: their rules come from the core's one
+ * validation, with the C field's name. */
+static void time_stepped_and_impact_law(void) {
+    gdsmc_config c = base();
+    gdsmc_sim *sim = NULL;
+    gdsmc_observables o;
+    c.scheme = GDSMC_SCHEME_TIME_STEPPED;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.scheme time-stepped (MS Section 3) needs the hard-sphere kernel");
+    c.kernel = GDSMC_KERNEL_HARD_SPHERES; c.step_factor = 0.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.step_factor must be > 0, got 0");
+    c.step_factor = 0.01;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 0.5, &o), GDSMC_OK, "");
+    EXPECT(o.t == 0.5 && o.collisions > 0, "time-stepped t = %g, %llu collisions", o.t,
+           (unsigned long long)o.collisions);
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+
+    c = base(); c.restitution_law = 5;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution_law = 5");
+    c.restitution_law = GDSMC_RESTITUTION_IMPACT_SPEED; c.impact_beta0 = -0.1;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.impact_beta0 must be >= 0, got -0.1");
+    c.impact_beta0 = 0.1; c.impact_delta = NAN;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.impact_delta must be a finite number");
+    c.impact_delta = 0.2;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 0.5, &o), GDSMC_OK, "");
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+}
+
 static void last_error_buffer(void) {
     gdsmc_config_default(NULL);
     size_t need = gdsmc_last_error(NULL, 0);
@@ -233,6 +263,7 @@ int main(void) {
     handle_errors();
     allocation_free();
     schemes_and_host_medium();
+    time_stepped_and_impact_law();
     last_error_buffer();
     printf("%d passed, %d failed\n", passed, failed);
     return failed != 0;

@@ -15,7 +15,7 @@ use gdsmc_validation::*;
 fn maxwell_cooling_is_exponential_over_thirty_decades() {
     let n = 8;
     let mut s = shipped("rw-transient", n, 20_000, 901);
-    s.drive = DriveChoice::None;
+    s.physics.drive = DriveChoice::None;
     s.times = (0..=10).map(|i| 10.0 * i as f64).collect(); // k = 3/4: T falls to e^-75 ~ 3e-33
     let mt = maxwell_temperature(&s).unwrap();
     let st = run(&s);
@@ -41,8 +41,8 @@ fn gaussian_thermostat_with_maxwell_kernel_is_exact() {
         .enumerate()
     {
         let mut s = shipped("rw-transient", n, 20_000, 910 + k as u64);
-        s.drive = DriveChoice::Gaussian(0.75 / 4.0);
-        s.scheme = scheme;
+        s.physics.drive = DriveChoice::Gaussian(0.75 / 4.0);
+        s.physics.scheme = scheme;
         s.times = (0..=8).map(f64::from).collect();
         let mt = maxwell_temperature(&s).unwrap();
         let st = run(&s);
@@ -64,9 +64,9 @@ fn gaussian_thermostat_with_maxwell_kernel_is_exact() {
 fn hard_spheres_follow_haffs_law_over_ten_decades() {
     let (n, alpha) = (2048, 0.5);
     let mut s = shipped("grw-example5", n, 60, 920);
-    s.drive = DriveChoice::None;
-    s.restitution = alpha;
-    let KernelChoice::HardSpheres { gamma, c } = s.kernel else {
+    s.physics.drive = DriveChoice::None;
+    s.physics.restitution = gdsmc::scene::RestitutionLaw::Constant(alpha);
+    let KernelChoice::HardSpheres { gamma, c } = s.physics.kernel else {
         panic!("hard spheres")
     };
     // MS (5), d = 3: a2 of the homogeneous cooling state.

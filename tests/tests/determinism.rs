@@ -1,6 +1,7 @@
 //! A run is a pure function of (scene, seed): the same observables.csv bytes for any thread
 //! count, and different bytes for a different seed.
 
+use gdsmc::scene::RestitutionLaw;
 use gdsmc::{output, references};
 use gdsmc_validation::*;
 
@@ -26,8 +27,11 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
     // runs must agree to the bit (same random draws, same arithmetic).
     let a = shipped("grw-example5", 64, 20, 5);
     let mut b = a.clone();
-    b.impact_speed = Some((0.25, 0.0));
-    assert_eq!(b.restitution, 0.5);
+    assert_eq!(a.physics.restitution, RestitutionLaw::Constant(0.5));
+    b.physics.restitution = RestitutionLaw::ImpactSpeed {
+        beta0: 0.25,
+        delta: 0.0,
+    };
     let sa = gdsmc::ensemble::run(&a, 2, &|_| {}).unwrap();
     let sb = gdsmc::ensemble::run(&b, 2, &|_| {}).unwrap();
     assert_eq!(
@@ -36,7 +40,10 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
     );
     // A strong viscoelastic law changes the run and clamps fast impacts to e = 0.
     let mut c = a.clone();
-    c.impact_speed = Some((0.45, 0.2));
+    c.physics.restitution = RestitutionLaw::ImpactSpeed {
+        beta0: 0.45,
+        delta: 0.2,
+    };
     let sc = gdsmc::ensemble::run(&c, 2, &|_| {}).unwrap();
     assert!(sc.counts.clamped > 0, "{:?}", sc.counts);
     assert_ne!(

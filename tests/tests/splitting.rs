@@ -12,7 +12,7 @@ use gdsmc_validation::*;
 
 fn scheme(name: &str, n: usize, m: u64, seed: u64, s: SchemeChoice) -> Scene {
     let mut sc = shipped(name, n, m, seed);
-    sc.scheme = s;
+    sc.physics.scheme = s;
     sc
 }
 

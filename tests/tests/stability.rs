@@ -137,7 +137,7 @@ fn extreme_dissipation() {
     for (ti, &t) in st.times.iter().enumerate() {
         let (m, ci) = at(&st, ti, "T_bulk");
         let ci = z * ci;
-        let e = mt.finite_n_bulk_mean(s.n, t);
+        let e = mt.finite_n_bulk_mean(s.n(), t);
         assert!((m - e).abs() <= ci, "t = {t}: {m} +- {ci} vs {e}");
     }
     let (w, _, _) = warnings(
@@ -204,10 +204,10 @@ fn host_medium_extreme_mass_ratios() {
         for (ti, &t) in st.times.iter().enumerate().step_by(32) {
             let (m, ci) = at(&st, ti, "T_bulk");
             let ci = z * ci;
-            let exact = (1.0 - 1.0 / s.n as f64) * h.temperature(t);
+            let exact = (1.0 - 1.0 / s.n() as f64) * h.temperature(t);
             // T_bulk's finite-n mean is within O(1/n) of BRS (15); allow T/n beyond the CI.
             assert!(
-                (m - h.temperature(t)).abs() <= ci + h.temperature(t) / s.n as f64,
+                (m - h.temperature(t)).abs() <= ci + h.temperature(t) / s.n() as f64,
                 "mass {mass}, t = {t}: {m} +- {ci} vs {exact}"
             );
             let (v, cv) = at(&st, ti, "V_y");

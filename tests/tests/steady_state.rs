@@ -14,7 +14,7 @@ use gdsmc_validation::*;
 
 fn steady_t(name: &str, scheme: SchemeChoice, seed: u64) -> (f64, f64, f64) {
     let mut s = shipped(name, 65_536, 1, seed);
-    s.scheme = scheme;
+    s.physics.scheme = scheme;
     let mt = maxwell_temperature(&s).unwrap();
     let st = run(&s);
     let (m, c) = st
@@ -23,9 +23,9 @@ fn steady_t(name: &str, scheme: SchemeChoice, seed: u64) -> (f64, f64, f64) {
         .unwrap()
         .mean_ci(&st, st.col("T_bulk").unwrap());
     let exact = match scheme {
-        SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(s.n, dt, false, 136.0),
-        SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(s.n, dt, true, 136.0),
-        _ => mt.finite_n_bulk_mean(s.n, 136.0),
+        SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(s.n(), dt, false, 136.0),
+        SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(s.n(), dt, true, 136.0),
+        _ => mt.finite_n_bulk_mean(s.n(), 136.0),
     };
     (m, c, exact)
 }

@@ -24,9 +24,8 @@ use gdsmc_validation::*;
 fn steady(name: &str, seed: u64, alpha: f64) -> (gdsmc::ensemble::RunStats, f64) {
     let (n, m) = if alpha < 0.5 { (8192, 8) } else { (2048, 24) };
     let mut s = shipped(name, n, m, seed);
-    s.restitution = alpha;
+    s.physics.restitution = gdsmc::scene::RestitutionLaw::Constant(alpha);
     s.collisional_pairs = 20_000;
-    let alpha = s.restitution;
     (run(&s), alpha)
 }
 
@@ -112,7 +111,7 @@ fn constant_force_alpha_08() {
 #[test]
 fn white_noise_alpha_08_time_stepped() {
     let mut s = shipped("ms-white-noise", 2048, 16, 1400);
-    s.scheme = gdsmc::scene::SchemeChoice::TimeStepped(0.01);
+    s.physics.scheme = gdsmc::scene::SchemeChoice::TimeStepped(0.01);
     s.collisional_pairs = 20_000;
     let st = run(&s);
     let (mu4, c4) = get(&st, "mu4");

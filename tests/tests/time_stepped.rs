@@ -14,10 +14,10 @@ fn time_stepped_converges_to_no_splitting() {
     let st_exact = run(&exact);
     let mut fine = exact.clone();
     fine.seed = 1102;
-    fine.scheme = SchemeChoice::TimeStepped(0.01);
+    fine.physics.scheme = SchemeChoice::TimeStepped(0.01);
     let st_fine = run(&fine);
     let mut coarse = fine.clone();
-    coarse.scheme = SchemeChoice::TimeStepped(0.5);
+    coarse.physics.scheme = SchemeChoice::TimeStepped(0.5);
     let st_coarse = run(&coarse);
     let mut resolved = false;
     for ti in 1..exact.times.len() {

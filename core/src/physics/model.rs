@@ -89,7 +89,8 @@ fn negative(param: Param, x: Real) -> PhysicsError {
     PhysicsError { param, problem }
 }
 
-fn particle_count(n: usize) -> Result<(), PhysicsError> {
+/// The rule for the particle count ([`check_count`]) as a physics error.
+pub(crate) fn particle_count(n: usize) -> Result<(), PhysicsError> {
     check_count(n).or_else(|e| match e {
         ParticlesError::TooFew => err(Param::N, Problem::TooFewParticles(n)),
         ParticlesError::TooMany => err(Param::N, Problem::TooManyParticles(n)),

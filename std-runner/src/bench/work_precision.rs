@@ -119,18 +119,14 @@ pub fn measure(
     threads: usize,
     mut done: impl FnMut(&Point),
 ) -> Result<Vec<Point>, Error> {
-    let mt = maxwell_temperature(base).ok_or_else(|| Error::Invalid {
-        path: "work-precision".into(),
-        line: 0,
-        key: base.name.clone(),
+    let mt = maxwell_temperature(base).ok_or_else(|| Error::Argument {
+        flag: format!("work-precision {}", base.name),
         message: "needs a Maxwell-kernel scene with an exact stationary temperature (white noise)"
             .into(),
     })?;
     let Some(first) = base.steady_from else {
-        return Err(Error::Invalid {
-            path: "work-precision".into(),
-            line: 0,
-            key: format!("{}: observe.steady_from", base.name),
+        return Err(Error::Argument {
+            flag: format!("work-precision {}: observe.steady_from", base.name),
             message: "must be set: the error is that of the steady-state average".into(),
         });
     };
@@ -138,10 +134,10 @@ pub fn measure(
     let mut out = Vec::new();
     for (k, c) in ladder.iter().enumerate() {
         let mut s = base.clone();
-        s.n = c.n;
+        s.physics.n = c.n;
         s.ensembles = runs;
         s.seed = base.seed.wrapping_add(k as u64);
-        s.scheme = match c.scheme {
+        s.physics.scheme = match c.scheme {
             "strang" => SchemeChoice::Strang(c.dt),
             "euler" => SchemeChoice::Euler(c.dt),
             _ => SchemeChoice::NoSplitting,
@@ -154,10 +150,10 @@ pub fn measure(
         let pts = &s.times[first..];
         let exact_mean = pts
             .iter()
-            .map(|&t| match s.scheme {
-                SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(s.n, dt, true, t),
-                SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(s.n, dt, false, t),
-                _ => mt.finite_n_bulk_mean(s.n, t),
+            .map(|&t| match s.physics.scheme {
+                SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(c.n, dt, true, t),
+                SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(c.n, dt, false, t),
+                _ => mt.finite_n_bulk_mean(c.n, t),
             })
             .sum::<f64>()
             / pts.len() as f64;

@@ -260,10 +260,8 @@ pub fn run(
     for n in names {
         if !TABLES.iter().any(|e| e.name == n) {
             let known: Vec<_> = TABLES.iter().map(|e| e.name).collect();
-            return Err(Error::Invalid {
-                path: "reproduce".into(),
-                line: 0,
-                key: n.clone(),
+            return Err(Error::Argument {
+                flag: format!("reproduce {n}"),
                 message: format!("is not a table; known: {}", known.join(", ")),
             });
         }
@@ -338,7 +336,7 @@ pub(crate) fn scene(name: &str, set: &[String], n: usize, m: u64, seed: u64) -> 
     let path = format!("scenes/{name}.toml");
     let mut s = scene::parse_with_overrides(Path::new(&path), text, set)
         .expect("shipped scenes and reproduce's overrides are valid");
-    s.n = n;
+    s.physics.n = n;
     s.ensembles = m;
     s.seed = seed;
     s
@@ -432,7 +430,7 @@ mod tests {
     fn every_compiled_scene_parses() {
         for (name, _) in SCENES {
             let s = scene(name, &[], 8, 2, 1);
-            assert_eq!(s.n, 8);
+            assert_eq!(s.n(), 8);
         }
     }
 

@@ -188,7 +188,7 @@ fn exact_split(
     s.times
         .iter()
         .map(|&t| {
-            let e = mt.splitting_bulk_mean(s.n, dt, strang, t) + mt.bulk_to_raw(s.n, t);
+            let e = mt.splitting_bulk_mean(s.n(), dt, strang, t) + mt.bulk_to_raw(s.n(), t);
             ((e - truth(t)) / truth(t)).abs()
         })
         .fold(0.0, f64::max)

@@ -1,7 +1,7 @@
 //! Every TOML example in docs/scenes.md is a valid part of a scene: merged into a minimal scene,
 //! it parses and validates. Every shipped scene validates too.
 
-use gdsmc::scene::parse;
+use gdsmc_scene::parse;
 use std::path::{Path, PathBuf};
 
 const BASE: &str = r#"
@@ -59,7 +59,7 @@ fn shipped_scenes_are_valid() {
     for e in std::fs::read_dir(dir).unwrap() {
         let p = e.unwrap().path();
         if p.extension().is_some_and(|x| x == "toml") {
-            gdsmc::scene::load(&p).unwrap_or_else(|e| panic!("{e}"));
+            gdsmc_scene::load(&p).unwrap_or_else(|e| panic!("{e}"));
             k += 1;
         }
     }

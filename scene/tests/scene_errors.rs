@@ -1,6 +1,6 @@
 //! Bad scene input gets a clear error naming the file, line and key.
 
-use gdsmc::scene::parse;
+use gdsmc_scene::parse;
 use std::path::Path;
 
 const GOOD: &str = r#"
@@ -23,7 +23,7 @@ fn err(text: &str) -> String {
 #[test]
 fn good_scene_parses_with_defaults() {
     let s = parse(Path::new("good.toml"), GOOD).unwrap();
-    assert_eq!(s.n, 64);
+    assert_eq!(s.n(), 64);
     assert_eq!(s.times.len(), 33);
     assert_eq!(s.ensembles, 100);
     assert_eq!(s.name, "good");
@@ -116,10 +116,10 @@ fn kernel_specific_keys() {
 }
 
 mod overrides {
-    use gdsmc::scene::{SchemeChoice, parse_with_overrides};
+    use gdsmc_scene::{SchemeChoice, parse_with_overrides};
     use std::path::Path;
 
-    fn with(sets: &[&str]) -> Result<gdsmc::scene::Scene, String> {
+    fn with(sets: &[&str]) -> Result<gdsmc_scene::Scene, String> {
         let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
         parse_with_overrides(Path::new("bad.toml"), super::GOOD, &sets).map_err(|e| e.to_string())
     }
@@ -134,12 +134,15 @@ mod overrides {
             "observe.intervals=8",
         ])
         .unwrap();
-        assert_eq!(s.restitution, 0.4);
-        assert_eq!(s.n, 10);
-        assert_eq!(s.scheme, SchemeChoice::Strang(0.125));
+        assert_eq!(
+            s.physics.restitution,
+            gdsmc_scene::RestitutionLaw::Constant(0.4)
+        );
+        assert_eq!(s.n(), 10);
+        assert_eq!(s.physics.scheme, SchemeChoice::Strang(0.125));
         let s = with(&["collisions.kernel=vhs", "collisions.lambda=0.5"]).unwrap();
         assert!(
-            matches!(s.kernel, gdsmc::scene::KernelChoice::Vhs { lambda, .. } if lambda == 0.5)
+            matches!(s.physics.kernel, gdsmc_scene::KernelChoice::Vhs { lambda, .. } if lambda == 0.5)
         );
     }
 

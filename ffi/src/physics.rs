@@ -1,0 +1,212 @@
+//! gdsmc_config and the core's physics description, both ways. The C struct carries integers
+//! for its enumerations; they are checked here (an ABI rule), and every physical rule is left
+//! to [`Physics::validate`], whose message is passed on with the C field's name, the same
+//! words the command prints for the same bad value.
+
+use crate::config::*;
+use crate::status::{Failure, fail, gdsmc_status};
+use gdsmc_core::physics::{
+    BackgroundKernel, Component, DriveChoice, KernelChoice, MAX_COMPONENTS, Model, Param, Physics,
+    PhysicsError, RestitutionLaw, SchemeChoice,
+};
+
+fn invalid<T>(msg: String) -> Result<T, Failure> {
+    fail(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg)
+}
+
+/// An enumeration field that must be one of `0..=max`.
+fn check_enum(value: u32, max: u32, field: &str, family: &str) -> Result<(), Failure> {
+    if value > max {
+        return invalid(format!(
+            "config.{field} = {value} is not a GDSMC_{family}_* value"
+        ));
+    }
+    Ok(())
+}
+
+/// The C field that holds a physics parameter.
+fn field(p: Param) -> &'static str {
+    match p {
+        Param::N => "n",
+        Param::Components | Param::Weight(_) | Param::Mass(_) => "mass",
+        Param::Temperature(_) => "temperature",
+        Param::Drift(_) => "drift",
+        Param::Gamma => "gamma",
+        Param::C => "c",
+        Param::Lambda => "lambda",
+        Param::Restitution => "restitution",
+        Param::Beta0 => "impact_beta0",
+        Param::Delta => "impact_delta",
+        Param::Beta => "beta",
+        Param::Zeta => "zeta",
+        Param::G => "g",
+        Param::BackgroundC => "background_c",
+        Param::BackgroundDensity => "background_density",
+        Param::BackgroundMass => "background_mass",
+        Param::BackgroundTemperature => "background_temperature",
+        Param::BackgroundDrift => "background_drift",
+        Param::Dt => "dt",
+        Param::StepFactor => "step_factor",
+        Param::Scheme => "scheme",
+    }
+}
+
+/// The core's verdict, with the C field's name: `config.restitution must lie in (0, 1], ...`.
+pub(crate) fn physics_failure(e: PhysicsError) -> Failure {
+    Failure(
+        gdsmc_status::GDSMC_INVALID_ARGUMENT,
+        format!("config.{} {}", field(e.param), e.problem),
+    )
+}
+
+impl gdsmc_config {
+    /// The physics this configuration describes (enumeration integers checked).
+    pub(crate) fn physics(&self) -> Result<Physics, Failure> {
+        check_enum(self.kernel, GDSMC_KERNEL_VHS, "kernel", "KERNEL")?;
+        check_enum(self.drive, GDSMC_DRIVE_CONSTANT_FORCE, "drive", "DRIVE")?;
+        check_enum(self.scheme, GDSMC_SCHEME_TIME_STEPPED, "scheme", "SCHEME")?;
+        check_enum(
+            self.restitution_law,
+            GDSMC_RESTITUTION_IMPACT_SPEED,
+            "restitution_law",
+            "RESTITUTION",
+        )?;
+        let Ok(n) = usize::try_from(self.n) else {
+            return invalid(format!("config.n = {} is too large", self.n));
+        };
+        let (gamma, c) = (self.gamma, self.c);
+        let kernel = match self.kernel {
+            GDSMC_KERNEL_MAXWELL => KernelChoice::Maxwell { gamma, c },
+            GDSMC_KERNEL_HARD_SPHERES => KernelChoice::HardSpheres { gamma, c },
+            _ => KernelChoice::Vhs {
+                gamma,
+                c,
+                lambda: self.lambda,
+            },
+        };
+        let restitution = match self.restitution_law {
+            GDSMC_RESTITUTION_CONSTANT => RestitutionLaw::Constant(self.restitution),
+            _ => RestitutionLaw::ImpactSpeed {
+                beta0: self.impact_beta0,
+                delta: self.impact_delta,
+            },
+        };
+        let drive = match self.drive {
+            GDSMC_DRIVE_NONE => DriveChoice::None,
+            GDSMC_DRIVE_WHITE_NOISE => DriveChoice::WhiteNoise(self.beta),
+            GDSMC_DRIVE_GAUSSIAN => DriveChoice::Gaussian(self.zeta),
+            GDSMC_DRIVE_CONSTANT_FORCE => DriveChoice::ConstantForce(self.g),
+            _ => {
+                check_enum(
+                    self.background_kernel,
+                    GDSMC_BACKGROUND_HARD_SPHERES,
+                    "background_kernel",
+                    "BACKGROUND",
+                )?;
+                DriveChoice::HostMedium {
+                    kernel: if self.background_kernel == GDSMC_BACKGROUND_HARD_SPHERES {
+                        BackgroundKernel::HardSpheres
+                    } else {
+                        BackgroundKernel::Maxwell
+                    },
+                    c1: self.background_c,
+                    density: self.background_density,
+                    mass: self.background_mass,
+                    temperature: self.background_temperature,
+                    drift: self.background_drift,
+                }
+            }
+        };
+        let scheme = match self.scheme {
+            GDSMC_SCHEME_NO_SPLITTING => SchemeChoice::NoSplitting,
+            GDSMC_SCHEME_EULER => SchemeChoice::Euler(self.dt),
+            GDSMC_SCHEME_STRANG => SchemeChoice::Strang(self.dt),
+            _ => SchemeChoice::TimeStepped(self.step_factor),
+        };
+        let mut physics = Physics::new(n, kernel, restitution, drive, scheme);
+        physics.initial[0] = Component {
+            weight: 1.0,
+            mass: self.mass,
+            temperature: self.temperature,
+            drift: self.drift,
+        };
+        Ok(physics)
+    }
+
+    /// The validated model of this configuration.
+    pub(crate) fn model(&self) -> Result<Model, Failure> {
+        self.physics()?.validate().map_err(physics_failure)
+    }
+
+    /// The configuration of a physics (seed 1, stream 0; fields it does not use keep the
+    /// defaults of [`gdsmc_config::example3`]). A mixture of Maxwellians cannot be expressed.
+    pub(crate) fn from_physics(p: &Physics) -> Result<Self, Failure> {
+        const _: () = assert!(MAX_COMPONENTS >= 1);
+        let [only] = p.initial[..] else {
+            return invalid(
+                "<toml>: `particles.initial` must be a single Maxwellian for gdsmc_config".into(),
+            );
+        };
+        let mut cfg = gdsmc_config {
+            n: p.n as u64,
+            mass: only.mass,
+            temperature: only.temperature,
+            drift: only.drift,
+            lambda: 0.0,
+            beta: 0.0,
+            ..gdsmc_config::example3()
+        };
+        (cfg.kernel, cfg.gamma, cfg.c) = match p.kernel {
+            KernelChoice::Maxwell { gamma, c } => (GDSMC_KERNEL_MAXWELL, gamma, c),
+            KernelChoice::HardSpheres { gamma, c } => (GDSMC_KERNEL_HARD_SPHERES, gamma, c),
+            KernelChoice::Vhs { gamma, c, lambda } => {
+                cfg.lambda = lambda;
+                (GDSMC_KERNEL_VHS, gamma, c)
+            }
+        };
+        match p.restitution {
+            RestitutionLaw::Constant(alpha) => {
+                cfg.restitution_law = GDSMC_RESTITUTION_CONSTANT;
+                cfg.restitution = alpha;
+            }
+            RestitutionLaw::ImpactSpeed { beta0, delta } => {
+                cfg.restitution_law = GDSMC_RESTITUTION_IMPACT_SPEED;
+                (cfg.impact_beta0, cfg.impact_delta) = (beta0, delta);
+            }
+        }
+        match p.drive {
+            DriveChoice::None => cfg.drive = GDSMC_DRIVE_NONE,
+            DriveChoice::WhiteNoise(b) => (cfg.drive, cfg.beta) = (GDSMC_DRIVE_WHITE_NOISE, b),
+            DriveChoice::Gaussian(z) => (cfg.drive, cfg.zeta) = (GDSMC_DRIVE_GAUSSIAN, z),
+            DriveChoice::ConstantForce(g) => (cfg.drive, cfg.g) = (GDSMC_DRIVE_CONSTANT_FORCE, g),
+            DriveChoice::HostMedium {
+                kernel,
+                c1,
+                density,
+                mass,
+                temperature,
+                drift,
+            } => {
+                cfg.drive = GDSMC_DRIVE_HOST_MEDIUM;
+                cfg.background_kernel = match kernel {
+                    BackgroundKernel::Maxwell => GDSMC_BACKGROUND_MAXWELL,
+                    BackgroundKernel::HardSpheres => GDSMC_BACKGROUND_HARD_SPHERES,
+                };
+                cfg.background_c = c1;
+                cfg.background_density = density;
+                cfg.background_mass = mass;
+                cfg.background_temperature = temperature;
+                cfg.background_drift = drift;
+            }
+        }
+        match p.scheme {
+            SchemeChoice::NoSplitting => cfg.scheme = GDSMC_SCHEME_NO_SPLITTING,
+            SchemeChoice::Euler(dt) => (cfg.scheme, cfg.dt) = (GDSMC_SCHEME_EULER, dt),
+            SchemeChoice::Strang(dt) => (cfg.scheme, cfg.dt) = (GDSMC_SCHEME_STRANG, dt),
+            SchemeChoice::TimeStepped(f) => {
+                (cfg.scheme, cfg.step_factor) = (GDSMC_SCHEME_TIME_STEPPED, f)
+            }
+        }
+        Ok(cfg)
+    }
+}

@@ -1,0 +1,115 @@
+//! # gdsmc-scene: scene files
+//!
+//! A scene is a TOML file that names only the physics a setting uses, when to observe and how
+//! many ensembles to run:
+//!
+//! ```toml
+//! name = "GRW Example 3"
+//! [particles]
+//! n = 1024
+//! initial = { kind = "maxwellian", temperature = 1.0 }
+//! [collisions]
+//! kernel = "maxwell"          # "maxwell" | "hard-spheres" | "vhs" (then `lambda`)
+//! gamma = 4.0                 # collision-rate constant of GRW (1)
+//! c = 0.07957747154594767     # C_lambda = 1/(4 pi)
+//! restitution = 0.5
+//! [drive]
+//! kind = "white-noise"        # "white-noise" (then `beta`) | "none" | ...
+//! beta = 1.0
+//! [observe]
+//! t_end = 8.0
+//! intervals = 32              # observation times k t_end / intervals, k = 0..=intervals
+//! [run]
+//! ensembles = 1000
+//! seed = 1
+//! ```
+//!
+//! Every key but `collisions.kernel`, `collisions.restitution` and `observe.t_end` has a
+//! default; unknown keys are errors (every key: `docs/scenes.md`). The physics goes into the
+//! core's [`Physics`], whose [`Physics::validate`] holds every physical rule; a bad value is
+//! reported with the file, line and dotted key that hold it. Command-line overrides (`--set
+//! key=value`, `--n`, `--ensembles`, `--seed`) are applied to the text and validated the same
+//! way ([`Override`]).
+//!
+//! The crate depends on the core, serde and toml only, so the command, the C ABI and other
+//! front ends read scenes alike.
+
+mod error;
+mod overrides;
+pub mod schema;
+mod validate;
+
+pub use error::Error;
+pub use gdsmc_core::physics::{
+    BackgroundKernel, Component, DriveChoice, KernelChoice, Physics, RestitutionLaw, SchemeChoice,
+};
+pub use overrides::{Override, load_with, load_with_overrides, parse_with, parse_with_overrides};
+pub use schema::SceneFile;
+pub use validate::DEFAULT_STEP_FACTOR;
+
+use std::path::{Path, PathBuf};
+
+/// A validated scene, ready to run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// Name (file stem when the file names none).
+    pub name: String,
+    /// Description.
+    pub description: String,
+    /// The physics: particles, initial distribution, kernel, restitution, drive, scheme.
+    pub physics: Physics,
+    /// Observation times, increasing.
+    pub times: Vec<f64>,
+    /// Index of the first observation time of the steady-state average, if any.
+    pub steady_from: Option<usize>,
+    /// Random pairs per observation for mu2, mu4 (0: off).
+    pub collisional_pairs: u64,
+    /// Radial-shell histogram `(K, R)` at the last observation, if asked.
+    pub histogram: Option<(usize, f64)>,
+    /// Reduced-speed histogram `(K, c_max)`: shells of `c = |v - V| / sqrt(2 T_bulk)`,
+    /// averaged over the steady-state observations (or the last one), if asked.
+    pub reduced_histogram: Option<(usize, f64)>,
+    /// Marginal histogram `(axis 0..=2, bins, R)` at the first and last observation, if asked.
+    pub marginal_histogram: Option<(usize, usize, f64)>,
+    /// Ensembles.
+    pub ensembles: u64,
+    /// Seed.
+    pub seed: u64,
+}
+
+impl Scene {
+    /// Particles per ensemble.
+    pub fn n(&self) -> usize {
+        self.physics.n
+    }
+
+    /// Values each ensemble appends after its observables: the speed histogram, the reduced
+    /// histogram and the marginal histograms (first and last observation).
+    pub fn extra_len(&self) -> usize {
+        self.histogram.map_or(0, |(k, _)| k + 1)
+            + self.reduced_histogram.map_or(0, |(k, _)| k + 1)
+            + self.marginal_histogram.map_or(0, |(_, k, _)| 2 * (k + 2))
+    }
+}
+
+/// Parses and validates scene text; `path` names the source in errors.
+pub fn parse(path: &Path, text: &str) -> Result<Scene, Error> {
+    let file: SceneFile = toml::from_str(text).map_err(|e| Error::Parse {
+        path: PathBuf::from(path),
+        message: e.to_string().trim_end().to_string(),
+    })?;
+    file.validate(path, text)
+}
+
+/// Reads a scene file.
+pub(crate) fn read(path: &Path) -> Result<String, Error> {
+    std::fs::read_to_string(path).map_err(|source| Error::Read {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+/// Reads, parses and validates a scene file.
+pub fn load(path: &Path) -> Result<Scene, Error> {
+    parse(path, &read(path)?)
+}

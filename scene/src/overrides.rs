@@ -1,0 +1,142 @@
+//! Command-line overrides of scene values: `--set key.path=value` and the flags that name one
+//! key (`--n`, `--ensembles`, `--seed`). They are applied to the scene text and the result is
+//! validated as a file is, so a flag gets exactly the file's rules; an override's error names
+//! the flag that gave the value.
+
+use crate::error::Error;
+use crate::{Scene, parse, read};
+use std::path::{Path, PathBuf};
+
+/// One override: where it came from (`--set`, `--n`, ...) and its `key.path=value`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Override {
+    /// The flag that gave it, for error messages.
+    pub source: String,
+    /// `key.path=value`. Values are TOML (`0.4`, `"hard-spheres"`, `[1.0, 0.0, 0.0]`); a bare
+    /// word that is not TOML is taken as a string (`collisions.kernel=vhs`); an empty value
+    /// removes the key (`collisions.restitution=`).
+    pub assignment: String,
+}
+
+impl Override {
+    /// `--set key.path=value`.
+    pub fn set(assignment: impl Into<String>) -> Self {
+        Override {
+            source: "--set".into(),
+            assignment: assignment.into(),
+        }
+    }
+
+    /// A flag that sets one key, e.g. `Override::flag("n", "particles.n", 64)` for `--n 64`.
+    pub fn flag(flag: &str, key: &str, value: impl std::fmt::Display) -> Self {
+        Override {
+            source: format!("--{flag}"),
+            assignment: format!("{key}={value}"),
+        }
+    }
+
+    fn key(&self) -> &str {
+        self.assignment
+            .split_once('=')
+            .map_or(self.assignment.as_str(), |(k, _)| k)
+            .trim()
+    }
+}
+
+/// Applies `overrides` to scene text and validates the result. The file is validated first, so
+/// its own errors keep their line numbers; an override's error names the override.
+pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Scene, Error> {
+    let scene = parse(path, text)?;
+    if overrides.is_empty() {
+        return Ok(scene);
+    }
+    let bad = |o: Option<&Override>, key: &str, message: String| Error::Invalid {
+        path: PathBuf::from(o.map_or("--set", |o| o.source.as_str())),
+        line: 0,
+        key: key.to_string(),
+        message,
+    };
+    let mut doc: toml::Table = toml::from_str(text).map_err(|e| Error::Parse {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    for o in overrides {
+        let Some((key, raw)) = o.assignment.split_once('=') else {
+            return Err(bad(
+                Some(o),
+                &o.assignment,
+                "must have the form key.path=value".into(),
+            ));
+        };
+        let key = key.trim();
+        // An empty value removes the key (`--set collisions.restitution=`).
+        let remove = raw.trim().is_empty();
+        let value = match toml::from_str::<toml::Table>(&format!("v = {raw}")) {
+            Ok(mut t) => t.remove("v"),
+            Err(_) => None,
+        }
+        .unwrap_or_else(|| toml::Value::String(raw.trim().to_string()));
+        let parts: Vec<&str> = key.split('.').collect();
+        if parts.iter().any(|p| p.is_empty()) {
+            return Err(bad(Some(o), key, "is not a dotted key path".into()));
+        }
+        let mut table = &mut doc;
+        for part in &parts[..parts.len() - 1] {
+            let entry = table
+                .entry(part.to_string())
+                .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+            table = match entry {
+                toml::Value::Table(t) => t,
+                _ => {
+                    return Err(bad(
+                        Some(o),
+                        key,
+                        format!("`{part}` is a value, not a table"),
+                    ));
+                }
+            };
+        }
+        if remove {
+            table.remove(parts[parts.len() - 1]);
+        } else {
+            table.insert(parts[parts.len() - 1].to_string(), value);
+        }
+    }
+    let merged = toml::to_string(&doc).map_err(|e| Error::Parse {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    parse(Path::new("--set"), &merged).map_err(|e| match e {
+        Error::Invalid { key, message, .. } => {
+            let source = overrides.iter().rev().find(|o| o.key() == key);
+            bad(source, &key, message)
+        }
+        Error::Parse { message, .. } => {
+            let first = message.lines().last().unwrap_or("").trim().to_string();
+            let keys: Vec<&str> = overrides.iter().map(|o| o.key()).collect();
+            let source = (overrides.len() == 1).then(|| &overrides[0]);
+            bad(
+                source,
+                &keys.join(", "),
+                format!("does not fit the scene schema: {first}"),
+            )
+        }
+        other => other,
+    })
+}
+
+/// [`parse_with`] for `--set` assignments.
+pub fn parse_with_overrides(path: &Path, text: &str, sets: &[String]) -> Result<Scene, Error> {
+    let overrides: Vec<Override> = sets.iter().map(Override::set).collect();
+    parse_with(path, text, &overrides)
+}
+
+/// Reads a scene file and applies overrides.
+pub fn load_with(path: &Path, overrides: &[Override]) -> Result<Scene, Error> {
+    parse_with(path, &read(path)?, overrides)
+}
+
+/// Reads a scene file and applies `--set` assignments.
+pub fn load_with_overrides(path: &Path, sets: &[String]) -> Result<Scene, Error> {
+    load_with(path, &sets.iter().map(Override::set).collect::<Vec<_>>())
+}

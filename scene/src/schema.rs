@@ -1,0 +1,340 @@
+//! The scene file as written: one serde struct per TOML table, unknown keys refused, values
+//! kept with their byte spans so that errors can name the line.
+
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A scene file as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// Human-readable name.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Free text: which paper and example the scene reproduces.
+    #[serde(default)]
+    pub description: Option<String>,
+    /// Particle count and initial distribution.
+    #[serde(default)]
+    pub particles: ParticlesSpec,
+    /// Kernel and restitution.
+    pub collisions: CollisionsSpec,
+    /// What acts between collisions (default: no drive).
+    #[serde(default)]
+    pub drive: DriveSpec,
+    /// The scheme (default: the exact no-splitting scheme).
+    #[serde(default)]
+    pub scheme: SchemeSpec,
+    /// Observation times.
+    pub observe: ObserveSpec,
+    /// Ensembles and seed.
+    #[serde(default)]
+    pub run: RunSpec,
+    /// Radial-shell histogram of the speed at the last observation time (GRW (31)-(33)).
+    #[serde(default)]
+    pub histogram: Option<HistogramSpec>,
+    /// Histogram of the reduced speed `c = |v - V| / v0` (MS): f(c), Delta(c), G(c).
+    #[serde(default)]
+    pub reduced_histogram: Option<HistogramSpec>,
+    /// Marginal histogram of one velocity component (BRS Figure 4).
+    #[serde(default)]
+    pub marginal_histogram: Option<MarginalSpec>,
+}
+
+/// `[marginal_histogram]`: `bins` bins over `[-radius, radius)` of velocity component `axis`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MarginalSpec {
+    /// Component 1, 2 or 3 (BRS's `v_1`, `v_2`, `v_3`). Default 1.
+    #[serde(default = "default_axis")]
+    pub axis: Spanned<i64>,
+    /// Number of bins.
+    pub bins: Spanned<i64>,
+    /// Half-width R of the binned range.
+    pub radius: Spanned<f64>,
+}
+
+fn default_axis() -> Spanned<i64> {
+    Spanned::new(0..0, 1)
+}
+
+/// `[histogram]`: `shells` (K) shells of width `radius / shells`, plus `|v| >= radius`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HistogramSpec {
+    /// Number of shells K (GRW: 128).
+    pub shells: Spanned<i64>,
+    /// Outer radius R (GRW: 40, 16, 24 for Examples 6-8).
+    pub radius: Spanned<f64>,
+}
+
+/// `[particles]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParticlesSpec {
+    /// Number of particles per ensemble (>= 2). Default 1024.
+    #[serde(default = "default_n")]
+    pub n: Spanned<usize>,
+    /// Initial distribution. Default: the standard Maxwellian GRW (27).
+    #[serde(default)]
+    pub initial: InitialSpec,
+}
+
+fn default_n() -> Spanned<usize> {
+    Spanned::new(0..0, 1024)
+}
+
+impl Default for ParticlesSpec {
+    fn default() -> Self {
+        ParticlesSpec {
+            n: default_n(),
+            initial: InitialSpec::default(),
+        }
+    }
+}
+
+/// One weighted component of a mixture (BRS (35)).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ComponentSpec {
+    /// Weight (>= 0; weights need not sum to one).
+    pub weight: Spanned<f64>,
+    /// Mass (> 0). Default 1.
+    #[serde(default = "one")]
+    pub mass: Spanned<f64>,
+    /// Temperature (>= 0). Default 1.
+    #[serde(default = "one")]
+    pub temperature: Spanned<f64>,
+    /// Drift velocity. Default 0.
+    #[serde(default)]
+    pub drift: Option<Spanned<[f64; 3]>>,
+}
+
+pub(crate) fn one() -> Spanned<f64> {
+    Spanned::new(0..0, 1.0)
+}
+
+/// `particles.initial.kind`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum InitialKind {
+    /// A Maxwellian (BRS (36)) with `mass`, `temperature`, `drift`.
+    #[default]
+    Maxwellian,
+    /// A mixture of Maxwellians (BRS (35)) given as `components`.
+    Mixture,
+}
+
+/// `particles.initial`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct InitialSpec {
+    /// Which kind of distribution. Default `"maxwellian"`.
+    #[serde(default)]
+    pub kind: InitialKind,
+    /// Mass of the Maxwellian (> 0). Default 1.
+    #[serde(default)]
+    pub mass: Option<Spanned<f64>>,
+    /// Temperature of the Maxwellian (>= 0). Default 1.
+    #[serde(default)]
+    pub temperature: Option<Spanned<f64>>,
+    /// Drift of the Maxwellian. Default 0.
+    #[serde(default)]
+    pub drift: Option<Spanned<[f64; 3]>>,
+    /// Components of a mixture.
+    #[serde(default)]
+    pub components: Option<Spanned<Vec<ComponentSpec>>>,
+}
+
+/// `collisions.kernel`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum KernelKind {
+    /// Maxwell pseudo-molecules, `B = gamma C_0`.
+    Maxwell,
+    /// Hard spheres, `B = gamma C_1 |u|`.
+    HardSpheres,
+    /// Variable hard spheres, `B = gamma C_lambda |u|^lambda`.
+    Vhs,
+}
+
+/// `[collisions]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CollisionsSpec {
+    /// The kernel.
+    pub kernel: KernelKind,
+    /// VHS exponent in [0, 1] (only for `kernel = "vhs"`).
+    #[serde(default)]
+    pub lambda: Option<Spanned<f64>>,
+    /// Collision-rate constant gamma of GRW (1) (> 0). Default 1.
+    #[serde(default = "one")]
+    pub gamma: Spanned<f64>,
+    /// Kernel constant C_lambda (> 0). Default 1/(4 pi).
+    #[serde(default = "default_c")]
+    pub c: Spanned<f64>,
+    /// Restitution coefficient alpha in (0, 1] (a constant law).
+    #[serde(default)]
+    pub restitution: Option<Spanned<f64>>,
+    /// The impact-speed law BRS (9)-(10) instead of a constant: `{ beta0 = ..., delta = ... }`.
+    #[serde(default)]
+    pub impact_speed_law: Option<Spanned<ImpactSpeedSpec>>,
+}
+
+/// `collisions.impact_speed_law`: `1 - e = 2 beta0 |g . n|^delta` (BRS (9)-(10)).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ImpactSpeedSpec {
+    /// `beta_0 >= 0`.
+    pub beta0: f64,
+    /// `delta >= 0` (1/5: viscoelastic spheres).
+    pub delta: f64,
+}
+
+fn default_c() -> Spanned<f64> {
+    Spanned::new(0..0, 1.0 / (4.0 * std::f64::consts::PI))
+}
+
+/// `drive.kind`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum DriveKind {
+    /// No drive: the freely cooling gas.
+    #[default]
+    None,
+    /// White-noise heating of strength `beta` (GRW (1), (18)).
+    WhiteNoise,
+    /// Elastic collisions with a Maxwellian host medium (BRS).
+    HostMedium,
+    /// The Gaussian thermostat `F = m zeta v` (MS (12)); key `zeta`.
+    Gaussian,
+    /// The constant-magnitude force along `v`, `F = m g v_hat` (MS (14)); key `g`.
+    ConstantForce,
+}
+
+/// `drive.kernel` of a host medium.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BackgroundKind {
+    /// `B_1 = C_1` (BRS (11)).
+    Maxwell,
+    /// `B_1 = C_1 |g|` (BRS (19)).
+    HardSpheres,
+}
+
+/// `[drive]`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct DriveSpec {
+    /// Which drive. Default `"none"`.
+    #[serde(default)]
+    pub kind: DriveKind,
+    /// White-noise strength beta >= 0 (required for `"white-noise"`).
+    #[serde(default)]
+    pub beta: Option<Spanned<f64>>,
+    /// Gaussian thermostat rate zeta (required for `"gaussian"`).
+    #[serde(default)]
+    pub zeta: Option<Spanned<f64>>,
+    /// Constant force per unit mass g >= 0 (required for `"constant-force"`).
+    #[serde(default)]
+    pub g: Option<Spanned<f64>>,
+    /// Host medium: background kernel (required for `"host-medium"`).
+    #[serde(default)]
+    pub kernel: Option<BackgroundKind>,
+    /// Host medium: kernel constant C_1 > 0. Default 1.
+    #[serde(default)]
+    pub c: Option<Spanned<f64>>,
+    /// Host medium: number density rho^B > 0. Default 1.
+    #[serde(default)]
+    pub density: Option<Spanned<f64>>,
+    /// Host medium: background particle mass m^B > 0. Default 1.
+    #[serde(default)]
+    pub mass: Option<Spanned<f64>>,
+    /// Host medium: background temperature T^B >= 0. Default 1.
+    #[serde(default)]
+    pub temperature: Option<Spanned<f64>>,
+    /// Host medium: background drift u^B. Default 0.
+    #[serde(default)]
+    pub drift: Option<Spanned<[f64; 3]>>,
+}
+
+/// `scheme.kind`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum SchemeKind {
+    /// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
+    #[default]
+    NoSplitting,
+    /// Euler splitting with time step `dt` (RW Algorithm 1).
+    Euler,
+    /// Strang splitting with time step `dt` (RW Algorithm 2).
+    Strang,
+    /// The time-stepped scheme of MS Section 3 (hard spheres), step `step_factor` mean free
+    /// paths over the thermal speed.
+    TimeStepped,
+}
+
+/// `[scheme]`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct SchemeSpec {
+    /// Which scheme. Default `"no-splitting"`.
+    #[serde(default)]
+    pub kind: SchemeKind,
+    /// Time step (> 0) of the splitting schemes; observation times must be multiples of it.
+    #[serde(default)]
+    pub dt: Option<Spanned<f64>>,
+    /// Time-stepped scheme: `h = step_factor * lambda / v0(t)` (MS: 0.01). Default 0.01.
+    #[serde(default)]
+    pub step_factor: Option<Spanned<f64>>,
+}
+
+/// `[observe]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObserveSpec {
+    /// Start time. Default 0.
+    #[serde(default)]
+    pub t_start: Option<Spanned<f64>>,
+    /// Final time (> t_start).
+    pub t_end: Spanned<f64>,
+    /// Number of equal intervals between observations (>= 1). Default 32.
+    #[serde(default)]
+    pub intervals: Option<Spanned<i64>>,
+    /// Collisional moments mu2, mu4 (MS (67)) from this many random pairs per observation
+    /// (0 or absent: not computed).
+    #[serde(default)]
+    pub collisional_pairs: Option<Spanned<i64>>,
+    /// Steady state: average every observable over the observation times `t >= steady_from`
+    /// (per ensemble, then over ensembles; RW Section 4.2). Optional.
+    #[serde(default)]
+    pub steady_from: Option<Spanned<f64>>,
+}
+
+/// `[run]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RunSpec {
+    /// Number of independent ensembles (>= 1). Default 100.
+    #[serde(default = "default_ensembles")]
+    pub ensembles: Spanned<i64>,
+    /// Seed of the run's generator. Default 1.
+    #[serde(default = "default_seed")]
+    pub seed: Spanned<i64>,
+}
+
+fn default_ensembles() -> Spanned<i64> {
+    Spanned::new(0..0, 100)
+}
+fn default_seed() -> Spanned<i64> {
+    Spanned::new(0..0, 1)
+}
+
+impl Default for RunSpec {
+    fn default() -> Self {
+        RunSpec {
+            ensembles: default_ensembles(),
+            seed: default_seed(),
+        }
+    }
+}

@@ -1,0 +1,124 @@
+//! From the file as written to a [`Scene`]: one validator per table. The tables that describe
+//! physics only gather their values into the core's [`Physics`] and say which key holds which
+//! parameter; [`Physics::validate`] checks every physical rule, and its error is reported
+//! at the key and line of the parameter it names. Rules about observing and running (times,
+//! histograms, ensembles) are the scene's own and checked here.
+
+mod collisions;
+mod drive;
+mod observe;
+mod particles;
+pub(crate) mod scheme;
+
+use crate::Scene;
+use crate::error::Error;
+use crate::schema::SceneFile;
+use gdsmc_core::physics::{Param, Physics, PhysicsError};
+use std::ops::Range;
+use std::path::Path;
+
+pub use scheme::DEFAULT_STEP_FACTOR;
+
+/// Where the values of a file are: turns spans into lines and parameters into keys.
+pub(crate) struct Ctx<'a> {
+    path: &'a Path,
+    text: &'a str,
+    keys: Vec<(Param, String, Range<usize>)>,
+}
+
+impl<'a> Ctx<'a> {
+    pub(crate) fn new(path: &'a Path, text: &'a str) -> Self {
+        Ctx {
+            path,
+            text,
+            keys: Vec::new(),
+        }
+    }
+
+    fn line(&self, span: &Range<usize>) -> usize {
+        if *span == (0..0) {
+            return 0;
+        }
+        self.text[..span.start.min(self.text.len())]
+            .bytes()
+            .filter(|&b| b == b'\n')
+            .count()
+            + 1
+    }
+
+    /// The error for the value at `span` of `key`.
+    pub(crate) fn error(&self, span: Range<usize>, key: &str, message: impl Into<String>) -> Error {
+        Error::Invalid {
+            path: self.path.to_path_buf(),
+            line: self.line(&span),
+            key: key.to_string(),
+            message: message.into(),
+        }
+    }
+
+    /// [`Ctx::error`] as a `Result`.
+    pub(crate) fn invalid<T>(
+        &self,
+        span: Range<usize>,
+        key: &str,
+        message: impl Into<String>,
+    ) -> Result<T, Error> {
+        Err(self.error(span, key, message))
+    }
+
+    /// Records that `key` (at `span`) holds the physics parameter `param`.
+    pub(crate) fn holds(&mut self, param: Param, key: impl Into<String>, span: Range<usize>) {
+        self.keys.push((param, key.into(), span));
+    }
+
+    /// The core's verdict on a parameter, at the key and line that hold it.
+    fn physics_error(&self, e: PhysicsError) -> Error {
+        match self.keys.iter().find(|(p, _, _)| *p == e.param) {
+            Some((_, key, span)) => self.error(span.clone(), key, e.problem.to_string()),
+            None => self.error(0..0, &e.param.to_string(), e.problem.to_string()),
+        }
+    }
+}
+
+impl SceneFile {
+    /// Validates the file's values; `path` and `text` are used to name the line of a bad value.
+    pub fn validate(&self, path: &Path, text: &str) -> Result<Scene, Error> {
+        let mut ctx = Ctx::new(path, text);
+        let (n, initial) = particles::particles(&mut ctx, &self.particles)?;
+        let (kernel, restitution) = collisions::collisions(&mut ctx, &self.collisions)?;
+        let drive = drive::drive(&mut ctx, &self.drive)?;
+        let times = observe::times(&ctx, &self.observe)?;
+        let scheme = scheme::scheme(&mut ctx, &self.scheme)?;
+        let physics = Physics {
+            n,
+            initial,
+            kernel,
+            restitution,
+            drive,
+            scheme,
+        };
+        physics.validate().map_err(|e| ctx.physics_error(e))?;
+        scheme::on_grid(&ctx, &self.scheme, physics.scheme, &times)?;
+        let observe = observe::observe(&ctx, &self.observe, &times, &physics)?;
+        let histograms = observe::histograms(&ctx, self)?;
+        let (ensembles, seed) = observe::run(&ctx, &self.run)?;
+        let name = self.name.clone().unwrap_or_else(|| {
+            path.file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        });
+        Ok(Scene {
+            name,
+            description: self.description.clone().unwrap_or_default(),
+            physics,
+            times,
+            steady_from: observe.0,
+            collisional_pairs: observe.1,
+            histogram: histograms.0,
+            reduced_histogram: histograms.1,
+            marginal_histogram: histograms.2,
+            ensembles,
+            seed,
+        })
+    }
+}

@@ -1,0 +1,187 @@
+//! `[observe]`, the histogram tables and `[run]`: when to look, what to collect, how many
+//! ensembles. These are rules of observing, not physics, and live here.
+
+use super::Ctx;
+use crate::error::Error;
+use crate::schema::{HistogramSpec, ObserveSpec, RunSpec, SceneFile};
+use gdsmc_core::physics::Physics;
+use toml::Spanned;
+
+fn finite(ctx: &Ctx<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
+    let x = *v.get_ref();
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        ctx.invalid(v.span(), key, format!("must be a finite number, got {x}"))
+    }
+}
+
+fn positive(ctx: &Ctx<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
+    let x = finite(ctx, v, key)?;
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        ctx.invalid(v.span(), key, format!("must be > 0, got {x}"))
+    }
+}
+
+/// A bin or shell count in 1..=100000.
+fn count(ctx: &Ctx<'_>, v: &Spanned<i64>, key: &str) -> Result<usize, Error> {
+    let k = *v.get_ref();
+    if !(1..=100_000).contains(&k) {
+        return ctx.invalid(v.span(), key, format!("must lie in 1..=100000, got {k}"));
+    }
+    Ok(k as usize)
+}
+
+/// The observation times `t_start + (t_end - t_start) k / intervals`, `k = 0..=intervals`.
+pub(super) fn times(ctx: &Ctx<'_>, o: &ObserveSpec) -> Result<Vec<f64>, Error> {
+    let t0 = match &o.t_start {
+        Some(s) => {
+            let x = finite(ctx, s, "observe.t_start")?;
+            if x < 0.0 {
+                return ctx.invalid(
+                    s.span(),
+                    "observe.t_start",
+                    format!("must be >= 0, got {x}"),
+                );
+            }
+            x
+        }
+        None => 0.0,
+    };
+    let t1 = finite(ctx, &o.t_end, "observe.t_end")?;
+    if t1 <= t0 {
+        return ctx.invalid(
+            o.t_end.span(),
+            "observe.t_end",
+            format!("must be later than observe.t_start = {t0}, got {t1}"),
+        );
+    }
+    let k = match &o.intervals {
+        Some(s) => {
+            let k = *s.get_ref();
+            if !(1..=10_000_000).contains(&k) {
+                return ctx.invalid(
+                    s.span(),
+                    "observe.intervals",
+                    format!("must lie in 1..=10000000, got {k}"),
+                );
+            }
+            k as usize
+        }
+        None => 32,
+    };
+    Ok((0..=k)
+        .map(|i| t0 + (t1 - t0) * i as f64 / k as f64)
+        .collect())
+}
+
+/// The first steady-state observation (if asked) and the collisional pairs per observation.
+pub(super) fn observe(
+    ctx: &Ctx<'_>,
+    o: &ObserveSpec,
+    times: &[f64],
+    physics: &Physics,
+) -> Result<(Option<usize>, u64), Error> {
+    let steady_from = match &o.steady_from {
+        None => None,
+        Some(sf) => {
+            let x = finite(ctx, sf, "observe.steady_from")?;
+            match times.iter().position(|&t| t >= x - 1e-12 * (1.0 + x.abs())) {
+                Some(i) if i + 1 < times.len() => Some(i),
+                _ => {
+                    let t1 = times[times.len() - 1];
+                    return ctx.invalid(
+                        sf.span(),
+                        "observe.steady_from",
+                        format!(
+                            "must leave at least two observation times at or after it \
+                             (t_end = {t1}), got {x}"
+                        ),
+                    );
+                }
+            }
+        }
+    };
+    let pairs = match &o.collisional_pairs {
+        None => 0,
+        Some(k) if *k.get_ref() >= 0 => *k.get_ref() as u64,
+        Some(k) => {
+            return ctx.invalid(
+                k.span(),
+                "observe.collisional_pairs",
+                format!("must be >= 0, got {}", k.get_ref()),
+            );
+        }
+    };
+    if pairs > 0 && physics.restitution.constant().is_none() {
+        return ctx.invalid(
+            o.collisional_pairs.as_ref().map_or(0..0, |k| k.span()),
+            "observe.collisional_pairs",
+            "assumes a constant restitution coefficient (MS (65)-(66)); not available with \
+             collisions.impact_speed_law",
+        );
+    }
+    Ok((steady_from, pairs))
+}
+
+/// What the histogram tables ask for: the radial shells `(K, R)`, the reduced shells
+/// `(K, c_max)` and the marginal bins `(axis 0..=2, bins, R)`.
+pub(super) type Histograms = (
+    Option<(usize, f64)>,
+    Option<(usize, f64)>,
+    Option<(usize, usize, f64)>,
+);
+
+/// The histogram tables.
+pub(super) fn histograms(ctx: &Ctx<'_>, f: &SceneFile) -> Result<Histograms, Error> {
+    let shells = |h: &Option<HistogramSpec>, table: &str| -> Result<_, Error> {
+        let Some(h) = h else { return Ok(None) };
+        let k = count(ctx, &h.shells, &format!("{table}.shells"))?;
+        Ok(Some((
+            k,
+            positive(ctx, &h.radius, &format!("{table}.radius"))?,
+        )))
+    };
+    let histogram = shells(&f.histogram, "histogram")?;
+    let reduced = shells(&f.reduced_histogram, "reduced_histogram")?;
+    let marginal = match &f.marginal_histogram {
+        None => None,
+        Some(h) => {
+            let axis = *h.axis.get_ref();
+            if !(1..=3).contains(&axis) {
+                return ctx.invalid(
+                    h.axis.span(),
+                    "marginal_histogram.axis",
+                    format!("must be 1, 2 or 3 (the velocity component), got {axis}"),
+                );
+            }
+            let k = count(ctx, &h.bins, "marginal_histogram.bins")?;
+            let r = positive(ctx, &h.radius, "marginal_histogram.radius")?;
+            Some((axis as usize - 1, k, r))
+        }
+    };
+    Ok((histogram, reduced, marginal))
+}
+
+/// `[run]`: the number of ensembles (>= 1) and the seed (>= 0).
+pub(super) fn run(ctx: &Ctx<'_>, r: &RunSpec) -> Result<(u64, u64), Error> {
+    let m = *r.ensembles.get_ref();
+    if m < 1 {
+        return ctx.invalid(
+            r.ensembles.span(),
+            "run.ensembles",
+            format!("must be >= 1, got {m}"),
+        );
+    }
+    let seed = *r.seed.get_ref();
+    if seed < 0 {
+        return ctx.invalid(
+            r.seed.span(),
+            "run.seed",
+            format!("must be >= 0, got {seed}"),
+        );
+    }
+    Ok((m as u64, seed as u64))
+}

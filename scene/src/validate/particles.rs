@@ -1,0 +1,103 @@
+//! `[particles]`: the count and the initial distribution (a Maxwellian or a mixture).
+
+use super::Ctx;
+use crate::error::Error;
+use crate::schema::{InitialKind, ParticlesSpec, one};
+use gdsmc_core::physics::{Component, MAX_COMPONENTS, Param};
+use toml::Spanned;
+
+type Initial = heapless::Vec<Component, MAX_COMPONENTS>;
+
+fn span_of<T>(v: &Option<Spanned<T>>) -> std::ops::Range<usize> {
+    v.as_ref().map_or(0..0, |s| s.span())
+}
+
+/// The particle count and the initial components, with the keys that hold them.
+pub(super) fn particles(
+    ctx: &mut Ctx<'_>,
+    spec: &ParticlesSpec,
+) -> Result<(usize, Initial), Error> {
+    ctx.holds(Param::N, "particles.n", spec.n.span());
+    let ini = &spec.initial;
+    let mut initial = Initial::new();
+    match ini.kind {
+        InitialKind::Maxwellian => {
+            if let Some(c) = &ini.components {
+                return ctx.invalid(
+                    c.span(),
+                    "particles.initial.components",
+                    "is only used with kind = \"mixture\"",
+                );
+            }
+            let key = "particles.initial";
+            ctx.holds(Param::Mass(0), format!("{key}.mass"), span_of(&ini.mass));
+            ctx.holds(
+                Param::Temperature(0),
+                format!("{key}.temperature"),
+                span_of(&ini.temperature),
+            );
+            ctx.holds(Param::Drift(0), format!("{key}.drift"), span_of(&ini.drift));
+            let _ = initial.push(Component {
+                weight: 1.0,
+                mass: *ini.mass.clone().unwrap_or_else(one).get_ref(),
+                temperature: *ini.temperature.clone().unwrap_or_else(one).get_ref(),
+                drift: ini.drift.as_ref().map_or([0.0; 3], |d| *d.get_ref()),
+            });
+        }
+        InitialKind::Mixture => {
+            for (key, span) in [
+                ("mass", ini.mass.as_ref().map(|s| s.span())),
+                ("temperature", ini.temperature.as_ref().map(|s| s.span())),
+                ("drift", ini.drift.as_ref().map(|s| s.span())),
+            ] {
+                if let Some(span) = span {
+                    return ctx.invalid(
+                        span,
+                        &format!("particles.initial.{key}"),
+                        "belongs in each of `components` for kind = \"mixture\"",
+                    );
+                }
+            }
+            let Some(components) = &ini.components else {
+                return ctx.invalid(
+                    0..0,
+                    "particles.initial.components",
+                    "is required with kind = \"mixture\"",
+                );
+            };
+            ctx.holds(
+                Param::Components,
+                "particles.initial.components",
+                components.span(),
+            );
+            if components.get_ref().len() > MAX_COMPONENTS {
+                return ctx.invalid(
+                    components.span(),
+                    "particles.initial.components",
+                    format!(
+                        "holds {} components; at most {MAX_COMPONENTS} are supported",
+                        components.get_ref().len()
+                    ),
+                );
+            }
+            for (k, c) in components.get_ref().iter().enumerate() {
+                let key = format!("particles.initial.components[{k}]");
+                ctx.holds(Param::Weight(k), format!("{key}.weight"), c.weight.span());
+                ctx.holds(Param::Mass(k), format!("{key}.mass"), c.mass.span());
+                ctx.holds(
+                    Param::Temperature(k),
+                    format!("{key}.temperature"),
+                    c.temperature.span(),
+                );
+                ctx.holds(Param::Drift(k), format!("{key}.drift"), span_of(&c.drift));
+                let _ = initial.push(Component {
+                    weight: *c.weight.get_ref(),
+                    mass: *c.mass.get_ref(),
+                    temperature: *c.temperature.get_ref(),
+                    drift: c.drift.as_ref().map_or([0.0; 3], |d| *d.get_ref()),
+                });
+            }
+        }
+    }
+    Ok((*spec.n.get_ref(), initial))
+}

@@ -1,0 +1,80 @@
+//! `[scheme]`: which scheme, its step, and (a rule of observing) that the observation times lie
+//! on a splitting scheme's grid.
+
+use super::Ctx;
+use crate::error::Error;
+use crate::schema::{SchemeKind, SchemeSpec};
+use gdsmc_core::physics::{Param, SchemeChoice};
+
+/// MS's step factor, the default of `scheme.step_factor`.
+pub const DEFAULT_STEP_FACTOR: f64 = 0.01;
+
+/// The scheme, with the keys that hold its parameters.
+pub(super) fn scheme(ctx: &mut Ctx<'_>, sch: &SchemeSpec) -> Result<SchemeChoice, Error> {
+    ctx.holds(Param::Scheme, "scheme.kind", 0..0);
+    if sch.kind != SchemeKind::TimeStepped
+        && let Some(f) = &sch.step_factor
+    {
+        return ctx.invalid(
+            f.span(),
+            "scheme.step_factor",
+            "is only used with kind = \"time-stepped\"",
+        );
+    }
+    Ok(match (sch.kind, &sch.dt) {
+        (SchemeKind::NoSplitting | SchemeKind::TimeStepped, Some(d)) => {
+            return ctx.invalid(
+                d.span(),
+                "scheme.dt",
+                "is only used with kind = \"euler\" or \"strang\"",
+            );
+        }
+        (SchemeKind::NoSplitting, None) => SchemeChoice::NoSplitting,
+        (SchemeKind::TimeStepped, None) => match &sch.step_factor {
+            Some(f) => {
+                ctx.holds(Param::StepFactor, "scheme.step_factor", f.span());
+                SchemeChoice::TimeStepped(*f.get_ref())
+            }
+            None => SchemeChoice::TimeStepped(DEFAULT_STEP_FACTOR),
+        },
+        (_, None) => {
+            return ctx.invalid(
+                0..0,
+                "scheme.dt",
+                "is required with kind = \"euler\" or \"strang\"",
+            );
+        }
+        (kind, Some(d)) => {
+            ctx.holds(Param::Dt, "scheme.dt", d.span());
+            if kind == SchemeKind::Euler {
+                SchemeChoice::Euler(*d.get_ref())
+            } else {
+                SchemeChoice::Strang(*d.get_ref())
+            }
+        }
+    })
+}
+
+/// A splitting scheme observes only on its grid: every observation time a multiple of `dt`.
+pub(super) fn on_grid(
+    ctx: &Ctx<'_>,
+    sch: &SchemeSpec,
+    scheme: SchemeChoice,
+    times: &[f64],
+) -> Result<(), Error> {
+    let (SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt)) = scheme else {
+        return Ok(());
+    };
+    if let Some(t) = times.iter().find(|&&t| {
+        let k = t / dt;
+        (k - k.round()).abs() > 1e-9 * (1.0 + k)
+    }) {
+        let span = sch.dt.as_ref().map_or(0..0, |d| d.span());
+        return ctx.invalid(
+            span,
+            "scheme.dt",
+            format!("must divide every observation time; {t} is not a multiple of {dt}"),
+        );
+    }
+    Ok(())
+}
