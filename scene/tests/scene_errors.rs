@@ -181,3 +181,31 @@ mod overrides {
         assert!(e.starts_with("bad.toml:3: `particles.n`"), "{e}");
     }
 }
+
+/// `--n`, `--ensembles` and `--seed` are overrides of their keys: the file's rules, with the
+/// flag named in the error.
+#[test]
+fn flags_are_validated_like_the_file() {
+    use gdsmc_scene::{Override, parse_with};
+    let with = |o: Override| parse_with(Path::new("good.toml"), GOOD, &[o]);
+    let e = with(Override::flag("n", "particles.n", 1))
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "--n: `particles.n` must be >= 2 (a pair is needed to collide), got 1"
+    );
+    let e = with(Override::flag("ensembles", "run.ensembles", 0))
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "--ensembles: `run.ensembles` must be >= 1, got 0");
+    let e = with(Override::flag("n", "particles.n", -3))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("--n: `particles.n` does not fit the scene schema"),
+        "{e}"
+    );
+    let s = with(Override::flag("seed", "run.seed", 42)).unwrap();
+    assert_eq!((s.seed, s.n()), (42, 64));
+}

@@ -1,0 +1,379 @@
+//! The physics description: every rule is refused with its parameter named, and the one
+//! dispatch builds exactly the loop a caller composing the types by hand would run.
+
+use gdsmc_core::drive::{GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams};
+use gdsmc_core::engine::{EventLoop, NoSplitting, Splitting, SplittingOrder, TimeStepped};
+use gdsmc_core::kernel::{HardSpheres, Maxwell, Vhs};
+use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::physics::{
+    BackgroundKernel, Component, DriveChoice, Engine, KernelChoice, Param, Physics, Problem,
+    RestitutionLaw, SchemeChoice,
+};
+use gdsmc_core::restitution::{Constant, ImpactSpeed};
+use gdsmc_core::rng::seeded;
+use gdsmc_core::sample::Maxwellian;
+use gdsmc_core::vec3::Vec3;
+
+fn grw3() -> Physics {
+    Physics::new(
+        16,
+        KernelChoice::Maxwell {
+            gamma: 4.0,
+            c: 0.25 / core::f64::consts::PI,
+        },
+        RestitutionLaw::Constant(0.5),
+        DriveChoice::WhiteNoise(1.0),
+        SchemeChoice::NoSplitting,
+    )
+}
+
+fn refused(p: Physics) -> (Param, Problem) {
+    let e = p.validate().unwrap_err();
+    (e.param, e.problem)
+}
+
+#[test]
+fn every_rule_names_its_parameter() {
+    let hs = KernelChoice::HardSpheres { gamma: 1.0, c: 1.0 };
+    let cases: Vec<(Physics, Param)> = vec![
+        (Physics { n: 1, ..grw3() }, Param::N),
+        (
+            Physics {
+                n: usize::MAX,
+                ..grw3()
+            },
+            Param::N,
+        ),
+        (
+            Physics {
+                kernel: KernelChoice::Maxwell { gamma: 0.0, c: 1.0 },
+                ..grw3()
+            },
+            Param::Gamma,
+        ),
+        (
+            Physics {
+                kernel: KernelChoice::Maxwell {
+                    gamma: 1.0,
+                    c: f64::NAN,
+                },
+                ..grw3()
+            },
+            Param::C,
+        ),
+        // Each positive, the product underflows to 0 (a hostile-input case that once panicked).
+        (
+            Physics {
+                kernel: KernelChoice::Maxwell {
+                    gamma: 5e-324,
+                    c: 0.1,
+                },
+                ..grw3()
+            },
+            Param::Gamma,
+        ),
+        (
+            Physics {
+                kernel: KernelChoice::Vhs {
+                    gamma: 1.0,
+                    c: 1.0,
+                    lambda: 1.5,
+                },
+                ..grw3()
+            },
+            Param::Lambda,
+        ),
+        (
+            Physics {
+                restitution: RestitutionLaw::Constant(0.0),
+                ..grw3()
+            },
+            Param::Restitution,
+        ),
+        (
+            Physics {
+                restitution: RestitutionLaw::Constant(1.0 + 1e-12),
+                ..grw3()
+            },
+            Param::Restitution,
+        ),
+        (
+            Physics {
+                restitution: RestitutionLaw::ImpactSpeed {
+                    beta0: -0.1,
+                    delta: 0.2,
+                },
+                ..grw3()
+            },
+            Param::Beta0,
+        ),
+        (
+            Physics {
+                restitution: RestitutionLaw::ImpactSpeed {
+                    beta0: 0.1,
+                    delta: f64::INFINITY,
+                },
+                ..grw3()
+            },
+            Param::Delta,
+        ),
+        (
+            Physics {
+                drive: DriveChoice::WhiteNoise(-1.0),
+                ..grw3()
+            },
+            Param::Beta,
+        ),
+        (
+            Physics {
+                drive: DriveChoice::Gaussian(f64::NAN),
+                ..grw3()
+            },
+            Param::Zeta,
+        ),
+        (
+            Physics {
+                drive: DriveChoice::ConstantForce(-2.0),
+                scheme: SchemeChoice::Euler(0.1),
+                ..grw3()
+            },
+            Param::G,
+        ),
+        (
+            Physics {
+                drive: DriveChoice::ConstantForce(1.0),
+                ..grw3()
+            },
+            Param::Scheme,
+        ),
+        (
+            Physics {
+                scheme: SchemeChoice::Strang(0.0),
+                ..grw3()
+            },
+            Param::Dt,
+        ),
+        (
+            Physics {
+                scheme: SchemeChoice::TimeStepped(0.01),
+                ..grw3()
+            },
+            Param::Scheme,
+        ),
+        (
+            Physics {
+                kernel: hs,
+                scheme: SchemeChoice::TimeStepped(-1.0),
+                ..grw3()
+            },
+            Param::StepFactor,
+        ),
+    ];
+    for (p, param) in cases {
+        let (got, problem) = refused(p.clone());
+        assert_eq!(got, param, "{p:?}: {problem}");
+    }
+    let host = |density: f64, mass: f64, temperature: f64, drift: [f64; 3]| Physics {
+        drive: DriveChoice::HostMedium {
+            kernel: BackgroundKernel::HardSpheres,
+            c1: 1.0,
+            density,
+            mass,
+            temperature,
+            drift,
+        },
+        ..grw3()
+    };
+    assert_eq!(
+        refused(host(0.0, 1.0, 1.0, [0.0; 3])).0,
+        Param::BackgroundDensity
+    );
+    assert_eq!(
+        refused(host(1.0, -1.0, 1.0, [0.0; 3])).0,
+        Param::BackgroundMass
+    );
+    assert_eq!(
+        refused(host(1.0, 1.0, -1.0, [0.0; 3])).0,
+        Param::BackgroundTemperature
+    );
+    assert_eq!(
+        refused(host(1.0, 1.0, 1.0, [0.0, f64::NAN, 0.0])).0,
+        Param::BackgroundDrift
+    );
+    let mut p = grw3();
+    p.initial.clear();
+    assert_eq!(
+        refused(p.clone()),
+        (Param::Components, Problem::NoComponents)
+    );
+    p.initial
+        .push(Component {
+            weight: 0.0,
+            ..Component::STANDARD
+        })
+        .unwrap();
+    assert_eq!(
+        refused(p.clone()),
+        (Param::Components, Problem::AllWeightsZero)
+    );
+    p.initial
+        .push(Component {
+            mass: 0.0,
+            ..Component::STANDARD
+        })
+        .unwrap();
+    assert_eq!(refused(p).0, Param::Mass(1));
+}
+
+#[test]
+fn messages_are_the_rules() {
+    let msg = |p: Physics| p.validate().unwrap_err().to_string();
+    assert_eq!(
+        msg(Physics {
+            restitution: RestitutionLaw::Constant(1.5),
+            ..grw3()
+        }),
+        "restitution must lie in (0, 1], got 1.5"
+    );
+    assert_eq!(
+        msg(Physics { n: 1, ..grw3() }),
+        "n must be >= 2 (a pair is needed to collide), got 1"
+    );
+    assert_eq!(
+        msg(Physics {
+            drive: DriveChoice::WhiteNoise(-1.0),
+            ..grw3()
+        }),
+        "beta must be >= 0, got -1"
+    );
+    assert_eq!(
+        msg(Physics {
+            drive: DriveChoice::WhiteNoise(f64::INFINITY),
+            ..grw3()
+        }),
+        "beta must be a finite number, got inf"
+    );
+}
+
+/// Runs an engine for a few observations and returns the trajectory's observables.
+fn trajectory<E: EventLoop>(mut e: E, p: &mut Particles<'_>, seed: u64) -> Vec<[f64; 4]> {
+    let mut rng = seeded(seed);
+    (1..=4)
+        .map(|k| {
+            let o = e.advance_to(p, 0.5 * k as f64, &mut rng).unwrap();
+            [o.t_raw, o.t_bulk, o.v4, e.counts().collisions as f64]
+        })
+        .collect()
+}
+
+/// The dispatched engine and the hand-composed one, from the same particles and generator.
+fn same_as_by_hand<E: EventLoop>(
+    physics: Physics,
+    by_hand: impl FnOnce(&mut Particles<'_>) -> E,
+    is_variant: impl Fn(&Engine) -> bool,
+) {
+    let model = physics.validate().unwrap();
+    let n = physics.n;
+    let (mut a, mut b) = (vec![Particle::default(); n], vec![Particle::default(); n]);
+    let mut pa = Particles::new(&mut a).unwrap();
+    let mut pb = Particles::new(&mut b).unwrap();
+    model.initialize(&mut pa, 0.0, &mut seeded(3)).unwrap();
+    model.initialize(&mut pb, 0.0, &mut seeded(3)).unwrap();
+    let (engine, _) = model.start(&mut pa, 0.0).unwrap();
+    assert!(is_variant(&engine), "{engine:?}");
+    let hand = by_hand(&mut pb);
+    assert_eq!(trajectory(engine, &mut pa, 9), trajectory(hand, &mut pb, 9));
+}
+
+#[test]
+fn dispatch_builds_the_hand_composed_loop() {
+    let p = grw3();
+    same_as_by_hand(
+        p.clone(),
+        |q| {
+            let k = Maxwell::new(4.0, 0.25 / core::f64::consts::PI).unwrap();
+            let d = gdsmc_core::drive::WhiteNoise::new(1.0).unwrap();
+            NoSplitting::start(k, d, Constant::new(0.5).unwrap(), q, 0.0)
+                .unwrap()
+                .0
+        },
+        |e| matches!(e, Engine::Maxwell(_)),
+    );
+    let vhs = Physics {
+        kernel: KernelChoice::Vhs {
+            gamma: 1.0,
+            c: 0.1,
+            lambda: 0.5,
+        },
+        scheme: SchemeChoice::Strang(0.25),
+        ..p.clone()
+    };
+    same_as_by_hand(
+        vhs,
+        |q| {
+            let k = Vhs::new(1.0, 0.1, 0.5).unwrap();
+            let d = gdsmc_core::drive::WhiteNoise::new(1.0).unwrap();
+            let a = Constant::new(0.5).unwrap();
+            Splitting::start(k, d, a, SplittingOrder::Strang, 0.25, q, 0.0)
+                .unwrap()
+                .0
+        },
+        |e| matches!(e, Engine::Vhs(_)),
+    );
+    let ms = Physics {
+        kernel: KernelChoice::HardSpheres { gamma: 1.0, c: 0.1 },
+        drive: DriveChoice::Gaussian(0.25),
+        scheme: SchemeChoice::TimeStepped(0.05),
+        ..p.clone()
+    };
+    same_as_by_hand(
+        ms,
+        |q| {
+            let k = HardSpheres::new(1.0, 0.1).unwrap();
+            let d = GaussianThermostat::new(0.25).unwrap();
+            TimeStepped::start(k, d, Constant::new(0.5).unwrap(), 0.05, q, 0.0)
+                .unwrap()
+                .0
+        },
+        |e| matches!(e, Engine::HardSpheres(_)),
+    );
+    let brs = Physics {
+        kernel: KernelChoice::HardSpheres { gamma: 1.0, c: 1.0 },
+        restitution: RestitutionLaw::ImpactSpeed {
+            beta0: 0.2,
+            delta: 0.2,
+        },
+        drive: DriveChoice::HostMedium {
+            kernel: BackgroundKernel::HardSpheres,
+            c1: 1.0,
+            density: 1.0,
+            mass: 2.0,
+            temperature: 1.0,
+            drift: [0.0, 1.0, 0.0],
+        },
+        ..p
+    };
+    same_as_by_hand(
+        brs,
+        |q| {
+            let k = HardSpheres::new(1.0, 1.0).unwrap();
+            let bg = Maxwellian::new(2.0, 1.0, Vec3::new(0.0, 1.0, 0.0)).unwrap();
+            let d = HostMedium::new(
+                HostMediumParams::new(bg, 1.0, 1.0).unwrap(),
+                HardSphereBackground,
+            );
+            NoSplitting::start(k, d, ImpactSpeed::new(0.2, 0.2).unwrap(), q, 0.0)
+                .unwrap()
+                .0
+        },
+        |e| matches!(e, Engine::HardSpheres(_)),
+    );
+}
+
+#[test]
+fn a_buffer_of_the_wrong_size_is_refused() {
+    let model = grw3().validate().unwrap();
+    let mut buf = vec![Particle::default(); 15];
+    let mut p = Particles::new(&mut buf).unwrap();
+    assert!(model.launch(&mut p, 0.0, &mut seeded(1)).is_err());
+}

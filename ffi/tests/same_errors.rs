@@ -1,0 +1,138 @@
+//! The C ABI and the command give the same error for the same bad value: both pass on the
+//! core's one validation, each naming the parameter in its own words (`config.restitution`,
+//! `collisions.restitution`), with the same description of what is wrong.
+
+use gdsmc::{gdsmc_config, gdsmc_last_error, gdsmc_sim, gdsmc_sim_create, gdsmc_status};
+use std::path::Path;
+
+const SCENE: &str = r#"
+[particles]
+n = 64
+[collisions]
+kernel = "hard-spheres"
+gamma = 1.0
+c = 1.0
+restitution = 0.5
+[drive]
+kind = "white-noise"
+beta = 1.0
+[observe]
+t_end = 1.0
+"#;
+
+/// The C message of creating a simulation from `c`.
+fn c_error(c: &gdsmc_config) -> String {
+    let mut sim: *mut gdsmc_sim = std::ptr::null_mut();
+    // SAFETY: valid pointers to a config and an out-pointer.
+    let status = unsafe { gdsmc_sim_create(c, &mut sim) };
+    assert_eq!(status, gdsmc_status::GDSMC_INVALID_ARGUMENT);
+    assert!(sim.is_null());
+    let mut buf = vec![0u8; 512];
+    // SAFETY: a writable buffer of its length.
+    let len = unsafe { gdsmc_last_error(buf.as_mut_ptr().cast(), buf.len()) };
+    String::from_utf8(buf[..len].to_vec()).unwrap()
+}
+
+/// The command's message for the scene with `from` replaced by `to` (and `--set`s).
+fn scene_error(from: &str, to: &str, sets: &[&str]) -> String {
+    let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+    let text = if from.is_empty() {
+        SCENE.to_string()
+    } else {
+        SCENE.replace(from, to)
+    };
+    gdsmc_scene::parse_with_overrides(Path::new("s.toml"), &text, &sets)
+        .unwrap_err()
+        .to_string()
+}
+
+type Edit = fn(&mut gdsmc_config);
+
+#[test]
+fn the_same_bad_value_gets_the_same_words() {
+    let mut base = gdsmc_config::example3();
+    base.kernel = gdsmc::GDSMC_KERNEL_HARD_SPHERES;
+    (base.gamma, base.c, base.n) = (1.0, 1.0, 64);
+    let cases: [(&str, &str, &[&str], &str, &str, Edit); 8] = [
+        (
+            "restitution = 0.5",
+            "restitution = 1.5",
+            &[],
+            "collisions.restitution",
+            "restitution",
+            |c| c.restitution = 1.5,
+        ),
+        ("n = 64", "n = 1", &[], "particles.n", "n", |c| c.n = 1),
+        (
+            "beta = 1.0",
+            "beta = -0.5",
+            &[],
+            "drive.beta",
+            "beta",
+            |c| c.beta = -0.5,
+        ),
+        (
+            "gamma = 1.0",
+            "gamma = 0.0",
+            &[],
+            "collisions.gamma",
+            "gamma",
+            |c| c.gamma = 0.0,
+        ),
+        ("c = 1.0", "c = inf", &[], "collisions.c", "c", |c| {
+            c.c = f64::INFINITY
+        }),
+        (
+            "",
+            "",
+            &["scheme.kind=time-stepped", "scheme.step_factor=-1"],
+            "scheme.step_factor",
+            "step_factor",
+            |c| {
+                c.scheme = gdsmc::GDSMC_SCHEME_TIME_STEPPED;
+                c.step_factor = -1.0;
+            },
+        ),
+        (
+            "restitution = 0.5",
+            "impact_speed_law = { beta0 = -0.25, delta = 0.2 }",
+            &[],
+            "collisions.impact_speed_law.beta0",
+            "impact_beta0",
+            |c| {
+                c.restitution_law = gdsmc::GDSMC_RESTITUTION_IMPACT_SPEED;
+                (c.impact_beta0, c.impact_delta) = (-0.25, 0.2);
+            },
+        ),
+        (
+            "",
+            "",
+            &[
+                "drive.kind=host-medium",
+                "drive.kernel=maxwell",
+                "drive.beta=",
+                "drive.density=0",
+            ],
+            "drive.density",
+            "background_density",
+            |c| {
+                c.drive = gdsmc::GDSMC_DRIVE_HOST_MEDIUM;
+                c.background_density = 0.0;
+            },
+        ),
+    ];
+    for (from, to, sets, key, field, edit) in cases {
+        let scene = scene_error(from, to, sets);
+        let mut c = base;
+        edit(&mut c);
+        let cmsg = c_error(&c);
+        let prefix = format!("config.{field} ");
+        let problem = cmsg
+            .strip_prefix(&prefix)
+            .unwrap_or_else(|| panic!("{cmsg}"));
+        assert!(
+            scene.ends_with(&format!("`{key}` {problem}")),
+            "scene: {scene}\nC:     {cmsg}"
+        );
+    }
+}
