@@ -100,6 +100,42 @@ typedef enum {
 // A simulation: `n` particles, its engine, generator and current time. Opaque to C.
 typedef struct gdsmc_sim gdsmc_sim;
 
+// Moments and derived quantities of a simulation at its current time, and its event counts.
+typedef struct {
+    // Time.
+    double t;
+    // Temperature `(1/3n) sum |v|^2` as GRW and RW use it (RW (23)).
+    double temperature;
+    // Temperature about the bulk velocity (GRW (11), BRS (8)).
+    double temperature_bulk;
+    // log10 of temperature_bulk: finite where a cooling gas's temperature underflows.
+    double log10_temperature_bulk;
+    // Bulk velocity (GRW (10)).
+    double bulk_velocity[3];
+    // Pressure `rho T_bulk`.
+    double pressure;
+    // Stress tensor `M - rho V V^T`, upper triangle `xx, yy, zz, xy, xz, yz`.
+    double stress[6];
+    // Heat flux (GRW Section 1).
+    double heat_flux[3];
+    // `<|v|^4>`, raw.
+    double v4;
+    // `<|v|^6>`, raw.
+    double v6;
+    // Fourth cumulant a2 (MS (3)), about the bulk velocity.
+    double a2;
+    // Sixth cumulant a3 (MS (70)).
+    double a3;
+    // Deviation-from-Maxwell criterion (RW (29)).
+    double crit;
+    // Real collisions so far.
+    uint64_t collisions;
+    // Fictitious collisions so far.
+    uint64_t fictitious;
+    // Candidates whose relative speed exceeded the majorant (kernel truncated there).
+    uint64_t overshoots;
+} gdsmc_observables;
+
 // Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or
 // gdsmc_config_from_toml, then change fields. Enumerations are plain integers
 // (`GDSMC_KERNEL_*`, `GDSMC_DRIVE_*`, `GDSMC_SCHEME_*`) checked on use.
@@ -163,48 +199,54 @@ typedef struct {
     double background_drift[3];
 } gdsmc_config;
 
-// Moments and derived quantities of a simulation at its current time, and its event counts.
-typedef struct {
-    // Time.
-    double t;
-    // Temperature `(1/3n) sum |v|^2` as GRW and RW use it (RW (23)).
-    double temperature;
-    // Temperature about the bulk velocity (GRW (11), BRS (8)).
-    double temperature_bulk;
-    // log10 of temperature_bulk: finite where a cooling gas's temperature underflows.
-    double log10_temperature_bulk;
-    // Bulk velocity (GRW (10)).
-    double bulk_velocity[3];
-    // Pressure `rho T_bulk`.
-    double pressure;
-    // Stress tensor `M - rho V V^T`, upper triangle `xx, yy, zz, xy, xz, yz`.
-    double stress[6];
-    // Heat flux (GRW Section 1).
-    double heat_flux[3];
-    // `<|v|^4>`, raw.
-    double v4;
-    // `<|v|^6>`, raw.
-    double v6;
-    // Fourth cumulant a2 (MS (3)), about the bulk velocity.
-    double a2;
-    // Sixth cumulant a3 (MS (70)).
-    double a3;
-    // Deviation-from-Maxwell criterion (RW (29)).
-    double crit;
-    // Real collisions so far.
-    uint64_t collisions;
-    // Fictitious collisions so far.
-    uint64_t fictitious;
-    // Candidates whose relative speed exceeded the majorant (kernel truncated there).
-    uint64_t overshoots;
-} gdsmc_observables;
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
 
 // The gdsmc version as a NUL-terminated string in static storage (never free it).
 const char *gdsmc_version(void);
+
+// Runs the simulation to time `t` (>= its current time), kicks every particle there and, if
+// `out` is not NULL, writes the observables at `t` to `*out`. GDSMC_TIME_BACKWARDS for an
+// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
+gdsmc_status gdsmc_sim_advance(gdsmc_sim *sim, double t, gdsmc_observables *out);
+
+// Writes the observables at the simulation's current time to `*out`.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
+gdsmc_status gdsmc_sim_observables(gdsmc_sim *sim, gdsmc_observables *out);
+
+// The number of particles in `*n`.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `n` NULL or writable for one uint64_t.
+gdsmc_status gdsmc_sim_particle_count(gdsmc_sim *sim, uint64_t *n);
+
+// Copies the velocities out: `out[3i], out[3i+1], out[3i+2]` = particle i's x, y, z, for
+// `len >= 3 n` doubles (GDSMC_BUFFER_TOO_SMALL otherwise). All particles are at the current
+// time after create, advance and set_velocities.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
+gdsmc_status gdsmc_sim_get_velocities(gdsmc_sim *sim, double *out, size_t len);
+
+// Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
+// current time; the majorant and observables are recomputed. Non-finite values are refused
+// with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.
+gdsmc_status gdsmc_sim_set_velocities(gdsmc_sim *sim, const double *velocities, size_t len);
+
+// Restarts the random numbers from `seed`, stream 0 (the particles' state is kept).
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc.
+gdsmc_status gdsmc_sim_reseed(gdsmc_sim *sim, uint64_t seed);
 
 // Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
 // alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
@@ -255,48 +297,6 @@ gdsmc_status gdsmc_sim_init_in(void *memory,
                                size_t size,
                                const gdsmc_config *config,
                                gdsmc_sim **out);
-
-// Runs the simulation to time `t` (>= its current time), kicks every particle there and, if
-// `out` is not NULL, writes the observables at `t` to `*out`. GDSMC_TIME_BACKWARDS for an
-// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed.
-//
-// # Safety
-// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
-gdsmc_status gdsmc_sim_advance(gdsmc_sim *sim, double t, gdsmc_observables *out);
-
-// Writes the observables at the simulation's current time to `*out`.
-//
-// # Safety
-// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
-gdsmc_status gdsmc_sim_observables(gdsmc_sim *sim, gdsmc_observables *out);
-
-// The number of particles in `*n`.
-//
-// # Safety
-// `sim` must be NULL or a handle from gdsmc; `n` NULL or writable for one uint64_t.
-gdsmc_status gdsmc_sim_particle_count(gdsmc_sim *sim, uint64_t *n);
-
-// Copies the velocities out: `out[3i], out[3i+1], out[3i+2]` = particle i's x, y, z, for
-// `len >= 3 n` doubles (GDSMC_BUFFER_TOO_SMALL otherwise). All particles are at the current
-// time after create, advance and set_velocities.
-//
-// # Safety
-// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
-gdsmc_status gdsmc_sim_get_velocities(gdsmc_sim *sim, double *out, size_t len);
-
-// Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
-// current time; the majorant and observables are recomputed. Non-finite values are refused
-// with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
-//
-// # Safety
-// `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.
-gdsmc_status gdsmc_sim_set_velocities(gdsmc_sim *sim, const double *velocities, size_t len);
-
-// Restarts the random numbers from `seed`, stream 0 (the particles' state is kept).
-//
-// # Safety
-// `sim` must be NULL or a handle from gdsmc.
-gdsmc_status gdsmc_sim_reseed(gdsmc_sim *sim, uint64_t seed);
 
 // Destroys the simulation `*sim` and sets `*sim` to NULL. Heap handles are freed; for a handle
 // made by gdsmc_sim_init_in the caller's memory is left to the caller (marked dead, so later

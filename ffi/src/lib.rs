@@ -14,6 +14,7 @@
 
 #![allow(non_camel_case_types)]
 
+mod access;
 mod config;
 mod guard;
 mod observables;
@@ -21,6 +22,7 @@ mod physics;
 mod sim;
 mod status;
 
+pub use access::*;
 pub use config::*;
 pub use observables::*;
 pub use sim::*;

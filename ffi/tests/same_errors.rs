@@ -47,13 +47,22 @@ fn scene_error(from: &str, to: &str, sets: &[&str]) -> String {
 }
 
 type Edit = fn(&mut gdsmc_config);
+/// Scene text replaced (from, to), `--set`s, scene key, C field, the same change in C.
+type Case = (
+    &'static str,
+    &'static str,
+    &'static [&'static str],
+    &'static str,
+    &'static str,
+    Edit,
+);
 
 #[test]
 fn the_same_bad_value_gets_the_same_words() {
     let mut base = gdsmc_config::example3();
     base.kernel = gdsmc::GDSMC_KERNEL_HARD_SPHERES;
     (base.gamma, base.c, base.n) = (1.0, 1.0, 64);
-    let cases: [(&str, &str, &[&str], &str, &str, Edit); 8] = [
+    let cases: [Case; 8] = [
         (
             "restitution = 0.5",
             "restitution = 1.5",

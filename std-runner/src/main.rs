@@ -1,7 +1,7 @@
 //! The `gdsmc` command.
 
 use clap::{Parser, Subcommand};
-use gdsmc::{ensemble, output, references, scene, summary};
+use gdsmc::scene;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -209,7 +209,7 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
             if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
                 bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
             }
-            let stats = ensemble::run_interruptible(&sc, threads, &|k| bar.inc(k), &stop)?;
+            let stats = gdsmc::run::run_interruptible(&sc, threads, &|k| bar.inc(k), &stop)?;
             bar.finish_and_clear();
             let interrupted = stats.ensembles < sc.ensembles;
             if interrupted {
@@ -218,10 +218,10 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
                     return Err(gdsmc::Error::Interrupted);
                 }
             }
-            let refs = references::for_scene(&sc);
+            let refs = gdsmc::reference::curves::for_scene(&sc);
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
-            output::write_all(&dir, &sc, &stats, &refs)?;
-            print!("{}", summary::text(&sc, &stats, &refs));
+            gdsmc::report::write_all(&dir, &sc, &stats, &refs)?;
+            print!("{}", gdsmc::report::summary::text(&sc, &stats, &refs));
             println!("\nwrote {}", dir.join("observables.csv").display());
             if interrupted {
                 return Err(gdsmc::Error::Interrupted);
@@ -337,7 +337,7 @@ fn reproduce(
         print!("{}", reproduce::text(t));
         done.push(t.clone());
         let md = reproduce::markdown(&done, &opts, start.elapsed().as_secs_f64());
-        if let Err(e) = output::write_atomic(&report, md.as_bytes()) {
+        if let Err(e) = gdsmc::report::files::write_atomic(&report, md.as_bytes()) {
             write_err.get_or_insert(e);
         }
     })?;

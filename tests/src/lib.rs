@@ -1,6 +1,6 @@
 //! Helpers for the cross-crate validation tests: load a shipped scene, resize it, run it.
 
-use gdsmc::ensemble::{self, RunStats};
+use gdsmc::run::{self, RunStats};
 use gdsmc::scene::{self, Scene};
 use std::path::PathBuf;
 
@@ -33,7 +33,7 @@ pub fn shipped_set(name: &str, set: &[&str], n: usize, m: u64, seed: u64) -> Sce
 
 /// Runs a scene on all cores.
 pub fn run(s: &Scene) -> RunStats {
-    ensemble::run(s, 0, &|_| {}).expect("run succeeds")
+    run::run(s, 0, &|_| {}).expect("run succeeds")
 }
 
 /// Mean and 99.9% CI half-width of column `name` at time index `ti`.
@@ -66,7 +66,7 @@ pub fn family_factor(checks: usize) -> f64 {
             hi = mid;
         }
     }
-    0.5 * (lo + hi) / gdsmc::stats::LAMBDA_999
+    0.5 * (lo + hi) / gdsmc::run::stats::LAMBDA_999
 }
 
 #[cfg(test)]

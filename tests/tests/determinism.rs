@@ -2,13 +2,13 @@
 //! count, and different bytes for a different seed.
 
 use gdsmc::scene::RestitutionLaw;
-use gdsmc::{output, references};
+
 use gdsmc_validation::*;
 
 fn csv_bytes(name: &str, seed: u64, threads: usize) -> Vec<u8> {
     let s = shipped(name, 64, 50, seed);
-    let st = gdsmc::ensemble::run(&s, threads, &|_| {}).unwrap();
-    output::observables_csv(&st, &references::for_scene(&s)).unwrap()
+    let st = gdsmc::run::run(&s, threads, &|_| {}).unwrap();
+    gdsmc::report::observables_csv(&st, &gdsmc::reference::curves::for_scene(&s)).unwrap()
 }
 
 #[test]
@@ -32,11 +32,11 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
         beta0: 0.25,
         delta: 0.0,
     };
-    let sa = gdsmc::ensemble::run(&a, 2, &|_| {}).unwrap();
-    let sb = gdsmc::ensemble::run(&b, 2, &|_| {}).unwrap();
+    let sa = gdsmc::run::run(&a, 2, &|_| {}).unwrap();
+    let sb = gdsmc::run::run(&b, 2, &|_| {}).unwrap();
     assert_eq!(
-        output::observables_csv(&sa, &[]).unwrap(),
-        output::observables_csv(&sb, &[]).unwrap()
+        gdsmc::report::observables_csv(&sa, &[]).unwrap(),
+        gdsmc::report::observables_csv(&sb, &[]).unwrap()
     );
     // A strong viscoelastic law changes the run and clamps fast impacts to e = 0.
     let mut c = a.clone();
@@ -44,11 +44,11 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
         beta0: 0.45,
         delta: 0.2,
     };
-    let sc = gdsmc::ensemble::run(&c, 2, &|_| {}).unwrap();
+    let sc = gdsmc::run::run(&c, 2, &|_| {}).unwrap();
     assert!(sc.counts.clamped > 0, "{:?}", sc.counts);
     assert_ne!(
-        output::observables_csv(&sa, &[]).unwrap(),
-        output::observables_csv(&sc, &[]).unwrap()
+        gdsmc::report::observables_csv(&sa, &[]).unwrap(),
+        gdsmc::report::observables_csv(&sc, &[]).unwrap()
     );
 }
 
@@ -58,7 +58,7 @@ fn an_interrupted_run_keeps_a_prefix_equal_to_a_shorter_run() {
     let s = shipped("grw-example3", 64, 400, 9);
     let stop = AtomicBool::new(false);
     let done = AtomicU64::new(0);
-    let st = gdsmc::ensemble::run_interruptible(
+    let st = gdsmc::run::run_interruptible(
         &s,
         2,
         &|k| {
@@ -77,10 +77,10 @@ fn an_interrupted_run_keeps_a_prefix_equal_to_a_shorter_run() {
     );
     let mut shorter = s.clone();
     shorter.ensembles = st.ensembles;
-    let full = gdsmc::ensemble::run(&shorter, 1, &|_| {}).unwrap();
-    let refs = references::for_scene(&s);
+    let full = gdsmc::run::run(&shorter, 1, &|_| {}).unwrap();
+    let refs = gdsmc::reference::curves::for_scene(&s);
     assert_eq!(
-        output::observables_csv(&st, &refs).unwrap(),
-        output::observables_csv(&full, &refs).unwrap()
+        gdsmc::report::observables_csv(&st, &refs).unwrap(),
+        gdsmc::report::observables_csv(&full, &refs).unwrap()
     );
 }

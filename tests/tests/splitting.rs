@@ -6,7 +6,7 @@
 //! value where the time-step error is resolved. The convergence factors of the temperature
 //! error in dt are then near 2 (Euler) and 4 (Strang), RW Table 2.
 
-use gdsmc::references::maxwell_temperature;
+use gdsmc::reference::curves::maxwell_temperature;
 use gdsmc::scene::{Scene, SchemeChoice};
 use gdsmc_validation::*;
 

@@ -8,7 +8,7 @@
 //! t: Euler 2 beta dt/(1 - e^{-k dt}), Strang (2 beta/k)(k dt/2)/sinh(k dt/2), times (1 - 1/n))
 //! and on RW's published T_inf within RW's Conf plus ours.
 
-use gdsmc::references::maxwell_temperature;
+use gdsmc::reference::curves::maxwell_temperature;
 use gdsmc::scene::SchemeChoice;
 use gdsmc_validation::*;
 

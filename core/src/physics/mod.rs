@@ -40,6 +40,7 @@
 //! assert_eq!(bad.validate().unwrap_err().to_string(), "restitution must lie in (0, 1], got 1.5");
 //! ```
 
+mod dispatch;
 pub mod engine;
 pub mod error;
 pub mod model;

@@ -1,28 +1,25 @@
 //! The validated physics: the building blocks of the event loop, each made by its own
 //! constructor (which holds the rule) from the parameters of a [`Physics`].
 
-use super::engine::{ByDrive, ByLaw, ByScheme, Engine};
 use super::error::{Param, PhysicsError, Problem};
 use super::{BackgroundKernel, DriveChoice, KernelChoice, Physics, RestitutionLaw, SchemeChoice};
 use super::{Component, MAX_COMPONENTS};
 use crate::drive::host_medium::HostMediumError;
 use crate::drive::{
-    ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
-    MaxwellBackground, NoDrive, WhiteNoise,
+    ConstantForce, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
+    MaxwellBackground, WhiteNoise,
 };
-use crate::engine::{EngineError, NoSplitting, Splitting, SplittingOrder, TimeStepped, check_step};
-use crate::kernel::{HardSpheres, Kernel, KernelError, Maxwell, Vhs};
+use crate::engine::{SplittingOrder, check_step};
+use crate::kernel::{HardSpheres, KernelError, Maxwell, Vhs};
 use crate::math::Real;
-use crate::moments::Observables;
-use crate::particles::{Particles, ParticlesError, check_count};
-use crate::restitution::{Constant, ImpactSpeed, ImpactSpeedError, Restitution};
-use crate::rng::Rng;
+use crate::particles::{ParticlesError, check_count};
+use crate::restitution::{Constant, ImpactSpeed, ImpactSpeedError};
 use crate::sample::{Maxwellian, MaxwellianMixture, ParamError};
 use crate::vec3::Vec3;
 
 /// The validated kernel.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum KernelModel {
+pub(super) enum KernelModel {
     Maxwell(Maxwell),
     HardSpheres(HardSpheres),
     Vhs(Vhs),
@@ -30,14 +27,14 @@ enum KernelModel {
 
 /// The validated restitution law.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum LawModel {
+pub(super) enum LawModel {
     Constant(Constant),
     ImpactSpeed(ImpactSpeed),
 }
 
 /// The validated drive.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum DriveModel {
+pub(super) enum DriveModel {
     None,
     WhiteNoise(WhiteNoise),
     Gaussian(GaussianThermostat),
@@ -48,7 +45,7 @@ enum DriveModel {
 
 /// The validated scheme; the time-stepped scheme carries its hard-sphere kernel.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum SchemeModel {
+pub(super) enum SchemeModel {
     NoSplitting,
     Splitting(SplittingOrder, Real),
     TimeStepped(HardSpheres, Real),
@@ -59,10 +56,10 @@ enum SchemeModel {
 pub struct Model {
     physics: Physics,
     initial: MaxwellianMixture<MAX_COMPONENTS>,
-    kernel: KernelModel,
-    law: LawModel,
-    drive: DriveModel,
-    scheme: SchemeModel,
+    pub(super) kernel: KernelModel,
+    pub(super) law: LawModel,
+    pub(super) drive: DriveModel,
+    pub(super) scheme: SchemeModel,
 }
 
 fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -312,120 +309,4 @@ impl Model {
     pub fn initial(&self) -> &MaxwellianMixture<MAX_COMPONENTS> {
         &self.initial
     }
-
-    /// Draws every particle's velocity from the initial distribution (one uniform for the
-    /// component, then the Maxwellian; particle by particle) and sets its last-kick time to
-    /// `t0`. Fails with [`EngineError::ParticleCount`] unless `p` holds `n` particles.
-    pub fn initialize<R: Rng + ?Sized>(
-        &self,
-        p: &mut Particles<'_>,
-        t0: Real,
-        rng: &mut R,
-    ) -> Result<(), EngineError> {
-        if p.len() != self.n() {
-            return Err(EngineError::ParticleCount);
-        }
-        let mut bad = false;
-        p.fill_with(t0, || {
-            // The weights were validated: a positive total, so sampling cannot fail.
-            self.initial.sample(rng).unwrap_or_else(|_| {
-                bad = true;
-                Vec3::ZERO
-            })
-        });
-        if bad {
-            return Err(EngineError::NonFinite);
-        }
-        Ok(())
-    }
-
-    /// Starts the statically composed engine of this physics at `t0` on `p` (which holds the
-    /// initial velocities): the one dispatch from the description to the event loop. Returns
-    /// the engine and the observables at `t0`.
-    pub fn start(
-        &self,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(Engine, Observables), EngineError> {
-        if p.len() != self.n() {
-            return Err(EngineError::ParticleCount);
-        }
-        match self.kernel {
-            KernelModel::Maxwell(k) => wrap(self.by_drive(k, p, t0), Engine::Maxwell),
-            KernelModel::HardSpheres(k) => wrap(self.by_drive(k, p, t0), Engine::HardSpheres),
-            KernelModel::Vhs(k) => wrap(self.by_drive(k, p, t0), Engine::Vhs),
-        }
-    }
-
-    /// [`Model::initialize`] then [`Model::start`].
-    pub fn launch<R: Rng + ?Sized>(
-        &self,
-        p: &mut Particles<'_>,
-        t0: Real,
-        rng: &mut R,
-    ) -> Result<(Engine, Observables), EngineError> {
-        self.initialize(p, t0, rng)?;
-        self.start(p, t0)
-    }
-
-    fn by_drive<K: Kernel>(
-        &self,
-        k: K,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByDrive<K>, Observables), EngineError> {
-        match self.drive {
-            DriveModel::None => wrap(self.by_law(k, NoDrive, p, t0), ByDrive::None),
-            DriveModel::WhiteNoise(d) => wrap(self.by_law(k, d, p, t0), ByDrive::WhiteNoise),
-            DriveModel::Gaussian(d) => wrap(self.by_law(k, d, p, t0), ByDrive::Gaussian),
-            DriveModel::ConstantForce(d) => wrap(self.by_law(k, d, p, t0), ByDrive::ConstantForce),
-            DriveModel::HostMaxwell(d) => wrap(self.by_law(k, d, p, t0), ByDrive::HostMaxwell),
-            DriveModel::HostHardSpheres(d) => {
-                wrap(self.by_law(k, d, p, t0), ByDrive::HostHardSpheres)
-            }
-        }
-    }
-
-    fn by_law<K: Kernel, D: Drive>(
-        &self,
-        k: K,
-        d: D,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByLaw<K, D>, Observables), EngineError> {
-        match self.law {
-            LawModel::Constant(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::Constant),
-            LawModel::ImpactSpeed(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::ImpactSpeed),
-        }
-    }
-
-    fn by_scheme<K: Kernel, D: Drive, A: Restitution>(
-        &self,
-        k: K,
-        d: D,
-        a: A,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByScheme<K, D, A>, Observables), EngineError> {
-        match self.scheme {
-            SchemeModel::NoSplitting => {
-                wrap(NoSplitting::start(k, d, a, p, t0), ByScheme::NoSplitting)
-            }
-            SchemeModel::Splitting(order, dt) => wrap(
-                Splitting::start(k, d, a, order, dt, p, t0),
-                ByScheme::Splitting,
-            ),
-            SchemeModel::TimeStepped(hs, f) => wrap(
-                TimeStepped::start(hs, d, a, f, p, t0),
-                ByScheme::TimeStepped,
-            ),
-        }
-    }
-}
-
-fn wrap<E, F>(
-    r: Result<(E, Observables), EngineError>,
-    f: impl FnOnce(E) -> F,
-) -> Result<(F, Observables), EngineError> {
-    r.map(|(e, o)| (f(e), o))
 }

@@ -1,15 +1,15 @@
 //! `gdsmc bench scaling SCENE`: the same run on 1 and on `k` threads; the speed-up, and a
 //! check that the statistics are bit-identical (a run is a pure function of scene and seed).
 
-use crate::ensemble;
 use crate::error::Error;
+use crate::run;
 use crate::scene::Scene;
 
 /// Wall seconds on one thread and on `threads` threads, and whether the results agree bit for
 /// bit.
 pub fn measure(scene: &Scene, threads: usize) -> Result<(f64, f64, bool), Error> {
-    let one = ensemble::run(scene, 1, &|_| {})?;
-    let many = ensemble::run(scene, threads, &|_| {})?;
+    let one = run::run(scene, 1, &|_| {})?;
+    let many = run::run(scene, threads, &|_| {})?;
     let same = one.acc == many.acc && one.counts == many.counts;
     Ok((one.wall.as_secs_f64(), many.wall.as_secs_f64(), same))
 }

@@ -12,13 +12,13 @@
 //! 1% error on each curve is read off by log-log interpolation, and the ratios to the
 //! no-splitting scheme are RW's efficiency comparison (RW: Euler about 100, Strang about 2).
 
-use crate::charts::{Series, Style, profile_svg};
-use crate::ensemble;
 use crate::error::Error;
-use crate::output::write_atomic;
-use crate::references::maxwell_temperature;
+use crate::reference::curves::maxwell_temperature;
+use crate::report::charts::{Series, Style, profile_svg};
+use crate::report::files::write_atomic;
+use crate::run;
+use crate::run::stats::LAMBDA_999;
 use crate::scene::{Scene, SchemeChoice};
-use crate::stats::LAMBDA_999;
 use plotters::style::{BLUE, GREEN, RED};
 use std::path::Path;
 
@@ -142,7 +142,7 @@ pub fn measure(
             "euler" => SchemeChoice::Euler(c.dt),
             _ => SchemeChoice::NoSplitting,
         };
-        let st = ensemble::run(&s, threads, &|_| {})?;
+        let st = run::run(&s, threads, &|_| {})?;
         let steady = st.steady.as_ref().expect("steady_from set");
         let col = st.col("T_bulk").expect("the temperature column");
         let mean = (steady.acc.mean(col), steady.acc.ci(col));

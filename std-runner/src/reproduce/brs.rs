@@ -4,9 +4,9 @@
 
 use super::{Cell, Check, Entry, Options, Row, Table, ensembles, go, max_relative_error, scene};
 use crate::Error;
-use crate::ensemble::initial_sampler;
-use crate::hydro::Trajectory;
-use crate::references::{host_medium_maxwell, hydro_models};
+use crate::reference::curves::{host_medium_maxwell, hydro_models};
+use crate::reference::hydro::Trajectory;
+use crate::run::initial_sampler;
 
 /// BRS Table 1.
 pub const TABLE1: Entry = Entry {

@@ -4,7 +4,7 @@ use super::{
     Cell, Check, Entry, Options, Row, Table, at, ensembles, go, max_relative_error, scene,
 };
 use crate::Error;
-use crate::references::maxwell_temperature;
+use crate::reference::curves::maxwell_temperature;
 
 /// GRW Table 1 (Example 3, beta = 1).
 pub const TABLE1: Entry = Entry {

@@ -4,7 +4,7 @@
 
 use super::{Cell, Entry, Options, Row, Table, go, scene, steady};
 use crate::Error;
-use crate::reference::sonine::mu4_maxwellian;
+use crate::reference::exact::sonine::mu4_maxwellian;
 
 /// MS Table 1.
 pub const TABLE1: Entry = Entry {

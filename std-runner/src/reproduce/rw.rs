@@ -3,8 +3,8 @@
 
 use super::{Cell, Entry, Options, Row, Table, at, ensembles, go, max_relative_error, scene};
 use crate::Error;
-use crate::reference::MaxwellTemperature;
-use crate::references::maxwell_temperature;
+use crate::reference::curves::maxwell_temperature;
+use crate::reference::exact::MaxwellTemperature;
 use crate::scene::Scene;
 
 /// RW's ensembles in Tables 1 and 2.

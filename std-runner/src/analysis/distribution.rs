@@ -2,9 +2,9 @@
 //! `Delta(c)` (MS (45)) and `G(c)` (MS (69), (71), (77)), and BRS's marginal distribution
 //! `f_1(v_1)` (BRS Figure 4), from the histograms a scene asks for.
 
-use crate::ensemble::RunStats;
-use crate::reference::sonine::mu2_maxwellian;
-use crate::reference::tail;
+use crate::reference::exact::sonine::mu2_maxwellian;
+use crate::reference::exact::tail;
+use crate::run::RunStats;
 use crate::scene::{DriveChoice, KernelChoice, Scene};
 use std::f64::consts::PI;
 

@@ -1,7 +1,7 @@
 //! Which reference curves apply to a scene, as extra columns beside the observables.
 
-use crate::ensemble::initial_sampler;
-use crate::reference::{HostMediumMaxwell, MaxwellTemperature};
+use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
+use crate::run::initial_sampler;
 use crate::scene::{BackgroundKernel, DriveChoice, KernelChoice, Scene, SchemeChoice};
 
 /// A named reference curve `t -> value` for an observable column.
@@ -64,8 +64,8 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
 }
 
 /// The BRS (21), (22) closure models of a hard-sphere gas in a hard-sphere host medium.
-pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
-    use crate::hydro::{Closure, HydroModel};
+pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroModel; 2]> {
+    use crate::reference::hydro::{Closure, HydroModel};
     let KernelChoice::HardSpheres { gamma, c } = scene.physics.kernel else {
         return None;
     };
@@ -106,7 +106,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             ),
             ("T_bulk_hydro22", "V_y_hydro22", "BRS (22), Grad"),
         ]) {
-            match crate::hydro::Trajectory::new(
+            match crate::reference::hydro::Trajectory::new(
                 model,
                 f0.mean().to_array(),
                 f0.temperature(),

@@ -1,30 +1,17 @@
-//! Output files. Every file is written to a temporary name beside its target and renamed into
-//! place, so an interrupted run never leaves a half-written file where a good one was.
+//! What a run leaves behind: observables.csv, histograms.csv, reduced.csv, marginal.csv,
+//! summary.json and the charts, each written whole ([`files::write_atomic`]), and the text
+//! summary the command prints.
 
-use crate::ensemble::RunStats;
+pub mod charts;
+pub mod files;
+pub mod summary;
+
 use crate::error::Error;
-use crate::references::ReferenceCurve;
+use crate::reference::curves::ReferenceCurve;
+use crate::run::RunStats;
 use crate::scene::Scene;
-use std::io::Write;
-use std::path::{Path, PathBuf};
-
-/// Writes `bytes` to `path` atomically (temporary file, flush, rename).
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let err = |source| Error::Write {
-        path: path.to_path_buf(),
-        source,
-    };
-    let mut tmp = PathBuf::from(path);
-    tmp.set_extension(format!(
-        "{}.partial",
-        path.extension().and_then(|e| e.to_str()).unwrap_or("")
-    ));
-    let mut f = std::fs::File::create(&tmp).map_err(err)?;
-    f.write_all(bytes).map_err(err)?;
-    f.sync_all().map_err(err)?;
-    drop(f);
-    std::fs::rename(&tmp, path).map_err(err)
-}
+use files::write_atomic;
+use std::path::Path;
 
 /// observables.csv: `t`, then `NAME` and `NAME_ci` for every observable, then the reference
 /// columns. Numbers are written with full round-trip precision.
@@ -58,7 +45,7 @@ pub fn observables_csv(stats: &RunStats, refs: &[ReferenceCurve]) -> Result<Vec<
 /// `density` = `f` over the shell volume; the last shell is `[R, inf)`.
 pub fn histograms_csv(
     radius: f64,
-    hist: &crate::stats::Accumulator,
+    hist: &crate::run::stats::Accumulator,
 ) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record(["r_lo", "r_hi", "f", "f_ci", "density"])?;
@@ -133,7 +120,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     let tail = stats
         .histogram
         .as_ref()
-        .and_then(|(radius, h)| crate::tails::fit(*radius, h))
+        .and_then(|(radius, h)| crate::analysis::tails::fit(*radius, h))
         .map(|f| {
             let lambda = match scene.physics.kernel {
                 crate::scene::KernelChoice::Maxwell { .. } => 0.0,
@@ -148,7 +135,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
                 "reference_exponent_grw_16": 1.0 + lambda / 2.0,
             })
         });
-    let reduced = crate::distribution::reduced(scene, stats).map(|r| {
+    let reduced = crate::analysis::distribution::reduced(scene, stats).map(|r| {
         serde_json::json!({
             "a2": r.a2.0,
             "a2_ci": r.a2.1,
@@ -161,7 +148,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "file": "reduced.csv",
         })
     });
-    let warnings: Vec<serde_json::Value> = crate::warnings::check(scene, stats)
+    let warnings: Vec<serde_json::Value> = crate::analysis::warnings::check(scene, stats)
         .into_iter()
         .map(|w| serde_json::json!({ "code": w.code, "message": w.message }))
         .collect();
@@ -223,8 +210,8 @@ pub fn write_all(
         })?;
         write_atomic(&path, &bytes)?;
     }
-    let reduced = crate::distribution::reduced(scene, stats);
-    let marginal = crate::distribution::marginal(stats);
+    let reduced = crate::analysis::distribution::reduced(scene, stats);
+    let marginal = crate::analysis::distribution::marginal(stats);
     let csv_err = |path: &Path, e: csv::Error| Error::Write {
         path: path.to_path_buf(),
         source: std::io::Error::other(e.to_string()),
@@ -239,8 +226,8 @@ pub fn write_all(
         let bytes = marginal_csv(m).map_err(|e| csv_err(&path, e))?;
         write_atomic(&path, &bytes)?;
     }
-    crate::charts::write_charts(dir, &scene.name, stats, refs)?;
-    crate::charts::write_distribution_charts(
+    crate::report::charts::write_charts(dir, &scene.name, stats, refs)?;
+    crate::report::charts::write_distribution_charts(
         dir,
         &scene.name,
         stats,
@@ -253,7 +240,7 @@ pub fn write_all(
 /// f_ci` (shell weight), `density` (f~(c)), `phi` (the Maxwellian, shell-averaged), `ratio,
 /// ratio_ci` (f/phi), `delta, delta_ci` (MS (45)), `s2` (S_2(c^2)), `G, G_maxwell` (MS (69),
 /// (71) or (77); empty without a tail law).
-pub fn reduced_csv(r: &crate::distribution::Reduced) -> Result<Vec<u8>, csv::Error> {
+pub fn reduced_csv(r: &crate::analysis::distribution::Reduced) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
         "c_lo",
@@ -301,7 +288,7 @@ pub fn reduced_csv(r: &crate::distribution::Reduced) -> Result<Vec<u8>, csv::Err
 /// `v_lo, v_hi, first, first_ci, first_maxwell, last, last_ci, last_maxwell` (densities at the
 /// first and last observation, each beside the Maxwellian with that time's bulk velocity
 /// and temperature).
-pub fn marginal_csv(m: &crate::distribution::Marginal) -> Result<Vec<u8>, csv::Error> {
+pub fn marginal_csv(m: &crate::analysis::distribution::Marginal) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
         "v_lo",

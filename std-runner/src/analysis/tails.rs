@@ -6,7 +6,7 @@
 //! whose weight is resolved (mean > 0 and 99.9% half-width below half the mean), with its 99.9%
 //! half-width `3.2` standard errors of the regression.
 
-use crate::stats::{Accumulator, LAMBDA_999};
+use crate::run::stats::{Accumulator, LAMBDA_999};
 
 /// A fitted tail exponent.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,7 +1,7 @@
 //! The short text summary `gdsmc run` prints.
 
-use crate::ensemble::RunStats;
-use crate::references::ReferenceCurve;
+use crate::reference::curves::ReferenceCurve;
+use crate::run::RunStats;
 use crate::scene::Scene;
 use std::fmt::Write;
 
@@ -65,7 +65,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         let _ = writeln!(s);
     }
     if let Some((radius, h)) = &stats.histogram {
-        match crate::tails::fit(*radius, h) {
+        match crate::analysis::tails::fit(*radius, h) {
             Some(f) => {
                 let _ = writeln!(
                     s,
@@ -80,7 +80,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             }
         }
     }
-    if let Some(r) = crate::distribution::reduced(scene, stats) {
+    if let Some(r) = crate::analysis::distribution::reduced(scene, stats) {
         let _ = writeln!(
             s,
             "\nreduced distribution (MS), c = |v - V| / v0, a2 = {:.5} +- {:.1e}:",
@@ -114,7 +114,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             );
         }
     }
-    if let Some(m) = crate::distribution::marginal(stats) {
+    if let Some(m) = crate::analysis::distribution::marginal(stats) {
         let _ = writeln!(
             s,
             "\nmarginal distribution of v_{} (BRS Figure 4) at t = {} and t = {}: marginal.csv, marginal.svg",
@@ -123,7 +123,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             m.times.1
         );
     }
-    let warnings = crate::warnings::check(scene, stats);
+    let warnings = crate::analysis::warnings::check(scene, stats);
     if !warnings.is_empty() {
         let _ = writeln!(
             s,

@@ -2,7 +2,7 @@
 //! Each names the diagnostic that fired, the size of the expected error and what to do; the
 //! stability study in docs/stability.md lists them with the failures they reveal.
 
-use crate::ensemble::RunStats;
+use crate::run::RunStats;
 use crate::scene::{DriveChoice, RestitutionLaw, Scene, SchemeChoice};
 
 /// Expected relative errors above this fire the step-size warnings.

@@ -1,0 +1,166 @@
+//! Running a simulation and reading or writing its state: advance, observables, particle
+//! count, velocities, reseed.
+
+use crate::guard::{check_ptr, guard};
+use crate::observables::gdsmc_observables;
+use crate::sim::{check_len, gdsmc_sim, live, particles_of};
+use crate::status::{engine_error, fail, gdsmc_status};
+use gdsmc_core::engine::EventLoop;
+use gdsmc_core::rng::seeded;
+use gdsmc_core::vec3::Vec3;
+
+/// Runs the simulation to time `t` (>= its current time), kicks every particle there and, if
+/// `out` is not NULL, writes the observables at `t` to `*out`. GDSMC_TIME_BACKWARDS for an
+/// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_advance(
+    sim: *mut gdsmc_sim,
+    t: f64,
+    out: *mut gdsmc_observables,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        if !out.is_null() {
+            check_ptr(out, "out")?;
+        }
+        let mut rng = s.rng.clone();
+        let mut p = particles_of(s.particles, s.n);
+        let o = s
+            .engine
+            .advance_to(&mut p, t, &mut rng)
+            .map_err(engine_error)?;
+        s.rng = rng;
+        s.last = o;
+        if !out.is_null() {
+            // SAFETY: checked non-null and aligned.
+            unsafe {
+                out.write(gdsmc_observables::new(
+                    s.engine.time(),
+                    &o,
+                    &s.engine.counts(),
+                ))
+            };
+        }
+        Ok(())
+    })
+}
+
+/// Writes the observables at the simulation's current time to `*out`.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_observables(
+    sim: *mut gdsmc_sim,
+    out: *mut gdsmc_observables,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        // SAFETY: checked non-null and aligned.
+        unsafe {
+            out.write(gdsmc_observables::new(
+                s.engine.time(),
+                &s.last,
+                &s.engine.counts(),
+            ))
+        };
+        Ok(())
+    })
+}
+
+/// The number of particles in `*n`.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `n` NULL or writable for one uint64_t.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_particle_count(
+    sim: *mut gdsmc_sim,
+    n: *mut u64,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(n, "n")?;
+        // SAFETY: checked non-null and aligned.
+        unsafe { n.write(s.n as u64) };
+        Ok(())
+    })
+}
+
+/// Copies the velocities out: `out[3i], out[3i+1], out[3i+2]` = particle i's x, y, z, for
+/// `len >= 3 n` doubles (GDSMC_BUFFER_TOO_SMALL otherwise). All particles are at the current
+/// time after create, advance and set_velocities.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_get_velocities(
+    sim: *mut gdsmc_sim,
+    out: *mut f64,
+    len: usize,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        check_len(len, s.n)?;
+        // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
+        let dst = unsafe { std::slice::from_raw_parts_mut(out, 3 * s.n) };
+        let p = particles_of(s.particles, s.n);
+        let (scale, offset) = s.engine.velocity_map();
+        for (d, q) in dst.chunks_exact_mut(3).zip(p.as_slice()) {
+            let v = offset + scale * q.velocity();
+            d.copy_from_slice(&[v.x, v.y, v.z]);
+        }
+        Ok(())
+    })
+}
+
+/// Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
+/// current time; the majorant and observables are recomputed. Non-finite values are refused
+/// with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_set_velocities(
+    sim: *mut gdsmc_sim,
+    velocities: *const f64,
+    len: usize,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(velocities, "velocities")?;
+        check_len(len, s.n)?;
+        // SAFETY: non-null, aligned, `len >= 3 n` readable doubles.
+        let src = unsafe { std::slice::from_raw_parts(velocities, 3 * s.n) };
+        if let Some(k) = src.iter().position(|x| !x.is_finite()) {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                format!("velocities[{k}] is not finite"),
+            );
+        }
+        let mut p = particles_of(s.particles, s.n);
+        for (i, v) in src.chunks_exact(3).enumerate() {
+            p.set_velocity(i, Vec3::new(v[0], v[1], v[2]));
+        }
+        let o = s.engine.resync(&mut p).map_err(engine_error)?;
+        s.last = o;
+        Ok(())
+    })
+}
+
+/// Restarts the random numbers from `seed`, stream 0 (the particles' state is kept).
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_reseed(sim: *mut gdsmc_sim, seed: u64) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        s.rng = seeded(seed);
+        Ok(())
+    })
+}

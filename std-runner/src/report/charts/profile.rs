@@ -1,0 +1,168 @@
+//! Profile charts: series of points with error bars, lines and dashed references against a
+//! variable other than time (speed, reduced speed, a velocity component).
+
+use plotters::prelude::*;
+
+/// How a series of a profile chart is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Style {
+    /// Points with 99.9% error bars (the run).
+    Points,
+    /// A solid line.
+    Line,
+    /// A dashed line (a reference).
+    Dashed,
+}
+
+/// One series of a profile chart: `(x, y, half-width)` points.
+pub struct Series {
+    /// Legend text.
+    pub label: String,
+    /// The points; non-finite and (on a log axis) non-positive values are left out.
+    pub points: Vec<(f64, f64, f64)>,
+    /// How to draw it.
+    pub style: Style,
+    /// Colour.
+    pub color: RGBColor,
+}
+
+/// A chart of several series against one variable, on a linear or logarithmic y axis.
+pub fn profile_svg(
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    log_y: bool,
+    series: &[Series],
+) -> Result<String, String> {
+    let keep = |p: &&(f64, f64, f64)| p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0);
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
+    // The run's points set the y range when there are any (references are clipped to it).
+    let has_points = series.iter().any(|s| s.style == Style::Points);
+    for s in series {
+        for p in s.points.iter().filter(keep) {
+            x0 = x0.min(p.0);
+            x1 = x1.max(p.0);
+            if s.style == Style::Points || !has_points {
+                y0 = y0.min(p.1);
+                y1 = y1.max(p.1);
+            }
+        }
+    }
+    if !(x0 < x1 && y0 <= y1) {
+        return Err("no finite values to draw".into());
+    }
+    let (y_lo, y_hi) = if log_y {
+        (y0 / 2.0, y1 * 2.0)
+    } else {
+        let pad = if y1 > y0 {
+            0.05 * (y1 - y0)
+        } else {
+            0.5 * y0.abs().max(1e-300)
+        };
+        (y0 - pad, y1 + pad)
+    };
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (800, 500)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let mut builder = ChartBuilder::on(&root);
+        builder
+            .caption(title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70);
+        macro_rules! draw {
+            ($chart:expr) => {{
+                let mut chart = $chart;
+                let fmt_log = |y: &f64| format!("{y:.0e}");
+                let fmt_lin = |y: &f64| format!("{y}");
+                let fmt: &dyn Fn(&f64) -> String = if log_y { &fmt_log } else { &fmt_lin };
+                chart
+                    .configure_mesh()
+                    .x_desc(x_desc)
+                    .y_desc(y_desc)
+                    .y_label_formatter(fmt)
+                    .draw()
+                    .map_err(|e| e.to_string())?;
+                for s in series {
+                    let pts: Vec<(f64, f64, f64)> = s.points.iter().filter(keep).copied().collect();
+                    let color = s.color;
+                    match s.style {
+                        Style::Points => {
+                            chart
+                                .draw_series(pts.iter().map(|p| {
+                                    let lo = if log_y {
+                                        (p.1 - p.2).max(p.1 * 1e-3)
+                                    } else {
+                                        p.1 - p.2
+                                    };
+                                    ErrorBar::new_vertical(
+                                        p.0,
+                                        lo,
+                                        p.1,
+                                        p.1 + p.2,
+                                        color.filled(),
+                                        4,
+                                    )
+                                }))
+                                .map_err(|e| e.to_string())?
+                                .label(s.label.clone())
+                                .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
+                        }
+                        Style::Line | Style::Dashed => {
+                            let xy: Vec<(f64, f64)> = pts
+                                .iter()
+                                .filter(|p| p.1 >= y_lo && p.1 <= y_hi)
+                                .map(|p| (p.0, p.1))
+                                .collect();
+                            let dashed = s.style == Style::Dashed;
+                            if dashed {
+                                chart.draw_series(DashedLineSeries::new(
+                                    xy,
+                                    6,
+                                    4,
+                                    color.stroke_width(2),
+                                ))
+                            } else {
+                                chart.draw_series(LineSeries::new(xy, color.stroke_width(2)))
+                            }
+                            .map_err(|e| e.to_string())?
+                            .label(s.label.clone())
+                            .legend(move |(x, y)| {
+                                PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2))
+                            });
+                        }
+                    }
+                }
+                chart
+                    .configure_series_labels()
+                    .background_style(WHITE.mix(0.8))
+                    .border_style(BLACK)
+                    .position(SeriesLabelPosition::UpperRight)
+                    .draw()
+                    .map_err(|e| e.to_string())?;
+            }};
+        }
+        if log_y {
+            let (a, b) = (y_lo, y_hi);
+            draw!(
+                builder
+                    .build_cartesian_2d(x0..x1, (a..b).log_scale())
+                    .map_err(|e| e.to_string())?
+            );
+        } else {
+            draw!(
+                builder
+                    .build_cartesian_2d(x0..x1, y_lo..y_hi)
+                    .map_err(|e| e.to_string())?
+            );
+        }
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}

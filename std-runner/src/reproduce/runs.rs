@@ -1,0 +1,126 @@
+//! Running the shipped scenes a table needs, and reading its statistics.
+
+use super::Options;
+use crate::Error;
+use crate::run::{self, RunStats};
+use crate::scene::{self, Scene};
+use std::path::Path;
+use std::time::Instant;
+
+/// The shipped scenes, compiled in so that `reproduce` runs from any directory.
+pub(crate) const SCENES: &[(&str, &str)] = &[
+    (
+        "grw-example3",
+        include_str!("../../../scenes/grw-example3.toml"),
+    ),
+    (
+        "grw-example4",
+        include_str!("../../../scenes/grw-example4.toml"),
+    ),
+    (
+        "rw-transient",
+        include_str!("../../../scenes/rw-transient.toml"),
+    ),
+    ("rw-steady", include_str!("../../../scenes/rw-steady.toml")),
+    (
+        "rw-steady-30",
+        include_str!("../../../scenes/rw-steady-30.toml"),
+    ),
+    (
+        "brs-example1",
+        include_str!("../../../scenes/brs-example1.toml"),
+    ),
+    (
+        "brs-example2",
+        include_str!("../../../scenes/brs-example2.toml"),
+    ),
+    (
+        "brs-example4",
+        include_str!("../../../scenes/brs-example4.toml"),
+    ),
+    (
+        "brs-example5",
+        include_str!("../../../scenes/brs-example5.toml"),
+    ),
+    (
+        "ms-white-noise",
+        include_str!("../../../scenes/ms-white-noise.toml"),
+    ),
+    (
+        "ms-gaussian",
+        include_str!("../../../scenes/ms-gaussian.toml"),
+    ),
+    (
+        "ms-constant-force",
+        include_str!("../../../scenes/ms-constant-force.toml"),
+    ),
+];
+
+/// A shipped scene with overrides (`--set` syntax), `n` particles, `m` ensembles and a seed.
+pub(crate) fn scene(name: &str, set: &[String], n: usize, m: u64, seed: u64) -> Scene {
+    let text = SCENES
+        .iter()
+        .find(|(k, _)| *k == name)
+        .map(|(_, t)| *t)
+        .expect("a compiled-in scene");
+    let path = format!("scenes/{name}.toml");
+    let mut s = scene::parse_with_overrides(Path::new(&path), text, set)
+        .expect("shipped scenes and reproduce's overrides are valid");
+    s.physics.n = n;
+    s.ensembles = m;
+    s.seed = seed;
+    s
+}
+
+/// Runs a scene, returning its statistics and wall seconds.
+pub(crate) fn go(s: &Scene, opts: &Options) -> Result<(RunStats, f64), Error> {
+    let t = Instant::now();
+    let st = run::run(s, opts.threads, &|_| {})?;
+    Ok((st, t.elapsed().as_secs_f64()))
+}
+
+/// Ensembles for a row: the paper's `paper` in full mode; in quick mode as many as keep
+/// `n * m` near `budget` (at least 16, at most the paper's).
+pub(crate) fn ensembles(opts: &Options, n: usize, paper: u64, budget: u64) -> u64 {
+    if opts.quick {
+        (budget / n as u64).clamp(16, paper)
+    } else {
+        paper
+    }
+}
+
+/// Mean and half-width of column `col` at time index `ti`.
+pub(crate) fn at(st: &RunStats, ti: usize, col: &str) -> (f64, f64) {
+    let c = st.col(col).expect("a known column");
+    (st.mean(ti, c), st.ci(ti, c))
+}
+
+/// Steady-state mean and half-width of column `col`.
+pub(crate) fn steady(st: &RunStats, col: &str) -> (f64, f64) {
+    st.steady
+        .as_ref()
+        .expect("a steady-state scene")
+        .mean_ci(st, st.col(col).expect("a known column"))
+}
+
+/// `max_t |mean(t) - exact(t)| / exact(t)` over the observation times with `t >= from`, and
+/// the largest relative half-width there: GRW (29), RW's `E_max`, BRS's `Err`.
+pub(crate) fn max_relative_error(
+    st: &RunStats,
+    col: &str,
+    from: f64,
+    exact: impl Fn(f64) -> f64,
+) -> (f64, f64) {
+    let mut e: f64 = 0.0;
+    let mut ci: f64 = 0.0;
+    for (ti, &t) in st.times.iter().enumerate() {
+        if t < from {
+            continue;
+        }
+        let (m, c) = at(st, ti, col);
+        let x = exact(t);
+        e = e.max(((m - x) / x).abs());
+        ci = ci.max(c / x.abs());
+    }
+    (e, ci)
+}

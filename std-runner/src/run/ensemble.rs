@@ -1,0 +1,123 @@
+//! One ensemble: a particle system drawn from the scene's initial distribution, its engine
+//! started through the core's one dispatch ([`Model::launch`]), observed at every observation
+//! time; the histograms a scene asks for ride at the end of its row.
+
+use crate::run::columns::COLUMNS;
+use crate::scene::Scene;
+use gdsmc_core::collisional::collisional_moments;
+use gdsmc_core::engine::{Counts, EngineError, EventLoop};
+use gdsmc_core::histogram::{component_bins, radial_shells_mapped};
+use gdsmc_core::moments::Observables;
+use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::physics::{MAX_COMPONENTS, Model};
+use gdsmc_core::rng::Xoshiro256PlusPlus;
+use gdsmc_core::sample::MaxwellianMixture;
+use gdsmc_core::vec3::Vec3;
+
+/// The initial distribution of a scene as a core sampler (`None` if its physics is invalid).
+pub fn initial_sampler(scene: &Scene) -> Option<MaxwellianMixture<MAX_COMPONENTS>> {
+    scene.physics.validate().ok().map(|m| m.initial().clone())
+}
+
+/// Runs one ensemble of `scene` (whose physics `model` is) from the generator `rng`: the
+/// observables at every observation time, row-major (`times x COLUMNS`), and the event counts.
+pub fn run_ensemble(
+    scene: &Scene,
+    model: &Model,
+    mut rng: Xoshiro256PlusPlus,
+) -> Result<(Vec<f64>, Counts), EngineError> {
+    let mut buf = vec![Particle::default(); model.n()];
+    let mut p = Particles::new(&mut buf).map_err(|_| EngineError::ParticleCount)?;
+    let (engine, obs0) = model.launch(&mut p, 0.0, &mut rng)?;
+    observe(scene, engine, obs0, &mut p, &mut rng)
+}
+
+fn observe<E: EventLoop>(
+    scene: &Scene,
+    mut engine: E,
+    obs0: Observables,
+    p: &mut Particles<'_>,
+    rng: &mut Xoshiro256PlusPlus,
+) -> Result<(Vec<f64>, Counts), EngineError> {
+    let mut out = Vec::with_capacity(scene.times.len() * (COLUMNS.len() + 2) + 1);
+    // Diagnostics draw from their own stream, so they never change the trajectory.
+    let mut diag = rng.clone();
+    diag.long_jump();
+    let nt = scene.times.len();
+    let mut reduced = vec![0.0; scene.reduced_histogram.map_or(0, |(k, _)| k + 1)];
+    let mut reduced_points = 0u32;
+    let reduced_from = scene.steady_from.unwrap_or(nt - 1);
+    let marginal_len = scene.marginal_histogram.map_or(0, |(_, k, _)| k + 2);
+    let (mut marginal_first, mut marginal_last) =
+        (vec![0.0; marginal_len], vec![0.0; marginal_len]);
+    for (ti, &t) in scene.times.iter().enumerate() {
+        let obs = if t == 0.0 {
+            obs0
+        } else {
+            engine.advance_to(p, t, rng)?
+        };
+        // Bulk velocity and temperature in the stored units, once per observation, for the
+        // diagnostics reduced by v0 (exact for a gas stored rescaled, whose physical
+        // temperature may have underflowed).
+        let wants_reduced = scene.reduced_histogram.is_some() && ti >= reduced_from;
+        let stored =
+            (wants_reduced || scene.collisional_pairs > 0).then(|| stored_bulk_temperature(p));
+        if let (Some((_, c_max)), true, Some((bulk, t_bulk))) =
+            (scene.reduced_histogram, wants_reduced, stored)
+        {
+            // c = (v - V) / v0.
+            let inv = 1.0 / (2.0 * t_bulk).sqrt();
+            radial_shells_mapped(p, c_max, inv, -inv * bulk, &mut reduced);
+            reduced_points += 1;
+        }
+        if let Some((axis, _, radius)) = scene.marginal_histogram {
+            let (scale, offset) = engine.velocity_map();
+            if ti == 0 {
+                component_bins(p, axis, radius, scale, offset, &mut marginal_first);
+            }
+            if ti == nt - 1 {
+                component_bins(p, axis, radius, scale, offset, &mut marginal_last);
+            }
+        }
+        out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
+        // The scene allows collisional pairs with a constant restitution law only.
+        if let (true, Some((bulk, t_bulk)), Some(alpha)) = (
+            scene.collisional_pairs > 0,
+            stored,
+            scene.physics.restitution.constant(),
+        ) {
+            // mu2, mu4 are reduced by v0, so the stored units do.
+            let (mu2, mu4) =
+                collisional_moments(p, bulk, t_bulk, alpha, scene.collisional_pairs, &mut diag);
+            out.extend([mu2, mu4]);
+        }
+    }
+    // The histogram of the last observation rides at the end of the row (split off in the job).
+    if let Some((k, radius)) = scene.histogram {
+        let mut h = vec![0.0; k + 1];
+        let (scale, offset) = engine.velocity_map();
+        radial_shells_mapped(p, radius, scale, offset, &mut h);
+        out.extend(h);
+    }
+    if reduced_points > 0 {
+        out.extend(reduced.iter().map(|x| x / reduced_points as f64));
+    }
+    out.extend(marginal_first);
+    out.extend(marginal_last);
+    Ok((out, engine.counts()))
+}
+
+/// Bulk velocity and temperature (about it) of the velocities as stored.
+fn stored_bulk_temperature(p: &Particles<'_>) -> (Vec3, f64) {
+    let n = p.len() as f64;
+    let mut v = Vec3::ZERO;
+    for q in p.as_slice() {
+        v += q.velocity();
+    }
+    let bulk = (1.0 / n) * v;
+    let mut s = 0.0;
+    for q in p.as_slice() {
+        s += (q.velocity() - bulk).norm2();
+    }
+    (bulk, s / (3.0 * n))
+}
