@@ -1,11 +1,15 @@
 //! What every Markov-jump event loop does with a candidate pair: the fictitious-collision test
 //! against the majorant (GRW (20)), the inelastic map GRW (3) with a uniform direction, and the
-//! majorant update with the bound that holds, `max(Umax, 2|v - V|)` (RW (21)).
+//! majorant update with the bound that holds, `max(Umax, 2|v - V|)` (RW (21)); and what every
+//! loop does when all particles are at one time ([`Collider::synchronized`], [`observables`]).
 
-use super::Counts;
+use super::pairs::PairsAhead;
+use super::{Counts, EngineError};
 use crate::collision::inelastic;
+use crate::drive::Drive;
 use crate::kernel::Kernel;
 use crate::math::{Real, max};
+use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform01};
@@ -30,52 +34,114 @@ impl Majorant {
     }
 }
 
-/// Processes the candidate pair `(i, j)` whose partners are already at the event time.
-/// `umax_event` is the majorant that generated the event's waiting time; `cover_kicked` says
-/// whether the partners were just kicked (so the majorant must cover their new velocities).
-/// Returns true when the majorant changed (the caller then recomputes its rate).
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-pub fn candidate<K: Kernel, A: Restitution, R: Rng + ?Sized>(
-    kernel: &K,
-    restitution: &A,
-    p: &mut Particles<'_>,
-    i: usize,
-    j: usize,
-    maj: &mut Majorant,
-    cover_kicked: bool,
-    counts: &mut Counts,
-    rng: &mut R,
-) -> bool {
-    let (vi, vj) = (p.velocity(i), p.velocity(j));
-    let u = vi - vj;
-    counts.candidates += 1;
-    let umax_event = maj.umax;
-    if K::USES_UMAX {
-        let urel = u.norm();
-        if urel > umax_event {
-            counts.overshoots += 1;
-        }
-        if cover_kicked {
-            maj.cover(vi);
-            maj.cover(vj);
-        }
-        if uniform01(rng) >= kernel.acceptance(urel, umax_event) {
-            counts.fictitious += 1;
-            return maj.umax != umax_event;
+/// What the Markov-jump loops ([`super::NoSplitting`], [`super::Splitting`]) share: the
+/// physics (kernel, drive, restitution law), the majorant, the counts and the pairs drawn
+/// ahead, with the two things both do the same way: process a candidate pair and synchronize.
+#[derive(Clone, Debug)]
+pub struct Collider<K, D, A> {
+    /// The collision kernel.
+    pub kernel: K,
+    /// The drive.
+    pub drive: D,
+    /// The restitution law.
+    pub restitution: A,
+    /// The majorant of the relative speed.
+    pub maj: Majorant,
+    /// Event counts.
+    pub counts: Counts,
+    /// Candidate pairs drawn ahead.
+    pub pairs: PairsAhead,
+}
+
+impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
+    /// The physics with an empty majorant and zero counts.
+    pub fn new(kernel: K, drive: D, restitution: A) -> Self {
+        Collider {
+            kernel,
+            drive,
+            restitution,
+            maj: Majorant::default(),
+            counts: Counts::default(),
+            pairs: PairsAhead::default(),
         }
     }
-    let e = unit_sphere(rng);
-    let alpha = clamped_coefficient(restitution, u, e, counts);
-    let (a, b) = inelastic(vi, vj, e, alpha);
-    p.set_velocity(i, a);
-    p.set_velocity(j, b);
-    counts.collisions += 1;
-    if K::USES_UMAX {
-        maj.cover(a);
-        maj.cover(b);
+
+    /// The majorant event rate of `n` particles whose stored speeds are `scale` times smaller
+    /// than the physical ones (GRW Section 3, RW (20)).
+    #[inline(always)]
+    pub fn rate(&self, n: usize, scale: Real) -> Real {
+        self.kernel.majorant_rate(n, scale * self.maj.umax)
     }
-    maj.umax != umax_event
+
+    /// Processes the candidate pair `(i, j)` whose partners are already at the event time: the
+    /// fictitious-collision test against the majorant that generated the event (GRW (20)),
+    /// else a uniform direction and GRW (3); the majorant covers the new velocities (and the
+    /// kicked ones when `cover_kicked`). Returns true when the majorant changed (the caller
+    /// then recomputes its rate).
+    #[inline(always)]
+    pub fn candidate<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        i: usize,
+        j: usize,
+        cover_kicked: bool,
+        rng: &mut R,
+    ) -> bool {
+        let (vi, vj) = (p.velocity(i), p.velocity(j));
+        let u = vi - vj;
+        self.counts.candidates += 1;
+        let umax_event = self.maj.umax;
+        if K::USES_UMAX {
+            let urel = u.norm();
+            if urel > umax_event {
+                self.counts.overshoots += 1;
+            }
+            if cover_kicked {
+                self.maj.cover(vi);
+                self.maj.cover(vj);
+            }
+            if uniform01(rng) >= self.kernel.acceptance(urel, umax_event) {
+                self.counts.fictitious += 1;
+                return self.maj.umax != umax_event;
+            }
+        }
+        let e = unit_sphere(rng);
+        let alpha = clamped_coefficient(&self.restitution, u, e, &mut self.counts);
+        let (a, b) = inelastic(vi, vj, e, alpha);
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        self.counts.collisions += 1;
+        if K::USES_UMAX {
+            self.maj.cover(a);
+            self.maj.cover(b);
+        }
+        self.maj.umax != umax_event
+    }
+
+    /// Every particle is at one time and `obs` are its observables (in stored units): count
+    /// the synchronization, tell the drive (drives acting about the bulk velocity take it from
+    /// here), and make the majorant exact, `Umax = 2 max |v_i - V|` (GRW step 1.4).
+    pub fn synchronized(&mut self, obs: &Observables) {
+        self.counts.observations += 1;
+        self.drive.observe(obs);
+        if K::USES_UMAX {
+            self.maj = Majorant {
+                umax: 2.0 * obs.max_peculiar_speed,
+                vref: obs.bulk,
+            };
+        }
+    }
+}
+
+/// The observables of a synchronized system, or [`EngineError::NonFinite`] (every loop's
+/// check after a synchronization).
+pub fn observables(p: &Particles<'_>) -> Result<Observables, EngineError> {
+    let obs = Observables::of(p);
+    if obs.is_finite() {
+        Ok(obs)
+    } else {
+        Err(EngineError::NonFinite)
+    }
 }
 
 /// The restitution coefficient of a law, clamped to [0, 1] (counted in

@@ -34,8 +34,7 @@
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
 
-use super::event::{Majorant, candidate};
-use super::pairs::PairsAhead;
+use super::event::{Collider, observables};
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
@@ -50,17 +49,12 @@ use crate::vec3::Vec3;
 /// The exact (no-splitting) event loop for kernel `K`, drive `D` and restitution law `A`.
 #[derive(Clone, Debug)]
 pub struct NoSplitting<K, D, A> {
-    kernel: K,
-    drive: D,
-    restitution: A,
+    c: Collider<K, D, A>,
     t: Real,
-    maj: Majorant,
-    counts: Counts,
     refresh_after: u64,
     scale: Real,
     offset: Vec3,
     rescale_below: Real,
-    pairs: PairsAhead,
 }
 
 /// A gas with no drive is rescaled when its stored temperature falls below this times
@@ -84,17 +78,12 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         }
         p.reset_kick_times(t0);
         let mut s = NoSplitting {
-            kernel,
-            drive,
-            restitution,
+            c: Collider::new(kernel, drive, restitution),
             t: t0,
-            maj: Majorant::default(),
-            counts: Counts::default(),
             refresh_after: 2 * p.len() as u64,
             scale: 1.0,
             offset: Vec3::ZERO,
             rescale_below: RESCALE_BELOW,
-            pairs: PairsAhead::default(),
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
@@ -107,17 +96,17 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
 
     /// Current majorant of the relative speed (0 for kernels that need none).
     pub fn umax(&self) -> Real {
-        self.maj.umax
+        self.c.maj.umax
     }
 
     /// Event counts so far.
     pub fn counts(&self) -> Counts {
-        self.counts
+        self.c.counts
     }
 
     /// The kernel.
     pub fn kernel(&self) -> &K {
-        &self.kernel
+        &self.c.kernel
     }
 
     /// Runs the process to time `t_end >= time()`, kicks every particle to `t_end` and returns
@@ -132,7 +121,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             return Err(EngineError::TimeBackwards);
         }
         let n = p.len();
-        let mut rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
+        let mut rate = self.c.rate(n, self.scale);
         // Candidates and fictitious ones since the majorant was last made exact.
         let (mut window, mut wasted) = (0u64, 0u64);
         loop {
@@ -141,8 +130,8 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                 // every 2n candidates keeps the majorant exact and rescales a cooling gas
                 // before its peculiar velocities lose digits (module docs).
                 self.synchronized(p)?;
-                self.counts.observations -= 1;
-                rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
+                self.c.counts.observations -= 1;
+                rate = self.c.rate(n, self.scale);
                 (window, wasted) = (0, 0);
             } else if D::ACTS && K::USES_UMAX && window >= self.refresh_after && 2 * wasted > window
             {
@@ -150,14 +139,14 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                 // the current time is what an observation does; the process stays exact, and the
                 // O(n) cost is amortized over the window. A refresh that gains little doubles
                 // the window, so a steady gas soon stops paying for it.
-                let before = self.scale * self.maj.umax;
-                self.drive.kick_all(p, self.t, rng);
+                let before = self.scale * self.c.maj.umax;
+                self.c.drive.kick_all(p, self.t, rng);
                 self.synchronized(p)?;
-                self.counts.observations -= 1;
-                self.counts.refreshes += 1;
-                rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
+                self.c.counts.observations -= 1;
+                self.c.counts.refreshes += 1;
+                rate = self.c.rate(n, self.scale);
                 (window, wasted) = (0, 0);
-                self.refresh_after = if self.scale * self.maj.umax > 0.8 * before {
+                self.refresh_after = if self.scale * self.c.maj.umax > 0.8 * before {
                     self.refresh_after.saturating_mul(2)
                 } else {
                     2 * n as u64
@@ -169,19 +158,18 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                 break;
             }
             self.t = t_next;
-            let (i, j) = self.pairs.next(p, rng);
-            self.drive.kick(p, i, t_next, rng);
-            self.drive.kick(p, j, t_next, rng);
-            let (k, a) = (&self.kernel, &self.restitution);
-            let before = self.counts.fictitious;
-            if candidate(k, a, p, i, j, &mut self.maj, D::ACTS, &mut self.counts, rng) {
-                rate = self.kernel.majorant_rate(n, self.scale * self.maj.umax);
+            let (i, j) = self.c.pairs.next(p, rng);
+            self.c.drive.kick(p, i, t_next, rng);
+            self.c.drive.kick(p, j, t_next, rng);
+            let before = self.c.counts.fictitious;
+            if self.c.candidate(p, i, j, D::ACTS, rng) {
+                rate = self.c.rate(n, self.scale);
             }
             window += 1;
-            wasted += self.counts.fictitious - before;
+            wasted += self.c.counts.fictitious - before;
         }
         self.t = t_end;
-        self.drive.kick_all(p, t_end, rng);
+        self.c.drive.kick_all(p, t_end, rng);
         self.synchronized(p)
     }
 
@@ -197,10 +185,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     /// Observables of the synchronized system (in physical units); refreshes `V` and `Umax`,
     /// and rescales a cooling gas whose stored temperature fell below the threshold.
     fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        let mut obs = Observables::of(p);
-        if !obs.is_finite() {
-            return Err(EngineError::NonFinite);
-        }
+        let mut obs = observables(p)?;
         if !D::ACTS
             && obs.t_bulk > 0.0
             && obs.t_bulk < self.rescale_below * max(1.0, obs.bulk.norm2())
@@ -213,17 +198,10 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             }
             self.offset += self.scale * obs.bulk;
             self.scale /= s;
-            self.counts.rescales += 1;
+            self.c.counts.rescales += 1;
             obs = Observables::of(p);
         }
-        self.counts.observations += 1;
-        self.drive.observe(&obs);
-        if K::USES_UMAX {
-            self.maj = Majorant {
-                umax: 2.0 * obs.max_peculiar_speed,
-                vref: obs.bulk,
-            };
-        }
+        self.c.synchronized(&obs);
         Ok(obs.in_units(self.scale, self.offset))
     }
 

@@ -10,8 +10,7 @@
 //!
 //! Observation times must lie on the grid `t0 + k dt`.
 
-use super::event::{Majorant, candidate};
-use super::pairs::PairsAhead;
+use super::event::{Collider, observables};
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
@@ -34,22 +33,16 @@ pub enum SplittingOrder {
 /// A splitting scheme for kernel `K`, drive `D` and restitution law `A`.
 #[derive(Clone, Debug)]
 pub struct Splitting<K, D, A> {
-    kernel: K,
-    drive: D,
-    restitution: A,
+    c: Collider<K, D, A>,
     order: SplittingOrder,
     dt: Real,
     t0: Real,
     steps: u64,
-    maj: Majorant,
-    counts: Counts,
-    pairs: PairsAhead,
 }
 
 impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
     /// Starts the scheme at `t0` with time step `dt > 0` on particles holding the initial
     /// velocities. Returns the observables at `t0`.
-    #[allow(clippy::too_many_arguments)]
     pub fn start(
         kernel: K,
         drive: D,
@@ -65,16 +58,11 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         }
         p.reset_kick_times(t0);
         let mut s = Splitting {
-            kernel,
-            drive,
-            restitution,
+            c: Collider::new(kernel, drive, restitution),
             order,
             dt,
             t0,
             steps: 0,
-            maj: Majorant::default(),
-            counts: Counts::default(),
-            pairs: PairsAhead::default(),
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
@@ -97,7 +85,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
 
     /// Event counts so far.
     pub fn counts(&self) -> Counts {
-        self.counts
+        self.c.counts
     }
 
     /// Runs whole steps up to `t_end`, which must lie on the grid `t0 + k dt` (to within
@@ -134,18 +122,18 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         match self.order {
             SplittingOrder::Euler => {
                 self.collide_for(p, self.dt, rng);
-                self.drive.kick_all(p, t1, rng);
+                self.c.drive.kick_all(p, t1, rng);
             }
             SplittingOrder::Strang => {
                 self.collide_for(p, 0.5 * self.dt, rng);
-                self.drive.kick_all(p, t1, rng);
+                self.c.drive.kick_all(p, t1, rng);
                 self.collide_for(p, 0.5 * self.dt, rng);
             }
         }
         if D::ACTS && K::USES_UMAX {
             // The kicks moved every particle: the majorant must cover them again.
             for q in p.as_slice() {
-                self.maj.cover(q.velocity());
+                self.c.maj.cover(q.velocity());
             }
         }
         self.steps += 1;
@@ -154,34 +142,23 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
     /// The collision process alone for a time `h` (RW Algorithm 1 steps 2.1.1-2.1.7).
     fn collide_for<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, h: Real, rng: &mut R) {
         let n = p.len();
-        let mut rate = self.kernel.majorant_rate(n, self.maj.umax);
+        let mut rate = self.c.rate(n, 1.0);
         let mut s = 0.0;
         loop {
             s += standard_exponential(rng) / rate;
             if s.partial_cmp(&h) != Some(core::cmp::Ordering::Less) {
                 return;
             }
-            let (i, j) = self.pairs.next(p, rng);
-            let (k, a) = (&self.kernel, &self.restitution);
-            if candidate(k, a, p, i, j, &mut self.maj, false, &mut self.counts, rng) {
-                rate = self.kernel.majorant_rate(n, self.maj.umax);
+            let (i, j) = self.c.pairs.next(p, rng);
+            if self.c.candidate(p, i, j, false, rng) {
+                rate = self.c.rate(n, 1.0);
             }
         }
     }
 
     fn synchronized(&mut self, p: &Particles<'_>) -> Result<Observables, EngineError> {
-        let obs = Observables::of(p);
-        if !obs.is_finite() {
-            return Err(EngineError::NonFinite);
-        }
-        self.counts.observations += 1;
-        self.drive.observe(&obs);
-        if K::USES_UMAX {
-            self.maj = Majorant {
-                umax: 2.0 * obs.max_peculiar_speed,
-                vref: obs.bulk,
-            };
-        }
+        let obs = observables(p)?;
+        self.c.synchronized(&obs);
         Ok(obs)
     }
 }

@@ -125,10 +125,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
             };
             self.drive.kick_all(p, self.t, rng);
             self.steps += 1;
-            let o = Observables::of(p);
-            if !o.is_finite() {
-                return Err(EngineError::NonFinite);
-            }
+            let o = super::event::observables(p)?;
             self.temperature = o.t_bulk;
             self.drive.observe(&o);
             obs = Some(o);
@@ -179,10 +176,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
     }
 
     fn synchronized(&mut self, p: &Particles<'_>) -> Result<Observables, EngineError> {
-        let obs = Observables::of(p);
-        if !obs.is_finite() {
-            return Err(EngineError::NonFinite);
-        }
+        let obs = super::event::observables(p)?;
         self.temperature = obs.t_bulk;
         self.drive.observe(&obs);
         Ok(obs)
