@@ -4,7 +4,7 @@
 //! homogeneous inelastic (granular) Boltzmann equation. Every buffer belongs to the caller.
 //!
 //! The physics and the algorithms follow four papers, cited by short name and equation
-//! (see `../shared/papers/README.md` in the repository):
+//! (full citations: `docs/papers.md` in the repository):
 //! GRW (Gamba, Rjasanow, Wagner: the uniformly heated gas and the no-splitting scheme),
 //! RW (Rjasanow, Wagner: splitting schemes), BRS (Bisi, Rjasanow, Spiga: host medium),
 //! MS (Montanero, Santos: thermostats).

@@ -111,6 +111,9 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
 
     /// Runs the process to time `t_end >= time()`, kicks every particle to `t_end` and returns
     /// the observables there (GRW steps 2-3, RW Algorithm 3).
+    // Its own function, called once per observation: the engine's dispatch above it stays
+    // small and a profile names the loop.
+    #[inline(never)]
     pub fn advance_to<R: Rng + ?Sized>(
         &mut self,
         p: &mut Particles<'_>,

@@ -13,22 +13,39 @@ use super::ziggurat_tables::{EXP_F, EXP_R, EXP_X};
 use crate::math::{Real, exp, ln, one_to_two};
 use crate::rng::{Rng, uniform_open01, uniform01};
 
-/// One standard exponential variate.
-#[inline]
+/// One standard exponential variate (ziggurat, 256 layers). As for
+/// [`super::standard_normal`], the fast path is inlined and the rejection path is cold.
+#[inline(always)]
 pub fn standard_exponential<R: Rng + ?Sized>(rng: &mut R) -> Real {
+    let bits = rng.next_u64();
+    let i = (bits & 0xff) as usize;
+    let u = one_to_two(bits) - 1.0;
+    let x = u * EXP_X[i];
+    if x < EXP_X[i + 1] {
+        return x;
+    }
+    exponential_rejection(rng, i, x)
+}
+
+/// The rejection path from a draw `(i, x)` outside its layer's rectangle: the tail of the base
+/// strip, or the wedge test, then fresh draws as [`standard_exponential`] makes them.
+#[cold]
+#[inline(never)]
+fn exponential_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, x: Real) -> Real {
+    let (mut i, mut x) = (i, x);
     loop {
-        let bits = rng.next_u64();
-        let i = (bits & 0xff) as usize;
-        let u = one_to_two(bits) - 1.0;
-        let x = u * EXP_X[i];
-        if x < EXP_X[i + 1] {
-            return x;
-        }
         if i == 0 {
             return EXP_R - ln(uniform_open01(rng));
         }
         let y = EXP_F[i + 1] + (EXP_F[i] - EXP_F[i + 1]) * uniform01(rng);
         if y < exp(-x) {
+            return x;
+        }
+        let bits = rng.next_u64();
+        i = (bits & 0xff) as usize;
+        let u = one_to_two(bits) - 1.0;
+        x = u * EXP_X[i];
+        if x < EXP_X[i + 1] {
             return x;
         }
     }
