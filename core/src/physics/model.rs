@@ -54,7 +54,7 @@ pub(super) enum SchemeModel {
 /// A [`Physics`] whose every rule holds, ready to start engines ([`Model::start`]).
 #[derive(Clone, Debug)]
 pub struct Model {
-    physics: Physics,
+    n: usize,
     initial: MaxwellianMixture<MAX_COMPONENTS>,
     pub(super) kernel: KernelModel,
     pub(super) law: LawModel,
@@ -286,7 +286,7 @@ impl Model {
         let drive = drive(physics.drive)?;
         let scheme = scheme(physics.scheme, kernel, physics.drive)?;
         Ok(Model {
-            physics: physics.clone(),
+            n: physics.n,
             initial,
             kernel,
             law,
@@ -295,14 +295,9 @@ impl Model {
         })
     }
 
-    /// The description this model was validated from.
-    pub fn physics(&self) -> &Physics {
-        &self.physics
-    }
-
     /// Particles per system.
     pub fn n(&self) -> usize {
-        self.physics.n
+        self.n
     }
 
     /// The initial distribution as a sampler.

@@ -1,0 +1,197 @@
+//! # gdsmc-demo: what the firmware runs
+//!
+//! Two runs over caller-owned particle buffers, each reaching the engine through the core's
+//! physics description (`Physics::validate`, `Model::launch`): GRW Example 3 (the heated
+//! Maxwell gas, GRW (13): `T -> 8/3`) and the homogeneous cooling of hard spheres (Haff's law).
+//! Each run prints one line per observation time with the observables in round-trip digits and
+//! a last line with a checksum of every particle velocity's bits, so that two machines that
+//! print the same lines have followed the same trajectory bit for bit.
+//!
+//! The firmware (Cortex-M, semihosting) and the host runner (`gdsmc-demo-host`) call the same
+//! [`run`]; `embedded/run.sh` compares their output.
+
+#![no_std]
+
+use core::fmt::Write;
+use gdsmc_core::engine::{Counts, EventLoop};
+use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::physics::{DriveChoice, KernelChoice, Physics, RestitutionLaw, SchemeChoice};
+use gdsmc_core::rng::stream;
+
+/// 1/(4 pi), GRW's C_0 for Maxwell pseudo-molecules and C_1 of the hard spheres here.
+const C_QUARTER_PI: f64 = 0.079_577_471_545_947_67;
+
+/// GRW Example 3 with `n` particles: Maxwell kernel, gamma = 4, C_0 = 1/(4 pi), alpha = 1/2,
+/// white noise beta = 1, standard Maxwellian start, no splitting.
+pub fn grw_example3(n: usize) -> Physics {
+    Physics::new(
+        n,
+        KernelChoice::Maxwell {
+            gamma: 4.0,
+            c: C_QUARTER_PI,
+        },
+        RestitutionLaw::Constant(0.5),
+        DriveChoice::WhiteNoise(1.0),
+        SchemeChoice::NoSplitting,
+    )
+}
+
+/// The homogeneous cooling state of hard spheres with `n` particles (Haff's law):
+/// gamma = 1, C_1 = 1/(4 pi), alpha = 0.9, no drive, no splitting.
+pub fn hcs_hard_spheres(n: usize) -> Physics {
+    Physics::new(
+        n,
+        KernelChoice::HardSpheres {
+            gamma: 1.0,
+            c: C_QUARTER_PI,
+        },
+        RestitutionLaw::Constant(0.9),
+        DriveChoice::None,
+        SchemeChoice::NoSplitting,
+    )
+}
+
+/// The exact temperature of GRW Example 3, GRW (13): `T(t) = 8/3 + (1 - 8/3) exp(-3t/4)`.
+pub fn grw_example3_exact(t: f64) -> f64 {
+    let t_inf = 8.0 / 3.0;
+    t_inf + (1.0 - t_inf) * libm::exp(-0.75 * t)
+}
+
+/// Why a run stopped.
+#[derive(Debug)]
+pub enum DemoError {
+    /// The physics was refused (the message names the parameter).
+    Physics(gdsmc_core::physics::PhysicsError),
+    /// The engine stopped.
+    Engine(gdsmc_core::engine::EngineError),
+    /// The output sink failed.
+    Write,
+}
+
+impl From<core::fmt::Error> for DemoError {
+    fn from(_: core::fmt::Error) -> Self {
+        DemoError::Write
+    }
+}
+
+/// What a run did: its event counts and the instructions it took (from `clock`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Summary {
+    /// Event counts.
+    pub counts: Counts,
+    /// Instructions (or whatever `clock` counts) between the start and the last observation.
+    pub instructions: u64,
+}
+
+/// FNV-1a over the bits of every velocity component.
+fn checksum(p: &Particles<'_>) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for q in p.as_slice() {
+        for x in [q.vx, q.vy, q.vz] {
+            for b in x.to_bits().to_le_bytes() {
+                h ^= b as u64;
+                h = h.wrapping_mul(0x0100_0000_01b3);
+            }
+        }
+    }
+    h
+}
+
+/// Runs `physics` on `buf` (which must hold `physics.n` particles) from stream 0 of `seed`,
+/// observing at `times`, and writes to `out`:
+/// `NAME t=T T=.. T_bulk=.. log10_T_bulk=.. a2=.. collisions=..` per observation and
+/// `NAME checksum=..` at the end. `clock` is read before the start and after the last
+/// observation (the firmware counts instructions; the host may return 0).
+pub fn run(
+    name: &str,
+    physics: &Physics,
+    buf: &mut [Particle],
+    seed: u64,
+    times: &[f64],
+    out: &mut impl Write,
+    mut clock: impl FnMut() -> u64,
+) -> Result<Summary, DemoError> {
+    let model = physics.validate().map_err(DemoError::Physics)?;
+    let mut p = Particles::new(buf)
+        .map_err(|_| DemoError::Engine(gdsmc_core::engine::EngineError::ParticleCount))?;
+    let mut rng = stream(seed, 0);
+    let start = clock();
+    let (mut engine, mut obs) = model
+        .launch(&mut p, 0.0, &mut rng)
+        .map_err(DemoError::Engine)?;
+    for &t in times {
+        if t > 0.0 {
+            obs = engine
+                .advance_to(&mut p, t, &mut rng)
+                .map_err(DemoError::Engine)?;
+        }
+        writeln!(
+            out,
+            "{name} t={t:?} T={:?} T_bulk={:?} log10_T_bulk={:?} a2={:?} collisions={}",
+            obs.t_raw,
+            obs.t_bulk,
+            obs.log10_t_bulk,
+            obs.a2,
+            engine.counts().collisions
+        )?;
+    }
+    let instructions = clock().wrapping_sub(start);
+    let (scale, offset) = engine.velocity_map();
+    writeln!(
+        out,
+        "{name} checksum={:016x} scale={scale:?} offset=[{:?}, {:?}, {:?}]",
+        checksum(&p),
+        offset.x,
+        offset.y,
+        offset.z
+    )?;
+    Ok(Summary {
+        counts: engine.counts(),
+        instructions,
+    })
+}
+
+/// Particles per system in both runs.
+pub const N: usize = 512;
+
+/// Observation times of GRW Example 3 (GRW Table 1's interval [0, 8]).
+pub const GRW3_TIMES: [f64; 9] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0];
+
+/// Observation times of the cooling run (Haff's law: `T ~ t^-2` for `t >> 1/nu0`).
+pub const HCS_TIMES: [f64; 6] = [0.0, 10.0, 20.0, 50.0, 100.0, 200.0];
+
+/// Both runs with seed `seed` on the caller's buffer: GRW Example 3, then the cooling hard
+/// spheres; one summary each.
+pub fn both(
+    buf: &mut [Particle; N],
+    seed: u64,
+    out: &mut impl Write,
+    mut clock: impl FnMut() -> u64,
+) -> Result<[Summary; 2], DemoError> {
+    let a = run(
+        "grw3",
+        &grw_example3(N),
+        buf,
+        seed,
+        &GRW3_TIMES,
+        out,
+        &mut clock,
+    )?;
+    for &t in &GRW3_TIMES[1..] {
+        writeln!(
+            out,
+            "grw3 exact t={t:?} T_GRW13={:?}",
+            grw_example3_exact(t)
+        )?;
+    }
+    let b = run(
+        "hcs",
+        &hcs_hard_spheres(N),
+        buf,
+        seed,
+        &HCS_TIMES,
+        out,
+        &mut clock,
+    )?;
+    Ok([a, b])
+}

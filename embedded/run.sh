@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# gdsmc on microcontrollers, under QEMU: builds the firmware for a Cortex-M4F (mps2-an386;
+# its FPU is single precision, so f64 runs in software) and for a Cortex-M7 with a
+# double-precision FPU (mps2-an500, built with -C target-cpu=cortex-m7: f64 in hardware), runs
+# both, runs the same code on the host, and fails unless all three print the same numbers to
+# the last digit (the trajectories' checksums included).
+#
+#   bash embedded/run.sh                 build, run, compare
+#   bash embedded/run.sh --figures       also print the figures table (markdown)
+#   bash embedded/run.sh --update-readme also write that table into README.md
+#   bash embedded/run.sh --check-readme  fail when README.md's table is not the measured one
+set -euo pipefail
+cd "$(dirname "$0")"
+MODE="${1:-}"
+QEMU="qemu-system-arm -nographic -semihosting-config enable=on,target=native -icount shift=0"
+TARGET=thumbv7em-none-eabihf
+M4=target/$TARGET/release/gdsmc-firmware
+M7=target/m7/$TARGET/release/gdsmc-firmware
+
+cargo build --quiet --release -p gdsmc-firmware --target $TARGET
+RUSTFLAGS="-C target-cpu=cortex-m7" cargo build --quiet --release -p gdsmc-firmware \
+    --target $TARGET --target-dir target/m7
+cargo run --quiet --release -p gdsmc-demo-host > target/host.txt
+
+timeout 900 $QEMU -M mps2-an386 -cpu cortex-m4 -kernel $M4 > target/m4.txt
+timeout 900 $QEMU -M mps2-an500 -kernel $M7 > target/m7.txt
+for board in m4 m7; do
+    if ! diff <(grep -v '^figure' target/$board.txt) target/host.txt > target/$board.diff; then
+        echo "the $board firmware's numbers differ from the host's:" >&2
+        head -20 target/$board.diff >&2
+        exit 1
+    fi
+done
+lines=$(wc -l < target/host.txt)
+echo "firmware on mps2-an386 (Cortex-M4F) and mps2-an500 (Cortex-M7): $lines lines equal to the host's, checksums of every velocity included"
+
+[ -z "$MODE" ] && exit 0
+
+figures() {
+    python3 - "$M4" "$M7" target/m4.txt target/m7.txt <<'PY'
+import re, subprocess, sys
+m4, m7, o4, o7 = sys.argv[1:5]
+def size(elf):
+    out = subprocess.run(["arm-none-eabi-size", elf], capture_output=True, text=True, check=True).stdout
+    text, data, bss = map(int, out.splitlines()[1].split()[:3])
+    return text, data + bss
+def figs(path):
+    f = {}
+    for line in open(path):
+        if line.startswith("figure"):
+            parts = line.split()
+            key = parts[1] if "=" not in parts[1] else ""
+            for kv in parts[1:]:
+                if "=" in kv:
+                    k, v = kv.split("=")
+                    f[(key + "." if key else "") + k] = int(v)
+    return f
+rows = []
+for name, elf, out, fp in [("mps2-an386, Cortex-M4F", m4, o4, "software (single-precision FPU)"),
+                           ("mps2-an500, Cortex-M7", m7, o7, "hardware (double-precision FPU)")]:
+    text, ram = size(elf)
+    f = figs(out)
+    rows.append(f"| {name} | {fp} | {text/1024:.0f} KiB | {ram/1024:.1f} KiB | {f['stack_peak_bytes']/1024:.1f} KiB "
+                f"| {f['particles_per_kib']} | {f['grw3.per_collision']:,} | {f['hcs.per_candidate']:,} |")
+print("| board (QEMU) | f64 | flash | static RAM | peak stack | particles per KiB | instructions per collision, GRW Ex. 3 | instructions per candidate, cooling hard spheres |")
+print("|---|---|---|---|---|---|---|---|")
+print("\n".join(rows))
+PY
+}
+
+TABLE=$(figures)
+case "$MODE" in
+    --figures) echo "$TABLE" ;;
+    --update-readme|--check-readme)
+        python3 - "$MODE" "$TABLE" <<'PY'
+import sys
+mode, table = sys.argv[1], sys.argv[2]
+path = "../README.md"
+text = open(path).read()
+start, end = "<!-- embedded-figures:start -->\n", "<!-- embedded-figures:end -->"
+a, b = text.index(start) + len(start), text.index(end)
+if mode == "--update-readme":
+    open(path, "w").write(text[:a] + table + "\n" + text[b:])
+    print("README.md: figures table updated")
+elif text[a:b].strip() != table.strip():
+    print("README.md's embedded figures differ from the measured ones; run bash embedded/run.sh --update-readme", file=sys.stderr)
+    print(table, file=sys.stderr)
+    sys.exit(1)
+else:
+    print("README.md's embedded figures are the measured ones")
+PY
+        ;;
+    *) echo "unknown option $MODE" >&2; exit 2 ;;
+esac
