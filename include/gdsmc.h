@@ -10,6 +10,12 @@
  *  - A gdsmc_sim handle is not thread-safe: one thread at a time per handle; distinct handles
  *    may run on distinct threads concurrently. The only global state is the per-thread error.
  *  - Link line: cc prog.c -Iinclude target/release/libgdsmc.a -lm -lpthread -ldl
+ *  - Microcontrollers: the no_std build (cargo rustc -p gdsmc-ffi --no-default-features
+ *    --target thumbv7em-none-eabihf --release --crate-type staticlib) has everything but
+ *    gdsmc_sim_create and gdsmc_config_from_toml: simulations live in caller memory
+ *    (gdsmc_sim_footprint, gdsmc_sim_init_in) and gdsmc allocates nothing. It keeps one
+ *    last-error message (call from one context only: not from interrupts) and has no
+ *    unwinding: panic = abort, through the C library's abort(). See embedded/c/.
  */
 
 #ifndef GDSMC_H
@@ -257,21 +263,11 @@ gdsmc_status gdsmc_sim_reseed(gdsmc_sim *sim, uint64_t seed);
 // `out` must be NULL or point to writable memory for one gdsmc_config.
 gdsmc_status gdsmc_config_default(gdsmc_config *out);
 
-// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files,
-// read and validated by the same code; observation times and ensemble counts are ignored).
-// Every kernel, drive, scheme and restitution law of the command is available. Fails with
-// GDSMC_PARSE_ERROR or GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out`
-// is untouched then. Only a single-Maxwellian initial distribution can be expressed in
-// gdsmc_config (a mixture is refused with a message).
-//
-// # Safety
-// `toml` must be NULL or a NUL-terminated string; `out` NULL or writable for one gdsmc_config.
-gdsmc_status gdsmc_config_from_toml(const char *toml, gdsmc_config *out);
-
 // Creates a simulation on the heap from `*config`: `n` particles drawn from the initial
 // Maxwellian with the configured seed, time 0. On success `*out` holds the new handle, which
 // the caller owns and must pass to gdsmc_sim_destroy. On failure `*out` is set to NULL (when
-// `out` is valid) and the last-error message names the bad field.
+// `out` is valid) and the last-error message names the bad field. Not in the no_std build
+// (use gdsmc_sim_init_in there).
 //
 // # Safety
 // `config` must be NULL or point to a gdsmc_config; `out` NULL or writable for one pointer.
@@ -306,14 +302,25 @@ gdsmc_status gdsmc_sim_init_in(void *memory,
 // `sim` must be NULL or point to NULL or to a handle from gdsmc not destroyed before.
 gdsmc_status gdsmc_sim_destroy(gdsmc_sim **sim);
 
-// Copies the calling thread's last error message (empty after a success) into `buf` of `len`
-// bytes, truncated and always NUL-terminated when `len > 0`. Returns the message's full
-// length in bytes without the NUL, so a caller can size a buffer (`buf` may be NULL when `len`
-// is 0). Thread-safe: each thread has its own message.
+// Copies the last error message (empty after a success) into `buf` of `len` bytes, truncated
+// and always NUL-terminated when `len > 0`. Returns the message's full length in bytes without
+// the NUL, so a caller can size a buffer (`buf` may be NULL when `len` is 0). With the
+// standard library each thread has its own message; the no_std build keeps one.
 //
 // # Safety
 // `buf` must point to `len` writable bytes (or be NULL with `len == 0`).
 size_t gdsmc_last_error(char *buf, size_t len);
+
+// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files,
+// read and validated by the same code; observation times and ensemble counts are ignored).
+// Every kernel, drive, scheme and restitution law of the command is available. Fails with
+// GDSMC_PARSE_ERROR or GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out`
+// is untouched then. Only a single-Maxwellian initial distribution can be expressed in
+// gdsmc_config (a mixture is refused with a message). Not in the no_std build.
+//
+// # Safety
+// `toml` must be NULL or a NUL-terminated string; `out` NULL or writable for one gdsmc_config.
+gdsmc_status gdsmc_config_from_toml(const char *toml, gdsmc_config *out);
 
 #ifdef __cplusplus
 }  // extern "C"

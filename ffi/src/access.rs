@@ -4,7 +4,7 @@
 use crate::guard::{check_ptr, guard};
 use crate::observables::gdsmc_observables;
 use crate::sim::{check_len, gdsmc_sim, live, particles_of};
-use crate::status::{engine_error, fail, gdsmc_status};
+use crate::status::{engine_error, fail, gdsmc_status, msg};
 use gdsmc_core::engine::EventLoop;
 use gdsmc_core::rng::seeded;
 use gdsmc_core::vec3::Vec3;
@@ -107,7 +107,7 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
         check_ptr(out, "out")?;
         check_len(len, s.n)?;
         // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
-        let dst = unsafe { std::slice::from_raw_parts_mut(out, 3 * s.n) };
+        let dst = unsafe { core::slice::from_raw_parts_mut(out, 3 * s.n) };
         let p = particles_of(s.particles, s.n);
         let (scale, offset) = s.engine.velocity_map();
         for (d, q) in dst.chunks_exact_mut(3).zip(p.as_slice()) {
@@ -135,11 +135,11 @@ pub unsafe extern "C" fn gdsmc_sim_set_velocities(
         check_ptr(velocities, "velocities")?;
         check_len(len, s.n)?;
         // SAFETY: non-null, aligned, `len >= 3 n` readable doubles.
-        let src = unsafe { std::slice::from_raw_parts(velocities, 3 * s.n) };
+        let src = unsafe { core::slice::from_raw_parts(velocities, 3 * s.n) };
         if let Some(k) = src.iter().position(|x| !x.is_finite()) {
             return fail(
                 gdsmc_status::GDSMC_INVALID_ARGUMENT,
-                format!("velocities[{k}] is not finite"),
+                msg!("velocities[{k}] is not finite"),
             );
         }
         let mut p = particles_of(s.particles, s.n);

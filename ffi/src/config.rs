@@ -1,8 +1,7 @@
 //! Configuration: a plain C struct with a defaults function, or a scene given as TOML text.
 
 use crate::guard::{check_ptr, guard};
-use crate::status::{Failure, fail, gdsmc_status};
-use std::ffi::{CStr, c_char};
+use crate::status::gdsmc_status;
 
 /// Maxwell pseudo-molecules, `B = gamma C` (GRW, `lambda = 0`).
 pub const GDSMC_KERNEL_MAXWELL: u32 = 0;
@@ -120,7 +119,7 @@ impl gdsmc_config {
             scheme: GDSMC_SCHEME_NO_SPLITTING,
             restitution_law: GDSMC_RESTITUTION_CONSTANT,
             gamma: 4.0,
-            c: 1.0 / (4.0 * std::f64::consts::PI),
+            c: 1.0 / (4.0 * core::f64::consts::PI),
             lambda: 0.0,
             restitution: 0.5,
             impact_beta0: 0.0,
@@ -132,7 +131,7 @@ impl gdsmc_config {
             temperature: 1.0,
             drift: [0.0; 3],
             dt: 0.25,
-            step_factor: gdsmc_scene::DEFAULT_STEP_FACTOR,
+            step_factor: gdsmc_core::physics::DEFAULT_STEP_FACTOR,
             background_kernel: GDSMC_BACKGROUND_MAXWELL,
             background_c: 1.0,
             background_density: 1.0,
@@ -158,47 +157,4 @@ pub unsafe extern "C" fn gdsmc_config_default(out: *mut gdsmc_config) -> gdsmc_s
         unsafe { out.write(gdsmc_config::example3()) };
         Ok(())
     })
-}
-
-/// Fills `*out` from a scene in TOML text (the format of the `gdsmc` command's scene files,
-/// read and validated by the same code; observation times and ensemble counts are ignored).
-/// Every kernel, drive, scheme and restitution law of the command is available. Fails with
-/// GDSMC_PARSE_ERROR or GDSMC_INVALID_ARGUMENT and a message naming the line and key; `*out`
-/// is untouched then. Only a single-Maxwellian initial distribution can be expressed in
-/// gdsmc_config (a mixture is refused with a message).
-///
-/// # Safety
-/// `toml` must be NULL or a NUL-terminated string; `out` NULL or writable for one gdsmc_config.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn gdsmc_config_from_toml(
-    toml: *const c_char,
-    out: *mut gdsmc_config,
-) -> gdsmc_status {
-    guard(|| {
-        check_ptr(toml, "toml")?;
-        check_ptr(out, "out")?;
-        // SAFETY: non-null; the caller promises a NUL-terminated string.
-        let text = unsafe { CStr::from_ptr(toml) };
-        let Ok(text) = text.to_str() else {
-            return fail(gdsmc_status::GDSMC_PARSE_ERROR, "scene text is not UTF-8");
-        };
-        let cfg = from_scene_text(text)?;
-        // SAFETY: checked non-null and aligned.
-        unsafe { out.write(cfg) };
-        Ok(())
-    })
-}
-
-fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
-    let path = std::path::Path::new("<toml>");
-    let scene = gdsmc_scene::parse(path, text).map_err(|e| {
-        let status = match e {
-            gdsmc_scene::Error::Parse { .. } => gdsmc_status::GDSMC_PARSE_ERROR,
-            _ => gdsmc_status::GDSMC_INVALID_ARGUMENT,
-        };
-        Failure(status, e.to_string())
-    })?;
-    let mut cfg = gdsmc_config::from_physics(&scene.physics)?;
-    cfg.seed = scene.seed;
-    Ok(cfg)
 }

@@ -4,20 +4,20 @@
 //! words the command prints for the same bad value.
 
 use crate::config::*;
-use crate::status::{Failure, fail, gdsmc_status};
+use crate::status::{Failure, Msg, fail, gdsmc_status, msg};
 use gdsmc_core::physics::{
-    BackgroundKernel, Component, DriveChoice, KernelChoice, MAX_COMPONENTS, Model, Param, Physics,
-    PhysicsError, RestitutionLaw, SchemeChoice,
+    BackgroundKernel, Component, DriveChoice, KernelChoice, Model, Param, Physics, PhysicsError,
+    RestitutionLaw, SchemeChoice,
 };
 
-fn invalid<T>(msg: String) -> Result<T, Failure> {
-    fail(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg)
+fn invalid<T>(m: Msg) -> Result<T, Failure> {
+    fail(gdsmc_status::GDSMC_INVALID_ARGUMENT, m)
 }
 
 /// An enumeration field that must be one of `0..=max`.
 fn check_enum(value: u32, max: u32, field: &str, family: &str) -> Result<(), Failure> {
     if value > max {
-        return invalid(format!(
+        return invalid(msg!(
             "config.{field} = {value} is not a GDSMC_{family}_* value"
         ));
     }
@@ -55,7 +55,7 @@ fn field(p: Param) -> &'static str {
 pub(crate) fn physics_failure(e: PhysicsError) -> Failure {
     Failure(
         gdsmc_status::GDSMC_INVALID_ARGUMENT,
-        format!("config.{} {}", field(e.param), e.problem),
+        msg!("config.{} {}", field(e.param), e.problem),
     )
 }
 
@@ -72,7 +72,7 @@ impl gdsmc_config {
             "RESTITUTION",
         )?;
         let Ok(n) = usize::try_from(self.n) else {
-            return invalid(format!("config.n = {} is too large", self.n));
+            return invalid(msg!("config.n = {} is too large", self.n));
         };
         let (gamma, c) = (self.gamma, self.c);
         let kernel = match self.kernel {
@@ -140,12 +140,12 @@ impl gdsmc_config {
 
     /// The configuration of a physics (seed 1, stream 0; fields it does not use keep the
     /// defaults of [`gdsmc_config::example3`]). A mixture of Maxwellians cannot be expressed.
+    #[cfg(feature = "std")]
     pub(crate) fn from_physics(p: &Physics) -> Result<Self, Failure> {
-        const _: () = assert!(MAX_COMPONENTS >= 1);
         let [only] = p.initial[..] else {
-            return invalid(
-                "<toml>: `particles.initial` must be a single Maxwellian for gdsmc_config".into(),
-            );
+            return invalid(msg!(
+                "<toml>: `particles.initial` must be a single Maxwellian for gdsmc_config"
+            ));
         };
         let mut cfg = gdsmc_config {
             n: p.n as u64,

@@ -3,13 +3,13 @@
 
 use crate::config::gdsmc_config;
 use crate::guard::{check_ptr, guard};
-use crate::status::{Failure, engine_error, fail, gdsmc_status};
+use crate::status::{Failure, engine_error, fail, gdsmc_status, msg};
+use core::ffi::c_void;
+use core::mem::{align_of, size_of};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::physics::{Engine, Model, Physics};
 use gdsmc_core::rng::{Xoshiro256PlusPlus, stream};
-use std::ffi::c_void;
-use std::mem::{align_of, size_of};
 
 const ALIVE: u64 = 0x6764_736d_635f_6f6b; // "gdsmc_ok"
 const DEAD: u64 = 0x6764_736d_635f_7878; // "gdsmc_xx"
@@ -17,7 +17,9 @@ const DEAD: u64 = 0x6764_736d_635f_7878; // "gdsmc_xx"
 /// A simulation: `n` particles, its engine, generator and current time. Opaque to C.
 pub struct gdsmc_sim {
     magic: u64,
-    owned: bool,
+    /// Made by gdsmc_sim_create (freed by destroy); never true in the no_std build.
+    #[cfg_attr(not(feature = "std"), allow(dead_code))]
+    pub(crate) owned: bool,
     pub(crate) n: usize,
     pub(crate) particles: *mut Particle,
     pub(crate) engine: Engine,
@@ -30,13 +32,13 @@ pub struct gdsmc_sim {
 pub(crate) fn particles_of<'a>(particles: *mut Particle, n: usize) -> Particles<'a> {
     // SAFETY: a live handle's `particles` points to `n` initialized particles owned by it (a
     // boxed slice, or the caller's memory behind the header); only this view touches them.
-    let slice = unsafe { std::slice::from_raw_parts_mut(particles, n) };
+    let slice = unsafe { core::slice::from_raw_parts_mut(particles, n) };
     Particles::new(slice).expect("n >= 2 checked at creation")
 }
 
 /// Fills the particles from the initial distribution and starts the engine (the core's one
 /// dispatch, [`Model::launch`]); builds the handle's contents (not yet placed).
-fn build(
+pub(crate) fn build(
     c: &gdsmc_config,
     model: &Model,
     particles: *mut Particle,
@@ -50,10 +52,10 @@ fn build(
         for i in 0..n {
             particles.add(i).write(Particle::default());
         }
-        std::slice::from_raw_parts_mut(particles, n)
+        core::slice::from_raw_parts_mut(particles, n)
     };
     let mut p = Particles::new(slice)
-        .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, e.to_string()))?;
+        .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg!("{e}")))?;
     let (engine, last) = model.launch(&mut p, 0.0, &mut rng).map_err(engine_error)?;
     Ok(gdsmc_sim {
         magic: ALIVE,
@@ -71,21 +73,21 @@ pub(crate) fn check_len(len: usize, n: usize) -> Result<(), Failure> {
     if len / 3 < n {
         return fail(
             gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
-            format!("`len` = {len} < 3 n = {}", 3 * n),
+            msg!("`len` = {len} < 3 n = {}", 3 * n),
         );
     }
     Ok(())
 }
 
 /// The caller's configuration and its validated model.
-fn read_config(cfg: *const gdsmc_config) -> Result<(gdsmc_config, Model), Failure> {
+pub(crate) fn read_config(cfg: *const gdsmc_config) -> Result<(gdsmc_config, Model), Failure> {
     check_ptr(cfg, "config")?;
     // SAFETY: checked non-null and aligned; the caller provides a readable gdsmc_config.
     let c = unsafe { cfg.read() };
     if c.stream > 1 << 24 {
         return fail(
             gdsmc_status::GDSMC_INVALID_ARGUMENT,
-            format!(
+            msg!(
                 "config.stream = {} is above 2^24 (each costs a jump)",
                 c.stream
             ),
@@ -108,51 +110,6 @@ pub(crate) fn live<'a>(sim: *mut gdsmc_sim) -> Result<&'a mut gdsmc_sim, Failure
         );
     }
     Ok(s)
-}
-
-/// Creates a simulation on the heap from `*config`: `n` particles drawn from the initial
-/// Maxwellian with the configured seed, time 0. On success `*out` holds the new handle, which
-/// the caller owns and must pass to gdsmc_sim_destroy. On failure `*out` is set to NULL (when
-/// `out` is valid) and the last-error message names the bad field.
-///
-/// # Safety
-/// `config` must be NULL or point to a gdsmc_config; `out` NULL or writable for one pointer.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn gdsmc_sim_create(
-    config: *const gdsmc_config,
-    out: *mut *mut gdsmc_sim,
-) -> gdsmc_status {
-    guard(|| {
-        check_ptr(out, "out")?;
-        // SAFETY: checked non-null and aligned.
-        unsafe { out.write(std::ptr::null_mut()) };
-        let (c, model) = read_config(config)?;
-        let n = model.n();
-        let mut buf: Vec<Particle> = Vec::new();
-        if buf.try_reserve_exact(n).is_err() {
-            return fail(
-                gdsmc_status::GDSMC_OUT_OF_MEMORY,
-                format!(
-                    "n = {n} particles ({} bytes) cannot be allocated",
-                    n.saturating_mul(size_of::<Particle>())
-                ),
-            );
-        }
-        buf.resize(n, Particle::default());
-        let ptr = Box::into_raw(buf.into_boxed_slice()).cast::<Particle>();
-        match build(&c, &model, ptr, n, true) {
-            Ok(s) => {
-                // SAFETY: checked non-null and aligned.
-                unsafe { out.write(Box::into_raw(Box::new(s))) };
-                Ok(())
-            }
-            Err(e) => {
-                // SAFETY: `ptr` came from Box::into_raw of a boxed slice of length n just above.
-                drop(unsafe { Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)) });
-                Err(e)
-            }
-        }
-    })
 }
 
 fn header_bytes() -> usize {
@@ -178,7 +135,7 @@ pub unsafe extern "C" fn gdsmc_sim_footprint(
         if let Err(e) = Physics::check_n(n) {
             return fail(
                 gdsmc_status::GDSMC_INVALID_ARGUMENT,
-                format!("n {}", e.problem),
+                msg!("n {}", e.problem),
             );
         }
         let Some(total) = n
@@ -188,7 +145,7 @@ pub unsafe extern "C" fn gdsmc_sim_footprint(
         else {
             return fail(
                 gdsmc_status::GDSMC_INVALID_ARGUMENT,
-                format!("n = {n} is too large"),
+                msg!("n = {n} is too large"),
             );
         };
         // SAFETY: both checked non-null and aligned.
@@ -219,7 +176,7 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
     guard(|| {
         check_ptr(out, "out")?;
         // SAFETY: checked non-null and aligned.
-        unsafe { out.write(std::ptr::null_mut()) };
+        unsafe { out.write(core::ptr::null_mut()) };
         let (c, model) = read_config(config)?;
         if memory.is_null() {
             return fail(gdsmc_status::GDSMC_NULL_POINTER, "`memory` is NULL");
@@ -228,7 +185,7 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
         if !(memory as usize).is_multiple_of(align) {
             return fail(
                 gdsmc_status::GDSMC_MISALIGNED,
-                format!("`memory` is not aligned to {align} bytes"),
+                msg!("`memory` is not aligned to {align} bytes"),
             );
         }
         let n = model.n();
@@ -236,7 +193,7 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
         if size < need {
             return fail(
                 gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
-                format!("`memory` holds {size} bytes; n = {n} needs {need} (gdsmc_sim_footprint)"),
+                msg!("`memory` holds {size} bytes; n = {n} needs {need} (gdsmc_sim_footprint)"),
             );
         }
         let head = memory.cast::<gdsmc_sim>();
@@ -270,17 +227,12 @@ pub unsafe extern "C" fn gdsmc_sim_destroy(sim: *mut *mut gdsmc_sim) -> gdsmc_st
         }
         let s = live(h)?;
         s.magic = DEAD;
+        #[cfg(feature = "std")]
         if s.owned {
-            let (ptr, n) = (s.particles, s.n);
-            // SAFETY: an owned handle was made by gdsmc_sim_create: the header by Box::new and
-            // the particles by a boxed slice of length n; neither is used again.
-            unsafe {
-                drop(Box::from_raw(h));
-                drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)));
-            }
+            crate::heap::free(h);
         }
         // SAFETY: checked non-null and aligned.
-        unsafe { sim.write(std::ptr::null_mut()) };
+        unsafe { sim.write(core::ptr::null_mut()) };
         Ok(())
     })
 }

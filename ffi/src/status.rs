@@ -1,7 +1,8 @@
-//! Status codes and the thread-local last-error message.
+//! Status codes, messages and the last-error message (per thread with `std`; one for the
+//! whole program in the `no_std` build, which is single-context).
 
-use std::cell::RefCell;
-use std::ffi::c_char;
+use core::ffi::c_char;
+use core::fmt::Write;
 
 /// The result of every fallible gdsmc call.
 #[repr(C)]
@@ -32,6 +33,41 @@ pub enum gdsmc_status {
     GDSMC_OUT_OF_MEMORY = 10,
 }
 
+/// Most bytes a message keeps (longer ones are cut at a character boundary).
+pub(crate) const MSG_CAP: usize = 512;
+
+/// A message: fixed capacity, so that the `no_std` build needs no allocator. (Named through
+/// an alias: cbindgen takes any `String<..>` for the standard library's and stops.)
+pub(crate) type Msg = FixedText<MSG_CAP>;
+use heapless::String as FixedText;
+
+/// Writes into a [`Msg`], dropping what does not fit.
+struct Cut<'a>(&'a mut Msg);
+
+impl Write for Cut<'_> {
+    fn write_str(&mut self, s: &str) -> core::fmt::Result {
+        for ch in s.chars() {
+            if self.0.push(ch).is_err() {
+                break;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A message from format arguments (see the `msg!` macro).
+pub(crate) fn message(args: core::fmt::Arguments<'_>) -> Msg {
+    let mut m = Msg::new();
+    let _ = Cut(&mut m).write_fmt(args);
+    m
+}
+
+/// `format!` into a [`Msg`].
+macro_rules! msg {
+    ($($t:tt)*) => { $crate::status::message(format_args!($($t)*)) };
+}
+pub(crate) use msg;
+
 /// The status and message of an engine's refusal.
 pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
     use gdsmc_core::engine::EngineError;
@@ -40,58 +76,91 @@ pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
         EngineError::NonFinite => gdsmc_status::GDSMC_NON_FINITE,
         EngineError::OffGrid | EngineError::ParticleCount => gdsmc_status::GDSMC_INVALID_ARGUMENT,
     };
-    let msg = match e {
-        EngineError::OffGrid => {
-            "the time is not a multiple of config.dt (splitting schemes)".to_string()
-        }
-        _ => e.to_string(),
+    let m = match e {
+        EngineError::OffGrid => msg!("the time is not a multiple of config.dt (splitting schemes)"),
+        _ => msg!("{e}"),
     };
-    Failure(s, msg)
+    Failure(s, m)
 }
 
 /// An error: its status and message.
 #[derive(Debug)]
-pub(crate) struct Failure(pub gdsmc_status, pub String);
+pub(crate) struct Failure(pub gdsmc_status, pub Msg);
 
-pub(crate) fn fail<T>(status: gdsmc_status, msg: impl Into<String>) -> Result<T, Failure> {
-    Err(Failure(status, msg.into()))
+pub(crate) fn fail<T>(status: gdsmc_status, m: impl core::fmt::Display) -> Result<T, Failure> {
+    Err(Failure(status, msg!("{m}")))
 }
 
-thread_local! {
-    static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
+#[cfg(feature = "std")]
+mod last {
+    use super::Msg;
+    use std::cell::RefCell;
+
+    thread_local! {
+        static LAST_ERROR: RefCell<Msg> = const { RefCell::new(Msg::new()) };
+    }
+
+    pub(crate) fn set(m: &str) {
+        LAST_ERROR.with(|e| {
+            let mut e = e.borrow_mut();
+            e.clear();
+            let _ = e.push_str(m);
+        });
+    }
+
+    pub(crate) fn with<R>(f: impl FnOnce(&str) -> R) -> R {
+        LAST_ERROR.with(|e| f(&e.borrow()))
+    }
 }
 
-pub(crate) fn set_last_error(msg: &str) {
-    LAST_ERROR.with(|e| {
-        let mut e = e.borrow_mut();
+#[cfg(not(feature = "std"))]
+mod last {
+    use super::Msg;
+    use core::cell::UnsafeCell;
+
+    /// The one message of a single-context program.
+    struct Slot(UnsafeCell<Msg>);
+    // SAFETY: the no_std build is documented as single-context (gdsmc.h: no calls from
+    // interrupts or other threads), so the slot is never accessed concurrently.
+    unsafe impl Sync for Slot {}
+    static LAST_ERROR: Slot = Slot(UnsafeCell::new(Msg::new()));
+
+    pub(crate) fn set(m: &str) {
+        // SAFETY: single context (see Slot); no reference outlives this call.
+        let e = unsafe { &mut *LAST_ERROR.0.get() };
         e.clear();
-        e.push_str(msg);
-    });
+        let _ = e.push_str(m);
+    }
+
+    pub(crate) fn with<R>(f: impl FnOnce(&str) -> R) -> R {
+        // SAFETY: single context (see Slot); the reference lives for this call only.
+        f(unsafe { &*LAST_ERROR.0.get() })
+    }
 }
 
-/// Copies the calling thread's last error message (empty after a success) into `buf` of `len`
-/// bytes, truncated and always NUL-terminated when `len > 0`. Returns the message's full
-/// length in bytes without the NUL, so a caller can size a buffer (`buf` may be NULL when `len`
-/// is 0). Thread-safe: each thread has its own message.
+pub(crate) fn set_last_error(m: &str) {
+    last::set(m);
+}
+
+/// Copies the last error message (empty after a success) into `buf` of `len` bytes, truncated
+/// and always NUL-terminated when `len > 0`. Returns the message's full length in bytes without
+/// the NUL, so a caller can size a buffer (`buf` may be NULL when `len` is 0). With the
+/// standard library each thread has its own message; the no_std build keeps one.
 ///
 /// # Safety
 /// `buf` must point to `len` writable bytes (or be NULL with `len == 0`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn gdsmc_last_error(buf: *mut c_char, len: usize) -> usize {
-    let r = std::panic::catch_unwind(|| {
-        LAST_ERROR.with(|e| {
-            let e = e.borrow();
-            let bytes = e.as_bytes();
-            if !buf.is_null() && len > 0 {
-                let k = bytes.len().min(len - 1);
-                // SAFETY: the caller gives `len` writable bytes at `buf`; we write k + 1 <= len.
-                unsafe {
-                    std::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), k);
-                    *buf.add(k) = 0;
-                }
+    last::with(|e| {
+        let bytes = e.as_bytes();
+        if !buf.is_null() && len > 0 {
+            let k = bytes.len().min(len - 1);
+            // SAFETY: the caller gives `len` writable bytes at `buf`; we write k + 1 <= len.
+            unsafe {
+                core::ptr::copy_nonoverlapping(bytes.as_ptr(), buf.cast::<u8>(), k);
+                *buf.add(k) = 0;
             }
-            bytes.len()
-        })
-    });
-    r.unwrap_or(0)
+        }
+        bytes.len()
+    })
 }

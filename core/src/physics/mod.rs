@@ -51,6 +51,10 @@ pub use model::Model;
 
 use crate::math::Real;
 
+/// MS's step factor of the time-stepped scheme, `h = 0.01 lambda / v0` (MS Section 3): the
+/// default of every front end.
+pub const DEFAULT_STEP_FACTOR: Real = 0.01;
+
 /// Most components an initial mixture of Maxwellians may have (BRS (35)).
 pub const MAX_COMPONENTS: usize = 16;
 

@@ -6,8 +6,7 @@ use crate::error::Error;
 use crate::schema::{SchemeKind, SchemeSpec};
 use gdsmc_core::physics::{Param, SchemeChoice};
 
-/// MS's step factor, the default of `scheme.step_factor`.
-pub const DEFAULT_STEP_FACTOR: f64 = 0.01;
+pub use gdsmc_core::physics::DEFAULT_STEP_FACTOR;
 
 /// The scheme, with the keys that hold its parameters.
 pub(super) fn scheme(ctx: &mut Ctx<'_>, sch: &SchemeSpec) -> Result<SchemeChoice, Error> {

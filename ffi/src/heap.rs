@@ -1,0 +1,66 @@
+//! Simulations on the heap (`gdsmc_sim_create`, and their release in `gdsmc_sim_destroy`).
+//! Needs the standard library; the no_std build has the caller-memory variant only.
+
+use crate::config::gdsmc_config;
+use crate::guard::{check_ptr, guard};
+use crate::sim::{build, gdsmc_sim, read_config};
+use crate::status::{fail, gdsmc_status, msg};
+use gdsmc_core::particles::Particle;
+use std::mem::size_of;
+
+/// Creates a simulation on the heap from `*config`: `n` particles drawn from the initial
+/// Maxwellian with the configured seed, time 0. On success `*out` holds the new handle, which
+/// the caller owns and must pass to gdsmc_sim_destroy. On failure `*out` is set to NULL (when
+/// `out` is valid) and the last-error message names the bad field. Not in the no_std build
+/// (use gdsmc_sim_init_in there).
+///
+/// # Safety
+/// `config` must be NULL or point to a gdsmc_config; `out` NULL or writable for one pointer.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_create(
+    config: *const gdsmc_config,
+    out: *mut *mut gdsmc_sim,
+) -> gdsmc_status {
+    guard(|| {
+        check_ptr(out, "out")?;
+        // SAFETY: checked non-null and aligned.
+        unsafe { out.write(std::ptr::null_mut()) };
+        let (c, model) = read_config(config)?;
+        let n = model.n();
+        let mut buf: Vec<Particle> = Vec::new();
+        if buf.try_reserve_exact(n).is_err() {
+            return fail(
+                gdsmc_status::GDSMC_OUT_OF_MEMORY,
+                msg!(
+                    "n = {n} particles ({} bytes) cannot be allocated",
+                    n.saturating_mul(size_of::<Particle>())
+                ),
+            );
+        }
+        buf.resize(n, Particle::default());
+        let ptr = Box::into_raw(buf.into_boxed_slice()).cast::<Particle>();
+        match build(&c, &model, ptr, n, true) {
+            Ok(s) => {
+                // SAFETY: checked non-null and aligned.
+                unsafe { out.write(Box::into_raw(Box::new(s))) };
+                Ok(())
+            }
+            Err(e) => {
+                // SAFETY: `ptr` came from Box::into_raw of a boxed slice of length n just above.
+                drop(unsafe { Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)) });
+                Err(e)
+            }
+        }
+    })
+}
+
+/// Frees a heap handle made by [`gdsmc_sim_create`].
+pub(crate) fn free(h: *mut gdsmc_sim) {
+    // SAFETY: an owned handle was made by gdsmc_sim_create: the header by Box::new and the
+    // particles by a boxed slice of length n; the caller marked it dead and uses neither again.
+    unsafe {
+        let (ptr, n) = ((*h).particles, (*h).n);
+        drop(Box::from_raw(h));
+        drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)));
+    }
+}
