@@ -53,14 +53,3 @@ pub unsafe extern "C" fn gdsmc_sim_create(
         }
     })
 }
-
-/// Frees a heap handle made by [`gdsmc_sim_create`].
-pub(crate) fn free(h: *mut gdsmc_sim) {
-    // SAFETY: an owned handle was made by gdsmc_sim_create: the header by Box::new and the
-    // particles by a boxed slice of length n; the caller marked it dead and uses neither again.
-    unsafe {
-        let (ptr, n) = ((*h).particles, (*h).n);
-        drop(Box::from_raw(h));
-        drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)));
-    }
-}

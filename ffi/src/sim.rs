@@ -229,10 +229,22 @@ pub unsafe extern "C" fn gdsmc_sim_destroy(sim: *mut *mut gdsmc_sim) -> gdsmc_st
         s.magic = DEAD;
         #[cfg(feature = "std")]
         if s.owned {
-            crate::heap::free(h);
+            free(h);
         }
         // SAFETY: checked non-null and aligned.
         unsafe { sim.write(core::ptr::null_mut()) };
         Ok(())
     })
+}
+
+/// Frees a heap handle made by `gdsmc_sim_create` (`heap.rs`).
+#[cfg(feature = "std")]
+fn free(h: *mut gdsmc_sim) {
+    // SAFETY: an owned handle was made by gdsmc_sim_create: the header by Box::new and the
+    // particles by a boxed slice of length n; the caller marked it dead and uses neither again.
+    unsafe {
+        let (ptr, n) = ((*h).particles, (*h).n);
+        drop(Box::from_raw(h));
+        drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)));
+    }
 }
