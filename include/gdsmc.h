@@ -76,6 +76,9 @@
 // and `impact_delta`.
 #define GDSMC_RESTITUTION_IMPACT_SPEED 1
 
+// The largest stream a configuration may name (`config.stream`).
+#define GDSMC_MAX_STREAM (1 << 20)
+
 // The result of every fallible gdsmc call.
 typedef enum {
     // Success.
@@ -151,7 +154,8 @@ typedef struct {
     // Seed of the Xoshiro256++ generator.
     uint64_t seed;
     // Stream: the seed's generator is jumped this many times (2^128 draws each), so streams
-    // 0, 1, 2, ... of one seed are independent ensembles, exactly those of `gdsmc run`.
+    // 0, 1, 2, ... of one seed are independent ensembles, exactly those of `gdsmc run`. At
+    // most GDSMC_MAX_STREAM (stream k costs k jumps).
     uint64_t stream;
     // One of `GDSMC_KERNEL_*`.
     uint32_t kernel;

@@ -73,6 +73,11 @@ impl Restitution for ImpactSpeed {
     const CAN_LEAVE_UNIT_INTERVAL: bool = true;
     #[inline]
     fn coefficient(&self, u: Vec3, e: Vec3) -> Real {
+        // Found by fuzzing: beta0 = 0 with an impact speed whose power overflows gave
+        // 0 * inf = NaN (then clamped to e = 0) where the law says e = 1.
+        if self.beta0 == 0.0 {
+            return 1.0;
+        }
         1.0 - 2.0 * self.beta0 * powf(Self::normal_speed(u, e), self.delta)
     }
 }

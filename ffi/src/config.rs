@@ -53,7 +53,8 @@ pub struct gdsmc_config {
     /// Seed of the Xoshiro256++ generator.
     pub seed: u64,
     /// Stream: the seed's generator is jumped this many times (2^128 draws each), so streams
-    /// 0, 1, 2, ... of one seed are independent ensembles, exactly those of `gdsmc run`.
+    /// 0, 1, 2, ... of one seed are independent ensembles, exactly those of `gdsmc run`. At
+    /// most GDSMC_MAX_STREAM (stream k costs k jumps).
     pub stream: u64,
     /// One of `GDSMC_KERNEL_*`.
     pub kernel: u32,

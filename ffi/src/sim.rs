@@ -11,6 +11,9 @@ use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::physics::{Engine, Model, Physics};
 use gdsmc_core::rng::{Xoshiro256PlusPlus, stream};
 
+/// The largest stream a configuration may name (`config.stream`).
+pub const GDSMC_MAX_STREAM: u64 = 1 << 20;
+const MAX_STREAM: u64 = GDSMC_MAX_STREAM;
 const ALIVE: u64 = 0x6764_736d_635f_6f6b; // "gdsmc_ok"
 const DEAD: u64 = 0x6764_736d_635f_7878; // "gdsmc_xx"
 
@@ -84,11 +87,13 @@ pub(crate) fn read_config(cfg: *const gdsmc_config) -> Result<(gdsmc_config, Mod
     check_ptr(cfg, "config")?;
     // SAFETY: checked non-null and aligned; the caller provides a readable gdsmc_config.
     let c = unsafe { cfg.read() };
-    if c.stream > 1 << 24 {
+    // Stream k costs k jumps of the generator (2^20 take about 0.3 s); 2^24, once allowed,
+    // took seconds and showed as a hang to the C ABI fuzz target.
+    if c.stream > MAX_STREAM {
         return fail(
             gdsmc_status::GDSMC_INVALID_ARGUMENT,
             msg!(
-                "config.stream = {} is above 2^24 (each costs a jump)",
+                "config.stream = {} is above 2^20 (stream k costs k jumps of the generator)",
                 c.stream
             ),
         );

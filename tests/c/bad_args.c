@@ -56,6 +56,8 @@ static void config_errors(void) {
 
     c = base(); c.n = 1;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.n must be >= 2");
+    c = base(); c.stream = GDSMC_MAX_STREAM + 1;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.stream = 1048577 is above 2^20");
     c = base(); c.kernel = 7;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.kernel = 7");
     c = base(); c.drive = 99;

@@ -114,6 +114,8 @@ pub enum Problem {
     AllWeightsZero,
     /// The rate constant `gamma * C` is not finite and positive (over- or underflow).
     Strength(Real),
+    /// A temperature this large for its mass makes the thermal speed infinite (`2 T / m`).
+    ThermalSpeed(Real),
     /// The parameter does not fit the rest of the description (the message says why).
     DoesNotFit(&'static str),
 }
@@ -138,6 +140,10 @@ impl core::fmt::Display for Problem {
             Problem::Strength(s) => write!(
                 f,
                 "makes the rate constant gamma * C = {s}, which must be finite and > 0"
+            ),
+            Problem::ThermalSpeed(t) => write!(
+                f,
+                "= {t} is too large for its mass: 2 temperature / mass overflows"
             ),
             Problem::DoesNotFit(why) => f.write_str(why),
         }

@@ -107,6 +107,10 @@ fn maxwellian(
 ) -> Result<Maxwellian, PhysicsError> {
     Maxwellian::new(mass, temperature, vec3(drift)).map_err(|e| match e {
         ParamError::Temperature => negative(names[1], temperature),
+        ParamError::ThermalSpeed => PhysicsError {
+            param: names[1],
+            problem: Problem::ThermalSpeed(temperature),
+        },
         ParamError::Drift => PhysicsError {
             param: names[2],
             problem: Problem::NotFiniteVector,

@@ -25,7 +25,7 @@ pub struct Maxwellian {
 
 impl Maxwellian {
     /// A Maxwellian; errors name the parameter out of domain (`mass > 0`, `temperature >= 0`,
-    /// finite drift).
+    /// finite drift, a finite `2 T / m`).
     pub fn new(mass: Real, temperature: Real, drift: Vec3) -> Result<Self, ParamError> {
         if !(mass.is_finite() && mass > 0.0) {
             return Err(ParamError::Mass);
@@ -35,6 +35,11 @@ impl Maxwellian {
         }
         if !drift.is_finite() {
             return Err(ParamError::Drift);
+        }
+        // Found by fuzzing: mass 7e-312 with temperature 1.8e308 passed and drew infinite
+        // velocities. `2 T / m` is BRS (28)'s `b^2` of a background.
+        if !(2.0 * temperature / mass).is_finite() {
+            return Err(ParamError::ThermalSpeed);
         }
         Ok(Maxwellian {
             mass,

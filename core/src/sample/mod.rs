@@ -33,6 +33,8 @@ pub enum ParamError {
     Weight,
     /// More mixture components than the mixture's capacity.
     Capacity,
+    /// `2 T / m` overflows: the thermal speeds (and BRS (28)'s `b`) would be infinite.
+    ThermalSpeed,
 }
 
 impl core::fmt::Display for ParamError {
@@ -43,6 +45,7 @@ impl core::fmt::Display for ParamError {
             ParamError::Drift => "drift velocity must be finite",
             ParamError::Weight => "mixture weights must be finite, >= 0 and not all 0",
             ParamError::Capacity => "too many mixture components",
+            ParamError::ThermalSpeed => "2 temperature / mass must be finite",
         })
     }
 }

@@ -1,0 +1,231 @@
+//! The C ABI with arbitrary arguments: configurations of any field values and enumeration
+//! integers, buffers of any size and alignment, any sequence of calls on a handle, NULL
+//! pointers. Every call must return a status and leave the handle usable or refused, never
+//! crash (the fuzz build runs under AddressSanitizer); a destroyed in-place handle must be
+//! refused with GDSMC_INVALID_HANDLE.
+//!
+//! The harness advances a simulation only when its configuration bounds the work (at most 256
+//! particles, rates and speeds of order 100, time steps not tiny, to time 0.01): refusing
+//! configurations whose work is absurd before running is issue 18's subject, not this target's.
+
+use crate::wild;
+use arbitrary::Unstructured;
+use gdsmc::*;
+use std::ptr::{null, null_mut};
+
+/// A 32-byte aligned block: the unit of the caller memory handed to gdsmc_sim_init_in.
+#[derive(Clone, Copy)]
+#[repr(C, align(32))]
+struct Block([u8; 32]);
+
+fn small_enum(u: &mut Unstructured<'_>) -> u32 {
+    match u.int_in_range(0u8..=9).unwrap_or(0) {
+        9 => u.arbitrary().unwrap_or(u32::MAX),
+        k => (k % 6) as u32,
+    }
+}
+
+fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
+    let mut c = gdsmc_config::example3();
+    c.n = match u.int_in_range(0u8..=7).unwrap_or(0) {
+        0 => u.arbitrary().unwrap_or(0),
+        1 => u.int_in_range(0u64..=3).unwrap_or(0),
+        _ => u.int_in_range(2u64..=300).unwrap_or(2),
+    };
+    c.seed = u.arbitrary().unwrap_or(1);
+    c.stream = if u.ratio(1u8, 8u8).unwrap_or(false) {
+        u.arbitrary().unwrap_or(0)
+    } else {
+        u.int_in_range(0u64..=3).unwrap_or(0)
+    };
+    c.kernel = small_enum(u);
+    c.drive = small_enum(u);
+    c.scheme = small_enum(u);
+    c.restitution_law = small_enum(u);
+    c.background_kernel = small_enum(u);
+    // Each number either keeps GRW Example 3's value or takes a wild one.
+    for f in [
+        &mut c.gamma,
+        &mut c.c,
+        &mut c.lambda,
+        &mut c.restitution,
+        &mut c.impact_beta0,
+        &mut c.impact_delta,
+        &mut c.beta,
+        &mut c.zeta,
+        &mut c.g,
+        &mut c.mass,
+        &mut c.temperature,
+        &mut c.dt,
+        &mut c.step_factor,
+        &mut c.background_c,
+        &mut c.background_density,
+        &mut c.background_mass,
+        &mut c.background_temperature,
+    ] {
+        if u.ratio(1u8, 4u8).unwrap_or(false) {
+            *f = wild(u);
+        }
+    }
+    for d in c.drift.iter_mut().chain(c.background_drift.iter_mut()) {
+        if u.ratio(1u8, 8u8).unwrap_or(false) {
+            *d = wild(u);
+        }
+    }
+    c
+}
+
+/// Whether advancing `c` to time 0.01 is a bounded amount of work (see the module docs).
+fn bounded_work(c: &gdsmc_config) -> bool {
+    let within = |x: f64, lo: f64, hi: f64| x.is_finite() && x >= lo && x <= hi;
+    let speed2 = |t: f64, m: f64| m > 0.0 && within(t / m, 0.0, 100.0);
+    c.n <= 256
+        && within(c.gamma * c.c, 0.0, 100.0)
+        && speed2(c.temperature, c.mass)
+        && c.drift.iter().all(|d| within(*d, -10.0, 10.0))
+        && within(c.beta, 0.0, 100.0)
+        && within(c.zeta, -1.0, 1.0)
+        && within(c.g, 0.0, 100.0)
+        && within(c.background_c * c.background_density, 0.0, 100.0)
+        && speed2(c.background_temperature, c.background_mass)
+        && c.background_drift.iter().all(|d| within(*d, -10.0, 10.0))
+        && (c.scheme == GDSMC_SCHEME_NO_SPLITTING
+            || c.scheme > GDSMC_SCHEME_TIME_STEPPED
+            || (c.scheme == GDSMC_SCHEME_TIME_STEPPED && within(c.step_factor, 0.1, 1e300))
+            || within(c.dt, 1e-3, 1e300))
+}
+
+/// Arbitrary calls on a live handle; ends with destroy and checks the handle is then refused.
+fn exercise(u: &mut Unstructured<'_>, mut sim: *mut gdsmc_sim, c: &gdsmc_config, in_place: bool) {
+    let n = c.n as usize;
+    let mut o = gdsmc_observables::default();
+    let mut buf = vec![0.0f64; 3 * n + 3];
+    for _ in 0..u.int_in_range(0u8..=8).unwrap_or(0) {
+        // SAFETY: `sim` is a live handle from gdsmc; buffers are valid for the lengths passed.
+        unsafe {
+            match u.int_in_range(0u8..=6).unwrap_or(0) {
+                0 => {
+                    let t = wild(u);
+                    let t = if bounded_work(c) && t.is_finite() && t > 0.0 {
+                        t.min(0.01)
+                    } else {
+                        -t.abs() - 1.0
+                    };
+                    let _ = gdsmc_sim_advance(
+                        sim,
+                        t,
+                        if u.arbitrary().unwrap_or(true) {
+                            &mut o
+                        } else {
+                            null_mut()
+                        },
+                    );
+                }
+                1 => {
+                    let _ = gdsmc_sim_observables(sim, &mut o);
+                }
+                2 => {
+                    let mut k = 0u64;
+                    assert_eq!(
+                        gdsmc_sim_particle_count(sim, &mut k),
+                        gdsmc_status::GDSMC_OK
+                    );
+                    assert_eq!(k, c.n);
+                }
+                3 => {
+                    let len = u.int_in_range(0..=buf.len()).unwrap_or(0);
+                    let s = gdsmc_sim_get_velocities(sim, buf.as_mut_ptr(), len);
+                    assert_eq!(
+                        s == gdsmc_status::GDSMC_OK,
+                        len >= 3 * n,
+                        "get_velocities {s:?}"
+                    );
+                }
+                4 => {
+                    for x in buf.iter_mut() {
+                        if u.ratio(1u8, 16u8).unwrap_or(false) {
+                            *x = wild(u);
+                        }
+                    }
+                    let len = u.int_in_range(0..=buf.len()).unwrap_or(0);
+                    let _ = gdsmc_sim_set_velocities(sim, buf.as_ptr(), len);
+                }
+                5 => {
+                    let _ = gdsmc_sim_reseed(sim, u.arbitrary().unwrap_or(0));
+                }
+                _ => {
+                    let _ = gdsmc_sim_get_velocities(sim, null_mut(), 3 * n);
+                    let _ = gdsmc_sim_set_velocities(sim, null(), 3 * n);
+                }
+            }
+        }
+    }
+    let stale = sim;
+    // SAFETY: `sim` is live; destroy nulls it.
+    unsafe {
+        assert_eq!(gdsmc_sim_destroy(&mut sim), gdsmc_status::GDSMC_OK);
+        assert!(sim.is_null());
+        if in_place {
+            // The caller's memory is still there: the stale handle must be recognized.
+            assert_eq!(
+                gdsmc_sim_observables(stale, &mut o),
+                gdsmc_status::GDSMC_INVALID_HANDLE
+            );
+        }
+    }
+}
+
+/// The C ABI with arbitrary arguments.
+pub fn c_abi(data: &[u8]) {
+    let mut u = Unstructured::new(data);
+    let c = config(&mut u);
+    if std::env::var_os("GDSMC_FUZZ_DEBUG").is_some() {
+        eprintln!("{c:?}"); // what a crash or timeout input configures (fuzz/README.md)
+    }
+    let (mut bytes, mut align) = (0usize, 0usize);
+    // SAFETY: valid out-pointers.
+    let s = unsafe { gdsmc_sim_footprint(c.n, &mut bytes, &mut align) };
+    if s == gdsmc_status::GDSMC_OK && bytes <= 1 << 20 {
+        assert!(align <= 32 && bytes >= 32 * c.n as usize);
+        let mut memory = vec![Block([0; 32]); bytes / 32 + 2];
+        let size = if u.ratio(1u8, 8u8).unwrap_or(false) {
+            u.int_in_range(0..=bytes).unwrap_or(0)
+        } else {
+            bytes
+        };
+        let offset = if u.ratio(1u8, 16u8).unwrap_or(false) {
+            8
+        } else {
+            0
+        };
+        let mut sim = null_mut();
+        // SAFETY: `memory` holds `bytes + 64` bytes; offset + size stays inside it.
+        let s = unsafe {
+            let p = memory.as_mut_ptr().cast::<u8>().add(offset).cast();
+            gdsmc_sim_init_in(p, size, &c, &mut sim)
+        };
+        if s == gdsmc_status::GDSMC_OK {
+            assert!(
+                size >= bytes && offset == 0,
+                "init_in accepted {size} < {bytes} bytes or a misaligned buffer"
+            );
+            exercise(&mut u, sim, &c, true);
+        } else {
+            assert!(sim.is_null());
+        }
+    }
+    if c.n <= 256 {
+        let mut sim = null_mut();
+        // SAFETY: valid pointers.
+        if unsafe { gdsmc_sim_create(&c, &mut sim) } == gdsmc_status::GDSMC_OK {
+            exercise(&mut u, sim, &c, false);
+        } else {
+            assert!(sim.is_null());
+        }
+    }
+    // The message is always retrievable and NUL-terminated.
+    let mut msg = [1u8; 64];
+    // SAFETY: a 64-byte buffer.
+    let len = unsafe { gdsmc_last_error(msg.as_mut_ptr().cast(), msg.len()) };
+    assert!(msg[len.min(63)] == 0);
+}

@@ -1,0 +1,4 @@
+//! Fuzz target `collision_maps`: see `gdsmc_fuzz_checks::collision_maps` for the properties checked.
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| gdsmc_fuzz_checks::collision_maps(data));
