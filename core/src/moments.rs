@@ -130,7 +130,8 @@ impl Observables {
     /// rescaled, see [`crate::engine::NoSplitting`]): central moments scale with powers of `s`,
     /// the raw ones are rebuilt from them and the bulk velocity (GRW Section 1 inverted;
     /// `<|v|^4> = |V|^4 + 4 V.P.V + <|c|^4> + 6 |V|^2 T + 8 V.q`). `<|v|^6>` needs moments not
-    /// kept and is NaN when both `s != 1` and `offset != 0`. `log10_t_bulk` stays finite where
+    /// kept and is NaN when both `s != 1` and `offset != 0` (the no-splitting loop then sums it
+    /// directly at observations). `log10_t_bulk` stays finite where
     /// `t_bulk` underflows.
     pub fn in_units(&self, s: Real, offset: Vec3) -> Observables {
         if s == 1.0 && offset == Vec3::ZERO {

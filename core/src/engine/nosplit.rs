@@ -173,7 +173,24 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         }
         self.t = t_end;
         self.c.drive.kick_all(p, t_end, rng);
-        self.synchronized(p)
+        let obs = self.synchronized(p)?;
+        Ok(self.with_raw_v6(p, obs))
+    }
+
+    /// `<|v|^6>` of a gas stored rescaled about a bulk velocity cannot be rebuilt from the
+    /// central moments ([`Observables::in_units`] leaves it NaN); at an observation it is
+    /// summed directly from the physical velocities `offset + scale v` (their peculiar parts
+    /// are below the bulk's last digits there, so this is as accurate as the sum can be).
+    fn with_raw_v6(&self, p: &Particles<'_>, mut obs: Observables) -> Observables {
+        if obs.v6.is_nan() && self.offset != Vec3::ZERO {
+            let mut s = 0.0;
+            for q in p.as_slice() {
+                let v2 = (self.offset + self.scale * q.velocity()).norm2();
+                s += v2 * v2 * v2;
+            }
+            obs.v6 = s / p.len() as Real;
+        }
+        obs
     }
 
     /// Re-synchronizes after the caller changed velocities between calls: every last-kick time
