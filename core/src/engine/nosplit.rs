@@ -181,8 +181,9 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     /// central moments ([`Observables::in_units`] leaves it NaN); at an observation it is
     /// summed directly from the physical velocities `offset + scale v` (their peculiar parts
     /// are below the bulk's last digits there, so this is as accurate as the sum can be).
+    /// Only a gas with no drive is ever stored rescaled.
     fn with_raw_v6(&self, p: &Particles<'_>, mut obs: Observables) -> Observables {
-        if obs.v6.is_nan() && self.offset != Vec3::ZERO {
+        if !D::ACTS && obs.v6.is_nan() && self.offset != Vec3::ZERO {
             let mut s = 0.0;
             for q in p.as_slice() {
                 let v2 = (self.offset + self.scale * q.velocity()).norm2();
