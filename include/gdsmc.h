@@ -245,8 +245,9 @@ gdsmc_status gdsmc_sim_particle_count(gdsmc_sim *sim, uint64_t *n);
 gdsmc_status gdsmc_sim_get_velocities(gdsmc_sim *sim, double *out, size_t len);
 
 // Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
-// current time; the majorant and observables are recomputed. Non-finite values are refused
-// with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
+// current time; the majorant and observables are recomputed. Non-finite values, and values so
+// large that the observables' sixth moments would overflow (|v| above about 1e50), are
+// refused with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
 //
 // # Safety
 // `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.

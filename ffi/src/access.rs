@@ -119,8 +119,9 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
 }
 
 /// Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
-/// current time; the majorant and observables are recomputed. Non-finite values are refused
-/// with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
+/// current time; the majorant and observables are recomputed. Non-finite values, and values so
+/// large that the observables' sixth moments would overflow (|v| above about 1e50), are
+/// refused with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
 ///
 /// # Safety
 /// `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.
@@ -140,6 +141,22 @@ pub unsafe extern "C" fn gdsmc_sim_set_velocities(
             return fail(
                 gdsmc_status::GDSMC_INVALID_ARGUMENT,
                 msg!("velocities[{k}] is not finite"),
+            );
+        }
+        // Refused before anything is stored: velocities whose sixth moments (the largest the
+        // observables sum, about the bulk velocity: |v - V| <= 2 max |v|) would overflow.
+        let max2 = src
+            .chunks_exact(3)
+            .map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+            .fold(0.0, f64::max);
+        if !(64.0 * s.n as f64 * max2 * max2 * max2).is_finite() {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                msg!(
+                    "velocities too large: |v| = {:e} makes the sixth moments of {} particles overflow",
+                    gdsmc_core::math::sqrt(max2),
+                    s.n
+                ),
             );
         }
         let mut p = particles_of(s.particles, s.n);

@@ -38,18 +38,14 @@ pub unsafe extern "C" fn gdsmc_sim_create(
             );
         }
         buf.resize(n, Particle::default());
-        let ptr = Box::into_raw(buf.into_boxed_slice()).cast::<Particle>();
-        match build(&c, &model, ptr, n, true) {
-            Ok(s) => {
-                // SAFETY: checked non-null and aligned.
-                unsafe { out.write(Box::into_raw(Box::new(s))) };
-                Ok(())
-            }
-            Err(e) => {
-                // SAFETY: `ptr` came from Box::into_raw of a boxed slice of length n just above.
-                drop(unsafe { Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)) });
-                Err(e)
-            }
-        }
+        // The box owns the particles until the handle does: an error or a panic in `build`
+        // drops it (no leak on any path).
+        let mut particles = buf.into_boxed_slice();
+        let s = build(&c, &model, particles.as_mut_ptr(), n, true)?;
+        let ptr = Box::into_raw(particles).cast::<Particle>();
+        debug_assert_eq!(ptr, s.particles);
+        // SAFETY: checked non-null and aligned.
+        unsafe { out.write(Box::into_raw(Box::new(s))) };
+        Ok(())
     })
 }

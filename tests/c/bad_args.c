@@ -137,6 +137,14 @@ static void handle_errors(void) {
     double u[3 * 64];
     gdsmc_sim_get_velocities(sim, u, 3 * 64);
     EXPECT(memcmp(u, v, sizeof v) == 0, "refused set_velocities changed the state");
+    /* Finite but so large that the moments would overflow: refused before storing (it once
+     * stored them, then reported GDSMC_NON_FINITE with the handle broken). */
+    memcpy(w, v, sizeof v);
+    w[5] = 1e200;
+    STATUS(gdsmc_sim_set_velocities(sim, w, 3 * 64), GDSMC_INVALID_ARGUMENT, "velocities too large");
+    gdsmc_sim_get_velocities(sim, u, 3 * 64);
+    EXPECT(memcmp(u, v, sizeof v) == 0, "refused set_velocities changed the state");
+    STATUS(gdsmc_sim_observables(sim, &o), GDSMC_OK, "");
     /* A valid write: all zero velocities give zero temperature. */
     memset(w, 0, sizeof w);
     STATUS(gdsmc_sim_set_velocities(sim, w, 3 * 64), GDSMC_OK, "");
