@@ -17,8 +17,12 @@ TARGET=thumbv7em-none-eabihf
 M4=target/$TARGET/release/gdsmc-firmware
 M7=target/m7/$TARGET/release/gdsmc-firmware
 
-cargo build --quiet --release -p gdsmc-firmware --target $TARGET
-RUSTFLAGS="-C target-cpu=cortex-m7" cargo build --quiet --release -p gdsmc-firmware \
+# Source paths end up in the binaries (panic locations); mapped to fixed names, the sizes do
+# not depend on where the repository or the cargo registry lie.
+ROOT="$(cd .. && pwd)"
+REMAP="--remap-path-prefix=$ROOT=/gdsmc --remap-path-prefix=${CARGO_HOME:-$HOME/.cargo}=/cargo"
+RUSTFLAGS="$REMAP" cargo build --quiet --release -p gdsmc-firmware --target $TARGET
+RUSTFLAGS="$REMAP -C target-cpu=cortex-m7" cargo build --quiet --release -p gdsmc-firmware \
     --target $TARGET --target-dir target/m7
 cargo run --quiet --release -p gdsmc-demo-host > target/host.txt
 
@@ -36,8 +40,8 @@ echo "firmware on mps2-an386 (Cortex-M4F) and mps2-an500 (Cortex-M7): $lines lin
 
 # The C firmware: the no_std libgdsmc (caller memory, panic = abort) linked into a C main with
 # newlib's semihosting, on the Cortex-M4F; the same main.c on the host against the std build.
-(cd .. && cargo rustc --quiet -p gdsmc-ffi --no-default-features --target $TARGET --release \
-    --crate-type staticlib && cargo build --quiet --release -p gdsmc-ffi)
+(cd .. && RUSTFLAGS="$REMAP" cargo rustc --quiet -p gdsmc-ffi --no-default-features \
+    --target $TARGET --release --crate-type staticlib && cargo build --quiet --release -p gdsmc-ffi)
 CFW=target/c-firmware.elf
 arm-none-eabi-gcc -std=c11 -Wall -Wextra -Werror -O2 -mcpu=cortex-m4 -mthumb -mfloat-abi=hard \
     -mfpu=fpv4-sp-d16 -ffunction-sections -fdata-sections -I../include c/main.c c/startup.c \
