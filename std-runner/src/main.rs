@@ -183,6 +183,9 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
                 .extend(ensembles.map(|m| scene::Override::flag("ensembles", "run.ensembles", m)));
             overrides.extend(seed.map(|s| scene::Override::flag("seed", "run.seed", s)));
             let sc = scene::load_with(&path, &overrides)?;
+            // The output place is prepared (and shown writable) before any simulation.
+            let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
+            let set = gdsmc::report::set::OutputSet::prepare(&dir)?;
             let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             {
                 let stop = stop.clone();
@@ -219,8 +222,14 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
                 }
             }
             let refs = gdsmc::reference::curves::for_scene(&sc);
-            let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
-            gdsmc::report::write_all(&dir, &sc, &stats, &refs)?;
+            gdsmc::report::write_all(set.dir(), &sc, &stats, &refs)?;
+            set.commit(serde_json::json!({
+                "scene": sc.name,
+                "seed": sc.seed,
+                "n": sc.n(),
+                "ensembles": stats.ensembles,
+                "gdsmc_version": env!("CARGO_PKG_VERSION"),
+            }))?;
             print!("{}", gdsmc::report::summary::text(&sc, &stats, &refs));
             println!("\nwrote {}", dir.join("observables.csv").display());
             if interrupted {

@@ -4,6 +4,7 @@
 
 pub mod charts;
 pub mod files;
+pub mod set;
 pub mod summary;
 
 use crate::error::Error;
