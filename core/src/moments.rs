@@ -198,14 +198,26 @@ impl Observables {
     /// True when every moment is finite (no silent NaN). The ratios `a2`, `a3` and `crit`
     /// are not checked: they are undefined (NaN) for a gas at zero temperature, a valid state.
     pub fn is_finite(&self) -> bool {
-        self.bulk.is_finite()
-            && self.t_raw.is_finite()
-            && self.t_bulk.is_finite()
-            && self.stress.iter().all(|x| x.is_finite())
-            && self.heat_flux.is_finite()
-            && self.v4.is_finite()
-            && self.v6.is_finite()
-            && self.c4.is_finite()
-            && self.c6.is_finite()
+        self.non_finite().is_none()
+    }
+
+    /// The first moment that is not finite (by its column name), if any; see
+    /// [`Observables::is_finite`].
+    pub fn non_finite(&self) -> Option<&'static str> {
+        let checks: [(&'static str, bool); 9] = [
+            ("the bulk velocity V", self.bulk.is_finite()),
+            ("T", self.t_raw.is_finite()),
+            ("T_bulk", self.t_bulk.is_finite()),
+            (
+                "the stress tensor",
+                self.stress.iter().all(|x| x.is_finite()),
+            ),
+            ("the heat flux q", self.heat_flux.is_finite()),
+            ("v4", self.v4.is_finite()),
+            ("v6", self.v6.is_finite()),
+            ("<|c|^4>", self.c4.is_finite()),
+            ("<|c|^6>", self.c6.is_finite()),
+        ];
+        checks.iter().find(|(_, ok)| !ok).map(|(name, _)| *name)
     }
 }

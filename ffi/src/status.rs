@@ -73,7 +73,7 @@ pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
     use gdsmc_core::engine::EngineError;
     let s = match e {
         EngineError::TimeBackwards => gdsmc_status::GDSMC_TIME_BACKWARDS,
-        EngineError::NonFinite => gdsmc_status::GDSMC_NON_FINITE,
+        EngineError::NonFinite(_) => gdsmc_status::GDSMC_NON_FINITE,
         EngineError::OffGrid | EngineError::ParticleCount => gdsmc_status::GDSMC_INVALID_ARGUMENT,
     };
     let m = match e {

@@ -1,7 +1,7 @@
 //! The `gdsmc` command.
 
 use clap::{Parser, Subcommand};
-use gdsmc::scene;
+use gdsmc_runner::scene;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -155,7 +155,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(gdsmc::Error::Interrupted) => ExitCode::from(130),
+        Err(gdsmc_runner::Error::Interrupted) => ExitCode::from(130),
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE
@@ -163,7 +163,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(cli: Cli) -> Result<(), gdsmc::Error> {
+fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
     match cli.command {
         Command::Run {
             scene: path,
@@ -185,7 +185,7 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
             let sc = scene::load_with(&path, &overrides)?;
             // The output place is prepared (and shown writable) before any simulation.
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
-            let set = gdsmc::report::set::OutputSet::prepare(&dir)?;
+            let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
             let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             {
                 let stop = stop.clone();
@@ -212,17 +212,17 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
             if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
                 bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
             }
-            let stats = gdsmc::run::run_interruptible(&sc, threads, &|k| bar.inc(k), &stop)?;
+            let stats = gdsmc_runner::run::run_interruptible(&sc, threads, &|k| bar.inc(k), &stop)?;
             bar.finish_and_clear();
             let interrupted = stats.ensembles < sc.ensembles;
             if interrupted {
                 eprintln!("kept {} of {} ensembles", stats.ensembles, sc.ensembles);
                 if stats.ensembles == 0 {
-                    return Err(gdsmc::Error::Interrupted);
+                    return Err(gdsmc_runner::Error::Interrupted);
                 }
             }
-            let refs = gdsmc::reference::curves::for_scene(&sc);
-            gdsmc::report::write_all(set.dir(), &sc, &stats, &refs)?;
+            let refs = gdsmc_runner::reference::curves::for_scene(&sc);
+            gdsmc_runner::report::write_all(set.dir(), &sc, &stats, &refs)?;
             set.commit(serde_json::json!({
                 "scene": sc.name,
                 "seed": sc.seed,
@@ -230,10 +230,13 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
                 "ensembles": stats.ensembles,
                 "gdsmc_version": env!("CARGO_PKG_VERSION"),
             }))?;
-            print!("{}", gdsmc::report::summary::text(&sc, &stats, &refs));
+            print!(
+                "{}",
+                gdsmc_runner::report::summary::text(&sc, &stats, &refs)
+            );
             println!("\nwrote {}", dir.join("observables.csv").display());
             if interrupted {
-                return Err(gdsmc::Error::Interrupted);
+                return Err(gdsmc_runner::Error::Interrupted);
             }
             Ok(())
         }
@@ -248,8 +251,8 @@ fn run(cli: Cli) -> Result<(), gdsmc::Error> {
     }
 }
 
-fn bench(b: Bench) -> Result<(), gdsmc::Error> {
-    use gdsmc::bench;
+fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
+    use gdsmc_runner::bench;
     match b {
         Bench::Throughput { sizes, seconds } => {
             let o = bench::throughput::Options {
@@ -326,15 +329,15 @@ fn reproduce(
     threads: usize,
     seed: u64,
     out: Option<PathBuf>,
-) -> Result<(), gdsmc::Error> {
-    use gdsmc::reproduce;
+) -> Result<(), gdsmc_runner::Error> {
+    use gdsmc_runner::reproduce;
     let opts = reproduce::Options {
         quick,
         threads,
         seed,
     };
     let dir = out.unwrap_or_else(|| PathBuf::from("out").join("reproduce"));
-    std::fs::create_dir_all(&dir).map_err(|e| gdsmc::Error::Write {
+    std::fs::create_dir_all(&dir).map_err(|e| gdsmc_runner::Error::Write {
         path: dir.clone(),
         source: e,
     })?;
@@ -346,7 +349,7 @@ fn reproduce(
         print!("{}", reproduce::text(t));
         done.push(t.clone());
         let md = reproduce::markdown(&done, &opts, start.elapsed().as_secs_f64());
-        if let Err(e) = gdsmc::report::files::write_atomic(&report, md.as_bytes()) {
+        if let Err(e) = gdsmc_runner::report::files::write_atomic(&report, md.as_bytes()) {
             write_err.get_or_insert(e);
         }
     })?;
@@ -371,6 +374,6 @@ fn reproduce(
         println!("every judged figure agrees with the paper");
         Ok(())
     } else {
-        Err(gdsmc::Error::Disagrees(bad))
+        Err(gdsmc_runner::Error::Disagrees(bad))
     }
 }

@@ -1,6 +1,6 @@
 //! The SVG charts are written and hold the mean, the band and the reference curve.
 
-use gdsmc::scene;
+use gdsmc_runner::scene;
 use std::path::PathBuf;
 
 #[test]
@@ -9,10 +9,10 @@ fn a_run_writes_csv_json_and_svg() {
     let mut s = scene::load(&path).unwrap();
     s.physics.n = 32;
     s.ensembles = 10;
-    let st = gdsmc::run::run(&s, 1, &|_| {}).unwrap();
-    let refs = gdsmc::reference::curves::for_scene(&s);
+    let st = gdsmc_runner::run::run(&s, 1, &|_| {}).unwrap();
+    let refs = gdsmc_runner::reference::curves::for_scene(&s);
     let dir = std::env::temp_dir().join(format!("gdsmc-charts-{}", std::process::id()));
-    gdsmc::report::write_all(&dir, &s, &st, &refs).unwrap();
+    gdsmc_runner::report::write_all(&dir, &s, &st, &refs).unwrap();
     for f in [
         "observables.csv",
         "summary.json",

@@ -3,9 +3,9 @@
 //! Per-bin checks use each bin's 99.9% half-width rescaled to a Bonferroni family level of
 //! 99.9% over all bins checked (z given per test instead of 3.2).
 
-use gdsmc::analysis::distribution::{marginal, reduced};
-use gdsmc::reference::exact::tail::{a_white_noise_36, sonine_s2};
-use gdsmc::scene;
+use gdsmc_runner::analysis::distribution::{marginal, reduced};
+use gdsmc_runner::reference::exact::tail::{a_white_noise_36, sonine_s2};
+use gdsmc_runner::scene;
 use std::path::PathBuf;
 
 fn shipped(name: &str, set: &[&str], n: usize, m: u64, seed: u64) -> scene::Scene {
@@ -44,7 +44,7 @@ fn marginal_of_a_stationary_maxwellian() {
         64,
         7,
     );
-    let st = gdsmc::run::run(&s, 0, &|_| {}).unwrap();
+    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let m = marginal(&st).expect("asked for");
     assert_eq!(m.bins.len(), 40);
     let z = 4.4 / 3.2;
@@ -81,7 +81,7 @@ fn reduced_distribution_of_an_elastic_gas_is_phi() {
         32,
         8,
     );
-    let st = gdsmc::run::run(&s, 0, &|_| {}).unwrap();
+    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let r = reduced(&s, &st).expect("asked for");
     assert_eq!(r.shells.len(), 31);
     assert_eq!(r.tail.map(|t| t.equation), Some("MS (42)"));
@@ -117,7 +117,7 @@ fn white_noise_delta_and_tail_amplitude_ms_figures_2_and_3() {
         24,
         9,
     );
-    let st = gdsmc::run::run(&s, 0, &|_| {}).unwrap();
+    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let r = reduced(&s, &st).expect("asked for");
     let (a2, a2_ci) = r.a2;
     let steady = |c: &str| st.steady.as_ref().unwrap().mean_ci(&st, st.col(c).unwrap());

@@ -3,7 +3,7 @@
 //! `P(|v| < r) = erf(r / sqrt 2) - sqrt(2/pi) r exp(-r^2/2)`. Each of the 17 shells within its
 //! 99.9% half-width scaled to a Bonferroni family level of 99.9% (z = 4.0 instead of 3.2).
 
-use gdsmc::scene;
+use gdsmc_runner::scene;
 use std::path::PathBuf;
 
 fn chi3_cdf(r: f64) -> f64 {
@@ -18,11 +18,11 @@ fn initial_shells_are_maxwellian() {
     s.ensembles = 40;
     s.times = vec![0.0];
     s.histogram = Some((16, 4.0));
-    let st = gdsmc::run::run(&s, 0, &|_| {}).unwrap();
+    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let (radius, h) = st.histogram.as_ref().unwrap();
     assert_eq!(h.len(), 17);
     let mut total = 0.0;
-    let mut exact_hist = gdsmc::run::stats::Accumulator::new(17);
+    let mut exact_hist = gdsmc_runner::run::stats::Accumulator::new(17);
     let mut exact_row = vec![0.0; 17];
     for (k, slot) in exact_row.iter_mut().enumerate() {
         let lo = radius * k as f64 / 16.0;
@@ -45,8 +45,8 @@ fn initial_shells_are_maxwellian() {
     // The tail fit of the simulated shells matches the fit of the exact shells within its
     // interval (the same shells: the exact histogram is resolved everywhere).
     exact_hist.push(&exact_row);
-    let fit = gdsmc::analysis::tails::fit(*radius, h).expect("enough resolved shells");
-    let want = gdsmc::analysis::tails::fit(*radius, &exact_hist).expect("exact fit");
+    let fit = gdsmc_runner::analysis::tails::fit(*radius, h).expect("enough resolved shells");
+    let want = gdsmc_runner::analysis::tails::fit(*radius, &exact_hist).expect("exact fit");
     assert!(
         (fit.slope - want.slope).abs() <= fit.slope_ci,
         "slope {} +- {} vs exact shells {}",

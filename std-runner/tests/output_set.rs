@@ -4,7 +4,7 @@
 //! staging directories of killed runs; an unwritable output place is refused before any
 //! simulation.
 
-use gdsmc::report::set::verify;
+use gdsmc_runner::report::set::verify;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Instant;

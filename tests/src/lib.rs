@@ -1,7 +1,7 @@
 //! Helpers for the cross-crate validation tests: load a shipped scene, resize it, run it.
 
-use gdsmc::run::{self, RunStats};
-use gdsmc::scene::{self, Scene};
+use gdsmc_runner::run::{self, RunStats};
+use gdsmc_runner::scene::{self, Scene};
 use std::path::PathBuf;
 
 /// Path of a shipped scene file.
@@ -66,7 +66,7 @@ pub fn family_factor(checks: usize) -> f64 {
             hi = mid;
         }
     }
-    0.5 * (lo + hi) / gdsmc::run::stats::LAMBDA_999
+    0.5 * (lo + hi) / gdsmc_runner::run::stats::LAMBDA_999
 }
 
 #[cfg(test)]

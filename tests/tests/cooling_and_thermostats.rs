@@ -7,8 +7,8 @@
 //! `xi = (1 - alpha^2) (16/3) sqrt(pi) gamma C (1 + 3 a2 / 16)` (the cooling rate of MS (27)-(28)
 //! with a2 of the homogeneous cooling state, MS (5)), checked decade by decade.
 
-use gdsmc::reference::curves::maxwell_temperature;
-use gdsmc::scene::{DriveChoice, KernelChoice, SchemeChoice};
+use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_runner::scene::{DriveChoice, KernelChoice, SchemeChoice};
 use gdsmc_validation::*;
 
 #[test]
@@ -65,7 +65,7 @@ fn hard_spheres_follow_haffs_law_over_ten_decades() {
     let (n, alpha) = (2048, 0.5);
     let mut s = shipped("grw-example5", n, 60, 920);
     s.physics.drive = DriveChoice::None;
-    s.physics.restitution = gdsmc::scene::RestitutionLaw::Constant(alpha);
+    s.physics.restitution = gdsmc_runner::scene::RestitutionLaw::Constant(alpha);
     let KernelChoice::HardSpheres { gamma, c } = s.physics.kernel else {
         panic!("hard spheres")
     };
@@ -126,7 +126,7 @@ fn cooling_gas_has_the_gaussian_thermostats_collisional_moments() {
     ]);
     let hcs = run(&shipped_set("hcs-hard-spheres", &hcs_set, 2048, 16, 1500));
     let gauss = run(&shipped_set("ms-gaussian", &common, 2048, 16, 1501));
-    let get = |st: &gdsmc::run::RunStats, c: &str| {
+    let get = |st: &gdsmc_runner::run::RunStats, c: &str| {
         st.steady.as_ref().unwrap().mean_ci(st, st.col(c).unwrap())
     };
     let t_last = at(&hcs, hcs.times.len() - 1, "log10_T_bulk").0;

@@ -1,14 +1,15 @@
 //! A run is a pure function of (scene, seed): the same observables.csv bytes for any thread
 //! count, and different bytes for a different seed.
 
-use gdsmc::scene::RestitutionLaw;
+use gdsmc_runner::scene::RestitutionLaw;
 
 use gdsmc_validation::*;
 
 fn csv_bytes(name: &str, seed: u64, threads: usize) -> Vec<u8> {
     let s = shipped(name, 64, 50, seed);
-    let st = gdsmc::run::run(&s, threads, &|_| {}).unwrap();
-    gdsmc::report::observables_csv(&st, &gdsmc::reference::curves::for_scene(&s)).unwrap()
+    let st = gdsmc_runner::run::run(&s, threads, &|_| {}).unwrap();
+    gdsmc_runner::report::observables_csv(&st, &gdsmc_runner::reference::curves::for_scene(&s))
+        .unwrap()
 }
 
 #[test]
@@ -32,11 +33,11 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
         beta0: 0.25,
         delta: 0.0,
     };
-    let sa = gdsmc::run::run(&a, 2, &|_| {}).unwrap();
-    let sb = gdsmc::run::run(&b, 2, &|_| {}).unwrap();
+    let sa = gdsmc_runner::run::run(&a, 2, &|_| {}).unwrap();
+    let sb = gdsmc_runner::run::run(&b, 2, &|_| {}).unwrap();
     assert_eq!(
-        gdsmc::report::observables_csv(&sa, &[]).unwrap(),
-        gdsmc::report::observables_csv(&sb, &[]).unwrap()
+        gdsmc_runner::report::observables_csv(&sa, &[]).unwrap(),
+        gdsmc_runner::report::observables_csv(&sb, &[]).unwrap()
     );
     // A strong viscoelastic law changes the run and clamps fast impacts to e = 0.
     let mut c = a.clone();
@@ -44,11 +45,11 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
         beta0: 0.45,
         delta: 0.2,
     };
-    let sc = gdsmc::run::run(&c, 2, &|_| {}).unwrap();
+    let sc = gdsmc_runner::run::run(&c, 2, &|_| {}).unwrap();
     assert!(sc.counts.clamped > 0, "{:?}", sc.counts);
     assert_ne!(
-        gdsmc::report::observables_csv(&sa, &[]).unwrap(),
-        gdsmc::report::observables_csv(&sc, &[]).unwrap()
+        gdsmc_runner::report::observables_csv(&sa, &[]).unwrap(),
+        gdsmc_runner::report::observables_csv(&sc, &[]).unwrap()
     );
 }
 
@@ -58,7 +59,7 @@ fn an_interrupted_run_keeps_a_prefix_equal_to_a_shorter_run() {
     let s = shipped("grw-example3", 64, 400, 9);
     let stop = AtomicBool::new(false);
     let done = AtomicU64::new(0);
-    let st = gdsmc::run::run_interruptible(
+    let st = gdsmc_runner::run::run_interruptible(
         &s,
         2,
         &|k| {
@@ -77,10 +78,10 @@ fn an_interrupted_run_keeps_a_prefix_equal_to_a_shorter_run() {
     );
     let mut shorter = s.clone();
     shorter.ensembles = st.ensembles;
-    let full = gdsmc::run::run(&shorter, 1, &|_| {}).unwrap();
-    let refs = gdsmc::reference::curves::for_scene(&s);
+    let full = gdsmc_runner::run::run(&shorter, 1, &|_| {}).unwrap();
+    let refs = gdsmc_runner::reference::curves::for_scene(&s);
     assert_eq!(
-        gdsmc::report::observables_csv(&st, &refs).unwrap(),
-        gdsmc::report::observables_csv(&full, &refs).unwrap()
+        gdsmc_runner::report::observables_csv(&st, &refs).unwrap(),
+        gdsmc_runner::report::observables_csv(&full, &refs).unwrap()
     );
 }

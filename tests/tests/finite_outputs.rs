@@ -4,7 +4,7 @@
 //! range, not from the number of ensembles). Before v6 of a cooling gas stored rescaled about
 //! its bulk velocity was summed directly, hcs-maxwell wrote v6 = NaN from t = 26.
 
-use gdsmc::scene;
+use gdsmc_runner::scene;
 use gdsmc_validation::run;
 use std::path::PathBuf;
 

@@ -6,7 +6,7 @@
 //! hard-sphere background, against a direct O(n) weighted choice in
 //! `core/tests/host_medium_choice.rs`.
 
-use gdsmc::reference::curves::host_medium_maxwell;
+use gdsmc_runner::reference::curves::host_medium_maxwell;
 use gdsmc_validation::*;
 
 /// Grain-grain collisions keep momentum and each grain's background collisions change its

@@ -4,7 +4,7 @@
 //! 99.9% confidence interval (3.2 standard errors, GRW (25)) of the ensemble mean. Several
 //! checks per test make a family; with a fixed seed the outcome is deterministic.
 
-use gdsmc::reference::curves::maxwell_temperature;
+use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 /// For the Maxwell kernel the ensemble mean at finite n is known exactly

@@ -6,8 +6,8 @@
 //! value where the time-step error is resolved. The convergence factors of the temperature
 //! error in dt are then near 2 (Euler) and 4 (Strang), RW Table 2.
 
-use gdsmc::reference::curves::maxwell_temperature;
-use gdsmc::scene::{Scene, SchemeChoice};
+use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_runner::scene::{Scene, SchemeChoice};
 use gdsmc_validation::*;
 
 fn scheme(name: &str, n: usize, m: u64, seed: u64, s: SchemeChoice) -> Scene {

@@ -2,7 +2,7 @@
 //! it. Each test provokes one failure and asserts the warning (and, beside it, that the exact
 //! scheme on the same setting runs clean).
 
-use gdsmc::analysis::warnings::{Warning, check};
+use gdsmc_runner::analysis::warnings::{Warning, check};
 use gdsmc_validation::*;
 
 fn warnings(
@@ -11,7 +11,11 @@ fn warnings(
     n: usize,
     m: u64,
     seed: u64,
-) -> (Vec<Warning>, gdsmc::run::RunStats, gdsmc::scene::Scene) {
+) -> (
+    Vec<Warning>,
+    gdsmc_runner::run::RunStats,
+    gdsmc_runner::scene::Scene,
+) {
     let s = shipped_set(name, set, n, m, seed);
     let st = run(&s);
     (check(&s, &st), st, s)
@@ -112,7 +116,8 @@ fn heavy_tails_keep_the_majorant() {
     let (w, st, _) = warnings("grw-example7", &["histogram="], 20_000, 4, 1606);
     let c = st.counts;
     assert!(
-        (c.overshoots as f64) < gdsmc::analysis::warnings::OVERSHOOT_FRACTION * c.candidates as f64,
+        (c.overshoots as f64)
+            < gdsmc_runner::analysis::warnings::OVERSHOOT_FRACTION * c.candidates as f64,
         "{} overshoots of {} candidates",
         c.overshoots,
         c.candidates
@@ -132,7 +137,7 @@ fn extreme_dissipation() {
         1607,
     );
     assert!(w.is_empty(), "{w:?}");
-    let mt = gdsmc::reference::curves::maxwell_temperature(&s).unwrap();
+    let mt = gdsmc_runner::reference::curves::maxwell_temperature(&s).unwrap();
     let z = family_factor(st.times.len());
     for (ti, &t) in st.times.iter().enumerate() {
         let (m, ci) = at(&st, ti, "T_bulk");
@@ -198,7 +203,7 @@ fn host_medium_extreme_mass_ratios() {
         let set: Vec<&str> = set.iter().map(|s| s.as_str()).collect();
         let (w, st, s) = warnings("brs-example2", &set, 64, 400, 1613 + k as u64);
         assert!(w.is_empty(), "{w:?}");
-        let h = gdsmc::reference::curves::host_medium_maxwell(&s).unwrap();
+        let h = gdsmc_runner::reference::curves::host_medium_maxwell(&s).unwrap();
         // 2 masses x 17 times x 2 quantities, jointly at 99.9%.
         let z = family_factor(68);
         for (ti, &t) in st.times.iter().enumerate().step_by(32) {

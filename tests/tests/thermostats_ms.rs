@@ -14,22 +14,22 @@
 //! - the constant force keeps a2 negative (MS Section 4.3), between the estimates (50) and (76)
 //!   widened by MS's 20% remark.
 
-use gdsmc::reference::exact::sonine::*;
+use gdsmc_runner::reference::exact::sonine::*;
 use gdsmc_validation::*;
 
 /// A steady run at alpha with n = 2048 (24 ensembles), or n = 8192 (8 ensembles) at strong
 /// dissipation, where n = 2048 leaves a finite-n bias of about 0.5% in mu4 (measured: 11.43
 /// at n = 2048, 11.487 +- 0.053 at n = 16384 for the Gaussian thermostat at alpha = 0.4;
 /// MS: 11.494).
-fn steady(name: &str, seed: u64, alpha: f64) -> (gdsmc::run::RunStats, f64) {
+fn steady(name: &str, seed: u64, alpha: f64) -> (gdsmc_runner::run::RunStats, f64) {
     let (n, m) = if alpha < 0.5 { (8192, 8) } else { (2048, 24) };
     let mut s = shipped(name, n, m, seed);
-    s.physics.restitution = gdsmc::scene::RestitutionLaw::Constant(alpha);
+    s.physics.restitution = gdsmc_runner::scene::RestitutionLaw::Constant(alpha);
     s.collisional_pairs = 20_000;
     (run(&s), alpha)
 }
 
-fn get(st: &gdsmc::run::RunStats, col: &str) -> (f64, f64) {
+fn get(st: &gdsmc_runner::run::RunStats, col: &str) -> (f64, f64) {
     st.steady
         .as_ref()
         .unwrap()
@@ -111,7 +111,7 @@ fn constant_force_alpha_08() {
 #[test]
 fn white_noise_alpha_08_time_stepped() {
     let mut s = shipped("ms-white-noise", 2048, 16, 1400);
-    s.physics.scheme = gdsmc::scene::SchemeChoice::TimeStepped(0.01);
+    s.physics.scheme = gdsmc_runner::scene::SchemeChoice::TimeStepped(0.01);
     s.collisional_pairs = 20_000;
     let st = run(&s);
     let (mu4, c4) = get(&st, "mu4");

@@ -3,7 +3,7 @@
 //! with the no-splitting scheme's within the combined 99.9% half-width of the difference,
 //! sqrt(ci_a^2 + ci_b^2); with steps 50 times longer the time-step error is resolved.
 
-use gdsmc::scene::SchemeChoice;
+use gdsmc_runner::scene::SchemeChoice;
 use gdsmc_validation::*;
 
 #[test]

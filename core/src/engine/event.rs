@@ -137,10 +137,9 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
 /// check after a synchronization).
 pub fn observables(p: &Particles<'_>) -> Result<Observables, EngineError> {
     let obs = Observables::of(p);
-    if obs.is_finite() {
-        Ok(obs)
-    } else {
-        Err(EngineError::NonFinite)
+    match obs.non_finite() {
+        None => Ok(obs),
+        Some(what) => Err(EngineError::NonFinite(what)),
     }
 }
 

@@ -146,8 +146,9 @@ impl Counts {
 pub enum EngineError {
     /// The requested time lies before the system's current time (or is NaN).
     TimeBackwards,
-    /// A velocity or moment became non-finite (overflow, NaN input).
-    NonFinite,
+    /// A velocity or moment became non-finite (overflow, NaN input); names the first
+    /// observable that did.
+    NonFinite(&'static str),
     /// A time-stepped scheme was asked for a time that is not on its grid `t0 + k dt`, or
     /// its time step is not finite and positive.
     OffGrid,
@@ -159,7 +160,12 @@ impl core::fmt::Display for EngineError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(match self {
             EngineError::TimeBackwards => "observation time lies before the current time",
-            EngineError::NonFinite => "a velocity or moment became non-finite",
+            EngineError::NonFinite(what) => {
+                return write!(
+                    f,
+                    "{what} became non-finite (the velocities left the range of f64)"
+                );
+            }
             EngineError::OffGrid => "the time is not a multiple of the scheme's time step",
             EngineError::ParticleCount => "the particle buffer does not hold n particles",
         })

@@ -36,7 +36,7 @@ impl Model {
             })
         });
         if bad {
-            return Err(EngineError::NonFinite);
+            return Err(EngineError::NonFinite("an initial velocity"));
         }
         Ok(())
     }

@@ -19,16 +19,32 @@ pub fn initial_sampler(scene: &Scene) -> Option<MaxwellianMixture<MAX_COMPONENTS
     scene.physics.validate().ok().map(|m| m.initial().clone())
 }
 
+/// Why an ensemble stopped: the engine's error and the observation time it was advancing to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EnsembleError {
+    /// The observation time (0 while starting).
+    pub t: f64,
+    /// What the engine reported.
+    pub error: EngineError,
+}
+
+impl std::fmt::Display for EnsembleError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "on the way to t = {}: {}", self.t, self.error)
+    }
+}
+
 /// Runs one ensemble of `scene` (whose physics `model` is) from the generator `rng`: the
 /// observables at every observation time, row-major (`times x COLUMNS`), and the event counts.
 pub fn run_ensemble(
     scene: &Scene,
     model: &Model,
     mut rng: Xoshiro256PlusPlus,
-) -> Result<(Vec<f64>, Counts), EngineError> {
+) -> Result<(Vec<f64>, Counts), EnsembleError> {
+    let at0 = |error| EnsembleError { t: 0.0, error };
     let mut buf = vec![Particle::default(); model.n()];
-    let mut p = Particles::new(&mut buf).map_err(|_| EngineError::ParticleCount)?;
-    let (engine, obs0) = model.launch(&mut p, 0.0, &mut rng)?;
+    let mut p = Particles::new(&mut buf).map_err(|_| at0(EngineError::ParticleCount))?;
+    let (engine, obs0) = model.launch(&mut p, 0.0, &mut rng).map_err(at0)?;
     observe(scene, engine, obs0, &mut p, &mut rng)
 }
 
@@ -38,7 +54,7 @@ fn observe<E: EventLoop>(
     obs0: Observables,
     p: &mut Particles<'_>,
     rng: &mut Xoshiro256PlusPlus,
-) -> Result<(Vec<f64>, Counts), EngineError> {
+) -> Result<(Vec<f64>, Counts), EnsembleError> {
     let mut out = Vec::with_capacity(scene.times.len() * (COLUMNS.len() + 2) + 1);
     // Diagnostics draw from their own stream, so they never change the trajectory.
     let mut diag = rng.clone();
@@ -54,7 +70,9 @@ fn observe<E: EventLoop>(
         let obs = if t == 0.0 {
             obs0
         } else {
-            engine.advance_to(p, t, rng)?
+            engine
+                .advance_to(p, t, rng)
+                .map_err(|error| EnsembleError { t, error })?
         };
         // Bulk velocity and temperature in the stored units, once per observation, for the
         // diagnostics reduced by v0 (exact for a gas stored rescaled, whose physical
