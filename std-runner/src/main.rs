@@ -59,6 +59,10 @@ enum Command {
         /// value is TOML, a bare word is a string). Validated like the file.
         #[arg(long = "set", value_name = "KEY.PATH=VALUE")]
         set: Vec<String>,
+        /// Run even when the work estimate is above the limit (1e12 events and particle
+        /// updates, about a day of one core).
+        #[arg(long)]
+        allow_long: bool,
     },
     /// Reproduce the tables of the four papers: our figures beside the published ones.
     ///
@@ -173,6 +177,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             threads,
             out,
             set,
+            allow_long,
         } => {
             // --n, --ensembles and --seed are overrides of their scene keys: the same
             // validation as the file's, errors naming the flag.
@@ -183,6 +188,8 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 .extend(ensembles.map(|m| scene::Override::flag("ensembles", "run.ensembles", m)));
             overrides.extend(seed.map(|s| scene::Override::flag("seed", "run.seed", s)));
             let sc = scene::load_with(&path, &overrides)?;
+            // Absurd work is refused before anything is allocated or run.
+            let work = gdsmc_runner::run::estimate::check(&sc, threads, allow_long)?;
             // The output place is prepared (and shown writable) before any simulation.
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
             let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
@@ -233,6 +240,11 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             print!(
                 "{}",
                 gdsmc_runner::report::summary::text(&sc, &stats, &refs)
+            );
+            println!(
+                "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)",
+                work.total(),
+                stats.counts.candidates as f64 + stats.counts.kicks(sc.n()) as f64
             );
             println!("\nwrote {}", dir.join("observables.csv").display());
             if interrupted {

@@ -9,6 +9,7 @@
 
 pub mod columns;
 pub mod ensemble;
+pub mod estimate;
 pub mod results;
 pub mod stats;
 

@@ -1,0 +1,164 @@
+//! The work a run asks for, estimated before it starts, and the limits that refuse absurd
+//! runs (a rate, a time or a count so large that the run would take centuries) with the keys
+//! to change, before any allocation or simulation.
+//!
+//! The estimate counts work units per run: candidate events of the grain-grain process (the
+//! majorant rate GRW Section 3 / RW (20) times the time), background events of a host medium
+//! (BRS (26), its majorant (28) for hard spheres), and `n` per observation and per step of a
+//! stepped scheme. Rates use a temperature scale: the initial one, or for white noise the
+//! stationary one of GRW (13) (Maxwell) or of the energy balance with the hard-sphere collision
+//! frequency, whichever is larger; thermostats are taken as keeping the initial scale (MS's
+//! scaled states). It is an order of magnitude, shown in the summary; the limit is far above
+//! any useful run.
+
+use crate::error::Error;
+use crate::scene::{DriveChoice, KernelChoice, RestitutionLaw, Scene, SchemeChoice};
+use std::f64::consts::PI;
+
+/// Work units (events and particle updates) a run may need without `--allow-long`: about a
+/// day of one core at the measured 1e7-3e7 events/s (`gdsmc bench throughput`).
+pub const MAX_WORK: f64 = 1e12;
+
+/// Most worker threads.
+pub const MAX_THREADS: usize = 4096;
+
+/// Bytes of particle memory one ensemble may need.
+pub const MAX_PARTICLE_BYTES: f64 = 64.0 * (1u64 << 30) as f64;
+
+/// The estimate of one run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorkEstimate {
+    /// Grain-grain candidate events, all ensembles.
+    pub events: f64,
+    /// Background (host-medium) events, all ensembles.
+    pub background: f64,
+    /// Particle updates of observations and of stepped schemes' steps, all ensembles.
+    pub updates: f64,
+    /// Bytes of particles per ensemble.
+    pub particle_bytes: f64,
+}
+
+impl WorkEstimate {
+    /// All work units.
+    pub fn total(&self) -> f64 {
+        self.events + self.background + self.updates
+    }
+}
+
+/// The estimate for `scene`.
+pub fn estimate(scene: &Scene) -> WorkEstimate {
+    let p = &scene.physics;
+    let n = p.n as f64;
+    let t_end = scene.times.last().copied().unwrap_or(0.0);
+    let m = scene.ensembles as f64;
+    let t0 = crate::run::initial_sampler(scene).map_or(1.0, |f| f.temperature());
+    let (gc, lambda) = match p.kernel {
+        KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
+        KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
+        KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
+    };
+    let alpha = match p.restitution {
+        RestitutionLaw::Constant(a) => a,
+        RestitutionLaw::ImpactSpeed { beta0, .. } => (1.0 - 2.0 * beta0).clamp(0.0, 1.0),
+    };
+    let temperature = match p.drive {
+        DriveChoice::WhiteNoise(beta) => {
+            let dissipation = 1.0 - alpha * alpha;
+            let stationary = if lambda == 0.0 {
+                2.0 * beta / (gc * PI * dissipation)
+            } else {
+                // 3 beta = (1 - alpha^2)/4 nu T, nu = 4 pi gamma C <|u|>, <|u|> = 4 sqrt(T/pi).
+                (3.0 * beta / (dissipation * 4.0 * PI.sqrt() * gc)).powf(2.0 / 3.0)
+            };
+            t0.max(stationary.min(t0 + 2.0 * beta * t_end))
+        }
+        DriveChoice::HostMedium {
+            temperature, mass, ..
+        } => t0.max(temperature / mass),
+        _ => t0,
+    };
+    // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) thermal speeds.
+    let umax = 2.0 * (temperature * (2.0 * n.ln() + 3.0)).sqrt();
+    let rate = 2.0 * PI * gc * (n - 1.0) * umax.powf(lambda);
+    // A gas with no drive cools (Haff's law for hard spheres): with the cooling rate
+    // zeta0 = (1 - alpha^2)/4 nu0 and the rate going as T^(lambda/2), T = T0 (1 + s zeta0
+    // t)^(-1/s), s = lambda/2, the rate integrates to ln(1 + s zeta0 t)/(s zeta0) instead of t.
+    let s = 0.5 * lambda;
+    let nu0 = 4.0 * PI * gc * (4.0 * (t0 / PI).sqrt()).powf(lambda);
+    let zeta0 = 0.25 * (1.0 - alpha * alpha) * nu0;
+    let effective_time = match p.drive {
+        DriveChoice::None if s * zeta0 * t_end > 1e-6 => (s * zeta0 * t_end).ln_1p() / (s * zeta0),
+        _ => t_end,
+    };
+    let background = match p.drive {
+        DriveChoice::HostMedium {
+            kernel,
+            c1,
+            density,
+            mass,
+            temperature: tb,
+            drift,
+        } => {
+            let per_grain = match kernel {
+                crate::scene::BackgroundKernel::Maxwell => 4.0 * PI * c1 * density,
+                crate::scene::BackgroundKernel::HardSpheres => {
+                    let a = (3.0 * temperature).sqrt()
+                        + (drift[0] * drift[0] + drift[1] * drift[1] + drift[2] * drift[2]).sqrt();
+                    let b = (2.0 * tb / mass).sqrt();
+                    c1 * density * (4.0 * PI * a + 8.0 * PI.sqrt() * b)
+                }
+            };
+            per_grain * n * t_end * m
+        }
+        _ => 0.0,
+    };
+    let steps = match p.scheme {
+        SchemeChoice::NoSplitting => 0.0,
+        SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => t_end / dt,
+        SchemeChoice::TimeStepped(f) => {
+            // h = f lambda / v0, lambda = 1 / (sqrt 2 4 pi gamma C), v0 = sqrt(2 T).
+            let mfp = 1.0 / (2f64.sqrt() * 4.0 * PI * gc);
+            t_end / (f * mfp / (2.0 * temperature).sqrt())
+        }
+    };
+    WorkEstimate {
+        events: rate * effective_time * m,
+        background,
+        updates: n * (scene.times.len() as f64 + steps) * m,
+        particle_bytes: 32.0 * n,
+    }
+}
+
+/// Refuses a run whose estimate exceeds the limits (the work one only without `allow_long`),
+/// naming the keys that set it.
+pub fn check(scene: &Scene, threads: usize, allow_long: bool) -> Result<WorkEstimate, Error> {
+    if threads > MAX_THREADS {
+        return Err(Error::Argument {
+            flag: "--threads".into(),
+            message: format!("must be at most {MAX_THREADS}, got {threads}"),
+        });
+    }
+    let e = estimate(scene);
+    if e.particle_bytes.is_nan() || e.particle_bytes > MAX_PARTICLE_BYTES {
+        return Err(Error::Argument {
+            flag: "particles.n".into(),
+            message: format!(
+                "= {} needs {:.3e} bytes of particles per ensemble, above the limit {:.3e} (64 GiB)",
+                scene.n(),
+                e.particle_bytes,
+                MAX_PARTICLE_BYTES
+            ),
+        });
+    }
+    let total = e.total();
+    if !allow_long && (total.is_nan() || total > MAX_WORK) {
+        return Err(Error::Argument {
+            flag: "observe.t_end, particles.n, run.ensembles and the rates".into(),
+            message: format!(
+                "ask for about {total:.1e} events and particle updates ({:.1e} collision candidates, {:.1e} background events, {:.1e} updates of observations and steps), above the limit {MAX_WORK:.0e} (about a day of one core); shorten the run or pass --allow-long",
+                e.events, e.background, e.updates
+            ),
+        });
+    }
+    Ok(e)
+}
