@@ -33,13 +33,20 @@ fn momentum_energy(p: &Particles<'_>) -> (Vec3, f64) {
     (m, e)
 }
 
-/// A cooling run of `n` particles to time `t`: momentum kept for any alpha, energy for alpha = 1.
-fn collisions_keep<K: Kernel>(kernel: K, n: usize, alpha: f64, drift: f64, seed: u64, t: f64) {
-    let mut buf = vec![Particle::default(); n];
-    let mut p = Particles::new(&mut buf).unwrap();
+/// `n` particles from the unit Maxwellian drifting along x at `drift`, all at time 0.
+fn drifting_maxwellian(n: usize, drift: f64, seed: u64) -> Vec<Particle> {
     let mut rng = seeded(seed);
     let f0 = Maxwellian::new(1.0, 1.0, Vec3::new(drift, 0.0, 0.0)).unwrap();
-    p.fill_with(0.0, || f0.sample(&mut rng));
+    (0..n)
+        .map(|_| Particle::new(f0.sample(&mut rng), 0.0))
+        .collect()
+}
+
+/// A cooling run of `n` particles to time `t`: momentum kept for any alpha, energy for alpha = 1.
+fn collisions_keep<K: Kernel>(kernel: K, n: usize, alpha: f64, drift: f64, seed: u64, t: f64) {
+    let mut buf = drifting_maxwellian(n, drift, seed);
+    let mut p = Particles::new(&mut buf).unwrap();
+    let mut rng = seeded(seed ^ 1);
     let (m0, e0) = momentum_energy(&p);
     let law = Constant::new(alpha).unwrap();
     let (mut e, _) = NoSplitting::start(kernel, NoDrive, law, &mut p, 0.0).unwrap();
@@ -97,11 +104,9 @@ proptest! {
         drift in -10.0f64..10.0,
         seed in any::<u64>(),
     ) {
-        let mut buf = vec![Particle::default(); n];
+        let mut buf = drifting_maxwellian(n, drift, seed);
         let mut p = Particles::new(&mut buf).unwrap();
-        let mut rng = seeded(seed);
-        let f0 = Maxwellian::new(1.0, 1.0, Vec3::new(drift, 0.0, 0.0)).unwrap();
-        p.fill_with(0.0, || f0.sample(&mut rng));
+        let mut rng = seeded(seed ^ 1);
         let before = Observables::of(&p);
         let mut d = GaussianThermostat::new(zeta).unwrap();
         d.observe(&before);
@@ -125,11 +130,9 @@ proptest! {
         drift in -10.0f64..10.0,
         seed in any::<u64>(),
     ) {
-        let mut buf = vec![Particle::default(); n];
+        let mut buf = drifting_maxwellian(n, drift, seed);
         let mut p = Particles::new(&mut buf).unwrap();
-        let mut rng = seeded(seed);
-        let f0 = Maxwellian::new(1.0, 1.0, Vec3::new(drift, 0.0, 0.0)).unwrap();
-        p.fill_with(0.0, || f0.sample(&mut rng));
+        let mut rng = seeded(seed ^ 1);
         let before = Observables::of(&p);
         let mut d = ConstantForce::new(g).unwrap();
         d.observe(&before);
