@@ -43,6 +43,10 @@ fn absurd_work_is_refused_naming_the_keys() {
             &["scheme.kind=time-stepped", "scheme.step_factor=1e-300"][..],
         ),
         ("grw-example3", &["run.ensembles=9000000000000000000"][..]),
+        (
+            "ms-white-noise",
+            &["observe.collisional_pairs=9223372036854775807"][..],
+        ),
     ] {
         let s = with(name, set);
         let e = check(&s, 2, false).unwrap_err().to_string();

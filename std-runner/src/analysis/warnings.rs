@@ -17,8 +17,8 @@ pub const PRECISION_RATIO: f64 = 1e-6;
 /// One warning.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Warning {
-    /// Short code: `splitting-step`, `time-step`, `majorant`, `restitution-clamped`,
-    /// `precision`.
+    /// Short code: `non-finite`, `splitting-step`, `time-step`, `majorant`,
+    /// `restitution-clamped`, `precision`.
     pub code: &'static str,
     /// What fired, how large the error is expected to be, and what to do.
     pub message: String,
@@ -48,9 +48,30 @@ fn typical_alpha(scene: &Scene) -> f64 {
     }
 }
 
+/// Columns whose mean or half-width is not finite, each with the first time it is not: no
+/// silent NaN. (A ratio such as a2 is undefined once T_bulk is 0; a moment overflows when the
+/// velocities leave the range of f64.)
+fn non_finite(stats: &RunStats) -> Option<Warning> {
+    let mut found = Vec::new();
+    for (c, name) in stats.names.iter().enumerate() {
+        let first = (0..stats.times.len())
+            .find(|&ti| !stats.mean(ti, c).is_finite() || !stats.ci(ti, c).is_finite());
+        if let Some(ti) = first {
+            found.push(format!("{name} from t = {}", stats.times[ti]));
+        }
+    }
+    (!found.is_empty()).then(|| Warning {
+        code: "non-finite",
+        message: format!(
+            "non-finite values in observables.csv: {}. A ratio (a2, a3, crit, c3/c1) is undefined where T_bulk is 0 or underflowed; a moment is infinite where the velocities left the range of f64.",
+            found.join(", ")
+        ),
+    })
+}
+
 /// Every warning of a finished run.
 pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
-    let mut w = Vec::new();
+    let mut w: Vec<Warning> = non_finite(stats).into_iter().collect();
     let c = stats.counts;
     // Splitting schemes: the stationary temperature of the Maxwell gas is off by exactly
     // k dt / 2 (Euler) and (k dt)^2 / 24 (Strang) to leading order (reference.rs,

@@ -4,8 +4,8 @@
 //!
 //! The estimate counts work units per run: candidate events of the grain-grain process (the
 //! majorant rate GRW Section 3 / RW (20) times the time), background events of a host medium
-//! (BRS (26), its majorant (28) for hard spheres), and `n` per observation and per step of a
-//! stepped scheme. Rates use a temperature scale: the initial one, or for white noise the
+//! (BRS (26), its majorant (28) for hard spheres), `n` per observation and per step of a
+//! stepped scheme, and the random pairs of the collisional moments at every observation. Rates use a temperature scale: the initial one, or for white noise the
 //! stationary one of GRW (13) (Maxwell) or of the energy balance with the hard-sphere collision
 //! frequency, whichever is larger; thermostats are taken as keeping the initial scale (MS's
 //! scaled states). It is an order of magnitude, shown in the summary; the limit is far above
@@ -32,7 +32,8 @@ pub struct WorkEstimate {
     pub events: f64,
     /// Background (host-medium) events, all ensembles.
     pub background: f64,
-    /// Particle updates of observations and of stepped schemes' steps, all ensembles.
+    /// Particle updates of observations and of stepped schemes' steps, and the random pairs of
+    /// the collisional moments (MS (67)) at every observation, all ensembles.
     pub updates: f64,
     /// Bytes of particles per ensemble.
     pub particle_bytes: f64,
@@ -124,7 +125,9 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     WorkEstimate {
         events: rate * effective_time * m,
         background,
-        updates: n * (scene.times.len() as f64 + steps) * m,
+        updates: (n * (scene.times.len() as f64 + steps)
+            + scene.collisional_pairs as f64 * scene.times.len() as f64)
+            * m,
         particle_bytes: 32.0 * n,
     }
 }
