@@ -3,7 +3,7 @@
 //! stability study in docs/stability.md lists them with the failures they reveal.
 
 use crate::run::RunStats;
-use crate::scene::{DriveChoice, RestitutionLaw, Scene, SchemeChoice};
+use crate::scene::{DriveChoice, Scene, SchemeChoice};
 
 /// Expected relative errors above this fire the step-size warnings.
 pub const STEP_ERROR: f64 = 0.01;
@@ -35,17 +35,8 @@ fn relaxation_rate(scene: &Scene, stats: &RunStats) -> Option<f64> {
     }
     let nu =
         2.0 * stats.counts.collisions as f64 / (scene.n() as f64 * stats.ensembles as f64 * t_end);
-    let a = typical_alpha(scene);
+    let a = crate::run::estimate::typical_alpha(scene);
     Some(nu * (1.0 - a * a) / 4.0)
-}
-
-/// The restitution coefficient the step-error estimates use: the constant, or for the
-/// impact-speed law BRS (9) its value at unit normal impact speed, `1 - 2 beta0` (in [0, 1]).
-fn typical_alpha(scene: &Scene) -> f64 {
-    match scene.physics.restitution {
-        RestitutionLaw::Constant(a) => a,
-        RestitutionLaw::ImpactSpeed { beta0, .. } => (1.0 - 2.0 * beta0).clamp(0.0, 1.0),
-    }
 }
 
 /// Columns whose mean or half-width is not finite, each with the first time it is not: no
@@ -104,7 +95,7 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     // The MS time-stepped scheme decouples drive and collisions over h = f lambda / v0, an
     // Euler-like splitting with k h = (1 - alpha^2) f / 4 per mean free time.
     if let SchemeChoice::TimeStepped(f) = scene.physics.scheme {
-        let a = typical_alpha(scene);
+        let a = crate::run::estimate::typical_alpha(scene);
         let err = (1.0 - a * a) * f / 8.0;
         if err > STEP_ERROR {
             w.push(Warning {

@@ -46,6 +46,16 @@ impl WorkEstimate {
     }
 }
 
+/// The restitution coefficient the estimates use (here and in the step-error warnings): the
+/// constant, or for the impact-speed law BRS (9) its value at unit normal impact speed,
+/// `1 - 2 beta0` (in [0, 1]).
+pub fn typical_alpha(scene: &Scene) -> f64 {
+    match scene.physics.restitution {
+        RestitutionLaw::Constant(a) => a,
+        RestitutionLaw::ImpactSpeed { beta0, .. } => (1.0 - 2.0 * beta0).clamp(0.0, 1.0),
+    }
+}
+
 /// The estimate for `scene`.
 pub fn estimate(scene: &Scene) -> WorkEstimate {
     let p = &scene.physics;
@@ -58,10 +68,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
         KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
     };
-    let alpha = match p.restitution {
-        RestitutionLaw::Constant(a) => a,
-        RestitutionLaw::ImpactSpeed { beta0, .. } => (1.0 - 2.0 * beta0).clamp(0.0, 1.0),
-    };
+    let alpha = typical_alpha(scene);
     let temperature = match p.drive {
         DriveChoice::WhiteNoise(beta) => {
             let dissipation = 1.0 - alpha * alpha;
