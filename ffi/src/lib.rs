@@ -6,7 +6,8 @@
 //! - every fallible function returns a [`gdsmc_status`]; on failure a message for the calling
 //!   thread is kept and [`gdsmc_last_error`] copies it into a caller buffer;
 //! - no panic crosses the boundary: each exported function runs inside `catch_unwind` and a
-//!   panic becomes `GDSMC_PANIC`;
+//!   panic becomes `GDSMC_PANIC`, silently (its message and place go to `gdsmc_last_error`,
+//!   nothing to stderr), releasing what the call had allocated;
 //! - pointers are checked for null and alignment; enumerations from C are taken as integers and
 //!   checked; the only global mutable state is the thread-local error message;
 //! - a simulation handle is not thread-safe: use one handle from one thread at a time.
@@ -26,6 +27,8 @@
 mod access;
 mod config;
 mod guard;
+#[cfg(feature = "fault-injection")]
+pub use guard::fault;
 #[cfg(feature = "std")]
 mod heap;
 mod observables;

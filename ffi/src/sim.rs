@@ -59,6 +59,8 @@ pub(crate) fn build(
     };
     let mut p = Particles::new(slice)
         .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg!("{e}")))?;
+    #[cfg(feature = "fault-injection")]
+    crate::guard::fault::check();
     let (engine, last) = model.launch(&mut p, 0.0, &mut rng).map_err(engine_error)?;
     Ok(gdsmc_sim {
         magic: ALIVE,

@@ -61,6 +61,15 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
         message: e.to_string(),
     })?;
     for o in overrides {
+        // A line break would let one value carry further keys (`0.5\nfoo = 1`), which the
+        // TOML reader below would take as a second assignment and drop.
+        if o.assignment.contains(['\n', '\r']) {
+            return Err(bad(
+                Some(o),
+                o.key(),
+                "must be one line: the value holds a line break".into(),
+            ));
+        }
         let Some((key, raw)) = o.assignment.split_once('=') else {
             return Err(bad(
                 Some(o),

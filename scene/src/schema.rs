@@ -107,7 +107,22 @@ pub struct ComponentSpec {
     pub temperature: Spanned<f64>,
     /// Drift velocity. Default 0.
     #[serde(default)]
-    pub drift: Option<Spanned<[f64; 3]>>,
+    pub drift: Option<Spanned<Vector3>>,
+}
+
+/// A velocity as written: a TOML array of exactly three numbers. Serde's own `[f64; 3]` stops
+/// reading after three elements and drops the rest silently (`drift = [1, 2, 3, 4]` read as
+/// `[1, 2, 3]`); this type refuses any other length.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Vector3(pub [f64; 3]);
+
+impl<'de> Deserialize<'de> for Vector3 {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let v = Vec::<f64>::deserialize(d)?;
+        <[f64; 3]>::try_from(v.as_slice())
+            .map(Vector3)
+            .map_err(|_| serde::de::Error::invalid_length(v.len(), &"an array of 3 numbers"))
+    }
 }
 
 pub(crate) fn one() -> Spanned<f64> {
@@ -140,7 +155,7 @@ pub struct InitialSpec {
     pub temperature: Option<Spanned<f64>>,
     /// Drift of the Maxwellian. Default 0.
     #[serde(default)]
-    pub drift: Option<Spanned<[f64; 3]>>,
+    pub drift: Option<Spanned<Vector3>>,
     /// Components of a mixture.
     #[serde(default)]
     pub components: Option<Spanned<Vec<ComponentSpec>>>,
@@ -255,7 +270,7 @@ pub struct DriveSpec {
     pub temperature: Option<Spanned<f64>>,
     /// Host medium: background drift u^B. Default 0.
     #[serde(default)]
-    pub drift: Option<Spanned<[f64; 3]>>,
+    pub drift: Option<Spanned<Vector3>>,
 }
 
 /// `scheme.kind`.

@@ -70,6 +70,21 @@ fn unknown_key_and_wrong_type() {
 }
 
 #[test]
+fn a_velocity_has_three_components() {
+    let text = GOOD.replace(
+        "n = 64",
+        "n = 64\n[particles.initial]\ndrift = [1.0, 2.0, 3.0, 4.0]",
+    );
+    let e = err(&text);
+    assert!(
+        e.contains("bad.toml")
+            && e.contains("line 5")
+            && e.contains("invalid length 4, expected an array of 3 numbers"),
+        "{e}"
+    );
+}
+
+#[test]
 fn times_out_of_order() {
     let e = err(&GOOD.replace("t_end = 1.0", "t_start = 2.0\nt_end = 1.0"));
     assert!(
@@ -170,6 +185,29 @@ mod overrides {
             e.contains("`scheme.dt` must divide every observation time"),
             "{e}"
         );
+    }
+
+    /// Nothing the user wrote is dropped: a value with a line break (which would smuggle in a
+    /// second key) and a velocity with more or fewer than three elements are refused.
+    #[test]
+    fn nothing_written_is_dropped() {
+        let e = with(&["collisions.restitution=0.5\nfoo = 1"]).unwrap_err();
+        assert_eq!(
+            e,
+            "--set: `collisions.restitution` must be one line: the value holds a line break"
+        );
+        let e = with(&["drive.kind=host-medium", "drive.drift=[0, 0, 0, 4]"]).unwrap_err();
+        assert!(
+            e.contains("invalid length 4, expected an array of 3 numbers"),
+            "{e}"
+        );
+        let e = with(&["particles.initial.drift=[1.0, 2.0]"]).unwrap_err();
+        assert!(
+            e.contains("invalid length 2, expected an array of 3 numbers"),
+            "{e}"
+        );
+        let s = with(&["particles.initial.drift=[1.0, 2.0, 3.0]"]).unwrap();
+        assert_eq!(s.physics.initial[0].drift, [1.0, 2.0, 3.0]);
     }
 
     #[test]

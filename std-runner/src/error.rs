@@ -27,11 +27,20 @@ pub enum Error {
         /// The engine's message.
         message: String,
     },
+    /// Memory for a run's buffers could not be had (refused by the allocator, not aborted).
+    #[error("{what}: {bytes} bytes cannot be allocated")]
+    OutOfMemory {
+        /// What the memory was for, with the key that sizes it.
+        what: String,
+        /// The bytes asked for.
+        bytes: usize,
+    },
     /// The run was interrupted (Ctrl-C); what was finished has been written.
     #[error("interrupted")]
     Interrupted,
-    /// `gdsmc reproduce`: figures that do not agree with the paper's.
-    #[error("{} figure(s) disagree with the paper: {}", .0.len(), .0.join("; "))]
+    /// `gdsmc reproduce`: figures of ours that lie outside an exact value's range, or that
+    /// disagree with the paper's where nothing exact decides.
+    #[error("{} figure(s) disagree: {}", .0.len(), .0.join("; "))]
     Disagrees(Vec<String>),
     /// An output file could not be written.
     #[error("{path}: cannot write: {source}")]

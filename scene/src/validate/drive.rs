@@ -107,7 +107,7 @@ pub(super) fn drive(ctx: &mut Ctx<'_>, d: &DriveSpec) -> Result<DriveChoice, Err
                     Param::BackgroundTemperature,
                     "temperature",
                 ),
-                drift: drift.map_or([0.0; 3], |s| *s.get_ref()),
+                drift: drift.map_or([0.0; 3], |s| s.get_ref().0),
             }
         }
     })

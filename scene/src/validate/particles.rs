@@ -41,7 +41,7 @@ pub(super) fn particles(
                 weight: 1.0,
                 mass: *ini.mass.clone().unwrap_or_else(one).get_ref(),
                 temperature: *ini.temperature.clone().unwrap_or_else(one).get_ref(),
-                drift: ini.drift.as_ref().map_or([0.0; 3], |d| *d.get_ref()),
+                drift: ini.drift.as_ref().map_or([0.0; 3], |d| d.get_ref().0),
             });
         }
         InitialKind::Mixture => {
@@ -94,7 +94,7 @@ pub(super) fn particles(
                     weight: *c.weight.get_ref(),
                     mass: *c.mass.get_ref(),
                     temperature: *c.temperature.get_ref(),
-                    drift: c.drift.as_ref().map_or([0.0; 3], |d| *d.get_ref()),
+                    drift: c.drift.as_ref().map_or([0.0; 3], |d| d.get_ref().0),
                 });
             }
         }

@@ -34,16 +34,31 @@ impl std::fmt::Display for EnsembleError {
     }
 }
 
-/// Runs one ensemble of `scene` (whose physics `model` is) from the generator `rng`: the
+/// Room for the `n` particles of one system, asked of the allocator fallibly: a count that
+/// passed the limits but not the machine is an error naming `particles.n`, never an abort.
+/// One buffer serves every ensemble a worker runs (each ensemble overwrites it whole).
+pub fn particle_buffer(n: usize) -> Result<Vec<Particle>, crate::Error> {
+    let mut buf = Vec::new();
+    buf.try_reserve_exact(n)
+        .map_err(|_| crate::Error::OutOfMemory {
+            what: format!("`particles.n` = {n} particles"),
+            bytes: n.saturating_mul(std::mem::size_of::<Particle>()),
+        })?;
+    buf.resize(n, Particle::default());
+    Ok(buf)
+}
+
+/// Runs one ensemble of `scene` (whose physics `model` is) from the generator `rng` in the
+/// particle buffer `buf` (from [`particle_buffer`]; its contents are overwritten): the
 /// observables at every observation time, row-major (`times x COLUMNS`), and the event counts.
 pub fn run_ensemble(
     scene: &Scene,
     model: &Model,
     mut rng: Xoshiro256PlusPlus,
+    buf: &mut [Particle],
 ) -> Result<(Vec<f64>, Counts), EnsembleError> {
     let at0 = |error| EnsembleError { t: 0.0, error };
-    let mut buf = vec![Particle::default(); model.n()];
-    let mut p = Particles::new(&mut buf).map_err(|_| at0(EngineError::ParticleCount))?;
+    let mut p = Particles::new(buf).map_err(|_| at0(EngineError::ParticleCount))?;
     let (engine, obs0) = model.launch(&mut p, 0.0, &mut rng).map_err(at0)?;
     observe(scene, engine, obs0, &mut p, &mut rng)
 }

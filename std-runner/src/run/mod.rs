@@ -13,7 +13,7 @@ pub mod estimate;
 pub mod results;
 pub mod stats;
 
-pub use ensemble::{initial_sampler, run_ensemble};
+pub use ensemble::{initial_sampler, particle_buffer, run_ensemble};
 pub use results::{RunStats, SteadyStats};
 
 use crate::error::Error;
@@ -91,14 +91,13 @@ impl EnsembleJob<'_> {
                         let mut st = Accumulator::new(ncol);
                         let mut hi = Accumulator::new(hist_len);
                         let mut cnt = Counts::default();
+                        let mut particles = particle_buffer(model.n())?;
                         for (k, r) in rs.iter().enumerate() {
                             let e = start + ci as u64 * CHUNK + k as u64;
-                            let (row, c) =
-                                run_ensemble(scene, model, r.clone()).map_err(|err| {
-                                    Error::Engine {
-                                        ensemble: e,
-                                        message: err.to_string(),
-                                    }
+                            let (row, c) = run_ensemble(scene, model, r.clone(), &mut particles)
+                                .map_err(|err| Error::Engine {
+                                    ensemble: e,
+                                    message: err.to_string(),
                                 })?;
                             let (row, h) = row.split_at(width);
                             acc.push(row);
