@@ -1,10 +1,12 @@
 //! The distribution diagnostics against exact shapes and MS's published figures.
 //!
-//! Per-bin checks use each bin's 99.9% half-width rescaled to a Bonferroni family level of
-//! 99.9% over all bins checked (z given per test instead of 3.2).
+//! Per-bin checks use each bin's standard error (its 99.9% half-width over the Student-t
+//! multiplier of the run's ensembles) times a Bonferroni z for a family level of 99.9% over all
+//! bins checked (z given per test).
 
 use gdsmc_runner::analysis::distribution::{marginal, reduced};
 use gdsmc_runner::reference::exact::tail::{a_white_noise_36, sonine_s2};
+use gdsmc_runner::run::stats::multiplier;
 use gdsmc_runner::scene;
 use std::path::PathBuf;
 
@@ -47,7 +49,7 @@ fn marginal_of_a_stationary_maxwellian() {
     let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let m = marginal(&st).expect("asked for");
     assert_eq!(m.bins.len(), 40);
-    let z = 4.4 / 3.2;
+    let z = 4.4 / multiplier(64);
     for b in &m.bins {
         for (f, exact) in [(b.first, b.first_maxwell), (b.last, b.last_maxwell)] {
             assert!(
@@ -85,7 +87,7 @@ fn reduced_distribution_of_an_elastic_gas_is_phi() {
     let r = reduced(&s, &st).expect("asked for");
     assert_eq!(r.shells.len(), 31);
     assert_eq!(r.tail.map(|t| t.equation), Some("MS (42)"));
-    let z = 4.2 / 3.2;
+    let z = 4.2 / multiplier(32);
     for sh in &r.shells[..30] {
         assert!(
             (sh.ratio.0 - 1.0).abs() <= z * sh.ratio.1,
@@ -124,7 +126,7 @@ fn white_noise_delta_and_tail_amplitude_ms_figures_2_and_3() {
     let (a3, _) = steady("a3");
     let s3 = |x: f64| -x * x * x / 6.0 + 1.75 * x * x - 4.375 * x + 2.1875;
     let reference = |c: f64| sonine_s2(c * c) + a3 / a2 * s3(c * c);
-    let z = 4.1 / 3.2;
+    let z = 4.1 / multiplier(24);
     let mut checked = 0;
     for sh in r
         .shells

@@ -4,16 +4,17 @@
 //! `k0 = 1`, whose slope is the exponent `b` of `f ~ exp(-a |v|^b)` (GRW (15)-(16):
 //! `b = 1 + lambda/2`). The slope is fitted by least squares over the outer half of the shells
 //! whose weight is resolved (mean > 0 and 99.9% half-width below half the mean), with its 99.9%
-//! half-width `3.2` standard errors of the regression.
+//! half-width the Student-t quantile (points - 2 degrees of freedom, the 3.2-sigma level) times
+//! the regression standard error.
 
-use crate::run::stats::{Accumulator, LAMBDA_999};
+use crate::run::stats::{Accumulator, level_999, quantile_t};
 
 /// A fitted tail exponent.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TailFit {
     /// Fitted slope `b`.
     pub slope: f64,
-    /// Half-width of its 99.9% interval (regression standard error times 3.2).
+    /// Half-width of its 99.9% interval (regression standard error times the Student-t quantile).
     pub slope_ci: f64,
     /// Fitted intercept `ln a`.
     pub intercept: f64,
@@ -73,7 +74,7 @@ pub fn fit(radius: f64, hist: &Accumulator) -> Option<TailFit> {
     let se = (rss / (mf - 2.0) / sxx).sqrt();
     Some(TailFit {
         slope,
-        slope_ci: LAMBDA_999 * se,
+        slope_ci: quantile_t(m as u64 - 2, level_999()) * se,
         intercept,
         points,
     })

@@ -169,19 +169,32 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             source: "GRW (13)-(14)",
             curve: Box::new(move |t| mt.at(t)),
         });
-        // The exact ensemble mean at this n (and time step): the scheme's whole systematic error.
+        // The exact ensemble mean at this n (and time step): the scheme's whole systematic error,
+        // for T_bulk and for the raw T (which adds the random walk of the bulk velocity,
+        // `bulk_to_raw`, and the initial drift).
         let n = scene.n();
-        let finite: Box<dyn Fn(f64) -> f64 + Send + Sync> = match scene.physics.scheme {
-            SchemeChoice::NoSplitting => Box::new(move |t| mt.finite_n_bulk_mean(n, t)),
-            SchemeChoice::Euler(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, false, t)),
-            SchemeChoice::Strang(dt) => Box::new(move |t| mt.splitting_bulk_mean(n, dt, true, t)),
+        let finite: std::sync::Arc<dyn Fn(f64) -> f64 + Send + Sync> = match scene.physics.scheme {
+            SchemeChoice::NoSplitting => std::sync::Arc::new(move |t| mt.finite_n_bulk_mean(n, t)),
+            SchemeChoice::Euler(dt) => {
+                std::sync::Arc::new(move |t| mt.splitting_bulk_mean(n, dt, false, t))
+            }
+            SchemeChoice::Strang(dt) => {
+                std::sync::Arc::new(move |t| mt.splitting_bulk_mean(n, dt, true, t))
+            }
             SchemeChoice::TimeStepped(_) => return out,
         };
+        let raw = finite.clone();
+        out.push(ReferenceCurve {
+            name: "T_mean_n",
+            of: "T",
+            source: "exact ensemble mean at this n and scheme",
+            curve: Box::new(move |t| raw(t) + mt.bulk_to_raw(n, t) + v0),
+        });
         out.push(ReferenceCurve {
             name: "T_bulk_mean_n",
             of: "T_bulk",
-            source: "exact mean at this n and scheme (reference::MaxwellTemperature)",
-            curve: finite,
+            source: "exact ensemble mean at this n and scheme",
+            curve: Box::new(move |t| finite(t)),
         });
     }
     out

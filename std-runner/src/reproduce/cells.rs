@@ -1,30 +1,164 @@
-//! A paper's figure beside ours: [`Cell`] (how it is judged), [`Row`], [`Table`].
+//! A paper's figure beside ours: [`Cell`], the [`Check`]s that judge it and its [`Verdict`];
+//! [`Row`], [`Table`].
+//!
+//! A check says which figure it judges (the paper's or ours), the range that figure must lie
+//! in, the value the range is built around, and what the range is made of with the source of
+//! each part. A check is informative only when a computed 0, or a value ten times the expected
+//! one, would fall outside its range; a cell with an uninformative check is reported as such,
+//! never as agreeing.
 
-/// How a cell is judged.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Check {
-    /// `|ours - paper| <= ours_ci + paper_ci + rounding + bias`.
-    Within {
-        /// The paper's 99.9% half-width (published or estimated, see the table's notes).
-        paper_ci: f64,
-        /// Half a unit of the paper's last printed digit.
-        rounding: f64,
-        /// Allowance for a stated systematic difference (finite `n`); 0 when none.
-        bias: f64,
-    },
-    /// A noise-only figure: ours must lie below `ours_bound`, its 99.9% bound at our size;
-    /// `paper_bound` (the same bound at the paper's size) is printed beside the paper's figure.
-    Below {
-        /// Bound for the paper's run.
-        paper_bound: f64,
-        /// Bound for ours.
-        ours_bound: f64,
-    },
-    /// Printed for comparison, not judged (the table's notes say why).
+use std::fmt::Write;
+
+/// Which figure a check judges.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// The published figure.
+    Paper,
+    /// Our figure.
+    Ours,
+}
+
+/// What a check's range is built around.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Against {
+    /// A value known exactly (a closed form, the exact expectation of the estimator): a figure
+    /// outside the range is that side's error.
+    Exact,
+    /// The other side's figure: a disagreement cannot be assigned to either side.
+    Other,
+}
+
+/// One judgement: the figure of `side` must lie in `[lo, hi]` (the 99.9% range of this cell);
+/// `[family_lo, family_hi]` is the same range at the 99.9% level of the whole report
+/// (Bonferroni over `bounds::FAMILY` checks), which decides whether the run fails.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Check {
+    /// The figure judged.
+    pub side: Side,
+    /// What the range is built around.
+    pub against: Against,
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+    /// Lower end at the report's level.
+    pub family_lo: f64,
+    /// Upper end at the report's level.
+    pub family_hi: f64,
+    /// The value the range is built around.
+    pub expected: f64,
+    /// What the range is made of, with the source of each part.
+    pub basis: String,
+}
+
+impl Check {
+    /// `expected +- tol`, the same at the report's level (a tolerance without noise).
+    pub fn around(
+        side: Side,
+        against: Against,
+        expected: f64,
+        tol: f64,
+        basis: impl Into<String>,
+    ) -> Self {
+        Check {
+            side,
+            against,
+            lo: expected - tol,
+            hi: expected + tol,
+            family_lo: expected - tol,
+            family_hi: expected + tol,
+            expected,
+            basis: basis.into(),
+        }
+    }
+
+    /// Sets the report-level range to `expected +- tol`.
+    pub fn family(mut self, tol: f64) -> Self {
+        self.family_lo = self.expected - tol;
+        self.family_hi = self.expected + tol;
+        self
+    }
+
+    /// Whether `x` lies in the range (NaN never does).
+    pub fn passes(&self, x: f64) -> bool {
+        x.is_finite() && self.lo <= x && x <= self.hi
+    }
+
+    /// Whether `x` lies in the report-level range.
+    pub fn passes_family(&self, x: f64) -> bool {
+        x.is_finite() && self.family_lo <= x && x <= self.family_hi
+    }
+
+    /// Who is off when the check fails.
+    pub fn blame(&self) -> Blame {
+        match (self.side, self.against) {
+            (Side::Paper, Against::Exact) => Blame::Paper,
+            (Side::Ours, Against::Exact) => Blame::Ours,
+            _ => Blame::Unresolved,
+        }
+    }
+
+    /// Whether the check can fail: neither 0 nor ten times the expected value lies in its range.
+    pub fn informative(&self) -> bool {
+        let inside = |x: f64| self.lo <= x && x <= self.hi;
+        self.lo.is_finite() && self.hi.is_finite() && !inside(0.0) && !inside(10.0 * self.expected)
+    }
+}
+
+/// Who is off when a check fails.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Blame {
+    /// The published figure lies outside the range of an exact value: a finding about the
+    /// paper, not a failure of gdsmc.
+    Paper,
+    /// Ours and the paper's differ and nothing known exactly says which is off.
+    Unresolved,
+    /// Our figure lies outside the range of an exact value: gdsmc is wrong.
+    Ours,
+}
+
+/// The verdict on a cell.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Every check passed and every check could have failed.
+    Agree,
+    /// A check failed.
+    Disagree(Blame),
+    /// A check failed, and a consistency check computed in the same run says the paper's
+    /// figure is the one off (see [`Cell::dispute`]).
+    Disputed,
+    /// Every check passed, but one could not have failed (its range holds 0 or ten times the
+    /// expected value).
+    Uninformative,
+    /// Printed for comparison, not judged.
     Shown,
 }
 
-/// One figure of a table: the paper's, ours, and how they are compared.
+impl Verdict {
+    /// The word printed in the tables.
+    pub fn word(self) -> &'static str {
+        match self {
+            Verdict::Agree => "agree",
+            Verdict::Disagree(Blame::Paper) => "DISAGREE (paper)",
+            Verdict::Disagree(Blame::Unresolved) => "DISAGREE",
+            Verdict::Disagree(Blame::Ours) => "DISAGREE (ours)",
+            Verdict::Disputed => "disputed",
+            Verdict::Uninformative => "uninformative",
+            Verdict::Shown => "shown",
+        }
+    }
+
+    /// Whether the verdict is a disagreement that the exact values do not put on the paper
+    /// (whether it fails the run is [`Cell::fails_run`]).
+    pub fn against_us(self) -> bool {
+        matches!(
+            self,
+            Verdict::Disagree(Blame::Ours) | Verdict::Disagree(Blame::Unresolved)
+        )
+    }
+}
+
+/// One figure of a table: the paper's, ours, and the checks that judge them.
 #[derive(Clone, Debug)]
 pub struct Cell {
     /// Column name, as in the paper.
@@ -33,51 +167,39 @@ pub struct Cell {
     pub paper: f64,
     /// Ours.
     pub ours: f64,
-    /// Half-width of our 99.9% confidence interval.
+    /// Half-width of our 99.9% confidence interval (0 for a figure computed without noise).
     pub ours_ci: f64,
-    /// The exact expected value of the paper's estimator at the paper's size, when known.
+    /// The exact expected value of the estimator, when known.
     pub exact: Option<f64>,
-    /// The rule.
-    pub check: Check,
-    /// Why we believe the paper's figure is off, when we do (the table's notes give the
-    /// evidence). A disputed cell is still judged and printed, but does not fail the run.
-    pub disputed: Option<&'static str>,
+    /// The judgements (none: shown only).
+    pub checks: Vec<Check>,
+    /// The evidence, computed in the same run, that the paper's figure is off; turns a
+    /// disagreement into [`Verdict::Disputed`] (it does not touch a cell that agrees).
+    pub dispute: Option<String>,
 }
 
 impl Cell {
-    /// A cell judged by [`Check::Within`].
-    pub fn within(quantity: &str, paper: f64, ours: (f64, f64), paper_ci: f64) -> Self {
+    /// A cell with our figure and its half-width, not yet judged.
+    pub fn new(quantity: &str, paper: f64, ours: (f64, f64)) -> Self {
         Cell {
             quantity: quantity.into(),
             paper,
             ours: ours.0,
             ours_ci: ours.1,
             exact: None,
-            check: Check::Within {
-                paper_ci,
-                rounding: rounding(paper),
-                bias: 0.0,
-            },
-            disputed: None,
+            checks: Vec::new(),
+            dispute: None,
         }
     }
 
     /// A cell only shown, not judged.
     pub fn shown(quantity: &str, paper: f64, ours: f64) -> Self {
-        Cell {
-            quantity: quantity.into(),
-            paper,
-            ours,
-            ours_ci: 0.0,
-            exact: None,
-            check: Check::Shown,
-            disputed: None,
-        }
+        Cell::new(quantity, paper, (ours, 0.0))
     }
 
-    /// Marks the paper's figure as disputed, with the reason.
-    pub fn disputed(mut self, why: &'static str) -> Self {
-        self.disputed = Some(why);
+    /// Adds a check.
+    pub fn check(mut self, c: Check) -> Self {
+        self.checks.push(c);
         self
     }
 
@@ -87,50 +209,75 @@ impl Cell {
         self
     }
 
-    /// Sets the finite-size allowance of a [`Check::Within`] cell.
-    pub fn bias(mut self, b: f64) -> Self {
-        if let Check::Within { bias, .. } = &mut self.check {
-            *bias = b;
-        }
-        self
+    /// The verdict.
+    pub fn verdict(&self) -> Verdict {
+        self.verdict_with(self.ours)
     }
 
-    /// Sets the rounding allowance of a [`Check::Within`] cell (for figures printed with
-    /// a fixed number of decimals rather than significant digits).
-    pub fn rounding(mut self, r: f64) -> Self {
-        if let Check::Within { rounding, .. } = &mut self.check {
-            *rounding = r;
+    /// The verdict had our figure been `ours` (the tests feed 0 and values ten times off).
+    pub fn verdict_with(&self, ours: f64) -> Verdict {
+        if self.checks.is_empty() {
+            return Verdict::Shown;
         }
-        self
-    }
-
-    /// The tolerance of a [`Check::Within`] cell.
-    pub fn tolerance(&self) -> Option<f64> {
-        match self.check {
-            Check::Within {
-                paper_ci,
-                rounding,
-                bias,
-            } => Some(self.ours_ci + paper_ci + rounding + bias),
-            _ => None,
-        }
-    }
-
-    /// Whether the cell agrees (`None` for a cell only shown). NaN never agrees.
-    pub fn agrees(&self) -> Option<bool> {
-        match self.check {
-            Check::Within { .. } => {
-                Some((self.ours - self.paper).abs() <= self.tolerance().unwrap_or(f64::NAN))
+        let mut blame: Option<Blame> = None;
+        let mut informative = true;
+        for c in &self.checks {
+            let x = match c.side {
+                Side::Paper => self.paper,
+                Side::Ours => ours,
+            };
+            if !c.passes(x) {
+                let b = c.blame();
+                blame = Some(blame.map_or(b, |a| a.max(b)));
             }
-            Check::Below {
-                paper_bound,
-                ours_bound,
-            } => {
-                let _ = paper_bound;
-                Some(self.ours <= ours_bound)
-            }
-            Check::Shown => None,
+            informative &= c.informative();
         }
+        match (blame, &self.dispute) {
+            (Some(_), Some(_)) => Verdict::Disputed,
+            (Some(b), None) => Verdict::Disagree(b),
+            (None, _) if informative => Verdict::Agree,
+            (None, _) => Verdict::Uninformative,
+        }
+    }
+
+    /// Whether the cell fails the run: a check that puts the disagreement on us, or on
+    /// nobody, fails at the report's level too (Bonferroni over the report: with a hundred
+    /// cells at 99.9% each, one would miss by chance every tenth run), and no consistency check
+    /// disputes it.
+    pub fn fails_run(&self) -> bool {
+        self.dispute.is_none()
+            && self.checks.iter().any(|c| {
+                let x = match c.side {
+                    Side::Paper => self.paper,
+                    Side::Ours => self.ours,
+                };
+                c.blame() != Blame::Paper && !c.passes_family(x)
+            })
+    }
+
+    /// The checks as one line: `paper in [lo, hi] (basis); ours in [...] (...)`.
+    pub fn basis(&self) -> String {
+        let mut s = String::new();
+        for (i, c) in self.checks.iter().enumerate() {
+            let side = match c.side {
+                Side::Paper => "paper",
+                Side::Ours => "ours",
+            };
+            let _ = write!(
+                s,
+                "{}{side} in [{}, {}]{}: {}",
+                if i > 0 { "; " } else { "" },
+                super::figure::fmt(c.lo),
+                super::figure::fmt(c.hi),
+                if c.informative() {
+                    ""
+                } else {
+                    " (cannot fail)"
+                },
+                c.basis
+            );
+        }
+        s
     }
 }
 
@@ -173,15 +320,87 @@ pub struct Table {
     pub skipped: Vec<String>,
 }
 
+/// How many cells of each verdict a table (or a report) has.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counts {
+    /// [`Verdict::Agree`].
+    pub agree: usize,
+    /// [`Verdict::Disagree`] with the paper's figure off an exact value.
+    pub paper_off: usize,
+    /// Other disagreements (ours off, or unresolved).
+    pub failing: usize,
+    /// Those of them beyond the report-level range: these fail the run.
+    pub fails_run: usize,
+    /// [`Verdict::Disputed`].
+    pub disputed: usize,
+    /// [`Verdict::Uninformative`].
+    pub uninformative: usize,
+    /// [`Verdict::Shown`].
+    pub shown: usize,
+}
+
+impl Counts {
+    /// Counts the cells of `tables`.
+    pub fn of<'a>(tables: impl IntoIterator<Item = &'a Table>) -> Counts {
+        let mut k = Counts::default();
+        for c in tables
+            .into_iter()
+            .flat_map(|t| &t.rows)
+            .flat_map(|r| &r.cells)
+        {
+            k.fails_run += usize::from(c.fails_run());
+            match c.verdict() {
+                Verdict::Agree => k.agree += 1,
+                Verdict::Disagree(Blame::Paper) => k.paper_off += 1,
+                Verdict::Disagree(_) => k.failing += 1,
+                Verdict::Disputed => k.disputed += 1,
+                Verdict::Uninformative => k.uninformative += 1,
+                Verdict::Shown => k.shown += 1,
+            }
+        }
+        k
+    }
+
+    /// One line: `12 agree, 1 disagree (paper), 0 disagree, 2 disputed, 3 uninformative, 4
+    /// shown`, with how many fail the run.
+    pub fn line(&self) -> String {
+        format!(
+            "{} agree, {} disagree (the paper's figure off an exact value), {} disagree \
+             (ours off, or unresolved; {} of them beyond the report-wide range, failing the run), \
+             {} disputed, {} uninformative, {} shown",
+            self.agree,
+            self.paper_off,
+            self.failing,
+            self.fails_run,
+            self.disputed,
+            self.uninformative,
+            self.shown
+        )
+    }
+}
+
 impl Table {
-    /// Cells that disagree (and are not disputed), as `row: quantity` strings.
-    pub fn disagreements(&self) -> Vec<String> {
+    /// Cells that fail the run ([`Cell::fails_run`]), as `row: quantity` strings.
+    pub fn failures(&self) -> Vec<String> {
         self.rows
             .iter()
             .flat_map(|r| {
                 r.cells
                     .iter()
-                    .filter(|c| c.agrees() == Some(false) && c.disputed.is_none())
+                    .filter(|c| c.fails_run())
+                    .map(move |c| format!("{}: {}", r.label, c.quantity))
+            })
+            .collect()
+    }
+
+    /// Cells whose verdict is `v`-like, as `row: quantity` strings.
+    pub fn cells_where(&self, keep: impl Fn(Verdict) -> bool) -> Vec<String> {
+        self.rows
+            .iter()
+            .flat_map(|r| {
+                r.cells
+                    .iter()
+                    .filter(|c| keep(c.verdict()))
                     .map(move |c| format!("{}: {}", r.label, c.quantity))
             })
             .collect()

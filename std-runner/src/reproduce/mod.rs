@@ -1,28 +1,34 @@
 //! `gdsmc reproduce`: every table of the four papers (GRW Tables 1-2, RW Tables 1-6, BRS
 //! Tables 1-2 with the equilibrium temperatures of Examples 4-5, MS Table 1), our figures
-//! printed beside the paper's, each with its 99.9% half-width and, where one is known, the
-//! exact expected value of the paper's estimator at the paper's `n`.
+//! printed beside the paper's, each judged by checks that could fail.
 //!
-//! A cell agrees when `|ours - paper| <= ours_ci + paper_ci + rounding + bias`: our half-width,
-//! the paper's (published, or ours rescaled to the paper's number of ensembles when the paper
-//! gives none), half a unit of the paper's last printed digit, and a stated finite-`n` bias
-//! where we run fewer particles than the paper. Noise-only figures (GRW's `||V||_inf`) must lie
-//! below their 99.9% bound at our size instead.
+//! A cell's checks (cells.rs) each judge one figure, the paper's or ours, against a range that
+//! holds at the 99.9% level, and say what the range is made of: where the estimator's
+//! expectation is known exactly (bounds.rs, judged.rs) the paper's figure is judged against it
+//! with the paper's noise (its stated interval read as the paper defines it, or ours rescaled
+//! to its ensembles) and ours with ours; elsewhere ours is judged against the paper's figure
+//! with both noises. A range that holds 0, or ten times the expected value, makes its cell
+//! uninformative, never agreeing; every table is checked for that when it is made
+//! ([`self_check`]). Disputes are computed (ms.rs: the cooling-state check).
 //!
 //! `--quick` keeps every table but runs fewer ensembles (and skips the costliest rows, listed
 //! in the report); the full mode runs the papers' sizes.
 
+mod bounds;
 mod brs;
 mod cells;
+mod figure;
 mod grw;
+mod judged;
 mod ms;
 mod report;
 mod runs;
 mod rw;
 
-pub use cells::{Cell, Check, Row, Table, rounding};
+pub use cells::{Against, Blame, Cell, Check, Counts, Row, Side, Table, Verdict, rounding};
+pub use figure::fmt;
 pub use report::{markdown, text};
-pub(crate) use runs::{at, ensembles, go, max_relative_error, scene, steady};
+pub(crate) use runs::{at, ensembles, go, relative, scene, steady};
 
 use crate::Error;
 
@@ -78,15 +84,67 @@ pub fn run(
             });
         }
     }
-    let mut out = Vec::new();
+    let mut out: Vec<Table> = Vec::new();
     for (j, e) in TABLES.iter().enumerate() {
         if names.is_empty() || names.iter().any(|n| n == e.name) {
             let t = (e.run)(opts, opts.seed.wrapping_add(1000 * j as u64))?;
-            done(&t);
+            self_check(&t)?;
             out.push(t);
+            let checks: usize = out
+                .iter()
+                .flat_map(|t| &t.rows)
+                .flat_map(|r| &r.cells)
+                .map(|c| c.checks.len())
+                .sum();
+            if checks > bounds::FAMILY {
+                return Err(Error::Argument {
+                    flag: "reproduce".into(),
+                    message: format!(
+                        "{checks} checks exceed the {} the run's Bonferroni level allows \
+                         (bounds::FAMILY)",
+                        bounds::FAMILY
+                    ),
+                });
+            }
+            done(out.last().expect("just pushed"));
         }
     }
     Ok(out)
+}
+
+/// Every judged cell of `t` refuses a computed 0 and a value ten times the expected one: had
+/// our figure been either, the cell would disagree or be uninformative, never agree. An error
+/// here is a bug in how the table builds its checks.
+pub fn self_check(t: &Table) -> Result<(), Error> {
+    for r in &t.rows {
+        for c in &r.cells {
+            let tens = c
+                .checks
+                .iter()
+                .filter(|k| k.side == Side::Ours)
+                .map(|k| 10.0 * k.expected);
+            for x in std::iter::once(0.0).chain(tens) {
+                if c.verdict_with(x) == Verdict::Agree {
+                    return Err(Error::Argument {
+                        flag: format!("reproduce {}", t.name),
+                        message: format!(
+                            "{}, {}: a computed {x} would agree ({}); the check cannot fail",
+                            r.label,
+                            c.quantity,
+                            c.basis()
+                        ),
+                    });
+                }
+            }
+            if !c.checks.is_empty() && !c.checks.iter().any(|k| k.side == Side::Ours) {
+                return Err(Error::Argument {
+                    flag: format!("reproduce {}", t.name),
+                    message: format!("{}, {}: our figure is not judged", r.label, c.quantity),
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -101,24 +159,120 @@ mod tests {
         assert_eq!(rounding(0.0), 0.0);
     }
 
+    fn exact_cell(paper: f64, ours: f64) -> Cell {
+        Cell::new("x", paper, (ours, 0.05))
+            .check(Check::around(Side::Ours, Against::Exact, 1.0, 0.05, "ours"))
+            .check(Check::around(
+                Side::Paper,
+                Against::Exact,
+                1.0,
+                0.1,
+                "paper",
+            ))
+    }
+
     #[test]
-    fn a_cell_agrees_within_its_tolerance_only() {
-        let c = Cell::within("x", 1.0, (1.1, 0.05), 0.04).rounding(0.0);
-        assert_eq!(c.agrees(), Some(false));
-        let c = Cell::within("x", 1.0, (1.08, 0.05), 0.04).rounding(0.0);
-        assert_eq!(c.agrees(), Some(true));
-        let c = Cell::within("x", 1.0, (f64::NAN, 0.05), 0.04);
-        assert_eq!(c.agrees(), Some(false));
+    fn verdicts_and_blame() {
+        assert_eq!(exact_cell(1.05, 1.02).verdict(), Verdict::Agree);
+        assert_eq!(
+            exact_cell(1.2, 1.02).verdict(),
+            Verdict::Disagree(Blame::Paper)
+        );
+        assert_eq!(
+            exact_cell(1.05, 1.08).verdict(),
+            Verdict::Disagree(Blame::Ours)
+        );
+        assert_eq!(
+            exact_cell(1.2, 1.08).verdict(),
+            Verdict::Disagree(Blame::Ours)
+        );
+        assert_eq!(
+            exact_cell(1.0, f64::NAN).verdict(),
+            Verdict::Disagree(Blame::Ours)
+        );
+        let mut c = exact_cell(1.2, 1.02);
+        c.dispute = Some("evidence".into());
+        assert_eq!(c.verdict(), Verdict::Disputed);
+        let c = Cell::new("x", 1.0, (1.1, 0.0)).check(Check::around(
+            Side::Ours,
+            Against::Other,
+            1.0,
+            0.2,
+            "both",
+        ));
+        assert_eq!(c.verdict(), Verdict::Agree);
+        assert_eq!(c.verdict_with(1.3), Verdict::Disagree(Blame::Unresolved));
+        assert!(Verdict::Disagree(Blame::Unresolved).against_us());
+        assert!(!Verdict::Disagree(Blame::Paper).against_us());
+        // The run fails only beyond the report-wide range: 1 +- 0.2 here, 1 +- 0.3 for the run.
         let c = Cell {
-            check: Check::Below {
-                paper_bound: 1.0,
-                ours_bound: 2.0,
-            },
-            ..Cell::within("v", 1.5, (1.0, 0.0), 0.0)
+            checks: vec![Check::around(Side::Ours, Against::Other, 1.0, 0.2, "both").family(0.3)],
+            ..c
         };
-        assert_eq!(c.agrees(), Some(true));
-        let c = Cell { ours: 2.5, ..c };
-        assert_eq!(c.agrees(), Some(false));
+        assert!(!c.fails_run());
+        assert!(
+            !Cell {
+                ours: 1.25,
+                ..c.clone()
+            }
+            .fails_run()
+        );
+        assert!(
+            Cell {
+                ours: 1.35,
+                ..c.clone()
+            }
+            .fails_run()
+        );
+        assert!(
+            !Cell {
+                ours: 1.35,
+                dispute: Some("evidence".into()),
+                ..c.clone()
+            }
+            .fails_run()
+        );
+        // A paper's figure off an exact value never fails the run.
+        assert!(!exact_cell(5.0, 1.0).fails_run());
+        assert_eq!(Cell::shown("x", 1.0, 2.0).verdict(), Verdict::Shown);
+    }
+
+    /// A range as wide as the value (here 1 +- 1) passes a computed 0: uninformative, and the
+    /// self-check accepts the table because such a cell never says "agree".
+    #[test]
+    fn a_range_that_holds_zero_is_uninformative() {
+        let c = Cell::new("E", 1.0, (1.1, 0.0)).check(Check::around(
+            Side::Ours,
+            Against::Exact,
+            1.0,
+            1.0,
+            "wide",
+        ));
+        assert_eq!(c.verdict(), Verdict::Uninformative);
+        assert_eq!(c.verdict_with(0.0), Verdict::Uninformative);
+        assert_eq!(c.verdict_with(10.0), Verdict::Disagree(Blame::Ours));
+        let t = Table {
+            name: "t",
+            title: "t",
+            notes: String::new(),
+            rows: vec![Row {
+                label: "r".into(),
+                n: 2,
+                ensembles: 2,
+                seconds: 0.0,
+                cells: vec![c, exact_cell(1.05, 1.02)],
+            }],
+            skipped: vec![],
+        };
+        assert!(self_check(&t).is_ok());
+        assert_eq!(
+            Counts::of([&t]),
+            Counts {
+                agree: 1,
+                uninformative: 1,
+                ..Counts::default()
+            }
+        );
     }
 
     #[test]

@@ -1,37 +1,29 @@
 //! The reproduced tables as terminal text and as a markdown report.
 
-use super::{Check, Options, Table};
+use super::figure::fmt;
+use super::{Cell, Counts, Options, Side, Table, Verdict};
 use std::fmt::Write;
 
-fn fmt(x: f64) -> String {
-    if x == 0.0 {
-        "0".into()
-    } else if x.abs() >= 1e-2 && x.abs() < 1e4 {
-        format!("{x:.4}")
-    } else {
-        format!("{x:.3e}")
+/// The ranges of a cell's checks, short: `paper [lo, hi]; ours [lo, hi]`.
+fn ranges(c: &Cell) -> String {
+    if c.checks.is_empty() {
+        return "-".into();
     }
-}
-
-fn verdict(c: &super::Cell) -> &'static str {
-    match (c.agrees(), c.disputed.is_some()) {
-        (Some(true), false) => "yes",
-        (Some(true), true) => "yes*",
-        (Some(false), false) => "NO",
-        (Some(false), true) => "no*",
-        (None, _) => "shown",
-    }
-}
-
-fn tolerance(c: &super::Cell) -> String {
-    match c.check {
-        Check::Within { .. } => c.tolerance().map_or("-".into(), fmt),
-        Check::Below {
-            paper_bound,
-            ours_bound,
-        } => format!("< {} / {}", fmt(paper_bound), fmt(ours_bound)),
-        Check::Shown => "-".into(),
-    }
+    c.checks
+        .iter()
+        .map(|k| {
+            format!(
+                "{} [{}, {}]",
+                match k.side {
+                    Side::Paper => "paper",
+                    Side::Ours => "ours",
+                },
+                fmt(k.lo),
+                fmt(k.hi)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// Text for a markdown table cell: pipes escaped (`||V||_inf`).
@@ -39,14 +31,14 @@ fn cell_text(x: &str) -> String {
     x.replace('|', "\\|")
 }
 
-/// One table for the terminal: a line per cell.
+/// One table for the terminal: a line per cell, then the counts.
 pub fn text(t: &Table) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "\n{}", t.title);
     let _ = writeln!(
         s,
-        "{:<26} {:<22} {:>11} {:>24} {:>11} {:>22} {:>6}",
-        "row", "quantity", "paper", "ours +- 99.9%", "exact", "tolerance", "agrees"
+        "{:<20} {:<18} {:>11} {:>24} {:>11} {:>48} {:>16}",
+        "row", "quantity", "paper", "ours +- 99.9%", "exact", "ranges", "verdict"
     );
     for r in &t.rows {
         for c in &r.cells {
@@ -57,17 +49,18 @@ pub fn text(t: &Table) -> String {
             };
             let _ = writeln!(
                 s,
-                "{:<26} {:<22} {:>11} {:>24} {:>11} {:>22} {:>6}",
+                "{:<20} {:<18} {:>11} {:>24} {:>11} {:>48} {:>16}",
                 r.label,
                 c.quantity,
                 fmt(c.paper),
                 ours,
                 c.exact.map_or("-".into(), fmt),
-                tolerance(c),
-                verdict(c)
+                ranges(c),
+                c.verdict().word()
             );
         }
     }
+    let _ = writeln!(s, "{}", Counts::of([t]).line());
     if !t.skipped.is_empty() {
         let _ = writeln!(s, "not run in this mode: {}", t.skipped.join(", "));
     }
@@ -77,18 +70,6 @@ pub fn text(t: &Table) -> String {
 /// The markdown report of a whole `reproduce` run.
 pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
     let mut s = String::new();
-    let agree = tables
-        .iter()
-        .flat_map(|t| &t.rows)
-        .flat_map(|r| &r.cells)
-        .filter(|c| c.agrees() == Some(true) && c.disputed.is_none())
-        .count();
-    let cells: usize = tables
-        .iter()
-        .flat_map(|t| &t.rows)
-        .flat_map(|r| &r.cells)
-        .filter(|c| c.agrees().is_some())
-        .count();
     let _ = writeln!(s, "# gdsmc reproduce: the papers' tables beside ours\n");
     let _ = writeln!(
         s,
@@ -99,37 +80,62 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
         env!("CARGO_PKG_VERSION"),
         seconds
     );
-    let disputed: Vec<String> = tables
+    let _ = writeln!(s, "**{}.**\n", Counts::of(tables).line());
+    let _ = writeln!(
+        s,
+        "How a cell is judged: each check names the figure it judges (the paper's or ours), \
+         the range that figure must lie in at the 99.9% level and what the range is made of. \
+         Where the estimator's expectation is known exactly (every Maxwell table), the paper's \
+         figure is judged against it with the paper's own noise (the interval it states, read \
+         as it defines it, or ours rescaled to its ensembles when it states none) and ours with \
+         ours; elsewhere ours is judged against the paper's figure. A check whose range holds 0, \
+         or ten times the expected value, could not fail: its cell is *uninformative*, never \
+         *agree*. *disagree (paper)*: the published figure lies outside the range of an exact \
+         value (a finding; it does not fail the run). *DISAGREE* or *disagree (ours)*: fails \
+         the run. *disputed*: a disagreement that a consistency check computed in the same run \
+         puts on the paper (the table's notes give the evidence). Intervals use Student-t \
+         quantiles for the ensembles run.\n"
+    );
+    let _ = writeln!(
+        s,
+        "| table | agree | disagree (paper) | disagree | disputed | uninformative | shown |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    for t in tables {
+        let k = Counts::of([t]);
+        let _ = writeln!(
+            s,
+            "| `{}` | {} | {} | {} | {} | {} | {} |",
+            t.name, k.agree, k.paper_off, k.failing, k.disputed, k.uninformative, k.shown
+        );
+    }
+    let _ = writeln!(s);
+    let named: Vec<String> = tables
         .iter()
         .flat_map(|t| t.rows.iter().map(move |r| (t, r)))
         .flat_map(|(t, r)| {
             r.cells.iter().filter_map(move |c| {
-                c.disputed.map(|why| {
+                let v = c.verdict();
+                matches!(v, Verdict::Disagree(_) | Verdict::Disputed).then(|| {
                     format!(
-                        "- `{}` {}, {}: {why}",
+                        "- `{}` {}, {}: {} (paper {}, ours {}){}",
                         t.name,
                         r.label,
-                        cell_text(&c.quantity)
+                        cell_text(&c.quantity),
+                        v.word(),
+                        fmt(c.paper),
+                        fmt(c.ours),
+                        c.dispute
+                            .as_ref()
+                            .map_or(String::new(), |d| format!(": {d}"))
                     )
                 })
             })
         })
         .collect();
-    let _ = writeln!(
-        s,
-        "**{} of {} judged figures agree** (|ours - paper| <= our 99.9% half-width + the \
-         paper's + rounding + stated bias; noise-only figures (ours) below their 99.9% bound); \
-         {} disputed (marked *, listed below; they do not fail the run).\n",
-        agree,
-        cells,
-        disputed.len()
-    );
-    if !disputed.is_empty() {
-        let _ = writeln!(
-            s,
-            "Disputed figures (the paper's value, not ours, is in doubt):\n"
-        );
-        for d in &disputed {
+    if !named.is_empty() {
+        let _ = writeln!(s, "Disagreeing and disputed figures:\n");
+        for d in &named {
             let _ = writeln!(s, "{d}");
         }
         let _ = writeln!(s);
@@ -137,9 +143,10 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
     for t in tables {
         let _ = writeln!(s, "## {} (`{}`)\n", t.title, t.name);
         let _ = writeln!(s, "{}\n", t.notes);
+        let _ = writeln!(s, "{}\n", Counts::of([t]).line());
         let _ = writeln!(
             s,
-            "| row | n | ensembles | s | quantity | paper | ours | +- 99.9% | exact | tolerance | agrees |"
+            "| row | n | ensembles | s | quantity | paper | ours | +- 99.9% | exact | verdict | judged by |"
         );
         let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|");
         for r in &t.rows {
@@ -160,8 +167,12 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
                         "-".into()
                     },
                     c.exact.map_or("-".into(), fmt),
-                    tolerance(c),
-                    verdict(c)
+                    c.verdict().word(),
+                    if c.checks.is_empty() {
+                        "shown, not judged".into()
+                    } else {
+                        cell_text(&c.basis())
+                    }
                 );
             }
         }

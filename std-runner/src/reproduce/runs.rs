@@ -54,6 +54,10 @@ pub(crate) const SCENES: &[(&str, &str)] = &[
         "ms-constant-force",
         include_str!("../../../scenes/ms-constant-force.toml"),
     ),
+    (
+        "hcs-hard-spheres",
+        include_str!("../../../scenes/hcs-hard-spheres.toml"),
+    ),
 ];
 
 /// A shipped scene with overrides (`--set` syntax), `n` particles, `m` ensembles and a seed.
@@ -103,24 +107,18 @@ pub(crate) fn steady(st: &RunStats, col: &str) -> (f64, f64) {
         .mean_ci(st, st.col(col).expect("a known column"))
 }
 
-/// `max_t |mean(t) - exact(t)| / exact(t)` over the observation times with `t >= from`, and
-/// the largest relative half-width there: GRW (29), RW's `E_max`, BRS's `Err`.
-pub(crate) fn max_relative_error(
-    st: &RunStats,
-    col: &str,
-    from: f64,
-    exact: impl Fn(f64) -> f64,
-) -> (f64, f64) {
-    let mut e: f64 = 0.0;
-    let mut ci: f64 = 0.0;
-    for (ti, &t) in st.times.iter().enumerate() {
-        if t < from {
-            continue;
-        }
-        let (m, c) = at(st, ti, col);
-        let x = exact(t);
-        e = e.max(((m - x) / x).abs());
-        ci = ci.max(c / x.abs());
-    }
-    (e, ci)
+/// Per observation time: the relative error of the mean of column `col` against `truth`,
+/// `(mean(t) - truth(t)) / truth(t)` (signed), and the relative standard deviation of one
+/// ensemble, `sd(t) / |truth(t)|`. The largest absolute error is GRW (29), RW's `E_max`, BRS's
+/// `Err`.
+pub(crate) fn relative(st: &RunStats, col: &str, truth: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    let c = st.col(col).expect("a known column");
+    st.times
+        .iter()
+        .enumerate()
+        .map(|(ti, &t)| {
+            let x = truth(t);
+            ((st.mean(ti, c) - x) / x, st.sd(ti, c) / x.abs())
+        })
+        .collect()
 }

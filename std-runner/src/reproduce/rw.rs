@@ -1,14 +1,25 @@
 //! RW Tables 1-6: no splitting against Euler and Strang splitting, transient (Tables 1-2) and
 //! steady state (Tables 3-6).
 
-use super::{Cell, Entry, Options, Row, Table, at, ensembles, go, max_relative_error, scene};
+use super::bounds::KNOWN;
+use super::cells::Cell;
+use super::judged::{OurLargest, PaperInterval, PaperNoise, max_error_exact, mean_exact};
+use super::{Entry, Options, Row, Table, ensembles, go, relative, scene};
 use crate::Error;
 use crate::reference::curves::maxwell_temperature;
 use crate::reference::exact::MaxwellTemperature;
+use crate::run::stats::LAMBDA_999;
 use crate::scene::Scene;
 
-/// RW's ensembles in Tables 1 and 2.
+/// RW's ensembles in Tables 1 and 2: "Unless indicated otherwise, the results are averaged over
+/// N = 10 000 independent ensembles" (RW Section 4.1).
 const PAPER_ENSEMBLES: u64 = 10_000;
+
+/// How RW's Conf is read: "Note that the width Conf_end of the confidence interval at t_K is
+/// proportional to 1/sqrt(nN)" (RW Section 4.1) and "As above, Conf denotes the width of the
+/// confidence interval" (Section 4.2): a width, so the half-width is Conf / 2. RW refer to
+/// [RW05, Section 3.1.4] for the interval, the 3.2-sigma interval of GRW (25) (`LAMBDA_999`).
+const CONF_IS_A_WIDTH: &str = "RW's Conf is \"the width of the confidence interval\": half of it";
 
 /// RW Table 1.
 pub const TABLE1: Entry = Entry {
@@ -65,6 +76,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
     ];
     let mut rows = Vec::new();
     let mut skipped = Vec::new();
+    let mut implied = Vec::new();
     for (k, &(n, e_end, conf_end, e_max)) in paper.iter().enumerate() {
         if o.quick && n > 16384 {
             skipped.push(format!("n = {n}"));
@@ -74,25 +86,67 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         let s = scene("rw-transient", &[], n, m, seed + k as u64);
         let (st, secs) = go(&s, o)?;
         let mt = maxwell_temperature(&s).expect("a Maxwell scene");
-        let scale = (m as f64 / PAPER_ENSEMBLES as f64).sqrt();
-        let last = st.times.len() - 1;
-        let t_end = st.times[last];
-        let exact_end = mt.at(t_end);
-        let (mean, ci) = at(&st, last, "T");
-        let end = ((mean - exact_end) / exact_end, ci / exact_end);
+        let rel = relative(&st, "T", |t| mt.at(t));
+        let (end_err, end_sd) = *rel.last().expect("observation times");
+        let t_end = *s.times.last().expect("observation times");
         let bias = |t: f64| ((mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t)).abs();
-        let ours_max = max_relative_error(&st, "T", 0.0, |t| mt.at(t));
+        let ours_max = rel.iter().map(|r| r.0.abs()).fold(0.0, f64::max);
+        let sd_max = rel.iter().map(|r| r.1).fold(0.0, f64::max);
         let exact_max = s.times.iter().map(|&t| bias(t)).fold(0.0, f64::max);
+        // RW's standard error at t_K from their Conf_end, carried to the other times by our
+        // profile of the spread (RW state Conf at t_K only).
+        let se_end = 0.5 * conf_end / LAMBDA_999;
+        let se_max = se_end * sd_max / end_sd;
+        let rt_m = (m as f64).sqrt();
+        // Our width of a 10,000-ensemble interval at t_K, read as RW read theirs.
+        let our_conf = 2.0 * LAMBDA_999 * end_sd / (PAPER_ENSEMBLES as f64).sqrt();
+        implied.push(format!(
+            "n = {n}: RW's Conf_end is {:.1} times the width of a {PAPER_ENSEMBLES}-ensemble \
+             interval (as from about {:.0} ensembles)",
+            conf_end / our_conf,
+            (2.0 * LAMBDA_999 * end_sd / conf_end).powi(2)
+        ));
         rows.push(Row {
             label: format!("n = {n}"),
             n,
             ensembles: m,
             seconds: secs,
             cells: vec![
-                // The signed error's mean is the exact bias; RW prints its absolute value.
-                Cell::within("E_end", e_end, (end.0.abs(), end.1), conf_end).exact(bias(t_end)),
-                Cell::shown("Conf_end", conf_end, end.1 * scale),
-                Cell::within("E_max", e_max, ours_max, conf_end).exact(exact_max),
+                max_error_exact(
+                    "E_end",
+                    e_end,
+                    bias(t_end),
+                    1,
+                    OurLargest {
+                        value: end_err.abs(),
+                        se: end_sd / rt_m,
+                        ensembles: m,
+                    },
+                    &PaperNoise {
+                        se: se_end,
+                        dof: KNOWN,
+                        source: format!("Conf_end / 2 / 3.2: {CONF_IS_A_WIDTH}"),
+                    },
+                ),
+                Cell::shown("Conf_end", conf_end, our_conf),
+                max_error_exact(
+                    "E_max",
+                    e_max,
+                    exact_max,
+                    rel.len(),
+                    OurLargest {
+                        value: ours_max,
+                        se: sd_max / rt_m,
+                        ensembles: m,
+                    },
+                    &PaperNoise {
+                        se: se_max,
+                        dof: KNOWN,
+                        source: "Conf_end / 2 / 3.2 at t_K carried to the other times by our \
+                                 profile of the spread"
+                            .into(),
+                    },
+                ),
             ],
         });
     }
@@ -101,21 +155,19 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         title: TABLE1.title,
         notes: format!(
             "Raw temperature (RW (23)) against RW (28) at the observation times 0, 0.25, ..., 8; \
-             RW state {PAPER_ENSEMBLES} ensembles. The paper's half-width is its Conf_end. \
-             'exact': the exact error of the ensemble mean, 5.39/n relative at t = 8 \
-             (reference.rs); ours land on it, RW's lie about 10% above it (about 5.9/n, as \
-             GRW's Table 1 for the same process). Conf_end is shown, not judged: ours is the \
-             relative 99.9% half-width rescaled to {PAPER_ENSEMBLES} ensembles; RW's is 9 to 10 \
-             times larger at every n (as if from about 100 ensembles), so RW's Conf is the more \
-             generous allowance."
+             RW: N = {PAPER_ENSEMBLES} ensembles. E_end and E_max are judged against their \
+             exact expectation (the ensemble mean's bias is known exactly: 5.39/n relative at \
+             t = 8, reference/exact.rs), ours with our interval, RW's with RW's own stated \
+             interval: {CONF_IS_A_WIDTH}. Conf_end is shown beside ours, the width of a \
+             {PAPER_ENSEMBLES}-ensemble interval at t = 8 read the same way: {}. With so wide \
+             an interval RW's figures for n >= 4096 cannot be judged (uninformative). RW's \
+             errors lie about 10% above the exact value (about 5.9/n, as GRW's Table 1).",
+            implied.join("; ")
         ),
         rows,
         skipped,
     })
 }
-
-/// RW's Conf_end at n = 4096 (Table 1): the paper's confidence at the size of Table 2.
-const CONF_END_4096: f64 = 0.430e-2;
 
 fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
     // (K, Euler E_max, Strang E_max)
@@ -145,14 +197,34 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
             let (st, t) = go(&s, o)?;
             secs += t;
             let mt = maxwell_temperature(&s).expect("a Maxwell scene");
-            let ours = max_relative_error(&st, "T", 0.0, |t| mt.at(t));
+            let rel = relative(&st, "T", |t| mt.at(t));
+            let ours = rel.iter().map(|r| r.0.abs()).fold(0.0, f64::max);
+            let sd_max = rel.iter().map(|r| r.1).fold(0.0, f64::max);
             let exact = exact_split(&mt, &s, dt, j == 1, |t| mt.at(t));
             let label = if j == 0 {
                 "E_max Euler"
             } else {
                 "E_max Strang"
             };
-            cells.push(Cell::within(label, p, ours, CONF_END_4096).exact(exact));
+            cells.push(max_error_exact(
+                label,
+                p,
+                exact,
+                rel.len(),
+                OurLargest {
+                    value: ours,
+                    se: sd_max / (m as f64).sqrt(),
+                    ensembles: m,
+                },
+                &PaperNoise {
+                    se: sd_max / (PAPER_ENSEMBLES as f64).sqrt(),
+                    dof: m - 1,
+                    source: format!(
+                        "our spread of one ensemble over RW's {PAPER_ENSEMBLES} ensembles; RW \
+                         give no interval in Table 2"
+                    ),
+                },
+            ));
         }
         rows.push(Row {
             label: format!("K = {kk}"),
@@ -166,11 +238,12 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
         name: "rw-table2",
         title: TABLE2.title,
         notes: format!(
-            "dt = 8/K, observed at the K + 1 grid times; raw temperature against RW (28); RW \
-             state {PAPER_ENSEMBLES} ensembles; the paper's half-width is its Conf_end at n = \
-             4096 from Table 1 (0.0043; RW give none in Table 2). 'exact': the exact \
-             E_max of the splitting schemes' ensemble mean (reference.rs, \
-             splitting_bulk_mean plus the raw-temperature term)."
+            "dt = 8/K, observed at the K + 1 grid times; raw temperature against RW (28). \
+             Judged against the exact E_max of the splitting schemes' ensemble mean \
+             (reference/exact.rs, splitting_bulk_mean plus the raw-temperature term), with the \
+             Bonferroni bound of the largest noise over the K + 1 times (bounds.rs). RW give no \
+             interval for Table 2, so RW's noise is ours rescaled to their N = \
+             {PAPER_ENSEMBLES} (their default); no allowance is borrowed from Table 1."
         ),
         rows,
         skipped: vec![],
@@ -203,7 +276,7 @@ fn steady_row(
     scheme: Option<(&str, f64)>,
     seed: u64,
     paper: (f64, f64, f64),
-) -> Result<(Cell, f64, f64), Error> {
+) -> Result<([Cell; 2], f64, f64), Error> {
     let set: Vec<String> = match scheme {
         Some((kind, dt)) => vec![format!("scheme.kind={kind}"), format!("scheme.dt={dt}")],
         None => vec![],
@@ -225,23 +298,64 @@ fn steady_row(
         })
         .sum::<f64>()
         / pts.len() as f64;
-    let (t_inf, conf, rounding) = paper;
-    let cell = Cell::within("T_inf", t_inf, super::steady(&st, "T"), conf)
-        .rounding(rounding)
-        .exact(exact);
-    Ok((cell, secs, st.cpu.as_secs_f64()))
+    let (t_inf, conf, round) = paper;
+    // One ensemble: our interval comes from the spread of the steady points (results.rs).
+    let dof = pts.len() as u64 - 1;
+    let cell = mean_exact(
+        "T_inf",
+        t_inf,
+        super::steady(&st, "T"),
+        dof,
+        exact,
+        &PaperInterval {
+            half: 0.5 * conf,
+            round,
+            source: CONF_IS_A_WIDTH,
+        },
+    );
+    // RW's Conf beside ours read the same way: the width of a 3.2-sigma interval from the
+    // spread of the points taken as independent (RW Section 4.2: "big enough to assure almost
+    // independent observations").
+    let col = st.col("T").expect("a known column");
+    let xs: Vec<f64> = (first..s.times.len()).map(|ti| st.mean(ti, col)).collect();
+    let k = xs.len() as f64;
+    let mean = xs.iter().sum::<f64>() / k;
+    let sd = (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (k - 1.0)).sqrt();
+    let width = 2.0 * LAMBDA_999 * sd / k.sqrt();
+    Ok((
+        [cell, Cell::shown("Conf", conf, width)],
+        secs,
+        st.cpu.as_secs_f64(),
+    ))
 }
 
 fn cpu_cell(paper: f64, ours: f64) -> Cell {
     Cell::shown("CPU", paper, ours)
 }
 
+/// `RW's Conf / ours` for every Conf cell of `rows`, as one sentence.
+fn conf_ratios(rows: &[Row]) -> String {
+    let r: Vec<String> = rows
+        .iter()
+        .flat_map(|r| &r.cells)
+        .filter(|c| c.quantity == "Conf")
+        .map(|c| format!("{:.2}", c.paper / c.ours))
+        .collect();
+    format!("RW's Conf / ours: {}.", r.join(", "))
+}
+
 fn steady_notes(extra: &str) -> String {
     format!(
         "One ensemble of n = 65536 as RW; the raw temperature averaged over s = 8, 10, ..., 136 \
          with its 99.9% half-width from the spread of those points (widened for their lag-1 \
-         autocorrelation); the paper's half-width is RW's Conf. 'exact': the exact mean of the \
-         estimator (finite n, time step), reference.rs. CPU: CPU time relative to our \
+         autocorrelation, Student t over the points). Both figures are judged against the exact \
+         mean of the estimator (finite n, time step; reference/exact.rs): ours with our \
+         interval, RW's with RW's own: Conf is \"the width of the confidence interval\" (RW \
+         Section 4.2), so RW's half-width is Conf / 2. Conf is shown beside ours read the \
+         same way, the width of a 3.2-sigma interval from our spread of the same points taken \
+         as independent (RW's Conf / ours, row by row, below: near 1/2 means RW's Conf is a \
+         half-width in fact, so that read as RW define it their interval is narrower than \
+         their scatter). CPU: CPU time relative to our \
          no-splitting run (shown, not judged; see `gdsmc bench`). {extra}"
     )
 }
@@ -287,11 +401,12 @@ fn steady_table(
             continue;
         }
         let dt = 8.0 / kk as f64;
-        let (cell, secs, cpu_s) = steady_row(
+        let ([cell, conf_cell], secs, cpu_s) = steady_row(
             o,
             "rw-steady",
             Some((kind, dt)),
             seed + 1 + k as u64,
+            // RW print T_inf with four decimals: half a unit of the last is 5e-5.
             (t_inf, conf, 5e-5),
         )?;
         rows.push(Row {
@@ -299,30 +414,35 @@ fn steady_table(
             n: 65_536,
             ensembles: 1,
             seconds: secs,
-            cells: vec![cell, cpu_cell(cpu, cpu_s / base)],
+            cells: vec![cell, conf_cell, cpu_cell(cpu, cpu_s / base)],
         });
     }
     Ok(Table {
         name,
         title,
-        notes: steady_notes("dt = 8/K."),
+        notes: steady_notes(&format!("dt = 8/K. {}", conf_ratios(&rows))),
         rows,
         skipped,
     })
 }
 
 fn table5(o: &Options, seed: u64) -> Result<Table, Error> {
-    let (cell, secs, _) = steady_row(o, "rw-steady", None, seed, (2.6684, 0.0040, 5e-5))?;
+    // RW Table 5 prints four decimals: half a unit of the last is 5e-5.
+    let (cells, secs, _) = steady_row(o, "rw-steady", None, seed, (2.6684, 0.0040, 5e-5))?;
     Ok(Table {
         name: "rw-table5",
         title: TABLE5.title,
-        notes: steady_notes("No time step: the exact mean is (1 - 1/n) T_inf plus the raw term."),
+        notes: steady_notes(&format!(
+            "No time step: the exact mean is (1 - 1/n) T_inf plus the raw term. RW's Conf / \
+             ours: {:.2}.",
+            cells[1].paper / cells[1].ours
+        )),
         rows: vec![Row {
             label: "no splitting".into(),
             n: 65_536,
             ensembles: 1,
             seconds: secs,
-            cells: vec![cell],
+            cells: cells.into(),
         }],
         skipped: vec![],
     })
@@ -336,11 +456,12 @@ fn table6(o: &Options, seed: u64) -> Result<Table, Error> {
     ];
     let mut rows = Vec::new();
     for (k, &(label, scheme, t_inf, conf)) in paper.iter().enumerate() {
-        let (cell, secs, _) = steady_row(
+        let (cells, secs, _) = steady_row(
             o,
             "rw-steady-30",
             scheme,
             seed + k as u64,
+            // RW Table 6 prints three decimals: half a unit of the last is 5e-4.
             (t_inf, conf, 5e-4),
         )?;
         rows.push(Row {
@@ -348,13 +469,16 @@ fn table6(o: &Options, seed: u64) -> Result<Table, Error> {
             n: 65_536,
             ensembles: 1,
             seconds: secs,
-            cells: vec![cell],
+            cells: cells.into(),
         });
     }
     Ok(Table {
         name: "rw-table6",
         title: TABLE6.title,
-        notes: steady_notes("RW (30): beta = 37.5, K = 32 (dt = 1/4) for both splittings."),
+        notes: steady_notes(&format!(
+            "RW (30): beta = 37.5, K = 32 (dt = 1/4) for both splittings. {}",
+            conf_ratios(&rows)
+        )),
         rows,
         skipped: vec![],
     })

@@ -89,6 +89,11 @@ impl RunStats {
     pub fn ci(&self, ti: usize, col: usize) -> f64 {
         self.acc.ci(ti * self.names.len() + col)
     }
+    /// Standard deviation over ensembles of column `col` at time index `ti` (one ensemble's
+    /// spread; the standard error of the mean is this over `sqrt(ensembles)`).
+    pub fn sd(&self, ti: usize, col: usize) -> f64 {
+        self.acc.sd(ti * self.names.len() + col)
+    }
     /// Index of the column `name`.
     pub fn col(&self, name: &str) -> Option<usize> {
         self.names.iter().position(|n| *n == name)
