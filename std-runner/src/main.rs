@@ -50,7 +50,7 @@ enum Command {
         #[arg(long)]
         seed: Option<u64>,
         /// Worker threads (default: all cores). Results are identical for any value.
-        #[arg(long, default_value_t = 0)]
+        #[arg(long, default_value_t = 0, hide_default_value = true)]
         threads: usize,
         /// Output directory (default: out/SCENE-NAME).
         #[arg(long)]
@@ -91,7 +91,7 @@ enum Command {
         #[arg(long)]
         quick: bool,
         /// Worker threads (default: all cores). Results are identical for any value.
-        #[arg(long, default_value_t = 0)]
+        #[arg(long, default_value_t = 0, hide_default_value = true)]
         threads: usize,
         /// Base seed (row k of table j uses seed + 1000 j + k).
         #[arg(long, default_value_t = 1)]
@@ -143,7 +143,7 @@ enum Bench {
         #[arg(long, default_value_t = 0.01)]
         target: f64,
         /// Worker threads (default: all cores).
-        #[arg(long, default_value_t = 0)]
+        #[arg(long, default_value_t = 0, hide_default_value = true)]
         threads: usize,
         /// Output directory (default: out/work-precision).
         #[arg(long)]
@@ -154,7 +154,7 @@ enum Bench {
         /// The scene.
         scene: PathBuf,
         /// Threads of the parallel run (default: all cores).
-        #[arg(long, default_value_t = 0)]
+        #[arg(long, default_value_t = 0, hide_default_value = true)]
         threads: usize,
     },
 }
@@ -234,7 +234,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             }
             let refs = gdsmc_runner::reference::curves::for_scene(&sc);
             gdsmc_runner::report::write_all(set.dir(), &sc, &stats, &refs)?;
-            set.commit(serde_json::json!({
+            let written = set.commit(serde_json::json!({
                 "scene": sc.name,
                 "seed": sc.seed,
                 "n": sc.n(),
@@ -250,7 +250,12 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 work.total(),
                 stats.counts.candidates as f64 + stats.counts.kicks(sc.n()) as f64
             );
-            println!("\nwrote {}", dir.join("observables.csv").display());
+            println!(
+                "\nwrote {} files into {}: {}",
+                written.len(),
+                dir.display(),
+                written.join(", ")
+            );
             if interrupted {
                 return Err(gdsmc_runner::Error::Interrupted);
             }

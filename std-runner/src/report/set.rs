@@ -91,9 +91,11 @@ impl OutputSet {
     }
 
     /// Writes the manifest (the files now in the staging directory, and `run`, a JSON object
-    /// describing the run) and puts the set in place of the previous one.
-    pub fn commit(mut self, run: serde_json::Value) -> Result<(), Error> {
+    /// describing the run) and puts the set in place of the previous one. Returns the names of
+    /// the files written (the manifest last).
+    pub fn commit(mut self, run: serde_json::Value) -> Result<Vec<String>, Error> {
         let mut files = Vec::new();
+        let mut written = Vec::new();
         let mut names: Vec<PathBuf> = std::fs::read_dir(&self.staging)
             .map_err(write_err(&self.staging))?
             .flatten()
@@ -102,6 +104,10 @@ impl OutputSet {
         names.sort();
         for p in names {
             let bytes = std::fs::read(&p).map_err(write_err(&p))?;
+            written.push(
+                p.file_name()
+                    .map_or(String::new(), |n| n.to_string_lossy().into_owned()),
+            );
             files.push(serde_json::json!({
                 "name": p.file_name().map(|n| n.to_string_lossy().into_owned()),
                 "bytes": bytes.len(),
@@ -117,7 +123,8 @@ impl OutputSet {
         crate::report::files::write_atomic(&path, &text)?;
         self.swap_in()?;
         self.committed = true;
-        Ok(())
+        written.push(MANIFEST.to_string());
+        Ok(written)
     }
 
     /// The staging directory becomes the target; the previous set, if any, is removed.

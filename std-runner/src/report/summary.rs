@@ -54,12 +54,12 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             let col = stats.col(name).unwrap();
             let _ = write!(
                 s,
-                " {:>13.6} +- {:<8.2e}",
-                stats.mean(ti, col),
+                " {:>13} +- {:<8.2e}",
+                num(stats.mean(ti, col)),
                 stats.ci(ti, col)
             );
             for r in refs.iter().filter(|r| r.of == name) {
-                let _ = write!(s, " {:>13.6}", (r.curve)(stats.times[ti]));
+                let _ = write!(s, " {:>13}", num((r.curve)(stats.times[ti])));
             }
         }
         let _ = writeln!(s);
@@ -142,14 +142,25 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         for name in ["T", "T_bulk", "a2", "a3", "crit", "mu2", "mu4"] {
             let Some(col) = stats.col(name) else { continue };
             let (m, ci) = st.mean_ci(stats, col);
-            let _ = write!(s, "  {name:<8} {m:>13.6} +- {ci:.2e}");
+            let _ = write!(s, "  {name:<8} {:>13} +- {ci:.2e}", num(m));
             // References beside it, at the last observation time.
             let t_last = stats.times[stats.times.len() - 1];
             for r in refs.iter().filter(|r| r.of == name) {
-                let _ = write!(s, "   {} {:.6}", r.name, (r.curve)(t_last));
+                let _ = write!(s, "   {} {}", r.name, num((r.curve)(t_last)));
             }
             let _ = writeln!(s);
         }
     }
     s
+}
+
+/// A figure of the summary: six decimals where that keeps six significant digits' worth
+/// (`1e-3 <= |x| < 1e7`, or 0), scientific notation otherwise (a cooling gas's `T = 3e-12`
+/// would print as 0.000000).
+fn num(x: f64) -> String {
+    if x == 0.0 || (x.abs() >= 1e-3 && x.abs() < 1e7) || !x.is_finite() {
+        format!("{x:.6}")
+    } else {
+        format!("{x:.6e}")
+    }
 }

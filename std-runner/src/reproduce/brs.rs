@@ -179,6 +179,7 @@ fn equilibria(o: &Options, seed: u64) -> Result<Table, Error> {
                     ours.1 + paper / n as f64,
                     ours.1 * family_factor(1, m - 1) + paper / n as f64,
                 ),
+                // BRS print three decimals: half a unit of the last is 5e-4.
                 5e-4,
                 "our 99.9% half-width + the finite-n bias T/n; BRS state no interval",
             ),
