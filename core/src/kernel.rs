@@ -5,7 +5,7 @@
 //! for Maxwell pseudo-molecules (`lambda = 0`) there is no majorant to track and no fictitious
 //! collision at all ([`Kernel::USES_UMAX`] is `false` and the branches compile away).
 
-use crate::math::{PI, Real, powf};
+use crate::math::{PI, Real, powf, sqrt};
 
 /// A kernel parameter out of its domain.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,6 +51,14 @@ pub trait Kernel: Copy {
     /// `min(1, (urel / Umax)^lambda)`: one minus GRW (20). The `min` is the kernel truncation of
     /// RW (19) and takes effect only when the majorant was overshot (counted by the engine).
     fn acceptance(&self, urel: Real, umax: Real) -> Real;
+
+    /// Whether a candidate with squared relative speed `u2` collides for real, given the
+    /// majorant `umax` and a uniform `r` in [0, 1): `r < acceptance(|u|, umax)` (GRW (20)).
+    /// Kernels whose acceptance is a power of `|u|` may decide it without the square root.
+    #[inline(always)]
+    fn accepts(&self, u2: Real, umax: Real, r: Real) -> bool {
+        r < self.acceptance(sqrt(u2), umax)
+    }
 
     /// The exact total rate `int_{S^2} B de = 4 pi gamma C_lambda |u|^lambda` of a pair.
     fn pair_rate(&self, urel: Real) -> Real;
@@ -145,6 +153,13 @@ impl Kernel for HardSpheres {
     #[inline(always)]
     fn acceptance(&self, urel: Real, umax: Real) -> Real {
         if urel < umax { urel / umax } else { 1.0 }
+    }
+    /// `r < |u| / Umax` as `(r Umax)^2 < |u|^2` (both sides non-negative; when the majorant
+    /// is overshot, `r < 1` makes it true, as `min(1, .)` does): no square root per candidate.
+    #[inline(always)]
+    fn accepts(&self, u2: Real, umax: Real, r: Real) -> bool {
+        let ru = r * umax;
+        ru * ru < u2
     }
     #[inline(always)]
     fn pair_rate(&self, urel: Real) -> Real {

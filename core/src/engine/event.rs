@@ -8,7 +8,7 @@ use super::{Counts, EngineError};
 use crate::collision::inelastic;
 use crate::drive::Drive;
 use crate::kernel::Kernel;
-use crate::math::{Real, max};
+use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
@@ -24,13 +24,34 @@ pub struct Majorant {
     pub umax: Real,
     /// Reference velocity.
     pub vref: Vec3,
+    /// A squared distance from `vref` below which [`Majorant::cover`] cannot raise `umax`: the
+    /// test is made on `|v - V|^2`, and the square root is taken only when it may.
+    below2: Real,
 }
 
 impl Majorant {
-    /// Raises the bound to cover `v`: `Umax = max(Umax, 2 |v - V|)`.
+    /// The majorant `umax` about `vref`.
+    pub fn new(umax: Real, vref: Vec3) -> Self {
+        let half = 0.5 * umax;
+        Majorant {
+            umax,
+            vref,
+            // (umax/2)^2 lowered by 1e-15 relative: for |v - V|^2 below it, 2 |v - V| lies
+            // below umax by more than the rounding of the square root and the doubling, so
+            // `max(umax, 2 |v - V|)` would keep umax: skipping it changes no bit.
+            below2: half * half * (1.0 - 1e-15),
+        }
+    }
+
+    /// Raises the bound to cover `v`: `Umax = max(Umax, 2 |v - V|)` (RW (21)), the same bits as
+    /// computing it every time, with a square root only when `|v - V|^2` passes the last one.
     #[inline(always)]
     pub fn cover(&mut self, v: Vec3) {
-        self.umax = max(self.umax, 2.0 * (v - self.vref).norm());
+        let d2 = (v - self.vref).norm2();
+        if d2 > self.below2 {
+            self.below2 = d2;
+            self.umax = max(self.umax, 2.0 * sqrt(d2));
+        }
     }
 }
 
@@ -92,15 +113,15 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
         self.counts.candidates += 1;
         let umax_event = self.maj.umax;
         if K::USES_UMAX {
-            let urel = u.norm();
-            if urel > umax_event {
+            let u2 = u.norm2();
+            if u2 > umax_event * umax_event {
                 self.counts.overshoots += 1;
             }
             if cover_kicked {
                 self.maj.cover(vi);
                 self.maj.cover(vj);
             }
-            if uniform01(rng) >= self.kernel.acceptance(urel, umax_event) {
+            if !self.kernel.accepts(u2, umax_event, uniform01(rng)) {
                 self.counts.fictitious += 1;
                 return self.maj.umax != umax_event;
             }
@@ -125,10 +146,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
         self.counts.observations += 1;
         self.drive.observe(obs);
         if K::USES_UMAX {
-            self.maj = Majorant {
-                umax: 2.0 * obs.max_peculiar_speed,
-                vref: obs.bulk,
-            };
+            self.maj = Majorant::new(2.0 * obs.max_peculiar_speed, obs.bulk);
         }
     }
 }
