@@ -44,6 +44,13 @@ pub fn max_error(s_max: f64, k: usize, dof: u64) -> f64 {
     joint(k, dof) * s_max
 }
 
+/// The width (twice the half-width) of the papers' 3.2-sigma interval of a mean of `n` samples
+/// with standard deviation `sd`: how RW's Conf and BRS's band thickness are defined, so that
+/// ours can be shown beside theirs.
+pub fn width(sd: f64, n: f64) -> f64 {
+    2.0 * crate::run::stats::LAMBDA_999 * sd / n.sqrt()
+}
+
 /// The range of `||V||_inf = max_m |V(t_m)|`, the largest norm of the ensemble-mean bulk
 /// velocity over observation times `t_m` that end at `t_end`, when `V(t)` is a centred Gaussian
 /// martingale in three dimensions with `Var V_i(t_end) = s^2` per component (a heated Maxwell gas

@@ -2,10 +2,10 @@
 //! BRS (15)) and the equilibrium temperatures of Examples 4 and 5 (hard spheres) beside the
 //! closures BRS (21) and (22).
 
-use super::bounds::{FAMILY, KNOWN, family_factor, joint};
+use super::bounds::{FAMILY, KNOWN, family_factor, joint, width};
 use super::cells::{Cell, rounding};
 use super::judged::{against_paper, computed};
-use super::{Entry, Options, Row, Table, ensembles, go, relative, scene};
+use super::{Entry, Options, Row, Table, ensembles, go, largest, relative, scene};
 use crate::Error;
 use crate::reference::curves::{host_medium_maxwell, hydro_models};
 use crate::reference::hydro::Trajectory;
@@ -85,15 +85,14 @@ fn table(
         let h = host_medium_maxwell(&s).expect("a Maxwell host-medium scene");
         let (st, secs) = go(&s, o)?;
         let rel = relative(&st, "T_bulk", |t| h.temperature(t));
-        let ours = rel.iter().map(|r| r.0.abs()).fold(0.0, f64::max);
-        let sd_rel = rel.iter().map(|r| r.1).fold(0.0, f64::max);
+        let (ours, sd_rel) = largest(&rel);
         // Our band thickness read as BRS read theirs: 2 x 3.2 x the widest standard error of
         // N_rep ensembles, in temperature units.
         let col = st.col("T_bulk").expect("a known column");
         let sd_abs = (0..st.times.len())
             .map(|ti| st.sd(ti, col))
             .fold(0.0, f64::max);
-        let our_conf = 2.0 * LAMBDA_999 * sd_abs / (n_rep as f64).sqrt();
+        let our_conf = width(sd_abs, n_rep as f64);
         // Both largest errors lie within the largest noise over the 513 times of the common
         // (unknown) bias, each at half the miss (Bonferroni over 2 x 513 intervals): BRS's
         // noise from their stated Conf carried to relative units by our profile

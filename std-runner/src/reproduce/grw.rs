@@ -4,7 +4,7 @@ use super::bounds::{FAMILY, miss, sup_norm_range};
 use super::cells::{Against, Cell, Check, Side, rounding};
 use super::figure::fmt;
 use super::judged::{OurLargest, PaperNoise, max_error_exact};
-use super::{Entry, Options, Row, Table, at, ensembles, go, relative, scene};
+use super::{Entry, Options, Row, Table, at, ensembles, go, largest, relative, scene};
 use crate::Error;
 use crate::reference::curves::maxwell_temperature;
 
@@ -75,8 +75,7 @@ fn table(
         let mt = maxwell_temperature(&s).expect("a Maxwell scene");
         let (st, secs) = go(&s, o)?;
         let rel = relative(&st, "T", |t| mt.at(t));
-        let ours = rel.iter().map(|r| r.0.abs()).fold(0.0, f64::max);
-        let sd = rel.iter().map(|r| r.1).fold(0.0, f64::max);
+        let (ours, sd) = largest(&rel);
         let bmax = s
             .times
             .iter()

@@ -122,3 +122,11 @@ pub(crate) fn relative(st: &RunStats, col: &str, truth: impl Fn(f64) -> f64) -> 
         })
         .collect()
 }
+
+/// The largest absolute relative error and the largest relative standard deviation of a
+/// [`relative`] profile.
+pub(crate) fn largest(rel: &[(f64, f64)]) -> (f64, f64) {
+    rel.iter().fold((0.0, 0.0), |(e, s), r| {
+        (f64::max(e, r.0.abs()), f64::max(s, r.1))
+    })
+}

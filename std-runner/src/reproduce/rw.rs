@@ -1,10 +1,10 @@
 //! RW Tables 1-6: no splitting against Euler and Strang splitting, transient (Tables 1-2) and
 //! steady state (Tables 3-6).
 
-use super::bounds::KNOWN;
+use super::bounds::{KNOWN, width};
 use super::cells::Cell;
 use super::judged::{OurLargest, PaperInterval, PaperNoise, max_error_exact, mean_exact};
-use super::{Entry, Options, Row, Table, ensembles, go, relative, scene};
+use super::{Entry, Options, Row, Table, ensembles, go, largest, relative, scene};
 use crate::Error;
 use crate::reference::curves::maxwell_temperature;
 use crate::reference::exact::MaxwellTemperature;
@@ -90,8 +90,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         let (end_err, end_sd) = *rel.last().expect("observation times");
         let t_end = *s.times.last().expect("observation times");
         let bias = |t: f64| ((mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t)).abs();
-        let ours_max = rel.iter().map(|r| r.0.abs()).fold(0.0, f64::max);
-        let sd_max = rel.iter().map(|r| r.1).fold(0.0, f64::max);
+        let (ours_max, sd_max) = largest(&rel);
         let exact_max = s.times.iter().map(|&t| bias(t)).fold(0.0, f64::max);
         // RW's standard error at t_K from their Conf_end, carried to the other times by our
         // profile of the spread (RW state Conf at t_K only).
@@ -99,7 +98,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         let se_max = se_end * sd_max / end_sd;
         let rt_m = (m as f64).sqrt();
         // Our width of a 10,000-ensemble interval at t_K, read as RW read theirs.
-        let our_conf = 2.0 * LAMBDA_999 * end_sd / (PAPER_ENSEMBLES as f64).sqrt();
+        let our_conf = width(end_sd, PAPER_ENSEMBLES as f64);
         implied.push(format!(
             "n = {n}: RW's Conf_end is {:.1} times the width of a {PAPER_ENSEMBLES}-ensemble \
              interval (as from about {:.0} ensembles)",
@@ -198,8 +197,7 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
             secs += t;
             let mt = maxwell_temperature(&s).expect("a Maxwell scene");
             let rel = relative(&st, "T", |t| mt.at(t));
-            let ours = rel.iter().map(|r| r.0.abs()).fold(0.0, f64::max);
-            let sd_max = rel.iter().map(|r| r.1).fold(0.0, f64::max);
+            let (ours, sd_max) = largest(&rel);
             let exact = exact_split(&mt, &s, dt, j == 1, |t| mt.at(t));
             let label = if j == 0 {
                 "E_max Euler"
@@ -321,9 +319,8 @@ fn steady_row(
     let k = xs.len() as f64;
     let mean = xs.iter().sum::<f64>() / k;
     let sd = (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (k - 1.0)).sqrt();
-    let width = 2.0 * LAMBDA_999 * sd / k.sqrt();
     Ok((
-        [cell, Cell::shown("Conf", conf, width)],
+        [cell, Cell::shown("Conf", conf, width(sd, k))],
         secs,
         st.cpu.as_secs_f64(),
     ))
