@@ -60,3 +60,22 @@ fn rw_30_gives_t_inf_100() {
     // RW Table 6, no splitting: 99.981 +- 0.1877.
     assert!((m - 99.981).abs() <= c + 0.1877);
 }
+
+/// The `unsteady` warning fires when the steady-state window holds a transient (MS's Gaussian
+/// thermostat relaxing from T = 1 to T* = 3.4, window from t = 2: T rises 7% across it) and
+/// stays silent once the window starts after the relaxation (t >= 20). Fixed seeds; the check
+/// is conservative (each half's half-width bounded from above).
+#[test]
+fn a_window_with_a_transient_is_flagged() {
+    let codes = |from: &str| {
+        let set = [from];
+        let s = shipped_set("ms-gaussian", &set, 1024, 8, 77);
+        let st = run(&s);
+        gdsmc_runner::analysis::warnings::check(&s, &st)
+            .into_iter()
+            .map(|w| w.code)
+            .collect::<Vec<_>>()
+    };
+    assert!(codes("observe.steady_from=2").contains(&"unsteady"));
+    assert!(!codes("observe.steady_from=20").contains(&"unsteady"));
+}

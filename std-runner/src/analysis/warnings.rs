@@ -17,7 +17,7 @@ pub const PRECISION_RATIO: f64 = 1e-6;
 /// One warning.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Warning {
-    /// Short code: `non-finite`, `splitting-step`, `time-step`, `majorant`,
+    /// Short code: `non-finite`, `unsteady`, `splitting-step`, `time-step`, `majorant`,
     /// `restitution-clamped`, `precision`.
     pub code: &'static str,
     /// What fired, how large the error is expected to be, and what to do.
@@ -63,9 +63,59 @@ fn non_finite(stats: &RunStats) -> Option<Warning> {
     })
 }
 
+/// The temperature columns a steady-state window is checked on.
+const STEADY_CHECKED: [&str; 2] = ["T", "T_bulk"];
+
+/// The mean of the per-time means over `range` and a bound on its 99.9% half-width: the mean
+/// of the per-time half-widths (the standard deviation of a mean is at most the mean of the
+/// standard deviations, whatever the correlation between times).
+fn window_mean(stats: &RunStats, col: usize, range: std::ops::Range<usize>) -> (f64, f64) {
+    let k = range.len() as f64;
+    let (mut m, mut h) = (0.0, 0.0);
+    for ti in range {
+        m += stats.mean(ti, col);
+        h += stats.ci(ti, col);
+    }
+    (m / k, h / k)
+}
+
+/// A steady-state window that is not steady: the temperature averaged over the window's
+/// first half and over its second half differ by more than the sum of their half-widths (each
+/// bounded from above, so a steady gas fires this less often than one run in a thousand per
+/// column). The averages then mix a transient into the steady state.
+fn unsteady(stats: &RunStats) -> Option<Warning> {
+    let st = stats.steady.as_ref()?;
+    let nt = stats.times.len();
+    if stats.ensembles < 2 || st.points < 4 {
+        return None;
+    }
+    let half = st.points / 2;
+    let mut found = Vec::new();
+    for name in STEADY_CHECKED {
+        let Some(col) = stats.col(name) else { continue };
+        let (ma, ha) = window_mean(stats, col, st.first..st.first + half);
+        let (mb, hb) = window_mean(stats, col, nt - half..nt);
+        if (mb - ma).abs() > ha + hb {
+            found.push(format!(
+                "{name} averages {ma:.6} (+- {ha:.1e}) over its first half and {mb:.6} (+- {hb:.1e}) over its second, a change of {:+.2}%",
+                100.0 * (mb - ma) / ma.abs()
+            ));
+        }
+    }
+    (!found.is_empty()).then(|| Warning {
+        code: "unsteady",
+        message: format!(
+            "the steady-state window t >= {} is not steady: {}, beyond both 99.9% intervals. Its averages mix a transient into the steady state; start the window later (observe.steady_from) or run longer (observe.t_end).",
+            stats.times[st.first],
+            found.join("; ")
+        ),
+    })
+}
+
 /// Every warning of a finished run.
 pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     let mut w: Vec<Warning> = non_finite(stats).into_iter().collect();
+    w.extend(unsteady(stats));
     let c = stats.counts;
     // Splitting schemes: the stationary temperature of the Maxwell gas is off by exactly
     // k dt / 2 (Euler) and (k dt)^2 / 24 (Strang) to leading order (reference.rs,

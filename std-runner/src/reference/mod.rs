@@ -1,7 +1,9 @@
 //! The values a run is compared with: exact solutions ([`exact`]: GRW (13), BRS (14)-(17),
 //! MS's Sonine estimates and tail amplitudes), the BRS hydrodynamic closures ([`hydro`]), and
-//! which of them apply to a scene, as curves beside the observables ([`curves`]).
+//! which of them apply to a scene, as curves beside the observables ([`curves`]), and the
+//! balance of the Gaussian thermostat ([`thermostat`]).
 
 pub mod curves;
 pub mod exact;
 pub mod hydro;
+pub mod thermostat;

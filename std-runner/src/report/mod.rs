@@ -153,8 +153,19 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         .into_iter()
         .map(|w| serde_json::json!({ "code": w.code, "message": w.message }))
         .collect();
+    let t0 = crate::run::initial_sampler(scene).map_or(1.0, |f| f.temperature());
+    let thermostat = crate::reference::thermostat::GaussianBalance::of(scene, t0).map(|b| {
+        serde_json::json!({
+            "zeta": b.zeta,
+            "cooling_constant": b.kappa,
+            "steady_temperature": b.steady_temperature(),
+            "holding_zeta": b.holding_zeta(),
+            "note": b.describe(),
+        })
+    });
     serde_json::json!({
         "warnings": warnings,
+        "thermostat": thermostat,
         "reduced_distribution": reduced,
         "tail": tail,
         "steady_state": steady,
