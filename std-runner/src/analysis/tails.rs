@@ -22,6 +22,17 @@ pub struct TailFit {
     pub points: Vec<(usize, f64, f64)>,
 }
 
+/// GRW (16)'s asymptotic tail exponent of the heated gas, `1 + lambda/2`, for the scene's
+/// kernel.
+pub fn reference_exponent(scene: &crate::scene::Scene) -> f64 {
+    let lambda = match scene.physics.kernel {
+        crate::scene::KernelChoice::Maxwell { .. } => 0.0,
+        crate::scene::KernelChoice::HardSpheres { .. } => 1.0,
+        crate::scene::KernelChoice::Vhs { lambda, .. } => lambda,
+    };
+    1.0 + lambda / 2.0
+}
+
 /// The points `(k, x_k, y_k)` of GRW Section 4.3 (k0 = 1, shells k = 2..K, 1-based as GRW).
 pub fn tail_points(radius: f64, hist: &Accumulator) -> Vec<(usize, f64, f64)> {
     let kk = hist.len().saturating_sub(1);
@@ -53,7 +64,22 @@ pub fn tail_points(radius: f64, hist: &Accumulator) -> Vec<(usize, f64, f64)> {
 /// `None` with fewer than three points.
 pub fn fit(radius: f64, hist: &Accumulator) -> Option<TailFit> {
     let all = tail_points(radius, hist);
-    let points: Vec<(usize, f64, f64)> = all[all.len() / 2..].to_vec();
+    line(all[all.len() / 2..].to_vec())
+}
+
+/// The fit's two halves, inner and outer shells, fitted on their own: if the exponent has
+/// reached its asymptote (GRW (16)) they agree; a slope that still changes with the speed
+/// beyond both intervals means the fitted exponent is not yet the asymptotic one. `None` with
+/// fewer than three points in a half.
+pub fn halves(radius: f64, hist: &Accumulator) -> Option<(TailFit, TailFit)> {
+    let all = tail_points(radius, hist);
+    let used = &all[all.len() / 2..];
+    let mid = used.len() / 2;
+    Some((line(used[..mid].to_vec())?, line(used[mid..].to_vec())?))
+}
+
+/// The least-squares line through `points` with the 99.9% half-width of its slope.
+fn line(points: Vec<(usize, f64, f64)>) -> Option<TailFit> {
     let m = points.len();
     if m < 3 {
         return None;

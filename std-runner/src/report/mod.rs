@@ -123,17 +123,20 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         .as_ref()
         .and_then(|(radius, h)| crate::analysis::tails::fit(*radius, h))
         .map(|f| {
-            let lambda = match scene.physics.kernel {
-                crate::scene::KernelChoice::Maxwell { .. } => 0.0,
-                crate::scene::KernelChoice::HardSpheres { .. } => 1.0,
-                crate::scene::KernelChoice::Vhs { lambda, .. } => lambda,
-            };
             serde_json::json!({
                 "k0": 1,
                 "slope": f.slope,
                 "slope_ci": f.slope_ci,
                 "shells_used": f.points.len(),
-                "reference_exponent_grw_16": 1.0 + lambda / 2.0,
+                "reference_exponent_grw_16": crate::analysis::tails::reference_exponent(scene),
+                "halves": stats.histogram.as_ref().and_then(|(radius, h)| {
+                    crate::analysis::tails::halves(*radius, h)
+                }).map(|(a, b)| serde_json::json!({
+                    "inner": { "slope": a.slope, "slope_ci": a.slope_ci,
+                        "shells": [a.points[0].0, a.points[a.points.len() - 1].0] },
+                    "outer": { "slope": b.slope, "slope_ci": b.slope_ci,
+                        "shells": [b.points[0].0, b.points[b.points.len() - 1].0] },
+                })),
             })
         });
     let reduced = crate::analysis::distribution::reduced(scene, stats).map(|r| {

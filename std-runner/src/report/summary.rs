@@ -69,10 +69,11 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             Some(f) => {
                 let _ = writeln!(
                     s,
-                    "\ntail (GRW Section 4.3, k0 = 1, {} shells): exponent {:.3} +- {:.3} (GRW (16): 1 + lambda/2)",
+                    "\ntail (GRW Section 4.3, k0 = 1, {} shells): exponent {:.3} +- {:.3}; GRW (16), the asymptote of the heated gas: 1 + lambda/2 = {} (the interval is the fit's; whether the shells reach the asymptote is checked below)",
                     f.points.len(),
                     f.slope,
-                    f.slope_ci
+                    f.slope_ci,
+                    crate::analysis::tails::reference_exponent(scene)
                 );
             }
             None => {
