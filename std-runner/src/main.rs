@@ -139,9 +139,10 @@ enum Bench {
         /// A small ladder (n <= 4096) for a quick look.
         #[arg(long)]
         quick: bool,
-        /// The relative error at which the costs are compared (RW: 0.01).
-        #[arg(long, default_value_t = 0.01)]
-        target: f64,
+        /// The relative error at which the costs are compared (default: RW's 0.01; with
+        /// --quick, the smallest error every scheme of the small ladder reaches).
+        #[arg(long)]
+        target: Option<f64>,
         /// Worker threads (default: all cores).
         #[arg(long, default_value_t = 0, hide_default_value = true)]
         threads: usize,
@@ -317,6 +318,18 @@ fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
                 );
             })?;
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join("work-precision"));
+            let target = match (target, quick) {
+                (Some(t), _) => t,
+                (None, false) => 0.01,
+                (None, true) => {
+                    let t = bench::work_precision::reachable_target(&points).unwrap_or(0.01);
+                    println!(
+                        "\n--quick: costs compared at {:.2}% error, the smallest every scheme of the small ladder reached (RW compare at 1%: the full ladder, or --target)",
+                        100.0 * t
+                    );
+                    t
+                }
+            };
             let text = bench::work_precision::write(&dir, &sc.name, &points, target)?;
             print!("\n{text}");
             println!("wrote {}", dir.join("work_precision.svg").display());

@@ -263,6 +263,30 @@ pub fn chart(title: &str, points: &[Point]) -> Result<String, String> {
     )
 }
 
+/// The schemes compared, no splitting first (the base of the ratios).
+const SCHEMES: [&str; 3] = ["no-splitting", "strang", "euler"];
+
+/// The smallest relative error every scheme of the ladder reached (the largest of the
+/// schemes' smallest errors), rounded up to two significant digits: the error at which all
+/// costs can be compared. `None` when a scheme has no point.
+pub fn reachable_target(points: &[Point]) -> Option<f64> {
+    let mut worst: f64 = 0.0;
+    for scheme in SCHEMES {
+        worst = worst.max(best_error(points, scheme)?);
+    }
+    let unit = 10f64.powf(worst.log10().floor() - 1.0);
+    Some((worst / unit).ceil() * unit)
+}
+
+/// The smallest error a scheme reached in the ladder.
+fn best_error(points: &[Point], scheme: &str) -> Option<f64> {
+    points
+        .iter()
+        .filter(|p| p.config.scheme == scheme)
+        .map(|p| p.error)
+        .reduce(f64::min)
+}
+
 /// Writes work_precision.csv and work_precision.svg into `dir`; returns the summary text.
 pub fn write(dir: &Path, scene: &str, points: &[Point], target: f64) -> Result<String, Error> {
     std::fs::create_dir_all(dir).map_err(|source| Error::Write {
@@ -281,7 +305,7 @@ pub fn write(dir: &Path, scene: &str, points: &[Point], target: f64) -> Result<S
     }
     let mut s = String::new();
     let base = cost_at(points, "no-splitting", target);
-    for scheme in ["no-splitting", "strang", "euler"] {
+    for scheme in SCHEMES {
         let c = cost_at(points, scheme, target);
         let ratio = match (c, base) {
             (Some(c), Some(b)) => format!("{:.1}", c / b),
@@ -290,7 +314,16 @@ pub fn write(dir: &Path, scene: &str, points: &[Point], target: f64) -> Result<S
         s.push_str(&format!(
             "{scheme:<13} CPU per run at {}% error: {:>12}   ratio to no splitting: {ratio}\n",
             100.0 * target,
-            c.map_or("not reached".into(), |c| format!("{c:.3e} s"))
+            c.map_or_else(
+                || match best_error(points, scheme) {
+                    Some(b) => format!(
+                        "not reached (smallest error in the ladder {:.2}%)",
+                        100.0 * b
+                    ),
+                    None => "not run".into(),
+                },
+                |c| format!("{c:.3e} s")
+            )
         ));
     }
     Ok(s)
@@ -314,6 +347,37 @@ mod tests {
             exact_mean: 0.0,
             error,
         }
+    }
+
+    #[test]
+    fn the_reachable_target_is_reached_by_every_scheme() {
+        let p = |scheme, error| Point {
+            config: Config {
+                scheme,
+                n: 64,
+                dt: 0.0,
+            },
+            runs: 1,
+            cpu: 1.0,
+            mean: (1.0, 0.0),
+            sd: 0.0,
+            exact_mean: 1.0,
+            error,
+        };
+        let pts = [
+            p("no-splitting", 0.004),
+            p("no-splitting", 0.02),
+            p("strang", 0.0123),
+            p("euler", 0.031),
+            p("euler", 0.0456),
+        ];
+        // Euler's smallest error, 0.031, rounded up to two digits.
+        let t = reachable_target(&pts).unwrap();
+        assert!((t - 0.031).abs() < 1e-12, "{t}");
+        for s in SCHEMES {
+            assert!(cost_at(&pts, s, t).is_some(), "{s} does not reach {t}");
+        }
+        assert_eq!(reachable_target(&pts[..3]), None);
     }
 
     #[test]
