@@ -63,6 +63,10 @@ enum Command {
         /// updates, about a day of one core).
         #[arg(long)]
         allow_long: bool,
+        /// Chart formats, comma-separated: svg, png (twice the pixel size, for slides), pdf
+        /// (vector, for a paper).
+        #[arg(long, value_name = "svg,png,pdf", default_value = "svg")]
+        format: gdsmc_runner::report::charts::Formats,
     },
     /// Reproduce the tables of the four papers: our figures beside the published ones.
     ///
@@ -183,6 +187,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             out,
             set,
             allow_long,
+            format,
         } => {
             // --n, --ensembles and --seed are overrides of their scene keys: the same
             // validation as the file's, errors naming the flag.
@@ -234,7 +239,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 }
             }
             let refs = gdsmc_runner::reference::curves::for_scene(&sc);
-            gdsmc_runner::report::write_all(set.dir(), &sc, &stats, &refs)?;
+            gdsmc_runner::report::write_all(set.dir(), &sc, &stats, &refs, format)?;
             let written = set.commit(serde_json::json!({
                 "scene": sc.name,
                 "seed": sc.seed,

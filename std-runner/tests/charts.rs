@@ -12,7 +12,7 @@ fn a_run_writes_csv_json_and_svg() {
     let st = gdsmc_runner::run::run(&s, 1, &|_| {}).unwrap();
     let refs = gdsmc_runner::reference::curves::for_scene(&s);
     let dir = std::env::temp_dir().join(format!("gdsmc-charts-{}", std::process::id()));
-    gdsmc_runner::report::write_all(&dir, &s, &st, &refs).unwrap();
+    gdsmc_runner::report::write_all(&dir, &s, &st, &refs, Default::default()).unwrap();
     for f in [
         "observables.csv",
         "summary.json",
@@ -35,4 +35,80 @@ fn a_run_writes_csv_json_and_svg() {
     assert_eq!(json["ensembles"], 10);
     assert_eq!(json["interrupted"], false);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Every chart of every shipped scene (at n = 256, 4 ensembles) is drawn, rendered to PNG and
+/// checked as a reviewer would look at it: the legend shares no pixel with a plotting area,
+/// every drawn point, band corner and error-bar end lies inside a plotting area, a band is
+/// drawn only where it is taller than the line, the title names n and the ensembles; every
+/// observable has its chart.
+#[test]
+fn every_chart_of_every_shipped_scene_is_readable() {
+    use gdsmc_runner::report::charts::{self, export, frame::LINE_WIDTH};
+    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let mut names: Vec<PathBuf> = std::fs::read_dir(&scenes)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    names.sort();
+    assert!(names.len() >= 19, "shipped scenes missing");
+    let mut checked = 0;
+    for path in names {
+        let mut s = scene::load(&path).unwrap();
+        s.physics.n = 256;
+        s.ensembles = 4;
+        let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
+        let refs = gdsmc_runner::reference::curves::for_scene(&s);
+        let reduced = gdsmc_runner::analysis::distribution::reduced(&s, &st);
+        let marginal = gdsmc_runner::analysis::distribution::marginal(&st);
+        let title = charts::title(&s.name, s.n(), st.ensembles);
+        let all = charts::all(&title, &st, &refs, reduced.as_ref(), marginal.as_ref());
+        for &col in &st.names {
+            assert!(
+                all.iter().any(|(stem, c)| stem == col && c.is_ok()),
+                "{}: no chart of {col}",
+                s.name
+            );
+        }
+        for (stem, chart) in &all {
+            let Ok(c) = chart else { continue };
+            let g = &c.geometry;
+            let at = format!("{}: {stem}", s.name);
+            assert!(
+                g.title.contains("n = 256") && g.title.contains("4 ensembles"),
+                "{at}: title {}",
+                g.title
+            );
+            assert!(!g.plots.is_empty(), "{at}: no plotting area");
+            for p in &g.plots {
+                assert!(
+                    !g.legend.overlaps(p),
+                    "{at}: legend {:?} over the plot {:?}",
+                    g.legend,
+                    p
+                );
+            }
+            for &d in &g.data {
+                assert!(
+                    g.plots.iter().any(|p| p.contains(d)),
+                    "{at}: data at {d:?} outside the plotting areas {:?}",
+                    g.plots
+                );
+            }
+            if let Some(px) = g.band_px {
+                assert!(
+                    px > LINE_WIDTH as f64,
+                    "{at}: band of {px} px drawn under a {LINE_WIDTH} px line"
+                );
+            }
+            let png = export::png(&c.svg).unwrap_or_else(|e| panic!("{at}: PNG: {e}"));
+            assert!(
+                png.starts_with(b"\x89PNG") && png.len() > 1000,
+                "{at}: PNG empty"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 200, "only {checked} charts checked");
 }

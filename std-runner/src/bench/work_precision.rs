@@ -14,7 +14,7 @@
 
 use crate::error::Error;
 use crate::reference::curves::maxwell_temperature;
-use crate::report::charts::{Series, Style, profile_svg};
+use crate::report::charts::{Series, Style, profile};
 use crate::report::files::write_atomic;
 use crate::run;
 use crate::run::stats::LAMBDA_999;
@@ -254,13 +254,14 @@ pub fn chart(title: &str, points: &[Point]) -> Result<String, String> {
             color,
         });
     }
-    profile_svg(
+    profile(
         title,
         "log10 CPU seconds per run",
         "relative error of one run (99.9% bound)",
         true,
         &series,
     )
+    .map(|c| c.svg)
 }
 
 /// The schemes compared, no splitting first (the base of the ratios).

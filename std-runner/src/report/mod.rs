@@ -198,12 +198,14 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     })
 }
 
-/// Writes observables.csv, summary.json and the SVG charts into `dir` (created if missing).
+/// Writes observables.csv, summary.json and the charts (in `formats`) into `dir` (created if
+/// missing).
 pub fn write_all(
     dir: &Path,
     scene: &Scene,
     stats: &RunStats,
     refs: &[ReferenceCurve],
+    formats: charts::Formats,
 ) -> Result<(), Error> {
     std::fs::create_dir_all(dir).map_err(|source| Error::Write {
         path: dir.to_path_buf(),
@@ -241,14 +243,10 @@ pub fn write_all(
         let bytes = marginal_csv(m).map_err(|e| csv_err(&path, e))?;
         write_atomic(&path, &bytes)?;
     }
-    crate::report::charts::write_charts(dir, &scene.name, stats, refs)?;
-    crate::report::charts::write_distribution_charts(
-        dir,
-        &scene.name,
-        stats,
-        reduced.as_ref(),
-        marginal.as_ref(),
-    )
+    let title = charts::title(&scene.name, scene.n(), stats.ensembles);
+    let all = charts::all(&title, stats, refs, reduced.as_ref(), marginal.as_ref());
+    charts::write(dir, &all, formats)?;
+    Ok(())
 }
 
 /// reduced.csv: MS's reduced distribution per shell of `c = |v - V| / v0`: `c_lo, c_hi, f,

@@ -1,50 +1,75 @@
 //! The distribution charts: speed histogram, reduced distribution, Delta(c), G(c) and the
 //! marginal distribution.
 
-use super::profile::{Series, Style, profile_svg};
-use crate::error::Error;
-use crate::report::files::write_atomic;
+use super::frame::Chart;
+use super::profile::{Series, Style, profile};
 use crate::run::RunStats;
 use plotters::prelude::*;
-use std::path::Path;
 
-/// Writes the distribution charts a run has: histogram.svg (speed density, log scale, GRW
-/// (31)-(33)), reduced.svg (f~(c) beside phi, log scale), delta.svg (Delta(c) beside
-/// S_2(c^2), MS Figures 2, 5, 9), G.svg (G(c), log scale, MS Figures 3, 7, 10) and
-/// marginal.svg (BRS Figure 4, log scale).
-pub fn write_distribution_charts(
-    dir: &Path,
+/// The distribution charts a run has, `(file stem, chart)`: histogram (speed density, log
+/// scale, GRW (31)-(33), with the Maxwellian of the run's temperature), reduced (f~(c) beside
+/// phi, log scale), delta (Delta(c) beside S_2(c^2), MS Figures 2, 5, 9), G (G(c), log scale,
+/// MS Figures 3, 7, 10) and marginal (BRS Figure 4, log scale). `scene` heads each title.
+pub fn distribution_charts(
     scene: &str,
     stats: &RunStats,
     reduced: Option<&crate::analysis::distribution::Reduced>,
     marginal: Option<&crate::analysis::distribution::Marginal>,
-) -> Result<(), Error> {
-    let mut charts: Vec<(&str, Result<String, String>)> = Vec::new();
+) -> Vec<(String, Result<Chart, String>)> {
+    let mut charts: Vec<(&str, Result<Chart, String>)> = Vec::new();
     if let Some((radius, h)) = &stats.histogram {
         let k = h.len() - 1;
+        // Shell i: [lo, hi) and its volume.
+        let shell = |i: usize| {
+            let (lo, hi) = (
+                radius * i as f64 / k as f64,
+                radius * (i + 1) as f64 / k as f64,
+            );
+            (
+                lo,
+                hi,
+                4.0 / 3.0 * std::f64::consts::PI * (hi.powi(3) - lo.powi(3)),
+            )
+        };
         let pts = (0..k)
             .map(|i| {
-                let (lo, hi) = (
-                    radius * i as f64 / k as f64,
-                    radius * (i + 1) as f64 / k as f64,
-                );
-                let vol = 4.0 / 3.0 * std::f64::consts::PI * (hi.powi(3) - lo.powi(3));
+                let (lo, hi, vol) = shell(i);
                 (0.5 * (lo + hi), h.mean(i) / vol, h.ci(i) / vol)
             })
-            .collect();
+            .collect::<Vec<_>>();
+        // The Maxwellian with the run's temperature at the last observation (GRW's T, about
+        // zero velocity, as the shells are), averaged over each shell as the histogram is.
+        let last = stats.times.len() - 1;
+        let temperature = stats.col("T").map_or(f64::NAN, |c| stats.mean(last, c));
+        let maxwellian = (0..k)
+            .map(|i| {
+                let (lo, hi, vol) = shell(i);
+                (0.5 * (lo + hi), shell_mass(lo, hi, temperature) / vol, 0.0)
+            })
+            .collect::<Vec<_>>();
         charts.push((
-            "histogram.svg",
-            profile_svg(
+            "histogram",
+            profile(
                 &format!("{scene}: speed density (GRW (31)-(33)), last observation"),
                 "|v|",
                 "f(|v|) per unit volume",
                 true,
-                &[Series {
-                    label: "shells, 99.9% bars".into(),
-                    points: pts,
-                    style: Style::Points,
-                    color: BLUE,
-                }],
+                &[
+                    Series {
+                        label: "shells, 99.9% bars".into(),
+                        points: pts,
+                        style: Style::Points,
+                        color: BLUE,
+                    },
+                    Series {
+                        label: format!(
+                            "Maxwellian of the same T = {temperature:.4} (about 0), for comparison"
+                        ),
+                        points: maxwellian,
+                        style: Style::Dashed,
+                        color: BLACK,
+                    },
+                ],
             ),
         ));
     }
@@ -80,8 +105,8 @@ pub fn write_distribution_charts(
             if s.f.0 > 0.0 { s.density / s.f.0 } else { 0.0 }
         };
         charts.push((
-            "reduced.svg",
-            profile_svg(
+            "reduced",
+            profile(
                 &format!("{scene}: reduced distribution f(c), c = |v - V| / v0"),
                 "c",
                 "f(c)",
@@ -103,8 +128,8 @@ pub fn write_distribution_charts(
             ),
         ));
         charts.push((
-            "delta.svg",
-            profile_svg(
+            "delta",
+            profile(
                 &format!(
                     "{scene}: Delta(c) = (f/phi - 1)/a2 (MS (45)), a2 = {:.4}",
                     r.a2.0
@@ -130,8 +155,8 @@ pub fn write_distribution_charts(
         ));
         if let Some(t) = &r.tail {
             charts.push((
-                "G.svg",
-                profile_svg(
+                "G",
+                profile(
                     &format!(
                         "{scene}: G(c) = exp(A c^{}) f(c), A = {:.3} ({})",
                         t.power, t.amplitude, t.equation
@@ -178,8 +203,8 @@ pub fn write_distribution_charts(
                 .collect::<Vec<_>>()
         };
         charts.push((
-            "marginal.svg",
-            profile_svg(
+            "marginal",
+            profile(
                 &format!("{scene}: marginal f_1 of v_{} (BRS Figure 4)", m.axis + 1),
                 &format!("v_{}", m.axis + 1),
                 "density",
@@ -213,11 +238,18 @@ pub fn write_distribution_charts(
             ),
         ));
     }
-    for (file, svg) in charts {
-        match svg {
-            Ok(svg) => write_atomic(&dir.join(file), svg.as_bytes())?,
-            Err(e) => eprintln!("chart {file}: not drawn ({e})"),
-        }
-    }
-    Ok(())
+    charts
+        .into_iter()
+        .map(|(stem, c)| (stem.to_string(), c))
+        .collect()
+}
+
+/// The probability that a Maxwellian speed of temperature `t` (per component) lies in
+/// `[lo, hi)`: `erf(x) - 2 x exp(-x^2) / sqrt(pi)` at `x = r / sqrt(2 t)`, differenced.
+fn shell_mass(lo: f64, hi: f64, t: f64) -> f64 {
+    let cdf = |r: f64| {
+        let x = r / (2.0 * t).sqrt();
+        statrs::function::erf::erf(x) - 2.0 * x * (-x * x).exp() / std::f64::consts::PI.sqrt()
+    };
+    cdf(hi) - cdf(lo)
 }

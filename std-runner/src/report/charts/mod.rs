@@ -1,12 +1,94 @@
-//! SVG charts: each observable against time, its 99.9% confidence band shaded, the reference
-//! curves dashed. Written next to observables.csv, atomically.
+//! Charts: each observable against time (its 99.9% band, the references dashed, a residual
+//! panel), the distribution and tail charts, all with the legend in a column beside the data
+//! (`frame.rs`), written as SVG, PNG or PDF (`export.rs`) next to observables.csv, atomically.
 
 pub mod distribution;
+pub mod export;
+pub mod frame;
 pub mod profile;
 pub mod tail;
 pub mod time;
 
-pub use distribution::write_distribution_charts;
-pub use profile::{Series, Style, profile_svg};
-pub use tail::tail_svg;
-pub use time::{CHARTED, chart_svg, write_charts};
+pub use distribution::distribution_charts;
+pub use export::Formats;
+pub use frame::Chart;
+pub use profile::{Series, Style, profile};
+pub use tail::tail;
+
+use crate::error::Error;
+use crate::reference::curves::ReferenceCurve;
+use crate::report::files::write_atomic;
+use crate::run::RunStats;
+use std::path::Path;
+
+/// Every chart of a run, `(file stem, chart)`: one per observable, the tail plot when there is
+/// a histogram, the distribution charts. `title` (scene, n, ensembles) heads each.
+pub fn all(
+    title: &str,
+    stats: &RunStats,
+    refs: &[ReferenceCurve],
+    reduced: Option<&crate::analysis::distribution::Reduced>,
+    marginal: Option<&crate::analysis::distribution::Marginal>,
+) -> Vec<(String, Result<Chart, String>)> {
+    let mut out = time::charts(title, stats, refs);
+    if let Some((radius, h)) = &stats.histogram
+        && let Some(fit) = crate::analysis::tails::fit(*radius, h)
+    {
+        let points = crate::analysis::tails::tail_points(*radius, h);
+        out.push((
+            "tail".into(),
+            tail(&format!("{title}: tail (GRW Section 4.3)"), &fit, &points),
+        ));
+    }
+    out.extend(distribution_charts(title, stats, reduced, marginal));
+    out
+}
+
+/// The title every chart of a run starts with: scene, particles, ensembles.
+pub fn title(scene: &str, n: usize, ensembles: u64) -> String {
+    format!("{scene}, n = {n}, {ensembles} ensembles")
+}
+
+/// Writes every chart of a run into `dir` in the chosen formats; returns the files written.
+pub fn write(
+    dir: &Path,
+    charts: &[(String, Result<Chart, String>)],
+    formats: Formats,
+) -> Result<Vec<String>, Error> {
+    let mut written = Vec::new();
+    if (formats.png || formats.pdf) && !export::have_fonts() {
+        eprintln!(
+            "charts: no system fonts found; PNG and PDF charts have no text (install fonts-dejavu-core)"
+        );
+    }
+    for (stem, chart) in charts {
+        let chart = match chart {
+            Ok(c) => c,
+            Err(e) => {
+                eprintln!("chart {stem}: not drawn ({e})");
+                continue;
+            }
+        };
+        let mut put = |ext: &str, bytes: Result<Vec<u8>, String>| -> Result<(), Error> {
+            match bytes {
+                Ok(b) => {
+                    let name = format!("{stem}.{ext}");
+                    write_atomic(&dir.join(&name), &b)?;
+                    written.push(name);
+                }
+                Err(e) => eprintln!("chart {stem}.{ext}: not written ({e})"),
+            }
+            Ok(())
+        };
+        if formats.svg {
+            put("svg", Ok(chart.svg.clone().into_bytes()))?;
+        }
+        if formats.png {
+            put("png", export::png(&chart.svg))?;
+        }
+        if formats.pdf {
+            put("pdf", export::pdf(&chart.svg))?;
+        }
+    }
+    Ok(written)
+}

@@ -1,6 +1,7 @@
 //! Profile charts: series of points with error bars, lines and dashed references against a
 //! variable other than time (speed, reduced speed, a velocity component).
 
+use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Swatch, plot_rect};
 use plotters::prelude::*;
 
 /// How a series of a profile chart is drawn.
@@ -27,13 +28,13 @@ pub struct Series {
 }
 
 /// A chart of several series against one variable, on a linear or logarithmic y axis.
-pub fn profile_svg(
+pub fn profile(
     title: &str,
     x_desc: &str,
     y_desc: &str,
     log_y: bool,
     series: &[Series],
-) -> Result<String, String> {
+) -> Result<Chart, String> {
     let keep = |p: &&(f64, f64, f64)| p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0);
     let (mut x0, mut x1, mut y0, mut y1) = (
         f64::INFINITY,
@@ -48,8 +49,13 @@ pub fn profile_svg(
             x0 = x0.min(p.0);
             x1 = x1.max(p.0);
             if s.style == Style::Points || !has_points {
-                y0 = y0.min(p.1);
-                y1 = y1.max(p.1);
+                let bar = if s.style == Style::Points && p.2.is_finite() {
+                    p.2
+                } else {
+                    0.0
+                };
+                y0 = y0.min(if log_y { p.1 } else { p.1 - bar });
+                y1 = y1.max(p.1 + bar);
             }
         }
     }
@@ -67,15 +73,25 @@ pub fn profile_svg(
         (y0 - pad, y1 + pad)
     };
     let mut svg = String::new();
+    let mut geometry = Geometry::new(title);
+    let entries: Vec<Entry> = series
+        .iter()
+        .map(|s| {
+            let sw = match s.style {
+                Style::Points => Swatch::Point(s.color),
+                Style::Line => Swatch::Line(s.color),
+                Style::Dashed => Swatch::Dashed(s.color, 6, 4),
+            };
+            Entry::new(sw, s.label.clone())
+        })
+        .collect();
     {
-        let root = SVGBackend::with_string(&mut svg, (800, 500)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let mut builder = ChartBuilder::on(&root);
+        let frame = Frame::new(&mut svg, title)?;
+        let mut builder = ChartBuilder::on(&frame.plot);
         builder
-            .caption(title, ("sans-serif", 20))
-            .margin(12)
+            .margin(10)
             .x_label_area_size(40)
-            .y_label_area_size(70);
+            .y_label_area_size(80);
         macro_rules! draw {
             ($chart:expr) => {{
                 let mut chart = $chart;
@@ -89,30 +105,35 @@ pub fn profile_svg(
                     .y_label_formatter(fmt)
                     .draw()
                     .map_err(|e| e.to_string())?;
+                let (xr, yr) = chart.plotting_area().get_pixel_range();
+                geometry.plots.push(plot_rect(xr, yr));
                 for s in series {
                     let pts: Vec<(f64, f64, f64)> = s.points.iter().filter(keep).copied().collect();
                     let color = s.color;
                     match s.style {
                         Style::Points => {
-                            chart
-                                .draw_series(pts.iter().map(|p| {
+                            let bars: Vec<(f64, f64, f64)> = pts
+                                .iter()
+                                .map(|p| {
+                                    let e = if p.2.is_finite() { p.2 } else { 0.0 };
                                     let lo = if log_y {
-                                        (p.1 - p.2).max(p.1 * 1e-3)
+                                        (p.1 - e).max(p.1 * 1e-3).max(y_lo)
                                     } else {
-                                        p.1 - p.2
+                                        p.1 - e
                                     };
-                                    ErrorBar::new_vertical(
-                                        p.0,
-                                        lo,
-                                        p.1,
-                                        p.1 + p.2,
-                                        color.filled(),
-                                        4,
-                                    )
+                                    (p.0, lo, (p.1 + e).min(y_hi))
+                                })
+                                .collect();
+                            chart
+                                .draw_series(pts.iter().zip(&bars).map(|(p, b)| {
+                                    ErrorBar::new_vertical(p.0, b.1, p.1, b.2, color.filled(), 4)
                                 }))
-                                .map_err(|e| e.to_string())?
-                                .label(s.label.clone())
-                                .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
+                                .map_err(|e| e.to_string())?;
+                            for (p, b) in pts.iter().zip(&bars) {
+                                geometry.data.push(chart.backend_coord(&(p.0, p.1)));
+                                geometry.data.push(chart.backend_coord(&(p.0, b.1)));
+                                geometry.data.push(chart.backend_coord(&(p.0, b.2)));
+                            }
                         }
                         Style::Line | Style::Dashed => {
                             let xy: Vec<(f64, f64)> = pts
@@ -120,32 +141,26 @@ pub fn profile_svg(
                                 .filter(|p| p.1 >= y_lo && p.1 <= y_hi)
                                 .map(|p| (p.0, p.1))
                                 .collect();
-                            let dashed = s.style == Style::Dashed;
-                            if dashed {
+                            geometry
+                                .data
+                                .extend(xy.iter().map(|p| chart.backend_coord(p)));
+                            if s.style == Style::Dashed {
                                 chart.draw_series(DashedLineSeries::new(
                                     xy,
                                     6,
                                     4,
-                                    color.stroke_width(2),
+                                    color.stroke_width(LINE_WIDTH),
                                 ))
                             } else {
-                                chart.draw_series(LineSeries::new(xy, color.stroke_width(2)))
+                                chart.draw_series(LineSeries::new(
+                                    xy,
+                                    color.stroke_width(LINE_WIDTH),
+                                ))
                             }
-                            .map_err(|e| e.to_string())?
-                            .label(s.label.clone())
-                            .legend(move |(x, y)| {
-                                PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2))
-                            });
+                            .map_err(|e| e.to_string())?;
                         }
                     }
                 }
-                chart
-                    .configure_series_labels()
-                    .background_style(WHITE.mix(0.8))
-                    .border_style(BLACK)
-                    .position(SeriesLabelPosition::UpperRight)
-                    .draw()
-                    .map_err(|e| e.to_string())?;
             }};
         }
         if log_y {
@@ -162,7 +177,8 @@ pub fn profile_svg(
                     .map_err(|e| e.to_string())?
             );
         }
-        root.present().map_err(|e| e.to_string())?;
+        geometry.legend = frame.legend(&entries)?;
+        frame.present()?;
     }
-    Ok(svg)
+    Ok(Chart { svg, geometry })
 }

@@ -1,33 +1,50 @@
 //! The tail chart of GRW Figures 7-9: shell points, the fitted line and reference slopes.
 
+use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Swatch, plot_rect};
 use plotters::prelude::*;
 
-/// The tail plot of GRW Section 4.3 (GRW Figures 7-9): the points `(x_k, y_k)`, the fitted line,
-/// and the lines of slope 1, 5/4 and 3/2 through the fit's centre for comparison.
-pub fn tail_svg(
+/// The tail plot of GRW Section 4.3 (GRW Figures 7-9): the points `(x_k, y_k)`, the fitted
+/// line, and the lines of slope 1, 5/4 and 3/2 (GRW (16): Maxwell, VHS 1/2, hard spheres)
+/// through the fit's centre for comparison.
+pub fn tail(
     title: &str,
     fit: &crate::analysis::tails::TailFit,
     all: &[(usize, f64, f64)],
-) -> Result<String, String> {
+) -> Result<Chart, String> {
+    let (x0, x1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
+        (a.0.min(p.1), a.1.max(p.1))
+    });
+    let (y0, y1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
+        (a.0.min(p.2), a.1.max(p.2))
+    });
+    if !(x0 < x1 && y0 < y1) {
+        return Err("too few points".into());
+    }
+    let (lo, hi) = (y0 - 0.5, y1 + 0.5);
     let mut svg = String::new();
+    let mut geometry = Geometry::new(title);
+    let slopes = [
+        (1.0, BLACK, 2, 3),
+        (1.25, GREEN, 6, 4),
+        (1.5, MAGENTA, 14, 5),
+    ];
+    let mut entries = vec![
+        Entry::new(Swatch::Point(BLUE), "shells (GRW (31)-(33))"),
+        Entry::new(
+            Swatch::Line(RED),
+            format!(
+                "fit over the outer half: slope {:.3} +- {:.3}",
+                fit.slope, fit.slope_ci
+            ),
+        ),
+    ];
     {
-        let root = SVGBackend::with_string(&mut svg, (800, 500)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let (x0, x1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
-            (a.0.min(p.1), a.1.max(p.1))
-        });
-        let (y0, y1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
-            (a.0.min(p.2), a.1.max(p.2))
-        });
-        if !(x0 < x1 && y0 < y1) {
-            return Err("too few points".into());
-        }
-        let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 22))
-            .margin(12)
+        let frame = Frame::new(&mut svg, title)?;
+        let mut chart = ChartBuilder::on(&frame.plot)
+            .margin(10)
             .x_label_area_size(40)
             .y_label_area_size(60)
-            .build_cartesian_2d(x0..x1, (y0 - 0.5)..(y1 + 0.5))
+            .build_cartesian_2d(x0..x1, lo..hi)
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
@@ -35,49 +52,52 @@ pub fn tail_svg(
             .y_desc("y = ln(ln f_1 - ln f_k)")
             .draw()
             .map_err(|e| e.to_string())?;
+        let (xr, yr) = chart.plotting_area().get_pixel_range();
+        geometry.plots.push(plot_rect(xr, yr));
         chart
             .draw_series(
                 all.iter()
                     .map(|p| Circle::new((p.1, p.2), 3, BLUE.filled())),
             )
-            .map_err(|e| e.to_string())?
-            .label("shells (GRW (31)-(33))")
-            .legend(|(x, y)| Circle::new((x + 10, y), 3, BLUE.filled()));
+            .map_err(|e| e.to_string())?;
+        geometry
+            .data
+            .extend(all.iter().map(|p| chart.backend_coord(&(p.1, p.2))));
         let (mx, my) = fit
             .points
             .iter()
             .fold((0.0, 0.0), |a, p| (a.0 + p.1, a.1 + p.2));
         let (mx, my) = (mx / fit.points.len() as f64, my / fit.points.len() as f64);
-        let line = |b: f64| vec![(x0, my + b * (x0 - mx)), (x1, my + b * (x1 - mx))];
+        // Each line clipped to the plotting area.
+        let line = |b: f64| -> Vec<(f64, f64)> {
+            (0..=200)
+                .map(|i| x0 + (x1 - x0) * i as f64 / 200.0)
+                .map(|x| (x, my + b * (x - mx)))
+                .filter(|p| p.1 >= lo && p.1 <= hi)
+                .collect()
+        };
         chart
-            .draw_series(std::iter::once(PathElement::new(
+            .draw_series(LineSeries::new(
                 line(fit.slope),
-                RED.stroke_width(2),
-            )))
-            .map_err(|e| e.to_string())?
-            .label(format!(
-                "fit: slope {:.3} +- {:.3}",
-                fit.slope, fit.slope_ci
+                RED.stroke_width(LINE_WIDTH),
             ))
-            .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], RED.stroke_width(2)));
-        for (b, c) in [(1.0, BLACK), (1.25, GREEN), (1.5, MAGENTA)] {
-            chart
-                .draw_series(std::iter::once(PathElement::new(
-                    line(b),
-                    c.stroke_width(1),
-                )))
-                .map_err(|e| e.to_string())?
-                .label(format!("slope {b}"))
-                .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], c.stroke_width(1)));
-        }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperLeft)
-            .draw()
             .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
+        for (b, c, dash, gap) in slopes {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    line(b),
+                    dash,
+                    gap,
+                    c.stroke_width(LINE_WIDTH),
+                ))
+                .map_err(|e| e.to_string())?;
+            entries.push(Entry::new(
+                Swatch::Dashed(c, dash as u32, gap as u32),
+                format!("slope {b} (GRW (16))"),
+            ));
+        }
+        geometry.legend = frame.legend(&entries)?;
+        frame.present()?;
     }
-    Ok(svg)
+    Ok(Chart { svg, geometry })
 }

@@ -1,159 +1,229 @@
-//! Each observable against time, its 99.9% confidence band shaded, the reference curves
-//! dashed.
+//! Each observable against time: the ensemble mean, its 99.9% confidence band shaded where it
+//! is wider than the line, the reference curves dashed (each its own dash), and, when a
+//! reference applies, a residual panel below: `(mean - reference) / half-width`, where the
+//! 99.9% interval is the strip between -1 and 1 whatever the band's size on the upper panel.
 
-use super::tail::tail_svg;
-use crate::error::Error;
+use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Swatch, plot_rect};
 use crate::reference::curves::ReferenceCurve;
-use crate::report::files::write_atomic;
 use crate::run::RunStats;
 use plotters::prelude::*;
-use std::path::Path;
 
-/// The observables drawn, when present.
-pub const CHARTED: [&str; 9] = [
-    "T",
-    "T_bulk",
-    "log10_T_bulk",
-    "V_norm",
-    "a2",
-    "a3",
-    "crit",
-    "mu2",
-    "mu4",
-];
+/// Colours and dashes of the reference curves, in order.
+const REF_STYLES: [(RGBColor, u32, u32); 4] =
+    [(RED, 12, 5), (GREEN, 4, 4), (MAGENTA, 18, 6), (BLACK, 2, 4)];
 
-/// One chart as SVG text.
-pub fn chart_svg(
+/// The reference the residual panel measures against: the exact ensemble mean at this n when
+/// there is one (it is what the mean estimates), else the first.
+fn residual_reference<'a>(refs: &[&'a ReferenceCurve]) -> Option<&'a ReferenceCurve> {
+    refs.iter()
+        .find(|r| r.name.ends_with("_mean_n"))
+        .or(refs.first())
+        .copied()
+}
+
+/// One observable's chart (column `col`) with the reference curves `refs`.
+pub fn chart(
     stats: &RunStats,
     col: usize,
     title: &str,
     refs: &[&ReferenceCurve],
-) -> Result<String, String> {
+) -> Result<Chart, String> {
     let name = stats.names[col];
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (800, 500)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let t = &stats.times;
-        let pts: Vec<(f64, f64, f64)> = (0..t.len())
-            .map(|i| (t[i], stats.mean(i, col), stats.ci(i, col)))
-            .collect();
-        let finite = |x: &f64| x.is_finite();
-        let mut lo = pts
-            .iter()
-            .map(|p| p.1 - if p.2.is_finite() { p.2 } else { 0.0 })
-            .filter(finite)
-            .fold(f64::INFINITY, f64::min);
-        let mut hi = pts
-            .iter()
-            .map(|p| p.1 + if p.2.is_finite() { p.2 } else { 0.0 })
-            .filter(finite)
-            .fold(f64::NEG_INFINITY, f64::max);
-        for r in refs {
-            for &x in t {
-                let y = (r.curve)(x);
-                if y.is_finite() {
-                    lo = lo.min(y);
-                    hi = hi.max(y);
-                }
+    let t = &stats.times;
+    let pts: Vec<(f64, f64, f64)> = (0..t.len())
+        .map(|i| (t[i], stats.mean(i, col), stats.ci(i, col)))
+        .filter(|p| p.1.is_finite())
+        .collect();
+    if pts.is_empty() {
+        return Err("no finite values to draw".into());
+    }
+    let ci = |p: &(f64, f64, f64)| if p.2.is_finite() { p.2 } else { 0.0 };
+    let mut lo = pts
+        .iter()
+        .map(|p| p.1 - ci(p))
+        .fold(f64::INFINITY, f64::min);
+    let mut hi = pts
+        .iter()
+        .map(|p| p.1 + ci(p))
+        .fold(f64::NEG_INFINITY, f64::max);
+    for r in refs {
+        for &x in t {
+            let y = (r.curve)(x);
+            if y.is_finite() {
+                lo = lo.min(y);
+                hi = hi.max(y);
             }
         }
-        if !(lo.is_finite() && hi.is_finite()) {
-            return Err("no finite values to draw".into());
-        }
-        let pad = if hi > lo {
-            0.05 * (hi - lo)
+    }
+    let pad = if hi > lo {
+        0.05 * (hi - lo)
+    } else {
+        0.5 * lo.abs().max(1e-300)
+    };
+    let (t0, t1) = (t[0], t[t.len() - 1].max(t[0] + 1e-300));
+    let residual = residual_reference(refs).and_then(|r| {
+        let rs: Vec<(f64, f64)> = pts
+            .iter()
+            .filter(|p| p.2.is_finite() && p.2 > 0.0)
+            .map(|p| (p.0, (p.1 - (r.curve)(p.0)) / p.2))
+            .filter(|p| p.1.is_finite())
+            .collect();
+        (!rs.is_empty()).then_some((r, rs))
+    });
+
+    let mut svg = String::new();
+    let mut geometry = Geometry::new(title);
+    let mut entries = Vec::new();
+    {
+        let frame = Frame::new(&mut svg, title)?;
+        let (upper, lower) = if residual.is_some() {
+            let h = frame.plot.dim_in_pixel().1;
+            let (a, b) = frame.plot.split_vertically((h as f64 * 0.66) as u32);
+            (a, Some(b))
         } else {
-            0.5 * lo.abs().max(1e-300)
+            (frame.plot.clone(), None)
         };
-        let (t0, t1) = (t[0], t[t.len() - 1].max(t[0] + 1e-300));
-        let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 22))
-            .margin(12)
-            .x_label_area_size(40)
+        let mut c = ChartBuilder::on(&upper)
+            .margin(10)
+            .x_label_area_size(if lower.is_some() { 20 } else { 40 })
             .y_label_area_size(80)
             .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
             .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_desc("t")
-            .y_desc(name)
-            .draw()
-            .map_err(|e| e.to_string())?;
-        let band: Vec<(f64, f64)> = pts
+        let mut mesh = c.configure_mesh();
+        mesh.y_desc(name);
+        if lower.is_none() {
+            mesh.x_desc("t");
+        }
+        mesh.draw().map_err(|e| e.to_string())?;
+        let (xr, yr) = c.plotting_area().get_pixel_range();
+        geometry.plots.push(plot_rect(xr, yr.clone()));
+        // The band is drawn where it can be seen: its tallest extent in pixels above the
+        // line's width.
+        let px_per_unit = (yr.end - yr.start) as f64 / (hi + pad - (lo - pad));
+        let band_px = pts
             .iter()
-            .map(|p| (p.0, p.1 + p.2))
-            .chain(pts.iter().rev().map(|p| (p.0, p.1 - p.2)))
-            .filter(|p| p.1.is_finite())
-            .collect();
-        chart
-            .draw_series(std::iter::once(Polygon::new(band, BLUE.mix(0.2).filled())))
-            .map_err(|e| e.to_string())?
-            .label("99.9% confidence band")
-            .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], BLUE.mix(0.2).filled()));
-        chart
-            .draw_series(LineSeries::new(
-                pts.iter().map(|p| (p.0, p.1)),
-                BLUE.stroke_width(2),
-            ))
-            .map_err(|e| e.to_string())?
-            .label("ensemble mean")
-            .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLUE.stroke_width(2)));
-        let colors = [RED, GREEN, MAGENTA, BLACK];
+            .map(|p| 2.0 * ci(p) * px_per_unit)
+            .fold(0.0, f64::max);
+        if band_px > (LINE_WIDTH + 1) as f64 {
+            let band: Vec<(f64, f64)> = pts
+                .iter()
+                .map(|p| (p.0, p.1 + ci(p)))
+                .chain(pts.iter().rev().map(|p| (p.0, p.1 - ci(p))))
+                .collect();
+            geometry
+                .data
+                .extend(band.iter().map(|p| c.backend_coord(p)));
+            c.draw_series(std::iter::once(Polygon::new(band, BLUE.mix(0.25).filled())))
+                .map_err(|e| e.to_string())?;
+            geometry.band_px = Some(band_px);
+            entries.push(Entry::new(Swatch::Band(BLUE), "99.9% confidence band"));
+        } else {
+            entries.push(Entry::new(
+                Swatch::None,
+                format!(
+                    "99.9% band: thinner than the line ({:.1} px at most){}",
+                    band_px,
+                    if residual.is_some() {
+                        "; see the residuals below"
+                    } else {
+                        ""
+                    }
+                ),
+            ));
+        }
+        c.draw_series(LineSeries::new(
+            pts.iter().map(|p| (p.0, p.1)),
+            BLUE.stroke_width(LINE_WIDTH),
+        ))
+        .map_err(|e| e.to_string())?;
+        geometry
+            .data
+            .extend(pts.iter().map(|p| c.backend_coord(&(p.0, p.1))));
+        entries.push(Entry::new(
+            Swatch::Line(BLUE),
+            format!("{name}: mean of {} ensembles", stats.ensembles),
+        ));
         for (k, r) in refs.iter().enumerate() {
-            let c = colors[k % colors.len()];
+            let (color, dash, gap) = REF_STYLES[k % REF_STYLES.len()];
             let n = 400;
             let line: Vec<(f64, f64)> = (0..=n)
                 .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
                 .map(|x| (x, (r.curve)(x)))
+                .filter(|p| p.1.is_finite())
                 .collect();
-            // Dashes: every other short segment.
-            let dashes = line
-                .chunks(4)
-                .step_by(2)
-                .map(|seg| PathElement::new(seg.to_vec(), c.stroke_width(2)));
-            chart
-                .draw_series(dashes)
-                .map_err(|e| e.to_string())?
-                .label(format!("{} ({})", r.name, r.source))
-                .legend(move |(x, y)| PathElement::new([(x, y), (x + 8, y)], c.stroke_width(2)));
-        }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::LowerRight)
-            .draw()
+            c.draw_series(DashedLineSeries::new(
+                line,
+                dash as i32,
+                gap as i32,
+                color.stroke_width(LINE_WIDTH),
+            ))
             .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
+            entries.push(Entry::new(
+                Swatch::Dashed(color, dash, gap),
+                format!("{} ({})", r.name, r.source),
+            ));
+        }
+        if let (Some(lower), Some((r, rs))) = (lower, &residual) {
+            let top = rs.iter().map(|p| p.1.abs()).fold(1.5, f64::max) * 1.1;
+            let mut d = ChartBuilder::on(&lower)
+                .margin(10)
+                .x_label_area_size(40)
+                .y_label_area_size(80)
+                .build_cartesian_2d(t0..t1, -top..top)
+                .map_err(|e| e.to_string())?;
+            d.configure_mesh()
+                .x_desc("t")
+                .y_desc("residual")
+                .y_labels(5)
+                .draw()
+                .map_err(|e| e.to_string())?;
+            let (xr, yr) = d.plotting_area().get_pixel_range();
+            geometry.plots.push(plot_rect(xr, yr));
+            for y in [-1.0, 1.0] {
+                d.draw_series(DashedLineSeries::new(
+                    [(t0, y), (t1, y)],
+                    6,
+                    4,
+                    RGBColor(120, 120, 120).stroke_width(1),
+                ))
+                .map_err(|e| e.to_string())?;
+            }
+            d.draw_series(std::iter::once(PathElement::new(
+                [(t0, 0.0), (t1, 0.0)],
+                BLACK.stroke_width(1),
+            )))
+            .map_err(|e| e.to_string())?;
+            d.draw_series(rs.iter().map(|p| Circle::new(*p, 3, BLUE.filled())))
+                .map_err(|e| e.to_string())?;
+            geometry.data.extend(rs.iter().map(|p| d.backend_coord(p)));
+            entries.push(Entry::new(
+                Swatch::Marker(BLUE),
+                format!(
+                    "residual (lower panel): (mean - {}) / 99.9% half-width; inside the dashed lines at +-1 = inside the interval",
+                    r.name
+                ),
+            ));
+        }
+        geometry.legend = frame.legend(&entries)?;
+        frame.present()?;
     }
-    Ok(svg)
+    Ok(Chart { svg, geometry })
 }
 
-/// Writes `NAME.svg` for every charted observable of the run into `dir`.
-pub fn write_charts(
-    dir: &Path,
-    scene: &str,
+/// Every observable's chart, `(file stem, chart)`, in the order of the columns; `title`
+/// heads each (scene, size, ensembles) before the observable's name.
+pub fn charts(
+    title: &str,
     stats: &RunStats,
     refs: &[ReferenceCurve],
-) -> Result<(), Error> {
-    for name in CHARTED {
-        let Some(col) = stats.col(name) else { continue };
+) -> Vec<(String, Result<Chart, String>)> {
+    let mut out = Vec::new();
+    for (col, &name) in stats.names.iter().enumerate() {
         let these: Vec<&ReferenceCurve> = refs.iter().filter(|r| r.of == name).collect();
-        let title = format!("{scene}: {name}, {} ensembles", stats.ensembles);
-        match chart_svg(stats, col, &title, &these) {
-            Ok(svg) => write_atomic(&dir.join(format!("{name}.svg")), svg.as_bytes())?,
-            Err(e) => eprintln!("chart {name}: not drawn ({e})"),
-        }
+        out.push((
+            name.to_string(),
+            chart(stats, col, &format!("{title}: {name}"), &these),
+        ));
     }
-    if let Some((radius, h)) = &stats.histogram
-        && let Some(fit) = crate::analysis::tails::fit(*radius, h)
-    {
-        let all = crate::analysis::tails::tail_points(*radius, h);
-        match tail_svg(&format!("{scene}: tail (GRW Section 4.3)"), &fit, &all) {
-            Ok(svg) => write_atomic(&dir.join("tail.svg"), svg.as_bytes())?,
-            Err(e) => eprintln!("tail chart: not drawn ({e})"),
-        }
-    }
-    Ok(())
+    out
 }
