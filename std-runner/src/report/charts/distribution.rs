@@ -8,8 +8,9 @@ use plotters::prelude::*;
 
 /// The distribution charts a run has, `(file stem, chart)`: histogram (speed density, log
 /// scale, GRW (31)-(33), with the Maxwellian of the run's temperature), reduced (f~(c) beside
-/// phi, log scale), delta (Delta(c) beside S_2(c^2), MS Figures 2, 5, 9), G (G(c), log scale,
-/// MS Figures 3, 7, 10) and marginal (BRS Figure 4, log scale). `scene` heads each title.
+/// phi, log scale), delta (Delta(c) beside S_2(c^2), MS Figures 2, 5, 9), G (G(c) of MS
+/// Figures 3, 7, 10 as its ratio to the Maxwellian's, f/phi, log scale) and marginal (BRS
+/// Figure 4, log scale). `scene` heads each title.
 pub fn distribution_charts(
     scene: &str,
     stats: &RunStats,
@@ -154,35 +155,29 @@ pub fn distribution_charts(
             ),
         ));
         if let Some(t) = &r.tail {
+            // G(c) itself spans many decades (exp(A c^p) against the Gaussian core), which
+            // hides the tail's departure; its ratio to the Maxwellian's G is f/phi, 1 for a
+            // Maxwellian, the over- or under-population read off directly.
             charts.push((
                 "G",
                 profile(
                     &format!(
-                        "{scene}: G(c) = exp(A c^{}) f(c), A = {:.3} ({})",
+                        "{scene}: G(c) / G of the Maxwellian = f/phi, G = exp(A c^{}) f, A = {:.3} ({})",
                         t.power, t.amplitude, t.equation
                     ),
                     "c",
-                    "G(c)",
+                    "G(c) / G_Maxwell(c)",
                     true,
                     &[
                         Series {
                             label: "run, 99.9% bars".into(),
-                            points: run(&|s| {
-                                (
-                                    s.g,
-                                    if s.f.0 > 0.0 {
-                                        s.g * s.f.1 / s.f.0
-                                    } else {
-                                        0.0
-                                    },
-                                )
-                            }),
+                            points: run(&|s| s.ratio)[..resolved].to_vec(),
                             style: Style::Points,
                             color: BLUE,
                         },
                         Series {
-                            label: "phi in place of f (Maxwell-Boltzmann)".into(),
-                            points: run(&|s| (s.g_maxwell, 0.0)),
+                            label: "Maxwell-Boltzmann: 1".into(),
+                            points: run(&|_| (1.0, 0.0))[..resolved].to_vec(),
                             style: Style::Dashed,
                             color: BLACK,
                         },
