@@ -3,8 +3,8 @@
 // of freedom, at the level of 3.2 normal sigma) beside the exact GRW (13); exits with 1 when a
 // point misses its interval (as examples/c/grw_example3.c).
 //
-// Build: c++ -std=c++17 examples/cpp/grw_example3.cpp -Iinclude target/release/libgdsmc.a -lm -lpthread -ldl \
-//            -o target/grw_example3_cpp
+// Build (one line): c++ -std=c++17 examples/cpp/grw_example3.cpp -Iinclude
+//   target/release/libgdsmc.a -lm -lpthread -ldl -o target/grw_example3_cpp
 #include <cmath>
 #include <cstdio>
 #include <vector>
