@@ -9,6 +9,8 @@
 //! [`analysis`] (tails, distributions, warnings) <- [`report`] (files, charts, summary) <-
 //! [`reproduce`] (the papers' tables) and [`bench`] (speed).
 
+#![deny(unsafe_code)]
+
 pub mod analysis;
 pub mod bench;
 pub mod error;

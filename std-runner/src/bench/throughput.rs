@@ -4,7 +4,10 @@
 //! Lines have the form `case=<name> kernel=<k> n=<n> collisions_per_s=<x> attempts_per_s=<y>`
 //! for the no-splitting event loop (GRW Section 3 / RW Algorithm 3), and
 //! `case=<name> n=<n> particles_per_s=<x>` (or `numbers_per_s`, `reads_per_s`) for the
-//! batch kernels and the limits.
+//! batch kernels and the limits. Each loop line ends with `of_pair_limit`, its candidates per
+//! second as a fraction of the machine's limit for that memory traffic at the same n
+//! (`case=limit-pair-update`: random pairs read and written, drawn ahead and prefetched at the
+//! best lookahead, in the run's huge-page buffer).
 
 use gdsmc_core::batch::{kick, sums};
 use gdsmc_core::drive::{
@@ -14,7 +17,7 @@ use gdsmc_core::engine::NoSplitting;
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::restitution::Constant;
-use gdsmc_core::rng::{Rng, seeded, uniform_index};
+use gdsmc_core::rng::{Rng, seeded, uniform_index, uniform_pair};
 use gdsmc_core::sample::{Maxwellian, standard_normal};
 use gdsmc_core::vec3::Vec3;
 use std::f64::consts::PI;
@@ -40,7 +43,8 @@ impl Default for Options {
 }
 
 fn system(n: usize, seed: u64) -> Vec<Particle> {
-    let mut buf = vec![Particle::default(); n];
+    // The run's own buffer (huge pages at large n), so the bench measures what a run does.
+    let mut buf = crate::run::particle_buffer(n).expect("the bench's sizes fit in memory");
     let mut p = Particles::new(&mut buf).expect("n >= 2");
     let mut rng = seeded(seed);
     let f0 = Maxwellian::standard();
@@ -88,6 +92,39 @@ fn event_loop<K: Kernel, D: Drive>(
     )
 }
 
+/// The lookaheads the pair-update limit tries.
+pub const LOOKAHEADS: [usize; 5] = [1, 8, 16, 32, 64];
+
+/// The machine's limit for the event loop's memory traffic at size `n`: random pairs `(i, j)`
+/// drawn as the loop draws them, each particle of the pair read and written back, with the
+/// pairs drawn `L` ahead and prefetched, in the run's buffer (huge pages). Returns the best
+/// pairs per second over [`LOOKAHEADS`] and the lookahead that gave it.
+fn pair_limit(n: usize, budget: Duration) -> (f64, usize) {
+    let mut buf = system(n, 8);
+    let mut rng = seeded(9);
+    let mut best = (0.0, 0);
+    for l in LOOKAHEADS {
+        let mut p = Particles::new(&mut buf).expect("n >= 2");
+        let mut ring: Vec<(usize, usize)> = (0..l).map(|_| uniform_pair(&mut rng, n)).collect();
+        let per = 1 << 16;
+        let r = rate(budget / LOOKAHEADS.len() as u32, per, || {
+            for k in 0..per {
+                let next = uniform_pair(&mut rng, n);
+                p.prefetch(next.0);
+                p.prefetch(next.1);
+                let (i, j) = std::mem::replace(&mut ring[k % l], next);
+                let (a, b) = (p.velocity(i), p.velocity(j));
+                p.set_velocity(i, b);
+                p.set_velocity(j, a);
+            }
+        });
+        if r > best.0 {
+            best = (r, l);
+        }
+    }
+    best
+}
+
 /// Repeats `f` (which handles `per` items) until `budget` has passed; items per second.
 fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
     f();
@@ -108,6 +145,10 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
     let g = 4.0;
     let c = 1.0 / (4.0 * PI);
     for &n in &o.sizes {
+        let (limit, lookahead) = pair_limit(n, o.budget);
+        line(format!(
+            "case=limit-pair-update n={n} pairs_per_s={limit:.4e} lookahead={lookahead}"
+        ));
         let kernels: [(&str, &LoopCase); 3] = [
             ("maxwell", &|a, heated| {
                 let k = Maxwell::new(g, c).expect("valid");
@@ -145,7 +186,8 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
         let k = HardSpheres::new(1.0, 0.125).expect("valid");
         let (coll, att) = event_loop(k, hm, 0.5, n, o.budget);
         line(format!(
-            "case=nosplit-host-medium-alpha0.5 kernel=hard-spheres n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e}"
+            "case=nosplit-host-medium-alpha0.5 kernel=hard-spheres n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} of_pair_limit={:.3}",
+            att / limit
         ));
         for (name, f) in kernels {
             for (case, alpha, heated) in [
@@ -154,7 +196,8 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             ] {
                 let (coll, att) = f(alpha, heated);
                 line(format!(
-                    "case={case} kernel={name} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e}"
+                    "case={case} kernel={name} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} of_pair_limit={:.3}",
+                    att / limit
                 ));
             }
         }
@@ -234,7 +277,14 @@ mod tests {
                 .collect();
             assert_eq!(
                 keys,
-                ["case", "kernel", "n", "collisions_per_s", "attempts_per_s"],
+                [
+                    "case",
+                    "kernel",
+                    "n",
+                    "collisions_per_s",
+                    "attempts_per_s",
+                    "of_pair_limit"
+                ],
                 "{l}"
             );
             let num = |k: &str| -> f64 {
@@ -257,6 +307,7 @@ mod tests {
             "moment-sums",
             "limit-xoshiro256pp",
             "limit-random-read",
+            "limit-pair-update",
         ] {
             assert!(
                 lines.iter().any(|l| l.starts_with(&format!("case={k}"))),

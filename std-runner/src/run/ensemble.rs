@@ -44,6 +44,8 @@ pub fn particle_buffer(n: usize) -> Result<Vec<Particle>, crate::Error> {
             what: format!("`particles.n` = {n} particles"),
             bytes: n.saturating_mul(std::mem::size_of::<Particle>()),
         })?;
+    // Before the first write, so that the kernel can back it with huge pages from the start.
+    crate::run::pages::advise_huge(buf.spare_capacity_mut());
     buf.resize(n, Particle::default());
     Ok(buf)
 }

@@ -10,6 +10,7 @@
 pub mod columns;
 pub mod ensemble;
 pub mod estimate;
+pub mod pages;
 pub mod results;
 pub mod stats;
 
