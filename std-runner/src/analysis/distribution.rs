@@ -6,7 +6,6 @@ use crate::reference::exact::sonine::mu2_maxwellian;
 use crate::reference::exact::tail;
 use crate::run::RunStats;
 use crate::scene::{DriveChoice, KernelChoice, Scene};
-use std::f64::consts::PI;
 
 /// Mean and 99.9% half-width of a column: the steady-state average when the scene has one,
 /// else the last observation.
@@ -117,7 +116,7 @@ pub fn reduced(scene: &Scene, stats: &RunStats) -> Option<Reduced> {
             } else {
                 c_max * (i + 1) as f64 / k as f64
             };
-            let vol = 4.0 / 3.0 * PI * (c_hi.powi(3) - c_lo.powi(3));
+            let vol = tail::shell_volume(c_lo, c_hi);
             let w_phi = tail::phi_shell(c_lo, c_hi);
             let f = (h.mean(i), h.ci(i));
             let bounded = vol.is_finite();

@@ -266,6 +266,11 @@ pub mod tail {
         (-c * c).exp() / PI.powf(1.5)
     }
 
+    /// The volume of the spherical shell `a <= |v| < b`, `(4/3) pi (b^3 - a^3)`.
+    pub fn shell_volume(a: f64, b: f64) -> f64 {
+        4.0 / 3.0 * PI * (b.powi(3) - a.powi(3))
+    }
+
     /// The weight of `phi` in the shell `a <= |c| < b`: `F(b) - F(a)`,
     /// `F(c) = erf(c) - 2 c exp(-c^2) / sqrt(pi)` (exact; `b` may be infinite).
     pub fn phi_shell(a: f64, b: f64) -> f64 {

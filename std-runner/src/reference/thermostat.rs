@@ -13,7 +13,7 @@
 //! `1 + 3 a2 / 16`, a fraction of a percent at MS's `a2`) is left out: the figures are
 //! estimates for choosing `zeta`, not references to judge a run by.
 
-use crate::scene::{DriveChoice, KernelChoice, RestitutionLaw, Scene};
+use crate::scene::{DriveChoice, RestitutionLaw, Scene};
 use statrs::function::gamma::gamma;
 use std::f64::consts::PI;
 
@@ -33,19 +33,16 @@ pub struct GaussianBalance {
 
 impl GaussianBalance {
     /// The balance for a scene with a Gaussian thermostat and a constant restitution
-    /// coefficient below 1 (else none).
-    pub fn of(scene: &Scene, t0: f64) -> Option<Self> {
+    /// coefficient below 1 (else none), from its initial temperature.
+    pub fn of(scene: &Scene) -> Option<Self> {
+        let t0 = crate::run::initial_temperature(scene);
         let DriveChoice::Gaussian(zeta) = scene.physics.drive else {
             return None;
         };
         let RestitutionLaw::Constant(alpha) = scene.physics.restitution else {
             return None;
         };
-        let (gc, lambda) = match scene.physics.kernel {
-            KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
-            KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
-            KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
-        };
+        let (gc, lambda) = crate::run::estimate::kernel_constants(&scene.physics.kernel);
         let p = 2.0 + lambda;
         let moment = 2f64.powf(p) * gamma((3.0 + p) / 2.0) / gamma(1.5);
         let kappa = PI / 6.0 * gc * (1.0 - alpha * alpha) * moment;
@@ -112,7 +109,7 @@ mod tests {
     #[test]
     fn maxwell_cooling_is_grw_13s_rate() {
         // GRW (13): T relaxes at gamma pi C0 (1 - alpha^2) without drive.
-        let b = GaussianBalance::of(&scene("maxwell", 0.1, 0.5), 1.0).expect("gaussian");
+        let b = GaussianBalance::of(&scene("maxwell", 0.1, 0.5)).expect("gaussian");
         let c0 = 1.0 / (4.0 * PI);
         assert!((b.kappa - PI * c0 * 0.75).abs() < 1e-14 * b.kappa);
         assert_eq!(b.steady_temperature(), None);
@@ -122,7 +119,7 @@ mod tests {
     #[test]
     fn hard_sphere_cooling_and_balance() {
         // E|u|^3 = 2^3 Gamma(3) / Gamma(3/2) T^(3/2) = 32 / sqrt(pi) T^(3/2) for u ~ N(0, 2T).
-        let b = GaussianBalance::of(&scene("hard-spheres", 0.25, 0.8), 1.0).expect("gaussian");
+        let b = GaussianBalance::of(&scene("hard-spheres", 0.25, 0.8)).expect("gaussian");
         let gc = 1.0 / (4.0 * PI);
         let kappa = PI / 6.0 * gc * 0.36 * 32.0 / PI.sqrt();
         assert!((b.kappa - kappa).abs() < 1e-12 * kappa);

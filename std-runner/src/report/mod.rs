@@ -58,7 +58,7 @@ pub fn histograms_csv(
         } else {
             radius * (i + 1) as f64 / k as f64
         };
-        let vol = 4.0 / 3.0 * std::f64::consts::PI * (hi.powi(3) - lo.powi(3));
+        let vol = crate::reference::exact::tail::shell_volume(lo, hi);
         w.write_record([
             format!("{lo:?}"),
             format!("{hi:?}"),
@@ -156,8 +156,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
         .into_iter()
         .map(|w| serde_json::json!({ "code": w.code, "message": w.message }))
         .collect();
-    let t0 = crate::run::initial_sampler(scene).map_or(1.0, |f| f.temperature());
-    let thermostat = crate::reference::thermostat::GaussianBalance::of(scene, t0).map(|b| {
+    let thermostat = crate::reference::thermostat::GaussianBalance::of(scene).map(|b| {
         serde_json::json!({
             "zeta": b.zeta,
             "cooling_constant": b.kappa,

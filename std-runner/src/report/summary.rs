@@ -124,8 +124,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             m.times.1
         );
     }
-    let t0 = crate::run::initial_sampler(scene).map_or(1.0, |f| f.temperature());
-    if let Some(b) = crate::reference::thermostat::GaussianBalance::of(scene, t0) {
+    if let Some(b) = crate::reference::thermostat::GaussianBalance::of(scene) {
         let _ = writeln!(s, "\ndrive: {}", b.describe());
     }
     let warnings = crate::analysis::warnings::check(scene, stats);

@@ -19,6 +19,11 @@ pub fn initial_sampler(scene: &Scene) -> Option<MaxwellianMixture<MAX_COMPONENTS
     scene.physics.validate().ok().map(|m| m.initial().clone())
 }
 
+/// The temperature of a scene's initial distribution (1 if its physics is invalid).
+pub fn initial_temperature(scene: &Scene) -> f64 {
+    initial_sampler(scene).map_or(1.0, |f| f.temperature())
+}
+
 /// Why an ensemble stopped: the engine's error and the observation time it was advancing to.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EnsembleError {

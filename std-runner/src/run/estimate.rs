@@ -56,18 +56,24 @@ pub fn typical_alpha(scene: &Scene) -> f64 {
     }
 }
 
+/// A kernel's rate constant `gamma C` and exponent `lambda` of `B = gamma C |u|^lambda`
+/// (GRW (1), (5)).
+pub fn kernel_constants(kernel: &KernelChoice) -> (f64, f64) {
+    match *kernel {
+        KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
+        KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
+        KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
+    }
+}
+
 /// The estimate for `scene`.
 pub fn estimate(scene: &Scene) -> WorkEstimate {
     let p = &scene.physics;
     let n = p.n as f64;
     let t_end = scene.times.last().copied().unwrap_or(0.0);
     let m = scene.ensembles as f64;
-    let t0 = crate::run::initial_sampler(scene).map_or(1.0, |f| f.temperature());
-    let (gc, lambda) = match p.kernel {
-        KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
-        KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
-        KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
-    };
+    let t0 = crate::run::initial_temperature(scene);
+    let (gc, lambda) = kernel_constants(&p.kernel);
     let alpha = typical_alpha(scene);
     let temperature = match p.drive {
         DriveChoice::WhiteNoise(beta) => {

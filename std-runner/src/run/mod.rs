@@ -14,7 +14,7 @@ pub mod pages;
 pub mod results;
 pub mod stats;
 
-pub use ensemble::{initial_sampler, particle_buffer, run_ensemble};
+pub use ensemble::{initial_sampler, initial_temperature, particle_buffer, run_ensemble};
 pub use results::{RunStats, SteadyStats};
 
 use crate::error::Error;

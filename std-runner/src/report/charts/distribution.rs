@@ -3,6 +3,7 @@
 
 use super::frame::Chart;
 use super::profile::{Series, Style, profile};
+use crate::reference::exact::tail;
 use crate::run::RunStats;
 use plotters::prelude::*;
 
@@ -26,11 +27,7 @@ pub fn distribution_charts(
                 radius * i as f64 / k as f64,
                 radius * (i + 1) as f64 / k as f64,
             );
-            (
-                lo,
-                hi,
-                4.0 / 3.0 * std::f64::consts::PI * (hi.powi(3) - lo.powi(3)),
-            )
+            (lo, hi, tail::shell_volume(lo, hi))
         };
         let pts = (0..k)
             .map(|i| {
@@ -45,7 +42,12 @@ pub fn distribution_charts(
         let maxwellian = (0..k)
             .map(|i| {
                 let (lo, hi, vol) = shell(i);
-                (0.5 * (lo + hi), shell_mass(lo, hi, temperature) / vol, 0.0)
+                let v0 = (2.0 * temperature).sqrt();
+                (
+                    0.5 * (lo + hi),
+                    tail::phi_shell(lo / v0, hi / v0) / vol,
+                    0.0,
+                )
             })
             .collect::<Vec<_>>();
         charts.push((
@@ -237,14 +239,4 @@ pub fn distribution_charts(
         .into_iter()
         .map(|(stem, c)| (stem.to_string(), c))
         .collect()
-}
-
-/// The probability that a Maxwellian speed of temperature `t` (per component) lies in
-/// `[lo, hi)`: `erf(x) - 2 x exp(-x^2) / sqrt(pi)` at `x = r / sqrt(2 t)`, differenced.
-fn shell_mass(lo: f64, hi: f64, t: f64) -> f64 {
-    let cdf = |r: f64| {
-        let x = r / (2.0 * t).sqrt();
-        statrs::function::erf::erf(x) - 2.0 * x * (-x * x).exp() / std::f64::consts::PI.sqrt()
-    };
-    cdf(hi) - cdf(lo)
 }
