@@ -42,6 +42,17 @@ pub enum Error {
     /// disagree with the paper's where nothing exact decides.
     #[error("{} figure(s) disagree: {}", .0.len(), .0.join("; "))]
     Disagrees(Vec<String>),
+    /// An ensemble file (journal or shard) is unreadable, damaged or of another run.
+    #[error("{path}: {message}")]
+    Journal {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        message: String,
+    },
+    /// `gdsmc merge`: the shards given do not make one run (missing, duplicated, of several runs).
+    #[error("{0}")]
+    Shards(String),
     /// An output file could not be written.
     #[error("{path}: cannot write: {source}")]
     Write {

@@ -1,7 +1,7 @@
 //! The `gdsmc` command.
 
 use clap::{Parser, Subcommand};
-use gdsmc_runner::scene;
+use gdsmc_runner::{run, scene};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -65,6 +65,37 @@ enum Command {
         allow_long: bool,
         /// Chart formats, comma-separated: svg, png (twice the pixel size, for slides), pdf
         /// (vector, for a paper).
+        #[arg(long, value_name = "svg,png,pdf", default_value = "svg")]
+        format: gdsmc_runner::report::charts::Formats,
+        /// Run only shard K of S (K from 0): ensembles [K M/S, (K+1) M/S), the same ensembles
+        /// the whole run has there. Writes DIR/NAME.shard-K-of-S.gdsmc-ensembles (DIR default
+        /// out/NAME-shards) for `gdsmc merge`; an interrupted shard continues when run again.
+        #[arg(long, value_name = "K/S")]
+        shard: Option<String>,
+        /// Start anew: do not continue the journal an interrupted run of the same scene and
+        /// seed left (by default it is continued; the result is the same either way).
+        #[arg(long)]
+        fresh: bool,
+    },
+    /// Merge shards into the outputs of the whole run (byte-identical to `gdsmc run`).
+    ///
+    /// Takes shard files or directories holding them (every *.gdsmc-ensembles file), checks
+    /// that they are one run (same scene, seed, ensembles, shard count and gdsmc version),
+    /// complete and undamaged, each shard once, and writes what `gdsmc run` writes. The scene
+    /// comes from the shards themselves.
+    ///
+    /// Examples:
+    ///   for k in 0 1 2 3; do gdsmc run scenes/grw-example3.toml --shard $k/4; done
+    ///   gdsmc merge out/grw-example3-shards
+    #[command(verbatim_doc_comment)]
+    Merge {
+        /// Shard files, or directories of them.
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+        /// Output directory (default: out/SCENE-NAME).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Chart formats, comma-separated: svg, png, pdf.
         #[arg(long, value_name = "svg,png,pdf", default_value = "svg")]
         format: gdsmc_runner::report::charts::Formats,
     },
@@ -188,6 +219,8 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             set,
             allow_long,
             format,
+            shard,
+            fresh,
         } => {
             // --n, --ensembles and --seed are overrides of their scene keys: the same
             // validation as the file's, errors naming the flag.
@@ -198,73 +231,107 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 .extend(ensembles.map(|m| scene::Override::flag("ensembles", "run.ensembles", m)));
             overrides.extend(seed.map(|s| scene::Override::flag("seed", "run.seed", s)));
             let sc = scene::load_with(&path, &overrides)?;
+            let text = std::fs::read_to_string(&path).map_err(|source| {
+                gdsmc_runner::Error::Scene(scene::Error::Read {
+                    path: path.clone(),
+                    source,
+                })
+            })?;
+            let shard = shard.as_deref().map(run::shard::parse_spec).transpose()?;
             // Absurd work is refused before anything is allocated or run.
-            let work = gdsmc_runner::run::estimate::check(&sc, threads, allow_long)?;
+            let work = run::estimate::check(&sc, threads, allow_long)?;
+            let range = shard.map_or(0..sc.ensembles, |(k, s)| {
+                run::shard::range(k, s, sc.ensembles)
+            });
+            let header =
+                run::journal::Header::new(&sc, &path, &text, &overrides, shard, range.clone());
+            if let Some((k, s)) = shard {
+                let dir = out.unwrap_or_else(|| PathBuf::from("out").join(format!("{}-shards", sc.name)));
+                std::fs::create_dir_all(&dir).map_err(|source| gdsmc_runner::Error::Write {
+                    path: dir.clone(),
+                    source,
+                })?;
+                let file = dir.join(run::shard::file_name(&sc.name, k, s));
+                let job = run::Journaled {
+                    scene: &sc,
+                    header,
+                    path: &file,
+                    threads,
+                    fresh,
+                };
+                let r = journaled(&job, range.end - range.start)?;
+                let done = r.stats.ensembles;
+                println!(
+                    "shard {k}/{s} of {}: ensembles {}..{} ({} run now, {} continued from the file), wall = {:.2} s\n{} {}",
+                    sc.name,
+                    range.start,
+                    range.start + done,
+                    done - r.resumed,
+                    r.resumed,
+                    r.stats.wall.as_secs_f64(),
+                    if done == range.end - range.start { "wrote" } else { "kept so far in" },
+                    file.display()
+                );
+                if done < range.end - range.start {
+                    eprintln!("run the same command again to finish the shard");
+                    return Err(gdsmc_runner::Error::Interrupted);
+                }
+                return Ok(());
+            }
             // The output place is prepared (and shown writable) before any simulation.
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
             let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
-            let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-            {
-                let stop = stop.clone();
-                // A second Ctrl-C ends the process at once.
-                let _ = ctrlc::set_handler(move || {
-                    if stop.swap(true, std::sync::atomic::Ordering::SeqCst) {
-                        std::process::exit(130);
-                    }
-                    eprintln!(
-                        "\ninterrupted: finishing the running ensembles and keeping what is done (Ctrl-C again to quit)"
-                    );
-                });
-            }
-            let bar = indicatif::ProgressBar::with_draw_target(
-                Some(sc.ensembles),
-                indicatif::ProgressDrawTarget::stderr(),
-            );
-            bar.set_style(
-                indicatif::ProgressStyle::with_template(
-                    "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} ensembles, {per_sec}, ETA {eta}",
-                )
-                .expect("template"),
-            );
-            if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
-                bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
-            }
-            let stats = gdsmc_runner::run::run_interruptible(&sc, threads, &|k| bar.inc(k), &stop)?;
-            bar.finish_and_clear();
+            let file = journal_path(&dir);
+            let job = run::Journaled {
+                scene: &sc,
+                header,
+                path: &file,
+                threads,
+                fresh,
+            };
+            let r = journaled(&job, sc.ensembles)?;
+            let stats = r.stats;
             let interrupted = stats.ensembles < sc.ensembles;
             if interrupted {
-                eprintln!("kept {} of {} ensembles", stats.ensembles, sc.ensembles);
+                eprintln!(
+                    "kept {} of {} ensembles in {}: run the same command again to continue",
+                    stats.ensembles,
+                    sc.ensembles,
+                    file.display()
+                );
                 if stats.ensembles == 0 {
                     return Err(gdsmc_runner::Error::Interrupted);
                 }
             }
-            let refs = gdsmc_runner::reference::curves::for_scene(&sc);
-            gdsmc_runner::report::write_all(set.dir(), &sc, &stats, &refs, format)?;
-            let written = set.commit(serde_json::json!({
-                "scene": sc.name,
-                "seed": sc.seed,
-                "n": sc.n(),
-                "ensembles": stats.ensembles,
-                "gdsmc_version": env!("CARGO_PKG_VERSION"),
-            }))?;
-            print!(
-                "{}",
-                gdsmc_runner::report::summary::text(&sc, &stats, &refs)
-            );
+            write_outputs(&sc, &stats, set, &dir, format)?;
             println!(
                 "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)",
                 work.total(),
                 stats.counts.candidates as f64 + stats.counts.kicks(sc.n()) as f64
             );
-            println!(
-                "\nwrote {} files into {}: {}",
-                written.len(),
-                dir.display(),
-                written.join(", ")
-            );
             if interrupted {
                 return Err(gdsmc_runner::Error::Interrupted);
             }
+            // The outputs hold everything now; the journal is no longer needed.
+            let _ = std::fs::remove_file(&file);
+            Ok(())
+        }
+        Command::Merge {
+            inputs,
+            out,
+            format,
+        } => {
+            let files = run::shard::files(&inputs)?;
+            let started = std::time::Instant::now();
+            let m = run::shard::merge_files(&files)?;
+            let merge_s = started.elapsed().as_secs_f64();
+            let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&m.scene.name));
+            let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
+            write_outputs(&m.scene, &m.stats, set, &dir, format)?;
+            println!(
+                "merged {} shards ({} ensembles) in {merge_s:.3} s; wall and cpu above: the slowest shard's wall, all shards' cpu",
+                m.shards, m.stats.ensembles
+            );
             Ok(())
         }
         Command::Reproduce {
@@ -276,6 +343,93 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
         } => reproduce(&names, quick, threads, seed, out),
         Command::Bench(b) => bench(b),
     }
+}
+
+/// The journal of a whole run writing into `dir`: `.NAME.gdsmc-ensembles` beside it.
+fn journal_path(dir: &std::path::Path) -> PathBuf {
+    let name = dir
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    let parent = dir.parent().filter(|p| !p.as_os_str().is_empty());
+    parent.map_or_else(|| PathBuf::from("."), |p| p.to_path_buf()).join(format!(
+        ".{name}.{}",
+        run::journal::EXTENSION
+    ))
+}
+
+/// Runs a journaled job with a progress bar and Ctrl-C handling: the first Ctrl-C lets the
+/// running ensembles finish and keeps what is done, a second ends the process at once.
+fn journaled(job: &run::Journaled, total: u64) -> Result<run::JournalRun, gdsmc_runner::Error> {
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    {
+        let stop = stop.clone();
+        let _ = ctrlc::set_handler(move || {
+            if stop.swap(true, std::sync::atomic::Ordering::SeqCst) {
+                std::process::exit(130);
+            }
+            eprintln!(
+                "\ninterrupted: finishing the running ensembles and keeping what is done (Ctrl-C again to quit)"
+            );
+        });
+    }
+    let bar = indicatif::ProgressBar::with_draw_target(
+        Some(total),
+        indicatif::ProgressDrawTarget::stderr(),
+    );
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} ensembles, {per_sec}, ETA {eta}",
+        )
+        .expect("template"),
+    );
+    if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    }
+    let r = job.run(&|k| bar.inc(k), &stop)?;
+    bar.finish_and_clear();
+    if let Some(why) = &r.discarded {
+        eprintln!(
+            "note: {} was not continued ({why}); started anew",
+            job.path.display()
+        );
+    } else if r.resumed > 0 {
+        eprintln!(
+            "continued {}: {} ensembles were already done",
+            job.path.display(),
+            r.resumed
+        );
+    }
+    Ok(r)
+}
+
+/// Writes a run's outputs into the prepared set and prints the summary.
+fn write_outputs(
+    sc: &scene::Scene,
+    stats: &run::RunStats,
+    set: gdsmc_runner::report::set::OutputSet,
+    dir: &std::path::Path,
+    format: gdsmc_runner::report::charts::Formats,
+) -> Result<(), gdsmc_runner::Error> {
+    let refs = gdsmc_runner::reference::curves::for_scene(sc);
+    gdsmc_runner::report::write_all(set.dir(), sc, stats, &refs, format)?;
+    let written = set.commit(serde_json::json!({
+        "scene": sc.name,
+        "seed": sc.seed,
+        "n": sc.n(),
+        "ensembles": stats.ensembles,
+        "gdsmc_version": env!("CARGO_PKG_VERSION"),
+    }))?;
+    print!(
+        "{}",
+        gdsmc_runner::report::summary::text(sc, stats, &refs)
+    );
+    println!(
+        "\nwrote {} files into {}: {}",
+        written.len(),
+        dir.display(),
+        written.join(", ")
+    );
+    Ok(())
 }
 
 fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {

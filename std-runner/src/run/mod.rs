@@ -1,8 +1,9 @@
 //! Ensembles: many independent particle systems of one scene, run in parallel.
 //!
-//! Ensemble `k` uses the seed's Xoshiro256++ generator jumped `k` times. Ensembles are grouped
-//! in fixed chunks of [`CHUNK`]; each chunk is accumulated in ensemble order and the chunks are
-//! merged in chunk order, so the statistics are bit-identical for any number of threads.
+//! Ensemble `k` uses the seed's Xoshiro256++ generator jumped `k` times. Workers take the next
+//! ensemble as they finish one; the finished ensembles are folded into the statistics in
+//! ensemble order ([`totals::Totals`]), so the statistics are bit-identical for any number of
+//! threads, and for shards merged ([`shard`]) or a run resumed from its journal ([`journal`]).
 //!
 //! The engine is composed at compile time: the core's [`Model::start`] turns the scene's
 //! physics into one statically composed event loop per ensemble.
@@ -10,9 +11,12 @@
 pub mod columns;
 pub mod ensemble;
 pub mod estimate;
+pub mod journal;
 pub mod pages;
 pub mod results;
+pub mod shard;
 pub mod stats;
+pub mod totals;
 
 pub use ensemble::{initial_sampler, initial_temperature, particle_buffer, run_ensemble};
 pub use results::{RunStats, SteadyStats};
@@ -23,17 +27,19 @@ use columns::names;
 use gdsmc_core::engine::Counts;
 use gdsmc_core::physics::Model;
 use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
-use rayon::prelude::*;
-use stats::Accumulator;
-use std::sync::atomic::{AtomicBool, Ordering};
+use journal::{Header, Timing};
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::mpsc;
 use std::time::{Duration, Instant};
+use totals::Totals;
 
-/// Ensembles per chunk: the unit of parallel work and of the fixed merge order (one, so that
-/// even a handful of long ensembles spreads over every core).
-pub const CHUNK: u64 = 1;
-/// Chunks handed to the pool at once (bounds memory; independent of the thread count).
+/// Ensembles handed to the workers at once (bounds the generators held; independent of the
+/// thread count).
 const BATCH: u64 = 256;
 
+/// The part of a run the workers share.
 struct EnsembleJob<'a> {
     scene: &'a Scene,
     model: &'a Model,
@@ -42,91 +48,106 @@ struct EnsembleJob<'a> {
     stop: &'a AtomicBool,
 }
 
-/// What the parallel part hands back: statistics, steady statistics, histogram statistics,
-/// counts, ensembles merged.
-type Merged = (Accumulator, Accumulator, Accumulator, Counts, u64);
+/// A finished ensemble as a worker hands it back.
+type Done = Result<(Vec<f64>, Counts), Error>;
 
 impl EnsembleJob<'_> {
-    fn run(self) -> Result<Merged, Error> {
-        let (scene, model) = (self.scene, self.model);
-        let ncol = names(scene).len();
-        let width = scene.times.len() * ncol;
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(self.threads)
-            .build()
-            .expect("thread pool");
-        let first = scene.steady_from.unwrap_or(0);
-        let steady_of = |row: &[f64]| -> Vec<f64> {
-            let pts = scene.times.len() - first;
-            (0..ncol)
-                .map(|c| {
-                    (first..scene.times.len())
-                        .map(|ti| row[ti * ncol + c])
-                        .sum::<f64>()
-                        / pts as f64
-                })
-                .collect()
-        };
-        let hist_len = scene.extra_len();
-        let mut total = Accumulator::new(width);
-        let mut steady = Accumulator::new(ncol);
-        let mut hist = Accumulator::new(hist_len);
-        let mut counts = Counts::default();
-        let mut streams = Streams::new(scene.seed);
-        let m = scene.ensembles;
-        let mut start = 0u64;
-        while start < m {
-            let last = (start + BATCH * CHUNK).min(m);
+    /// Runs ensembles `range` (ensemble k from the seed's generator jumped k times), folding
+    /// each into `totals` in ensemble order and handing it to `on_row` first (the journal).
+    /// Workers take the next ensemble as they finish one, so the finished ensembles form a
+    /// prefix up to the few still running; on `stop` the running ones finish and the fold
+    /// keeps the unbroken prefix: exactly what a run of fewer ensembles would have.
+    fn fold(
+        &self,
+        range: std::ops::Range<u64>,
+        totals: &mut Totals,
+        on_row: &mut dyn FnMut(u64, &[f64], &Counts) -> Result<(), Error>,
+    ) -> Result<(), Error> {
+        let mut streams = Streams::new(self.scene.seed);
+        for _ in 0..range.start {
+            streams.next();
+        }
+        let halt = AtomicBool::new(false);
+        let before = totals.ensembles;
+        let mut start = range.start;
+        while start < range.end {
+            let last = (start + BATCH).min(range.end);
             let rngs: Vec<Xoshiro256PlusPlus> =
                 (&mut streams).take((last - start) as usize).collect();
-            // `None`: the chunk was skipped because the run was interrupted.
-            type Chunk = Result<Option<(Accumulator, Accumulator, Accumulator, Counts)>, Error>;
-            let chunks: Vec<Chunk> = pool.install(|| {
-                rngs.par_chunks(CHUNK as usize)
-                    .enumerate()
-                    .map(|(ci, rs)| {
-                        if self.stop.load(Ordering::Relaxed) {
-                            return Ok(None);
-                        }
-                        let mut acc = Accumulator::new(width);
-                        let mut st = Accumulator::new(ncol);
-                        let mut hi = Accumulator::new(hist_len);
-                        let mut cnt = Counts::default();
-                        let mut particles = particle_buffer(model.n())?;
-                        for (k, r) in rs.iter().enumerate() {
-                            let e = start + ci as u64 * CHUNK + k as u64;
-                            let (row, c) = run_ensemble(scene, model, r.clone(), &mut particles)
-                                .map_err(|err| Error::Engine {
-                                    ensemble: e,
-                                    message: err.to_string(),
-                                })?;
-                            let (row, h) = row.split_at(width);
-                            acc.push(row);
-                            st.push(&steady_of(row));
-                            hi.push(h);
-                            cnt = cnt.add(&c);
-                        }
-                        (self.progress)(rs.len() as u64);
-                        Ok(Some((acc, st, hi, cnt)))
-                    })
-                    .collect()
-            });
-            // Merge in ensemble order, and only an unbroken prefix: an interrupted run keeps
-            // exactly what a full run with fewer ensembles would have.
-            for (ci, ch) in chunks.into_iter().enumerate() {
-                match ch? {
-                    Some((a, st, h, c)) => {
-                        total.merge(&a);
-                        steady.merge(&st);
-                        hist.merge(&h);
-                        counts = counts.add(&c);
-                    }
-                    None => return Ok((total, steady, hist, counts, start + ci as u64 * CHUNK)),
+            let next = AtomicUsize::new(0);
+            let (tx, rx) = mpsc::channel::<(usize, Done)>();
+            let mut failed = None;
+            std::thread::scope(|s| {
+                for _ in 0..self.threads.min(rngs.len()) {
+                    let (tx, rngs, next, halt) = (tx.clone(), &rngs, &next, &halt);
+                    s.spawn(move || self.work(start, rngs, next, halt, tx));
                 }
+                drop(tx);
+                let mut pending = BTreeMap::new();
+                let mut k = 0usize;
+                for (i, done) in rx {
+                    pending.insert(i, done);
+                    while let Some(done) = pending.remove(&k) {
+                        let e = start + k as u64;
+                        let folded = done.and_then(|(row, c)| {
+                            on_row(e, &row, &c)?;
+                            totals.push(&row, &c);
+                            Ok(())
+                        });
+                        if let Err(err) = folded {
+                            halt.store(true, Ordering::SeqCst);
+                            failed.get_or_insert(err);
+                            pending.clear();
+                            break;
+                        }
+                        k += 1;
+                    }
+                }
+            });
+            if let Some(err) = failed {
+                return Err(err);
+            }
+            if totals.ensembles - before < last - range.start {
+                return Ok(()); // interrupted: the unbroken prefix is kept
             }
             start = last;
         }
-        Ok((total, steady, hist, counts, m))
+        Ok(())
+    }
+
+    /// One worker: takes the next ensemble of the batch until none is left or the run stops.
+    fn work(
+        &self,
+        start: u64,
+        rngs: &[Xoshiro256PlusPlus],
+        next: &AtomicUsize,
+        halt: &AtomicBool,
+        tx: mpsc::Sender<(usize, Done)>,
+    ) {
+        let mut particles = None;
+        loop {
+            if self.stop.load(Ordering::Relaxed) || halt.load(Ordering::Relaxed) {
+                return;
+            }
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            let Some(rng) = rngs.get(i) else { return };
+            let done = match &mut particles {
+                Some(buf) => Ok(buf),
+                None => particle_buffer(self.model.n()).map(|b| particles.insert(b)),
+            }
+            .and_then(|buf| {
+                run_ensemble(self.scene, self.model, rng.clone(), buf).map_err(|err| {
+                    Error::Engine {
+                        ensemble: start + i as u64,
+                        message: err.to_string(),
+                    }
+                })
+            });
+            (self.progress)(1);
+            if tx.send((i, done)).is_err() {
+                return;
+            }
+        }
     }
 }
 
@@ -149,25 +170,152 @@ pub fn run_interruptible(
     progress: &(dyn Fn(u64) + Sync),
     stop: &AtomicBool,
 ) -> Result<RunStats, Error> {
-    let threads = if threads == 0 {
-        rayon::current_num_threads()
-    } else {
-        threads
-    };
-    let start = Instant::now();
-    let cpu0 = cpu_time::ProcessTime::try_now().ok();
+    let clock = Clock::start(threads);
+    let mut totals = Totals::new(scene);
+    job(scene, clock.threads, progress, stop, |job| {
+        job.fold(0..scene.ensembles, &mut totals, &mut |_, _, _| Ok(()))
+    })?;
+    Ok(stats_of(scene, totals, clock.timing()))
+}
+
+/// Validates the scene's physics and runs `f` with the job of its ensembles.
+fn job<T>(
+    scene: &Scene,
+    threads: usize,
+    progress: &(dyn Fn(u64) + Sync),
+    stop: &AtomicBool,
+    f: impl FnOnce(&EnsembleJob) -> Result<T, Error>,
+) -> Result<T, Error> {
     let model = scene
         .physics
         .validate()
         .map_err(|e| Error::Physics(e.to_string()))?;
-    let (acc, st, hist, counts, ensembles) = EnsembleJob {
+    f(&EnsembleJob {
         scene,
         model: &model,
         threads,
         progress,
         stop,
+    })
+}
+
+/// Wall and CPU time of a run from its start.
+struct Clock {
+    start: Instant,
+    cpu0: Option<cpu_time::ProcessTime>,
+    threads: usize,
+}
+
+impl Clock {
+    fn start(threads: usize) -> Self {
+        let threads = if threads == 0 {
+            std::thread::available_parallelism().map_or(1, |n| n.get())
+        } else {
+            threads
+        };
+        Clock {
+            start: Instant::now(),
+            cpu0: cpu_time::ProcessTime::try_now().ok(),
+            threads,
+        }
     }
-    .run()?;
+
+    fn timing(&self) -> Timing {
+        Timing {
+            wall: self.start.elapsed().as_secs_f64(),
+            cpu: self.cpu0.map_or(0.0, |c| c.elapsed().as_secs_f64()),
+            threads: self.threads as u64,
+        }
+    }
+}
+
+/// A run that keeps every finished ensemble in a journal file (resumable, mergeable): the
+/// ensembles `header.start..header.end` of the scene.
+pub struct Journaled<'a> {
+    /// The scene.
+    pub scene: &'a Scene,
+    /// What the journal is of (see [`journal::Header`]).
+    pub header: Header,
+    /// The journal file.
+    pub path: &'a Path,
+    /// Worker threads (0: all cores).
+    pub threads: usize,
+    /// Start anew even when the journal holds finished ensembles of this run.
+    pub fresh: bool,
+}
+
+/// What a journaled run found and did.
+#[derive(Clone, Debug)]
+pub struct JournalRun {
+    /// The statistics of the ensembles in the journal (all of its range unless interrupted).
+    pub stats: RunStats,
+    /// Ensembles taken from the journal rather than run.
+    pub resumed: u64,
+    /// Why an existing journal was not continued, when one was there.
+    pub discarded: Option<String>,
+}
+
+impl Journaled<'_> {
+    /// Runs the ensembles not yet in the journal, appending each as it finishes, and writes
+    /// the end record when the range is complete. A journal of the same run (same scene to the
+    /// last bit, seed, ensembles, shard and gdsmc version) is continued unless `fresh`;
+    /// the result is bit-identical to an uninterrupted run because the fold is the same.
+    pub fn run(
+        &self,
+        progress: &(dyn Fn(u64) + Sync),
+        stop: &AtomicBool,
+    ) -> Result<JournalRun, Error> {
+        let scene = self.scene;
+        let clock = Clock::start(self.threads);
+        let mut totals = Totals::new(scene);
+        let mut discarded = None;
+        let mut writer = None;
+        if !self.fresh && let Ok(bytes) = std::fs::read(self.path) {
+            match journal::read(self.path, &bytes) {
+                Ok(c) if c.header.same_run(&self.header) => {
+                    for (row, counts) in &c.rows {
+                        totals.push(row, counts);
+                    }
+                    writer = Some(journal::Writer::resume(self.path, c.valid_len)?);
+                }
+                Ok(c) => discarded = Some(c.header.difference(&self.header)),
+                Err(e) => discarded = Some(e.to_string()),
+            }
+        }
+        let resumed = totals.ensembles;
+        let mut writer = match writer {
+            Some(w) => w,
+            None => journal::Writer::create(self.path, &self.header)?,
+        };
+        progress(resumed);
+        let range = self.header.start + resumed..self.header.end;
+        job(scene, clock.threads, progress, stop, |job| {
+            job.fold(range, &mut totals, &mut |e, row, c| {
+                writer.append(&journal::ensemble_record(e, row, c))
+            })
+        })?;
+        let timing = clock.timing();
+        if totals.ensembles == self.header.end - self.header.start {
+            writer.append(&journal::end_record(totals.ensembles, timing))?;
+        }
+        Ok(JournalRun {
+            stats: stats_of(scene, totals, timing),
+            resumed,
+            discarded,
+        })
+    }
+}
+
+/// A run's statistics from its fold and timing.
+pub fn stats_of(scene: &Scene, totals: Totals, timing: Timing) -> RunStats {
+    let Totals {
+        acc,
+        steady: st,
+        hist,
+        counts,
+        ensembles,
+        ..
+    } = totals;
     let mut at = 0;
     let mut take = |len: usize| {
         let a = hist.slice(at..at + len);
@@ -184,18 +332,18 @@ pub fn run_interruptible(
         points: scene.times.len() - first,
         acc: st,
     });
-    Ok(RunStats {
+    RunStats {
         times: scene.times.clone(),
         names: names(scene),
         acc,
         counts,
         ensembles,
-        wall: start.elapsed(),
-        cpu: cpu0.map_or(Duration::ZERO, |c| c.elapsed()),
-        threads,
+        wall: Duration::from_secs_f64(timing.wall.max(0.0)),
+        cpu: Duration::from_secs_f64(timing.cpu.max(0.0)),
+        threads: timing.threads as usize,
         steady,
         histogram,
         reduced,
         marginal,
-    })
+    }
 }

@@ -1,0 +1,472 @@
+//! The ensemble journal: every finished ensemble's row, in ensemble order, in a versioned and
+//! checksummed file. It is what a shard hands to `gdsmc merge`, what an MPI rank sends to rank
+//! 0, and what an interrupted run resumes from.
+//!
+//! Layout (all integers little-endian):
+//!
+//! ```text
+//! "GDSMC-ENSEMBLES\n"                      magic, 16 bytes
+//! u32 format, u32 L, L bytes of JSON        the header (Header), then u32 CRC-32 of the JSON
+//! record*                                   u64 ensemble, u32 words, words x 8 bytes, u32 CRC-32
+//! end record                                ensemble = u64::MAX: ensembles, wall, cpu, threads
+//! ```
+//!
+//! A record's words are the ensemble's event counts (8 integers) and its row (observables then
+//! histograms, as f64 bits), so a merge folds exactly the values a single run folds. The CRC
+//! covers the record's ensemble, length and words. A file without its end record is a run in
+//! progress or one that was killed: its records up to the first incomplete or damaged one are
+//! kept, the rest is cut off when the run resumes.
+
+use crate::error::Error;
+use crate::scene::Scene;
+use gdsmc_core::engine::Counts;
+use serde::{Deserialize, Serialize};
+use std::io::Write;
+use std::path::Path;
+
+/// The file's first bytes.
+pub const MAGIC: &[u8; 16] = b"GDSMC-ENSEMBLES\n";
+/// The layout's version; a reader refuses any other.
+pub const FORMAT: u32 = 1;
+/// The file extension of shards and journals.
+pub const EXTENSION: &str = "gdsmc-ensembles";
+/// Event counts per record (the fields of [`Counts`]).
+const COUNT_WORDS: usize = 8;
+/// The end record's ensemble field.
+const END: u64 = u64::MAX;
+
+/// What a journal is of: enough to rebuild the scene and to tell journals of different runs
+/// apart.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Header {
+    /// The gdsmc version that wrote it (another version may draw other numbers).
+    pub gdsmc_version: String,
+    /// The scene file as given on the command line (for messages).
+    pub scene_path: String,
+    /// The scene file's text.
+    pub scene_text: String,
+    /// The overrides, as (flag, `key.path=value`), in order.
+    pub overrides: Vec<(String, String)>,
+    /// The validated scene without its seed and ensemble count (`Debug` text: every value
+    /// printed to the last bit), so a changed scene or version is caught.
+    pub fingerprint: String,
+    /// The run's seed.
+    pub seed: u64,
+    /// The run's ensembles (all shards together).
+    pub ensembles: u64,
+    /// `(K, S)`: shard K of S, or `None` for a whole run.
+    pub shard: Option<(u64, u64)>,
+    /// The ensembles this file holds: `start..end`.
+    pub start: u64,
+    /// One past the last ensemble this file holds.
+    pub end: u64,
+    /// Values per ensemble (observables and histograms).
+    pub row_len: usize,
+}
+
+impl Header {
+    /// The header of a run of `scene` (read from `path` as `text`, with `overrides`) that
+    /// holds `range`, as shard `shard` = (K, S) or the whole run.
+    pub fn new(
+        scene: &Scene,
+        path: &Path,
+        text: &str,
+        overrides: &[crate::scene::Override],
+        shard: Option<(u64, u64)>,
+        range: std::ops::Range<u64>,
+    ) -> Self {
+        Header {
+            gdsmc_version: env!("CARGO_PKG_VERSION").into(),
+            scene_path: path.display().to_string(),
+            scene_text: text.into(),
+            overrides: overrides
+                .iter()
+                .map(|o| (o.source.clone(), o.assignment.clone()))
+                .collect(),
+            fingerprint: fingerprint(scene),
+            seed: scene.seed,
+            ensembles: scene.ensembles,
+            shard,
+            start: range.start,
+            end: range.end,
+            row_len: crate::run::totals::Totals::new(scene).row_len(),
+        }
+    }
+
+    /// The scene again, from the text and overrides kept (checked against the fingerprint).
+    pub fn scene(&self, path: &Path) -> Result<Scene, Error> {
+        let overrides: Vec<crate::scene::Override> = self
+            .overrides
+            .iter()
+            .map(|(source, assignment)| crate::scene::Override {
+                source: source.clone(),
+                assignment: assignment.clone(),
+            })
+            .collect();
+        let scene =
+            crate::scene::parse_with(Path::new(&self.scene_path), &self.scene_text, &overrides)?;
+        if fingerprint(&scene) != self.fingerprint || scene.seed != self.seed {
+            return Err(Error::Journal {
+                path: path.to_path_buf(),
+                message: format!(
+                    "its scene ({}) reads differently in this gdsmc ({}); it was written by gdsmc {}",
+                    self.scene_path,
+                    env!("CARGO_PKG_VERSION"),
+                    self.gdsmc_version
+                ),
+            });
+        }
+        Ok(scene)
+    }
+
+    /// Whether a journal with this header holds ensembles of the run `other` describes (the
+    /// scene's text and path may differ, e.g. in comments: its values may not).
+    pub fn same_run(&self, other: &Header) -> bool {
+        self.same_set(other)
+            && self.shard == other.shard
+            && self.start == other.start
+            && self.end == other.end
+    }
+
+    /// Whether a file with this header and one with `other` can be shards of one run: the same
+    /// everything except which shard each is.
+    pub fn same_set(&self, other: &Header) -> bool {
+        self.gdsmc_version == other.gdsmc_version
+            && self.fingerprint == other.fingerprint
+            && self.seed == other.seed
+            && self.ensembles == other.ensembles
+            && self.shard.map(|s| s.1) == other.shard.map(|s| s.1)
+            && self.row_len == other.row_len
+    }
+
+    /// What differs from `other`, in words (the first difference found), for the message that
+    /// says why a journal was not continued or a shard not merged.
+    pub fn difference(&self, other: &Header) -> String {
+        if self.gdsmc_version != other.gdsmc_version {
+            format!(
+                "written by gdsmc {}, this is {}",
+                self.gdsmc_version, other.gdsmc_version
+            )
+        } else if self.fingerprint != other.fingerprint {
+            format!(
+                "another scene ({} with overrides [{}])",
+                self.scene_path,
+                self.overrides
+                    .iter()
+                    .map(|(_, a)| a.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        } else if self.seed != other.seed {
+            format!("seed {}, not {}", self.seed, other.seed)
+        } else if self.ensembles != other.ensembles {
+            format!("{} ensembles in all, not {}", self.ensembles, other.ensembles)
+        } else if self.shard.map(|s| s.1) != other.shard.map(|s| s.1) {
+            format!(
+                "{}, not {}",
+                shard_words(self.shard),
+                shard_words(other.shard)
+            )
+        } else {
+            format!(
+                "ensembles {}..{} ({}), not {}..{} ({})",
+                self.start,
+                self.end,
+                shard_words(self.shard),
+                other.start,
+                other.end,
+                shard_words(other.shard)
+            )
+        }
+    }
+}
+
+/// "shard K/S" or "a whole run".
+pub fn shard_words(shard: Option<(u64, u64)>) -> String {
+    match shard {
+        Some((k, s)) => format!("shard {k}/{s}"),
+        None => "a whole run".into(),
+    }
+}
+
+/// The `Debug` text of `scene` with its seed and ensemble count cleared.
+pub fn fingerprint(scene: &Scene) -> String {
+    let mut s = scene.clone();
+    s.seed = 0;
+    s.ensembles = 0;
+    format!("{s:?}")
+}
+
+fn counts_words(c: &Counts) -> [u64; COUNT_WORDS] {
+    // Destructured, so a new field of Counts fails to compile here until it is journaled.
+    let Counts {
+        candidates,
+        collisions,
+        fictitious,
+        overshoots,
+        observations,
+        clamped,
+        refreshes,
+        rescales,
+    } = *c;
+    [
+        candidates,
+        collisions,
+        fictitious,
+        overshoots,
+        observations,
+        clamped,
+        refreshes,
+        rescales,
+    ]
+}
+
+fn counts_of(w: &[u64]) -> Counts {
+    Counts {
+        candidates: w[0],
+        collisions: w[1],
+        fictitious: w[2],
+        overshoots: w[3],
+        observations: w[4],
+        clamped: w[5],
+        refreshes: w[6],
+        rescales: w[7],
+    }
+}
+
+/// The bytes before the first record.
+pub fn header_bytes(h: &Header) -> Vec<u8> {
+    let json = serde_json::to_vec(h).expect("a header serializes");
+    let mut out = Vec::with_capacity(json.len() + 28);
+    out.extend_from_slice(MAGIC);
+    out.extend_from_slice(&FORMAT.to_le_bytes());
+    out.extend_from_slice(&(json.len() as u32).to_le_bytes());
+    out.extend_from_slice(&json);
+    out.extend_from_slice(&crc32fast::hash(&json).to_le_bytes());
+    out
+}
+
+fn record_bytes(ensemble: u64, words: &[u64]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(16 + 8 * words.len());
+    out.extend_from_slice(&ensemble.to_le_bytes());
+    out.extend_from_slice(&(words.len() as u32).to_le_bytes());
+    for w in words {
+        out.extend_from_slice(&w.to_le_bytes());
+    }
+    let crc = crc32fast::hash(&out);
+    out.extend_from_slice(&crc.to_le_bytes());
+    out
+}
+
+/// One ensemble's record.
+pub fn ensemble_record(ensemble: u64, row: &[f64], counts: &Counts) -> Vec<u8> {
+    let words: Vec<u64> = counts_words(counts)
+        .into_iter()
+        .chain(row.iter().map(|x| x.to_bits()))
+        .collect();
+    record_bytes(ensemble, &words)
+}
+
+/// How the ensembles of a finished file were run.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Timing {
+    /// Wall seconds.
+    pub wall: f64,
+    /// CPU seconds (all threads).
+    pub cpu: f64,
+    /// Worker threads.
+    pub threads: u64,
+}
+
+/// The end record: the file is complete with `ensembles` records.
+pub fn end_record(ensembles: u64, t: Timing) -> Vec<u8> {
+    record_bytes(
+        END,
+        &[ensembles, t.wall.to_bits(), t.cpu.to_bits(), t.threads],
+    )
+}
+
+/// A journal as read: its header, its valid records in order, and how it ends.
+#[derive(Clone, Debug)]
+pub struct Contents {
+    /// The header.
+    pub header: Header,
+    /// The ensembles' rows and counts, in order from `header.start`.
+    pub rows: Vec<(Vec<f64>, Counts)>,
+    /// Bytes up to the end of the last valid ensemble record (where a resumed run appends).
+    pub valid_len: u64,
+    /// The end record's timing, when the file is complete.
+    pub end: Option<Timing>,
+    /// Why reading stopped before an end record, when it did (truncation or damage).
+    pub damage: Option<String>,
+}
+
+fn take<'a>(b: &mut &'a [u8], n: usize) -> Option<&'a [u8]> {
+    if b.len() < n {
+        return None;
+    }
+    let (h, t) = b.split_at(n);
+    *b = t;
+    Some(h)
+}
+
+fn u32_of(b: &[u8]) -> u32 {
+    u32::from_le_bytes(b.try_into().expect("4 bytes"))
+}
+
+fn u64_of(b: &[u8]) -> u64 {
+    u64::from_le_bytes(b.try_into().expect("8 bytes"))
+}
+
+/// Reads a journal's bytes. A bad magic, format or header is an error (the file is not a
+/// journal this version can read); damage after the header stops reading there and is
+/// described in [`Contents::damage`].
+pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
+    let bad = |message: String| Error::Journal {
+        path: path.to_path_buf(),
+        message,
+    };
+    let mut b = bytes;
+    if take(&mut b, MAGIC.len()) != Some(&MAGIC[..]) {
+        return Err(bad("not a gdsmc ensemble file (no GDSMC-ENSEMBLES magic)".into()));
+    }
+    let head = take(&mut b, 8).ok_or_else(|| bad("truncated in its header".into()))?;
+    let format = u32_of(&head[..4]);
+    if format != FORMAT {
+        return Err(bad(format!(
+            "format {format}, this gdsmc reads format {FORMAT}"
+        )));
+    }
+    let len = u32_of(&head[4..]) as usize;
+    let json = take(&mut b, len).ok_or_else(|| bad("truncated in its header".into()))?;
+    let crc = take(&mut b, 4).ok_or_else(|| bad("truncated in its header".into()))?;
+    if crc32fast::hash(json) != u32_of(crc) {
+        return Err(bad("damaged header (checksum mismatch)".into()));
+    }
+    let header: Header =
+        serde_json::from_slice(json).map_err(|e| bad(format!("unreadable header: {e}")))?;
+    let words = COUNT_WORDS + header.row_len;
+    let mut rows = Vec::new();
+    let mut valid_len = (bytes.len() - b.len()) as u64;
+    let mut end = None;
+    let mut damage = None;
+    while !b.is_empty() {
+        let at = header.start + rows.len() as u64;
+        let rec = b;
+        let Some(fixed) = take(&mut b, 12) else {
+            damage = Some(format!("truncated in the record of ensemble {at}"));
+            break;
+        };
+        let ensemble = u64_of(&fixed[..8]);
+        let n = u32_of(&fixed[8..]) as usize;
+        let expected = if ensemble == END { 4 } else { words };
+        if n != expected {
+            damage = Some(format!(
+                "damaged at the record of ensemble {at} (length {n}, expected {expected})"
+            ));
+            break;
+        }
+        let (Some(body), Some(crc)) = (take(&mut b, 8 * n), take(&mut b, 4)) else {
+            damage = Some(format!("truncated in the record of ensemble {at}"));
+            break;
+        };
+        if crc32fast::hash(&rec[..12 + 8 * n]) != u32_of(crc) {
+            damage = Some(format!(
+                "damaged at the record of ensemble {at} (checksum mismatch)"
+            ));
+            break;
+        }
+        let w: Vec<u64> = body.chunks_exact(8).map(u64_of).collect();
+        if ensemble == END {
+            if w[0] != rows.len() as u64 {
+                damage = Some(format!(
+                    "its end record counts {} ensembles, it holds {}",
+                    w[0],
+                    rows.len()
+                ));
+            } else if !b.is_empty() {
+                damage = Some("bytes after its end record".into());
+            } else {
+                end = Some(Timing {
+                    wall: f64::from_bits(w[1]),
+                    cpu: f64::from_bits(w[2]),
+                    threads: w[3],
+                });
+            }
+            break;
+        }
+        if ensemble != at {
+            damage = Some(format!("record of ensemble {ensemble} where {at} belongs"));
+            break;
+        }
+        let counts = counts_of(&w[..COUNT_WORDS]);
+        let row = w[COUNT_WORDS..].iter().map(|&x| f64::from_bits(x)).collect();
+        rows.push((row, counts));
+        valid_len = (bytes.len() - b.len()) as u64;
+    }
+    if end.is_none() && damage.is_none() && header.start + rows.len() as u64 != header.end {
+        damage = Some("no end record (the run was interrupted or the file cut short)".into());
+    }
+    Ok(Contents {
+        header,
+        rows,
+        valid_len,
+        end,
+        damage,
+    })
+}
+
+/// A journal file being written: records appended as ensembles finish in order, flushed after
+/// each, so a run killed at any moment leaves every finished ensemble readable.
+pub struct Writer {
+    path: std::path::PathBuf,
+    file: std::fs::File,
+}
+
+impl Writer {
+    /// Starts a new journal at `path` (replacing any file there).
+    pub fn create(path: &Path, header: &Header) -> Result<Self, Error> {
+        let werr = |source| Error::Write {
+            path: path.to_path_buf(),
+            source,
+        };
+        let mut file = std::fs::File::create(path).map_err(werr)?;
+        file.write_all(&header_bytes(header)).map_err(werr)?;
+        Ok(Writer {
+            path: path.to_path_buf(),
+            file,
+        })
+    }
+
+    /// Continues the journal at `path` after its first `valid_len` bytes (what [`read`] kept).
+    pub fn resume(path: &Path, valid_len: u64) -> Result<Self, Error> {
+        let werr = |source| Error::Write {
+            path: path.to_path_buf(),
+            source,
+        };
+        let file = std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .map_err(werr)?;
+        file.set_len(valid_len).map_err(werr)?;
+        let mut w = Writer {
+            path: path.to_path_buf(),
+            file,
+        };
+        std::io::Seek::seek(&mut w.file, std::io::SeekFrom::End(0)).map_err(werr)?;
+        Ok(w)
+    }
+
+    /// Appends bytes (a record).
+    pub fn append(&mut self, bytes: &[u8]) -> Result<(), Error> {
+        self.file.write_all(bytes).map_err(|source| Error::Write {
+            path: self.path.clone(),
+            source,
+        })
+    }
+
+    /// The file's path.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+}

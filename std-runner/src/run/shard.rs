@@ -1,0 +1,215 @@
+//! Shards: a run's ensembles split over processes or machines, and merged back into exactly
+//! the single run's statistics.
+//!
+//! Shard K of S holds ensembles `[K M / S, (K + 1) M / S)` with the same jumped generators as
+//! the single run; it is a finished journal ([`crate::run::journal`]). [`merge`] checks that a
+//! set of shard files is one run, complete, undamaged, each shard once, and folds their rows in
+//! ensemble order, the fold every run uses, so the outputs are byte-identical to `gdsmc run`'s.
+
+use crate::error::Error;
+use crate::run::journal::{self, Contents, EXTENSION, Timing};
+use crate::run::totals::Totals;
+use crate::run::{RunStats, stats_of};
+use crate::scene::Scene;
+use std::path::PathBuf;
+
+/// The ensembles of shard `k` of `s` in a run of `m`: `[k m / s, (k + 1) m / s)` (sizes differ
+/// by at most one; every ensemble in exactly one shard).
+pub fn range(k: u64, s: u64, m: u64) -> std::ops::Range<u64> {
+    let at = |k: u64| (k as u128 * m as u128 / s as u128) as u64;
+    at(k)..at(k + 1)
+}
+
+/// Parses `K/S` (0 <= K < S); errors name the flag.
+pub fn parse_spec(spec: &str) -> Result<(u64, u64), Error> {
+    let bad = |message: String| Error::Argument {
+        flag: "--shard".into(),
+        message,
+    };
+    let (k, s) = spec
+        .split_once('/')
+        .ok_or_else(|| bad(format!("expected K/S (shard K of S, from 0), got `{spec}`")))?;
+    let num = |x: &str| {
+        x.trim()
+            .parse::<u64>()
+            .map_err(|_| bad(format!("expected K/S with whole numbers, got `{spec}`")))
+    };
+    let (k, s) = (num(k)?, num(s)?);
+    if s == 0 || k >= s {
+        return Err(bad(format!(
+            "shard K of S needs 0 <= K < S, got {k}/{s} (shards count from 0)"
+        )));
+    }
+    Ok((k, s))
+}
+
+/// The file name of shard `k` of `s` of the scene `name`.
+pub fn file_name(name: &str, k: u64, s: u64) -> String {
+    let w = s.to_string().len();
+    format!("{name}.shard-{k:0w$}-of-{s}.{EXTENSION}")
+}
+
+/// The ensemble files among `inputs`: each a file, or a directory whose visible
+/// `*.gdsmc-ensembles` files are taken (sorted by name).
+pub fn files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, Error> {
+    let mut out = Vec::new();
+    for p in inputs {
+        if p.is_dir() {
+            let entries = std::fs::read_dir(p).map_err(|e| Error::Journal {
+                path: p.clone(),
+                message: format!("cannot read the directory: {e}"),
+            })?;
+            let mut found: Vec<PathBuf> = entries
+                .flatten()
+                .map(|e| e.path())
+                .filter(|f| {
+                    let name = f.file_name().map_or(String::new(), |n| {
+                        n.to_string_lossy().into_owned()
+                    });
+                    !name.starts_with('.') && name.ends_with(&format!(".{EXTENSION}"))
+                })
+                .collect();
+            if found.is_empty() {
+                return Err(Error::Shards(format!(
+                    "{}: no shard files (*.{EXTENSION}) in it",
+                    p.display()
+                )));
+            }
+            found.sort();
+            out.extend(found);
+        } else if p.exists() {
+            out.push(p.clone());
+        } else {
+            return Err(Error::Journal {
+                path: p.clone(),
+                message: "no such file or directory".into(),
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// A merged run: its scene (rebuilt from the shards) and statistics.
+#[derive(Clone, Debug)]
+pub struct Merged {
+    /// The scene, as the shards' header gives it.
+    pub scene: Scene,
+    /// The statistics, bit-identical to a single run's.
+    pub stats: RunStats,
+    /// The shard count.
+    pub shards: u64,
+}
+
+/// Reads and merges shard files.
+pub fn merge_files(paths: &[PathBuf]) -> Result<Merged, Error> {
+    let mut read = Vec::with_capacity(paths.len());
+    for p in paths {
+        let bytes = std::fs::read(p).map_err(|e| Error::Journal {
+            path: p.clone(),
+            message: format!("cannot read: {e}"),
+        })?;
+        read.push((p.clone(), bytes));
+    }
+    merge(&read)
+}
+
+/// Merges shards given as (name, bytes): refuses a set that is not one whole run (a file
+/// damaged or cut short, a shard of another scene, seed, ensemble count, shard count or gdsmc
+/// version, a shard twice, a shard missing), each with a message naming the files.
+pub fn merge(inputs: &[(PathBuf, Vec<u8>)]) -> Result<Merged, Error> {
+    if inputs.is_empty() {
+        return Err(Error::Shards("no shard files given".into()));
+    }
+    let mut shards: Vec<(PathBuf, Contents)> = Vec::with_capacity(inputs.len());
+    for (path, bytes) in inputs {
+        let c = journal::read(path, bytes)?;
+        let bad = |message: String| Error::Journal {
+            path: path.clone(),
+            message,
+        };
+        let Some((k, s)) = c.header.shard else {
+            return Err(bad(
+                "the journal of a whole run, not a shard (run with --shard K/S)".into(),
+            ));
+        };
+        if let Some(d) = &c.damage {
+            return Err(bad(format!(
+                "shard {k}/{s} is incomplete: {d}; it holds ensembles {}..{} of {}..{} \
+                 (run the same `gdsmc run --shard {k}/{s}` again to finish it)",
+                c.header.start,
+                c.header.start + c.rows.len() as u64,
+                c.header.start,
+                c.header.end
+            )));
+        }
+        if let Some((p0, first)) = shards.first()
+            && !first.header.same_set(&c.header)
+        {
+            return Err(Error::Shards(format!(
+                "{} and {} are not shards of one run: {} is {}",
+                p0.display(),
+                path.display(),
+                path.display(),
+                c.header.difference(&first.header)
+            )));
+        }
+        let expected = range(k, s, c.header.ensembles);
+        if c.header.start != expected.start || c.header.end != expected.end {
+            return Err(bad(format!(
+                "shard {k}/{s} holds ensembles {}..{}, shard {k}/{s} of {} is {}..{}",
+                c.header.start, c.header.end, c.header.ensembles, expected.start, expected.end
+            )));
+        }
+        shards.push((path.clone(), c));
+    }
+    shards.sort_by_key(|(_, c)| c.header.shard.map_or(0, |s| s.0));
+    let s = shards[0].1.header.shard.map_or(1, |s| s.1);
+    for w in shards.windows(2) {
+        if w[0].1.header.shard == w[1].1.header.shard {
+            return Err(Error::Shards(format!(
+                "shard {} given twice: {} and {}",
+                journal::shard_words(w[0].1.header.shard),
+                w[0].0.display(),
+                w[1].0.display()
+            )));
+        }
+    }
+    let have: Vec<u64> = shards
+        .iter()
+        .map(|(_, c)| c.header.shard.map_or(0, |s| s.0))
+        .collect();
+    let missing: Vec<String> = (0..s)
+        .filter(|k| !have.contains(k))
+        .map(|k| format!("{k}/{s}"))
+        .collect();
+    if !missing.is_empty() {
+        return Err(Error::Shards(format!(
+            "{} of {s} shards missing: {} (given: {})",
+            missing.len(),
+            missing.join(", "),
+            shards
+                .iter()
+                .map(|(p, _)| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )));
+    }
+    let (p0, first) = &shards[0];
+    let scene = first.header.scene(p0)?;
+    let mut totals = Totals::new(&scene);
+    let mut timing = Timing::default();
+    for (_, c) in &shards {
+        for (row, counts) in &c.rows {
+            totals.push(row, counts);
+        }
+        let t = c.end.unwrap_or_default();
+        timing.wall = timing.wall.max(t.wall);
+        timing.cpu += t.cpu;
+        timing.threads += t.threads;
+    }
+    Ok(Merged {
+        stats: stats_of(&scene, totals, timing),
+        scene,
+        shards: s,
+    })
+}
