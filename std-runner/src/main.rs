@@ -243,10 +243,17 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             let range = shard.map_or(0..sc.ensembles, |(k, s)| {
                 run::shard::range(k, s, sc.ensembles)
             });
+            #[cfg(feature = "mpi")]
+            if let Some(w) = run::mpi::World::init() {
+                return mpi_run(
+                    &w, &sc, &path, &text, &overrides, shard, out, threads, format,
+                );
+            }
             let header =
                 run::journal::Header::new(&sc, &path, &text, &overrides, shard, range.clone());
             if let Some((k, s)) = shard {
-                let dir = out.unwrap_or_else(|| PathBuf::from("out").join(format!("{}-shards", sc.name)));
+                let dir =
+                    out.unwrap_or_else(|| PathBuf::from("out").join(format!("{}-shards", sc.name)));
                 std::fs::create_dir_all(&dir).map_err(|source| gdsmc_runner::Error::Write {
                     path: dir.clone(),
                     source,
@@ -269,7 +276,11 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                     done - r.resumed,
                     r.resumed,
                     r.stats.wall.as_secs_f64(),
-                    if done == range.end - range.start { "wrote" } else { "kept so far in" },
+                    if done == range.end - range.start {
+                        "wrote"
+                    } else {
+                        "kept so far in"
+                    },
                     file.display()
                 );
                 if done < range.end - range.start {
@@ -345,16 +356,58 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
     }
 }
 
+/// `mpirun -n P gdsmc run SCENE`: rank r runs shard r of P, rank 0 merges and writes.
+#[cfg(feature = "mpi")]
+#[allow(clippy::too_many_arguments)]
+fn mpi_run(
+    w: &run::mpi::World,
+    sc: &scene::Scene,
+    path: &std::path::Path,
+    text: &str,
+    overrides: &[scene::Override],
+    shard: Option<(u64, u64)>,
+    out: Option<PathBuf>,
+    threads: usize,
+    format: gdsmc_runner::report::charts::Formats,
+) -> Result<(), gdsmc_runner::Error> {
+    if shard.is_some() {
+        return Err(gdsmc_runner::Error::Argument {
+            flag: "--shard".into(),
+            message: "not under mpirun: the ranks are the shards".into(),
+        });
+    }
+    let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
+    let started = std::time::Instant::now();
+    run::mpi::run(
+        w,
+        sc,
+        |sh, range| run::journal::Header::new(sc, path, text, overrides, Some(sh), range),
+        &dir,
+        threads,
+        |m| {
+            let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
+            write_outputs(&m.scene, &m.stats, set, &dir, format)?;
+            println!(
+                "{} MPI ranks, {} ensembles, {:.2} s from start to merged outputs",
+                m.shards,
+                m.stats.ensembles,
+                started.elapsed().as_secs_f64()
+            );
+            Ok(())
+        },
+    )?;
+    Ok(())
+}
+
 /// The journal of a whole run writing into `dir`: `.NAME.gdsmc-ensembles` beside it.
 fn journal_path(dir: &std::path::Path) -> PathBuf {
     let name = dir
         .file_name()
         .map_or("out".into(), |n| n.to_string_lossy().into_owned());
     let parent = dir.parent().filter(|p| !p.as_os_str().is_empty());
-    parent.map_or_else(|| PathBuf::from("."), |p| p.to_path_buf()).join(format!(
-        ".{name}.{}",
-        run::journal::EXTENSION
-    ))
+    parent
+        .map_or_else(|| PathBuf::from("."), |p| p.to_path_buf())
+        .join(format!(".{name}.{}", run::journal::EXTENSION))
 }
 
 /// Runs a journaled job with a progress bar and Ctrl-C handling: the first Ctrl-C lets the
@@ -419,10 +472,7 @@ fn write_outputs(
         "ensembles": stats.ensembles,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
     }))?;
-    print!(
-        "{}",
-        gdsmc_runner::report::summary::text(sc, stats, &refs)
-    );
+    print!("{}", gdsmc_runner::report::summary::text(sc, stats, &refs));
     println!(
         "\nwrote {} files into {}: {}",
         written.len(),

@@ -160,7 +160,10 @@ impl Header {
         } else if self.seed != other.seed {
             format!("seed {}, not {}", self.seed, other.seed)
         } else if self.ensembles != other.ensembles {
-            format!("{} ensembles in all, not {}", self.ensembles, other.ensembles)
+            format!(
+                "{} ensembles in all, not {}",
+                self.ensembles, other.ensembles
+            )
         } else if self.shard.map(|s| s.1) != other.shard.map(|s| s.1) {
             format!(
                 "{}, not {}",
@@ -328,7 +331,9 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
     };
     let mut b = bytes;
     if take(&mut b, MAGIC.len()) != Some(&MAGIC[..]) {
-        return Err(bad("not a gdsmc ensemble file (no GDSMC-ENSEMBLES magic)".into()));
+        return Err(bad(
+            "not a gdsmc ensemble file (no GDSMC-ENSEMBLES magic)".into()
+        ));
     }
     let head = take(&mut b, 8).ok_or_else(|| bad("truncated in its header".into()))?;
     let format = u32_of(&head[..4]);
@@ -400,7 +405,10 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
             break;
         }
         let counts = counts_of(&w[..COUNT_WORDS]);
-        let row = w[COUNT_WORDS..].iter().map(|&x| f64::from_bits(x)).collect();
+        let row = w[COUNT_WORDS..]
+            .iter()
+            .map(|&x| f64::from_bits(x))
+            .collect();
         rows.push((row, counts));
         valid_len = (bytes.len() - b.len()) as u64;
     }

@@ -12,6 +12,8 @@ pub mod columns;
 pub mod ensemble;
 pub mod estimate;
 pub mod journal;
+#[cfg(feature = "mpi")]
+pub mod mpi;
 pub mod pages;
 pub mod results;
 pub mod shard;
@@ -48,6 +50,9 @@ struct EnsembleJob<'a> {
     stop: &'a AtomicBool,
 }
 
+/// What sees each finished ensemble (index, row, counts) before it is folded: the journal.
+type OnRow<'a> = dyn FnMut(u64, &[f64], &Counts) -> Result<(), Error> + 'a;
+
 /// A finished ensemble as a worker hands it back.
 type Done = Result<(Vec<f64>, Counts), Error>;
 
@@ -61,7 +66,7 @@ impl EnsembleJob<'_> {
         &self,
         range: std::ops::Range<u64>,
         totals: &mut Totals,
-        on_row: &mut dyn FnMut(u64, &[f64], &Counts) -> Result<(), Error>,
+        on_row: &mut OnRow,
     ) -> Result<(), Error> {
         let mut streams = Streams::new(self.scene.seed);
         for _ in 0..range.start {
@@ -270,7 +275,9 @@ impl Journaled<'_> {
         let mut totals = Totals::new(scene);
         let mut discarded = None;
         let mut writer = None;
-        if !self.fresh && let Ok(bytes) = std::fs::read(self.path) {
+        if !self.fresh
+            && let Ok(bytes) = std::fs::read(self.path)
+        {
             match journal::read(self.path, &bytes) {
                 Ok(c) if c.header.same_run(&self.header) => {
                     for (row, counts) in &c.rows {

@@ -63,9 +63,9 @@ pub fn files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, Error> {
                 .flatten()
                 .map(|e| e.path())
                 .filter(|f| {
-                    let name = f.file_name().map_or(String::new(), |n| {
-                        n.to_string_lossy().into_owned()
-                    });
+                    let name = f
+                        .file_name()
+                        .map_or(String::new(), |n| n.to_string_lossy().into_owned());
                     !name.starts_with('.') && name.ends_with(&format!(".{EXTENSION}"))
                 })
                 .collect();

@@ -1,0 +1,164 @@
+//! MPI (cargo feature `mpi`): `mpirun -n P gdsmc run SCENE` runs shard r of P on rank r and
+//! merges the shards on rank 0 in ensemble order, the fold every run uses, so the outputs are
+//! byte-identical to one process's.
+//!
+//! Each rank keeps its ensembles in its own journal beside the output directory
+//! (`.NAME.rank-r-of-P.gdsmc-ensembles`), so a job that is killed or loses a node continues
+//! when the same `mpirun` command is run again; the journals go once rank 0 has written the
+//! outputs. Ranks send rank 0 their journal's bytes (point to point, in rank order), so nodes
+//! need no shared file system.
+
+use crate::error::Error;
+use crate::run::journal::{self, Header};
+use crate::run::shard::{self, Merged};
+use crate::run::{JournalRun, Journaled};
+use crate::scene::Scene;
+use mpi::traits::*;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+
+/// The MPI world when this process was started by an MPI launcher with more than one rank
+/// (OpenMPI, MPICH and Slurm set their size variables); `None` otherwise, and MPI is then not
+/// initialized at all, so a plain `gdsmc run` of an MPI build behaves as any other.
+pub struct World {
+    _universe: mpi::environment::Universe,
+    world: mpi::topology::SimpleCommunicator,
+}
+
+/// The launcher variables that say how many ranks there are.
+const SIZE_VARS: [&str; 4] = [
+    "OMPI_COMM_WORLD_SIZE",
+    "PMI_SIZE",
+    "PMIX_SIZE",
+    "MPI_LOCALNRANKS",
+];
+
+impl World {
+    /// Initializes MPI when launched with more than one rank.
+    pub fn init() -> Option<World> {
+        let many = SIZE_VARS.iter().any(|v| {
+            std::env::var(v)
+                .ok()
+                .and_then(|s| s.parse::<u32>().ok())
+                .is_some_and(|n| n > 1)
+        });
+        if !many {
+            return None;
+        }
+        let universe = mpi::initialize()?;
+        let world = universe.world();
+        (world.size() > 1).then_some(World {
+            _universe: universe,
+            world,
+        })
+    }
+
+    /// This process's rank.
+    pub fn rank(&self) -> u64 {
+        self.world.rank() as u64
+    }
+
+    /// The number of ranks.
+    pub fn size(&self) -> u64 {
+        self.world.size() as u64
+    }
+}
+
+/// The journal of rank `r` of `p` for outputs at `dir`: hidden, beside `dir`.
+pub fn journal_path(dir: &Path, r: u64, p: u64) -> PathBuf {
+    let name = dir
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    let parent = dir
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+    parent.join(format!(".{}", shard::file_name(&name, r, p)))
+}
+
+/// Runs this rank's shard of `scene` (`header_of(shard, range)` gives its journal header) and,
+/// on rank 0, merges every rank's and hands the result to `write`; the journals are removed
+/// when `write` succeeds. Returns the merged run on rank 0, `None` on the others.
+pub fn run(
+    w: &World,
+    scene: &Scene,
+    header_of: impl Fn((u64, u64), std::ops::Range<u64>) -> Header,
+    dir: &Path,
+    threads: usize,
+    write: impl FnOnce(&Merged) -> Result<(), Error>,
+) -> Result<Option<Merged>, Error> {
+    let (r, p) = (w.rank(), w.size());
+    let range = shard::range(r, p, scene.ensembles);
+    let path = journal_path(dir, r, p);
+    let job = Journaled {
+        scene,
+        header: header_of((r, p), range),
+        path: &path,
+        threads,
+        fresh: false,
+    };
+    let ran: Result<JournalRun, Error> = job.run(&|_| {}, &AtomicBool::new(false));
+    match &ran {
+        Err(e) => eprintln!("rank {r}: {e}"),
+        Ok(j) if j.resumed > 0 => eprintln!(
+            "rank {r}: continued {}: {} ensembles were already done",
+            path.display(),
+            j.resumed
+        ),
+        Ok(j) => {
+            if let Some(why) = &j.discarded {
+                eprintln!("rank {r}: {} not continued ({why})", path.display());
+            }
+        }
+    }
+    // Every rank sends, even after an error, so that no rank waits forever.
+    let bytes = std::fs::read(&path).unwrap_or_default();
+    let root = w.world.process_at_rank(0);
+    let mut verdict: u8 = 0;
+    let merged = if r == 0 {
+        let mut inputs = vec![(path.clone(), bytes)];
+        for q in 1..p {
+            let (b, _) = w.world.process_at_rank(q as i32).receive_vec::<u8>();
+            inputs.push((journal_path(dir, q, p), b));
+        }
+        let merged = check(&inputs).and_then(|()| shard::merge(&inputs));
+        let written = merged.and_then(|m| write(&m).map(|()| m));
+        verdict = u8::from(written.is_ok());
+        root.broadcast_into(&mut verdict);
+        Some(written)
+    } else {
+        root.send(&bytes[..]);
+        root.broadcast_into(&mut verdict);
+        None
+    };
+    if verdict == 1 {
+        let _ = std::fs::remove_file(&path);
+    }
+    ran?;
+    merged.transpose()
+}
+
+/// Every rank's shard complete; else which ranks stopped early and that the same command
+/// continues them.
+fn check(inputs: &[(PathBuf, Vec<u8>)]) -> Result<(), Error> {
+    let mut short = Vec::new();
+    for (i, (path, bytes)) in inputs.iter().enumerate() {
+        let c = journal::read(path, bytes)?;
+        if c.end.is_none() {
+            short.push(format!(
+                "rank {i} has {} of its {} ensembles",
+                c.rows.len(),
+                c.header.end - c.header.start
+            ));
+        }
+    }
+    if short.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::Shards(format!(
+            "the run stopped early ({}); run the same mpirun command again to continue from \
+             the ranks' journals",
+            short.join(", ")
+        )))
+    }
+}
