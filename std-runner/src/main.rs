@@ -30,10 +30,14 @@ enum Command {
     /// columns), summary.json (scene, seed, version, timing, collision counts, errors against
     /// the references, steady-state averages, tail exponent), histograms.csv when the scene
     /// asks for it, and SVG charts. Files are replaced atomically. Ctrl-C finishes the running
-    /// ensembles and writes the results of those completed (exit code 130).
+    /// ensembles and writes the results of those completed (exit code 130). Finished ensembles
+    /// are kept as they finish in DIR's journal (.NAME.gdsmc-ensembles beside it): the same
+    /// command continues an interrupted or killed run to the same results. Under mpirun (a
+    /// build with the mpi feature) the ranks share the ensembles and rank 0 writes.
     ///
     /// Examples:
     ///   gdsmc run scenes/brs-example5.toml
+    ///   gdsmc run scenes/grw-example7.toml --shard 3/8 --threads 4
     ///   gdsmc run scenes/ms-gaussian.toml --set collisions.restitution=0.4
     ///   gdsmc run scenes/rw-steady.toml --set scheme.kind=strang --set scheme.dt=0.25
     #[command(verbatim_doc_comment)]

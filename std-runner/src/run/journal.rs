@@ -350,6 +350,12 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
     }
     let header: Header =
         serde_json::from_slice(json).map_err(|e| bad(format!("unreadable header: {e}")))?;
+    if header.start > header.end || header.end > header.ensembles {
+        return Err(bad(format!(
+            "inconsistent header: ensembles {}..{} of {}",
+            header.start, header.end, header.ensembles
+        )));
+    }
     let words = COUNT_WORDS + header.row_len;
     let mut rows = Vec::new();
     let mut valid_len = (bytes.len() - b.len()) as u64;
@@ -383,7 +389,13 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
         }
         let w: Vec<u64> = body.chunks_exact(8).map(u64_of).collect();
         if ensemble == END {
-            if w[0] != rows.len() as u64 {
+            if rows.len() as u64 != header.end - header.start {
+                damage = Some(format!(
+                    "an end record after {} of its {} ensembles",
+                    rows.len(),
+                    header.end - header.start
+                ));
+            } else if w[0] != rows.len() as u64 {
                 damage = Some(format!(
                     "its end record counts {} ensembles, it holds {}",
                     w[0],
@@ -412,7 +424,7 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
         rows.push((row, counts));
         valid_len = (bytes.len() - b.len()) as u64;
     }
-    if end.is_none() && damage.is_none() && header.start + rows.len() as u64 != header.end {
+    if end.is_none() && damage.is_none() {
         damage = Some("no end record (the run was interrupted or the file cut short)".into());
     }
     Ok(Contents {
@@ -476,5 +488,118 @@ impl Writer {
     /// The file's path.
     pub fn path(&self) -> &Path {
         &self.path
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn header() -> Header {
+        Header {
+            gdsmc_version: "test".into(),
+            scene_path: "s.toml".into(),
+            scene_text: "name = \"s\"".into(),
+            overrides: vec![("--n".into(), "particles.n=8".into())],
+            fingerprint: "fp".into(),
+            seed: 3,
+            ensembles: 10,
+            shard: Some((1, 2)),
+            start: 5,
+            end: 8,
+            row_len: 3,
+        }
+    }
+
+    fn rows() -> Vec<(Vec<f64>, Counts)> {
+        (0..3)
+            .map(|i| {
+                let c = Counts {
+                    candidates: 10 + i,
+                    collisions: 7 + i,
+                    fictitious: 3,
+                    overshoots: i,
+                    observations: 4,
+                    clamped: 0,
+                    refreshes: 1,
+                    rescales: 2,
+                };
+                (vec![i as f64 + 0.1, -1e-300, f64::MAX], c)
+            })
+            .collect()
+    }
+
+    fn file() -> (Vec<u8>, usize) {
+        let mut b = header_bytes(&header());
+        let head = b.len();
+        for (k, (row, c)) in rows().iter().enumerate() {
+            b.extend(ensemble_record(5 + k as u64, row, c));
+        }
+        let t = Timing {
+            wall: 1.5,
+            cpu: 2.5,
+            threads: 2,
+        };
+        b.extend(end_record(3, t));
+        (b, head)
+    }
+
+    /// Written and read back: the same header, rows (to the bit), counts and timing.
+    #[test]
+    fn round_trip() {
+        let (b, _) = file();
+        let c = read(Path::new("x"), &b).unwrap();
+        assert_eq!(c.header, header());
+        assert_eq!(c.rows, rows());
+        assert_eq!(c.end.unwrap().threads, 2);
+        assert!(c.damage.is_none());
+        assert_eq!(c.valid_len as usize, b.len() - 48);
+    }
+
+    /// Cut at every byte: never a panic; past the header, the rows read are exactly the
+    /// records that are whole, and the damage is named; within the header, an error.
+    #[test]
+    fn every_truncation_keeps_the_whole_records() {
+        let (b, head) = file();
+        let rec = (b.len() - head - 48) / 3;
+        for len in 0..b.len() {
+            match read(Path::new("x"), &b[..len]) {
+                Err(_) => assert!(len < head, "cut at {len}, past the header, refused"),
+                Ok(c) => {
+                    assert!(len >= head);
+                    let whole = ((len - head) / rec).min(3);
+                    assert_eq!(c.rows, rows()[..whole], "cut at {len}");
+                    assert_eq!(c.valid_len as usize, head + whole * rec);
+                    assert!(c.end.is_none() && c.damage.is_some(), "cut at {len}");
+                }
+            }
+        }
+    }
+
+    /// Every single bit flipped after the header: the records before the damaged one are kept,
+    /// that one and all after it are not, and the file is never taken as complete (CRC-32
+    /// detects every single-bit error).
+    #[test]
+    fn every_flipped_bit_is_caught() {
+        let (b, head) = file();
+        let rec = (b.len() - head - 48) / 3;
+        for at in head..b.len() {
+            for bit in 0..8 {
+                let mut d = b.clone();
+                d[at] ^= 1 << bit;
+                let c = read(Path::new("x"), &d).unwrap();
+                let before = ((at - head) / rec).min(3);
+                assert_eq!(c.rows, rows()[..before], "bit {bit} of byte {at}");
+                assert!(
+                    c.end.is_none() && c.damage.is_some(),
+                    "bit {bit} of byte {at}"
+                );
+            }
+        }
+        for at in 0..head {
+            let mut d = b.clone();
+            d[at] ^= 0x04;
+            assert!(read(Path::new("x"), &d).is_err(), "header byte {at}");
+        }
     }
 }
