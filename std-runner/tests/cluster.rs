@@ -357,3 +357,37 @@ fn bad_shard_sets_are_refused() {
         assert_says(&String::from_utf8_lossy(&o.stderr), &["--shard"]);
     }
 }
+
+/// Two runs of one scene into one output place: the second is refused while the first writes
+/// the journal (their records would interleave), naming the journal.
+#[test]
+fn one_journal_one_writer() {
+    let r = root("lock");
+    let mut base = small("grw-example3");
+    base[3] = "40000".into();
+    base[5] = "400".into();
+    let out = r.join("o");
+    let v = args(&base, &["--out", out.to_str().unwrap(), "--threads", "1"]);
+    let v: Vec<&str> = v.iter().map(String::as_str).collect();
+    let mut first = gdsmc(&v)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let journal = r.join(".o.gdsmc-ensembles");
+    let t0 = Instant::now();
+    while !journal.exists() && t0.elapsed() < Duration::from_secs(30) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let o = gdsmc(&v).output().unwrap();
+    let _ = first.kill();
+    let _ = first.wait();
+    assert!(!o.status.success(), "the second run went ahead");
+    assert_says(
+        &String::from_utf8_lossy(&o.stderr),
+        &[
+            ".o.gdsmc-ensembles",
+            "another gdsmc run is writing this journal",
+        ],
+    );
+}

@@ -444,37 +444,59 @@ pub struct Writer {
 }
 
 impl Writer {
-    /// Starts a new journal at `path` (replacing any file there).
-    pub fn create(path: &Path, header: &Header) -> Result<Self, Error> {
+    /// Opens (or creates) the journal at `path` for this process alone (an exclusive lock,
+    /// held until the writer is dropped: two runs into one output place would interleave
+    /// their records) and returns what it holds.
+    pub fn open(path: &Path) -> Result<(Self, Vec<u8>), Error> {
         let werr = |source| Error::Write {
             path: path.to_path_buf(),
             source,
         };
-        let mut file = std::fs::File::create(path).map_err(werr)?;
-        file.write_all(&header_bytes(header)).map_err(werr)?;
-        Ok(Writer {
-            path: path.to_path_buf(),
-            file,
-        })
-    }
-
-    /// Continues the journal at `path` after its first `valid_len` bytes (what [`read`] kept).
-    pub fn resume(path: &Path, valid_len: u64) -> Result<Self, Error> {
-        let werr = |source| Error::Write {
-            path: path.to_path_buf(),
-            source,
-        };
-        let file = std::fs::OpenOptions::new()
+        let mut file = std::fs::OpenOptions::new()
+            .read(true)
             .write(true)
+            .create(true)
+            .truncate(false)
             .open(path)
             .map_err(werr)?;
-        file.set_len(valid_len).map_err(werr)?;
-        let mut w = Writer {
-            path: path.to_path_buf(),
-            file,
+        match file.try_lock() {
+            Ok(()) => {}
+            Err(std::fs::TryLockError::WouldBlock) => {
+                return Err(Error::Journal {
+                    path: path.to_path_buf(),
+                    message: "another gdsmc run is writing this journal (the same scene into \
+                              the same output place): wait for it, or choose another --out"
+                        .into(),
+                });
+            }
+            Err(std::fs::TryLockError::Error(e)) => return Err(werr(e)),
+        }
+        let mut bytes = Vec::new();
+        std::io::Read::read_to_end(&mut file, &mut bytes).map_err(werr)?;
+        Ok((
+            Writer {
+                path: path.to_path_buf(),
+                file,
+            },
+            bytes,
+        ))
+    }
+
+    /// Starts the journal anew with `header` (whatever it held is dropped).
+    pub fn restart(&mut self, header: &Header) -> Result<(), Error> {
+        self.keep(0)?;
+        self.append(&header_bytes(header))
+    }
+
+    /// Keeps the first `len` bytes (what [`read`] found valid) and appends after them.
+    pub fn keep(&mut self, len: u64) -> Result<(), Error> {
+        let werr = |source| Error::Write {
+            path: self.path.clone(),
+            source,
         };
-        std::io::Seek::seek(&mut w.file, std::io::SeekFrom::End(0)).map_err(werr)?;
-        Ok(w)
+        self.file.set_len(len).map_err(werr)?;
+        std::io::Seek::seek(&mut self.file, std::io::SeekFrom::Start(len)).map_err(werr)?;
+        Ok(())
     }
 
     /// Appends bytes (a record).
@@ -483,11 +505,6 @@ impl Writer {
             path: self.path.clone(),
             source,
         })
-    }
-
-    /// The file's path.
-    pub fn path(&self) -> &Path {
-        &self.path
     }
 }
 

@@ -274,26 +274,25 @@ impl Journaled<'_> {
         let clock = Clock::start(self.threads);
         let mut totals = Totals::new(scene);
         let mut discarded = None;
-        let mut writer = None;
-        if !self.fresh
-            && let Ok(bytes) = std::fs::read(self.path)
-        {
+        let (mut writer, bytes) = journal::Writer::open(self.path)?;
+        let mut kept = None;
+        if !self.fresh && !bytes.is_empty() {
             match journal::read(self.path, &bytes) {
                 Ok(c) if c.header.same_run(&self.header) => {
                     for (row, counts) in &c.rows {
                         totals.push(row, counts);
                     }
-                    writer = Some(journal::Writer::resume(self.path, c.valid_len)?);
+                    kept = Some(c.valid_len);
                 }
                 Ok(c) => discarded = Some(c.header.difference(&self.header)),
                 Err(e) => discarded = Some(e.to_string()),
             }
         }
+        match kept {
+            Some(len) => writer.keep(len)?,
+            None => writer.restart(&self.header)?,
+        }
         let resumed = totals.ensembles;
-        let mut writer = match writer {
-            Some(w) => w,
-            None => journal::Writer::create(self.path, &self.header)?,
-        };
         progress(resumed);
         let range = self.header.start + resumed..self.header.end;
         job(scene, clock.threads, progress, stop, |job| {
