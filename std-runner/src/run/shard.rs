@@ -11,6 +11,7 @@ use crate::run::journal::{self, Contents, EXTENSION, Timing};
 use crate::run::totals::Totals;
 use crate::run::{RunStats, stats_of};
 use crate::scene::Scene;
+use std::borrow::Cow;
 use std::path::PathBuf;
 
 /// The ensembles of shard `k` of `s` in a run of `m`: `[k m / s, (k + 1) m / s)` (sizes differ
@@ -100,86 +101,69 @@ pub struct Merged {
     pub shards: u64,
 }
 
-/// Reads and merges shard files.
+/// Reads and merges shard files, one at a time: every file is read and checked first (its
+/// rows dropped), then read again and folded in shard order, so memory holds one shard, not
+/// the run.
 pub fn merge_files(paths: &[PathBuf]) -> Result<Merged, Error> {
-    let mut read = Vec::with_capacity(paths.len());
-    for p in paths {
-        let bytes = std::fs::read(p).map_err(|e| Error::Journal {
-            path: p.clone(),
-            message: format!("cannot read: {e}"),
-        })?;
-        read.push((p.clone(), bytes));
-    }
-    merge(&read)
+    merge_with(paths, |i| {
+        std::fs::read(&paths[i])
+            .map(Cow::Owned)
+            .map_err(|e| Error::Journal {
+                path: paths[i].clone(),
+                message: format!("cannot read: {e}"),
+            })
+    })
 }
 
-/// Merges shards given as (name, bytes): refuses a set that is not one whole run (a file
-/// damaged or cut short, a shard of another scene, seed, ensemble count, shard count or gdsmc
-/// version, a shard twice, a shard missing), each with a message naming the files.
+/// Merges shards given as (name, bytes) in memory (MPI's rank 0); see [`merge_with`].
 pub fn merge(inputs: &[(PathBuf, Vec<u8>)]) -> Result<Merged, Error> {
-    if inputs.is_empty() {
+    let names: Vec<PathBuf> = inputs.iter().map(|(p, _)| p.clone()).collect();
+    merge_with(&names, |i| Ok(Cow::Borrowed(&inputs[i].1)))
+}
+
+/// Merges the shards named `names`, whose bytes `load(i)` gives (asked twice: to check, then to
+/// fold): refuses a set that is not one whole run (a file damaged or cut short, a shard of
+/// another scene, seed, ensemble count, shard count or gdsmc version, a shard twice, a shard
+/// missing), each with a message naming the files.
+pub fn merge_with<'a>(
+    names: &[PathBuf],
+    load: impl Fn(usize) -> Result<Cow<'a, [u8]>, Error>,
+) -> Result<Merged, Error> {
+    if names.is_empty() {
         return Err(Error::Shards("no shard files given".into()));
     }
-    let mut shards: Vec<(PathBuf, Contents)> = Vec::with_capacity(inputs.len());
-    for (path, bytes) in inputs {
-        let c = journal::read(path, bytes)?;
-        let bad = |message: String| Error::Journal {
-            path: path.clone(),
-            message,
-        };
-        let Some((k, s)) = c.header.shard else {
-            return Err(bad(
-                "the journal of a whole run, not a shard (run with --shard K/S)".into(),
-            ));
-        };
-        if let Some(d) = &c.damage {
-            return Err(bad(format!(
-                "shard {k}/{s} is incomplete: {d}; it holds ensembles {}..{} of {}..{} \
-                 (run the same `gdsmc run --shard {k}/{s}` again to finish it)",
-                c.header.start,
-                c.header.start + c.rows.len() as u64,
-                c.header.start,
-                c.header.end
-            )));
-        }
-        if let Some((p0, first)) = shards.first()
-            && !first.header.same_set(&c.header)
+    // (input index, K, header) of every shard, checked one by one.
+    let mut shards: Vec<(usize, u64, journal::Header)> = Vec::with_capacity(names.len());
+    for (i, path) in names.iter().enumerate() {
+        let c = journal::read(path, &load(i)?)?;
+        let k = whole_shard(path, &c)?;
+        if let Some((i0, _, first)) = shards.first()
+            && !first.same_set(&c.header)
         {
             return Err(Error::Shards(format!(
                 "{} and {} are not shards of one run: {} is {}",
-                p0.display(),
+                names[*i0].display(),
                 path.display(),
                 path.display(),
-                c.header.difference(&first.header)
+                c.header.difference(first)
             )));
         }
-        let expected = range(k, s, c.header.ensembles);
-        if c.header.start != expected.start || c.header.end != expected.end {
-            return Err(bad(format!(
-                "shard {k}/{s} holds ensembles {}..{}, shard {k}/{s} of {} is {}..{}",
-                c.header.start, c.header.end, c.header.ensembles, expected.start, expected.end
-            )));
-        }
-        shards.push((path.clone(), c));
+        shards.push((i, k, c.header));
     }
-    shards.sort_by_key(|(_, c)| c.header.shard.map_or(0, |s| s.0));
-    let s = shards[0].1.header.shard.map_or(1, |s| s.1);
+    shards.sort_by_key(|(_, k, _)| *k);
+    let s = shards[0].2.shard.map_or(1, |s| s.1);
     for w in shards.windows(2) {
-        if w[0].1.header.shard == w[1].1.header.shard {
+        if w[0].1 == w[1].1 {
             return Err(Error::Shards(format!(
                 "shard {} given twice: {} and {}",
-                journal::shard_words(w[0].1.header.shard),
-                w[0].0.display(),
-                w[1].0.display()
+                journal::shard_words(w[0].2.shard),
+                names[w[0].0].display(),
+                names[w[1].0].display()
             )));
         }
     }
-    let have: Vec<u64> = shards
-        .iter()
-        .map(|(_, c)| c.header.shard.map_or(0, |s| s.0))
-        .collect();
     let missing: Vec<String> = (0..s)
-        .filter(|k| !have.contains(k))
+        .filter(|k| !shards.iter().any(|x| x.1 == *k))
         .map(|k| format!("{k}/{s}"))
         .collect();
     if !missing.is_empty() {
@@ -187,18 +171,25 @@ pub fn merge(inputs: &[(PathBuf, Vec<u8>)]) -> Result<Merged, Error> {
             "{} of {s} shards missing: {} (given: {})",
             missing.len(),
             missing.join(", "),
-            shards
+            names
                 .iter()
-                .map(|(p, _)| p.display().to_string())
+                .map(|p| p.display().to_string())
                 .collect::<Vec<_>>()
                 .join(", ")
         )));
     }
-    let (p0, first) = &shards[0];
-    let scene = first.header.scene(p0)?;
+    let (i0, _, first) = &shards[0];
+    let scene = first.scene(&names[*i0])?;
     let mut totals = Totals::new(&scene);
     let mut timing = Timing::default();
-    for (_, c) in &shards {
+    for (i, _, header) in &shards {
+        let c = journal::read(&names[*i], &load(*i)?)?;
+        if c.header != *header || c.damage.is_some() {
+            return Err(Error::Journal {
+                path: names[*i].clone(),
+                message: "changed while it was being merged".into(),
+            });
+        }
         for (row, counts) in &c.rows {
             totals.push(row, counts);
         }
@@ -212,4 +203,36 @@ pub fn merge(inputs: &[(PathBuf, Vec<u8>)]) -> Result<Merged, Error> {
         scene,
         shards: s,
     })
+}
+
+/// The shard index of a file that is a whole shard: one with a shard header, complete, and
+/// holding exactly its shard's ensembles; else the error naming it.
+fn whole_shard(path: &std::path::Path, c: &Contents) -> Result<u64, Error> {
+    let bad = |message: String| Error::Journal {
+        path: path.to_path_buf(),
+        message,
+    };
+    let Some((k, s)) = c.header.shard else {
+        return Err(bad(
+            "the journal of a whole run, not a shard (run with --shard K/S)".into(),
+        ));
+    };
+    if let Some(d) = &c.damage {
+        return Err(bad(format!(
+            "shard {k}/{s} is incomplete: {d}; it holds ensembles {}..{} of {}..{} \
+             (run the same `gdsmc run --shard {k}/{s}` again to finish it)",
+            c.header.start,
+            c.header.start + c.rows.len() as u64,
+            c.header.start,
+            c.header.end
+        )));
+    }
+    let expected = range(k, s, c.header.ensembles);
+    if c.header.start != expected.start || c.header.end != expected.end {
+        return Err(bad(format!(
+            "shard {k}/{s} holds ensembles {}..{}, shard {k}/{s} of {} is {}..{}",
+            c.header.start, c.header.end, c.header.ensembles, expected.start, expected.end
+        )));
+    }
+    Ok(k)
 }
