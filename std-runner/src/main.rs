@@ -468,14 +468,7 @@ fn write_outputs(
     format: gdsmc_runner::report::charts::Formats,
 ) -> Result<(), gdsmc_runner::Error> {
     let refs = gdsmc_runner::reference::curves::for_scene(sc);
-    gdsmc_runner::report::write_all(set.dir(), sc, stats, &refs, format)?;
-    let written = set.commit(serde_json::json!({
-        "scene": sc.name,
-        "seed": sc.seed,
-        "n": sc.n(),
-        "ensembles": stats.ensembles,
-        "gdsmc_version": env!("CARGO_PKG_VERSION"),
-    }))?;
+    let written = gdsmc_runner::report::commit_run(set, sc, stats, &refs, format)?;
     print!("{}", gdsmc_runner::report::summary::text(sc, stats, &refs));
     println!(
         "\nwrote {} files into {}: {}",
@@ -603,14 +596,7 @@ fn reproduce(
     if let Some(e) = write_err {
         return Err(e);
     }
-    let bad: Vec<String> = tables
-        .iter()
-        .flat_map(|t| {
-            t.failures()
-                .into_iter()
-                .map(move |d| format!("{}: {d}", t.name))
-        })
-        .collect();
+    let bad = reproduce::failures(&tables);
     let paper_off: Vec<String> = tables
         .iter()
         .flat_map(|t| {

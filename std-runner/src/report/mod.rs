@@ -197,8 +197,40 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     })
 }
 
-/// Writes observables.csv, summary.json and the charts (in `formats`) into `dir` (created if
-/// missing).
+/// The files of a run besides the charts, by name, as bytes: observables.csv, summary.json,
+/// and histograms.csv, reduced.csv, marginal.csv when the scene asks for them. The command
+/// writes them ([`write_all`]); the Python package hands them over as they are.
+pub fn tables(
+    scene: &Scene,
+    stats: &RunStats,
+    refs: &[ReferenceCurve],
+) -> Result<Vec<(String, Vec<u8>)>, Error> {
+    let csv_err = |name: &str, e: csv::Error| Error::Write {
+        path: name.into(),
+        source: std::io::Error::other(e.to_string()),
+    };
+    let mut out = vec![(
+        "observables.csv".to_string(),
+        observables_csv(stats, refs).map_err(|e| csv_err("observables.csv", e))?,
+    )];
+    let json = serde_json::to_vec_pretty(&summary_json(scene, stats, refs)).expect("json");
+    out.push(("summary.json".into(), json));
+    if let Some((radius, h)) = &stats.histogram {
+        let bytes = histograms_csv(*radius, h).map_err(|e| csv_err("histograms.csv", e))?;
+        out.push(("histograms.csv".into(), bytes));
+    }
+    if let Some(r) = crate::analysis::distribution::reduced(scene, stats) {
+        let bytes = reduced_csv(&r).map_err(|e| csv_err("reduced.csv", e))?;
+        out.push(("reduced.csv".into(), bytes));
+    }
+    if let Some(m) = crate::analysis::distribution::marginal(stats) {
+        let bytes = marginal_csv(&m).map_err(|e| csv_err("marginal.csv", e))?;
+        out.push(("marginal.csv".into(), bytes));
+    }
+    Ok(out)
+}
+
+/// Writes the [`tables`] and the charts (in `formats`) into `dir` (created if missing).
 pub fn write_all(
     dir: &Path,
     scene: &Scene,
@@ -210,42 +242,34 @@ pub fn write_all(
         path: dir.to_path_buf(),
         source,
     })?;
-    let csv_path = dir.join("observables.csv");
-    let bytes = observables_csv(stats, refs).map_err(|e| Error::Write {
-        path: csv_path.clone(),
-        source: std::io::Error::other(e.to_string()),
-    })?;
-    write_atomic(&csv_path, &bytes)?;
-    let json = serde_json::to_vec_pretty(&summary_json(scene, stats, refs)).expect("json");
-    write_atomic(&dir.join("summary.json"), &json)?;
-    if let Some((radius, h)) = &stats.histogram {
-        let path = dir.join("histograms.csv");
-        let bytes = histograms_csv(*radius, h).map_err(|e| Error::Write {
-            path: path.clone(),
-            source: std::io::Error::other(e.to_string()),
-        })?;
-        write_atomic(&path, &bytes)?;
+    for (name, bytes) in tables(scene, stats, refs)? {
+        write_atomic(&dir.join(name), &bytes)?;
     }
     let reduced = crate::analysis::distribution::reduced(scene, stats);
     let marginal = crate::analysis::distribution::marginal(stats);
-    let csv_err = |path: &Path, e: csv::Error| Error::Write {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(e.to_string()),
-    };
-    if let Some(r) = &reduced {
-        let path = dir.join("reduced.csv");
-        let bytes = reduced_csv(r).map_err(|e| csv_err(&path, e))?;
-        write_atomic(&path, &bytes)?;
-    }
-    if let Some(m) = &marginal {
-        let path = dir.join("marginal.csv");
-        let bytes = marginal_csv(m).map_err(|e| csv_err(&path, e))?;
-        write_atomic(&path, &bytes)?;
-    }
     let title = charts::title(&scene.name, scene.n(), stats.ensembles);
     let all = charts::all(&title, stats, refs, reduced.as_ref(), marginal.as_ref());
     charts::write(dir, &all, formats)?;
     Ok(())
+}
+
+/// Writes a run's whole output set into the prepared `set` ([`write_all`]) and commits it with
+/// its manifest (scene, seed, n, ensembles, version). Returns the files written.
+pub fn commit_run(
+    set: set::OutputSet,
+    scene: &Scene,
+    stats: &RunStats,
+    refs: &[ReferenceCurve],
+    formats: charts::Formats,
+) -> Result<Vec<String>, Error> {
+    write_all(set.dir(), scene, stats, refs, formats)?;
+    set.commit(serde_json::json!({
+        "scene": scene.name,
+        "seed": scene.seed,
+        "n": scene.n(),
+        "ensembles": stats.ensembles,
+        "gdsmc_version": env!("CARGO_PKG_VERSION"),
+    }))
 }
 
 /// reduced.csv: MS's reduced distribution per shell of `c = |v - V| / v0`: `c_lo, c_hi, f,

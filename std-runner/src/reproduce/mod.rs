@@ -69,6 +69,18 @@ pub const TABLES: &[Entry] = &[
     ms::TABLE1,
 ];
 
+/// Every figure of ours that misses its range, as "table: figure" (empty when the run passes).
+pub fn failures(tables: &[Table]) -> Vec<String> {
+    tables
+        .iter()
+        .flat_map(|t| {
+            t.failures()
+                .into_iter()
+                .map(move |d| format!("{}: {d}", t.name))
+        })
+        .collect()
+}
+
 /// Runs the named tables (all when `names` is empty), calling `done` after each.
 pub fn run(
     names: &[String],

@@ -1,0 +1,67 @@
+"""Type hints of the Rust extension (gdsmc._gdsmc); the public API is gdsmc/__init__.py."""
+
+from os import PathLike
+from typing import Any, Callable, List, Optional, Tuple, Union
+
+__version__: str
+
+class SceneError(ValueError):
+    """A scene that cannot be read, parsed or validated (file, line and key named)."""
+
+class RunError(RuntimeError):
+    """A run that stopped (an engine error, a refused size, an unwritable output place)."""
+
+class Scene:
+    """A validated scene: a scene file's text and the overrides applied to it."""
+
+    @staticmethod
+    def from_file(path: Union[str, PathLike[str]]) -> Scene: ...
+    @staticmethod
+    def from_toml(text: str, name: str = "<string>") -> Scene: ...
+    def set(self, key: str, value: Any) -> Scene:
+        """A copy with ``key`` (dotted, e.g. "collisions.restitution") set to ``value`` (a
+        number, bool, string or list; None removes the key), validated."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def description(self) -> str: ...
+    @property
+    def n(self) -> int: ...
+    @property
+    def ensembles(self) -> int: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def times(self) -> List[float]: ...
+    @property
+    def text(self) -> str: ...
+    @property
+    def overrides(self) -> List[str]: ...
+
+class RunResult:
+    """A run's statistics (wrapped by gdsmc.Result)."""
+
+    @property
+    def scene(self) -> Scene: ...
+    @property
+    def ensembles(self) -> int: ...
+    @property
+    def wall(self) -> float: ...
+    @property
+    def cpu(self) -> float: ...
+    def tables(self) -> List[Tuple[str, str]]: ...
+    def summary_text(self) -> str: ...
+    def write(self, dir: Union[str, PathLike[str]], formats: str = "svg") -> List[str]: ...
+
+def run(
+    scene: Scene,
+    n: Optional[int] = None,
+    ensembles: Optional[int] = None,
+    seed: Optional[int] = None,
+    threads: int = 0,
+    progress: Optional[Callable[[int], Any]] = None,
+    allow_long: bool = False,
+) -> Tuple[RunResult, bool]: ...
+def reproduce(
+    names: List[str], quick: bool = True, threads: int = 0, seed: int = 1
+) -> Tuple[str, List[str], List[str]]: ...

@@ -1,0 +1,47 @@
+//! `gdsmc._gdsmc`: the Python extension. Scenes go through the scene crate's validation (the
+//! same messages as the command, naming file, line and key), runs through the runner's
+//! ensemble loop (the same numbers as `gdsmc run` for the same scene and seed), and results
+//! come back as the same tables the command writes (parsed into numpy arrays by the Python
+//! layer, `gdsmc/__init__.py`).
+
+mod result;
+mod scene;
+
+use pyo3::prelude::*;
+
+pyo3::create_exception!(
+    _gdsmc,
+    SceneError,
+    pyo3::exceptions::PyValueError,
+    "A scene that cannot be read, parsed or validated; the message names the file, line and key."
+);
+pyo3::create_exception!(
+    _gdsmc,
+    RunError,
+    pyo3::exceptions::PyRuntimeError,
+    "A run that stopped (an engine error, a refused size, an unwritable output place)."
+);
+
+/// Maps a runner error to the Python exception that says what went wrong.
+pub(crate) fn to_py(e: gdsmc_runner::Error) -> PyErr {
+    match e {
+        gdsmc_runner::Error::Scene(s) => SceneError::new_err(s.to_string()),
+        gdsmc_runner::Error::Argument { .. } => {
+            pyo3::exceptions::PyValueError::new_err(e.to_string())
+        }
+        other => RunError::new_err(other.to_string()),
+    }
+}
+
+/// The extension module.
+#[pymodule]
+fn _gdsmc(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("SceneError", m.py().get_type::<SceneError>())?;
+    m.add("RunError", m.py().get_type::<RunError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<scene::Scene>()?;
+    m.add_class::<result::RunResult>()?;
+    m.add_function(wrap_pyfunction!(result::run, m)?)?;
+    m.add_function(wrap_pyfunction!(result::reproduce, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,202 @@
+//! `run` and `RunResult`: a scene's ensembles run with the GIL released, Ctrl-C (a
+//! KeyboardInterrupt) stopping them the way the command's Ctrl-C does, and the results as the
+//! command's tables; `reproduce`: the papers' tables.
+
+use crate::scene::Scene;
+use crate::to_py;
+use gdsmc_runner::reference::curves::for_scene;
+use gdsmc_runner::report;
+use gdsmc_runner::run::{self as runner, RunStats};
+use gdsmc_runner::scene as sc;
+use pyo3::prelude::*;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::time::Duration;
+
+/// The statistics of a finished (or interrupted) run and its scene.
+#[pyclass(frozen, module = "gdsmc._gdsmc")]
+pub struct RunResult {
+    scene: Scene,
+    stats: RunStats,
+}
+
+/// How often the waiting thread looks for Ctrl-C and reports progress.
+const POLL: Duration = Duration::from_millis(50);
+
+/// Runs `scene` (with `n`, `ensembles`, `seed` overriding its keys, validated as the command's
+/// flags are) on `threads` threads (0: all cores). Returns the result and whether a
+/// KeyboardInterrupt stopped it early (the result then covers the ensembles finished, exactly
+/// those of a shorter run). `progress(k)` is called with the ensembles finished since its last
+/// call.
+#[pyfunction]
+#[pyo3(signature = (scene, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false))]
+#[allow(clippy::too_many_arguments)]
+pub fn run(
+    py: Python<'_>,
+    scene: &Scene,
+    n: Option<i64>,
+    ensembles: Option<i64>,
+    seed: Option<u64>,
+    threads: usize,
+    progress: Option<Bound<'_, PyAny>>,
+    allow_long: bool,
+) -> PyResult<(RunResult, bool)> {
+    let mut s = scene.clone();
+    for o in [
+        n.map(|n| sc::Override::flag("n", "particles.n", n)),
+        ensembles.map(|m| sc::Override::flag("ensembles", "run.ensembles", m)),
+        seed.map(|x| sc::Override::flag("seed", "run.seed", x)),
+    ]
+    .into_iter()
+    .flatten()
+    {
+        s = s.with(o)?;
+    }
+    runner::estimate::check(&s.scene, threads, allow_long).map_err(to_py)?;
+    let stop = AtomicBool::new(false);
+    let done = AtomicU64::new(0);
+    let mut reported = 0;
+    let mut interrupted = false;
+    let stats = std::thread::scope(|scope| -> PyResult<_> {
+        let job = scope.spawn(|| {
+            runner::run_interruptible(
+                &s.scene,
+                threads,
+                &|k| {
+                    done.fetch_add(k, Ordering::Relaxed);
+                },
+                &stop,
+            )
+        });
+        while !job.is_finished() {
+            py.detach(|| std::thread::sleep(POLL));
+            if !interrupted && py.check_signals().is_err() {
+                // KeyboardInterrupt: the running ensembles finish, the rest are skipped.
+                interrupted = true;
+                stop.store(true, Ordering::SeqCst);
+            }
+            let now = done.load(Ordering::Relaxed);
+            if let Some(p) = &progress
+                && now > reported
+                && !interrupted
+            {
+                p.call1((now - reported,))?;
+                reported = now;
+            }
+        }
+        let stats = py
+            .detach(|| job.join())
+            .expect("the run thread does not panic");
+        Ok(stats)
+    })?;
+    let stats = stats.map_err(to_py)?;
+    if let Some(p) = &progress
+        && !interrupted
+        && stats.ensembles > reported
+    {
+        p.call1((stats.ensembles - reported,))?;
+    }
+    Ok((RunResult { scene: s, stats }, interrupted))
+}
+
+#[pymethods]
+impl RunResult {
+    /// The scene that ran (with the overrides of the call).
+    #[getter]
+    fn scene(&self) -> Scene {
+        self.scene.clone()
+    }
+
+    /// Ensembles in the statistics.
+    #[getter]
+    fn ensembles(&self) -> u64 {
+        self.stats.ensembles
+    }
+
+    /// Wall seconds of the run.
+    #[getter]
+    fn wall(&self) -> f64 {
+        self.stats.wall.as_secs_f64()
+    }
+
+    /// CPU seconds of the run (all threads).
+    #[getter]
+    fn cpu(&self) -> f64 {
+        self.stats.cpu.as_secs_f64()
+    }
+
+    /// The files `gdsmc run` writes besides the charts, as text: observables.csv,
+    /// summary.json, and histograms.csv, reduced.csv, marginal.csv when the scene has them.
+    fn tables(&self) -> PyResult<Vec<(String, String)>> {
+        let refs = for_scene(&self.scene.scene);
+        let files = report::tables(&self.scene.scene, &self.stats, &refs).map_err(to_py)?;
+        Ok(files
+            .into_iter()
+            .map(|(name, bytes)| (name, String::from_utf8_lossy(&bytes).into_owned()))
+            .collect())
+    }
+
+    /// The summary the command prints.
+    fn summary_text(&self) -> String {
+        let refs = for_scene(&self.scene.scene);
+        report::summary::text(&self.scene.scene, &self.stats, &refs)
+    }
+
+    /// Writes the command's whole output set (tables, summary.json, charts in `formats`:
+    /// "svg", "png", "pdf", comma-separated) into `dir`, replacing the previous set in one
+    /// step. Returns the files written.
+    #[pyo3(signature = (dir, formats = "svg"))]
+    fn write(
+        &self,
+        py: Python<'_>,
+        dir: std::path::PathBuf,
+        formats: &str,
+    ) -> PyResult<Vec<String>> {
+        let formats: report::charts::Formats = formats
+            .parse()
+            .map_err(|e: String| pyo3::exceptions::PyValueError::new_err(e))?;
+        py.detach(|| {
+            let set = report::set::OutputSet::prepare(&dir)?;
+            let refs = for_scene(&self.scene.scene);
+            report::commit_run(set, &self.scene.scene, &self.stats, &refs, formats)
+        })
+        .map_err(to_py)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "RunResult({:?}: n={}, {} ensembles, {:.2} s)",
+            self.scene.scene.name,
+            self.scene.scene.n(),
+            self.stats.ensembles,
+            self.stats.wall.as_secs_f64()
+        )
+    }
+}
+
+/// Runs the papers' tables (`names`: e.g. ["grw-table1"]; empty: all) and returns the
+/// markdown report, one text block per table, and the disagreements of ours (empty when the
+/// run passes).
+#[pyfunction]
+#[pyo3(signature = (names, quick = true, threads = 0, seed = 1))]
+pub fn reproduce(
+    py: Python<'_>,
+    names: Vec<String>,
+    quick: bool,
+    threads: usize,
+    seed: u64,
+) -> PyResult<(String, Vec<String>, Vec<String>)> {
+    use gdsmc_runner::reproduce as rp;
+    let opts = rp::Options {
+        quick,
+        threads,
+        seed,
+    };
+    let start = std::time::Instant::now();
+    let tables = py
+        .detach(|| rp::run(&names, &opts, |_| {}))
+        .map_err(to_py)?;
+    let md = rp::markdown(&tables, &opts, start.elapsed().as_secs_f64());
+    let texts = tables.iter().map(rp::text).collect();
+    let bad = rp::failures(&tables);
+    Ok((md, texts, bad))
+}

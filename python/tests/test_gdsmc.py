@@ -1,0 +1,232 @@
+"""The Python package against the command: the same numbers for the same scene and seed, the
+same validation, Ctrl-C keeping the finished ensembles, and the example notebook run headless.
+
+The command is GDSMC_BIN or target/release/gdsmc (built by `cargo build --release -p gdsmc`).
+"""
+
+import csv
+import json
+import os
+import signal
+import subprocess
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import gdsmc
+
+ROOT = Path(__file__).resolve().parents[2]
+SCENES = ROOT / "scenes"
+GDSMC = Path(os.environ.get("GDSMC_BIN", ROOT / "target" / "release" / "gdsmc"))
+
+
+def command(tmp_path, scene, *args):
+    """Runs `gdsmc run` and returns its output directory."""
+    if not GDSMC.exists():
+        pytest.fail(f"{GDSMC} missing: cargo build --release -p gdsmc, or set GDSMC_BIN")
+    out = tmp_path / "cmd"
+    subprocess.run(
+        [str(GDSMC), "run", str(scene), *args, "--out", str(out)],
+        check=True,
+        stdout=subprocess.DEVNULL,
+    )
+    return out
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], [[float(x) if x != "" else np.nan for x in r] for r in rows[1:]]
+
+
+def assert_table_equals_file(table, path):
+    header, rows = read_csv(path)
+    assert list(table) == header
+    for j, name in enumerate(header):
+        col = np.array([r[j] for r in rows])
+        # Exactly equal (NaN where the file has NaN): the file holds round-trip decimals.
+        assert np.array_equal(table[name], col, equal_nan=True), name
+
+
+def strip_timing(v):
+    if isinstance(v, dict):
+        return {
+            k: strip_timing(x)
+            for k, x in v.items()
+            if k not in ("wall_seconds", "cpu_seconds", "threads", "collisions_per_second")
+        }
+    if isinstance(v, list):
+        return [strip_timing(x) for x in v]
+    return v
+
+
+@pytest.mark.parametrize(
+    "name,args",
+    [
+        ("grw-example3", ["--n", "300", "--ensembles", "25", "--seed", "7"]),
+        (
+            "ms-constant-force",
+            ["--n", "256", "--ensembles", "6", "--set", "observe.collisional_pairs=500"],
+        ),
+    ],
+)
+def test_same_numbers_as_the_command(tmp_path, name, args):
+    out = command(tmp_path, SCENES / f"{name}.toml", *args)
+    scene = gdsmc.Scene.from_file(SCENES / f"{name}.toml")
+    opts = dict(zip(args[0::2], args[1::2]))
+    if "--set" in opts:
+        key, value = opts["--set"].split("=")
+        scene = scene.set(key, int(value))
+    r = gdsmc.run(
+        scene,
+        n=int(opts["--n"]),
+        ensembles=int(opts["--ensembles"]),
+        seed=int(opts.get("--seed", 1)),
+    )
+    assert r.ensembles == int(opts["--ensembles"])
+    assert_table_equals_file(r.table, out / "observables.csv")
+    for hist, table in r.histograms.items():
+        assert_table_equals_file(table, out / f"{hist}.csv")
+    expected = {p.stem for p in out.glob("*.csv")} - {"observables"}
+    assert set(r.histograms) == expected
+    with open(out / "summary.json") as f:
+        assert strip_timing(r.summary) == strip_timing(json.load(f))
+    # The views agree with the table.
+    assert np.array_equal(r.times, r.table["t"])
+    assert np.array_equal(r.mean["T"], r.table["T"])
+    assert np.array_equal(r.ci["T"], r.table["T_ci"])
+
+
+def test_threads_do_not_change_the_numbers():
+    s = SCENES / "grw-example3.toml"
+    a = gdsmc.run(s, n=200, ensembles=12, threads=1)
+    b = gdsmc.run(s, n=200, ensembles=12, threads=2)
+    for k in a.table:
+        assert np.array_equal(a.table[k], b.table[k], equal_nan=True), k
+
+
+def test_write_gives_the_command_files(tmp_path):
+    out = command(tmp_path, SCENES / "grw-example3.toml", "--n", "200", "--ensembles", "9")
+    r = gdsmc.run(SCENES / "grw-example3.toml", n=200, ensembles=9)
+    files = r.write(tmp_path / "py", formats="svg")
+    assert "observables.csv" in files and "T.svg" in files
+    assert (tmp_path / "py" / "observables.csv").read_bytes() == (
+        out / "observables.csv"
+    ).read_bytes()
+
+
+def test_bad_scenes_name_the_key():
+    text = (SCENES / "grw-example3.toml").read_text()
+    bad = text.replace("restitution = 0.5", "restitution = 1.5")
+    assert bad != text
+    with pytest.raises(gdsmc.SceneError, match=r"collisions\.restitution.*\(0, 1\].*1\.5"):
+        gdsmc.Scene.from_toml(bad, name="bad.toml")
+    with pytest.raises(gdsmc.SceneError, match=r"bad\.toml:\d+"):
+        gdsmc.Scene.from_toml(bad, name="bad.toml")
+    s = gdsmc.Scene.from_file(SCENES / "grw-example3.toml")
+    with pytest.raises(gdsmc.SceneError, match=r"collisions\.restitution"):
+        s.set("collisions.restitution", 1.5)
+    with pytest.raises(gdsmc.SceneError, match=r"collisions\.no_such_key|no_such_key"):
+        s.set("collisions.no_such_key", 1)
+    with pytest.raises(gdsmc.SceneError, match=r"particles\.n"):
+        gdsmc.run(s, n=0)
+    with pytest.raises(gdsmc.SceneError, match="cannot read"):
+        gdsmc.Scene.from_file("no/such/scene.toml")
+    with pytest.raises(TypeError):
+        s.set("collisions.restitution", object())
+    # SceneError is a ValueError; the scene itself is unchanged by a refused set.
+    assert issubclass(gdsmc.SceneError, ValueError)
+    assert s.overrides == []
+
+
+def test_set_and_properties():
+    s = gdsmc.Scene.from_file(SCENES / "grw-example3.toml")
+    t = s.set("collisions.restitution", 0.4).set("particles.n", 64)
+    assert t.n == 64 and s.n == 1024
+    assert t.overrides == ["collisions.restitution=0.4", "particles.n=64"]
+    assert "overrides" in repr(t)
+    assert len(t.times) == len(gdsmc.run(t, ensembles=3).times)
+
+
+def test_progress_callback_counts_every_ensemble():
+    seen = []
+    r = gdsmc.run(SCENES / "grw-example3.toml", n=200, ensembles=30, progress=seen.append)
+    assert sum(seen) == r.ensembles == 30
+
+
+def test_ctrl_c_keeps_the_finished_ensembles():
+    s = SCENES / "grw-example3.toml"
+    full = 400
+    t0 = time.time()
+    gdsmc.run(s, n=20000, ensembles=40)
+    per_run = (time.time() - t0) * full / 40
+    # SIGINT to this process during the run, as Ctrl-C or a notebook's interrupt sends it.
+    timer = threading.Timer(min(1.0, per_run / 4), os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(gdsmc.Interrupted) as e:
+        gdsmc.run(s, n=20000, ensembles=full)
+    timer.cancel()
+    kept = e.value.result
+    assert isinstance(e.value, KeyboardInterrupt)
+    assert 0 < kept.ensembles < full, kept.ensembles
+    # Exactly the statistics of a run with that many ensembles.
+    short = gdsmc.run(s, n=20000, ensembles=kept.ensembles)
+    for k in short.table:
+        assert np.array_equal(kept.table[k], short.table[k], equal_nan=True), k
+
+
+def test_to_pandas():
+    pd = pytest.importorskip("pandas")
+    r = gdsmc.run(SCENES / "grw-example3.toml", n=100, ensembles=4)
+    df = r.to_pandas()
+    assert isinstance(df, pd.DataFrame)
+    assert list(df.columns) == list(r.table)
+    assert len(df) == len(r.times)
+
+
+def test_reproduce_a_table():
+    rep = gdsmc.reproduce("grw-table1")
+    assert rep.tables and "GRW" in rep.markdown
+    assert rep.passed, rep.failures
+
+
+def test_the_notebook_runs_headless():
+    nbformat = pytest.importorskip("nbformat")
+    nbclient = pytest.importorskip("nbclient")
+    pytest.importorskip("matplotlib")
+    path = ROOT / "python" / "examples" / "grw_example3.ipynb"
+    nb = nbformat.read(path, as_version=4)
+    client = nbclient.NotebookClient(
+        nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}
+    )
+    client.execute()
+    outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])]
+    assert not [o for o in outputs if o.get("output_type") == "error"]
+    text = "".join(o.get("text", "") for o in outputs if o.get("output_type") == "stream")
+    assert "inside the 99.9% interval" in text
+    assert any("image/png" in o.get("data", {}) for o in outputs)
+
+
+def test_the_gil_is_released_while_running():
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(time.time())
+            time.sleep(0.005)
+
+    t = threading.Thread(target=tick)
+    t.start()
+    t0 = time.time()
+    gdsmc.run(SCENES / "grw-example3.toml", n=20000, ensembles=60, threads=1)
+    t1 = time.time()
+    stop.set()
+    t.join()
+    during = [x for x in ticks if t0 < x < t1]
+    # A thread that sleeps 5 ms per tick ticks about (t1 - t0) / 5 ms times when it can run;
+    # with the GIL held through the run it could not tick at all. At least a quarter of that.
+    assert len(during) >= 0.25 * (t1 - t0) / 0.005, (len(during), t1 - t0)
