@@ -4,7 +4,7 @@
 # feature in its own target directory (OpenMPI and libclang from Debian).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if ! command -v mpirun >/dev/null || ! ls /usr/lib/llvm-*/lib/libclang*.so >/dev/null 2>&1; then
+if ! dpkg -s libopenmpi-dev openmpi-bin libclang-dev >/dev/null 2>&1; then
     apt-get update
     apt-get install -y libopenmpi-dev openmpi-bin libclang-dev
 fi
