@@ -412,6 +412,13 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
             }
             break;
         }
+        if at == header.end {
+            damage = Some(format!(
+                "a record after its last ensemble ({}) where its end record belongs",
+                header.end - 1
+            ));
+            break;
+        }
         if ensemble != at {
             damage = Some(format!("record of ensemble {ensemble} where {at} belongs"));
             break;
@@ -591,6 +598,18 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Records beyond the header's range are refused, not folded.
+    #[test]
+    fn no_record_beyond_the_range() {
+        let mut b = header_bytes(&header());
+        for (k, (row, c)) in rows().iter().chain(rows().iter()).enumerate() {
+            b.extend(ensemble_record(5 + k as u64, row, c));
+        }
+        let c = read(Path::new("x"), &b).unwrap();
+        assert_eq!(c.rows.len(), 3);
+        assert!(c.damage.unwrap().contains("after its last ensemble"));
     }
 
     /// Every single bit flipped after the header: the records before the damaged one are kept,
