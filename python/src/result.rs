@@ -56,6 +56,7 @@ pub fn run(
     let done = AtomicU64::new(0);
     let mut reported = 0;
     let mut interrupted = false;
+    let mut failed: Option<PyErr> = None;
     let stats = std::thread::scope(|scope| -> PyResult<_> {
         let job = scope.spawn(|| {
             runner::run_interruptible(
@@ -78,9 +79,16 @@ pub fn run(
             if let Some(p) = &progress
                 && now > reported
                 && !interrupted
+                && failed.is_none()
             {
-                p.call1((now - reported,))?;
-                reported = now;
+                match p.call1((now - reported,)) {
+                    Ok(_) => reported = now,
+                    Err(e) => {
+                        // The callback raised: stop the run and raise that once it has.
+                        failed = Some(e);
+                        stop.store(true, Ordering::SeqCst);
+                    }
+                }
             }
         }
         let stats = py
@@ -88,6 +96,9 @@ pub fn run(
             .expect("the run thread does not panic");
         Ok(stats)
     })?;
+    if let Some(e) = failed {
+        return Err(e);
+    }
     let stats = stats.map_err(to_py)?;
     if let Some(p) = &progress
         && !interrupted

@@ -230,3 +230,18 @@ def test_the_gil_is_released_while_running():
     # A thread that sleeps 5 ms per tick ticks about (t1 - t0) / 5 ms times when it can run;
     # with the GIL held through the run it could not tick at all. At least a quarter of that.
     assert len(during) >= 0.25 * (t1 - t0) / 0.005, (len(during), t1 - t0)
+
+
+def test_a_raising_progress_callback_stops_the_run():
+    calls = []
+
+    def progress(k):
+        calls.append(k)
+        raise ValueError("stop here")
+
+    t0 = time.time()
+    with pytest.raises(ValueError, match="stop here"):
+        gdsmc.run(SCENES / "grw-example3.toml", n=20000, ensembles=2000, threads=1, progress=progress)
+    # Stopped after the first report, far before 2000 ensembles (about 30 s on one core).
+    assert len(calls) == 1
+    assert time.time() - t0 < 10

@@ -32,6 +32,8 @@ pub const FORMAT: u32 = 1;
 pub const EXTENSION: &str = "gdsmc-ensembles";
 /// Event counts per record (the fields of [`Counts`]).
 const COUNT_WORDS: usize = 8;
+/// How long a run waits for another process's lock on its journal before refusing.
+const LOCK_WAIT: std::time::Duration = std::time::Duration::from_secs(3);
 /// The end record's ensemble field.
 const END: u64 = u64::MAX;
 
@@ -466,17 +468,26 @@ impl Writer {
             .truncate(false)
             .open(path)
             .map_err(werr)?;
-        match file.try_lock() {
-            Ok(()) => {}
-            Err(std::fs::TryLockError::WouldBlock) => {
-                return Err(Error::Journal {
-                    path: path.to_path_buf(),
-                    message: "another gdsmc run is writing this journal (the same scene into \
-                              the same output place): wait for it, or choose another --out"
-                        .into(),
-                });
+        // A process that was just killed (e.g. the ranks of an mpirun ended by a signal) can
+        // hold the lock for a moment longer: wait up to LOCK_WAIT before giving up.
+        let asked = std::time::Instant::now();
+        loop {
+            match file.try_lock() {
+                Ok(()) => break,
+                Err(std::fs::TryLockError::WouldBlock) if asked.elapsed() < LOCK_WAIT => {
+                    std::thread::sleep(std::time::Duration::from_millis(50));
+                }
+                Err(std::fs::TryLockError::WouldBlock) => {
+                    return Err(Error::Journal {
+                        path: path.to_path_buf(),
+                        message: "another gdsmc run is writing this journal (the same scene \
+                                  into the same output place): wait for it, or choose another \
+                                  --out"
+                            .into(),
+                    });
+                }
+                Err(std::fs::TryLockError::Error(e)) => return Err(werr(e)),
             }
-            Err(std::fs::TryLockError::Error(e)) => return Err(werr(e)),
         }
         let mut bytes = Vec::new();
         std::io::Read::read_to_end(&mut file, &mut bytes).map_err(werr)?;
