@@ -143,6 +143,8 @@ typedef struct {
     uint64_t fictitious;
     // Candidates whose relative speed exceeded the majorant (kernel truncated there).
     uint64_t overshoots;
+    // Real collisions of grains with the host medium's background so far (0 without one).
+    uint64_t background_collisions;
 } gdsmc_observables;
 
 // Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or

@@ -39,6 +39,8 @@ pub struct gdsmc_observables {
     pub fictitious: u64,
     /// Candidates whose relative speed exceeded the majorant (kernel truncated there).
     pub overshoots: u64,
+    /// Real collisions of grains with the host medium's background so far (0 without one).
+    pub background_collisions: u64,
 }
 
 impl gdsmc_observables {
@@ -60,6 +62,7 @@ impl gdsmc_observables {
             collisions: c.collisions,
             fictitious: c.fictitious,
             overshoots: c.overshoots,
+            background_collisions: c.background,
         }
     }
 }

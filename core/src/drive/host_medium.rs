@@ -165,13 +165,28 @@ impl<B: BackgroundKernel> HostMedium<B> {
 
 impl<B: BackgroundKernel> Drive for HostMedium<B> {
     const ACTS: bool = true;
+    const COUNTS_EVENTS: bool = true;
 
     #[inline]
-    fn evolve<R: Rng + ?Sized>(&self, mut v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
+    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
+        self.evolve_counting(v, dt, rng, &mut 0)
+    }
+
+    /// Counts the grain's real background collisions (BRS (26)'s events; candidates the
+    /// hard-sphere kernel rejects are not collisions and are not counted).
+    #[inline]
+    fn evolve_counting<R: Rng + ?Sized>(
+        &self,
+        mut v: Vec3,
+        dt: Real,
+        rng: &mut R,
+        events: &mut u64,
+    ) -> Vec3 {
         let mut left = dt;
         while let Some((v1, used)) = self.kernel.next(&self.params, v, left, rng) {
             v = v1;
             left -= used;
+            *events += 1;
         }
         v
     }

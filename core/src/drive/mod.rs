@@ -30,8 +30,62 @@ pub trait Drive: Copy {
     #[inline(always)]
     fn observe(&mut self, _obs: &Observables) {}
 
+    /// True for a drive made of discrete events that [`Drive::evolve_counting`] counts (the
+    /// host medium's background collisions); false: every kick counts nothing.
+    const COUNTS_EVENTS: bool = false;
+
     /// The velocity after the drive acted on `v` for a time `dt >= 0`.
     fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3;
+
+    /// As [`Drive::evolve`], adding the drive's discrete events to `events` (the same draws,
+    /// the same velocity). Default: none.
+    #[inline(always)]
+    fn evolve_counting<R: Rng + ?Sized>(
+        &self,
+        v: Vec3,
+        dt: Real,
+        rng: &mut R,
+        _events: &mut u64,
+    ) -> Vec3 {
+        self.evolve(v, dt, rng)
+    }
+
+    /// As [`Drive::kick`], adding the drive's events to `events`.
+    #[inline(always)]
+    fn kick_counting<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        i: usize,
+        t: Real,
+        rng: &mut R,
+        events: &mut u64,
+    ) {
+        if Self::COUNTS_EVENTS {
+            let q = p.get_mut(i);
+            let v = self.evolve_counting(q.velocity(), t - q.t_kick, rng, events);
+            q.set_velocity(v);
+            q.t_kick = t;
+        } else {
+            self.kick(p, i, t, rng);
+        }
+    }
+
+    /// As [`Drive::kick_all`], adding the drive's events to `events`.
+    fn kick_all_counting<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        t: Real,
+        rng: &mut R,
+        events: &mut u64,
+    ) {
+        if Self::COUNTS_EVENTS {
+            for i in 0..p.len() {
+                self.kick_counting(p, i, t, rng, events);
+            }
+        } else {
+            self.kick_all(p, t, rng);
+        }
+    }
 
     /// Brings particle `i` to time `t`: `v_i := evolve(v_i, t - t_i)`, `t_i := t`.
     #[inline(always)]

@@ -117,6 +117,9 @@ pub struct Counts {
     pub refreshes: u64,
     /// Rescalings of a cooling gas's stored velocities (no-splitting scheme, no drive).
     pub rescales: u64,
+    /// Real collisions of grains with the host medium's background (BRS (26) events; 0 for
+    /// other drives).
+    pub background: u64,
 }
 
 impl Counts {
@@ -131,6 +134,7 @@ impl Counts {
             clamped: self.clamped + o.clamped,
             refreshes: self.refreshes + o.refreshes,
             rescales: self.rescales + o.rescales,
+            background: self.background + o.background,
         }
     }
 

@@ -143,7 +143,9 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                 // O(n) cost is amortized over the window. A refresh that gains little doubles
                 // the window, so a steady gas soon stops paying for it.
                 let before = self.scale * self.c.maj.umax;
-                self.c.drive.kick_all(p, self.t, rng);
+                self.c
+                    .drive
+                    .kick_all_counting(p, self.t, rng, &mut self.c.counts.background);
                 self.synchronized(p)?;
                 self.c.counts.observations -= 1;
                 self.c.counts.refreshes += 1;
@@ -162,8 +164,12 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             }
             self.t = t_next;
             let (i, j) = self.c.pairs.next(p, rng);
-            self.c.drive.kick(p, i, t_next, rng);
-            self.c.drive.kick(p, j, t_next, rng);
+            self.c
+                .drive
+                .kick_counting(p, i, t_next, rng, &mut self.c.counts.background);
+            self.c
+                .drive
+                .kick_counting(p, j, t_next, rng, &mut self.c.counts.background);
             let before = self.c.counts.fictitious;
             if self.c.candidate(p, i, j, D::ACTS, rng) {
                 rate = self.c.rate(n, self.scale);
@@ -172,7 +178,9 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             wasted += self.c.counts.fictitious - before;
         }
         self.t = t_end;
-        self.c.drive.kick_all(p, t_end, rng);
+        self.c
+            .drive
+            .kick_all_counting(p, t_end, rng, &mut self.c.counts.background);
         let obs = self.synchronized(p)?;
         Ok(self.with_raw_v6(p, obs))
     }

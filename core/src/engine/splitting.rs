@@ -125,11 +125,15 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         match self.order {
             SplittingOrder::Euler => {
                 self.collide_for(p, self.dt, rng);
-                self.c.drive.kick_all(p, t1, rng);
+                self.c
+                    .drive
+                    .kick_all_counting(p, t1, rng, &mut self.c.counts.background);
             }
             SplittingOrder::Strang => {
                 self.collide_for(p, 0.5 * self.dt, rng);
-                self.c.drive.kick_all(p, t1, rng);
+                self.c
+                    .drive
+                    .kick_all_counting(p, t1, rng, &mut self.c.counts.background);
                 self.collide_for(p, 0.5 * self.dt, rng);
             }
         }

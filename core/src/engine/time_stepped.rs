@@ -126,7 +126,8 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
             } else {
                 self.t + h
             };
-            self.drive.kick_all(p, self.t, rng);
+            self.drive
+                .kick_all_counting(p, self.t, rng, &mut self.counts.background);
             self.steps += 1;
             let o = super::event::observables(p)?;
             self.temperature = o.t_bulk;

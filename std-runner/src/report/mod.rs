@@ -190,6 +190,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
             "restitution_clamped": c.clamped,
             "majorant_refreshes": c.refreshes,
             "rescales": c.rescales,
+            "background_collisions": c.background,
             "observations": c.observations,
             "kicks": c.kicks(scene.n()),
         },

@@ -33,6 +33,14 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         c.clamped,
         c.collisions as f64 / stats.wall.as_secs_f64().max(1e-9)
     );
+    if c.background > 0 {
+        let _ = writeln!(
+            s,
+            "background {} grain-background collisions (host medium, BRS (26)), {:.1} per grain-grain collision",
+            c.background,
+            c.background as f64 / c.collisions.max(1) as f64
+        );
+    }
     let shown = ["T", "T_bulk", "a2", "crit"];
     let _ = write!(s, "\n{:>8}", "t");
     for name in shown {

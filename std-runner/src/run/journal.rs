@@ -11,7 +11,7 @@
 //! end record                                ensemble = u64::MAX: ensembles, wall, cpu, threads
 //! ```
 //!
-//! A record's words are the ensemble's event counts (8 integers) and its row (observables then
+//! A record's words are the ensemble's event counts (9 integers) and its row (observables then
 //! histograms, as f64 bits), so a merge folds exactly the values a single run folds. The CRC
 //! covers the record's ensemble, length and words. A file without its end record is a run in
 //! progress or one that was killed: its records up to the first incomplete or damaged one are
@@ -27,11 +27,11 @@ use std::path::Path;
 /// The file's first bytes.
 pub const MAGIC: &[u8; 16] = b"GDSMC-ENSEMBLES\n";
 /// The layout's version; a reader refuses any other.
-pub const FORMAT: u32 = 1;
+pub const FORMAT: u32 = 2;
 /// The file extension of shards and journals.
 pub const EXTENSION: &str = "gdsmc-ensembles";
 /// Event counts per record (the fields of [`Counts`]).
-const COUNT_WORDS: usize = 8;
+const COUNT_WORDS: usize = 9;
 /// How long a run waits for another process's lock on its journal before refusing.
 const LOCK_WAIT: std::time::Duration = std::time::Duration::from_secs(3);
 /// The end record's ensemble field.
@@ -213,6 +213,7 @@ fn counts_words(c: &Counts) -> [u64; COUNT_WORDS] {
         clamped,
         refreshes,
         rescales,
+        background,
     } = *c;
     [
         candidates,
@@ -223,6 +224,7 @@ fn counts_words(c: &Counts) -> [u64; COUNT_WORDS] {
         clamped,
         refreshes,
         rescales,
+        background,
     ]
 }
 
@@ -236,6 +238,7 @@ fn counts_of(w: &[u64]) -> Counts {
         clamped: w[5],
         refreshes: w[6],
         rescales: w[7],
+        background: w[8],
     }
 }
 
@@ -558,6 +561,7 @@ mod tests {
                     clamped: 0,
                     refreshes: 1,
                     rescales: 2,
+                    background: 100 + i,
                 };
                 (vec![i as f64 + 0.1, -1e-300, f64::MAX], c)
             })
