@@ -296,7 +296,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             // The output place is prepared (and shown writable) before any simulation.
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
             let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
-            let file = journal_path(&dir);
+            let file = run::journal::beside(&dir, None);
             let job = run::Journaled {
                 scene: &sc,
                 header,
@@ -401,17 +401,6 @@ fn mpi_run(
         },
     )?;
     Ok(())
-}
-
-/// The journal of a whole run writing into `dir`: `.NAME.gdsmc-ensembles` beside it.
-fn journal_path(dir: &std::path::Path) -> PathBuf {
-    let name = dir
-        .file_name()
-        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
-    let parent = dir.parent().filter(|p| !p.as_os_str().is_empty());
-    parent
-        .map_or_else(|| PathBuf::from("."), |p| p.to_path_buf())
-        .join(format!(".{name}.{}", run::journal::EXTENSION))
 }
 
 /// Runs a journaled job with a progress bar and Ctrl-C handling: the first Ctrl-C lets the

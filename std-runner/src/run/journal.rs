@@ -194,6 +194,29 @@ pub fn shard_words(shard: Option<(u64, u64)>) -> String {
     }
 }
 
+/// The file name of shard `k` of `s` of the scene `name`.
+pub fn file_name(name: &str, k: u64, s: u64) -> String {
+    let w = s.to_string().len();
+    format!("{name}.shard-{k:0w$}-of-{s}.{EXTENSION}")
+}
+
+/// The journal of a run writing its outputs into `dir`, hidden beside it:
+/// `.NAME.gdsmc-ensembles` for a whole run, `.NAME.shard-K-of-S.gdsmc-ensembles` for the
+/// shard `(K, S)` an MPI rank runs.
+pub fn beside(dir: &Path, shard: Option<(u64, u64)>) -> std::path::PathBuf {
+    let name = dir
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    let parent = dir
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .map_or_else(|| std::path::PathBuf::from("."), Path::to_path_buf);
+    parent.join(match shard {
+        Some((k, s)) => format!(".{}", file_name(&name, k, s)),
+        None => format!(".{name}.{EXTENSION}"),
+    })
+}
+
 /// The `Debug` text of `scene` with its seed and ensemble count cleared.
 pub fn fingerprint(scene: &Scene) -> String {
     let mut s = scene.clone();

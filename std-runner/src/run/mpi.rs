@@ -64,18 +64,6 @@ impl World {
     }
 }
 
-/// The journal of rank `r` of `p` for outputs at `dir`: hidden, beside `dir`.
-pub fn journal_path(dir: &Path, r: u64, p: u64) -> PathBuf {
-    let name = dir
-        .file_name()
-        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
-    let parent = dir
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
-    parent.join(format!(".{}", shard::file_name(&name, r, p)))
-}
-
 /// Runs this rank's shard of `scene` (`header_of(shard, range)` gives its journal header) and,
 /// on rank 0, merges every rank's and hands the result to `write`; the journals are removed
 /// when `write` succeeds. Returns the merged run on rank 0, `None` on the others.
@@ -89,7 +77,7 @@ pub fn run(
 ) -> Result<Option<Merged>, Error> {
     let (r, p) = (w.rank(), w.size());
     let range = shard::range(r, p, scene.ensembles);
-    let path = journal_path(dir, r, p);
+    let path = journal::beside(dir, Some((r, p)));
     let job = Journaled {
         scene,
         header: header_of((r, p), range),
@@ -119,7 +107,7 @@ pub fn run(
         let mut inputs = vec![(path.clone(), bytes)];
         for q in 1..p {
             let (b, _) = w.world.process_at_rank(q as i32).receive_vec::<u8>();
-            inputs.push((journal_path(dir, q, p), b));
+            inputs.push((journal::beside(dir, Some((q, p))), b));
         }
         let merged = check(&inputs).and_then(|()| shard::merge(&inputs));
         let written = merged.and_then(|m| write(&m).map(|()| m));

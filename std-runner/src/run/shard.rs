@@ -44,11 +44,7 @@ pub fn parse_spec(spec: &str) -> Result<(u64, u64), Error> {
     Ok((k, s))
 }
 
-/// The file name of shard `k` of `s` of the scene `name`.
-pub fn file_name(name: &str, k: u64, s: u64) -> String {
-    let w = s.to_string().len();
-    format!("{name}.shard-{k:0w$}-of-{s}.{EXTENSION}")
-}
+pub use crate::run::journal::file_name;
 
 /// The ensemble files among `inputs`: each a file, or a directory whose visible
 /// `*.gdsmc-ensembles` files are taken (sorted by name).
