@@ -44,6 +44,7 @@ pub mod engine;
 pub mod histogram;
 pub mod kernel;
 pub mod math;
+pub mod mixture;
 pub mod moments;
 pub mod particles;
 pub mod physics;

@@ -5,20 +5,9 @@ use gdsmc_core::collision::*;
 use gdsmc_core::vec3::Vec3;
 use proptest::prelude::*;
 
-fn vec3(r: f64) -> impl Strategy<Value = Vec3> {
-    (-r..r, -r..r, -r..r).prop_map(|(x, y, z)| Vec3::new(x, y, z))
-}
+mod common;
 
-fn unit() -> impl Strategy<Value = Vec3> {
-    (-1.0f64..1.0, 0.0..std::f64::consts::TAU).prop_map(|(z, phi)| {
-        let r = (1.0 - z * z).sqrt();
-        Vec3::new(r * phi.cos(), r * phi.sin(), z)
-    })
-}
-
-fn alpha() -> impl Strategy<Value = f64> {
-    prop_oneof![Just(1.0), 1e-6f64..=1.0]
-}
+use common::strategies::{alpha, unit, vec3};
 
 /// Rounding allowance: `k` ulps of the scale `s`.
 fn tol(s: f64, k: f64) -> f64 {

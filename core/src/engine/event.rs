@@ -172,3 +172,61 @@ pub fn clamped_coefficient<A: Restitution>(a: &A, u: Vec3, e: Vec3, counts: &mut
     }
     alpha
 }
+
+/// When a no-splitting loop makes its majorant exact between observations (module docs of
+/// [`super::NoSplitting`]): with no drive every `2n` candidates; with a drive when more than
+/// half of the last `after` candidates were fictitious, the window doubling after a refresh
+/// that gained little (a steady gas soon stops paying the O(n) cost).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RefreshWindow {
+    after: u64,
+    window: u64,
+    wasted: u64,
+}
+
+impl RefreshWindow {
+    /// The schedule of an `n`-particle system: first window `2n`.
+    pub fn new(n: usize) -> Self {
+        RefreshWindow {
+            after: 2 * n as u64,
+            window: 0,
+            wasted: 0,
+        }
+    }
+
+    /// Counts from zero again (a new advance, or after the bound was made exact).
+    #[inline(always)]
+    pub fn restart(&mut self) {
+        (self.window, self.wasted) = (0, 0);
+    }
+
+    /// One more candidate, `fictitious` of them (0 or 1) rejected.
+    #[inline(always)]
+    pub fn record(&mut self, fictitious: u64) {
+        self.window += 1;
+        self.wasted += fictitious;
+    }
+
+    /// No drive: `2n` candidates since the last synchronization.
+    #[inline(always)]
+    pub fn synchronization_due(&self, n: usize) -> bool {
+        self.window >= 2 * n as u64
+    }
+
+    /// With a drive: the window is full and more than half of it was fictitious.
+    #[inline(always)]
+    pub fn refresh_due(&self) -> bool {
+        self.window >= self.after && 2 * self.wasted > self.window
+    }
+
+    /// After a refresh that took the (physical) bound from `before` to `now`: the next window
+    /// doubles when the bound fell by less than a fifth, else it is `2n` again; counts restart.
+    pub fn refreshed(&mut self, before: Real, now: Real, n: usize) {
+        self.after = if now > 0.8 * before {
+            self.after.saturating_mul(2)
+        } else {
+            2 * n as u64
+        };
+        self.restart();
+    }
+}

@@ -34,7 +34,7 @@
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
 
-use super::event::{Collider, observables};
+use super::event::{Collider, RefreshWindow, observables};
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
@@ -51,7 +51,7 @@ use crate::vec3::Vec3;
 pub struct NoSplitting<K, D, A> {
     c: Collider<K, D, A>,
     t: Real,
-    refresh_after: u64,
+    refresh: RefreshWindow,
     scale: Real,
     offset: Vec3,
     rescale_below: Real,
@@ -80,7 +80,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         let mut s = NoSplitting {
             c: Collider::new(kernel, drive, restitution),
             t: t0,
-            refresh_after: 2 * p.len() as u64,
+            refresh: RefreshWindow::new(p.len()),
             scale: 1.0,
             offset: Vec3::ZERO,
             rescale_below: RESCALE_BELOW,
@@ -125,23 +125,20 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         }
         let n = p.len();
         let mut rate = self.c.rate(n, self.scale);
-        // Candidates and fictitious ones since the majorant was last made exact.
-        let (mut window, mut wasted) = (0u64, 0u64);
+        self.refresh.restart();
         loop {
-            if !D::ACTS && window >= 2 * n as u64 {
+            if !D::ACTS && self.refresh.synchronization_due(n) {
                 // No drive: every particle is always at the current time. A synchronization
                 // every 2n candidates keeps the majorant exact and rescales a cooling gas
                 // before its peculiar velocities lose digits (module docs).
                 self.synchronized(p)?;
                 self.c.counts.observations -= 1;
                 rate = self.c.rate(n, self.scale);
-                (window, wasted) = (0, 0);
-            } else if D::ACTS && K::USES_UMAX && window >= self.refresh_after && 2 * wasted > window
-            {
+                self.refresh.restart();
+            } else if D::ACTS && K::USES_UMAX && self.refresh.refresh_due() {
                 // The bound may have gone loose: make it exact again. Kicking every particle to
                 // the current time is what an observation does; the process stays exact, and the
-                // O(n) cost is amortized over the window. A refresh that gains little doubles
-                // the window, so a steady gas soon stops paying for it.
+                // O(n) cost is amortized over the window.
                 let before = self.scale * self.c.maj.umax;
                 self.c
                     .drive
@@ -150,12 +147,8 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
                 self.c.counts.observations -= 1;
                 self.c.counts.refreshes += 1;
                 rate = self.c.rate(n, self.scale);
-                (window, wasted) = (0, 0);
-                self.refresh_after = if self.scale * self.c.maj.umax > 0.8 * before {
-                    self.refresh_after.saturating_mul(2)
-                } else {
-                    2 * n as u64
-                };
+                self.refresh
+                    .refreshed(before, self.scale * self.c.maj.umax, n);
             }
             let t_next = self.t + standard_exponential(rng) / rate;
             // Not `t_next >= t_end` alone: a zero rate with a zero draw gives NaN, which stops too.
@@ -174,8 +167,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             if self.c.candidate(p, i, j, D::ACTS, rng) {
                 rate = self.c.rate(n, self.scale);
             }
-            window += 1;
-            wasted += self.c.counts.fictitious - before;
+            self.refresh.record(self.c.counts.fictitious - before);
         }
         self.t = t_end;
         self.c

@@ -31,3 +31,27 @@ pub fn mean_ci(xs: &[f64]) -> (f64, f64) {
     let var = xs.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1.0);
     (m, 3.2 * (var / n).sqrt())
 }
+
+/// Proptest strategies shared by the collision-map tests.
+pub mod strategies {
+    use gdsmc_core::vec3::Vec3;
+    use proptest::prelude::*;
+
+    /// A vector with components in `(-r, r)`.
+    pub fn vec3(r: f64) -> impl Strategy<Value = Vec3> {
+        (-r..r, -r..r, -r..r).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+    }
+
+    /// A unit vector, uniform on the sphere.
+    pub fn unit() -> impl Strategy<Value = Vec3> {
+        (-1.0f64..1.0, 0.0..std::f64::consts::TAU).prop_map(|(z, phi)| {
+            let r = (1.0 - z * z).sqrt();
+            Vec3::new(r * phi.cos(), r * phi.sin(), z)
+        })
+    }
+
+    /// A restitution coefficient in (0, 1], with 1 often.
+    pub fn alpha() -> impl Strategy<Value = f64> {
+        prop_oneof![Just(1.0), 1e-6f64..=1.0]
+    }
+}

@@ -6,4 +6,5 @@
 pub mod curves;
 pub mod exact;
 pub mod hydro;
+pub mod mixture;
 pub mod thermostat;

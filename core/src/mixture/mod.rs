@@ -1,0 +1,43 @@
+//! Granular mixtures: several species of different masses, kernels and restitution
+//! coefficients in one homogeneous gas, simulated exactly (no time step) by the no-splitting
+//! scheme with one majorant per pair of species.
+//!
+//! - [`Species`]: counts and masses, the particles of each species a contiguous range of the
+//!   caller's buffer, the pair types `(s, t)`;
+//! - [`MassRatio`]: the collision of unequal masses (GRW (3) in the centre-of-mass frame);
+//! - [`MixtureNoSplitting`]: the event loop, generic over the kernel, the drive (one per
+//!   species) and the restitution law (one per pair type);
+//! - [`MixtureObservables`]: each species' moments and temperature `T_s` about the flow
+//!   velocity (Garzó and Dufty 1999).
+//!
+//! ```
+//! use gdsmc_core::{drive::NoDrive, kernel::Maxwell, math::PI,
+//!                  mixture::{MixtureNoSplitting, PairPhysics, Species},
+//!                  particles::{Particle, Particles}, restitution::Constant, rng::seeded,
+//!                  sample::Maxwellian};
+//! // Two species, masses 1 and 4, Maxwell pseudo-molecules, alpha = 0.8 for every pair.
+//! let sp = Species::new(&[32, 32], &[1.0, 4.0]).unwrap();
+//! let pair = PairPhysics {
+//!     kernel: Maxwell::new(1.0, 1.0 / (4.0 * PI)).unwrap(),
+//!     restitution: Constant::new(0.8).unwrap(),
+//! };
+//! let mut buf = vec![Particle::default(); 64];
+//! let mut p = Particles::new(&mut buf).unwrap();
+//! let mut rng = seeded(1);
+//! let f0 = Maxwellian::standard();
+//! p.fill_with(0.0, || f0.sample(&mut rng));
+//! let (mut engine, start) =
+//!     MixtureNoSplitting::start(sp, &[pair; 3], &[NoDrive; 2], &mut p, 0.0).unwrap();
+//! let obs = engine.advance_to(&mut p, 1.0, &mut rng).unwrap();
+//! assert!(obs.mixture_temperature() < start.mixture_temperature()); // the mixture cools
+//! ```
+
+pub mod map;
+pub mod nosplit;
+pub mod observables;
+pub mod species;
+
+pub use map::MassRatio;
+pub use nosplit::{MixtureNoSplitting, PairPhysics, StartError};
+pub use observables::MixtureObservables;
+pub use species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species};

@@ -1,0 +1,409 @@
+//! The no-splitting scheme (GRW Section 3, RW Algorithm 3) for a mixture of `S` species.
+//!
+//! Pair type `(s, t)` (with `P_st` unordered pairs: `N_s N_t`, or `N_s (N_s - 1)/2` for
+//! `s = t`) has the majorant rate `P_st B_max,st(U_st) / N`, with `B_max` of GRW (19) for that
+//! pair's kernel: each unordered pair collides at `(1/N) int B de`, as in GRW Section 3 for
+//! one species. Waiting times are exponential with the total rate; the pair type is chosen by
+//! its rate, the particles uniformly within their species; the candidate is fictitious with
+//! probability `1 - (|u| / U_st)^lambda` (GRW (20)); otherwise `e` uniform on the sphere and
+//! the map of [`super::MassRatio`]. There is no time step: the process is the mixture's
+//! Markov jump process exactly, as the one-species loop is (the same thinning argument, per
+//! pair type).
+//!
+//! The majorant of pair type `(s, t)`: with `V_s` the bulk velocity of species `s` and
+//! `S_s >= max_{i in s} |v_i - V_s|`, the triangle inequality gives
+//! `|v_i - v_j| <= S_s + S_t + |V_s - V_t| = U_st` (`U_ss = 2 S_s`, GRW step 1.4 for one
+//! species). Each `S_s` is raised after every kick and collision as in RW (21); overshoots by
+//! untouched diffusing particles are counted, as in the one-species loop. With every particle
+//! at one time (observations, and refreshes every `2N` candidates with no drive, or when the
+//! bound went loose with one) the `S_s` and `V_s` are made exact.
+//!
+//! A one-species mixture draws the same random numbers as [`crate::engine::NoSplitting`]
+//! below [`crate::engine::pairs::PREFETCH_FROM`] particles (no pair-type draw for one type; pairs
+//! drawn when used) and gives its results to the last bit.
+
+use super::map::MassRatio;
+use super::observables::MixtureObservables;
+use super::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species};
+use crate::drive::Drive;
+use crate::engine::event::{Majorant, RefreshWindow, clamped_coefficient};
+use crate::engine::nosplit::RESCALE_BELOW;
+use crate::engine::{Counts, EngineError};
+use crate::kernel::Kernel;
+use crate::math::{Real, max, sqrt};
+use crate::particles::Particles;
+use crate::restitution::Restitution;
+use crate::rng::{Rng, uniform_index, uniform_pair, uniform01};
+use crate::sample::{standard_exponential, unit_sphere};
+use crate::vec3::Vec3;
+
+/// The physics of one pair type `(s, t)`: kernel, restitution law, masses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PairPhysics<K, A> {
+    /// The collision kernel of the pair (e.g. hard spheres of diameter `(d_s + d_t)/2`).
+    pub kernel: K,
+    /// The restitution law of the pair.
+    pub restitution: A,
+}
+
+/// The exact event loop of a mixture: kernel type `K`, drive type `D` (one per species),
+/// restitution law type `A` (one per pair type).
+#[derive(Clone, Debug)]
+pub struct MixtureNoSplitting<K, D, A> {
+    sp: Species,
+    physics: [PairPhysics<K, A>; MAX_PAIRS],
+    masses: [MassRatio; MAX_PAIRS],
+    pair_of: [(usize, usize); MAX_PAIRS],
+    drives: [D; MAX_SPECIES],
+    maj: [Majorant; MAX_SPECIES],
+    /// `|V_s - V_t|` of each pair type at the last synchronization (stored units).
+    apart: [Real; MAX_PAIRS],
+    /// Cumulative majorant rates of the pair types (physical time).
+    cumulative: [Real; MAX_PAIRS],
+    /// The last pair type with a positive rate.
+    last: usize,
+    counts: Counts,
+    pair_collisions: [u64; MAX_PAIRS],
+    t: Real,
+    refresh: RefreshWindow,
+    scale: Real,
+    offset: Vec3,
+}
+
+impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
+    /// Starts the scheme at `t0` on the particles `p` (species `s` in `sp.range(s)`, velocities
+    /// already set) with one [`PairPhysics`] per pair type (in [`Species::pair`] order) and one
+    /// drive per species. Returns the observables at `t0`.
+    pub fn start(
+        sp: Species,
+        physics: &[PairPhysics<K, A>],
+        drives: &[D],
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(Self, MixtureObservables), StartError> {
+        if !t0.is_finite() {
+            return Err(StartError::Engine(EngineError::TimeBackwards));
+        }
+        let types = sp.pair_types();
+        if physics.len() != types {
+            return Err(StartError::Mixture(MixtureError::PairCount {
+                expected: types,
+                got: physics.len(),
+            }));
+        }
+        if drives.len() != sp.len() {
+            return Err(StartError::Mixture(MixtureError::SpeciesCount(
+                drives.len(),
+            )));
+        }
+        if p.len() != sp.total() {
+            return Err(StartError::Mixture(MixtureError::ParticleCount));
+        }
+        p.reset_kick_times(t0);
+        let mut s = MixtureNoSplitting {
+            sp,
+            physics: core::array::from_fn(|k| physics[k.min(types - 1)]),
+            masses: core::array::from_fn(|k| {
+                let (a, b) = sp.pair(k.min(types - 1));
+                MassRatio::new(sp.mass(a), sp.mass(b))
+            }),
+            pair_of: core::array::from_fn(|k| sp.pair(k.min(types - 1))),
+            drives: core::array::from_fn(|k| drives[k.min(sp.len() - 1)]),
+            maj: [Majorant::default(); MAX_SPECIES],
+            apart: [0.0; MAX_PAIRS],
+            cumulative: [0.0; MAX_PAIRS],
+            last: 0,
+            counts: Counts::default(),
+            pair_collisions: [0; MAX_PAIRS],
+            t: t0,
+            refresh: RefreshWindow::new(p.len()),
+            scale: 1.0,
+            offset: Vec3::ZERO,
+        };
+        let obs = s.synchronized(p).map_err(StartError::Engine)?;
+        Ok((s, obs))
+    }
+
+    /// Current time.
+    pub fn time(&self) -> Real {
+        self.t
+    }
+
+    /// Event counts so far (all pair types).
+    pub fn counts(&self) -> Counts {
+        self.counts
+    }
+
+    /// Real collisions of pair type `k` so far ([`Species::pair`] order).
+    pub fn pair_collisions(&self, k: usize) -> u64 {
+        self.pair_collisions[k]
+    }
+
+    /// The species.
+    pub fn species(&self) -> &Species {
+        &self.sp
+    }
+
+    /// The majorant `U_st` of pair type `k` (stored units).
+    #[inline(always)]
+    fn pair_umax(&self, k: usize) -> Real {
+        let (s, t) = self.pair_of[k];
+        if s == t {
+            self.maj[s].umax
+        } else {
+            0.5 * (self.maj[s].umax + self.maj[t].umax) + self.apart[k]
+        }
+    }
+
+    /// Recomputes the cumulative majorant rates; returns the total.
+    fn rates(&mut self) -> Real {
+        let n = self.sp.total();
+        let mut total = 0.0;
+        for k in 0..self.sp.pair_types() {
+            let (s, t) = self.pair_of[k];
+            let umax = self.scale * self.pair_umax(k);
+            let kernel = &self.physics[k].kernel;
+            let r = if s == t {
+                let ns = self.sp.count(s);
+                if ns < 2 {
+                    0.0
+                } else {
+                    kernel.majorant_rate(ns, umax) * (ns as Real / n as Real)
+                }
+            } else {
+                kernel.b_max(umax) * (self.sp.pairs(s, t) / n as Real)
+            };
+            total += r;
+            self.cumulative[k] = total;
+            if r > 0.0 {
+                self.last = k;
+            }
+        }
+        total
+    }
+
+    /// Runs the process to `t_end >= time()`, kicks every particle there and returns the
+    /// observables (GRW steps 2-3 per pair type, module docs).
+    #[inline(never)]
+    pub fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<MixtureObservables, EngineError> {
+        if !t_end.is_finite() || t_end < self.t {
+            return Err(EngineError::TimeBackwards);
+        }
+        let n = p.len();
+        let types = self.sp.pair_types();
+        let mut rate = self.rates();
+        self.refresh.restart();
+        loop {
+            if !D::ACTS && self.refresh.synchronization_due(n) {
+                self.synchronized(p)?;
+                self.counts.observations -= 1;
+                rate = self.rates();
+                self.refresh.restart();
+            } else if D::ACTS && K::USES_UMAX && self.refresh.refresh_due() {
+                let before = self.scale * self.bound();
+                self.kick_all(p, self.t, rng);
+                self.synchronized(p)?;
+                self.counts.observations -= 1;
+                self.counts.refreshes += 1;
+                rate = self.rates();
+                self.refresh.refreshed(before, self.scale * self.bound(), n);
+            }
+            let t_next = self.t + standard_exponential(rng) / rate;
+            if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
+                break;
+            }
+            self.t = t_next;
+            let k = if types == 1 {
+                0
+            } else {
+                let x = uniform01(rng) * rate;
+                let mut k = 0;
+                while k < self.last && x >= self.cumulative[k] {
+                    k += 1;
+                }
+                k
+            };
+            let (s, t) = self.pair_of[k];
+            let (i, j) = if s == t {
+                let (a, b) = uniform_pair(rng, self.sp.count(s));
+                (self.sp.offset(s) + a, self.sp.offset(s) + b)
+            } else {
+                (
+                    self.sp.offset(s) + uniform_index(rng, self.sp.count(s)),
+                    self.sp.offset(t) + uniform_index(rng, self.sp.count(t)),
+                )
+            };
+            let background = &mut self.counts.background;
+            self.drives[s].kick_counting(p, i, t_next, rng, background);
+            self.drives[t].kick_counting(p, j, t_next, rng, background);
+            let before = self.counts.fictitious;
+            if self.candidate(p, k, i, j, rng) {
+                rate = self.rates();
+            }
+            self.refresh.record(self.counts.fictitious - before);
+        }
+        self.t = t_end;
+        self.kick_all(p, t_end, rng);
+        self.synchronized(p)
+    }
+
+    /// The largest species majorant (for the refresh rule's "did it gain" test).
+    fn bound(&self) -> Real {
+        (0..self.sp.len()).fold(0.0, |m, s| max(m, self.maj[s].umax))
+    }
+
+    /// The candidate `(i, j)` of pair type `k`, both at the event time: the fictitious test
+    /// against `U_k` (GRW (20)), else the collision. True when a majorant changed.
+    #[inline(always)]
+    fn candidate<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        k: usize,
+        i: usize,
+        j: usize,
+        rng: &mut R,
+    ) -> bool {
+        let (s, t) = self.pair_of[k];
+        let (vi, vj) = (p.velocity(i), p.velocity(j));
+        let u = vi - vj;
+        self.counts.candidates += 1;
+        let (before_s, before_t) = (self.maj[s].umax, self.maj[t].umax);
+        if K::USES_UMAX {
+            let umax_event = self.pair_umax(k);
+            let u2 = u.norm2();
+            if u2 > umax_event * umax_event {
+                self.counts.overshoots += 1;
+            }
+            if D::ACTS {
+                self.maj[s].cover(vi);
+                self.maj[t].cover(vj);
+            }
+            if !self.physics[k]
+                .kernel
+                .accepts(u2, umax_event, uniform01(rng))
+            {
+                self.counts.fictitious += 1;
+                return self.maj[s].umax != before_s || self.maj[t].umax != before_t;
+            }
+        }
+        let e = unit_sphere(rng);
+        let alpha = clamped_coefficient(&self.physics[k].restitution, u, e, &mut self.counts);
+        let (a, b) = self.masses[k].collide(vi, vj, e, alpha);
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        self.counts.collisions += 1;
+        self.pair_collisions[k] += 1;
+        if K::USES_UMAX {
+            self.maj[s].cover(a);
+            self.maj[t].cover(b);
+        }
+        self.maj[s].umax != before_s || self.maj[t].umax != before_t
+    }
+
+    /// Brings every particle to `t`, species by species with its drive (a one-species mixture
+    /// with the drive's batch kernel, as the one-species loop).
+    fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
+        if !D::ACTS {
+            return;
+        }
+        let background = &mut self.counts.background;
+        if self.sp.len() == 1 {
+            self.drives[0].kick_all_counting(p, t, rng, background);
+        } else {
+            for s in 0..self.sp.len() {
+                for i in self.sp.range(s) {
+                    self.drives[s].kick_counting(p, i, t, rng, background);
+                }
+            }
+        }
+    }
+
+    /// Observables of the synchronized system (physical units); makes every species'
+    /// majorant exact and rescales a cooling gas (as [`crate::engine::NoSplitting`] does).
+    fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
+        let mut obs = MixtureObservables::of(p.as_slice(), &self.sp);
+        if let Some(what) = obs.all.non_finite() {
+            return Err(EngineError::NonFinite(what));
+        }
+        let all = obs.all;
+        if !D::ACTS && all.t_bulk > 0.0 && all.t_bulk < RESCALE_BELOW * max(1.0, all.bulk.norm2()) {
+            let s = 1.0 / sqrt(all.t_bulk);
+            for q in p.as_mut_slice() {
+                let v = q.velocity();
+                q.set_velocity(s * (v - all.bulk));
+            }
+            self.offset += self.scale * all.bulk;
+            self.scale /= s;
+            self.counts.rescales += 1;
+            obs = MixtureObservables::of(p.as_slice(), &self.sp);
+        }
+        self.counts.observations += 1;
+        for s in 0..self.sp.len() {
+            self.drives[s].observe(&obs.species[s]);
+            if K::USES_UMAX {
+                self.maj[s] =
+                    Majorant::new(2.0 * obs.species[s].max_peculiar_speed, obs.species[s].bulk);
+            }
+        }
+        for k in 0..self.sp.pair_types() {
+            let (s, t) = self.pair_of[k];
+            self.apart[k] = if s == t {
+                0.0
+            } else {
+                (obs.species[s].bulk - obs.species[t].bulk).norm()
+            };
+        }
+        Ok(self.with_raw_v6(p, obs.in_units(self.scale, self.offset)))
+    }
+
+    /// `<|v|^6>` of a gas stored rescaled about a bulk velocity, summed from the physical
+    /// velocities (as [`crate::engine::NoSplitting`] does; [`crate::moments::Observables::in_units`]
+    /// leaves it NaN).
+    fn with_raw_v6(&self, p: &Particles<'_>, mut obs: MixtureObservables) -> MixtureObservables {
+        if D::ACTS || self.offset == Vec3::ZERO {
+            return obs;
+        }
+        let v6 = |q: &[crate::particles::Particle]| {
+            let mut s = 0.0;
+            for x in q {
+                let v2 = (self.offset + self.scale * x.velocity()).norm2();
+                s += v2 * v2 * v2;
+            }
+            s / q.len() as Real
+        };
+        if obs.all.v6.is_nan() {
+            obs.all.v6 = v6(p.as_slice());
+        }
+        for s in 0..self.sp.len() {
+            if obs.species[s].v6.is_nan() {
+                obs.species[s].v6 = v6(&p.as_slice()[self.sp.range(s)]);
+            }
+        }
+        obs
+    }
+}
+
+/// Why a mixture loop could not start.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StartError {
+    /// The mixture description does not fit the data given.
+    Mixture(MixtureError),
+    /// The engine refused (non-finite start time or velocities).
+    Engine(EngineError),
+}
+
+impl core::fmt::Display for StartError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            StartError::Mixture(e) => e.fmt(f),
+            StartError::Engine(e) => e.fmt(f),
+        }
+    }
+}
+
+impl core::error::Error for StartError {}

@@ -1,0 +1,286 @@
+//! Exact second moments of an inelastic Maxwell mixture at finite particle number.
+//!
+//! For Maxwell pseudo-molecules every unordered pair of species `(s, t)` collides at the rate
+//! `kappa_st / N` (`kappa_st = int B_st de = 4 pi gamma C_st`, the normalization of GRW
+//! Section 3), whatever the velocities. The expected change of the sums
+//! `A_s = sum_{i in s} |v_i|^2` and of the products `P_st = Q_s . Q_t` of the species momenta
+//! `Q_s = sum_{i in s} v_i` under one collision (the map of `gdsmc_core::mixture::MassRatio`,
+//! `e` uniform: `E[D] = a u`, `E|D|^2 = 2 a^2 |u|^2`, `a = (1 + alpha)/2`) is linear in the
+//! same quantities, because the pair sums close:
+//!
+//! ```text
+//! sum_{i in s, j in t} v_i . (v_i - v_j) = N_t A_s - P_st,
+//! sum_{i in s, j in t} |v_i - v_j|^2     = N_t A_s + N_s A_t - 2 P_st,
+//! sum_{i < j in s}     |v_i - v_j|^2     = N_s A_s - P_ss.
+//! ```
+//!
+//! So `X = (A_s, P_st)` has expectations solving a linear system `dX/dt = M X` (derived in
+//! the module's code comments; the one-species case is GRW (13) with `beta = 0`), solved here
+//! by the matrix exponential. It is exact at every `N`: the process's own expectations, not
+//! the Boltzmann limit; dropping the `P` terms (they are `1/N` against the `A` terms) gives the
+//! Boltzmann limit, whose temperature ratio `T_1/T_2` tends to the cooling state's.
+//!
+//! The species temperature about the flow velocity `U = sum_r m_r Q_r / sum_r m_r N_r`
+//! (Garzó and Dufty 1999, (6)) is linear in `X` too:
+//! `3 N_s T_s / m_s = A_s - 2 sum_r m_r P_sr / M + N_s sum_{r,q} m_r m_q P_rq / M^2`.
+
+/// An inelastic Maxwell mixture with a Maxwellian start of zero mean.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaxwellMixture {
+    /// Particles per species.
+    pub counts: Vec<usize>,
+    /// Masses.
+    pub masses: Vec<f64>,
+    /// `kappa_st = 4 pi gamma C_st` per pair type in the order `(0,0), (0,1), .., (1,1), ..`.
+    pub kappa: Vec<f64>,
+    /// Restitution per pair type (same order).
+    pub alpha: Vec<f64>,
+    /// Initial temperature of each species (velocity variance per component `T_s / m_s`).
+    pub temperatures: Vec<f64>,
+}
+
+impl MaxwellMixture {
+    fn species(&self) -> usize {
+        self.counts.len()
+    }
+
+    /// Index of pair type `(s, t)` in either order.
+    fn pair(&self, s: usize, t: usize) -> usize {
+        let (s, t) = if s <= t { (s, t) } else { (t, s) };
+        let n = self.species();
+        s * n - s * s.saturating_sub(1) / 2 + (t - s)
+    }
+
+    /// Index of `P_st` in the state vector (after the `S` entries `A_s`).
+    fn p(&self, s: usize, t: usize) -> usize {
+        self.species() + self.pair(s, t)
+    }
+
+    fn dim(&self) -> usize {
+        let s = self.species();
+        s + s * (s + 1) / 2
+    }
+
+    /// The generator `M` of `dX/dt = M X` (`large_n`: the Boltzmann limit, `P` terms dropped).
+    fn generator(&self, large_n: bool) -> Vec<Vec<f64>> {
+        let ns = self.species();
+        let d = self.dim();
+        let n: f64 = self.counts.iter().sum::<usize>() as f64;
+        let cnt: Vec<f64> = self.counts.iter().map(|&c| c as f64).collect();
+        let mut m = vec![vec![0.0; d]; d];
+        let keep_p = if large_n { 0.0 } else { 1.0 };
+        // mu(s, t) = m_t / (m_s + m_t): the share of D the s partner takes.
+        let mu = |s: usize, t: usize| self.masses[t] / (self.masses[s] + self.masses[t]);
+        for s in 0..ns {
+            // dA_s/dt.
+            let ss = self.pair(s, s);
+            let (k, a) = (self.kappa[ss] / n, 0.5 * (1.0 + self.alpha[ss]));
+            // Same-species pairs: -a (1 - a) (N_s A_s - P_ss).
+            m[s][s] += -k * a * (1.0 - a) * cnt[s];
+            m[s][self.p(s, s)] += k * a * (1.0 - a) * keep_p;
+            for t in (0..ns).filter(|&t| t != s) {
+                let st = self.pair(s, t);
+                let (k, a, mt) = (self.kappa[st] / n, 0.5 * (1.0 + self.alpha[st]), mu(s, t));
+                // -2 mu a (N_t A_s - P_st) + 2 mu^2 a^2 (N_t A_s + N_s A_t - 2 P_st).
+                m[s][s] += k * (-2.0 * mt * a * cnt[t] + 2.0 * mt * mt * a * a * cnt[t]);
+                m[s][t] += k * 2.0 * mt * mt * a * a * cnt[s];
+                m[s][self.p(s, t)] += k * (2.0 * mt * a - 4.0 * mt * mt * a * a) * keep_p;
+            }
+        }
+        if large_n {
+            return m;
+        }
+        // dP_st/dt, s <= t. The drift of Q_s is sum_{r != s} -(kappa_sr/N) mu(s,r) a_sr
+        // (N_r Q_s - N_s Q_r); P_st gains drift(Q_s).Q_t + Q_s.drift(Q_t) + E[dQ_s . dQ_t].
+        for s in 0..ns {
+            for t in s..ns {
+                let row = self.p(s, t);
+                for (x, y) in [(s, t), (t, s)] {
+                    // drift(Q_x) . Q_y
+                    for r in (0..ns).filter(|&r| r != x) {
+                        let xr = self.pair(x, r);
+                        let c = -(self.kappa[xr] / n) * mu(x, r) * 0.5 * (1.0 + self.alpha[xr]);
+                        m[row][self.p(x, y)] += c * cnt[r];
+                        m[row][self.p(r, y)] -= c * cnt[x];
+                    }
+                }
+                if s != t {
+                    // Pairs (i in s, j in t): dQ_s . dQ_t = -mu_s mu_t |D|^2, E = -2 mu_s mu_t a^2 |u|^2.
+                    let st = self.pair(s, t);
+                    let (k, a) = (self.kappa[st] / n, 0.5 * (1.0 + self.alpha[st]));
+                    let c = -2.0 * mu(s, t) * mu(t, s) * a * a * k;
+                    m[row][s] += c * cnt[t];
+                    m[row][t] += c * cnt[s];
+                    m[row][row] += -2.0 * c;
+                } else {
+                    // |dQ_s|^2 over pairs (i in s, j in r != s): 2 mu(s,r)^2 a^2 |u|^2.
+                    for r in (0..ns).filter(|&r| r != s) {
+                        let sr = self.pair(s, r);
+                        let (k, a) = (self.kappa[sr] / n, 0.5 * (1.0 + self.alpha[sr]));
+                        let c = 2.0 * mu(s, r) * mu(s, r) * a * a * k;
+                        m[row][s] += c * cnt[r];
+                        m[row][r] += c * cnt[s];
+                        m[row][self.p(s, r)] += -2.0 * c;
+                    }
+                }
+            }
+        }
+        m
+    }
+
+    /// The expected state `X(0)`: `E A_s = E |Q_s|^2 = 3 N_s T_s / m_s`, `E P_st = 0`.
+    fn initial(&self) -> Vec<f64> {
+        let mut x = vec![0.0; self.dim()];
+        for s in 0..self.species() {
+            let v = 3.0 * self.counts[s] as f64 * self.temperatures[s] / self.masses[s];
+            x[s] = v;
+            x[self.p(s, s)] = v;
+        }
+        x
+    }
+
+    /// The expected species temperatures `E[T_s](t)` about the flow velocity, at finite `N`
+    /// (exact) or in the Boltzmann limit (`large_n`, where the flow velocity vanishes).
+    pub fn temperatures_at(&self, t: f64, large_n: bool) -> Vec<f64> {
+        let x = apply(&expm(&self.generator(large_n), t), &self.initial());
+        let ns = self.species();
+        let total: f64 = (0..ns)
+            .map(|r| self.masses[r] * self.counts[r] as f64)
+            .sum();
+        (0..ns)
+            .map(|s| {
+                let ns_f = self.counts[s] as f64;
+                let mut sum = x[s];
+                if !large_n {
+                    for r in 0..ns {
+                        sum -= 2.0 * self.masses[r] * x[self.p(s, r)] / total;
+                        for q in 0..ns {
+                            sum += ns_f * self.masses[r] * self.masses[q] * x[self.p(r, q)]
+                                / (total * total);
+                        }
+                    }
+                }
+                self.masses[s] * sum / (3.0 * ns_f)
+            })
+            .collect()
+    }
+}
+
+fn apply(m: &[Vec<f64>], x: &[f64]) -> Vec<f64> {
+    m.iter()
+        .map(|row| row.iter().zip(x).map(|(a, b)| a * b).sum())
+        .collect()
+}
+
+fn matmul(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let d = a.len();
+    (0..d)
+        .map(|i| {
+            (0..d)
+                .map(|j| (0..d).map(|k| a[i][k] * b[k][j]).sum())
+                .collect()
+        })
+        .collect()
+}
+
+/// `exp(M t)` by scaling and squaring with a Taylor series (the norm scaled below 1/2, 24
+/// terms: truncation far below double rounding).
+fn expm(m: &[Vec<f64>], t: f64) -> Vec<Vec<f64>> {
+    let d = m.len();
+    let norm = m
+        .iter()
+        .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max)
+        * t.abs();
+    let squarings = if norm > 0.5 {
+        (norm / 0.5).log2().ceil() as u32
+    } else {
+        0
+    };
+    let h = t / f64::from(2u32).powi(squarings as i32);
+    let a: Vec<Vec<f64>> = m
+        .iter()
+        .map(|r| r.iter().map(|x| x * h).collect())
+        .collect();
+    let identity: Vec<Vec<f64>> = (0..d)
+        .map(|i| (0..d).map(|j| if i == j { 1.0 } else { 0.0 }).collect())
+        .collect();
+    let mut result = identity.clone();
+    let mut term = identity;
+    for k in 1..=24 {
+        term = matmul(&term, &a);
+        for (row, trow) in result.iter_mut().zip(&term) {
+            for (x, y) in row.iter_mut().zip(trow) {
+                *x += y / factorial(k);
+            }
+        }
+    }
+    for _ in 0..squarings {
+        result = matmul(&result, &result);
+    }
+    result
+}
+
+fn factorial(k: u32) -> f64 {
+    (1..=k).map(f64::from).product()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// One species: GRW (13) with beta = 0 at finite n is
+    /// `T(t) = T0 exp(-(1 - alpha^2)/4 kappa (n - 1)/n t)` for the raw second moment
+    /// ... about the flow velocity, whose expected square is conserved: checked against the
+    /// closed form of the one-species energy decay.
+    #[test]
+    fn one_species_is_the_closed_form() {
+        let (n, alpha, kappa) = (10usize, 0.5, 2.0);
+        let mix = MaxwellMixture {
+            counts: vec![n],
+            masses: vec![1.0],
+            kappa: vec![kappa],
+            alpha: vec![alpha],
+            temperatures: vec![1.5],
+        };
+        for &t in &[0.0, 0.3, 2.0] {
+            // E sum |v - V|^2 = (A - |Q|^2/n): d/dt = -(1 - alpha^2)/4 kappa/n (n A - |Q|^2)
+            // and |Q|^2 is conserved, so (A - |Q|^2/n) decays at (1 - alpha^2)/4 kappa.
+            // T = (A - |Q|^2/n)/(3n): E T(0) = 1.5 (n - 1)/n.
+            let exact = 1.5 * (n as f64 - 1.0) / n as f64
+                * (-(1.0 - alpha * alpha) / 4.0 * kappa * t).exp();
+            let got = mix.temperatures_at(t, false)[0];
+            assert!(
+                (got - exact).abs() < 1e-12 * exact,
+                "t = {t}: {got} vs {exact}"
+            );
+        }
+    }
+
+    /// Two identical species are one species: the temperatures equal the one-species
+    /// closed form.
+    #[test]
+    fn two_equal_species_are_one() {
+        let (alpha, kappa) = (0.7, 3.0);
+        let mix = MaxwellMixture {
+            counts: vec![4, 6],
+            masses: vec![2.0, 2.0],
+            kappa: vec![kappa; 3],
+            alpha: vec![alpha; 3],
+            temperatures: vec![1.0, 1.0],
+        };
+        for &t in &[0.5, 1.5] {
+            let ts = mix.temperatures_at(t, false);
+            let one = MaxwellMixture {
+                counts: vec![10],
+                masses: vec![2.0],
+                kappa: vec![kappa],
+                alpha: vec![alpha],
+                temperatures: vec![1.0],
+            }
+            .temperatures_at(t, false)[0];
+            let mixed = (4.0 * ts[0] + 6.0 * ts[1]) / 10.0;
+            assert!((mixed - one).abs() < 1e-12, "{mixed} vs {one}");
+        }
+    }
+}

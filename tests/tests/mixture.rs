@@ -1,0 +1,204 @@
+//! Granular mixtures (`gdsmc_core::mixture`): a one-species mixture is the one-species loop to
+//! the last bit, and the inelastic Maxwell mixture's species temperatures follow the exact
+//! finite-N second moments (`gdsmc_runner::reference::mixture`) at every observation time.
+
+use gdsmc_core::drive::{Drive, NoDrive, WhiteNoise};
+use gdsmc_core::engine::NoSplitting;
+use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell};
+use gdsmc_core::math::PI;
+use gdsmc_core::mixture::{MixtureNoSplitting, PairPhysics, Species};
+use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::restitution::Constant;
+use gdsmc_core::rng::{Streams, stream};
+use gdsmc_core::sample::Maxwellian;
+use gdsmc_core::vec3::Vec3;
+use gdsmc_runner::reference::mixture::MaxwellMixture;
+use gdsmc_validation::family_factor;
+
+/// Runs the one-species loop and the one-species mixture from the same start and seed and
+/// asserts equal observables (every field, to the bit) and counts at each time.
+fn same_as_one_species<K: Kernel, D: Drive>(
+    kernel: K,
+    drive: D,
+    alpha: f64,
+    n: usize,
+    times: &[f64],
+) {
+    let law = Constant::new(alpha).unwrap();
+    let f0 = Maxwellian::standard();
+    let mut rng = stream(7, 0);
+    let mut a = vec![Particle::default(); n];
+    {
+        let mut p = Particles::new(&mut a).unwrap();
+        p.fill_with(0.0, || f0.sample(&mut rng));
+    }
+    let mut b = a.clone();
+    let (mut ra, mut rb) = (rng.clone(), rng);
+    let mut pa = Particles::new(&mut a).unwrap();
+    let mut pb = Particles::new(&mut b).unwrap();
+    let (mut one, o1) = NoSplitting::start(kernel, drive, law, &mut pa, 0.0).unwrap();
+    let sp = Species::new(&[n], &[1.0]).unwrap();
+    let pair = PairPhysics {
+        kernel,
+        restitution: law,
+    };
+    let (mut mix, o2) = MixtureNoSplitting::start(sp, &[pair], &[drive], &mut pb, 0.0).unwrap();
+    assert_eq!(o1, o2.all);
+    for &t in times {
+        let o1 = one.advance_to(&mut pa, t, &mut ra).unwrap();
+        let o2 = mix.advance_to(&mut pb, t, &mut rb).unwrap();
+        assert_eq!(o1, o2.all, "t = {t}");
+        assert_eq!(o1, o2.species[0], "t = {t}");
+        assert_eq!(one.counts(), mix.counts(), "t = {t}");
+    }
+    assert!(mix.counts().collisions > 2 * n as u64);
+}
+
+#[test]
+fn one_species_mixture_is_the_one_species_loop_bit_for_bit() {
+    let times = [0.5, 1.0, 2.0, 4.0];
+    let c = 1.0 / (4.0 * PI);
+    same_as_one_species(
+        Maxwell::new(4.0, c).unwrap(),
+        WhiteNoise::new(1.0).unwrap(),
+        0.5,
+        500,
+        &times,
+    );
+    same_as_one_species(
+        HardSpheres::new(4.0, c).unwrap(),
+        WhiteNoise::new(1.0).unwrap(),
+        0.5,
+        500,
+        &times,
+    );
+    same_as_one_species(HardSpheres::new(4.0, c).unwrap(), NoDrive, 1.0, 500, &times);
+    // A cooling gas followed long enough to be rescaled (the stored velocities and v6).
+    let long: Vec<f64> = (1..=8).map(|k| 50.0 * k as f64).collect();
+    same_as_one_species(HardSpheres::new(4.0, c).unwrap(), NoDrive, 0.5, 300, &long);
+    same_as_one_species(Maxwell::new(4.0, c).unwrap(), NoDrive, 0.3, 300, &long);
+}
+
+/// The Maxwell mixture of the test: masses 1 and 4, `kappa = 4 pi gamma C` of 1, 1.5 and 0.5
+/// for the pairs (0,0), (0,1), (1,1), restitution 0.9, 0.6, 0.8, and start temperatures 1 and 2.
+fn maxwell_mixture(counts: [usize; 2]) -> MaxwellMixture {
+    MaxwellMixture {
+        counts: counts.to_vec(),
+        masses: vec![1.0, 4.0],
+        kappa: vec![1.0, 1.5, 0.5],
+        alpha: vec![0.9, 0.6, 0.8],
+        temperatures: vec![1.0, 2.0],
+    }
+}
+
+/// `ensembles` runs of the mixture; returns per time the samples `(T_0, T_1)`.
+fn simulate(
+    mix: &MaxwellMixture,
+    times: &[f64],
+    ensembles: u64,
+    seed: u64,
+) -> Vec<Vec<(f64, f64)>> {
+    let sp = Species::new(&mix.counts, &mix.masses).unwrap();
+    let physics: Vec<_> = (0..3)
+        .map(|k| PairPhysics {
+            kernel: Maxwell::new(1.0, mix.kappa[k] / (4.0 * PI)).unwrap(),
+            restitution: Constant::new(mix.alpha[k]).unwrap(),
+        })
+        .collect();
+    let starts: Vec<Maxwellian> = (0..2)
+        .map(|s| Maxwellian::new(mix.masses[s], mix.temperatures[s], Vec3::ZERO).unwrap())
+        .collect();
+    let n = sp.total();
+    let mut out = vec![Vec::new(); times.len()];
+    let mut buf = vec![Particle::default(); n];
+    for mut rng in Streams::new(seed).take(ensembles as usize) {
+        for s in 0..2 {
+            for q in &mut buf[sp.range(s)] {
+                q.set_velocity(starts[s].sample(&mut rng));
+            }
+        }
+        let mut p = Particles::new(&mut buf).unwrap();
+        let (mut e, _) =
+            MixtureNoSplitting::start(sp, &physics, &[NoDrive; 2], &mut p, 0.0).unwrap();
+        for (ti, &t) in times.iter().enumerate() {
+            let o = e.advance_to(&mut p, t, &mut rng).unwrap();
+            out[ti].push((o.temperature(0), o.temperature(1)));
+        }
+    }
+    out
+}
+
+/// Mean, and the standard error of the mean, of `xs`.
+fn mean_se(xs: &[f64]) -> (f64, f64) {
+    let m = xs.len() as f64;
+    let mean = xs.iter().sum::<f64>() / m;
+    let var = xs.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / (m - 1.0);
+    (mean, (var / m).sqrt())
+}
+
+#[test]
+fn maxwell_mixture_temperatures_follow_the_exact_finite_n_moments() {
+    let times = [0.25, 0.5, 1.0, 2.0, 4.0];
+    // Small n (8 particles: the finite-N terms are large) and large n (the Boltzmann limit
+    // is then within the interval too).
+    let cases = [([3usize, 5usize], 20_000u64), ([600, 400], 300)];
+    // Every time, both sizes, three quantities (T_0, T_1, T_0/T_1): 30 checks, each at the
+    // Bonferroni level that keeps the family at 99.9% (normal quantiles: >= 300 ensembles).
+    let z = family_factor(30) * gdsmc_runner::run::stats::LAMBDA_999;
+    let mut distinct = false;
+    for (counts, ensembles) in cases {
+        let mix = maxwell_mixture(counts);
+        let samples = simulate(&mix, &times, ensembles, 11);
+        for (ti, &t) in times.iter().enumerate() {
+            let exact = mix.temperatures_at(t, false);
+            let t0: Vec<f64> = samples[ti].iter().map(|x| x.0).collect();
+            let t1: Vec<f64> = samples[ti].iter().map(|x| x.1).collect();
+            let ((m0, s0), (m1, s1)) = (mean_se(&t0), mean_se(&t1));
+            assert!(
+                (m0 - exact[0]).abs() <= z * s0,
+                "n = {counts:?} t = {t}: T_0 {m0} +- {} vs {}",
+                z * s0,
+                exact[0]
+            );
+            assert!(
+                (m1 - exact[1]).abs() <= z * s1,
+                "n = {counts:?} t = {t}: T_1 {m1} +- {} vs {}",
+                z * s1,
+                exact[1]
+            );
+            // The ratio of the means, its standard error by the delta method.
+            let r = m0 / m1;
+            let cov = t0
+                .iter()
+                .zip(&t1)
+                .map(|(a, b)| (a - m0) * (b - m1))
+                .sum::<f64>()
+                / (t0.len() as f64 - 1.0)
+                / t0.len() as f64;
+            let se = ((s0 * s0 - 2.0 * r * cov + r * r * s1 * s1) / (m1 * m1)).sqrt();
+            let exact_ratio = exact[0] / exact[1];
+            assert!(
+                (r - exact_ratio).abs() <= z * se,
+                "n = {counts:?} t = {t}: T_0/T_1 {r} +- {} vs {exact_ratio}",
+                z * se
+            );
+            // The test can fail: the temperatures of the species differ from each other
+            // by many intervals (no equipartition), and from the Boltzmann limit at small n.
+            if (exact[0] - exact[1]).abs() > 10.0 * z * (s0 + s1) {
+                distinct = true;
+            }
+        }
+    }
+    assert!(distinct, "the species temperatures were never told apart");
+    // At 8 particles the finite-N solution differs from the Boltzmann limit by many intervals
+    // at the last time: the comparison above sees N.
+    let small = maxwell_mixture([3, 5]);
+    let (fin, lim) = (
+        small.temperatures_at(4.0, false),
+        small.temperatures_at(4.0, true),
+    );
+    assert!(
+        (fin[0] / fin[1] - lim[0] / lim[1]).abs() > 0.05,
+        "{fin:?} vs {lim:?}"
+    );
+}
