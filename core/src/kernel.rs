@@ -70,6 +70,10 @@ pub trait Kernel: Copy {
     fn as_hard_spheres(&self) -> Option<HardSpheres> {
         None
     }
+
+    /// The same kernel with its strength `gamma C_lambda` times `f > 0` (the cross section of
+    /// a mixture's species pair); refused when the product is not finite and positive.
+    fn scaled(&self, f: Real) -> Result<Self, KernelError>;
 }
 
 fn check_strength(gamma: Real, c: Real) -> Result<Real, KernelError> {
@@ -108,6 +112,9 @@ impl Maxwell {
 
 impl Kernel for Maxwell {
     const USES_UMAX: bool = false;
+    fn scaled(&self, f: Real) -> Result<Self, KernelError> {
+        Maxwell::new(self.strength, f)
+    }
     #[inline(always)]
     fn b_max(&self, _umax: Real) -> Real {
         4.0 * PI * self.strength
@@ -146,6 +153,9 @@ impl HardSpheres {
 
 impl Kernel for HardSpheres {
     const USES_UMAX: bool = true;
+    fn scaled(&self, f: Real) -> Result<Self, KernelError> {
+        HardSpheres::new(self.strength, f)
+    }
     #[inline(always)]
     fn b_max(&self, umax: Real) -> Real {
         4.0 * PI * self.strength * umax
@@ -197,6 +207,9 @@ impl Vhs {
 
 impl Kernel for Vhs {
     const USES_UMAX: bool = true;
+    fn scaled(&self, f: Real) -> Result<Self, KernelError> {
+        Vhs::new(self.strength, f, self.lambda)
+    }
     #[inline(always)]
     fn b_max(&self, umax: Real) -> Real {
         4.0 * PI * self.strength * powf(umax, self.lambda)

@@ -48,6 +48,14 @@ fn field(p: Param) -> &'static str {
         Param::Dt => "dt",
         Param::StepFactor => "step_factor",
         Param::Scheme => "scheme",
+        // The C struct has no mixture yet: a one-species gas never names these.
+        Param::Species
+        | Param::SpeciesCount(_)
+        | Param::SpeciesMass(_)
+        | Param::SpeciesTemperature(_)
+        | Param::SpeciesDiameter(_)
+        | Param::SpeciesBeta(_)
+        | Param::PairRestitution(..) => "species",
     }
 }
 

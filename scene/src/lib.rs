@@ -75,12 +75,29 @@ pub struct Scene {
     pub ensembles: u64,
     /// Seed.
     pub seed: u64,
+    /// The labels of a mixture's species (empty: one species).
+    pub species_names: Vec<String>,
+    /// The mole fractions of a mixture's species, as written (normalized when counted).
+    pub species_fractions: Vec<f64>,
 }
 
 impl Scene {
     /// Particles per ensemble.
     pub fn n(&self) -> usize {
         self.physics.n
+    }
+
+    /// Sets the particle count, and a mixture's species counts from their fractions as the
+    /// file's `particles.n` does (`validate::species::counts`). A species left without a
+    /// particle is refused when the physics is validated.
+    pub fn set_n(&mut self, n: usize) {
+        self.physics.n = n;
+        if !self.species_fractions.is_empty() {
+            let counts = validate::species::counts(&self.species_fractions, n);
+            for (s, c) in self.physics.species.iter_mut().zip(counts) {
+                s.count = c;
+            }
+        }
     }
 
     /// Values each ensemble appends after its observables: the speed histogram, the reduced

@@ -91,6 +91,24 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
         }
         let mut table = &mut doc;
         for part in &parts[..parts.len() - 1] {
+            // `species[1]`: a table of an array of tables (`[[species]]`), which must exist.
+            if let Some((name, index)) = indexed(part) {
+                let element = match table.get_mut(name) {
+                    Some(toml::Value::Array(a)) => a.get_mut(index),
+                    _ => None,
+                };
+                table = match element {
+                    Some(toml::Value::Table(t)) => t,
+                    _ => {
+                        return Err(bad(
+                            Some(o),
+                            key,
+                            format!("`{part}` names no table of the scene"),
+                        ));
+                    }
+                };
+                continue;
+            }
             let entry = table
                 .entry(part.to_string())
                 .or_insert_with(|| toml::Value::Table(toml::Table::new()));
@@ -132,6 +150,13 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
         }
         other => other,
     })
+}
+
+/// `name[k]` as `(name, k)`.
+fn indexed(part: &str) -> Option<(&str, usize)> {
+    let (name, rest) = part.split_once('[')?;
+    let index = rest.strip_suffix(']')?.parse().ok()?;
+    Some((name, index))
 }
 
 /// [`parse_with`] for `--set` assignments.

@@ -39,6 +39,35 @@ pub struct SceneFile {
     /// Marginal histogram of one velocity component (BRS Figure 4).
     #[serde(default)]
     pub marginal_histogram: Option<MarginalSpec>,
+    /// `[[species]]`: the species of a granular mixture (none: one species).
+    #[serde(default)]
+    pub species: Option<Spanned<Vec<SpeciesSpec>>>,
+}
+
+/// One `[[species]]` table: a species of a granular mixture (Garzó and Dufty 1999).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpeciesSpec {
+    /// A label for outputs. Default `s0`, `s1`, ...
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Mole (number) fraction > 0; the fractions are normalized, and species `s` gets
+    /// `x_s n` particles rounded (largest remainders), at least one.
+    pub fraction: Spanned<f64>,
+    /// Mass (> 0). Default 1.
+    #[serde(default = "one")]
+    pub mass: Spanned<f64>,
+    /// Start temperature (>= 0) of the species' Maxwellian. Default 1.
+    #[serde(default = "one")]
+    pub temperature: Spanned<f64>,
+    /// Diameter (> 0): the pair `(s, t)` has the kernel constant `c ((d_s + d_t)/2)^2`.
+    /// Default 1.
+    #[serde(default = "one")]
+    pub diameter: Spanned<f64>,
+    /// White-noise strength of this species (with `drive.kind = "white-noise"`). Default:
+    /// `drive.beta`.
+    #[serde(default)]
+    pub beta: Option<Spanned<f64>>,
 }
 
 /// `[marginal_histogram]`: `bins` bins over `[-radius, radius)` of velocity component `axis`.
@@ -194,6 +223,10 @@ pub struct CollisionsSpec {
     /// The impact-speed law BRS (9)-(10) instead of a constant: `{ beta0 = ..., delta = ... }`.
     #[serde(default)]
     pub impact_speed_law: Option<Spanned<ImpactSpeedSpec>>,
+    /// A mixture's restitution per species pair: a symmetric `S x S` matrix (default: the
+    /// constant `restitution` for every pair).
+    #[serde(default)]
+    pub pair_restitution: Option<Spanned<Vec<Vec<f64>>>>,
 }
 
 /// `collisions.impact_speed_law`: `1 - e = 2 beta0 |g . n|^delta` (BRS (9)-(10)).

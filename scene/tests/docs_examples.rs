@@ -33,11 +33,12 @@ fn docs_examples_are_valid_scenes() {
         let text = block.split("```").next().unwrap();
         let part: toml::Table = toml::from_str(text).unwrap_or_else(|e| panic!("{text}\n{e}"));
         let mut scene: toml::Table = toml::from_str(BASE).unwrap();
-        // An example with its own restitution law replaces the base's constant.
-        if part
-            .get("collisions")
-            .and_then(|c| c.get("impact_speed_law"))
-            .is_some()
+        // An example with its own restitution law (or one per species pair) replaces the
+        // base's constant.
+        let collisions = part.get("collisions");
+        if ["impact_speed_law", "pair_restitution"]
+            .iter()
+            .any(|k| collisions.and_then(|c| c.get(k)).is_some())
         {
             scene["collisions"]
                 .as_table_mut()

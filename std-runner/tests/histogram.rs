@@ -16,7 +16,7 @@ fn chi3_cdf(r: f64) -> f64 {
 fn initial_shells_are_maxwellian() {
     let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
     let mut s = scene::load(&p).unwrap();
-    s.physics.n = 5000;
+    s.set_n(5000);
     s.ensembles = 40;
     s.times = vec![0.0];
     s.histogram = Some((16, 4.0));

@@ -103,6 +103,8 @@ fn the_bibliography_names_every_paper_and_method_cited() {
         "Haff",
         "van Noije",
         "Student",
+        "Garzó, J. W. Dufty",
+        "Montanero, V. Garzó",
     ] {
         assert!(refs.contains(needle), "docs/references.md lacks {needle}");
     }

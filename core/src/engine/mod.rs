@@ -34,6 +34,11 @@ pub trait EventLoop {
     fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
         (1.0, crate::vec3::Vec3::ZERO)
     }
+    /// A mixture's observables per species of the synchronized particles `p` (right after
+    /// [`EventLoop::advance_to`] or a start), in physical units; `None` for a one-species gas.
+    fn species(&self, _p: &Particles<'_>) -> Option<crate::mixture::MixtureObservables> {
+        None
+    }
 }
 
 macro_rules! impl_event_loop {

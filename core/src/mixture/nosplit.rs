@@ -144,6 +144,19 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
         &self.sp
     }
 
+    /// Re-synchronizes after the caller changed velocities between calls (physical units):
+    /// every last-kick time becomes the current time, the majorants are recomputed.
+    pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
+        (self.scale, self.offset) = (1.0, Vec3::ZERO);
+        p.reset_kick_times(self.t);
+        self.synchronized(p)
+    }
+
+    /// The map `v_phys = offset + scale v` from stored to physical velocities.
+    pub fn velocity_map(&self) -> (Real, Vec3) {
+        (self.scale, self.offset)
+    }
+
     /// The majorant `U_st` of pair type `k` (stored units).
     #[inline(always)]
     fn pair_umax(&self, k: usize) -> Real {
@@ -385,6 +398,36 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
             }
         }
         obs
+    }
+}
+
+impl<K: Kernel, D: Drive, A: Restitution> crate::engine::EventLoop for MixtureNoSplitting<K, D, A> {
+    fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<crate::moments::Observables, EngineError> {
+        MixtureNoSplitting::advance_to(self, p, t_end, rng).map(|o| o.all)
+    }
+    fn resync(
+        &mut self,
+        p: &mut Particles<'_>,
+    ) -> Result<crate::moments::Observables, EngineError> {
+        MixtureNoSplitting::resync(self, p).map(|o| o.all)
+    }
+    fn time(&self) -> Real {
+        self.t
+    }
+    fn counts(&self) -> Counts {
+        self.counts
+    }
+    fn velocity_map(&self) -> (Real, Vec3) {
+        (self.scale, self.offset)
+    }
+    fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
+        let obs = MixtureObservables::of(p.as_slice(), &self.sp);
+        Some(self.with_raw_v6(p, obs.in_units(self.scale, self.offset)))
     }
 }
 

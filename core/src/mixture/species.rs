@@ -10,7 +10,7 @@ use crate::math::Real;
 
 /// The largest number of species a mixture may have (the core keeps per-species state in
 /// fixed arrays: no allocation).
-pub const MAX_SPECIES: usize = 8;
+pub const MAX_SPECIES: usize = 4;
 
 /// The largest number of pair types `(s, t)`, `s <= t`: `MAX_SPECIES (MAX_SPECIES + 1) / 2`.
 pub const MAX_PAIRS: usize = MAX_SPECIES * (MAX_SPECIES + 1) / 2;

@@ -2,13 +2,17 @@
 //! `match` per level (kernel, drive, restitution law, scheme), each level generic over the
 //! choices above it, so that every leaf is a monomorphized event loop.
 
-use super::engine::{ByDrive, ByLaw, ByScheme, Engine};
+use super::engine::{ByDrive, ByLaw, ByMixtureDrive, ByScheme, Engine, MixtureEngine};
 use super::model::{DriveModel, KernelModel, LawModel, Model, SchemeModel};
+use super::species::MixtureModel;
+use super::{MAX_PAIRS, MAX_SPECIES};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::{EngineError, NoSplitting, Splitting, TimeStepped};
 use crate::kernel::Kernel;
 use crate::math::Real;
+use crate::mixture::{MixtureNoSplitting, PairPhysics, StartError};
 use crate::moments::Observables;
+use crate::particles::Particle;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::Rng;
@@ -26,6 +30,15 @@ impl Model {
     ) -> Result<(), EngineError> {
         if p.len() != self.n() {
             return Err(EngineError::ParticleCount);
+        }
+        if let Some(mx) = &self.mixture {
+            // Species by species, each from its own Maxwellian, in particle order.
+            for s in 0..mx.species.len() {
+                for q in &mut p.as_mut_slice()[mx.species.range(s)] {
+                    *q = Particle::new(mx.starts[s].sample(rng), t0);
+                }
+            }
+            return Ok(());
         }
         let mut bad = false;
         p.fill_with(t0, || {
@@ -51,6 +64,19 @@ impl Model {
     ) -> Result<(Engine, Observables), EngineError> {
         if p.len() != self.n() {
             return Err(EngineError::ParticleCount);
+        }
+        if let Some(mx) = &self.mixture {
+            let engine = match self.kernel {
+                KernelModel::Maxwell(k) => {
+                    wrap(mixture(mx, k, self.drive, p, t0), MixtureEngine::Maxwell)
+                }
+                KernelModel::HardSpheres(k) => wrap(
+                    mixture(mx, k, self.drive, p, t0),
+                    MixtureEngine::HardSpheres,
+                ),
+                KernelModel::Vhs(k) => wrap(mixture(mx, k, self.drive, p, t0), MixtureEngine::Vhs),
+            };
+            return wrap(engine, Engine::Mixture);
         }
         match self.kernel {
             KernelModel::Maxwell(k) => wrap(self.by_drive(k, p, t0), Engine::Maxwell),
@@ -123,6 +149,62 @@ impl Model {
             ),
         }
     }
+}
+
+/// The mixture loop of kernel `k` (scaled per pair) and the drive (none, or white noise per
+/// species).
+fn mixture<K: Kernel>(
+    mx: &MixtureModel,
+    k: K,
+    drive: DriveModel,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Result<(ByMixtureDrive<K>, Observables), EngineError> {
+    let types = mx.species.pair_types();
+    let mut physics = [PairPhysics {
+        kernel: k,
+        restitution: mx.laws[0],
+    }; MAX_PAIRS];
+    for (j, pair) in physics.iter_mut().enumerate().take(types) {
+        // Validated: every scaled kernel exists.
+        pair.kernel = k
+            .scaled(mx.factors[j])
+            .map_err(|_| EngineError::NonFinite("a pair kernel"))?;
+        pair.restitution = mx.laws[j];
+    }
+    let physics = &physics[..types];
+    let n = mx.species.len();
+    match drive {
+        DriveModel::WhiteNoise(_) => {
+            let (e, o) = started(MixtureNoSplitting::start(
+                mx.species,
+                physics,
+                &mx.noises[..n],
+                p,
+                t0,
+            ))?;
+            Ok((ByMixtureDrive::WhiteNoise(e), o.all))
+        }
+        _ => {
+            let (e, o) = started(MixtureNoSplitting::start(
+                mx.species,
+                physics,
+                &[NoDrive; MAX_SPECIES][..n],
+                p,
+                t0,
+            ))?;
+            Ok((ByMixtureDrive::None(e), o.all))
+        }
+    }
+}
+
+/// A mixture loop's refusal as an engine error (the model was validated, so only the
+/// engine's own refusals remain).
+fn started<E>(e: Result<E, StartError>) -> Result<E, EngineError> {
+    e.map_err(|e| match e {
+        StartError::Engine(e) => e,
+        StartError::Mixture(_) => EngineError::ParticleCount,
+    })
 }
 
 fn wrap<E, F>(

@@ -11,6 +11,7 @@ use crate::drive::{
 use crate::engine::{Counts, EngineError, EventLoop, NoSplitting, Splitting, TimeStepped};
 use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use crate::math::Real;
+use crate::mixture::{MixtureNoSplitting, MixtureObservables};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
@@ -18,6 +19,11 @@ use crate::rng::Rng;
 use crate::vec3::Vec3;
 
 /// The engine of a validated physics, by kernel.
+// The mixture's loop keeps its per-species and per-pair state in fixed arrays (about 1.4 KB
+// against 0.5 KB for the one-species loops); the core has no allocator to box it, and an
+// engine lives in its caller's memory once per system, so the size is paid once, not per
+// particle or event.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum Engine {
     /// Maxwell pseudo-molecules.
@@ -26,6 +32,28 @@ pub enum Engine {
     HardSpheres(ByDrive<HardSpheres>),
     /// Variable hard spheres.
     Vhs(ByDrive<Vhs>),
+    /// A mixture of several species.
+    Mixture(MixtureEngine),
+}
+
+/// A mixture's engine (no-splitting, a constant restitution per species pair), by kernel.
+#[derive(Clone, Debug)]
+pub enum MixtureEngine {
+    /// Maxwell pseudo-molecules.
+    Maxwell(ByMixtureDrive<Maxwell>),
+    /// Hard spheres.
+    HardSpheres(ByMixtureDrive<HardSpheres>),
+    /// Variable hard spheres.
+    Vhs(ByMixtureDrive<Vhs>),
+}
+
+/// A mixture's engine by drive, for kernel `K`.
+#[derive(Clone, Debug)]
+pub enum ByMixtureDrive<K> {
+    /// No drive: the mixture cools.
+    None(MixtureNoSplitting<K, NoDrive, Constant>),
+    /// White noise, each species its own strength.
+    WhiteNoise(MixtureNoSplitting<K, WhiteNoise, Constant>),
 }
 
 /// By drive, for kernel `K`.
@@ -75,25 +103,30 @@ macro_rules! forward {
                 t_end: Real,
                 rng: &mut R,
             ) -> Result<Observables, EngineError> {
-                match self { $(Self::$v(e) => e.advance_to(p, t_end, rng)),+ }
+                match self { $(Self::$v(e) => EventLoop::advance_to(e, p, t_end, rng)),+ }
             }
             fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-                match self { $(Self::$v(e) => e.resync(p)),+ }
+                match self { $(Self::$v(e) => EventLoop::resync(e, p)),+ }
             }
             fn time(&self) -> Real {
-                match self { $(Self::$v(e) => e.time()),+ }
+                match self { $(Self::$v(e) => EventLoop::time(e)),+ }
             }
             fn counts(&self) -> Counts {
-                match self { $(Self::$v(e) => e.counts()),+ }
+                match self { $(Self::$v(e) => EventLoop::counts(e)),+ }
             }
             fn velocity_map(&self) -> (Real, Vec3) {
-                match self { $(Self::$v(e) => e.velocity_map()),+ }
+                match self { $(Self::$v(e) => EventLoop::velocity_map(e)),+ }
+            }
+            fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
+                match self { $(Self::$v(e) => EventLoop::species(e, p)),+ }
             }
         }
     };
 }
 
-forward!(Engine, [], Maxwell, HardSpheres, Vhs);
+forward!(Engine, [], Maxwell, HardSpheres, Vhs, Mixture);
+forward!(MixtureEngine, [], Maxwell, HardSpheres, Vhs);
+forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], NoSplitting, Splitting, TimeStepped);

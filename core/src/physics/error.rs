@@ -54,6 +54,20 @@ pub enum Param {
     StepFactor,
     /// The scheme itself (it does not fit the kernel or the drive).
     Scheme,
+    /// The species of a mixture as a whole.
+    Species,
+    /// Particle count of species `k`.
+    SpeciesCount(usize),
+    /// Mass of species `k`.
+    SpeciesMass(usize),
+    /// Start temperature of species `k`.
+    SpeciesTemperature(usize),
+    /// Diameter of species `k`.
+    SpeciesDiameter(usize),
+    /// White-noise strength of species `k`.
+    SpeciesBeta(usize),
+    /// Restitution coefficient of the species pair `(s, t)`.
+    PairRestitution(usize, usize),
 }
 
 impl core::fmt::Display for Param {
@@ -82,6 +96,13 @@ impl core::fmt::Display for Param {
             Param::Dt => f.write_str("dt"),
             Param::StepFactor => f.write_str("step_factor"),
             Param::Scheme => f.write_str("scheme"),
+            Param::Species => f.write_str("species"),
+            Param::SpeciesCount(k) => write!(f, "species[{k}].count"),
+            Param::SpeciesMass(k) => write!(f, "species[{k}].mass"),
+            Param::SpeciesTemperature(k) => write!(f, "species[{k}].temperature"),
+            Param::SpeciesDiameter(k) => write!(f, "species[{k}].diameter"),
+            Param::SpeciesBeta(k) => write!(f, "species[{k}].beta"),
+            Param::PairRestitution(s, t) => write!(f, "restitution of species pair ({s}, {t})"),
         }
     }
 }

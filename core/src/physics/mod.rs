@@ -44,12 +44,14 @@ mod dispatch;
 pub mod engine;
 pub mod error;
 pub mod model;
+mod species;
 
 pub use engine::Engine;
 pub use error::{Param, PhysicsError, Problem};
 pub use model::Model;
 
 use crate::math::Real;
+pub use crate::mixture::{MAX_PAIRS, MAX_SPECIES};
 
 /// MS's step factor of the time-stepped scheme, `h = 0.01 lambda / v0` (MS Section 3): the
 /// default of every front end.
@@ -186,6 +188,26 @@ impl Component {
     };
 }
 
+/// One species of a granular mixture (Garzó and Dufty 1999): its particles, mass, start
+/// temperature (a Maxwellian of zero drift), diameter and white-noise strength. The kernel of
+/// species pair `(s, t)` is the description's kernel with `C` times `((d_s + d_t)/2)^2`, the
+/// hard-sphere cross section of the pair (GRW (4): `C_1 = d^2/4`); diameter 1 for every
+/// species leaves the kernel as it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeciesChoice {
+    /// Particles of this species, >= 1.
+    pub count: usize,
+    /// Mass > 0.
+    pub mass: Real,
+    /// Start temperature >= 0.
+    pub temperature: Real,
+    /// Diameter > 0 (relative: 1 keeps the kernel constant).
+    pub diameter: Real,
+    /// White-noise strength beta >= 0 of this species (with the white-noise drive; GRW (18)
+    /// per species).
+    pub beta: Real,
+}
+
 /// Everything physical about a simulation, as plain data; see the module docs.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Physics {
@@ -201,6 +223,13 @@ pub struct Physics {
     pub drive: DriveChoice,
     /// The scheme.
     pub scheme: SchemeChoice,
+    /// The species of a mixture (empty: one species, the gas described above). With species,
+    /// `n` is their total, the initial distribution is theirs (`initial` is not used), the
+    /// drive is none or white noise (each species its own beta) and the scheme no-splitting.
+    pub species: heapless::Vec<SpeciesChoice, MAX_SPECIES>,
+    /// The restitution coefficient of each species pair `(s, t)`, `s <= t`, in the order
+    /// `(0,0), (0,1), .., (1,1), ..` (empty: the constant `restitution` for every pair).
+    pub pair_restitution: heapless::Vec<Real, MAX_PAIRS>,
 }
 
 impl Physics {
@@ -222,6 +251,8 @@ impl Physics {
             restitution,
             drive,
             scheme,
+            species: heapless::Vec::new(),
+            pair_restitution: heapless::Vec::new(),
         }
     }
 

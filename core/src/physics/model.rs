@@ -60,6 +60,7 @@ pub struct Model {
     pub(super) law: LawModel,
     pub(super) drive: DriveModel,
     pub(super) scheme: SchemeModel,
+    pub(super) mixture: Option<super::species::MixtureModel>,
 }
 
 fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -289,6 +290,7 @@ impl Model {
         let law = law(physics.restitution)?;
         let drive = drive(physics.drive)?;
         let scheme = scheme(physics.scheme, kernel, physics.drive)?;
+        let mixture = super::species::mixture(physics, kernel, law, drive, scheme)?;
         Ok(Model {
             n: physics.n,
             initial,
@@ -296,6 +298,7 @@ impl Model {
             law,
             drive,
             scheme,
+            mixture,
         })
     }
 
@@ -304,7 +307,13 @@ impl Model {
         self.n
     }
 
-    /// The initial distribution as a sampler.
+    /// The species of a mixture (`None`: one species).
+    pub fn species(&self) -> Option<&crate::mixture::Species> {
+        self.mixture.as_ref().map(|m| &m.species)
+    }
+
+    /// The initial distribution as a sampler (of a one-species gas; a mixture's species start
+    /// from their own Maxwellians).
     pub fn initial(&self) -> &MaxwellianMixture<MAX_COMPONENTS> {
         &self.initial
     }

@@ -39,7 +39,16 @@ pub(super) fn collisions(
             }
         }
     };
+    if let (Some(r), Some(_)) = (&c.restitution, &c.pair_restitution) {
+        return ctx.invalid(
+            r.span(),
+            "collisions.restitution",
+            "and collisions.pair_restitution exclude each other",
+        );
+    }
     let law = match (&c.restitution, &c.impact_speed_law) {
+        // Every pair's coefficient is given (checked against the species by species.rs).
+        (None, None) if c.pair_restitution.is_some() => RestitutionLaw::Constant(1.0),
         (Some(r), None) => {
             ctx.holds(Param::Restitution, "collisions.restitution", r.span());
             RestitutionLaw::Constant(*r.get_ref())

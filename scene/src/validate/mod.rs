@@ -9,6 +9,7 @@ mod drive;
 mod observe;
 mod particles;
 pub(crate) mod scheme;
+pub mod species;
 
 use crate::Scene;
 use crate::error::Error;
@@ -89,6 +90,7 @@ impl SceneFile {
         let drive = drive::drive(&mut ctx, &self.drive)?;
         let times = observe::times(&ctx, &self.observe)?;
         let scheme = scheme::scheme(&mut ctx, &self.scheme)?;
+        let mixture = species::mixture(&mut ctx, self, n)?;
         let physics = Physics {
             n,
             initial,
@@ -96,6 +98,8 @@ impl SceneFile {
             restitution,
             drive,
             scheme,
+            species: mixture.species,
+            pair_restitution: mixture.pair_restitution,
         };
         physics.validate().map_err(|e| ctx.physics_error(e))?;
         scheme::on_grid(&ctx, &self.scheme, physics.scheme, &times)?;
@@ -119,6 +123,8 @@ impl SceneFile {
             marginal_histogram: histograms.2,
             ensembles,
             seed,
+            species_names: mixture.names,
+            species_fractions: mixture.fractions,
         })
     }
 }

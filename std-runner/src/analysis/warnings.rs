@@ -66,6 +66,20 @@ fn non_finite(stats: &RunStats) -> Option<Warning> {
 /// The temperature columns a steady-state window is checked on.
 const STEADY_CHECKED: [&str; 2] = ["T", "T_bulk"];
 
+/// The columns a steady-state window must hold steady: the temperatures, or for a mixture
+/// its species' temperature ratios (a cooling mixture's temperature keeps falling while its
+/// ratios settle: Garzó and Dufty 1999's cooling state).
+fn steady_checked(scene: &Scene) -> Vec<&'static str> {
+    let species = scene.physics.species.len();
+    if species == 0 {
+        return STEADY_CHECKED.to_vec();
+    }
+    crate::run::columns::SPECIES_COLUMNS[..species]
+        .iter()
+        .map(|c| c[1])
+        .collect()
+}
+
 /// The mean of the per-time means over `range` and a bound on its 99.9% half-width: the mean
 /// of the per-time half-widths (the standard deviation of a mean is at most the mean of the
 /// standard deviations, whatever the correlation between times).
@@ -83,7 +97,7 @@ fn window_mean(stats: &RunStats, col: usize, range: std::ops::Range<usize>) -> (
 /// first half and over its second half differ by more than the sum of their half-widths (each
 /// bounded from above, so a steady gas fires this less often than one run in a thousand per
 /// column). The averages then mix a transient into the steady state.
-fn unsteady(stats: &RunStats) -> Option<Warning> {
+fn unsteady(scene: &Scene, stats: &RunStats) -> Option<Warning> {
     let st = stats.steady.as_ref()?;
     let nt = stats.times.len();
     if stats.ensembles < 2 || st.points < 4 {
@@ -91,7 +105,7 @@ fn unsteady(stats: &RunStats) -> Option<Warning> {
     }
     let half = st.points / 2;
     let mut found = Vec::new();
-    for name in STEADY_CHECKED {
+    for name in steady_checked(scene) {
         let Some(col) = stats.col(name) else { continue };
         let (ma, ha) = window_mean(stats, col, st.first..st.first + half);
         let (mb, hb) = window_mean(stats, col, nt - half..nt);
@@ -161,7 +175,7 @@ fn tail_not_asymptotic(scene: &Scene, stats: &RunStats) -> Option<Warning> {
 /// Every warning of a finished run.
 pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     let mut w: Vec<Warning> = non_finite(stats).into_iter().collect();
-    w.extend(unsteady(stats));
+    w.extend(unsteady(scene, stats));
     w.extend(tail_not_asymptotic(scene, stats));
     let c = stats.counts;
     // Splitting schemes: the stationary temperature of the Maxwell gas is off by exactly

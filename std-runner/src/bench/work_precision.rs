@@ -134,7 +134,7 @@ pub fn measure(
     let mut out = Vec::new();
     for (k, c) in ladder.iter().enumerate() {
         let mut s = base.clone();
-        s.physics.n = c.n;
+        s.set_n(c.n);
         s.ensembles = runs;
         s.seed = base.seed.wrapping_add(k as u64);
         s.physics.scheme = match c.scheme {

@@ -18,6 +18,9 @@ pub struct ReferenceCurve {
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
 pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
+    if !scene.physics.species.is_empty() {
+        return None; // a one-species solution
+    }
     let alpha = scene.physics.restitution.constant()?;
     let KernelChoice::Maxwell { gamma, c } = scene.physics.kernel else {
         return None;
@@ -34,6 +37,9 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
 pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
+    if !scene.physics.species.is_empty() {
+        return None; // a one-species solution
+    }
     let alpha = scene.physics.restitution.constant()?;
     let KernelChoice::Maxwell { gamma, c } = scene.physics.kernel else {
         return None;
@@ -65,6 +71,9 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
 
 /// The BRS (21), (22) closure models of a hard-sphere gas in a hard-sphere host medium.
 pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroModel; 2]> {
+    if !scene.physics.species.is_empty() {
+        return None; // a one-species solution
+    }
     use crate::reference::hydro::{Closure, HydroModel};
     let KernelChoice::HardSpheres { gamma, c } = scene.physics.kernel else {
         return None;
@@ -93,8 +102,121 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroMode
     Some([m(Closure::LocalEquilibrium), m(Closure::Grad)])
 }
 
+/// Per species `k`: the exact finite-n mean of `T_sk` (Maxwell kernel, no drive), the
+/// Boltzmann limit of `E T_sk / E T_mix`, and the Maxwellian approximation of the cooling or
+/// steady state's ratio.
+const SPECIES_REFERENCES: [[&str; 3]; gdsmc_core::mixture::MAX_SPECIES] = [
+    ["T_s0_mean_n", "T_s0_ratio_limit", "T_s0_ratio_MA"],
+    ["T_s1_mean_n", "T_s1_ratio_limit", "T_s1_ratio_MA"],
+    ["T_s2_mean_n", "T_s2_ratio_limit", "T_s2_ratio_MA"],
+    ["T_s3_mean_n", "T_s3_ratio_limit", "T_s3_ratio_MA"],
+];
+
+/// The Maxwellian approximation of a mixture scene: its mole fractions, masses, the kernel
+/// strength `kappa_st = 4 pi gamma C ((d_s + d_t)/2)^2` and the restitution of every pair
+/// type, the kernel exponent, and each species' white noise.
+fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianApproximation> {
+    let ph = &scene.physics;
+    let (gamma, c, lambda) = match ph.kernel {
+        KernelChoice::Maxwell { gamma, c } => (gamma, c, 0.0),
+        KernelChoice::HardSpheres { gamma, c } => (gamma, c, 1.0),
+        KernelChoice::Vhs { gamma, c, lambda } => (gamma, c, lambda),
+    };
+    let model = ph.validate().ok()?;
+    let sp = model.species()?;
+    let (mut kappa, mut alpha) = (Vec::new(), Vec::new());
+    for k in 0..sp.pair_types() {
+        let (s, t) = sp.pair(k);
+        let d = 0.5 * (ph.species[s].diameter + ph.species[t].diameter);
+        kappa.push(4.0 * std::f64::consts::PI * gamma * c * d * d);
+        alpha.push(match ph.pair_restitution.get(k) {
+            Some(&a) => a,
+            None => ph.restitution.constant()?,
+        });
+    }
+    let heated = matches!(ph.drive, DriveChoice::WhiteNoise(_));
+    Some(crate::reference::mixture::MaxwellianApproximation {
+        fractions: (0..sp.len()).map(|s| sp.fraction(s)).collect(),
+        masses: ph.species.iter().map(|s| s.mass).collect(),
+        kappa,
+        alpha,
+        lambda,
+        beta: ph
+            .species
+            .iter()
+            .map(|s| if heated { s.beta } else { 0.0 })
+            .collect(),
+    })
+}
+
+/// The reference curves of a mixture scene.
+fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
+    use crate::reference::mixture::MaxwellMixture;
+    let mut out = Vec::new();
+    let Some(ma) = approximation(scene) else {
+        return out;
+    };
+    let ph = &scene.physics;
+    let species = ph.species.len();
+    let approx = ma.steady_ratios();
+    let cols = crate::run::columns::SPECIES_COLUMNS;
+    for s in 0..species {
+        let r = approx[s];
+        out.push(ReferenceCurve {
+            name: SPECIES_REFERENCES[s][2],
+            of: cols[s][1],
+            source: "Garzó and Dufty 1999, Maxwellian approximation of the cooling (or steady) state",
+            curve: Box::new(move |_| r),
+        });
+    }
+    if ma.lambda == 0.0 && matches!(ph.drive, DriveChoice::None) {
+        let fractions = ma.fractions.clone();
+        let exact = std::sync::Arc::new(MaxwellMixture {
+            counts: ph.species.iter().map(|s| s.count).collect(),
+            masses: ma.masses,
+            kappa: ma.kappa,
+            alpha: ma.alpha,
+            temperatures: ph.species.iter().map(|s| s.temperature).collect(),
+        });
+        for s in 0..species {
+            let e = exact.clone();
+            out.push(ReferenceCurve {
+                name: SPECIES_REFERENCES[s][0],
+                of: cols[s][0],
+                source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
+                curve: Box::new(move |t| e.temperatures_at(t, false)[s]),
+            });
+            let (e, x) = (exact.clone(), fractions.clone());
+            out.push(ReferenceCurve {
+                name: SPECIES_REFERENCES[s][1],
+                of: cols[s][1],
+                source: "Boltzmann limit of the exact moments, E T_s / E T_mix",
+                curve: Box::new(move |t| {
+                    let ts = e.temperatures_at(t, true);
+                    let mix: f64 = ts.iter().zip(&x).map(|(a, b)| a * b).sum();
+                    ts[s] / mix
+                }),
+            });
+        }
+        let (e, x) = (exact, fractions);
+        out.push(ReferenceCurve {
+            name: "T_mix_mean_n",
+            of: crate::run::columns::MIXTURE_TEMPERATURE,
+            source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
+            curve: Box::new(move |t| {
+                let ts = e.temperatures_at(t, false);
+                ts.iter().zip(&x).map(|(a, b)| a * b).sum()
+            }),
+        });
+    }
+    out
+}
+
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
+    if !scene.physics.species.is_empty() {
+        return mixture_curves(scene);
+    }
     let mut out = Vec::new();
     if let (Some(models), Some(f0)) = (hydro_models(scene), initial_sampler(scene)) {
         let t_end = scene.times.last().copied().unwrap_or(1.0);

@@ -41,9 +41,31 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             c.background as f64 / c.collisions.max(1) as f64
         );
     }
-    let shown = ["T", "T_bulk", "a2", "crit"];
+    let mixture = !scene.physics.species.is_empty();
+    let mut shown = vec!["T", "T_bulk", "a2", "crit"];
+    if mixture {
+        let cols = crate::run::columns::SPECIES_COLUMNS;
+        let _ = write!(s, "species   ");
+        for (k, sp) in scene.physics.species.iter().enumerate() {
+            let _ = write!(
+                s,
+                " s{k} = {} ({} particles, mass {}){}",
+                scene.species_names[k],
+                sp.count,
+                sp.mass,
+                if k + 1 < scene.physics.species.len() {
+                    ","
+                } else {
+                    "\n"
+                }
+            );
+        }
+        shown = vec![crate::run::columns::MIXTURE_TEMPERATURE];
+        shown.extend(cols[..scene.physics.species.len()].iter().map(|c| c[0]));
+        shown.push(cols[0][1]);
+    }
     let _ = write!(s, "\n{:>8}", "t");
-    for name in shown {
+    for &name in &shown {
         let _ = write!(s, " {:>24}", format!("{name} +- 99.9% CI"));
         for r in refs.iter().filter(|r| r.of == name) {
             let _ = write!(s, " {:>13}", r.name);
@@ -58,7 +80,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
     }
     for ti in rows {
         let _ = write!(s, "{:>8.4}", stats.times[ti]);
-        for name in shown {
+        for &name in &shown {
             let col = stats.col(name).unwrap();
             let _ = write!(
                 s,
@@ -151,7 +173,14 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             "\nsteady state: averages over the {} observation times t >= {} (RW Section 4.2)",
             st.points, stats.times[st.first]
         );
-        for name in ["T", "T_bulk", "a2", "a3", "crit", "mu2", "mu4"] {
+        let mut names = vec!["T", "T_bulk", "a2", "a3", "crit", "mu2", "mu4"];
+        if mixture {
+            names = vec![crate::run::columns::MIXTURE_TEMPERATURE];
+            for c in &crate::run::columns::SPECIES_COLUMNS[..scene.physics.species.len()] {
+                names.extend([c[1], c[2]]);
+            }
+        }
+        for name in names {
             let Some(col) = stats.col(name) else { continue };
             let (m, ci) = st.mean_ci(stats, col);
             let _ = write!(s, "  {name:<8} {:>13} +- {ci:.2e}", num(m));

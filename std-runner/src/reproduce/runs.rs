@@ -70,7 +70,7 @@ pub(crate) fn scene(name: &str, set: &[String], n: usize, m: u64, seed: u64) -> 
     let path = format!("scenes/{name}.toml");
     let mut s = scene::parse_with_overrides(Path::new(&path), text, set)
         .expect("shipped scenes and reproduce's overrides are valid");
-    s.physics.n = n;
+    s.set_n(n);
     s.ensembles = m;
     s.seed = seed;
     s

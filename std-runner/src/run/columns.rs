@@ -105,12 +105,46 @@ pub fn index(name: &str) -> Option<usize> {
 /// The extra columns a scene can ask for, computed by the runner beside the core observables.
 pub const COLLISIONAL: [&str; 2] = ["mu2", "mu4"];
 
+/// A mixture's columns: the mixture temperature `T_mix = sum_s x_s T_s`, then per species
+/// (labelled `s0`, `s1`, .. in file order) [`SPECIES_COLUMNS`].
+pub const MIXTURE_TEMPERATURE: &str = "T_mix";
+
+/// Per species `k`: its temperature `T_sk` about the mixture's flow velocity (Garzó and Dufty
+/// 1999, (6)), its ratio to `T_mix` (`T_sk_ratio`), its fourth cumulant `a2_sk` (MS (3), about its own bulk
+/// velocity) and the speed `dV_sk = |V_s - U|` of its bulk velocity relative to the flow.
+pub const SPECIES_COLUMNS: [[&str; 4]; gdsmc_core::mixture::MAX_SPECIES] = [
+    ["T_s0", "T_s0_ratio", "a2_s0", "dV_s0"],
+    ["T_s1", "T_s1_ratio", "a2_s1", "dV_s1"],
+    ["T_s2", "T_s2_ratio", "a2_s2", "dV_s2"],
+    ["T_s3", "T_s3_ratio", "a2_s3", "dV_s3"],
+];
+
+/// The mixture columns' values of one observation, in [`names`] order.
+pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
+    let t = m.mixture_temperature();
+    let u = m.flow_velocity();
+    let mut v = vec![t];
+    for s in 0..m.len {
+        let ts = m.temperature(s);
+        v.extend([ts, ts / t, m.species[s].a2, (m.species[s].bulk - u).norm()]);
+    }
+    v
+}
+
 /// The column names of a scene's observables.csv, in order: [`COLUMNS`], then `mu2`, `mu4`
-/// (MS (67)) when `observe.collisional_pairs` is set.
+/// (MS (67)) when `observe.collisional_pairs` is set, then a mixture's columns
+/// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species).
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
     if scene.collisional_pairs > 0 {
         v.extend(COLLISIONAL);
+    }
+    let species = scene.physics.species.len();
+    if species > 0 {
+        v.push(MIXTURE_TEMPERATURE);
+        for cols in &SPECIES_COLUMNS[..species] {
+            v.extend(cols);
+        }
     }
     v
 }

@@ -131,6 +131,9 @@ fn observe<E: EventLoop>(
                 collisional_moments(p, bulk, t_bulk, alpha, scene.collisional_pairs, &mut diag);
             out.extend([mu2, mu4]);
         }
+        if let Some(m) = engine.species(p) {
+            out.extend(crate::run::columns::mixture_values(&m));
+        }
     }
     // The histogram of the last observation rides at the end of the row (split off in the job).
     if let Some((k, radius)) = scene.histogram {

@@ -1,0 +1,187 @@
+//! The validated mixture of a [`super::Physics`] with species: each rule from its own
+//! constructor ([`Species::new`], [`Maxwellian::new`], the kernel's [`Kernel::scaled`],
+//! [`Constant::new`], [`WhiteNoise::new`]), refusals named by species or pair.
+
+use super::error::{Param, PhysicsError, Problem};
+use super::model::{DriveModel, KernelModel, LawModel, SchemeModel};
+use super::{MAX_PAIRS, MAX_SPECIES, Physics, SpeciesChoice};
+use crate::drive::WhiteNoise;
+use crate::kernel::{Kernel, KernelError};
+use crate::math::Real;
+use crate::mixture::{MixtureError, Species};
+use crate::restitution::Constant;
+use crate::sample::{Maxwellian, ParamError};
+use crate::vec3::Vec3;
+
+/// A mixture whose every rule holds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MixtureModel {
+    /// Counts and masses.
+    pub species: Species,
+    /// The start distribution of each species (a Maxwellian at rest).
+    pub starts: [Maxwellian; MAX_SPECIES],
+    /// The kernel factor `((d_s + d_t)/2)^2` of each pair type.
+    pub factors: [Real; MAX_PAIRS],
+    /// The restitution of each pair type.
+    pub laws: [Constant; MAX_PAIRS],
+    /// The white-noise drive of each species (with the white-noise drive).
+    pub noises: [WhiteNoise; MAX_SPECIES],
+}
+
+fn refuse<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
+    Err(PhysicsError { param, problem })
+}
+
+fn positive(param: Param, x: Real) -> Result<Real, PhysicsError> {
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else if x.is_finite() {
+        refuse(param, Problem::NotPositive(x))
+    } else {
+        refuse(param, Problem::NotFinite(x))
+    }
+}
+
+fn start(k: usize, c: &SpeciesChoice) -> Result<Maxwellian, PhysicsError> {
+    Maxwellian::new(c.mass, c.temperature, Vec3::ZERO).map_err(|e| {
+        let (param, problem) = match e {
+            ParamError::Temperature if c.temperature.is_finite() => (
+                Param::SpeciesTemperature(k),
+                Problem::Negative(c.temperature),
+            ),
+            ParamError::Temperature => (
+                Param::SpeciesTemperature(k),
+                Problem::NotFinite(c.temperature),
+            ),
+            ParamError::ThermalSpeed => (
+                Param::SpeciesTemperature(k),
+                Problem::ThermalSpeed(c.temperature),
+            ),
+            _ if c.mass.is_finite() => (Param::SpeciesMass(k), Problem::NotPositive(c.mass)),
+            _ => (Param::SpeciesMass(k), Problem::NotFinite(c.mass)),
+        };
+        PhysicsError { param, problem }
+    })
+}
+
+/// Validates the species of `physics` against the kernel, law, drive and scheme already
+/// validated; `None` when it has no species.
+pub(super) fn mixture(
+    physics: &Physics,
+    kernel: KernelModel,
+    law: LawModel,
+    drive: DriveModel,
+    scheme: SchemeModel,
+) -> Result<Option<MixtureModel>, PhysicsError> {
+    let list = &physics.species;
+    if list.is_empty() {
+        return Ok(None);
+    }
+    let mut counts = [0usize; MAX_SPECIES];
+    let mut masses = [1.0; MAX_SPECIES];
+    let mut starts = [Maxwellian::standard(); MAX_SPECIES];
+    let mut total = 0usize;
+    for (k, c) in list.iter().enumerate() {
+        if c.count == 0 {
+            return refuse(Param::SpeciesCount(k), Problem::NotPositive(0.0));
+        }
+        starts[k] = start(k, c)?;
+        positive(Param::SpeciesDiameter(k), c.diameter)?;
+        counts[k] = c.count;
+        masses[k] = c.mass;
+        total = total.saturating_add(c.count);
+    }
+    if total != physics.n {
+        return refuse(
+            Param::N,
+            Problem::DoesNotFit("must equal the sum of the species' counts"),
+        );
+    }
+    let species =
+        Species::new(&counts[..list.len()], &masses[..list.len()]).map_err(|e| match e {
+            MixtureError::TooFewParticles => PhysicsError {
+                param: Param::N,
+                problem: Problem::TooFewParticles(total),
+            },
+            _ => PhysicsError {
+                param: Param::Species,
+                problem: Problem::DoesNotFit("is not a valid list of species"),
+            },
+        })?;
+    if !matches!(scheme, SchemeModel::NoSplitting) {
+        return refuse(
+            Param::Scheme,
+            Problem::DoesNotFit("must be no-splitting for a mixture"),
+        );
+    }
+    let mut noises = [WhiteNoise::new(0.0).expect("0 is a valid strength"); MAX_SPECIES];
+    match drive {
+        DriveModel::None => {}
+        DriveModel::WhiteNoise(_) => {
+            for (k, c) in list.iter().enumerate() {
+                noises[k] = WhiteNoise::new(c.beta).ok_or(PhysicsError {
+                    param: Param::SpeciesBeta(k),
+                    problem: if c.beta.is_finite() {
+                        Problem::Negative(c.beta)
+                    } else {
+                        Problem::NotFinite(c.beta)
+                    },
+                })?;
+            }
+        }
+        _ => {
+            return refuse(
+                Param::Species,
+                Problem::DoesNotFit("take no drive or white noise (per species)"),
+            );
+        }
+    }
+    let types = species.pair_types();
+    let base = match law {
+        LawModel::Constant(a) => a,
+        LawModel::ImpactSpeed(_) => {
+            return refuse(
+                Param::Restitution,
+                Problem::DoesNotFit("must be constant for a mixture (one per species pair)"),
+            );
+        }
+    };
+    let given = &physics.pair_restitution;
+    if !given.is_empty() && given.len() != types {
+        return refuse(
+            Param::Species,
+            Problem::DoesNotFit("need one restitution per species pair, or none"),
+        );
+    }
+    let mut laws = [base; MAX_PAIRS];
+    let mut factors = [1.0; MAX_PAIRS];
+    for k in 0..types {
+        let (s, t) = species.pair(k);
+        if let Some(&alpha) = given.get(k) {
+            laws[k] = Constant::new(alpha).ok_or(PhysicsError {
+                param: Param::PairRestitution(s, t),
+                problem: Problem::OutOfRange {
+                    value: alpha,
+                    range: "(0, 1]",
+                },
+            })?;
+        }
+        let d = 0.5 * (list[s].diameter + list[t].diameter);
+        factors[k] = d * d;
+        let scaled = |f| match kernel {
+            KernelModel::Maxwell(k) => k.scaled(f).map(|_| ()),
+            KernelModel::HardSpheres(k) => k.scaled(f).map(|_| ()),
+            KernelModel::Vhs(k) => k.scaled(f).map(|_| ()),
+        };
+        if let Err(KernelError::C | KernelError::Strength) = scaled(factors[k]) {
+            return refuse(Param::SpeciesDiameter(t), Problem::Strength(factors[k]));
+        }
+    }
+    Ok(Some(MixtureModel {
+        species,
+        starts,
+        factors,
+        laws,
+        noises,
+    }))
+}
