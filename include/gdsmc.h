@@ -76,6 +76,13 @@
 // and `impact_delta`.
 #define GDSMC_RESTITUTION_IMPACT_SPEED 1
 
+// Most species a mixture may have (the core's `mixture::MAX_SPECIES`, written out for the
+// header).
+#define GDSMC_MAX_SPECIES 4
+
+// Most species pairs, `GDSMC_MAX_SPECIES (GDSMC_MAX_SPECIES + 1) / 2`.
+#define GDSMC_MAX_PAIRS 10
+
 // The largest stream a configuration may name (`config.stream`).
 #define GDSMC_MAX_STREAM (1 << 20)
 
@@ -147,6 +154,24 @@ typedef struct {
     uint64_t background_collisions;
 } gdsmc_observables;
 
+// One species of a mixture at the simulation's current time (Garzó and Dufty 1999).
+typedef struct {
+    // Particles of this species.
+    uint64_t count;
+    // Its temperature `m_s <|v - U|^2>/3` about the mixture's flow velocity `U`.
+    double temperature;
+    // The mixture temperature `T_mix = sum_s x_s T_s`.
+    double mixture_temperature;
+    // `temperature / mixture_temperature`.
+    double temperature_ratio;
+    // Its fourth cumulant a2 (MS (3)) about its own bulk velocity.
+    double a2;
+    // Its bulk velocity.
+    double bulk_velocity[3];
+    // The mixture's flow velocity `U = sum_s m_s N_s V_s / sum_s m_s N_s`.
+    double flow_velocity[3];
+} gdsmc_species_observables;
+
 // Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or
 // gdsmc_config_from_toml, then change fields. Enumerations are plain integers
 // (`GDSMC_KERNEL_*`, `GDSMC_DRIVE_*`, `GDSMC_SCHEME_*`) checked on use.
@@ -209,6 +234,28 @@ typedef struct {
     double background_temperature;
     // Host medium: background drift u^B.
     double background_drift[3];
+    // Species of a granular mixture: 0 for one species (the gas above), else 1 to
+    // GDSMC_MAX_SPECIES (Garzó and Dufty 1999). With species, their counts add up to `n`,
+    // each starts from a Maxwellian at rest at its own temperature (mass, temperature and
+    // drift above are not used), the drive is none or white noise (each species its own
+    // `species_beta`), the scheme no splitting and the restitution constant.
+    uint32_t species;
+    // Particles of each species (>= 1 each; they add up to `n`).
+    uint64_t species_count[GDSMC_MAX_SPECIES];
+    // Mass of each species (> 0).
+    double species_mass[GDSMC_MAX_SPECIES];
+    // Start temperature of each species (>= 0).
+    double species_temperature[GDSMC_MAX_SPECIES];
+    // Diameter of each species (> 0): the pair (s, t) collides with `c ((d_s + d_t)/2)^2`.
+    double species_diameter[GDSMC_MAX_SPECIES];
+    // White-noise strength of each species (>= 0; with GDSMC_DRIVE_WHITE_NOISE).
+    double species_beta[GDSMC_MAX_SPECIES];
+    // Nonzero: `pair_restitution` holds the restitution of every species pair; 0: every pair
+    // has `restitution`.
+    uint32_t pair_restitution_set;
+    // Restitution of each species pair (s, t), s <= t, in the order (0,0), (0,1), ..,
+    // (0,S-1), (1,1), ..: the first S (S + 1)/2 entries are used.
+    double pair_restitution[GDSMC_MAX_PAIRS];
 } gdsmc_config;
 
 #ifdef __cplusplus
@@ -231,6 +278,15 @@ gdsmc_status gdsmc_sim_advance(gdsmc_sim *sim, double t, gdsmc_observables *out)
 // # Safety
 // `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
 gdsmc_status gdsmc_sim_observables(gdsmc_sim *sim, gdsmc_observables *out);
+
+// Writes the observables of species `k` of a mixture at the current time to `*out`.
+// GDSMC_INVALID_ARGUMENT when the simulation is not a mixture or `k` is not one of its
+// species.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one
+// gdsmc_species_observables.
+gdsmc_status gdsmc_sim_species(gdsmc_sim *sim, uint32_t k, gdsmc_species_observables *out);
 
 // The number of particles in `*n`.
 //

@@ -12,7 +12,7 @@
 
 #define N 512
 /* Room for the handle's header and N particles of 32 bytes (checked against the footprint). */
-static _Alignas(32) unsigned char memory[1024 + N * 32];
+static _Alignas(32) unsigned char memory[2048 + N * 32];
 
 static int check(gdsmc_status s, const char *what) {
     if (s != GDSMC_OK) {

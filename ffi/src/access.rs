@@ -2,7 +2,7 @@
 //! count, velocities, reseed.
 
 use crate::guard::{check_ptr, guard};
-use crate::observables::gdsmc_observables;
+use crate::observables::{gdsmc_observables, gdsmc_species_observables};
 use crate::sim::{check_len, gdsmc_sim, live, particles_of};
 use crate::status::{engine_error, fail, gdsmc_status, msg};
 use gdsmc_core::engine::EventLoop;
@@ -68,6 +68,41 @@ pub unsafe extern "C" fn gdsmc_sim_observables(
                 &s.engine.counts(),
             ))
         };
+        Ok(())
+    })
+}
+
+/// Writes the observables of species `k` of a mixture at the current time to `*out`.
+/// GDSMC_INVALID_ARGUMENT when the simulation is not a mixture or `k` is not one of its
+/// species.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one
+/// gdsmc_species_observables.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_species(
+    sim: *mut gdsmc_sim,
+    k: u32,
+    out: *mut gdsmc_species_observables,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        let p = particles_of(s.particles, s.n);
+        let Some(m) = s.engine.species(&p) else {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                msg!("the simulation is not a mixture (config.species = 0)"),
+            );
+        };
+        if k as usize >= m.len {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                msg!("k = {k} is not a species: the mixture has {}", m.len),
+            );
+        }
+        // SAFETY: checked non-null and aligned.
+        unsafe { out.write(gdsmc_species_observables::new(&m, k as usize)) };
         Ok(())
     })
 }

@@ -106,7 +106,41 @@ pub struct gdsmc_config {
     pub background_temperature: f64,
     /// Host medium: background drift u^B.
     pub background_drift: [f64; 3],
+    /// Species of a granular mixture: 0 for one species (the gas above), else 1 to
+    /// GDSMC_MAX_SPECIES (Garzó and Dufty 1999). With species, their counts add up to `n`,
+    /// each starts from a Maxwellian at rest at its own temperature (mass, temperature and
+    /// drift above are not used), the drive is none or white noise (each species its own
+    /// `species_beta`), the scheme no splitting and the restitution constant.
+    pub species: u32,
+    /// Particles of each species (>= 1 each; they add up to `n`).
+    pub species_count: [u64; GDSMC_MAX_SPECIES],
+    /// Mass of each species (> 0).
+    pub species_mass: [f64; GDSMC_MAX_SPECIES],
+    /// Start temperature of each species (>= 0).
+    pub species_temperature: [f64; GDSMC_MAX_SPECIES],
+    /// Diameter of each species (> 0): the pair (s, t) collides with `c ((d_s + d_t)/2)^2`.
+    pub species_diameter: [f64; GDSMC_MAX_SPECIES],
+    /// White-noise strength of each species (>= 0; with GDSMC_DRIVE_WHITE_NOISE).
+    pub species_beta: [f64; GDSMC_MAX_SPECIES],
+    /// Nonzero: `pair_restitution` holds the restitution of every species pair; 0: every pair
+    /// has `restitution`.
+    pub pair_restitution_set: u32,
+    /// Restitution of each species pair (s, t), s <= t, in the order (0,0), (0,1), ..,
+    /// (0,S-1), (1,1), ..: the first S (S + 1)/2 entries are used.
+    pub pair_restitution: [f64; GDSMC_MAX_PAIRS],
 }
+
+/// Most species a mixture may have (the core's `mixture::MAX_SPECIES`, written out for the
+/// header).
+pub const GDSMC_MAX_SPECIES: usize = 4;
+
+/// Most species pairs, `GDSMC_MAX_SPECIES (GDSMC_MAX_SPECIES + 1) / 2`.
+pub const GDSMC_MAX_PAIRS: usize = 10;
+
+const _: () = assert!(
+    GDSMC_MAX_SPECIES == gdsmc_core::mixture::MAX_SPECIES
+        && GDSMC_MAX_PAIRS == gdsmc_core::mixture::MAX_PAIRS
+);
 
 impl gdsmc_config {
     /// GRW Example 3 with 1024 particles.
@@ -139,6 +173,14 @@ impl gdsmc_config {
             background_mass: 1.0,
             background_temperature: 1.0,
             background_drift: [0.0; 3],
+            species: 0,
+            species_count: [0; GDSMC_MAX_SPECIES],
+            species_mass: [1.0; GDSMC_MAX_SPECIES],
+            species_temperature: [1.0; GDSMC_MAX_SPECIES],
+            species_diameter: [1.0; GDSMC_MAX_SPECIES],
+            species_beta: [0.0; GDSMC_MAX_SPECIES],
+            pair_restitution_set: 0,
+            pair_restitution: [1.0; GDSMC_MAX_PAIRS],
         }
     }
 }

@@ -1,6 +1,7 @@
 //! The observables a caller reads back.
 
 use gdsmc_core::engine::Counts;
+use gdsmc_core::mixture::MixtureObservables;
 use gdsmc_core::moments::Observables;
 
 /// Moments and derived quantities of a simulation at its current time, and its event counts.
@@ -63,6 +64,41 @@ impl gdsmc_observables {
             fictitious: c.fictitious,
             overshoots: c.overshoots,
             background_collisions: c.background,
+        }
+    }
+}
+
+/// One species of a mixture at the simulation's current time (Garzó and Dufty 1999).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct gdsmc_species_observables {
+    /// Particles of this species.
+    pub count: u64,
+    /// Its temperature `m_s <|v - U|^2>/3` about the mixture's flow velocity `U`.
+    pub temperature: f64,
+    /// The mixture temperature `T_mix = sum_s x_s T_s`.
+    pub mixture_temperature: f64,
+    /// `temperature / mixture_temperature`.
+    pub temperature_ratio: f64,
+    /// Its fourth cumulant a2 (MS (3)) about its own bulk velocity.
+    pub a2: f64,
+    /// Its bulk velocity.
+    pub bulk_velocity: [f64; 3],
+    /// The mixture's flow velocity `U = sum_s m_s N_s V_s / sum_s m_s N_s`.
+    pub flow_velocity: [f64; 3],
+}
+
+impl gdsmc_species_observables {
+    pub(crate) fn new(m: &MixtureObservables, s: usize) -> Self {
+        let (t, mix) = (m.temperature(s), m.mixture_temperature());
+        gdsmc_species_observables {
+            count: m.counts[s] as u64,
+            temperature: t,
+            mixture_temperature: mix,
+            temperature_ratio: t / mix,
+            a2: m.species[s].a2,
+            bulk_velocity: m.species[s].bulk.to_array(),
+            flow_velocity: m.flow_velocity().to_array(),
         }
     }
 }

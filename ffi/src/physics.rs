@@ -7,7 +7,7 @@ use crate::config::*;
 use crate::status::{Failure, Msg, fail, gdsmc_status, msg};
 use gdsmc_core::physics::{
     BackgroundKernel, Component, DriveChoice, KernelChoice, Model, Param, Physics, PhysicsError,
-    RestitutionLaw, SchemeChoice,
+    RestitutionLaw, SchemeChoice, SpeciesChoice,
 };
 
 fn invalid<T>(m: Msg) -> Result<T, Failure> {
@@ -48,22 +48,39 @@ fn field(p: Param) -> &'static str {
         Param::Dt => "dt",
         Param::StepFactor => "step_factor",
         Param::Scheme => "scheme",
-        // The C struct has no mixture yet: a one-species gas never names these.
-        Param::Species
-        | Param::SpeciesCount(_)
-        | Param::SpeciesMass(_)
-        | Param::SpeciesTemperature(_)
-        | Param::SpeciesDiameter(_)
-        | Param::SpeciesBeta(_)
-        | Param::PairRestitution(..) => "species",
+        Param::Species => "species",
+        Param::SpeciesCount(_) => "species_count",
+        Param::SpeciesMass(_) => "species_mass",
+        Param::SpeciesTemperature(_) => "species_temperature",
+        Param::SpeciesDiameter(_) => "species_diameter",
+        Param::SpeciesBeta(_) => "species_beta",
+        Param::PairRestitution(..) => "pair_restitution",
     }
 }
 
-/// The core's verdict, with the C field's name: `config.restitution must lie in (0, 1], ...`.
-pub(crate) fn physics_failure(e: PhysicsError) -> Failure {
+/// The index of an array field that holds a parameter: the species, or the pair's entry.
+fn index(p: Param, species: usize) -> Option<usize> {
+    match p {
+        Param::SpeciesCount(k)
+        | Param::SpeciesMass(k)
+        | Param::SpeciesTemperature(k)
+        | Param::SpeciesDiameter(k)
+        | Param::SpeciesBeta(k) => Some(k),
+        Param::PairRestitution(s, t) => Some(s * species - s * s.saturating_sub(1) / 2 + (t - s)),
+        _ => None,
+    }
+}
+
+/// The core's verdict, with the C field's name: `config.restitution must lie in (0, 1], ...`,
+/// `config.species_mass[1] must be > 0, ...`.
+pub(crate) fn physics_failure(e: PhysicsError, species: usize) -> Failure {
+    let name = match index(e.param, species) {
+        Some(k) => msg!("{}[{k}]", field(e.param)),
+        None => msg!("{}", field(e.param)),
+    };
     Failure(
         gdsmc_status::GDSMC_INVALID_ARGUMENT,
-        msg!("config.{} {}", field(e.param), e.problem),
+        msg!("config.{name} {}", e.problem),
     )
 }
 
@@ -138,18 +155,82 @@ impl gdsmc_config {
             temperature: self.temperature,
             drift: self.drift,
         };
+        self.mixture(&mut physics)?;
         Ok(physics)
+    }
+
+    /// A mixture's species and pair restitution into `physics` (nothing for `species = 0`).
+    fn mixture(&self, physics: &mut Physics) -> Result<(), Failure> {
+        let s = self.species as usize;
+        if s > GDSMC_MAX_SPECIES {
+            return invalid(msg!(
+                "config.species = {} is more than GDSMC_MAX_SPECIES = {GDSMC_MAX_SPECIES}",
+                self.species
+            ));
+        }
+        let mut total: u64 = 0;
+        for k in 0..s {
+            let Ok(count) = usize::try_from(self.species_count[k]) else {
+                return invalid(msg!("config.species_count[{k}] is too large"));
+            };
+            total = total.saturating_add(self.species_count[k]);
+            // Capacity GDSMC_MAX_SPECIES = MAX_SPECIES: cannot fail.
+            let _ = physics.species.push(SpeciesChoice {
+                count,
+                mass: self.species_mass[k],
+                temperature: self.species_temperature[k],
+                diameter: self.species_diameter[k],
+                beta: self.species_beta[k],
+            });
+            if count == 0 {
+                return invalid(msg!("config.species_count[{k}] must be >= 1, got 0"));
+            }
+        }
+        if s > 0 && total != self.n {
+            return invalid(msg!(
+                "config.n = {} must equal the sum of config.species_count, {total}",
+                self.n
+            ));
+        }
+        if s > 0 && self.pair_restitution_set != 0 {
+            physics.restitution = RestitutionLaw::Constant(1.0);
+            for &alpha in &self.pair_restitution[..s * (s + 1) / 2] {
+                let _ = physics.pair_restitution.push(alpha);
+            }
+        }
+        Ok(())
     }
 
     /// The validated model of this configuration.
     pub(crate) fn model(&self) -> Result<Model, Failure> {
-        self.physics()?.validate().map_err(physics_failure)
+        self.physics()?
+            .validate()
+            .map_err(|e| physics_failure(e, self.species as usize))
     }
 
     /// The configuration of a physics (seed 1, stream 0; fields it does not use keep the
     /// defaults of [`gdsmc_config::example3`]). A mixture of Maxwellians cannot be expressed.
     #[cfg(feature = "std")]
     pub(crate) fn from_physics(p: &Physics) -> Result<Self, Failure> {
+        let mut cfg = Self::from_one_species(p)?;
+        cfg.species = p.species.len() as u32;
+        for (k, s) in p.species.iter().enumerate() {
+            cfg.species_count[k] = s.count as u64;
+            cfg.species_mass[k] = s.mass;
+            cfg.species_temperature[k] = s.temperature;
+            cfg.species_diameter[k] = s.diameter;
+            cfg.species_beta[k] = s.beta;
+        }
+        if !p.pair_restitution.is_empty() {
+            cfg.pair_restitution_set = 1;
+            cfg.pair_restitution[..p.pair_restitution.len()].copy_from_slice(&p.pair_restitution);
+        }
+        Ok(cfg)
+    }
+
+    /// [`gdsmc_config::from_physics`] without the species.
+    #[cfg(feature = "std")]
+    fn from_one_species(p: &Physics) -> Result<Self, Failure> {
         let [only] = p.initial[..] else {
             return invalid(msg!(
                 "<toml>: `particles.initial` must be a single Maxwellian for gdsmc_config"

@@ -145,3 +145,122 @@ fn the_same_bad_value_gets_the_same_words() {
         );
     }
 }
+
+/// A mixture's bad values: the same words from the scene (at the species' key) and from C (at
+/// the array field with its index); the species observables only for a mixture's species.
+#[test]
+fn a_mixture_gets_the_same_words() {
+    let mut base = gdsmc_config::example3();
+    base.kernel = gdsmc::GDSMC_KERNEL_HARD_SPHERES;
+    (base.gamma, base.c, base.n, base.species) = (1.0, 1.0, 64, 2);
+    base.species_count[..2].copy_from_slice(&[32, 32]);
+    base.species_mass[..2].copy_from_slice(&[1.0, 2.0]);
+    let mix = SCENE.replace(
+        "[collisions]",
+        "[[species]]\nfraction = 1.0\n[[species]]\nfraction = 1.0\nmass = 2.0\n[collisions]",
+    );
+    let scene = |sets: &[&str]| {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        gdsmc_scene::parse_with_overrides(Path::new("s.toml"), &mix, &sets)
+            .unwrap_err()
+            .to_string()
+    };
+    let cases: [(&[&str], &str, &str, Edit); 4] = [
+        (
+            &["species[1].mass=-2"],
+            "species[1].mass",
+            "species_mass[1]",
+            |c| c.species_mass[1] = -2.0,
+        ),
+        (
+            &["species[0].temperature=-1"],
+            "species[0].temperature",
+            "species_temperature[0]",
+            |c| c.species_temperature[0] = -1.0,
+        ),
+        (
+            &["species[1].diameter=0"],
+            "species[1].diameter",
+            "species_diameter[1]",
+            |c| c.species_diameter[1] = 0.0,
+        ),
+        (
+            &[
+                "collisions.restitution=",
+                "collisions.pair_restitution=[[0.9, 0.8], [0.8, 1.5]]",
+            ],
+            "collisions.pair_restitution",
+            "pair_restitution[2]",
+            |c| {
+                c.pair_restitution_set = 1;
+                c.pair_restitution[..3].copy_from_slice(&[0.9, 0.8, 1.5]);
+            },
+        ),
+    ];
+    for (sets, key, field, edit) in cases {
+        let s = scene(sets);
+        let mut c = base;
+        edit(&mut c);
+        let cmsg = c_error(&c);
+        let problem = cmsg
+            .strip_prefix(&format!("config.{field} "))
+            .unwrap_or_else(|| panic!("{cmsg}"));
+        assert!(
+            s.ends_with(&format!("`{key}` {problem}")),
+            "scene: {s}\nC:     {cmsg}"
+        );
+    }
+    // Counts that do not add up to n, and a species with none.
+    let mut c = base;
+    c.species_count[1] = 31;
+    assert_eq!(
+        c_error(&c),
+        "config.n = 64 must equal the sum of config.species_count, 63"
+    );
+    c.species_count[..2].copy_from_slice(&[64, 0]);
+    assert_eq!(c_error(&c), "config.species_count[1] must be >= 1, got 0");
+}
+
+/// `gdsmc_sim_species` reads a mixture's species and refuses anything else by name.
+#[test]
+fn species_observables_only_for_a_mixture() {
+    use gdsmc::{gdsmc_sim_destroy, gdsmc_sim_species, gdsmc_species_observables};
+    let read = |c: &gdsmc_config, k: u32| {
+        let mut sim: *mut gdsmc_sim = std::ptr::null_mut();
+        // SAFETY: valid pointers.
+        assert_eq!(
+            unsafe { gdsmc_sim_create(c, &mut sim) },
+            gdsmc_status::GDSMC_OK
+        );
+        let mut o = gdsmc_species_observables::default();
+        // SAFETY: a live handle and a writable struct.
+        let status = unsafe { gdsmc_sim_species(sim, k, &mut o) };
+        let mut buf = vec![0u8; 512];
+        // SAFETY: a writable buffer of its length.
+        let len = unsafe { gdsmc_last_error(buf.as_mut_ptr().cast(), buf.len()) };
+        // SAFETY: the handle from create.
+        unsafe { gdsmc_sim_destroy(&mut sim) };
+        (status, o, String::from_utf8(buf[..len].to_vec()).unwrap())
+    };
+    let one = gdsmc_config::example3();
+    let (status, _, msg) = read(&one, 0);
+    assert_eq!(status, gdsmc_status::GDSMC_INVALID_ARGUMENT);
+    assert_eq!(msg, "the simulation is not a mixture (config.species = 0)");
+    let mut mix = one;
+    mix.species = 2;
+    mix.species_count[..2].copy_from_slice(&[512, 512]);
+    mix.species_mass[..2].copy_from_slice(&[1.0, 3.0]);
+    mix.species_temperature[..2].copy_from_slice(&[1.0, 3.0]);
+    let (status, o, _) = read(&mix, 1);
+    assert_eq!(status, gdsmc_status::GDSMC_OK);
+    assert_eq!(o.count, 512);
+    // Start temperature 3 with 512 particles: within 5 standard errors (sd 3 sqrt(2/3)/sqrt(512)).
+    assert!(
+        (o.temperature - 3.0).abs() < 5.0 * 3.0 * (2.0f64 / 3.0 / 512.0).sqrt(),
+        "{o:?}"
+    );
+    assert!((o.temperature_ratio - o.temperature / o.mixture_temperature).abs() < 1e-15);
+    let (status, _, msg) = read(&mix, 2);
+    assert_eq!(status, gdsmc_status::GDSMC_INVALID_ARGUMENT);
+    assert_eq!(msg, "k = 2 is not a species: the mixture has 2");
+}

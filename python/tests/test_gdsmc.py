@@ -71,6 +71,8 @@ def strip_timing(v):
             "ms-constant-force",
             ["--n", "256", "--ensembles", "6", "--set", "observe.collisional_pairs=500"],
         ),
+        # A granular mixture: the species' columns (T_s0, T_s0_ratio, ...) and references.
+        ("mixture-maxwell", ["--n", "200", "--ensembles", "8", "--seed", "3"]),
     ],
 )
 def test_same_numbers_as_the_command(tmp_path, name, args):
@@ -98,6 +100,8 @@ def test_same_numbers_as_the_command(tmp_path, name, args):
     assert np.array_equal(r.times, r.table["t"])
     assert np.array_equal(r.mean["T"], r.table["T"])
     assert np.array_equal(r.ci["T"], r.table["T_ci"])
+    if name.startswith("mixture"):
+        assert np.array_equal(r.mean["T_s1_ratio"], r.table["T_s1_ratio"])
 
 
 def test_threads_do_not_change_the_numbers():

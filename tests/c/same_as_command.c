@@ -7,6 +7,7 @@
  *   t,T,T_bulk,V_x,V_y,V_z,v4,v6,a2,a3
  * tests/c/same_as_command.sh compares them with `gdsmc run SCENE --ensembles 1` bit for bit.
  */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "gdsmc.h"
@@ -54,7 +55,11 @@ int main(int argc, char **argv) {
     gdsmc_sim *sim = NULL;
     if (check(gdsmc_sim_create(&cfg, &sim), "gdsmc_sim_create")) return 1;
     char line[128];
-    printf("t,T,T_bulk,V_x,V_y,V_z,v4,v6,a2,a3\n");
+    printf("t,T,T_bulk,V_x,V_y,V_z,v4,v6,a2,a3");
+    /* A mixture's species columns, named as in observables.csv. */
+    if (cfg.species > 0) printf(",T_mix");
+    for (uint32_t k = 0; k < cfg.species; k++) printf(",T_s%u,T_s%u_ratio,a2_s%u", k, k, k);
+    printf("\n");
     while (fgets(line, sizeof line, stdin)) {
         double t = strtod(line, NULL);
         gdsmc_observables o;
@@ -63,9 +68,19 @@ int main(int argc, char **argv) {
             gdsmc_sim_destroy(&sim);
             return 1;
         }
-        printf("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", t,
+        printf("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", t,
                o.temperature, o.temperature_bulk, o.bulk_velocity[0], o.bulk_velocity[1],
                o.bulk_velocity[2], o.v4, o.v6, o.a2, o.a3);
+        for (uint32_t k = 0; k < cfg.species; k++) {
+            gdsmc_species_observables so;
+            if (check(gdsmc_sim_species(sim, k, &so), "gdsmc_sim_species")) {
+                gdsmc_sim_destroy(&sim);
+                return 1;
+            }
+            if (k == 0) printf(",%.17g", so.mixture_temperature);
+            printf(",%.17g,%.17g,%.17g", so.temperature, so.temperature_ratio, so.a2);
+        }
+        printf("\n");
     }
     return check(gdsmc_sim_destroy(&sim), "gdsmc_sim_destroy");
 }

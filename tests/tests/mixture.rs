@@ -88,12 +88,15 @@ fn maxwell_mixture(counts: [usize; 2]) -> MaxwellMixture {
         kappa: vec![1.0, 1.5, 0.5],
         alpha: vec![0.9, 0.6, 0.8],
         temperatures: vec![1.0, 2.0],
+        beta: vec![],
     }
 }
 
-/// `ensembles` runs of the mixture; returns per time the samples `(T_0, T_1)`.
-fn simulate(
+/// `ensembles` runs of the mixture (each species driven by its drive); returns per time the
+/// samples `(T_0, T_1)`.
+fn simulate<D: Drive>(
     mix: &MaxwellMixture,
+    drives: &[D],
     times: &[f64],
     ensembles: u64,
     seed: u64,
@@ -118,8 +121,7 @@ fn simulate(
             }
         }
         let mut p = Particles::new(&mut buf).unwrap();
-        let (mut e, _) =
-            MixtureNoSplitting::start(sp, &physics, &[NoDrive; 2], &mut p, 0.0).unwrap();
+        let (mut e, _) = MixtureNoSplitting::start(sp, &physics, drives, &mut p, 0.0).unwrap();
         for (ti, &t) in times.iter().enumerate() {
             let o = e.advance_to(&mut p, t, &mut rng).unwrap();
             out[ti].push((o.temperature(0), o.temperature(1)));
@@ -136,6 +138,52 @@ fn mean_se(xs: &[f64]) -> (f64, f64) {
     (mean, (var / m).sqrt())
 }
 
+/// Asserts `T_0`, `T_1` and `T_0/T_1` of `samples` within `z` standard errors of the exact
+/// expectations of `mix` at every time (the ratio of the means, its standard error by the
+/// delta method); returns whether the species' temperatures were told apart by more than ten
+/// intervals somewhere (so that the comparison can fail).
+fn compare(mix: &MaxwellMixture, samples: &[Vec<(f64, f64)>], times: &[f64], z: f64) -> bool {
+    let mut distinct = false;
+    let counts = &mix.counts;
+    for (ti, &t) in times.iter().enumerate() {
+        let exact = mix.temperatures_at(t, false);
+        let t0: Vec<f64> = samples[ti].iter().map(|x| x.0).collect();
+        let t1: Vec<f64> = samples[ti].iter().map(|x| x.1).collect();
+        let ((m0, s0), (m1, s1)) = (mean_se(&t0), mean_se(&t1));
+        assert!(
+            (m0 - exact[0]).abs() <= z * s0,
+            "n = {counts:?} t = {t}: T_0 {m0} +- {} vs {}",
+            z * s0,
+            exact[0]
+        );
+        assert!(
+            (m1 - exact[1]).abs() <= z * s1,
+            "n = {counts:?} t = {t}: T_1 {m1} +- {} vs {}",
+            z * s1,
+            exact[1]
+        );
+        let r = m0 / m1;
+        let cov = t0
+            .iter()
+            .zip(&t1)
+            .map(|(a, b)| (a - m0) * (b - m1))
+            .sum::<f64>()
+            / (t0.len() as f64 - 1.0)
+            / t0.len() as f64;
+        let se = ((s0 * s0 - 2.0 * r * cov + r * r * s1 * s1) / (m1 * m1)).sqrt();
+        let exact_ratio = exact[0] / exact[1];
+        assert!(
+            (r - exact_ratio).abs() <= z * se,
+            "n = {counts:?} t = {t}: T_0/T_1 {r} +- {} vs {exact_ratio}",
+            z * se
+        );
+        if (exact[0] - exact[1]).abs() > 10.0 * z * (s0 + s1) {
+            distinct = true;
+        }
+    }
+    distinct
+}
+
 #[test]
 fn maxwell_mixture_temperatures_follow_the_exact_finite_n_moments() {
     let times = [0.25, 0.5, 1.0, 2.0, 4.0];
@@ -148,46 +196,8 @@ fn maxwell_mixture_temperatures_follow_the_exact_finite_n_moments() {
     let mut distinct = false;
     for (counts, ensembles) in cases {
         let mix = maxwell_mixture(counts);
-        let samples = simulate(&mix, &times, ensembles, 11);
-        for (ti, &t) in times.iter().enumerate() {
-            let exact = mix.temperatures_at(t, false);
-            let t0: Vec<f64> = samples[ti].iter().map(|x| x.0).collect();
-            let t1: Vec<f64> = samples[ti].iter().map(|x| x.1).collect();
-            let ((m0, s0), (m1, s1)) = (mean_se(&t0), mean_se(&t1));
-            assert!(
-                (m0 - exact[0]).abs() <= z * s0,
-                "n = {counts:?} t = {t}: T_0 {m0} +- {} vs {}",
-                z * s0,
-                exact[0]
-            );
-            assert!(
-                (m1 - exact[1]).abs() <= z * s1,
-                "n = {counts:?} t = {t}: T_1 {m1} +- {} vs {}",
-                z * s1,
-                exact[1]
-            );
-            // The ratio of the means, its standard error by the delta method.
-            let r = m0 / m1;
-            let cov = t0
-                .iter()
-                .zip(&t1)
-                .map(|(a, b)| (a - m0) * (b - m1))
-                .sum::<f64>()
-                / (t0.len() as f64 - 1.0)
-                / t0.len() as f64;
-            let se = ((s0 * s0 - 2.0 * r * cov + r * r * s1 * s1) / (m1 * m1)).sqrt();
-            let exact_ratio = exact[0] / exact[1];
-            assert!(
-                (r - exact_ratio).abs() <= z * se,
-                "n = {counts:?} t = {t}: T_0/T_1 {r} +- {} vs {exact_ratio}",
-                z * se
-            );
-            // The test can fail: the temperatures of the species differ from each other
-            // by many intervals (no equipartition), and from the Boltzmann limit at small n.
-            if (exact[0] - exact[1]).abs() > 10.0 * z * (s0 + s1) {
-                distinct = true;
-            }
-        }
+        let samples = simulate(&mix, &[NoDrive; 2], &times, ensembles, 11);
+        distinct |= compare(&mix, &samples, &times, z);
     }
     assert!(distinct, "the species temperatures were never told apart");
     // At 8 particles the finite-N solution differs from the Boltzmann limit by many intervals
@@ -201,4 +211,31 @@ fn maxwell_mixture_temperatures_follow_the_exact_finite_n_moments() {
         (fin[0] / fin[1] - lim[0] / lim[1]).abs() > 0.05,
         "{fin:?} vs {lim:?}"
     );
+}
+
+/// White noise of its own strength on each species (beta 0.5 on the light species, 2 on the
+/// heavy one): the second moments stay closed (each kick adds `6 beta_s` to `<|v|^2>`), so the
+/// heated mixture's species temperatures have exact finite-n expectations too, at every time
+/// from the start into the steady state.
+#[test]
+fn heated_maxwell_mixture_follows_the_exact_finite_n_moments() {
+    let times = [0.25, 1.0, 4.0, 10.0];
+    let cases = [([3usize, 5usize], 20_000u64), ([600, 400], 300)];
+    // 4 times x 2 sizes x 3 quantities.
+    let z = family_factor(24) * gdsmc_runner::run::stats::LAMBDA_999;
+    let mut distinct = false;
+    for (counts, ensembles) in cases {
+        let mut mix = maxwell_mixture(counts);
+        mix.beta = vec![0.5, 2.0];
+        let drives = [WhiteNoise::new(0.5).unwrap(), WhiteNoise::new(2.0).unwrap()];
+        let samples = simulate(&mix, &drives, &times, ensembles, 12);
+        distinct |= compare(&mix, &samples, &times, z);
+    }
+    assert!(distinct, "the species temperatures were never told apart");
+    // The drive matters: without it the expectations differ by far more than the intervals.
+    let cold = maxwell_mixture([600, 400]).temperatures_at(10.0, false);
+    let mut hot = maxwell_mixture([600, 400]);
+    hot.beta = vec![0.5, 2.0];
+    let hot = hot.temperatures_at(10.0, false);
+    assert!(hot[1] > 10.0 * cold[1], "{hot:?} vs {cold:?}");
 }

@@ -401,7 +401,10 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
     }
 }
 
+// Each method out of line: a caller's `match` over every engine (the physics dispatch) would
+// otherwise reserve the per-species observables in its frame for every physics.
 impl<K: Kernel, D: Drive, A: Restitution> crate::engine::EventLoop for MixtureNoSplitting<K, D, A> {
+    #[inline(never)]
     fn advance_to<R: Rng + ?Sized>(
         &mut self,
         p: &mut Particles<'_>,
@@ -425,6 +428,7 @@ impl<K: Kernel, D: Drive, A: Restitution> crate::engine::EventLoop for MixtureNo
     fn velocity_map(&self) -> (Real, Vec3) {
         (self.scale, self.offset)
     }
+    #[inline(never)]
     fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
         let obs = MixtureObservables::of(p.as_slice(), &self.sp);
         Some(self.with_raw_v6(p, obs.in_units(self.scale, self.offset)))

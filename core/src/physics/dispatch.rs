@@ -152,7 +152,10 @@ impl Model {
 }
 
 /// The mixture loop of kernel `k` (scaled per pair) and the drive (none, or white noise per
-/// species).
+/// species). Never inlined: its large locals (the pair table, the per-species observables)
+/// would otherwise sit in [`Model::start`]'s frame for every physics (the firmware's peak
+/// stack went from 11.6 to 29.0 KiB when they did).
+#[inline(never)]
 fn mixture<K: Kernel>(
     mx: &MixtureModel,
     k: K,

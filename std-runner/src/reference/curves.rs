@@ -169,7 +169,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             curve: Box::new(move |_| r),
         });
     }
-    if ma.lambda == 0.0 && matches!(ph.drive, DriveChoice::None) {
+    if ma.lambda == 0.0 {
         let fractions = ma.fractions.clone();
         let exact = std::sync::Arc::new(MaxwellMixture {
             counts: ph.species.iter().map(|s| s.count).collect(),
@@ -177,6 +177,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             kappa: ma.kappa,
             alpha: ma.alpha,
             temperatures: ph.species.iter().map(|s| s.temperature).collect(),
+            beta: ma.beta.clone(),
         });
         for s in 0..species {
             let e = exact.clone();

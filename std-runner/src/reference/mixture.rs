@@ -44,6 +44,9 @@ pub struct MaxwellMixture {
     pub alpha: Vec<f64>,
     /// Initial temperature of each species (velocity variance per component `T_s / m_s`).
     pub temperatures: Vec<f64>,
+    /// White-noise strength of each species (GRW (18): every particle's `<|v|^2>` grows by
+    /// `6 beta_s` per unit time, so `A_s` and `|Q_s|^2` by `6 beta_s N_s`); empty: none.
+    pub beta: Vec<f64>,
 }
 
 impl MaxwellMixture {
@@ -147,7 +150,25 @@ impl MaxwellMixture {
     /// The expected species temperatures `E[T_s](t)` about the flow velocity, at finite `N`
     /// (exact) or in the Boltzmann limit (`large_n`, where the flow velocity vanishes).
     pub fn temperatures_at(&self, t: f64, large_n: bool) -> Vec<f64> {
-        let x = apply(&expm(&self.generator(large_n), t), &self.initial());
+        // The white noise makes the system affine, dX/dt = M X + b: carried as a constant
+        // last component of the state.
+        let d = self.dim();
+        let mut m = self.generator(large_n);
+        for row in &mut m {
+            row.push(0.0);
+        }
+        m.push(vec![0.0; d + 1]);
+        for (s, &beta) in self.beta.iter().enumerate() {
+            let rate = 6.0 * beta * self.counts[s] as f64;
+            m[s][d] += rate;
+            if !large_n {
+                let p = self.p(s, s);
+                m[p][d] += rate;
+            }
+        }
+        let mut x0 = self.initial();
+        x0.push(1.0);
+        let x = apply(&expm(&m, t), &x0);
         let ns = self.species();
         let total: f64 = (0..ns)
             .map(|r| self.masses[r] * self.counts[r] as f64)
@@ -234,26 +255,50 @@ fn factorial(k: u32) -> f64 {
 mod tests {
     use super::*;
 
-    /// One species: GRW (13) with beta = 0 at finite n is
-    /// `T(t) = T0 exp(-(1 - alpha^2)/4 kappa (n - 1)/n t)` for the raw second moment
-    /// ... about the flow velocity, whose expected square is conserved: checked against the
-    /// closed form of the one-species energy decay.
-    #[test]
-    fn one_species_is_the_closed_form() {
-        let (n, alpha, kappa) = (10usize, 0.5, 2.0);
-        let mix = MaxwellMixture {
+    /// One species of `n` particles, unit mass, start temperature 1.5.
+    fn one_species(n: usize, alpha: f64, kappa: f64, beta: f64) -> MaxwellMixture {
+        MaxwellMixture {
             counts: vec![n],
             masses: vec![1.0],
             kappa: vec![kappa],
             alpha: vec![alpha],
             temperatures: vec![1.5],
-        };
+            beta: vec![beta],
+        }
+    }
+
+    /// One cooling species: the temperature about the flow velocity decays as GRW (13) with
+    /// beta = 0 (the flow velocity's expected square is conserved), from `(n - 1)/n` of the
+    /// start temperature.
+    #[test]
+    fn one_species_is_the_closed_form() {
+        let (n, alpha, kappa) = (10usize, 0.5, 2.0);
+        let mix = one_species(n, alpha, kappa, 0.0);
         for &t in &[0.0, 0.3, 2.0] {
             // E sum |v - V|^2 = (A - |Q|^2/n): d/dt = -(1 - alpha^2)/4 kappa/n (n A - |Q|^2)
             // and |Q|^2 is conserved, so (A - |Q|^2/n) decays at (1 - alpha^2)/4 kappa.
             // T = (A - |Q|^2/n)/(3n): E T(0) = 1.5 (n - 1)/n.
             let exact = 1.5 * (n as f64 - 1.0) / n as f64
                 * (-(1.0 - alpha * alpha) / 4.0 * kappa * t).exp();
+            let got = mix.temperatures_at(t, false)[0];
+            assert!(
+                (got - exact).abs() < 1e-12 * exact,
+                "t = {t}: {got} vs {exact}"
+            );
+        }
+    }
+
+    /// One heated species: GRW (13), `T(t) = T_inf + (T0 - T_inf) e^{-k t}` with
+    /// `k = (1 - alpha^2)/4 kappa` and `T_inf = 2 beta / k`, for the temperature about the
+    /// flow velocity at finite n: `E T = (n-1)/n` of it (the flow velocity's own share).
+    #[test]
+    fn one_heated_species_is_grw_13() {
+        let (n, alpha, kappa, beta) = (20usize, 0.5, 2.0, 0.7);
+        let mix = one_species(n, alpha, kappa, beta);
+        let k = (1.0 - alpha * alpha) / 4.0 * kappa;
+        let t_inf = 2.0 * beta / k;
+        for &t in &[0.0, 0.4, 3.0] {
+            let exact = (n as f64 - 1.0) / n as f64 * (t_inf + (1.5 - t_inf) * (-k * t).exp());
             let got = mix.temperatures_at(t, false)[0];
             assert!(
                 (got - exact).abs() < 1e-12 * exact,
@@ -273,6 +318,7 @@ mod tests {
             kappa: vec![kappa; 3],
             alpha: vec![alpha; 3],
             temperatures: vec![1.0, 1.0],
+            beta: vec![],
         };
         for &t in &[0.5, 1.5] {
             let ts = mix.temperatures_at(t, false);
@@ -282,6 +328,7 @@ mod tests {
                 kappa: vec![kappa],
                 alpha: vec![alpha],
                 temperatures: vec![1.0],
+                beta: vec![],
             }
             .temperatures_at(t, false)[0];
             let mixed = (4.0 * ts[0] + 6.0 * ts[1]) / 10.0;
@@ -420,6 +467,7 @@ mod approximation_tests {
             kappa: vec![1.0, 1.5, 0.5],
             alpha: vec![0.9, 0.6, 0.8],
             temperatures: vec![1.0, 2.0],
+            beta: vec![],
         };
         let t = exact.temperatures_at(200.0, true);
         let approx = MaxwellianApproximation {
