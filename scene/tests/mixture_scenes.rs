@@ -88,9 +88,22 @@ fn bad_species_values_name_line_and_key() {
     assert!(e.contains("`drive.beta` must be >= 0"), "{e}");
     let e = err(&MIX.replace(
         "kind = \"white-noise\"\nbeta = 1.0",
-        "kind = \"gaussian\"\nzeta = 1.0",
+        "kind = \"host-medium\"\nkernel = \"maxwell\"",
     ));
-    assert!(e.contains("`species` take no drive or white noise"), "{e}");
+    assert!(
+        e.contains("`species` take no drive, white noise (per species) or the Gaussian thermostat"),
+        "{e}"
+    );
+    // The Gaussian thermostat acts on every species (about the flow velocity).
+    let s = parse(
+        Path::new("mix.toml"),
+        &MIX.replace(
+            "kind = \"white-noise\"\nbeta = 1.0",
+            "kind = \"gaussian\"\nzeta = 1.0",
+        ),
+    )
+    .unwrap();
+    assert!(s.physics.validate().is_ok());
     let e = err(&MIX.replace("pair_restitution", "restitution = 0.5\npair_restitution"));
     assert!(
         e.contains("`collisions.restitution` and collisions.pair_restitution exclude each other"),

@@ -356,8 +356,18 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
             obs = MixtureObservables::of(p.as_slice(), &self.sp);
         }
         self.counts.observations += 1;
+        // Drives that act about a centre (the Gaussian thermostat) get the mixture's flow
+        // velocity, which collisions keep (and such a drive too): so the lazy kicks between
+        // synchronizations stay exact. Each species' own moments otherwise.
+        let flow = if self.sp.len() == 1 {
+            obs.species[0].bulk // the same bits as the one-species loop
+        } else {
+            obs.flow_velocity()
+        };
         for s in 0..self.sp.len() {
-            self.drives[s].observe(&obs.species[s]);
+            let mut seen = obs.species[s];
+            seen.bulk = flow;
+            self.drives[s].observe(&seen);
             if K::USES_UMAX {
                 self.maj[s] =
                     Majorant::new(2.0 * obs.species[s].max_peculiar_speed, obs.species[s].bulk);

@@ -179,32 +179,46 @@ fn mixture<K: Kernel>(
     let n = mx.species.len();
     match drive {
         DriveModel::WhiteNoise(_) => {
-            let (e, o) = started(MixtureNoSplitting::start(
+            let started = started(MixtureNoSplitting::start(
                 mx.species,
                 physics,
                 &mx.noises[..n],
                 p,
                 t0,
-            ))?;
-            Ok((ByMixtureDrive::WhiteNoise(e), o.all))
+            ));
+            wrap(started, ByMixtureDrive::WhiteNoise)
         }
-        _ => {
-            let (e, o) = started(MixtureNoSplitting::start(
+        DriveModel::Gaussian(g) => {
+            let drives = [g; MAX_SPECIES];
+            let started = started(MixtureNoSplitting::start(
                 mx.species,
                 physics,
-                &[NoDrive; MAX_SPECIES][..n],
+                &drives[..n],
                 p,
                 t0,
-            ))?;
-            Ok((ByMixtureDrive::None(e), o.all))
+            ));
+            wrap(started, ByMixtureDrive::Gaussian)
+        }
+        _ => {
+            let drives = [NoDrive; MAX_SPECIES];
+            let started = started(MixtureNoSplitting::start(
+                mx.species,
+                physics,
+                &drives[..n],
+                p,
+                t0,
+            ));
+            wrap(started, ByMixtureDrive::None)
         }
     }
 }
 
-/// A mixture loop's refusal as an engine error (the model was validated, so only the
-/// engine's own refusals remain).
-fn started<E>(e: Result<E, StartError>) -> Result<E, EngineError> {
-    e.map_err(|e| match e {
+/// A mixture loop's start as an engine's: its refusal as an engine error (the model was
+/// validated, so only the engine's own refusals remain), the whole gas's observables.
+fn started<E>(
+    e: Result<(E, crate::mixture::MixtureObservables), StartError>,
+) -> Result<(E, Observables), EngineError> {
+    e.map(|(e, o)| (e, o.all)).map_err(|e| match e {
         StartError::Engine(e) => e,
         StartError::Mixture(_) => EngineError::ParticleCount,
     })

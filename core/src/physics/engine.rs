@@ -54,6 +54,8 @@ pub enum ByMixtureDrive<K> {
     None(MixtureNoSplitting<K, NoDrive, Constant>),
     /// White noise, each species its own strength.
     WhiteNoise(MixtureNoSplitting<K, WhiteNoise, Constant>),
+    /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity.
+    Gaussian(MixtureNoSplitting<K, GaussianThermostat, Constant>),
 }
 
 /// By drive, for kernel `K`.
@@ -126,7 +128,7 @@ macro_rules! forward {
 
 forward!(Engine, [], Maxwell, HardSpheres, Vhs, Mixture);
 forward!(MixtureEngine, [], Maxwell, HardSpheres, Vhs);
-forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise);
+forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], NoSplitting, Splitting, TimeStepped);

@@ -116,7 +116,9 @@ pub(super) fn mixture(
     }
     let mut noises = [WhiteNoise::new(0.0).expect("0 is a valid strength"); MAX_SPECIES];
     match drive {
-        DriveModel::None => {}
+        // The Gaussian thermostat acts on every species about the mixture's flow velocity,
+        // which collisions and the thermostat keep: exact between synchronizations.
+        DriveModel::None | DriveModel::Gaussian(_) => {}
         DriveModel::WhiteNoise(_) => {
             for (k, c) in list.iter().enumerate() {
                 noises[k] = WhiteNoise::new(c.beta).ok_or(PhysicsError {
@@ -132,7 +134,9 @@ pub(super) fn mixture(
         _ => {
             return refuse(
                 Param::Species,
-                Problem::DoesNotFit("take no drive or white noise (per species)"),
+                Problem::DoesNotFit(
+                    "take no drive, white noise (per species) or the Gaussian thermostat",
+                ),
             );
         }
     }

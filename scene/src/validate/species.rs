@@ -72,13 +72,6 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
             format!("must hold 1 to {MAX_SPECIES} species, got {}", list.len()),
         );
     }
-    if let Some(k) = &file.observe.collisional_pairs {
-        return ctx.invalid(
-            k.span(),
-            "observe.collisional_pairs",
-            "is not computed for a mixture (MS (67) is one species')",
-        );
-    }
     let ini = &file.particles.initial;
     if ini.kind != InitialKind::Maxwellian
         || ini.mass.is_some()

@@ -169,7 +169,8 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             curve: Box::new(move |_| r),
         });
     }
-    if ma.lambda == 0.0 {
+    // The exact moments know no thermostat.
+    if ma.lambda == 0.0 && matches!(ph.drive, DriveChoice::None | DriveChoice::WhiteNoise(_)) {
         let fractions = ma.fractions.clone();
         let exact = std::sync::Arc::new(MaxwellMixture {
             counts: ph.species.iter().map(|s| s.count).collect(),

@@ -179,6 +179,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             for c in &crate::run::columns::SPECIES_COLUMNS[..scene.physics.species.len()] {
                 names.extend([c[1], c[2]]);
             }
+            names.extend(&crate::run::columns::COOLING_COLUMNS[..=scene.physics.species.len()]);
         }
         for name in names {
             let Some(col) = stats.col(name) else { continue };

@@ -119,6 +119,12 @@ pub const SPECIES_COLUMNS: [[&str; 4]; gdsmc_core::mixture::MAX_SPECIES] = [
     ["T_s3", "T_s3_ratio", "a2_s3", "dV_s3"],
 ];
 
+/// A mixture's cooling rates, with `observe.collisional_pairs`: the mixture's
+/// `zeta_mix = -(dT_mix/dt)/T_mix`, then per species `zeta_sk = -(dT_sk/dt)/T_sk`, from the
+/// collisions (run/cooling.rs).
+pub const COOLING_COLUMNS: [&str; gdsmc_core::mixture::MAX_SPECIES + 1] =
+    ["zeta_mix", "zeta_s0", "zeta_s1", "zeta_s2", "zeta_s3"];
+
 /// The mixture columns' values of one observation, in [`names`] order.
 pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
     let t = m.mixture_temperature();
@@ -133,17 +139,21 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
 
 /// The column names of a scene's observables.csv, in order: [`COLUMNS`], then `mu2`, `mu4`
 /// (MS (67)) when `observe.collisional_pairs` is set, then a mixture's columns
-/// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species).
+/// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species, and with
+/// `observe.collisional_pairs` the [`COOLING_COLUMNS`] instead of `mu2`, `mu4`).
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
-    if scene.collisional_pairs > 0 {
+    let species = scene.physics.species.len();
+    if scene.collisional_pairs > 0 && species == 0 {
         v.extend(COLLISIONAL);
     }
-    let species = scene.physics.species.len();
     if species > 0 {
         v.push(MIXTURE_TEMPERATURE);
         for cols in &SPECIES_COLUMNS[..species] {
             v.extend(cols);
+        }
+        if scene.collisional_pairs > 0 {
+            v.extend(&COOLING_COLUMNS[..species + 1]);
         }
     }
     v

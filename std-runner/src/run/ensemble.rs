@@ -3,6 +3,7 @@
 //! time; the histograms a scene asks for ride at the end of its row.
 
 use crate::run::columns::COLUMNS;
+use crate::run::cooling::CoolingRates;
 use crate::scene::Scene;
 use gdsmc_core::collisional::collisional_moments;
 use gdsmc_core::engine::{Counts, EngineError, EventLoop};
@@ -88,6 +89,9 @@ fn observe<E: EventLoop>(
     let marginal_len = scene.marginal_histogram.map_or(0, |(_, k, _)| k + 2);
     let (mut marginal_first, mut marginal_last) =
         (vec![0.0; marginal_len], vec![0.0; marginal_len]);
+    let cooling = (scene.collisional_pairs > 0)
+        .then(|| CoolingRates::new(&scene.physics))
+        .flatten();
     for (ti, &t) in scene.times.iter().enumerate() {
         let obs = if t == 0.0 {
             obs0
@@ -121,10 +125,11 @@ fn observe<E: EventLoop>(
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
         // The scene allows collisional pairs with a constant restitution law only.
-        if let (true, Some((bulk, t_bulk)), Some(alpha)) = (
+        if let (true, Some((bulk, t_bulk)), Some(alpha), true) = (
             scene.collisional_pairs > 0,
             stored,
             scene.physics.restitution.constant(),
+            cooling.is_none(),
         ) {
             // mu2, mu4 are reduced by v0, so the stored units do.
             let (mu2, mu4) =
@@ -133,6 +138,15 @@ fn observe<E: EventLoop>(
         }
         if let Some(m) = engine.species(p) {
             out.extend(crate::run::columns::mixture_values(&m));
+            if let Some(c) = &cooling {
+                out.extend(cooling_rates(
+                    c,
+                    scene,
+                    p,
+                    engine.velocity_map().0,
+                    &mut diag,
+                ));
+            }
         }
     }
     // The histogram of the last observation rides at the end of the row (split off in the job).
@@ -148,6 +162,35 @@ fn observe<E: EventLoop>(
     out.extend(marginal_first);
     out.extend(marginal_last);
     Ok((out, engine.counts()))
+}
+
+/// A mixture's cooling rates (`zeta_mix`, then one per species) from `scene.collisional_pairs`
+/// random pairs per species pair: `-(dT/dt)/T` in stored units times `scale^lambda` (a rate
+/// scales with the relative speed's power of the kernel).
+fn cooling_rates(
+    c: &CoolingRates,
+    scene: &Scene,
+    p: &Particles<'_>,
+    scale: f64,
+    rng: &mut Xoshiro256PlusPlus,
+) -> Vec<f64> {
+    let lambda = match scene.physics.kernel {
+        gdsmc_core::physics::KernelChoice::Maxwell { .. } => 0.0,
+        gdsmc_core::physics::KernelChoice::HardSpheres { .. } => 1.0,
+        gdsmc_core::physics::KernelChoice::Vhs { lambda, .. } => lambda,
+    };
+    let unit = scale.powf(lambda);
+    let rates = c.rates(p, scene.collisional_pairs, rng);
+    let n: usize = scene.physics.species.iter().map(|s| s.count).sum();
+    let (mut t, mut dt) = (0.0, 0.0);
+    for (s, &(ts, dts)) in rates.iter().enumerate() {
+        let x = scene.physics.species[s].count as f64 / n as f64;
+        t += x * ts;
+        dt += x * dts;
+    }
+    let mut v = vec![-dt / t * unit];
+    v.extend(rates.iter().map(|&(ts, dts)| -dts / ts * unit));
+    v
 }
 
 /// Bulk velocity and temperature (about it) of the velocities as stored.

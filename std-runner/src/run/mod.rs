@@ -9,6 +9,7 @@
 //! physics into one statically composed event loop per ensemble.
 
 pub mod columns;
+pub mod cooling;
 pub mod ensemble;
 pub mod estimate;
 pub mod journal;
