@@ -72,6 +72,39 @@ fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
             *d = wild(u);
         }
     }
+    // A mixture now and then: up to GDSMC_MAX_SPECIES + 1 species (one too many is refused),
+    // counts that usually add up to n, wild species values and pair coefficients.
+    if u.ratio(1u8, 4u8).unwrap_or(false) {
+        c.species = u
+            .int_in_range(0u32..=GDSMC_MAX_SPECIES as u32 + 1)
+            .unwrap_or(0);
+        let s = (c.species as usize).min(GDSMC_MAX_SPECIES);
+        let mut left = c.n;
+        for k in 0..s {
+            c.species_count[k] = if k + 1 == s {
+                left
+            } else {
+                u.int_in_range(0..=left).unwrap_or(0)
+            };
+            left -= c.species_count[k];
+            if u.ratio(1u8, 16u8).unwrap_or(false) {
+                c.species_count[k] = u.arbitrary().unwrap_or(0);
+            }
+        }
+        for f in c
+            .species_mass
+            .iter_mut()
+            .chain(c.species_temperature.iter_mut())
+            .chain(c.species_diameter.iter_mut())
+            .chain(c.species_beta.iter_mut())
+            .chain(c.pair_restitution.iter_mut())
+        {
+            if u.ratio(1u8, 4u8).unwrap_or(false) {
+                *f = wild(u);
+            }
+        }
+        c.pair_restitution_set = u.int_in_range(0u32..=1).unwrap_or(0);
+    }
     c
 }
 
@@ -89,6 +122,11 @@ fn bounded_work(c: &gdsmc_config) -> bool {
         && within(c.background_c * c.background_density, 0.0, 100.0)
         && speed2(c.background_temperature, c.background_mass)
         && c.background_drift.iter().all(|d| within(*d, -10.0, 10.0))
+        && (0..(c.species as usize).min(GDSMC_MAX_SPECIES)).all(|k| {
+            speed2(c.species_temperature[k], c.species_mass[k])
+                && within(c.species_diameter[k], 1e-3, 10.0)
+                && within(c.species_beta[k], 0.0, 100.0)
+        })
         && match c.scheme {
             GDSMC_SCHEME_EULER | GDSMC_SCHEME_STRANG => within(c.dt, 1e-3, 1e300),
             // Found by a 10-minute run: a step factor of 1e-300 with a valid dt passed an
@@ -156,6 +194,14 @@ fn exercise(u: &mut Unstructured<'_>, mut sim: *mut gdsmc_sim, c: &gdsmc_config,
                 }
                 5 => {
                     let _ = gdsmc_sim_reseed(sim, u.arbitrary().unwrap_or(0));
+                }
+                6 if u.ratio(1u8, 2u8).unwrap_or(false) => {
+                    // A species of a mixture, or a refusal naming why not.
+                    let mut so = gdsmc_species_observables::default();
+                    let k = u.int_in_range(0u32..=5).unwrap_or(0);
+                    let s = gdsmc_sim_species(sim, k, &mut so);
+                    assert_eq!(s == gdsmc_status::GDSMC_OK, k < c.species, "species {s:?}");
+                    let _ = gdsmc_sim_species(sim, k, null_mut());
                 }
                 _ => {
                     let _ = gdsmc_sim_get_velocities(sim, null_mut(), 3 * n);
