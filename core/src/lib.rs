@@ -51,5 +51,6 @@ pub mod physics;
 pub mod prefetch;
 pub mod restitution;
 pub mod rng;
+pub mod rough;
 pub mod sample;
 pub mod vec3;

@@ -1,0 +1,178 @@
+//! The collision of two rough spheres of equal mass `m`, diameter `sigma` and moment of
+//! inertia `I = kappa m sigma^2 / 4` (Huthmann and Zippelius 1997; Luding et al. 1998).
+//!
+//! Angular velocities are kept as rim velocities `w = (sigma/2) omega` (velocity units, so the
+//! diameter drops out). With `n` the unit vector from the centre of particle 1 to that of 2 at
+//! contact, the contact points' relative velocity is
+//!
+//! ```text
+//! g = v1 - v2 + (w1 + w2) x n,      g_n = (g . n) n,   g_t = g - g_n,
+//! ```
+//!
+//! and the collision reverses and shrinks its components, `g_n' = -alpha g_n`,
+//! `g_t' = -beta g_t` (`0 < alpha <= 1`, `-1 <= beta <= 1`). The impulse `J = m dv1 = -m dv2`
+//! that does it, with the torques `I d omega_i = (sigma/2) n x J` on both particles:
+//!
+//! ```text
+//! dv1 = -dv2 = -eta_n g_n - eta_t g_t,       eta_n = (1 + alpha)/2,
+//! dw1 =  dw2 = (n x dv1) / kappa,            eta_t = (1 + beta)/2 kappa/(1 + kappa).
+//! ```
+//!
+//! Linear momentum is kept, and the angular momentum about the contact point; the energy
+//! `E = (m/2) sum (|v|^2 + kappa |w|^2)` changes by
+//! `-(m/4) [(1 - alpha^2) |g_n|^2 + (1 - beta^2) kappa/(1 + kappa) |g_t|^2]`
+//! (Huthmann and Zippelius 1997, in these variables). `beta = -1` leaves the rotation alone
+//! (smooth spheres: GRW (3) with the impact direction, MS (56)); `alpha = beta = 1` keeps the
+//! energy (perfectly rough elastic spheres).
+//!
+//! ```
+//! use gdsmc_core::{rough::RoughMap, vec3::Vec3};
+//! let map = RoughMap::new(0.9, 0.5, 0.4).unwrap(); // kappa = 2/5: uniform spheres
+//! let (v1, w1) = (Vec3::new(1.0, 0.2, 0.0), Vec3::new(0.0, 0.0, 0.3));
+//! let (v2, w2) = (Vec3::new(-1.0, 0.0, 0.1), Vec3::ZERO);
+//! let n = Vec3::new(-1.0, 0.0, 0.0); // 2 is behind 1 along x: they approach
+//! let (a1, b1, a2, b2) = map.collide(v1, w1, v2, w2, n);
+//! assert!(((a1 + a2) - (v1 + v2)).norm() < 1e-15); // momentum kept
+//! ```
+
+use crate::math::{Real, sqrt};
+use crate::rng::{Rng, uniform01};
+use crate::sample::unit_sphere;
+use crate::vec3::Vec3;
+
+/// A rough-sphere parameter out of its domain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RoughError {
+    /// The normal restitution is not in (0, 1].
+    Alpha,
+    /// The tangential restitution is not in [-1, 1].
+    Beta,
+    /// The reduced moment of inertia is not in (0, 2/3] (2/5: uniform spheres; 2/3: a
+    /// hollow shell, the largest a sphere can have).
+    Kappa,
+}
+
+impl core::fmt::Display for RoughError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            RoughError::Alpha => "normal restitution alpha must lie in (0, 1]",
+            RoughError::Beta => "tangential restitution beta must lie in [-1, 1]",
+            RoughError::Kappa => "reduced moment of inertia kappa must lie in (0, 2/3]",
+        })
+    }
+}
+
+impl core::error::Error for RoughError {}
+
+/// The collision map of rough spheres with coefficients `alpha`, `beta`, `kappa`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoughMap {
+    alpha: Real,
+    beta: Real,
+    kappa: Real,
+    eta_n: Real,
+    eta_t: Real,
+}
+
+impl RoughMap {
+    /// The map for `0 < alpha <= 1`, `-1 <= beta <= 1`, `0 < kappa <= 2/3`.
+    pub fn new(alpha: Real, beta: Real, kappa: Real) -> Result<Self, RoughError> {
+        if !(alpha > 0.0 && alpha <= 1.0) {
+            return Err(RoughError::Alpha);
+        }
+        if !(-1.0..=1.0).contains(&beta) {
+            return Err(RoughError::Beta);
+        }
+        if !(kappa > 0.0 && kappa <= 2.0 / 3.0) {
+            return Err(RoughError::Kappa);
+        }
+        Ok(RoughMap {
+            alpha,
+            beta,
+            kappa,
+            eta_n: 0.5 * (1.0 + alpha),
+            eta_t: 0.5 * (1.0 + beta) * kappa / (1.0 + kappa),
+        })
+    }
+
+    /// The normal restitution `alpha`.
+    pub fn alpha(&self) -> Real {
+        self.alpha
+    }
+
+    /// The tangential restitution `beta`.
+    pub fn beta(&self) -> Real {
+        self.beta
+    }
+
+    /// The reduced moment of inertia `kappa = 4 I / (m sigma^2)`.
+    pub fn kappa(&self) -> Real {
+        self.kappa
+    }
+
+    /// The contact points' relative velocity `g = v1 - v2 + (w1 + w2) x n`.
+    #[inline(always)]
+    pub fn contact_velocity(v1: Vec3, w1: Vec3, v2: Vec3, w2: Vec3, n: Vec3) -> Vec3 {
+        v1 - v2 + (w1 + w2).cross(n)
+    }
+
+    /// Post-collisional `(v1', w1', v2', w2')` for the unit vector `n` from 1 to 2 (module
+    /// docs). With `beta = -1` the rim velocities are returned unchanged, bit for bit.
+    #[inline(always)]
+    pub fn collide(
+        &self,
+        v1: Vec3,
+        w1: Vec3,
+        v2: Vec3,
+        w2: Vec3,
+        n: Vec3,
+    ) -> (Vec3, Vec3, Vec3, Vec3) {
+        let g = Self::contact_velocity(v1, w1, v2, w2, n);
+        let gn = g.dot(n) * n;
+        let gt = g - gn;
+        let dv = -(self.eta_n * gn) - self.eta_t * gt;
+        if self.eta_t == 0.0 {
+            return (v1 + dv, w1, v2 - dv, w2);
+        }
+        let dw = (1.0 / self.kappa) * n.cross(dv);
+        (v1 + dv, w1 + dw, v2 - dv, w2 + dw)
+    }
+
+    /// The energy change `-(1/4) [(1 - alpha^2) |g_n|^2 + (1 - beta^2) kappa/(1 + kappa)
+    /// |g_t|^2]` of `sum (|v|^2 + kappa |w|^2)/2` per unit mass (module docs).
+    pub fn energy_change(&self, g: Vec3, n: Vec3) -> Real {
+        let gn2 = {
+            let c = g.dot(n);
+            c * c
+        };
+        let gt2 = (g.norm2() - gn2).max(0.0);
+        -0.25
+            * ((1.0 - self.alpha * self.alpha) * gn2
+                + (1.0 - self.beta * self.beta) * self.kappa / (1.0 + self.kappa) * gt2)
+    }
+}
+
+/// The unit vector `n` from particle 1 to particle 2 at a hard-sphere collision with relative
+/// velocity `u = v1 - v2`: on the hemisphere where the pair approaches, `u . n >= 0`, with
+/// density proportional to `u_hat . n` (the impact parameter uniform on the disk; MS
+/// Section 3's kernel `Theta(u . s)(u . s)`). For `u = 0`, uniform on the sphere.
+pub fn impact_direction<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
+    let un = u.norm();
+    let e = unit_sphere(rng);
+    if un == 0.0 {
+        return e;
+    }
+    let uh = (1.0 / un) * u;
+    // cos theta = sqrt(1 - b^2) with b^2 uniform on [0, 1): density 2 cos sin on [0, pi/2].
+    let c = sqrt(1.0 - uniform01(rng));
+    // A unit vector perpendicular to u_hat from the uniform one (redrawn when parallel).
+    let mut p = e - e.dot(uh) * uh;
+    let mut p2 = p.norm2();
+    while p2 < 1e-12 {
+        let e = unit_sphere(rng);
+        p = e - e.dot(uh) * uh;
+        p2 = p.norm2();
+    }
+    let s = sqrt((1.0 - c * c).max(0.0));
+    c * uh + (s / sqrt(p2)) * p
+}
