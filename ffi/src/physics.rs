@@ -66,7 +66,7 @@ fn index(p: Param, species: usize) -> Option<usize> {
         | Param::SpeciesTemperature(k)
         | Param::SpeciesDiameter(k)
         | Param::SpeciesBeta(k) => Some(k),
-        Param::PairRestitution(s, t) => Some(s * species - s * s.saturating_sub(1) / 2 + (t - s)),
+        Param::PairRestitution(s, t) => Some(gdsmc_core::mixture::pair_index(species, s, t)),
         _ => None,
     }
 }

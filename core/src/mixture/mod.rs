@@ -40,4 +40,4 @@ pub mod species;
 pub use map::MassRatio;
 pub use nosplit::{MixtureNoSplitting, PairPhysics, StartError};
 pub use observables::MixtureObservables;
-pub use species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species};
+pub use species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};

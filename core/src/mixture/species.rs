@@ -15,6 +15,15 @@ pub const MAX_SPECIES: usize = 4;
 /// The largest number of pair types `(s, t)`, `s <= t`: `MAX_SPECIES (MAX_SPECIES + 1) / 2`.
 pub const MAX_PAIRS: usize = MAX_SPECIES * (MAX_SPECIES + 1) / 2;
 
+/// The index of the pair of species `(s, t)` (either order) among `species` species, in the
+/// order `(0,0), (0,1), .., (0,S-1), (1,1), ..` of every per-pair array (the core's, the C
+/// struct's `pair_restitution`, the references').
+pub fn pair_index(species: usize, s: usize, t: usize) -> usize {
+    let (s, t) = if s <= t { (s, t) } else { (t, s) };
+    // Rows 0..s hold S, S-1, .., S-s+1 entries.
+    s * species - s * s.saturating_sub(1) / 2 + (t - s)
+}
+
 /// A mixture description that cannot be simulated.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MixtureError {
@@ -168,9 +177,7 @@ impl Species {
 
     /// The pair type of species `s` and `t` (in either order).
     pub fn pair_index(&self, s: usize, t: usize) -> usize {
-        let (s, t) = if s <= t { (s, t) } else { (t, s) };
-        // Rows 0..s hold S, S-1, .., S-s+1 entries.
-        s * self.species - s * s.saturating_sub(1) / 2 + (t - s)
+        pair_index(self.species, s, t)
     }
 
     /// Unordered pairs of type `(s, t)`: `N_s N_t` for `s != t`, `N_s (N_s - 1) / 2` for

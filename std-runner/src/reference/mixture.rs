@@ -24,12 +24,7 @@
 //! (Garzó and Dufty 1999, (6)) is linear in `X` too:
 //! `3 N_s T_s / m_s = A_s - 2 sum_r m_r P_sr / M + N_s sum_{r,q} m_r m_q P_rq / M^2`.
 
-/// The index of pair type `(s, t)` (either order) among `species` species, in the core's
-/// order `(0,0), (0,1), .., (1,1), ..` (`gdsmc_core::mixture::Species::pair_index`).
-fn pair_index(species: usize, s: usize, t: usize) -> usize {
-    let (s, t) = if s <= t { (s, t) } else { (t, s) };
-    s * species - s * s.saturating_sub(1) / 2 + (t - s)
-}
+use gdsmc_core::mixture::pair_index;
 
 /// An inelastic Maxwell mixture with a Maxwellian start of zero mean.
 #[derive(Clone, Debug, PartialEq)]
