@@ -50,6 +50,43 @@ impl Particle {
     }
 }
 
+/// The rotation of one rough particle: its rim velocity `w = (sigma/2) omega` (the angular
+/// velocity times the radius, [`crate::rough`]). A rough gas keeps one [`Spin`] per particle
+/// in a second caller slice beside the [`Particle`]s, so that everything reading translation
+/// (moments, histograms, the SIMD kicks, the C ABI's velocities) reads the same 32-byte
+/// records as for a smooth gas. 32 bytes, aligned to 32: one cache line, like a particle.
+#[repr(C, align(32))]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Spin {
+    /// Rim velocity, x.
+    pub wx: Real,
+    /// Rim velocity, y.
+    pub wy: Real,
+    /// Rim velocity, z.
+    pub wz: Real,
+    /// Unused (keeps the record one aligned half line).
+    pub spare: Real,
+}
+
+impl Spin {
+    /// The spin with rim velocity `w`.
+    #[inline(always)]
+    pub const fn new(w: Vec3) -> Self {
+        Spin {
+            wx: w.x,
+            wy: w.y,
+            wz: w.z,
+            spare: 0.0,
+        }
+    }
+
+    /// The rim velocity.
+    #[inline(always)]
+    pub fn rim_velocity(&self) -> Vec3 {
+        Vec3::new(self.wx, self.wy, self.wz)
+    }
+}
+
 /// Why a buffer cannot hold a particle system.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ParticlesError {
@@ -57,6 +94,8 @@ pub enum ParticlesError {
     TooFew,
     /// More particles than a slice can address (`n * 32` bytes above `isize::MAX`).
     TooMany,
+    /// A rough gas's spins are not one per particle.
+    SpinCount,
 }
 
 impl core::fmt::Display for ParticlesError {
@@ -64,6 +103,7 @@ impl core::fmt::Display for ParticlesError {
         f.write_str(match self {
             ParticlesError::TooFew => "a particle system needs n >= 2 particles",
             ParticlesError::TooMany => "n particles of 32 bytes exceed the address space",
+            ParticlesError::SpinCount => "a rough gas needs one spin per particle",
         })
     }
 }
@@ -81,17 +121,58 @@ pub fn check_count(n: usize) -> Result<(), ParticlesError> {
     Ok(())
 }
 
-/// `n >= 2` particles in a caller-owned slice.
+/// `n >= 2` particles in a caller-owned slice, and for a rough gas their spins in a second one.
 #[derive(Debug)]
 pub struct Particles<'a> {
     p: &'a mut [Particle],
+    spins: &'a mut [Spin],
 }
 
 impl<'a> Particles<'a> {
-    /// A system over a caller buffer of `n >= 2` particles.
+    /// A system over a caller buffer of `n >= 2` particles (no spins: a smooth gas).
     pub fn new(p: &'a mut [Particle]) -> Result<Self, ParticlesError> {
         check_count(p.len())?;
-        Ok(Particles { p })
+        Ok(Particles { p, spins: &mut [] })
+    }
+
+    /// A rough gas: `n >= 2` particles and their `n` spins, each in a caller buffer.
+    pub fn with_spins(
+        p: &'a mut [Particle],
+        spins: &'a mut [Spin],
+    ) -> Result<Self, ParticlesError> {
+        check_count(p.len())?;
+        if spins.len() != p.len() {
+            return Err(ParticlesError::SpinCount);
+        }
+        Ok(Particles { p, spins })
+    }
+
+    /// Whether the system carries spins (a rough gas).
+    #[inline(always)]
+    pub fn has_spins(&self) -> bool {
+        !self.spins.is_empty()
+    }
+
+    /// Rim velocity of particle `i` (a rough gas only).
+    #[inline(always)]
+    pub fn spin(&self, i: usize) -> Vec3 {
+        self.spins[i].rim_velocity()
+    }
+
+    /// Sets the rim velocity of particle `i` (a rough gas only).
+    #[inline(always)]
+    pub fn set_spin(&mut self, i: usize, w: Vec3) {
+        self.spins[i] = Spin::new(w);
+    }
+
+    /// The spins, read-only (empty for a smooth gas).
+    pub fn spins(&self) -> &[Spin] {
+        self.spins
+    }
+
+    /// The spins, mutable (empty for a smooth gas).
+    pub fn spins_mut(&mut self) -> &mut [Spin] {
+        self.spins
     }
 
     /// Number of particles.
@@ -112,10 +193,14 @@ impl<'a> Particles<'a> {
         self.p[i].velocity()
     }
 
-    /// Hints that particle `i` will be touched soon ([`crate::prefetch::prefetch`]).
+    /// Hints that particle `i` (and its spin, in a rough gas) will be touched soon
+    /// ([`crate::prefetch::prefetch`]).
     #[inline(always)]
     pub fn prefetch(&self, i: usize) {
         crate::prefetch::prefetch(&self.p[i]);
+        if let Some(s) = self.spins.get(i) {
+            crate::prefetch::prefetch(s);
+        }
     }
 
     /// Sets the velocity of particle `i`.

@@ -55,6 +55,11 @@ fn field(p: Param) -> &'static str {
         Param::SpeciesDiameter(_) => "species_diameter",
         Param::SpeciesBeta(_) => "species_beta",
         Param::PairRestitution(..) => "pair_restitution",
+        Param::Rotation => "rough",
+        Param::TangentialRestitution => "tangential_restitution",
+        Param::Inertia => "inertia",
+        Param::RotationTemperature => "rotation_temperature",
+        Param::RotationNoise => "rotation_noise",
     }
 }
 

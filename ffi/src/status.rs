@@ -74,7 +74,9 @@ pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
     let s = match e {
         EngineError::TimeBackwards => gdsmc_status::GDSMC_TIME_BACKWARDS,
         EngineError::NonFinite(_) => gdsmc_status::GDSMC_NON_FINITE,
-        EngineError::OffGrid | EngineError::ParticleCount => gdsmc_status::GDSMC_INVALID_ARGUMENT,
+        EngineError::OffGrid | EngineError::ParticleCount | EngineError::Spins => {
+            gdsmc_status::GDSMC_INVALID_ARGUMENT
+        }
     };
     let m = match e {
         EngineError::OffGrid => msg!("the time is not a multiple of config.dt (splitting schemes)"),

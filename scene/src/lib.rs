@@ -100,6 +100,14 @@ impl Scene {
         }
     }
 
+    /// Whether the translation follows the smooth gas's law: smooth particles, or rough ones
+    /// with `tangential_restitution = -1` (no collision touches the rotation, and the
+    /// translation's collisions are the smooth ones). The smooth gas's exact solutions and
+    /// tail laws apply only then.
+    pub fn translation_is_smooth(&self) -> bool {
+        self.physics.rotation.is_none_or(|r| r.beta == -1.0)
+    }
+
     /// Values each ensemble appends after its observables: the speed histogram, the reduced
     /// histogram and the marginal histograms (first and last observation).
     pub fn extra_len(&self) -> usize {

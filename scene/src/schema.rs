@@ -42,6 +42,36 @@ pub struct SceneFile {
     /// `[[species]]`: the species of a granular mixture (none: one species).
     #[serde(default)]
     pub species: Option<Spanned<Vec<SpeciesSpec>>>,
+    /// `[rotation]`: rough particles (none: smooth particles).
+    #[serde(default)]
+    pub rotation: Option<RotationSpec>,
+}
+
+/// `[rotation]`: rough particles with tangential restitution (Huthmann and Zippelius 1997);
+/// their normal restitution is `collisions.restitution`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RotationSpec {
+    /// Tangential restitution beta in [-1, 1] (-1: smooth, 1: perfectly rough).
+    pub tangential_restitution: Spanned<f64>,
+    /// Reduced moment of inertia kappa in (0, 2/3]. Default 2/5 (uniform spheres).
+    #[serde(default = "two_fifths")]
+    pub inertia: Spanned<f64>,
+    /// Start rotational temperature (>= 0), a Maxwellian of the angular velocities. Default 1.
+    #[serde(default = "one")]
+    pub temperature: Spanned<f64>,
+    /// White-noise strength on rotation (>= 0): `dT_rot/dt = 2 noise` from it alone, as
+    /// `drive.beta` gives `dT_tr/dt = 2 beta`. Default 0.
+    #[serde(default = "zero")]
+    pub noise: Spanned<f64>,
+}
+
+fn two_fifths() -> Spanned<f64> {
+    Spanned::new(0..0, 0.4)
+}
+
+fn zero() -> Spanned<f64> {
+    Spanned::new(0..0, 0.0)
 }
 
 /// One `[[species]]` table: a species of a granular mixture (Garzó and Dufty 1999).

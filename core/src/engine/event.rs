@@ -109,23 +109,19 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
         rng: &mut R,
     ) -> bool {
         let (vi, vj) = (p.velocity(i), p.velocity(j));
-        let u = vi - vj;
-        self.counts.candidates += 1;
         let umax_event = self.maj.umax;
-        if K::USES_UMAX {
-            let u2 = u.norm2();
-            if u2 > umax_event * umax_event {
-                self.counts.overshoots += 1;
-            }
-            if cover_kicked {
-                self.maj.cover(vi);
-                self.maj.cover(vj);
-            }
-            if !self.kernel.accepts(u2, umax_event, uniform01(rng)) {
-                self.counts.fictitious += 1;
-                return self.maj.umax != umax_event;
-            }
+        if !admits(
+            &self.kernel,
+            &mut self.maj,
+            &mut self.counts,
+            vi,
+            vj,
+            cover_kicked,
+            rng,
+        ) {
+            return self.maj.umax != umax_event;
         }
+        let u = vi - vj;
         let e = unit_sphere(rng);
         let alpha = clamped_coefficient(&self.restitution, u, e, &mut self.counts);
         let (a, b) = inelastic(vi, vj, e, alpha);
@@ -149,6 +145,42 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
             self.maj = Majorant::new(2.0 * obs.max_peculiar_speed, obs.bulk);
         }
     }
+}
+
+/// The fictitious-collision test of a candidate pair with velocities `vi`, `vj` at the event
+/// time, against the majorant that generated the event (GRW (20)): counts the candidate (and
+/// an overshoot of the majorant, after which the kernel is truncated, RW (19)), lets the
+/// majorant cover the kicked velocities when `cover_kicked` (RW (21)), and returns whether
+/// the pair collides for real (counting a fictitious one). Kernels with no `Umax` always
+/// collide. Every Markov-jump loop's candidates pass through here.
+#[inline(always)]
+pub fn admits<K: Kernel, R: Rng + ?Sized>(
+    kernel: &K,
+    maj: &mut Majorant,
+    counts: &mut Counts,
+    vi: Vec3,
+    vj: Vec3,
+    cover_kicked: bool,
+    rng: &mut R,
+) -> bool {
+    counts.candidates += 1;
+    if !K::USES_UMAX {
+        return true;
+    }
+    let umax_event = maj.umax;
+    let u2 = (vi - vj).norm2();
+    if u2 > umax_event * umax_event {
+        counts.overshoots += 1;
+    }
+    if cover_kicked {
+        maj.cover(vi);
+        maj.cover(vj);
+    }
+    if !kernel.accepts(u2, umax_event, uniform01(rng)) {
+        counts.fictitious += 1;
+        return false;
+    }
+    true
 }
 
 /// The observables of a synchronized system, or [`EngineError::NonFinite`] (every loop's

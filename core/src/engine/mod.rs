@@ -39,6 +39,12 @@ pub trait EventLoop {
     fn species(&self, _p: &Particles<'_>) -> Option<crate::mixture::MixtureObservables> {
         None
     }
+
+    /// A rough gas's rotational observables (`None` for a smooth gas). The particles must be
+    /// at the current time (as after [`EventLoop::advance_to`]).
+    fn rough(&self, _p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+        None
+    }
 }
 
 macro_rules! impl_event_loop {
@@ -163,6 +169,8 @@ pub enum EngineError {
     OffGrid,
     /// The particle buffer does not hold the `n` particles the physics names.
     ParticleCount,
+    /// A rough gas was started without one spin per particle.
+    Spins,
 }
 
 impl core::fmt::Display for EngineError {
@@ -177,6 +185,7 @@ impl core::fmt::Display for EngineError {
             }
             EngineError::OffGrid => "the time is not a multiple of the scheme's time step",
             EngineError::ParticleCount => "the particle buffer does not hold n particles",
+            EngineError::Spins => "a rough gas needs a spin buffer of n spins beside its particles",
         })
     }
 }

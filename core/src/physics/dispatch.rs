@@ -2,8 +2,11 @@
 //! `match` per level (kernel, drive, restitution law, scheme), each level generic over the
 //! choices above it, so that every leaf is a monomorphized event loop.
 
-use super::engine::{ByDrive, ByLaw, ByMixtureDrive, ByScheme, Engine, MixtureEngine};
+use super::engine::{
+    ByDrive, ByLaw, ByMixtureDrive, ByRoughDrive, ByScheme, Engine, MixtureEngine, RoughEngine,
+};
 use super::model::{DriveModel, KernelModel, LawModel, Model, SchemeModel};
+use super::rotation::RoughModel;
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
 use crate::drive::{Drive, NoDrive};
@@ -12,10 +15,10 @@ use crate::kernel::Kernel;
 use crate::math::Real;
 use crate::mixture::{MixtureNoSplitting, PairPhysics, StartError};
 use crate::moments::Observables;
-use crate::particles::Particle;
-use crate::particles::Particles;
+use crate::particles::{Particle, Particles, Spin};
 use crate::restitution::Restitution;
 use crate::rng::Rng;
+use crate::rough::RoughNoSplitting;
 use crate::vec3::Vec3;
 
 impl Model {
@@ -51,6 +54,15 @@ impl Model {
         if bad {
             return Err(EngineError::NonFinite("an initial velocity"));
         }
+        if let Some(r) = &self.rough {
+            // The rim velocities after all translational ones, from their own Maxwellian.
+            if !p.has_spins() {
+                return Err(EngineError::Spins);
+            }
+            for s in p.spins_mut() {
+                *s = Spin::new(r.start.sample(rng));
+            }
+        }
         Ok(())
     }
 
@@ -77,6 +89,14 @@ impl Model {
                 KernelModel::Vhs(k) => wrap(mixture(mx, k, self.drive, p, t0), MixtureEngine::Vhs),
             };
             return wrap(engine, Engine::Mixture);
+        }
+        if let Some(r) = &self.rough {
+            let engine = match self.kernel {
+                KernelModel::Maxwell(k) => wrap(rough(r, k, p, t0), RoughEngine::Maxwell),
+                KernelModel::HardSpheres(k) => wrap(rough(r, k, p, t0), RoughEngine::HardSpheres),
+                KernelModel::Vhs(k) => wrap(rough(r, k, p, t0), RoughEngine::Vhs),
+            };
+            return wrap(engine, Engine::Rough);
         }
         match self.kernel {
             KernelModel::Maxwell(k) => wrap(self.by_drive(k, p, t0), Engine::Maxwell),
@@ -215,6 +235,25 @@ fn mixture<K: Kernel>(
 
 /// A mixture loop's start as an engine's: its refusal as an engine error (the model was
 /// validated, so only the engine's own refusals remain), the whole gas's observables.
+#[inline(never)]
+fn rough<K: Kernel>(
+    r: &RoughModel,
+    k: K,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Result<(ByRoughDrive<K>, Observables), EngineError> {
+    match r.noise {
+        None => wrap(
+            RoughNoSplitting::start(k, NoDrive, r.map, p, t0),
+            ByRoughDrive::None,
+        ),
+        Some(d) => wrap(
+            RoughNoSplitting::start(k, d, r.map, p, t0),
+            ByRoughDrive::Noise,
+        ),
+    }
+}
+
 fn started<E>(
     e: Result<(E, crate::mixture::MixtureObservables), StartError>,
 ) -> Result<(E, Observables), EngineError> {

@@ -16,6 +16,7 @@ use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
 use crate::rng::Rng;
+use crate::rough::{RoughNoSplitting, RoughNoise, RoughObservables};
 use crate::vec3::Vec3;
 
 /// The engine of a validated physics, by kernel.
@@ -34,6 +35,28 @@ pub enum Engine {
     Vhs(ByDrive<Vhs>),
     /// A mixture of several species.
     Mixture(MixtureEngine),
+    /// Rough particles (translation and rotation).
+    Rough(RoughEngine),
+}
+
+/// A rough gas's engine (no-splitting, a constant normal restitution), by kernel.
+#[derive(Clone, Debug)]
+pub enum RoughEngine {
+    /// Maxwell pseudo-molecules.
+    Maxwell(ByRoughDrive<Maxwell>),
+    /// Hard spheres.
+    HardSpheres(ByRoughDrive<HardSpheres>),
+    /// Variable hard spheres.
+    Vhs(ByRoughDrive<Vhs>),
+}
+
+/// A rough gas's engine by drive, for kernel `K`.
+#[derive(Clone, Debug)]
+pub enum ByRoughDrive<K> {
+    /// No drive: the gas cools.
+    None(RoughNoSplitting<K, NoDrive>),
+    /// White noise on translation and rotation.
+    Noise(RoughNoSplitting<K, RoughNoise>),
 }
 
 /// A mixture's engine (no-splitting, a constant restitution per species pair), by kernel.
@@ -122,11 +145,16 @@ macro_rules! forward {
             fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
                 match self { $(Self::$v(e) => EventLoop::species(e, p)),+ }
             }
+            fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
+                match self { $(Self::$v(e) => EventLoop::rough(e, p)),+ }
+            }
         }
     };
 }
 
-forward!(Engine, [], Maxwell, HardSpheres, Vhs, Mixture);
+forward!(Engine, [], Maxwell, HardSpheres, Vhs, Mixture, Rough);
+forward!(RoughEngine, [], Maxwell, HardSpheres, Vhs);
+forward!(ByRoughDrive<K>, [K: Kernel], None, Noise);
 forward!(MixtureEngine, [], Maxwell, HardSpheres, Vhs);
 forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);

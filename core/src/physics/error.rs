@@ -68,6 +68,16 @@ pub enum Param {
     SpeciesBeta(usize),
     /// Restitution coefficient of the species pair `(s, t)`.
     PairRestitution(usize, usize),
+    /// The rotation of rough particles as a whole.
+    Rotation,
+    /// The tangential restitution beta of rough particles, in [-1, 1].
+    TangentialRestitution,
+    /// The reduced moment of inertia kappa, in (0, 2/3].
+    Inertia,
+    /// The start temperature of rotation, >= 0.
+    RotationTemperature,
+    /// The white-noise strength on rotation, >= 0.
+    RotationNoise,
 }
 
 impl core::fmt::Display for Param {
@@ -103,6 +113,11 @@ impl core::fmt::Display for Param {
             Param::SpeciesDiameter(k) => write!(f, "species[{k}].diameter"),
             Param::SpeciesBeta(k) => write!(f, "species[{k}].beta"),
             Param::PairRestitution(s, t) => write!(f, "restitution of species pair ({s}, {t})"),
+            Param::Rotation => f.write_str("rotation"),
+            Param::TangentialRestitution => f.write_str("tangential_restitution"),
+            Param::Inertia => f.write_str("inertia"),
+            Param::RotationTemperature => f.write_str("rotation_temperature"),
+            Param::RotationNoise => f.write_str("rotation_noise"),
         }
     }
 }

@@ -44,6 +44,7 @@ mod dispatch;
 pub mod engine;
 pub mod error;
 pub mod model;
+mod rotation;
 mod species;
 
 pub use engine::Engine;
@@ -208,6 +209,36 @@ pub struct SpeciesChoice {
     pub beta: Real,
 }
 
+/// The rotation of rough particles (Huthmann and Zippelius 1997; [`crate::rough`]): the
+/// normal restitution is the description's constant `restitution` (alpha).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RotationChoice {
+    /// Tangential restitution beta in [-1, 1] (-1: smooth, rotation untouched; 1: perfectly
+    /// rough).
+    pub beta: Real,
+    /// Reduced moment of inertia `kappa = 4 I / (m sigma^2)` in (0, 2/3] (2/5: uniform
+    /// spheres).
+    pub kappa: Real,
+    /// Start rotational temperature `T_rot >= 0` (a Maxwellian of the rim velocities).
+    pub temperature: Real,
+    /// White-noise strength on rotation `>= 0`: `dT_rot/dt = 2 noise` from it alone
+    /// ([`crate::rough::drive`]).
+    pub noise: Real,
+}
+
+impl RotationChoice {
+    /// Uniform spheres (`kappa = 2/5`) with tangential restitution `beta`, starting at
+    /// `T_rot = 1`, no noise on rotation.
+    pub fn spheres(beta: Real) -> Self {
+        RotationChoice {
+            beta,
+            kappa: 0.4,
+            temperature: 1.0,
+            noise: 0.0,
+        }
+    }
+}
+
 /// Everything physical about a simulation, as plain data; see the module docs.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Physics {
@@ -230,6 +261,10 @@ pub struct Physics {
     /// The restitution coefficient of each species pair `(s, t)`, `s <= t`, in the order
     /// `(0,0), (0,1), .., (1,1), ..` (empty: the constant `restitution` for every pair).
     pub pair_restitution: heapless::Vec<Real, MAX_PAIRS>,
+    /// Rough particles: their rotation (`None`: smooth particles). A rough gas needs a constant
+    /// restitution (alpha), no drive or white noise, the no-splitting scheme and one spin per
+    /// particle beside the particle buffer ([`crate::particles::Particles::with_spins`]).
+    pub rotation: Option<RotationChoice>,
 }
 
 impl Physics {
@@ -253,6 +288,7 @@ impl Physics {
             scheme,
             species: heapless::Vec::new(),
             pair_restitution: heapless::Vec::new(),
+            rotation: None,
         }
     }
 

@@ -61,6 +61,7 @@ pub struct Model {
     pub(super) drive: DriveModel,
     pub(super) scheme: SchemeModel,
     pub(super) mixture: Option<super::species::MixtureModel>,
+    pub(super) rough: Option<super::rotation::RoughModel>,
 }
 
 fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -92,6 +93,7 @@ pub(crate) fn particle_count(n: usize) -> Result<(), PhysicsError> {
     check_count(n).or_else(|e| match e {
         ParticlesError::TooFew => err(Param::N, Problem::TooFewParticles(n)),
         ParticlesError::TooMany => err(Param::N, Problem::TooManyParticles(n)),
+        ParticlesError::SpinCount => unreachable!("check_count does not look at spins"),
     })
 }
 
@@ -291,6 +293,7 @@ impl Model {
         let drive = drive(physics.drive)?;
         let scheme = scheme(physics.scheme, kernel, physics.drive)?;
         let mixture = super::species::mixture(physics, kernel, law, drive, scheme)?;
+        let rough = super::rotation::rotation(physics, law, drive, scheme)?;
         Ok(Model {
             n: physics.n,
             initial,
@@ -299,12 +302,18 @@ impl Model {
             drive,
             scheme,
             mixture,
+            rough,
         })
     }
 
     /// Particles per system.
     pub fn n(&self) -> usize {
         self.n
+    }
+
+    /// The collision map of a rough gas (`None`: smooth particles, no spins needed).
+    pub fn rough_map(&self) -> Option<&crate::rough::RoughMap> {
+        self.rough.as_ref().map(|r| &r.map)
     }
 
     /// The species of a mixture (`None`: one species).

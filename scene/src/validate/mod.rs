@@ -8,6 +8,7 @@ mod collisions;
 mod drive;
 mod observe;
 mod particles;
+mod rotation;
 pub(crate) mod scheme;
 pub mod species;
 
@@ -91,6 +92,7 @@ impl SceneFile {
         let times = observe::times(&ctx, &self.observe)?;
         let scheme = scheme::scheme(&mut ctx, &self.scheme)?;
         let mixture = species::mixture(&mut ctx, self, n)?;
+        let rotation = rotation::rotation(&mut ctx, &self.rotation);
         let physics = Physics {
             n,
             initial,
@@ -100,6 +102,7 @@ impl SceneFile {
             scheme,
             species: mixture.species,
             pair_restitution: mixture.pair_restitution,
+            rotation,
         };
         physics.validate().map_err(|e| ctx.physics_error(e))?;
         scheme::on_grid(&ctx, &self.scheme, physics.scheme, &times)?;

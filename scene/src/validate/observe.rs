@@ -123,6 +123,14 @@ pub(super) fn observe(
              collisions.impact_speed_law",
         );
     }
+    if pairs > 0 && physics.rotation.is_some() {
+        return ctx.invalid(
+            o.collisional_pairs.as_ref().map_or(0..0, |k| k.span()),
+            "observe.collisional_pairs",
+            "gives the smooth gas's collisional moments (MS (65)-(67)); not available with \
+             [rotation]",
+        );
+    }
     Ok((steady_from, pairs))
 }
 

@@ -73,7 +73,9 @@ pub struct Reduced {
 /// The tail law of MS for this scene, with `mu_2` from the run (pairs) or, without pairs,
 /// the first Sonine approximation `mu_2^(0) (1 + 3 a2 / 16)` (MS (26), (28)).
 pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
-    if !matches!(scene.physics.kernel, KernelChoice::HardSpheres { .. }) {
+    if !matches!(scene.physics.kernel, KernelChoice::HardSpheres { .. })
+        || !scene.translation_is_smooth()
+    {
         return None;
     }
     // MS's tail laws assume a constant restitution coefficient.

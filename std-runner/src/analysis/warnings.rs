@@ -66,11 +66,21 @@ fn non_finite(stats: &RunStats) -> Option<Warning> {
 /// The temperature columns a steady-state window is checked on.
 const STEADY_CHECKED: [&str; 2] = ["T", "T_bulk"];
 
-/// The columns a steady-state window must hold steady: the temperatures, or for a mixture
-/// its species' temperature ratios (a cooling mixture's temperature keeps falling while its
+/// The columns a steady-state window must hold steady: the temperatures, for a cooling rough
+/// gas theta, or for a mixture its species' temperature ratios (a cooling mixture's temperature keeps falling while its
 /// ratios settle: Garzó and Dufty 1999's cooling state).
 fn steady_checked(scene: &Scene) -> Vec<&'static str> {
     let species = scene.physics.species.len();
+    if let Some(r) = scene.physics.rotation {
+        // A cooling rough gas's temperatures keep falling while theta settles (Luding et al.
+        // 1998); a heated one's settle themselves.
+        let heated = !matches!(scene.physics.drive, DriveChoice::None) || r.noise > 0.0;
+        return if heated {
+            vec!["T_bulk", "T_rot"]
+        } else {
+            vec!["theta"]
+        };
+    }
     if species == 0 {
         return STEADY_CHECKED.to_vec();
     }
@@ -138,7 +148,8 @@ fn tail_not_asymptotic(scene: &Scene, stats: &RunStats) -> Option<Warning> {
     let (inner, outer) = halves(*radius, h)?;
     let drifts = (outer.slope - inner.slope).abs() > inner.slope_ci + outer.slope_ci;
     let reference = crate::analysis::tails::reference_exponent(scene);
-    let heated = matches!(scene.physics.drive, DriveChoice::WhiteNoise(b) if b > 0.0)
+    let heated = scene.translation_is_smooth()
+        && matches!(scene.physics.drive, DriveChoice::WhiteNoise(b) if b > 0.0)
         && matches!(scene.physics.restitution, crate::scene::RestitutionLaw::Constant(a) if a < 1.0);
     let misses = heated && (all.slope - reference).abs() > all.slope_ci;
     if !(drifts || misses) {

@@ -18,8 +18,8 @@ pub struct ReferenceCurve {
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
 pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
-    if !scene.physics.species.is_empty() {
-        return None; // a one-species solution
+    if !scene.physics.species.is_empty() || !scene.translation_is_smooth() {
+        return None; // a one-species solution of smooth particles
     }
     let alpha = scene.physics.restitution.constant()?;
     let KernelChoice::Maxwell { gamma, c } = scene.physics.kernel else {
@@ -214,12 +214,86 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     out
 }
 
+/// The Maxwellian approximation of a rough gas (`reference/rough.rs`), when the scene is one.
+pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::RoughApproximation> {
+    let r = scene.physics.rotation?;
+    let alpha = scene.physics.restitution.constant()?;
+    let (strength, lambda) = match scene.physics.kernel {
+        KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
+        KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
+        KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
+    };
+    let beta = match scene.physics.drive {
+        DriveChoice::WhiteNoise(b) => b,
+        _ => 0.0,
+    };
+    Some(crate::reference::rough::RoughApproximation::new(
+        alpha,
+        r.beta,
+        r.kappa,
+        strength,
+        lambda,
+        [beta, r.noise],
+    ))
+}
+
+/// A rough gas's Maxwellian-approximation curves: `T_bulk_MA` (the translational temperature),
+/// `T_rot_MA` and `theta_MA`, solved from the scene's start.
+fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
+    let (Some(ma), Some(f0), Some(r)) = (
+        rough_approximation(scene),
+        initial_sampler(scene),
+        scene.physics.rotation,
+    ) else {
+        return Vec::new();
+    };
+    let t_end = scene.times.last().copied().unwrap_or(1.0);
+    let src = "Maxwellian approximation (Huthmann and Zippelius 1997)";
+    match crate::reference::rough::RoughTrajectory::new(
+        &ma,
+        [f0.temperature(), r.temperature],
+        t_end,
+    ) {
+        Ok(tr) => {
+            let tr = std::sync::Arc::new(tr);
+            let (a, b, c) = (tr.clone(), tr.clone(), tr);
+            vec![
+                ReferenceCurve {
+                    name: "T_bulk_MA",
+                    of: "T_bulk",
+                    source: src,
+                    curve: Box::new(move |t| a.at(t).0),
+                },
+                ReferenceCurve {
+                    name: "T_rot_MA",
+                    of: "T_rot",
+                    source: src,
+                    curve: Box::new(move |t| b.at(t).1),
+                },
+                ReferenceCurve {
+                    name: "theta_MA",
+                    of: "theta",
+                    source: src,
+                    curve: Box::new(move |t| {
+                        let (x, y) = c.at(t);
+                        y / x
+                    }),
+                },
+            ]
+        }
+        Err(e) => {
+            eprintln!("{src}: not integrated ({e})");
+            Vec::new()
+        }
+    }
+}
+
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     if !scene.physics.species.is_empty() {
         return mixture_curves(scene);
     }
-    let mut out = Vec::new();
+    let mut out = rough_curves(scene);
     if let (Some(models), Some(f0)) = (hydro_models(scene), initial_sampler(scene)) {
         let t_end = scene.times.last().copied().unwrap_or(1.0);
         for (model, (tn, vn, src)) in models.iter().zip([

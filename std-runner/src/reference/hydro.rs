@@ -109,6 +109,20 @@ impl System<f64, State> for HydroModel {
     }
 }
 
+/// Where `t` falls in the dense output `p` (times by `x`, increasing, at least two points):
+/// `(i, f)` with `t` at the fraction `f` in [0, 1] of the way from point `i - 1` to point `i`
+/// (clamped at the ends), for linear interpolation.
+pub fn bracket<T>(p: &[T], x: impl Fn(&T) -> f64, t: f64) -> (usize, f64) {
+    let i = p.partition_point(|q| x(q) <= t).clamp(1, p.len() - 1);
+    let (a, b) = (x(&p[i - 1]), x(&p[i]));
+    let f = if b > a {
+        ((t - a) / (b - a)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (i, f)
+}
+
 /// A solved closure as a function of time (linear interpolation on the dense output).
 pub struct Trajectory {
     points: Vec<(f64, [f64; 3], f64)>,
@@ -123,14 +137,8 @@ impl Trajectory {
     }
 
     fn at(&self, t: f64) -> ([f64; 3], f64) {
-        let p = &self.points;
-        let i = p.partition_point(|q| q.0 <= t).clamp(1, p.len() - 1);
-        let (a, b) = (&p[i - 1], &p[i]);
-        let f = if b.0 > a.0 {
-            ((t - a.0) / (b.0 - a.0)).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
+        let (i, f) = bracket(&self.points, |q| q.0, t);
+        let (a, b) = (&self.points[i - 1], &self.points[i]);
         (
             std::array::from_fn(|k| a.1[k] + f * (b.1[k] - a.1[k])),
             a.2 + f * (b.2 - a.2),

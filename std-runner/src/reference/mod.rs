@@ -7,4 +7,5 @@ pub mod curves;
 pub mod exact;
 pub mod hydro;
 pub mod mixture;
+pub mod rough;
 pub mod thermostat;

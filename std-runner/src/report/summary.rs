@@ -2,7 +2,7 @@
 
 use crate::reference::curves::ReferenceCurve;
 use crate::run::RunStats;
-use crate::scene::Scene;
+use crate::scene::{DriveChoice, Scene};
 use std::fmt::Write;
 
 /// The summary: scene, sizes, timing, counts, and a table of T, T_bulk, a2 and crit at up to
@@ -63,6 +63,14 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         shown = vec![crate::run::columns::MIXTURE_TEMPERATURE];
         shown.extend(cols[..scene.physics.species.len()].iter().map(|c| c[0]));
         shown.push(cols[0][1]);
+    }
+    if let Some(r) = scene.physics.rotation {
+        let _ = writeln!(
+            s,
+            "rotation   rough particles: tangential restitution beta = {}, kappa = {}; T_bulk is the translational temperature",
+            r.beta, r.kappa
+        );
+        shown = vec!["T_bulk", "T_rot", "theta", "a2", "a2_rot"];
     }
     let _ = write!(s, "\n{:>8}", "t");
     for &name in &shown {
@@ -180,6 +188,15 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
                 names.extend([c[1], c[2]]);
             }
             names.extend(&crate::run::columns::COOLING_COLUMNS[..=scene.physics.species.len()]);
+        }
+        if let Some(r) = scene.physics.rotation {
+            // A cooling rough gas's temperatures keep falling: only its ratios settle.
+            let heated = !matches!(scene.physics.drive, DriveChoice::None) || r.noise > 0.0;
+            names = if heated {
+                vec!["T_bulk", "T_rot", "theta", "T_total", "a2", "a2_rot", "cw2"]
+            } else {
+                vec!["theta", "a2", "a2_rot", "cw2"]
+            };
         }
         for name in names {
             let Some(col) = stats.col(name) else { continue };

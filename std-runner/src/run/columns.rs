@@ -125,6 +125,18 @@ pub const SPECIES_COLUMNS: [[&str; 4]; gdsmc_core::mixture::MAX_SPECIES] = [
 pub const COOLING_COLUMNS: [&str; gdsmc_core::mixture::MAX_SPECIES + 1] =
     ["zeta_mix", "zeta_s0", "zeta_s1", "zeta_s2", "zeta_s3"];
 
+/// A rough gas's columns (Huthmann and Zippelius 1997): the rotational temperature
+/// `T_rot = kappa <|w|^2>/3`, `theta = T_rot / T_bulk` (`T_bulk` is the translational
+/// temperature `T_tr`), the mean energy per degree of freedom `T_total = (T_bulk + T_rot)/2`,
+/// the rim velocities' fourth cumulant `a2_rot` and the translation-rotation correlation
+/// `cw2 = 3 <(c . w)^2> / (<c^2> <w^2>) - 1` (Brilliantov et al. 2007).
+pub const ROUGH_COLUMNS: [&str; 5] = ["T_rot", "theta", "T_total", "a2_rot", "cw2"];
+
+/// The rough columns' values of one observation, in [`ROUGH_COLUMNS`] order.
+pub fn rough_values(r: &gdsmc_core::rough::RoughObservables) -> [f64; 5] {
+    [r.t_rot, r.theta(), r.t_total(), r.a2_rot, r.cw2]
+}
+
 /// The mixture columns' values of one observation, in [`names`] order.
 pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
     let t = m.mixture_temperature();
@@ -138,7 +150,8 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
 }
 
 /// The column names of a scene's observables.csv, in order: [`COLUMNS`], then `mu2`, `mu4`
-/// (MS (67)) when `observe.collisional_pairs` is set, then a mixture's columns
+/// (MS (67)) when `observe.collisional_pairs` is set, then a rough gas's [`ROUGH_COLUMNS`],
+/// then a mixture's columns
 /// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species, and with
 /// `observe.collisional_pairs` the [`COOLING_COLUMNS`] instead of `mu2`, `mu4`).
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
@@ -146,6 +159,9 @@ pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let species = scene.physics.species.len();
     if scene.collisional_pairs > 0 && species == 0 {
         v.extend(COLLISIONAL);
+    }
+    if scene.physics.rotation.is_some() {
+        v.extend(ROUGH_COLUMNS);
     }
     if species > 0 {
         v.push(MIXTURE_TEMPERATURE);

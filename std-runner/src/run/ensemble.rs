@@ -9,7 +9,7 @@ use gdsmc_core::collisional::collisional_moments;
 use gdsmc_core::engine::{Counts, EngineError, EventLoop};
 use gdsmc_core::histogram::{component_bins, radial_shells_mapped};
 use gdsmc_core::moments::Observables;
-use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::physics::{MAX_COMPONENTS, Model};
 use gdsmc_core::rng::Xoshiro256PlusPlus;
 use gdsmc_core::sample::MaxwellianMixture;
@@ -56,17 +56,50 @@ pub fn particle_buffer(n: usize) -> Result<Vec<Particle>, crate::Error> {
     Ok(buf)
 }
 
+/// Room for the spins of a rough gas's `n` particles (empty for smooth particles), asked of
+/// the allocator fallibly as [`particle_buffer`] does.
+pub fn spin_buffer(model: &Model) -> Result<Vec<Spin>, crate::Error> {
+    let n = if model.rough_map().is_some() {
+        model.n()
+    } else {
+        0
+    };
+    let mut buf = Vec::new();
+    buf.try_reserve_exact(n)
+        .map_err(|_| crate::Error::OutOfMemory {
+            what: format!("the spins of `particles.n` = {n} rough particles"),
+            bytes: n.saturating_mul(std::mem::size_of::<Spin>()),
+        })?;
+    crate::run::pages::advise_huge(buf.spare_capacity_mut());
+    buf.resize(n, Spin::default());
+    Ok(buf)
+}
+
+/// One worker's memory for a system: the particles and, for a rough gas, their spins.
+pub type SystemBuffer = (Vec<Particle>, Vec<Spin>);
+
+/// The [`SystemBuffer`] of `model`'s systems.
+pub fn system_buffer(model: &Model) -> Result<SystemBuffer, crate::Error> {
+    Ok((particle_buffer(model.n())?, spin_buffer(model)?))
+}
+
 /// Runs one ensemble of `scene` (whose physics `model` is) from the generator `rng` in the
-/// particle buffer `buf` (from [`particle_buffer`]; its contents are overwritten): the
-/// observables at every observation time, row-major (`times x COLUMNS`), and the event counts.
+/// buffers `buf` (from [`system_buffer`]; their contents are overwritten): the observables at
+/// every observation time, row-major (`times x COLUMNS`), and the event counts.
 pub fn run_ensemble(
     scene: &Scene,
     model: &Model,
     mut rng: Xoshiro256PlusPlus,
-    buf: &mut [Particle],
+    buf: &mut SystemBuffer,
 ) -> Result<(Vec<f64>, Counts), EnsembleError> {
     let at0 = |error| EnsembleError { t: 0.0, error };
-    let mut p = Particles::new(buf).map_err(|_| at0(EngineError::ParticleCount))?;
+    let (particles, spins) = buf;
+    let mut p = if spins.is_empty() {
+        Particles::new(particles)
+    } else {
+        Particles::with_spins(particles, spins)
+    }
+    .map_err(|_| at0(EngineError::ParticleCount))?;
     let (engine, obs0) = model.launch(&mut p, 0.0, &mut rng).map_err(at0)?;
     observe(scene, engine, obs0, &mut p, &mut rng)
 }
@@ -135,6 +168,9 @@ fn observe<E: EventLoop>(
             let (mu2, mu4) =
                 collisional_moments(p, bulk, t_bulk, alpha, scene.collisional_pairs, &mut diag);
             out.extend([mu2, mu4]);
+        }
+        if let Some(r) = engine.rough(p) {
+            out.extend(crate::run::columns::rough_values(&r));
         }
         if let Some(m) = engine.species(p) {
             out.extend(crate::run::columns::mixture_values(&m));

@@ -21,7 +21,10 @@ pub mod shard;
 pub mod stats;
 pub mod totals;
 
-pub use ensemble::{initial_sampler, initial_temperature, particle_buffer, run_ensemble};
+pub use ensemble::{
+    SystemBuffer, initial_sampler, initial_temperature, particle_buffer, run_ensemble,
+    system_buffer,
+};
 pub use results::{RunStats, SteadyStats};
 
 use crate::error::Error;
@@ -139,7 +142,7 @@ impl EnsembleJob<'_> {
             let Some(rng) = rngs.get(i) else { return };
             let done = match &mut particles {
                 Some(buf) => Ok(buf),
-                None => particle_buffer(self.model.n()).map(|b| particles.insert(b)),
+                None => system_buffer(self.model).map(|b| particles.insert(b)),
             }
             .and_then(|buf| {
                 run_ensemble(self.scene, self.model, rng.clone(), buf).map_err(|err| {
