@@ -1,0 +1,91 @@
+//! Rough particles (`gdsmc_core::rough`) through the scene and the runner: with tangential
+//! restitution beta = -1 the translation is the smooth gas's, exactly in law: the Maxwell
+//! kernel's `T_bulk` is GRW (13)'s exact finite-n mean at every time, and hard spheres give the
+//! smooth loop's `T_bulk` (a two-sample check). Both families are checked at the 99.9% level
+//! jointly (Bonferroni over their time points), and each shows it can fail: beta = 0 leaves
+//! GRW (13) at most times.
+
+use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_validation::*;
+
+const MAXWELL_SMOOTH: [&str; 6] = [
+    "collisions.kernel=maxwell",
+    "collisions.restitution=0.5",
+    "rotation.tangential_restitution=-1",
+    "rotation.temperature=2.0",
+    "drive.kind=white-noise",
+    "drive.beta=1.0",
+];
+
+#[test]
+fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
+    let n = 8;
+    let mut s = shipped_set("rough-hcs", &MAXWELL_SMOOTH, n, 20_000, 1601);
+    s.times = (0..=8).map(|k| 0.5 * k as f64).collect();
+    s.steady_from = None;
+    let mt = maxwell_temperature(&s).expect("beta = -1: GRW (13) applies");
+    let st = run(&s);
+    let f = family_factor(st.times.len());
+    for (ti, &t) in st.times.iter().enumerate() {
+        let (m, c) = at(&st, ti, "T_bulk");
+        let exact = mt.finite_n_bulk_mean(n, t);
+        assert!(
+            (m - exact).abs() <= f * c,
+            "t = {t}: T_bulk {m} +- {}, exact {exact}",
+            f * c
+        );
+        // No collision touches the rotation: T_rot keeps its start (a Maxwellian at 2).
+        let (r, rc) = at(&st, ti, "T_rot");
+        assert!((r - 2.0).abs() <= f * rc, "t = {t}: T_rot {r} +- {rc}");
+    }
+    // The same comparison refuses a rough gas: with beta = 0 the translation loses energy to
+    // the rotation and GRW (13) no longer holds.
+    let mut set = MAXWELL_SMOOTH;
+    set[2] = "rotation.tangential_restitution=0";
+    let mut r = shipped_set("rough-hcs", &set, n, 20_000, 1602);
+    r.times = s.times.clone();
+    r.steady_from = None;
+    assert!(maxwell_temperature(&r).is_none());
+    let st = run(&r);
+    let outside = (1..st.times.len())
+        .filter(|&ti| {
+            let (m, c) = at(&st, ti, "T_bulk");
+            (m - mt.finite_n_bulk_mean(n, st.times[ti])).abs() > f * c
+        })
+        .count();
+    assert!(
+        outside >= st.times.len() - 2,
+        "only {outside} times tell beta = 0 from smooth"
+    );
+}
+
+#[test]
+fn the_smooth_limit_of_rough_hard_spheres_is_the_smooth_gas() {
+    let n = 64;
+    let set = [
+        "collisions.restitution=0.7",
+        "rotation.tangential_restitution=-1",
+    ];
+    let mut rough = shipped_set("rough-hcs", &set, n, 4000, 1603);
+    rough.times = (0..=6).map(|k| 0.5 * k as f64).collect();
+    rough.steady_from = None;
+    let mut smooth = rough.clone();
+    smooth.physics.rotation = None;
+    smooth.seed = 1604;
+    let (a, b) = (run(&rough), run(&smooth));
+    let f = family_factor(a.times.len() - 1);
+    let mut moved = 0.0;
+    for ti in 1..a.times.len() {
+        let (ma, ca) = at(&a, ti, "T_bulk");
+        let (mb, cb) = at(&b, ti, "T_bulk");
+        let h = f * (ca * ca + cb * cb).sqrt();
+        assert!(
+            (ma - mb).abs() <= h,
+            "t = {}: rough (beta = -1) {ma} vs smooth {mb} +- {h}",
+            a.times[ti]
+        );
+        moved = ma;
+    }
+    // The gas cooled: the check compares something that changed.
+    assert!(moved < 0.5, "T_bulk only fell to {moved}");
+}
