@@ -18,6 +18,10 @@
 //! dw1 =  dw2 = (n x dv1) / kappa,            eta_t = (1 + beta)/2 kappa/(1 + kappa).
 //! ```
 //!
+//! Computed as `dw = -(eta_t / kappa) n x g_t` with `eta_t / kappa = (1 + beta)/(2 (1 + kappa))`:
+//! `n x g_n = 0` exactly, but not in floating point, and dividing its rounding residue by a
+//! small kappa blew the spins up (found by the `rough_maps` fuzz target at kappa = 8e-308).
+//!
 //! Linear momentum is kept, and the angular momentum about the contact point; the energy
 //! `E = (m/2) sum (|v|^2 + kappa |w|^2)` changes by
 //! `-(m/4) [(1 - alpha^2) |g_n|^2 + (1 - beta^2) kappa/(1 + kappa) |g_t|^2]`
@@ -72,6 +76,8 @@ pub struct RoughMap {
     kappa: Real,
     eta_n: Real,
     eta_t: Real,
+    /// `eta_t / kappa = (1 + beta) / (2 (1 + kappa))`.
+    eta_w: Real,
 }
 
 impl RoughMap {
@@ -92,6 +98,7 @@ impl RoughMap {
             kappa,
             eta_n: 0.5 * (1.0 + alpha),
             eta_t: 0.5 * (1.0 + beta) * kappa / (1.0 + kappa),
+            eta_w: 0.5 * (1.0 + beta) / (1.0 + kappa),
         })
     }
 
@@ -134,7 +141,7 @@ impl RoughMap {
         if self.eta_t == 0.0 {
             return (v1 + dv, w1, v2 - dv, w2);
         }
-        let dw = (1.0 / self.kappa) * n.cross(dv);
+        let dw = -self.eta_w * n.cross(gt);
         (v1 + dv, w1 + dw, v2 - dv, w2 + dw)
     }
 
@@ -157,12 +164,16 @@ impl RoughMap {
 /// density proportional to `u_hat . n` (the impact parameter uniform on the disk; MS
 /// Section 3's kernel `Theta(u . s)(u . s)`). For `u = 0`, uniform on the sphere.
 pub fn impact_direction<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
-    let un = u.norm();
+    // Scaled by its largest component first: `|u|^2` of a tiny `u` (below 1e-154) underflows,
+    // which made such a `u` look like 0 (found by the `rough_maps` fuzz target).
+    let big = u.x.abs().max(u.y.abs()).max(u.z.abs());
     let e = unit_sphere(rng);
-    if un == 0.0 {
+    if big == 0.0 {
         return e;
     }
-    let uh = (1.0 / un) * u;
+    // Divided, not multiplied by `1/big`, which overflows for a subnormal `big`.
+    let us = Vec3::new(u.x / big, u.y / big, u.z / big);
+    let uh = (1.0 / us.norm()) * us;
     // cos theta = sqrt(1 - b^2) with b^2 uniform on [0, 1): density 2 cos sin on [0, pi/2].
     let c = sqrt(1.0 - uniform01(rng));
     // A unit vector perpendicular to u_hat from the uniform one (redrawn when parallel).

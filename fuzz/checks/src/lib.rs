@@ -5,6 +5,8 @@
 //! corpora as plain tests on the stable toolchain (`tests/replay.rs`).
 //!
 //! - [`collision_maps`]: GRW (3), its MS impact form, BRS (2), the impact-speed law BRS (9)-(10).
+//! - [`rough_maps`]: the rough-sphere map and the impact direction (Huthmann and Zippelius
+//!   1997).
 //! - [`samplers`]: every sampler at extreme parameters: no NaN, no infinity, no endless loop.
 //! - [`scene_reader`], [`scene_structured`]: arbitrary bytes and structure-aware TOML: an error
 //!   or a valid scene whose physics validates, never a panic.
@@ -13,11 +15,13 @@
 
 mod cabi;
 mod maps;
+mod rough;
 mod samplers;
 mod scene;
 
 pub use cabi::c_abi;
 pub use maps::collision_maps;
+pub use rough::rough_maps;
 pub use samplers::samplers;
 pub use scene::{scene_reader, scene_structured};
 

@@ -9,6 +9,7 @@ fn one() {
     let data = std::fs::read(input).expect("readable input");
     match std::env::var("GDSMC_FUZZ_TARGET").as_deref() {
         Ok("collision_maps") => gdsmc_fuzz_checks::collision_maps(&data),
+        Ok("rough_maps") => gdsmc_fuzz_checks::rough_maps(&data),
         Ok("samplers") => gdsmc_fuzz_checks::samplers(&data),
         Ok("scene_reader") => gdsmc_fuzz_checks::scene_reader(&data),
         Ok("scene_structured") => gdsmc_fuzz_checks::scene_structured(&data),

@@ -32,6 +32,11 @@ fn collision_maps() {
 }
 
 #[test]
+fn rough_maps() {
+    replay("rough_maps", gdsmc_fuzz_checks::rough_maps);
+}
+
+#[test]
 fn samplers() {
     replay("samplers", gdsmc_fuzz_checks::samplers);
 }
