@@ -172,6 +172,20 @@ typedef struct {
     double flow_velocity[3];
 } gdsmc_species_observables;
 
+// A rough gas's rotation at the simulation's current time (Huthmann and Zippelius 1997).
+typedef struct {
+    // Translational temperature `<|v - V|^2>/3` (the observables' `t_bulk`).
+    double translational_temperature;
+    // Rotational temperature `kappa <|w|^2>/3`.
+    double rotational_temperature;
+    // `theta = rotational / translational temperature`.
+    double theta;
+    // Fourth cumulant of the rim velocities, `(3/5) <|w|^4>/<|w|^2>^2 - 1`.
+    double a2_rot;
+    // Translation-rotation correlation `3 <(c . w)^2>/(<c^2> <w^2>) - 1`.
+    double cw2;
+} gdsmc_rotation_observables;
+
 // Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or
 // gdsmc_config_from_toml, then change fields. Enumerations are plain integers
 // (`GDSMC_KERNEL_*`, `GDSMC_DRIVE_*`, `GDSMC_SCHEME_*`) checked on use.
@@ -256,6 +270,22 @@ typedef struct {
     // Restitution of each species pair (s, t), s <= t, in the order (0,0), (0,1), ..,
     // (0,S-1), (1,1), ..: the first S (S + 1)/2 entries are used.
     double pair_restitution[GDSMC_MAX_PAIRS];
+    // Nonzero: rough particles (Huthmann and Zippelius 1997): each has a rim velocity
+    // `w = (sigma/2) omega` beside its velocity, and `restitution` is the normal restitution.
+    // The drive is none or white noise, the scheme no splitting, the restitution constant, no
+    // species. A caller buffer needs room for the spins: gdsmc_config_footprint.
+    uint32_t rough;
+    // Rough particles: tangential restitution beta in [-1, 1] (-1: smooth, rotation untouched;
+    // 1: perfectly rough).
+    double tangential_restitution;
+    // Rough particles: reduced moment of inertia `kappa = 4 I/(m sigma^2)` in (0, 2/3] (2/5:
+    // uniform spheres).
+    double inertia;
+    // Rough particles: start rotational temperature >= 0.
+    double rotation_temperature;
+    // Rough particles: white-noise strength on rotation >= 0 (`dT_rot/dt = 2 rotation_noise`
+    // from it alone).
+    double rotation_noise;
 } gdsmc_config;
 
 #ifdef __cplusplus
@@ -288,6 +318,14 @@ gdsmc_status gdsmc_sim_observables(gdsmc_sim *sim, gdsmc_observables *out);
 // gdsmc_species_observables.
 gdsmc_status gdsmc_sim_species(gdsmc_sim *sim, uint32_t k, gdsmc_species_observables *out);
 
+// Writes a rough gas's rotational observables at the current time to `*out`.
+// GDSMC_INVALID_ARGUMENT when the particles are smooth (`config.rough = 0`).
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one
+// gdsmc_rotation_observables.
+gdsmc_status gdsmc_sim_rotation(gdsmc_sim *sim, gdsmc_rotation_observables *out);
+
 // The number of particles in `*n`.
 //
 // # Safety
@@ -302,10 +340,18 @@ gdsmc_status gdsmc_sim_particle_count(gdsmc_sim *sim, uint64_t *n);
 // `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
 gdsmc_status gdsmc_sim_get_velocities(gdsmc_sim *sim, double *out, size_t len);
 
+// Copies a rough gas's rim velocities `w = (sigma/2) omega` out, in the layout of
+// gdsmc_sim_get_velocities (`len >= 3 n`); GDSMC_INVALID_ARGUMENT for smooth particles.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
+gdsmc_status gdsmc_sim_get_rim_velocities(gdsmc_sim *sim, double *out, size_t len);
+
 // Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
 // current time; the majorant and observables are recomputed. Non-finite values, and values so
 // large that the observables' sixth moments would overflow (|v| above about 1e50), are
-// refused with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
+// refused with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged. A rough gas keeps
+// its rim velocities.
 //
 // # Safety
 // `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.
@@ -319,8 +365,9 @@ gdsmc_status gdsmc_sim_reseed(gdsmc_sim *sim, uint64_t seed);
 
 // Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
 // alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
-// seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS) and a unit host medium for when those
-// are switched on.
+// seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS), a unit host medium, and smooth
+// uniform spheres' rotation (tangential restitution -1, inertia 2/5, rotational temperature 1)
+// for when those are switched on.
 //
 // # Safety
 // `out` must be NULL or point to writable memory for one gdsmc_config.
@@ -342,6 +389,16 @@ gdsmc_status gdsmc_sim_create(const gdsmc_config *config, gdsmc_sim **out);
 // # Safety
 // `bytes` and `align` must be NULL or writable for one size_t each.
 gdsmc_status gdsmc_sim_footprint(uint64_t n, size_t *bytes, size_t *align);
+
+// For the allocation-free variant: the bytes and alignment a caller buffer must have for the
+// simulation `*config` describes. The same as gdsmc_sim_footprint for smooth particles; a rough
+// gas (`config.rough`) needs room for its spins too. Refuses an invalid configuration with the
+// message gdsmc_sim_init_in would give.
+//
+// # Safety
+// `config` must be NULL or point to a gdsmc_config; `bytes` and `align` NULL or writable for
+// one size_t each.
+gdsmc_status gdsmc_config_footprint(const gdsmc_config *config, size_t *bytes, size_t *align);
 
 // The allocation-free variant of gdsmc_sim_create: builds the simulation inside `memory`
 // (`size` bytes, aligned as gdsmc_sim_footprint says; gdsmc allocates nothing). `*out`

@@ -2,7 +2,9 @@
 //! count, velocities, reseed.
 
 use crate::guard::{check_ptr, guard};
-use crate::observables::{gdsmc_observables, gdsmc_species_observables};
+use crate::observables::{
+    gdsmc_observables, gdsmc_rotation_observables, gdsmc_species_observables,
+};
 use crate::sim::{check_len, gdsmc_sim, live, particles_of};
 use crate::status::{engine_error, fail, gdsmc_status, msg};
 use gdsmc_core::engine::EventLoop;
@@ -27,7 +29,7 @@ pub unsafe extern "C" fn gdsmc_sim_advance(
             check_ptr(out, "out")?;
         }
         let mut rng = s.rng.clone();
-        let mut p = particles_of(s.particles, s.n);
+        let mut p = particles_of(s);
         let o = s
             .engine
             .advance_to(&mut p, t, &mut rng)
@@ -88,7 +90,7 @@ pub unsafe extern "C" fn gdsmc_sim_species(
     guard(|| {
         let s = live(sim)?;
         check_ptr(out, "out")?;
-        let p = particles_of(s.particles, s.n);
+        let p = particles_of(s);
         let Some(m) = s.engine.species(&p) else {
             return fail(
                 gdsmc_status::GDSMC_INVALID_ARGUMENT,
@@ -103,6 +105,33 @@ pub unsafe extern "C" fn gdsmc_sim_species(
         }
         // SAFETY: checked non-null and aligned.
         unsafe { out.write(gdsmc_species_observables::new(&m, k as usize)) };
+        Ok(())
+    })
+}
+
+/// Writes a rough gas's rotational observables at the current time to `*out`.
+/// GDSMC_INVALID_ARGUMENT when the particles are smooth (`config.rough = 0`).
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one
+/// gdsmc_rotation_observables.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_rotation(
+    sim: *mut gdsmc_sim,
+    out: *mut gdsmc_rotation_observables,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        let p = particles_of(s);
+        let Some(r) = s.engine.rough(&p) else {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                msg!("the particles are smooth (config.rough = 0)"),
+            );
+        };
+        // SAFETY: checked non-null and aligned.
+        unsafe { out.write(gdsmc_rotation_observables::new(&r)) };
         Ok(())
     })
 }
@@ -143,7 +172,7 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
         check_len(len, s.n)?;
         // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
         let dst = unsafe { core::slice::from_raw_parts_mut(out, 3 * s.n) };
-        let p = particles_of(s.particles, s.n);
+        let p = particles_of(s);
         let (scale, offset) = s.engine.velocity_map();
         for (d, q) in dst.chunks_exact_mut(3).zip(p.as_slice()) {
             let v = offset + scale * q.velocity();
@@ -153,10 +182,44 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
     })
 }
 
+/// Copies a rough gas's rim velocities `w = (sigma/2) omega` out, in the layout of
+/// gdsmc_sim_get_velocities (`len >= 3 n`); GDSMC_INVALID_ARGUMENT for smooth particles.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_get_rim_velocities(
+    sim: *mut gdsmc_sim,
+    out: *mut f64,
+    len: usize,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        if s.spins.is_null() {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                msg!("the particles are smooth (config.rough = 0)"),
+            );
+        }
+        check_len(len, s.n)?;
+        // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
+        let dst = unsafe { core::slice::from_raw_parts_mut(out, 3 * s.n) };
+        let p = particles_of(s);
+        let (scale, _) = s.engine.velocity_map();
+        for (d, q) in dst.chunks_exact_mut(3).zip(p.spins()) {
+            let w = scale * q.rim_velocity();
+            d.copy_from_slice(&[w.x, w.y, w.z]);
+        }
+        Ok(())
+    })
+}
+
 /// Copies velocities in (same layout as gdsmc_sim_get_velocities, `len >= 3 n`), at the
 /// current time; the majorant and observables are recomputed. Non-finite values, and values so
 /// large that the observables' sixth moments would overflow (|v| above about 1e50), are
-/// refused with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged.
+/// refused with GDSMC_INVALID_ARGUMENT and leave the simulation unchanged. A rough gas keeps
+/// its rim velocities.
 ///
 /// # Safety
 /// `sim` must be NULL or a handle from gdsmc; `velocities` NULL or readable for `len` doubles.
@@ -194,7 +257,7 @@ pub unsafe extern "C" fn gdsmc_sim_set_velocities(
                 ),
             );
         }
-        let mut p = particles_of(s.particles, s.n);
+        let mut p = particles_of(s);
         for (i, v) in src.chunks_exact(3).enumerate() {
             p.set_velocity(i, Vec3::new(v[0], v[1], v[2]));
         }

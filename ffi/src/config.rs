@@ -128,6 +128,22 @@ pub struct gdsmc_config {
     /// Restitution of each species pair (s, t), s <= t, in the order (0,0), (0,1), ..,
     /// (0,S-1), (1,1), ..: the first S (S + 1)/2 entries are used.
     pub pair_restitution: [f64; GDSMC_MAX_PAIRS],
+    /// Nonzero: rough particles (Huthmann and Zippelius 1997): each has a rim velocity
+    /// `w = (sigma/2) omega` beside its velocity, and `restitution` is the normal restitution.
+    /// The drive is none or white noise, the scheme no splitting, the restitution constant, no
+    /// species. A caller buffer needs room for the spins: gdsmc_config_footprint.
+    pub rough: u32,
+    /// Rough particles: tangential restitution beta in [-1, 1] (-1: smooth, rotation untouched;
+    /// 1: perfectly rough).
+    pub tangential_restitution: f64,
+    /// Rough particles: reduced moment of inertia `kappa = 4 I/(m sigma^2)` in (0, 2/3] (2/5:
+    /// uniform spheres).
+    pub inertia: f64,
+    /// Rough particles: start rotational temperature >= 0.
+    pub rotation_temperature: f64,
+    /// Rough particles: white-noise strength on rotation >= 0 (`dT_rot/dt = 2 rotation_noise`
+    /// from it alone).
+    pub rotation_noise: f64,
 }
 
 /// Most species a mixture may have (the core's `mixture::MAX_SPECIES`, written out for the
@@ -181,14 +197,20 @@ impl gdsmc_config {
             species_beta: [0.0; GDSMC_MAX_SPECIES],
             pair_restitution_set: 0,
             pair_restitution: [1.0; GDSMC_MAX_PAIRS],
+            rough: 0,
+            tangential_restitution: -1.0,
+            inertia: 0.4,
+            rotation_temperature: 1.0,
+            rotation_noise: 0.0,
         }
     }
 }
 
 /// Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
 /// alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
-/// seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS) and a unit host medium for when those
-/// are switched on.
+/// seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS), a unit host medium, and smooth
+/// uniform spheres' rotation (tangential restitution -1, inertia 2/5, rotational temperature 1)
+/// for when those are switched on.
 ///
 /// # Safety
 /// `out` must be NULL or point to writable memory for one gdsmc_config.

@@ -3,7 +3,7 @@
 
 use crate::config::gdsmc_config;
 use crate::guard::{check_ptr, guard};
-use crate::sim::{build, gdsmc_sim, read_config};
+use crate::sim::{build, gdsmc_sim, read_config, slots};
 use crate::status::{fail, gdsmc_status, msg};
 use gdsmc_core::particles::Particle;
 use std::mem::size_of;
@@ -27,17 +27,19 @@ pub unsafe extern "C" fn gdsmc_sim_create(
         unsafe { out.write(std::ptr::null_mut()) };
         let (c, model) = read_config(config)?;
         let n = model.n();
+        // n particles, and for a rough gas n spins after them.
+        let records = slots(&model);
         let mut buf: Vec<Particle> = Vec::new();
-        if buf.try_reserve_exact(n).is_err() {
+        if buf.try_reserve_exact(records).is_err() {
             return fail(
                 gdsmc_status::GDSMC_OUT_OF_MEMORY,
                 msg!(
                     "n = {n} particles ({} bytes) cannot be allocated",
-                    n.saturating_mul(size_of::<Particle>())
+                    records.saturating_mul(size_of::<Particle>())
                 ),
             );
         }
-        buf.resize(n, Particle::default());
+        buf.resize(records, Particle::default());
         // The box owns the particles until the handle does: an error or a panic in `build`
         // drops it (no leak on any path).
         let mut particles = buf.into_boxed_slice();

@@ -102,3 +102,31 @@ impl gdsmc_species_observables {
         }
     }
 }
+
+/// A rough gas's rotation at the simulation's current time (Huthmann and Zippelius 1997).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct gdsmc_rotation_observables {
+    /// Translational temperature `<|v - V|^2>/3` (the observables' `t_bulk`).
+    pub translational_temperature: f64,
+    /// Rotational temperature `kappa <|w|^2>/3`.
+    pub rotational_temperature: f64,
+    /// `theta = rotational / translational temperature`.
+    pub theta: f64,
+    /// Fourth cumulant of the rim velocities, `(3/5) <|w|^4>/<|w|^2>^2 - 1`.
+    pub a2_rot: f64,
+    /// Translation-rotation correlation `3 <(c . w)^2>/(<c^2> <w^2>) - 1`.
+    pub cw2: f64,
+}
+
+impl gdsmc_rotation_observables {
+    pub(crate) fn new(r: &gdsmc_core::rough::RoughObservables) -> Self {
+        gdsmc_rotation_observables {
+            translational_temperature: r.t_tr,
+            rotational_temperature: r.t_rot,
+            theta: r.theta(),
+            a2_rot: r.a2_rot,
+            cw2: r.cw2,
+        }
+    }
+}

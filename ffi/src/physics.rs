@@ -7,7 +7,7 @@ use crate::config::*;
 use crate::status::{Failure, Msg, fail, gdsmc_status, msg};
 use gdsmc_core::physics::{
     BackgroundKernel, Component, DriveChoice, KernelChoice, Model, Param, Physics, PhysicsError,
-    RestitutionLaw, SchemeChoice, SpeciesChoice,
+    RestitutionLaw, RotationChoice, SchemeChoice, SpeciesChoice,
 };
 
 fn invalid<T>(m: Msg) -> Result<T, Failure> {
@@ -161,6 +161,14 @@ impl gdsmc_config {
             drift: self.drift,
         };
         self.mixture(&mut physics)?;
+        if self.rough != 0 {
+            physics.rotation = Some(RotationChoice {
+                beta: self.tangential_restitution,
+                kappa: self.inertia,
+                temperature: self.rotation_temperature,
+                noise: self.rotation_noise,
+            });
+        }
         Ok(physics)
     }
 
@@ -225,6 +233,13 @@ impl gdsmc_config {
             cfg.species_temperature[k] = s.temperature;
             cfg.species_diameter[k] = s.diameter;
             cfg.species_beta[k] = s.beta;
+        }
+        if let Some(r) = p.rotation {
+            cfg.rough = 1;
+            cfg.tangential_restitution = r.beta;
+            cfg.inertia = r.kappa;
+            cfg.rotation_temperature = r.temperature;
+            cfg.rotation_noise = r.noise;
         }
         if !p.pair_restitution.is_empty() {
             cfg.pair_restitution_set = 1;

@@ -7,7 +7,7 @@ use crate::status::{Failure, engine_error, fail, gdsmc_status, msg};
 use core::ffi::c_void;
 use core::mem::{align_of, size_of};
 use gdsmc_core::moments::Observables;
-use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::physics::{Engine, Model, Physics};
 use gdsmc_core::rng::{Xoshiro256PlusPlus, stream};
 
@@ -25,18 +25,43 @@ pub struct gdsmc_sim {
     pub(crate) owned: bool,
     pub(crate) n: usize,
     pub(crate) particles: *mut Particle,
+    /// A rough gas's spins, the `n` records after the particles (NULL: smooth particles).
+    pub(crate) spins: *mut Spin,
     pub(crate) engine: Engine,
     pub(crate) rng: Xoshiro256PlusPlus,
     pub(crate) last: Observables,
 }
 
-/// The particles of a live handle. The returned view must not outlive the handle's borrow by
-/// its caller (each exported function makes one view and drops it before returning).
-pub(crate) fn particles_of<'a>(particles: *mut Particle, n: usize) -> Particles<'a> {
+// A rough gas's spins live in the records after its particles: the same size and alignment.
+const _: () = assert!(
+    size_of::<Spin>() == size_of::<Particle>() && align_of::<Spin>() == align_of::<Particle>()
+);
+
+/// The 32-byte records a simulation of `model` needs: `n` particles, and for a rough gas `n`
+/// spins after them.
+pub(crate) fn slots(model: &Model) -> usize {
+    if model.rough_map().is_some() {
+        2 * model.n()
+    } else {
+        model.n()
+    }
+}
+
+/// The particles (and spins) of a live handle. The returned view must not outlive the handle's
+/// borrow by its caller (each exported function makes one view and drops it before returning).
+pub(crate) fn particles_of<'a>(s: &gdsmc_sim) -> Particles<'a> {
     // SAFETY: a live handle's `particles` points to `n` initialized particles owned by it (a
-    // boxed slice, or the caller's memory behind the header); only this view touches them.
-    let slice = unsafe { core::slice::from_raw_parts_mut(particles, n) };
-    Particles::new(slice).expect("n >= 2 checked at creation")
+    // boxed slice, or the caller's memory behind the header), and a non-null `spins` to `n`
+    // initialized spins after them; only this view touches them.
+    let slice = unsafe { core::slice::from_raw_parts_mut(s.particles, s.n) };
+    let view = if s.spins.is_null() {
+        Particles::new(slice)
+    } else {
+        // SAFETY: as above, the n records after the particles.
+        let spins = unsafe { core::slice::from_raw_parts_mut(s.spins, s.n) };
+        Particles::with_spins(slice, spins)
+    };
+    view.expect("n >= 2 and the spins checked at creation")
 }
 
 /// Fills the particles from the initial distribution and starts the engine (the core's one
@@ -49,16 +74,27 @@ pub(crate) fn build(
     owned: bool,
 ) -> Result<gdsmc_sim, Failure> {
     let mut rng = stream(c.seed, c.stream);
-    // SAFETY: `particles` points to room for `n` particles (see callers); every one is written
-    // here before any is read.
-    let slice = unsafe {
-        for i in 0..n {
+    // SAFETY: `particles` points to room for `slots(model)` records (see callers); every one is
+    // written here before any is read.
+    let (slice, spins) = unsafe {
+        for i in 0..slots(model) {
             particles.add(i).write(Particle::default());
         }
-        core::slice::from_raw_parts_mut(particles, n)
+        let spins = if slots(model) > n {
+            particles.add(n).cast::<Spin>()
+        } else {
+            core::ptr::null_mut()
+        };
+        (core::slice::from_raw_parts_mut(particles, n), spins)
     };
-    let mut p = Particles::new(slice)
-        .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg!("{e}")))?;
+    let mut p = if spins.is_null() {
+        Particles::new(slice)
+    } else {
+        // SAFETY: the n records after the particles, written above as default particles,
+        // which are default spins (the same four zero doubles).
+        Particles::with_spins(slice, unsafe { core::slice::from_raw_parts_mut(spins, n) })
+    }
+    .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg!("{e}")))?;
     #[cfg(feature = "fault-injection")]
     crate::guard::fault::check();
     let (engine, last) = model.launch(&mut p, 0.0, &mut rng).map_err(engine_error)?;
@@ -67,6 +103,7 @@ pub(crate) fn build(
         owned,
         n,
         particles,
+        spins,
         engine,
         rng,
         last,
@@ -164,6 +201,48 @@ pub unsafe extern "C" fn gdsmc_sim_footprint(
     })
 }
 
+/// For the allocation-free variant: the bytes and alignment a caller buffer must have for the
+/// simulation `*config` describes. The same as gdsmc_sim_footprint for smooth particles; a rough
+/// gas (`config.rough`) needs room for its spins too. Refuses an invalid configuration with the
+/// message gdsmc_sim_init_in would give.
+///
+/// # Safety
+/// `config` must be NULL or point to a gdsmc_config; `bytes` and `align` NULL or writable for
+/// one size_t each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_config_footprint(
+    config: *const gdsmc_config,
+    bytes: *mut usize,
+    align: *mut usize,
+) -> gdsmc_status {
+    guard(|| {
+        check_ptr(bytes, "bytes")?;
+        check_ptr(align, "align")?;
+        let (_, model) = read_config(config)?;
+        let total = need(&model)?;
+        // SAFETY: both checked non-null and aligned.
+        unsafe {
+            bytes.write(total);
+            align.write(align_of::<gdsmc_sim>().max(align_of::<Particle>()));
+        }
+        Ok(())
+    })
+}
+
+/// The bytes of a caller buffer for a simulation of `model`: the header and its records.
+fn need(model: &Model) -> Result<usize, Failure> {
+    slots(model)
+        .checked_mul(size_of::<Particle>())
+        .and_then(|b| b.checked_add(header_bytes()))
+        .filter(|&b| b <= isize::MAX as usize)
+        .ok_or_else(|| {
+            Failure(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                msg!("n = {} is too large", model.n()),
+            )
+        })
+}
+
 /// The allocation-free variant of gdsmc_sim_create: builds the simulation inside `memory`
 /// (`size` bytes, aligned as gdsmc_sim_footprint says; gdsmc allocates nothing). `*out`
 /// becomes a handle pointing into `memory`. The caller keeps owning the memory; call
@@ -196,11 +275,13 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
             );
         }
         let n = model.n();
-        let need = header_bytes() + n * size_of::<Particle>();
+        let need = need(&model)?;
         if size < need {
             return fail(
                 gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
-                msg!("`memory` holds {size} bytes; n = {n} needs {need} (gdsmc_sim_footprint)"),
+                msg!(
+                    "`memory` holds {size} bytes; n = {n} needs {need} (gdsmc_sim_footprint, or gdsmc_config_footprint for rough particles)"
+                ),
             );
         }
         let head = memory.cast::<gdsmc_sim>();
@@ -248,10 +329,14 @@ pub unsafe extern "C" fn gdsmc_sim_destroy(sim: *mut *mut gdsmc_sim) -> gdsmc_st
 #[cfg(feature = "std")]
 fn free(h: *mut gdsmc_sim) {
     // SAFETY: an owned handle was made by gdsmc_sim_create: the header by Box::new and the
-    // particles by a boxed slice of length n; the caller marked it dead and uses neither again.
+    // particles (and a rough gas's spins after them) by a boxed slice of n (2n) records; the
+    // caller marked it dead and uses neither again.
     unsafe {
         let (ptr, n) = ((*h).particles, (*h).n);
+        let records = if (*h).spins.is_null() { n } else { 2 * n };
         drop(Box::from_raw(h));
-        drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)));
+        drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(
+            ptr, records,
+        )));
     }
 }

@@ -62,7 +62,38 @@ fn the_same_bad_value_gets_the_same_words() {
     let mut base = gdsmc_config::example3();
     base.kernel = gdsmc::GDSMC_KERNEL_HARD_SPHERES;
     (base.gamma, base.c, base.n) = (1.0, 1.0, 64);
-    let cases: [Case; 8] = [
+    let cases: [Case; 11] = [
+        (
+            "[observe]",
+            "[rotation]\ntangential_restitution = 1.5\n[observe]",
+            &[],
+            "rotation.tangential_restitution",
+            "tangential_restitution",
+            |c| {
+                c.rough = 1;
+                c.tangential_restitution = 1.5;
+            },
+        ),
+        (
+            "[observe]",
+            "[rotation]\ntangential_restitution = 0.0\ninertia = 0.0\n[observe]",
+            &[],
+            "rotation.inertia",
+            "inertia",
+            |c| {
+                (c.rough, c.tangential_restitution, c.inertia) = (1, 0.0, 0.0);
+            },
+        ),
+        (
+            "[observe]",
+            "[rotation]\ntangential_restitution = 0.0\nnoise = -1.0\n[observe]",
+            &[],
+            "rotation.noise",
+            "rotation_noise",
+            |c| {
+                (c.rough, c.tangential_restitution, c.rotation_noise) = (1, 0.0, -1.0);
+            },
+        ),
         (
             "restitution = 0.5",
             "restitution = 1.5",

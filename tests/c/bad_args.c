@@ -266,6 +266,59 @@ static void last_error_buffer(void) {
     EXPECT(gdsmc_last_error(NULL, 0) == 0, "success clears the message");
 }
 
+/* Rough particles: their refusals by field, their footprint (room for the spins), a run in
+ * caller memory, and the rotation readers refusing a smooth gas. */
+static void rough_particles(void) {
+    gdsmc_config c = base();
+    c.n = 512;
+    c.kernel = GDSMC_KERNEL_HARD_SPHERES;
+    c.rough = 1;
+    c.tangential_restitution = 1.5;
+    gdsmc_sim *sim = NULL;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.tangential_restitution must lie in [-1, 1], got 1.5");
+    c.tangential_restitution = 0.0;
+    c.inertia = 0.9;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.inertia must lie in (0, 2/3]");
+    c.inertia = 0.4;
+    c.drive = GDSMC_DRIVE_GAUSSIAN;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.rough takes no drive or white noise");
+    c.drive = GDSMC_DRIVE_WHITE_NOISE;
+
+    size_t smooth = 0, bytes = 0, align = 0;
+    STATUS(gdsmc_sim_footprint(c.n, &smooth, &align), GDSMC_OK, "");
+    STATUS(gdsmc_config_footprint(&c, &bytes, &align), GDSMC_OK, "");
+    EXPECT(bytes == smooth + 32 * c.n, "rough footprint %zu, smooth %zu", bytes, smooth);
+    unsigned char *mem = aligned_alloc(align, bytes);
+    STATUS(gdsmc_sim_init_in(mem, smooth, &c, &sim), GDSMC_BUFFER_TOO_SMALL, "gdsmc_config_footprint");
+    STATUS(gdsmc_sim_init_in(mem, bytes, &c, &sim), GDSMC_OK, "");
+    gdsmc_observables o;
+    gdsmc_rotation_observables r;
+    STATUS(gdsmc_sim_advance(sim, 1.0, &o), GDSMC_OK, "");
+    STATUS(gdsmc_sim_rotation(sim, &r), GDSMC_OK, "");
+    EXPECT(r.translational_temperature == o.temperature_bulk && r.rotational_temperature > 0.0 &&
+               r.theta == r.rotational_temperature / r.translational_temperature,
+           "rotation: T_tr %g (T_bulk %g), T_rot %g, theta %g", r.translational_temperature,
+           o.temperature_bulk, r.rotational_temperature, r.theta);
+    double *w = malloc(3 * c.n * sizeof *w);
+    STATUS(gdsmc_sim_get_rim_velocities(sim, w, 3 * c.n - 1), GDSMC_BUFFER_TOO_SMALL, "");
+    STATUS(gdsmc_sim_get_rim_velocities(sim, w, 3 * c.n), GDSMC_OK, "");
+    double s = 0.0;
+    for (uint64_t i = 0; i < 3 * c.n; i++) s += w[i] * w[i];
+    EXPECT(fabs(c.inertia * s / (3.0 * c.n) - r.rotational_temperature) <=
+               1e-12 * r.rotational_temperature,
+           "kappa <|w|^2>/3 = %g, T_rot %g", c.inertia * s / (3.0 * c.n), r.rotational_temperature);
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+
+    c.rough = 0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_rotation(sim, &r), GDSMC_INVALID_ARGUMENT, "smooth");
+    STATUS(gdsmc_sim_get_rim_velocities(sim, w, 3 * c.n), GDSMC_INVALID_ARGUMENT, "smooth");
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+    free(w);
+    free(mem);
+}
+
 int main(void) {
     printf("gdsmc %s C ABI checks\n", gdsmc_version());
     config_errors();
@@ -275,6 +328,7 @@ int main(void) {
     schemes_and_host_medium();
     time_stepped_and_impact_law();
     last_error_buffer();
+    rough_particles();
     printf("%d passed, %d failed\n", passed, failed);
     return failed != 0;
 }

@@ -59,6 +59,8 @@ int main(int argc, char **argv) {
     /* A mixture's species columns, named as in observables.csv. */
     if (cfg.species > 0) printf(",T_mix");
     for (uint32_t k = 0; k < cfg.species; k++) printf(",T_s%u,T_s%u_ratio,a2_s%u", k, k, k);
+    /* A rough gas's rotation columns. */
+    if (cfg.rough) printf(",T_rot,theta,a2_rot,cw2");
     printf("\n");
     while (fgets(line, sizeof line, stdin)) {
         double t = strtod(line, NULL);
@@ -79,6 +81,14 @@ int main(int argc, char **argv) {
             }
             if (k == 0) printf(",%.17g", so.mixture_temperature);
             printf(",%.17g,%.17g,%.17g", so.temperature, so.temperature_ratio, so.a2);
+        }
+        if (cfg.rough) {
+            gdsmc_rotation_observables r;
+            if (check(gdsmc_sim_rotation(sim, &r), "gdsmc_sim_rotation")) {
+                gdsmc_sim_destroy(&sim);
+                return 1;
+            }
+            printf(",%.17g,%.17g,%.17g,%.17g", r.rotational_temperature, r.theta, r.a2_rot, r.cw2);
         }
         printf("\n");
     }

@@ -215,9 +215,15 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
         self.maj.umax != umax_event
     }
 
-    /// Re-synchronizes after the caller changed velocities or spins between calls (they are
-    /// physical): every last-kick time becomes the current time; `V`, `Umax` recomputed.
+    /// Re-synchronizes after the caller replaced the velocities between calls (they are
+    /// physical; the spins are left as stored and converted to physical units here): every
+    /// last-kick time becomes the current time; `V`, `Umax` recomputed.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        if self.scale != 1.0 {
+            for w in p.spins_mut() {
+                *w = crate::particles::Spin::new(self.scale * w.rim_velocity());
+            }
+        }
         (self.scale, self.offset) = (1.0, Vec3::ZERO);
         p.reset_kick_times(self.t);
         self.synchronized(p)

@@ -4,6 +4,7 @@
 //! (Brilliantov, Pöschel, Kranz and Zippelius 2007), all per unit mass.
 
 use crate::math::Real;
+use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::vec3::Vec3;
 
@@ -48,7 +49,8 @@ impl RoughObservables {
         let (c2, w2, w4, cw) = (c2 / n, w2 / n, w4 / n, cw / n);
         let s2 = scale * scale;
         RoughObservables {
-            t_tr: s2 * c2 / 3.0,
+            // The translational moments' own sums, so that T_tr is T_bulk to the bit.
+            t_tr: s2 * Observables::of(p).t_bulk,
             t_rot: s2 * kappa * w2 / 3.0,
             a2_rot: 0.6 * w4 / (w2 * w2) - 1.0,
             cw2: 3.0 * cw / (c2 * w2) - 1.0,

@@ -105,6 +105,21 @@ fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
         }
         c.pair_restitution_set = u.int_in_range(0u32..=1).unwrap_or(0);
     }
+    // Rough particles now and then, with wild rotation values.
+    if u.ratio(1u8, 4u8).unwrap_or(false) {
+        c.rough = u.int_in_range(0u32..=2).unwrap_or(1);
+        c.tangential_restitution = u.int_in_range(-4i32..=4).unwrap_or(0) as f64 / 4.0;
+        for f in [
+            &mut c.tangential_restitution,
+            &mut c.inertia,
+            &mut c.rotation_temperature,
+            &mut c.rotation_noise,
+        ] {
+            if u.ratio(1u8, 4u8).unwrap_or(false) {
+                *f = wild(u);
+            }
+        }
+    }
     c
 }
 
@@ -127,6 +142,10 @@ fn bounded_work(c: &gdsmc_config) -> bool {
                 && within(c.species_diameter[k], 1e-3, 10.0)
                 && within(c.species_beta[k], 0.0, 100.0)
         })
+        && (c.rough == 0
+            || (speed2(c.rotation_temperature, c.inertia)
+                && within(c.inertia, 1e-3, 1.0)
+                && within(c.rotation_noise, 0.0, 100.0)))
         && match c.scheme {
             GDSMC_SCHEME_EULER | GDSMC_SCHEME_STRANG => within(c.dt, 1e-3, 1e300),
             // Found by a 10-minute run: a step factor of 1e-300 with a valid dt passed an
@@ -195,6 +214,19 @@ fn exercise(u: &mut Unstructured<'_>, mut sim: *mut gdsmc_sim, c: &gdsmc_config,
                 5 => {
                     let _ = gdsmc_sim_reseed(sim, u.arbitrary().unwrap_or(0));
                 }
+                6 if u.ratio(1u8, 3u8).unwrap_or(false) => {
+                    // A rough gas's rotation, or a refusal for smooth particles.
+                    let mut r = gdsmc_rotation_observables::default();
+                    let s = gdsmc_sim_rotation(sim, &mut r);
+                    assert_eq!(s == gdsmc_status::GDSMC_OK, c.rough != 0, "rotation {s:?}");
+                    let len = u.int_in_range(0..=buf.len()).unwrap_or(0);
+                    let s = gdsmc_sim_get_rim_velocities(sim, buf.as_mut_ptr(), len);
+                    assert_eq!(
+                        s == gdsmc_status::GDSMC_OK,
+                        c.rough != 0 && len >= 3 * n,
+                        "get_rim_velocities {s:?}"
+                    );
+                }
                 6 if u.ratio(1u8, 2u8).unwrap_or(false) => {
                     // A species of a mixture, or a refusal naming why not.
                     let mut so = gdsmc_species_observables::default();
@@ -234,7 +266,14 @@ pub fn c_abi(data: &[u8]) {
     }
     let (mut bytes, mut align) = (0usize, 0usize);
     // SAFETY: valid out-pointers.
-    let s = unsafe { gdsmc_sim_footprint(c.n, &mut bytes, &mut align) };
+    // The configuration's own footprint (room for a rough gas's spins) when it is valid, else
+    // the particle count's.
+    let s = unsafe {
+        match gdsmc_config_footprint(&c, &mut bytes, &mut align) {
+            gdsmc_status::GDSMC_OK => gdsmc_status::GDSMC_OK,
+            _ => gdsmc_sim_footprint(c.n, &mut bytes, &mut align),
+        }
+    };
     if s == gdsmc_status::GDSMC_OK && bytes <= 1 << 20 {
         assert!(align <= 32 && bytes >= 32 * c.n as usize);
         let mut memory = vec![Block([0; 32]); bytes / 32 + 2];
