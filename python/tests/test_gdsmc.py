@@ -73,6 +73,8 @@ def strip_timing(v):
         ),
         # A granular mixture: the species' columns (T_s0, T_s0_ratio, ...) and references.
         ("mixture-maxwell", ["--n", "200", "--ensembles", "8", "--seed", "3"]),
+        # Rough particles: the rotation's columns (T_rot, theta, ...) and references.
+        ("rough-hcs", ["--n", "200", "--ensembles", "6", "--seed", "5"]),
     ],
 )
 def test_same_numbers_as_the_command(tmp_path, name, args):
@@ -102,6 +104,9 @@ def test_same_numbers_as_the_command(tmp_path, name, args):
     assert np.array_equal(r.ci["T"], r.table["T_ci"])
     if name.startswith("mixture"):
         assert np.array_equal(r.mean["T_s1_ratio"], r.table["T_s1_ratio"])
+    if name.startswith("rough"):
+        assert np.array_equal(r.mean["theta"], r.table["theta"])
+        assert "theta_MA" in r.table
 
 
 def test_threads_do_not_change_the_numbers():

@@ -1,0 +1,129 @@
+//! `[rotation]` scenes: the rotation reaches the core's description, each bad value is named by
+//! file, line and key, what a rough gas cannot take is refused by key, and `--set rotation.*`
+//! overrides.
+
+use gdsmc_scene::{Override, parse, parse_with};
+use std::path::Path;
+
+const ROUGH: &str = r#"
+[particles]
+n = 64
+[collisions]
+kernel = "hard-spheres"
+restitution = 0.9
+[rotation]
+tangential_restitution = 0.25
+inertia = 0.5
+temperature = 2.0
+[drive]
+kind = "white-noise"
+beta = 1.0
+[observe]
+t_end = 1.0
+"#;
+
+fn err(text: &str) -> String {
+    parse(Path::new("bad.toml"), text).unwrap_err().to_string()
+}
+
+#[test]
+fn a_rough_scene_gives_its_rotation() {
+    let s = parse(Path::new("r.toml"), ROUGH).unwrap();
+    let r = s.physics.rotation.unwrap();
+    assert_eq!(
+        (r.beta, r.kappa, r.temperature, r.noise),
+        (0.25, 0.5, 2.0, 0.0)
+    );
+    assert!(!s.translation_is_smooth());
+    let model = s.physics.validate().unwrap();
+    assert_eq!(model.rough_map().unwrap().kappa(), 0.5);
+    // Defaults: uniform spheres, T_rot = 1, no noise on rotation.
+    let text = ROUGH.replace("inertia = 0.5\ntemperature = 2.0\n", "");
+    let r = parse(Path::new("r.toml"), &text)
+        .unwrap()
+        .physics
+        .rotation
+        .unwrap();
+    assert_eq!((r.kappa, r.temperature, r.noise), (0.4, 1.0, 0.0));
+}
+
+#[test]
+fn bad_rotation_values_name_line_and_key() {
+    let e = err(&ROUGH.replace(
+        "tangential_restitution = 0.25",
+        "tangential_restitution = -2.0",
+    ));
+    assert!(
+        e.starts_with("bad.toml:8: `rotation.tangential_restitution` must lie in [-1, 1], got -2"),
+        "{e}"
+    );
+    let e = err(&ROUGH.replace("inertia = 0.5", "inertia = 0.8"));
+    assert!(
+        e.starts_with("bad.toml:9: `rotation.inertia` must lie in (0, 2/3], got 0.8"),
+        "{e}"
+    );
+    let e = err(&ROUGH.replace("temperature = 2.0", "temperature = -2.0"));
+    assert!(
+        e.starts_with("bad.toml:10: `rotation.temperature` must be >= 0"),
+        "{e}"
+    );
+    let e = err(&ROUGH.replace("[drive]", "[rotation.x]\n[drive]"));
+    assert!(e.contains("unknown field") || e.contains("x"), "{e}");
+}
+
+#[test]
+fn what_a_rough_gas_cannot_take_is_refused_by_key() {
+    let e = err(&ROUGH.replace(
+        "kind = \"white-noise\"\nbeta = 1.0",
+        "kind = \"gaussian\"\nzeta = 0.5",
+    ));
+    assert!(
+        e.contains("`rotation` takes no drive or white noise"),
+        "{e}"
+    );
+    let e = err(&ROUGH.replace(
+        "[observe]\n",
+        "[scheme]\nkind = \"euler\"\ndt = 0.1\n[observe]\n",
+    ));
+    assert!(
+        e.contains("`scheme") && e.contains("must be no-splitting for rough particles"),
+        "{e}"
+    );
+    let e = err(&ROUGH.replace("t_end = 1.0", "t_end = 1.0\ncollisional_pairs = 100"));
+    assert!(
+        e.contains("`observe.collisional_pairs`") && e.contains("[rotation]"),
+        "{e}"
+    );
+    let e = err(&ROUGH.replace(
+        "restitution = 0.9",
+        "impact_speed_law = { beta0 = 0.1, delta = 0.2 }",
+    ));
+    assert!(e.contains("must be constant for rough particles"), "{e}");
+}
+
+#[test]
+fn rotation_can_be_overridden() {
+    let s = parse_with(
+        Path::new("r.toml"),
+        ROUGH,
+        &[
+            Override::set("rotation.tangential_restitution=-1"),
+            Override::set("rotation.noise=0.5"),
+        ],
+    )
+    .unwrap();
+    let r = s.physics.rotation.unwrap();
+    assert_eq!((r.beta, r.noise), (-1.0, 0.5));
+    assert!(s.translation_is_smooth());
+    let e = parse_with(
+        Path::new("r.toml"),
+        ROUGH,
+        &[Override::set("rotation.inertia=0")],
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains("`rotation.inertia` must lie in (0, 2/3], got 0"),
+        "{e}"
+    );
+}
