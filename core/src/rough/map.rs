@@ -40,7 +40,7 @@
 //! ```
 
 use crate::math::{Real, sqrt};
-use crate::rng::{Rng, uniform01};
+use crate::rng::Rng;
 use crate::sample::unit_sphere;
 use crate::vec3::Vec3;
 
@@ -163,27 +163,29 @@ impl RoughMap {
 /// velocity `u = v1 - v2`: on the hemisphere where the pair approaches, `u . n >= 0`, with
 /// density proportional to `u_hat . n` (the impact parameter uniform on the disk; MS
 /// Section 3's kernel `Theta(u . s)(u . s)`). For `u = 0`, uniform on the sphere.
+///
+/// Drawn as `n = (u_hat - e)/|u_hat - e|` with `e` uniform on the sphere: the elastic smooth
+/// collision reflects `u_hat` into `e = u_hat - 2 (u_hat . n) n`, which is uniform exactly
+/// when `n` has the impact law (the hard-sphere scattering is isotropic, GRW (3)), and the map
+/// from `n` on the hemisphere to `e` on the sphere is one to one. One draw of the sphere and
+/// one normalization.
+#[inline]
 pub fn impact_direction<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
     // Scaled by its largest component first: `|u|^2` of a tiny `u` (below 1e-154) underflows,
-    // which made such a `u` look like 0 (found by the `rough_maps` fuzz target).
+    // which made such a `u` look like 0 (found by the `rough_maps` fuzz target); divided, not
+    // multiplied by `1/big`, which overflows for a subnormal `big`.
     let big = u.x.abs().max(u.y.abs()).max(u.z.abs());
-    let e = unit_sphere(rng);
     if big == 0.0 {
-        return e;
+        return unit_sphere(rng);
     }
-    // Divided, not multiplied by `1/big`, which overflows for a subnormal `big`.
     let us = Vec3::new(u.x / big, u.y / big, u.z / big);
     let uh = (1.0 / us.norm()) * us;
-    // cos theta = sqrt(1 - b^2) with b^2 uniform on [0, 1): density 2 cos sin on [0, pi/2].
-    let c = sqrt(1.0 - uniform01(rng));
-    // A unit vector perpendicular to u_hat from the uniform one (redrawn when parallel).
-    let mut p = e - e.dot(uh) * uh;
-    let mut p2 = p.norm2();
-    while p2 < 1e-12 {
-        let e = unit_sphere(rng);
-        p = e - e.dot(uh) * uh;
-        p2 = p.norm2();
+    loop {
+        let d = uh - unit_sphere(rng);
+        let d2 = d.norm2();
+        // e = u_hat has probability 0; near it the direction is still accurate to 1e-8.
+        if d2 > 1e-16 {
+            return (1.0 / sqrt(d2)) * d;
+        }
     }
-    let s = sqrt((1.0 - c * c).max(0.0));
-    c * uh + (s / sqrt(p2)) * p
 }

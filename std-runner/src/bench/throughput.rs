@@ -13,11 +13,12 @@ use gdsmc_core::batch::{kick, sums};
 use gdsmc_core::drive::{
     Drive, HardSphereBackground, HostMedium, HostMediumParams, NoDrive, WhiteNoise,
 };
-use gdsmc_core::engine::NoSplitting;
+use gdsmc_core::engine::{EventLoop, NoSplitting};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
-use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::{Rng, seeded, uniform_index, uniform_pair};
+use gdsmc_core::rough::{RoughDrive, RoughMap, RoughNoSplitting, RoughNoise};
 use gdsmc_core::sample::{Maxwellian, standard_normal};
 use gdsmc_core::vec3::Vec3;
 use std::f64::consts::PI;
@@ -63,16 +64,45 @@ fn event_loop<K: Kernel, D: Drive>(
 ) -> (f64, f64) {
     let mut buf = system(n, 1);
     let mut p = Particles::new(&mut buf).expect("n >= 2");
-    let mut rng = seeded(2);
     let law = Constant::new(alpha).expect("alpha in (0, 1]");
     let (mut e, _) = NoSplitting::start(kernel, drive, law, &mut p, 0.0).expect("finite start");
-    // Each advance ends with an observation (O(n)); steps of at least 4 n attempts keep its
-    // share small.
+    timed(&mut e, &mut p, budget)
+}
+
+/// The rough gas's loop (hard spheres, the rough map with `alpha`, `beta`, uniform spheres,
+/// spins at the translational temperature) in growing time steps until `budget` has passed;
+/// returns (collisions per second, attempts per second).
+fn rough_loop<D: RoughDrive>(
+    drive: D,
+    alpha: f64,
+    beta: f64,
+    n: usize,
+    budget: Duration,
+) -> (f64, f64) {
+    let mut buf = system(n, 1);
+    let mut spins: Vec<Spin> = {
+        let mut rng = seeded(5);
+        let f0 = Maxwellian::new(1.0, 1.0 / 0.4, Vec3::ZERO).expect("valid");
+        (0..n).map(|_| Spin::new(f0.sample(&mut rng))).collect()
+    };
+    let mut p = Particles::with_spins(&mut buf, &mut spins).expect("n >= 2");
+    let map = RoughMap::new(alpha, beta, 0.4).expect("valid");
+    let k = HardSpheres::new(4.0, 1.0 / (4.0 * PI)).expect("valid");
+    let (mut e, _) = RoughNoSplitting::start(k, drive, map, &mut p, 0.0).expect("finite start");
+    timed(&mut e, &mut p, budget)
+}
+
+/// Advances `e` in growing time steps until each step has at least `4 n` attempts (an
+/// observation's O(n) cost then stays small), then for `budget`; (collisions per second,
+/// attempts per second) over the timed part.
+fn timed<E: EventLoop>(e: &mut E, p: &mut Particles<'_>, budget: Duration) -> (f64, f64) {
+    let n = p.len();
+    let mut rng = seeded(2);
     let mut dt = 1e-3;
     loop {
         let c0 = e.counts();
         let t = e.time() + dt;
-        e.advance_to(&mut p, t, &mut rng).expect("finite");
+        e.advance_to(p, t, &mut rng).expect("finite");
         if e.counts().candidates - c0.candidates >= 4 * n as u64 {
             break;
         }
@@ -82,7 +112,7 @@ fn event_loop<K: Kernel, D: Drive>(
     let start = Instant::now();
     while start.elapsed() < budget {
         let t = e.time() + dt;
-        black_box(e.advance_to(&mut p, t, &mut rng).expect("finite"));
+        black_box(e.advance_to(p, t, &mut rng).expect("finite"));
     }
     let s = start.elapsed().as_secs_f64();
     let c = e.counts();
@@ -189,6 +219,30 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             "case=nosplit-host-medium-alpha0.5 kernel=hard-spheres n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} of_pair_limit={:.3}",
             att / limit
         ));
+        // Rough hard spheres (uniform spheres): the elastic perfectly rough gas and the heated
+        // one with beta = 0 (both translation and rotation kicked).
+        for (case, coll_att) in [
+            (
+                "nosplit-rough-elastic-alpha1-beta1",
+                rough_loop(NoDrive, 1.0, 1.0, n, o.budget),
+            ),
+            (
+                "nosplit-rough-white-noise-alpha0.5-beta0",
+                rough_loop(
+                    RoughNoise::new(1.0, 1.0, 0.4).expect("valid"),
+                    0.5,
+                    0.0,
+                    n,
+                    o.budget,
+                ),
+            ),
+        ] {
+            let (coll, att) = coll_att;
+            line(format!(
+                "case={case} kernel=hard-spheres n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} of_pair_limit={:.3}",
+                att / limit
+            ));
+        }
         for (name, f) in kernels {
             for (case, alpha, heated) in [
                 ("nosplit-white-noise-alpha0.5", 0.5, true),
