@@ -117,23 +117,12 @@ const SPECIES_REFERENCES: [[&str; 3]; gdsmc_core::mixture::MAX_SPECIES] = [
 /// type, the kernel exponent, and each species' white noise.
 fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianApproximation> {
     let ph = &scene.physics;
-    let (gamma, c, lambda) = match ph.kernel {
-        KernelChoice::Maxwell { gamma, c } => (gamma, c, 0.0),
-        KernelChoice::HardSpheres { gamma, c } => (gamma, c, 1.0),
-        KernelChoice::Vhs { gamma, c, lambda } => (gamma, c, lambda),
-    };
+    let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
     let model = ph.validate().ok()?;
     let sp = model.species()?;
-    let (mut kappa, mut alpha) = (Vec::new(), Vec::new());
-    for k in 0..sp.pair_types() {
-        let (s, t) = sp.pair(k);
-        let d = 0.5 * (ph.species[s].diameter + ph.species[t].diameter);
-        kappa.push(4.0 * std::f64::consts::PI * gamma * c * d * d);
-        alpha.push(match ph.pair_restitution.get(k) {
-            Some(&a) => a,
-            None => ph.restitution.constant()?,
-        });
-    }
+    let (kappa, alpha) = crate::run::cooling::pair_kernels(ph, sp)?
+        .into_iter()
+        .unzip();
     let heated = matches!(ph.drive, DriveChoice::WhiteNoise(_));
     Some(crate::reference::mixture::MaxwellianApproximation {
         fractions: (0..sp.len()).map(|s| sp.fraction(s)).collect(),
@@ -218,11 +207,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
 pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::RoughApproximation> {
     let r = scene.physics.rotation?;
     let alpha = scene.physics.restitution.constant()?;
-    let (strength, lambda) = match scene.physics.kernel {
-        KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
-        KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
-        KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
-    };
+    let (strength, lambda) = crate::run::estimate::kernel_constants(&scene.physics.kernel);
     let beta = match scene.physics.drive {
         DriveChoice::WhiteNoise(b) => b,
         _ => 0.0,

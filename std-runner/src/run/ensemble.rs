@@ -210,11 +210,7 @@ fn cooling_rates(
     scale: f64,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Vec<f64> {
-    let lambda = match scene.physics.kernel {
-        gdsmc_core::physics::KernelChoice::Maxwell { .. } => 0.0,
-        gdsmc_core::physics::KernelChoice::HardSpheres { .. } => 1.0,
-        gdsmc_core::physics::KernelChoice::Vhs { lambda, .. } => lambda,
-    };
+    let (_, lambda) = crate::run::estimate::kernel_constants(&scene.physics.kernel);
     let unit = scale.powf(lambda);
     let rates = c.rates(p, scene.collisional_pairs, rng);
     let n: usize = scene.physics.species.iter().map(|s| s.count).sum();
