@@ -14,7 +14,12 @@ fn csv_bytes(name: &str, seed: u64, threads: usize) -> Vec<u8> {
 
 #[test]
 fn observables_are_bit_identical_for_any_thread_count() {
-    for name in ["grw-example3", "grw-example5"] {
+    for name in [
+        "grw-example3",
+        "grw-example5",
+        "rough-white-noise",
+        "mixture-maxwell",
+    ] {
         let one = csv_bytes(name, 7, 1);
         assert_eq!(one, csv_bytes(name, 7, 2), "{name}: 1 vs 2 threads");
         assert_eq!(one, csv_bytes(name, 7, 3), "{name}: 1 vs 3 threads");
