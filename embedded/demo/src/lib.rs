@@ -1,8 +1,10 @@
 //! # gdsmc-demo: what the firmware runs
 //!
-//! Two runs over caller-owned particle buffers, each reaching the engine through the core's
+//! Three runs over caller-owned particle buffers, each reaching the engine through the core's
 //! physics description (`Physics::validate`, `Model::launch`): GRW Example 3 (the heated
-//! Maxwell gas, GRW (13): `T -> 8/3`) and the homogeneous cooling of hard spheres (Haff's law).
+//! Maxwell gas, GRW (13): `T -> 8/3`), the homogeneous cooling of hard spheres (Haff's law),
+//! and the cooling of rough hard spheres (Huthmann and Zippelius 1997: theta = T_rot/T_tr
+//! settles) with its spins in a second caller buffer.
 //! Each run prints one line per observation time with the observables in round-trip digits and
 //! a last line with a checksum of every particle velocity's bits, so that two machines that
 //! print the same lines have followed the same trajectory bit for bit.
@@ -14,8 +16,10 @@
 
 use core::fmt::Write;
 use gdsmc_core::engine::{Counts, EventLoop};
-use gdsmc_core::particles::{Particle, Particles};
-use gdsmc_core::physics::{DriveChoice, KernelChoice, Physics, RestitutionLaw, SchemeChoice};
+use gdsmc_core::particles::{Particle, Particles, Spin};
+use gdsmc_core::physics::{
+    DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice, SchemeChoice,
+};
 use gdsmc_core::rng::stream;
 
 /// 1/(4 pi), GRW's C_0 for Maxwell pseudo-molecules and C_1 of the hard spheres here.
@@ -51,6 +55,15 @@ pub fn hcs_hard_spheres(n: usize) -> Physics {
     )
 }
 
+/// The homogeneous cooling state of rough hard spheres with `n` particles: the hard spheres
+/// of [`hcs_hard_spheres`] with tangential restitution beta = 0, uniform spheres (kappa =
+/// 2/5), starting at `T_rot = T_tr = 1`.
+pub fn rough_hcs(n: usize) -> Physics {
+    let mut p = hcs_hard_spheres(n);
+    p.rotation = Some(RotationChoice::spheres(0.0));
+    p
+}
+
 /// The exact temperature of GRW Example 3, GRW (13): `T(t) = 8/3 + (1 - 8/3) exp(-3t/4)`.
 pub fn grw_example3_exact(t: f64) -> f64 {
     let t_inf = 8.0 / 3.0;
@@ -83,11 +96,12 @@ pub struct Summary {
     pub instructions: u64,
 }
 
-/// FNV-1a over the bits of every velocity component.
+/// FNV-1a over the bits of every velocity component (and rim velocity component).
 fn checksum(p: &Particles<'_>) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for q in p.as_slice() {
-        for x in [q.vx, q.vy, q.vz] {
+    let spins = p.spins().iter().map(|w| [w.wx, w.wy, w.wz]);
+    for x in p.as_slice().iter().map(|q| [q.vx, q.vy, q.vz]).chain(spins) {
+        for x in x {
             for b in x.to_bits().to_le_bytes() {
                 h ^= b as u64;
                 h = h.wrapping_mul(0x0100_0000_01b3);
@@ -97,23 +111,28 @@ fn checksum(p: &Particles<'_>) -> u64 {
     h
 }
 
-/// Runs `physics` on `buf` (which must hold `physics.n` particles) from stream 0 of `seed`,
-/// observing at `times`, and writes to `out`:
-/// `NAME t=T T=.. T_bulk=.. log10_T_bulk=.. a2=.. collisions=..` per observation and
-/// `NAME checksum=..` at the end. `clock` is read before the start and after the last
+/// Runs `physics` on `buf` (which must hold `physics.n` particles; a rough gas's spins in
+/// `spins`, else empty) from stream 0 of `seed`, observing at `times`, and writes to `out`:
+/// `NAME t=T T=.. T_bulk=.. log10_T_bulk=.. a2=.. collisions=..` per observation (a rough gas
+/// adds `T_rot=.. theta=..`) and `NAME checksum=..` at the end. `clock` is read before the start and after the last
 /// observation (the firmware counts instructions; the host may return 0).
 pub fn run(
     name: &str,
     physics: &Physics,
     buf: &mut [Particle],
+    spins: &mut [Spin],
     seed: u64,
     times: &[f64],
     out: &mut impl Write,
     mut clock: impl FnMut() -> u64,
 ) -> Result<Summary, DemoError> {
     let model = physics.validate().map_err(DemoError::Physics)?;
-    let mut p = Particles::new(buf)
-        .map_err(|_| DemoError::Engine(gdsmc_core::engine::EngineError::ParticleCount))?;
+    let mut p = if spins.is_empty() {
+        Particles::new(buf)
+    } else {
+        Particles::with_spins(buf, spins)
+    }
+    .map_err(|_| DemoError::Engine(gdsmc_core::engine::EngineError::ParticleCount))?;
     let mut rng = stream(seed, 0);
     let start = clock();
     let (mut engine, mut obs) = model
@@ -125,7 +144,7 @@ pub fn run(
                 .advance_to(&mut p, t, &mut rng)
                 .map_err(DemoError::Engine)?;
         }
-        writeln!(
+        write!(
             out,
             "{name} t={t:?} T={:?} T_bulk={:?} log10_T_bulk={:?} a2={:?} collisions={}",
             obs.t_raw,
@@ -134,6 +153,10 @@ pub fn run(
             obs.a2,
             engine.counts().collisions
         )?;
+        if let Some(r) = engine.rough(&p) {
+            write!(out, " T_rot={:?} theta={:?}", r.t_rot, r.theta())?;
+        }
+        writeln!(out)?;
     }
     let instructions = clock().wrapping_sub(start);
     let (scale, offset) = engine.velocity_map();
@@ -151,27 +174,33 @@ pub fn run(
     })
 }
 
-/// Particles per system in both runs.
+/// Particles per system in the smooth runs.
 pub const N: usize = 512;
+
+/// Particles (and spins) of the rough run.
+pub const N_ROUGH: usize = 256;
 
 /// Observation times of GRW Example 3 (GRW Table 1's interval [0, 8]).
 pub const GRW3_TIMES: [f64; 9] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0];
 
-/// Observation times of the cooling run (Haff's law: `T ~ t^-2` for `t >> 1/nu0`).
+/// Observation times of the cooling runs (Haff's law: `T ~ t^-2` for `t >> 1/nu0`).
 pub const HCS_TIMES: [f64; 6] = [0.0, 10.0, 20.0, 50.0, 100.0, 200.0];
 
-/// Both runs with seed `seed` on the caller's buffer: GRW Example 3, then the cooling hard
-/// spheres; one summary each.
-pub fn both(
+/// The three runs with seed `seed` on the caller's buffers: GRW Example 3, the cooling hard
+/// spheres, then the cooling rough hard spheres on the first [`N_ROUGH`] particles and
+/// `spins`; one summary each.
+pub fn all(
     buf: &mut [Particle; N],
+    spins: &mut [Spin; N_ROUGH],
     seed: u64,
     out: &mut impl Write,
     mut clock: impl FnMut() -> u64,
-) -> Result<[Summary; 2], DemoError> {
+) -> Result<[Summary; 3], DemoError> {
     let a = run(
         "grw3",
         &grw_example3(N),
         buf,
+        &mut [],
         seed,
         &GRW3_TIMES,
         out,
@@ -188,10 +217,21 @@ pub fn both(
         "hcs",
         &hcs_hard_spheres(N),
         buf,
+        &mut [],
         seed,
         &HCS_TIMES,
         out,
         &mut clock,
     )?;
-    Ok([a, b])
+    let c = run(
+        "rough",
+        &rough_hcs(N_ROUGH),
+        &mut buf[..N_ROUGH],
+        spins,
+        seed,
+        &HCS_TIMES,
+        out,
+        &mut clock,
+    )?;
+    Ok([a, b, c])
 }

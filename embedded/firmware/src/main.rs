@@ -1,9 +1,11 @@
-//! gdsmc on a Cortex-M. Runs GRW Example 3 (heated Maxwell gas) and the homogeneous cooling of
-//! hard spheres (`gdsmc_demo::both`) on a static buffer of 512 particles, prints every
+//! gdsmc on a Cortex-M. Runs GRW Example 3 (heated Maxwell gas), the homogeneous cooling of
+//! hard spheres and of rough hard spheres (`gdsmc_demo::all`) on a static buffer of 512
+//! particles (the rough run on 256 of them, with 256 static spins), prints every
 //! observation over semihosting with round-trip digits, then the figures `embedded/run.sh`
 //! tabulates: instructions per collision (SysTick under QEMU's `-icount shift=0`, where one
 //! instruction is one nanosecond of virtual time and the MPS2 SysTick counts 25 MHz, so one
-//! tick is 40 instructions), peak stack (a painted stack) and the static RAM of the particles.
+//! tick is 40 instructions), peak stack (a painted stack) and the static RAM of the particles
+//! and spins.
 //! Exits through semihosting with status 0, or 1 when a run fails.
 
 #![no_std]
@@ -14,13 +16,16 @@ use core::sync::atomic::{AtomicU32, Ordering};
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::{entry, exception};
 use cortex_m_semihosting::{debug, hio};
-use gdsmc_core::particles::Particle;
+use gdsmc_core::particles::{Particle, Spin};
 use gdsmc_core::vec3::Vec3;
-use gdsmc_demo::N;
+use gdsmc_demo::{N, N_ROUGH};
 use panic_semihosting as _;
 
 /// The particles: caller-owned static memory, as the core expects (no allocator here).
 static mut PARTICLES: [Particle; N] = [Particle::new(Vec3::ZERO, 0.0); N];
+
+/// The rough run's spins: caller-owned static memory too.
+static mut SPINS: [Spin; N_ROUGH] = [Spin::new(Vec3::ZERO); N_ROUGH];
 
 /// SysTick wraps (each 2^24 ticks).
 static WRAPS: AtomicU32 = AtomicU32::new(0);
@@ -97,11 +102,16 @@ fn main() -> ! {
     cp.SYST.enable_interrupt();
     cp.SYST.enable_counter();
     let mut out = Out(hio::hstdout().expect("semihosting stdout"));
-    // SAFETY: the only reference to PARTICLES, taken once here.
-    let buf = unsafe { &mut *core::ptr::addr_of_mut!(PARTICLES) };
-    let status = match gdsmc_demo::both(buf, 1, &mut out, ticks) {
+    // SAFETY: the only references to PARTICLES and SPINS, taken once here.
+    let (buf, spins) = unsafe {
+        (
+            &mut *core::ptr::addr_of_mut!(PARTICLES),
+            &mut *core::ptr::addr_of_mut!(SPINS),
+        )
+    };
+    let status = match gdsmc_demo::all(buf, spins, 1, &mut out, ticks) {
         Ok(summaries) => {
-            for (name, s) in ["grw3", "hcs"].iter().zip(summaries) {
+            for (name, s) in ["grw3", "hcs", "rough"].iter().zip(summaries) {
                 let instr = s.instructions * INSTRUCTIONS_PER_TICK;
                 let _ = writeln!(
                     out,
@@ -117,7 +127,7 @@ fn main() -> ! {
                 out,
                 "figure stack_peak_bytes={} particles_bytes={} particles_per_kib={}",
                 stack_top - low,
-                core::mem::size_of::<[Particle; N]>(),
+                core::mem::size_of::<[Particle; N]>() + core::mem::size_of::<[Spin; N_ROUGH]>(),
                 1024 / core::mem::size_of::<Particle>()
             );
             debug::EXIT_SUCCESS
