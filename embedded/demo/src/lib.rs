@@ -111,16 +111,15 @@ fn checksum(p: &Particles<'_>) -> u64 {
     h
 }
 
-/// Runs `physics` on `buf` (which must hold `physics.n` particles; a rough gas's spins in
-/// `spins`, else empty) from stream 0 of `seed`, observing at `times`, and writes to `out`:
+/// Runs `physics` on the buffers `(buf, spins)` (`buf` must hold `physics.n` particles; a
+/// rough gas's spins in `spins`, else empty) from stream 0 of `seed`, observing at `times`, and writes to `out`:
 /// `NAME t=T T=.. T_bulk=.. log10_T_bulk=.. a2=.. collisions=..` per observation (a rough gas
 /// adds `T_rot=.. theta=..`) and `NAME checksum=..` at the end. `clock` is read before the start and after the last
 /// observation (the firmware counts instructions; the host may return 0).
 pub fn run(
     name: &str,
     physics: &Physics,
-    buf: &mut [Particle],
-    spins: &mut [Spin],
+    (buf, spins): (&mut [Particle], &mut [Spin]),
     seed: u64,
     times: &[f64],
     out: &mut impl Write,
@@ -199,8 +198,7 @@ pub fn all(
     let a = run(
         "grw3",
         &grw_example3(N),
-        buf,
-        &mut [],
+        (buf, &mut []),
         seed,
         &GRW3_TIMES,
         out,
@@ -216,8 +214,7 @@ pub fn all(
     let b = run(
         "hcs",
         &hcs_hard_spheres(N),
-        buf,
-        &mut [],
+        (buf, &mut []),
         seed,
         &HCS_TIMES,
         out,
@@ -226,8 +223,7 @@ pub fn all(
     let c = run(
         "rough",
         &rough_hcs(N_ROUGH),
-        &mut buf[..N_ROUGH],
-        spins,
+        (&mut buf[..N_ROUGH], spins),
         seed,
         &HCS_TIMES,
         out,
