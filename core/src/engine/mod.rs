@@ -1,6 +1,7 @@
 //! Event loops. [`NoSplitting`] is the exact scheme of GRW Section 3 / RW Algorithm 3.
 
 pub mod event;
+pub(crate) mod jumps;
 pub mod nosplit;
 pub mod pairs;
 pub mod splitting;

@@ -35,6 +35,7 @@
 //! collisions, and none of that bookkeeping is compiled in.
 
 use super::event::{Collider, RefreshWindow, observables};
+use super::jumps::{Jumps, run_events};
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
@@ -43,7 +44,6 @@ use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::Rng;
-use crate::sample::standard_exponential;
 use crate::vec3::Vec3;
 
 /// The exact (no-splitting) event loop for kernel `K`, drive `D` and restitution law `A`.
@@ -123,52 +123,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
         if !t_end.is_finite() || t_end < self.t {
             return Err(EngineError::TimeBackwards);
         }
-        let n = p.len();
-        let mut rate = self.c.rate(n, self.scale);
-        self.refresh.restart();
-        loop {
-            if !D::ACTS && self.refresh.synchronization_due(n) {
-                // No drive: every particle is always at the current time. A synchronization
-                // every 2n candidates keeps the majorant exact and rescales a cooling gas
-                // before its peculiar velocities lose digits (module docs).
-                self.synchronized(p)?;
-                self.c.counts.observations -= 1;
-                rate = self.c.rate(n, self.scale);
-                self.refresh.restart();
-            } else if D::ACTS && K::USES_UMAX && self.refresh.refresh_due() {
-                // The bound may have gone loose: make it exact again. Kicking every particle to
-                // the current time is what an observation does; the process stays exact, and the
-                // O(n) cost is amortized over the window.
-                let before = self.scale * self.c.maj.umax;
-                self.c
-                    .drive
-                    .kick_all_counting(p, self.t, rng, &mut self.c.counts.background);
-                self.synchronized(p)?;
-                self.c.counts.observations -= 1;
-                self.c.counts.refreshes += 1;
-                rate = self.c.rate(n, self.scale);
-                self.refresh
-                    .refreshed(before, self.scale * self.c.maj.umax, n);
-            }
-            let t_next = self.t + standard_exponential(rng) / rate;
-            // Not `t_next >= t_end` alone: a zero rate with a zero draw gives NaN, which stops too.
-            if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
-                break;
-            }
-            self.t = t_next;
-            let (i, j) = self.c.pairs.next(p, rng);
-            self.c
-                .drive
-                .kick_counting(p, i, t_next, rng, &mut self.c.counts.background);
-            self.c
-                .drive
-                .kick_counting(p, j, t_next, rng, &mut self.c.counts.background);
-            let before = self.c.counts.fictitious;
-            if self.c.candidate(p, i, j, D::ACTS, rng) {
-                rate = self.c.rate(n, self.scale);
-            }
-            self.refresh.record(self.c.counts.fictitious - before);
-        }
+        run_events(self, p, t_end, rng)?;
         self.t = t_end;
         self.c
             .drive
@@ -236,5 +191,56 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     /// a cooling gas was rescaled).
     pub fn velocity_map(&self) -> (Real, Vec3) {
         (self.scale, self.offset)
+    }
+}
+
+impl<K: Kernel, D: Drive, A: Restitution> Jumps for NoSplitting<K, D, A> {
+    const ACTS: bool = D::ACTS;
+    const USES_UMAX: bool = K::USES_UMAX;
+
+    #[inline(always)]
+    fn rate(&mut self, n: usize) -> Real {
+        self.c.rate(n, self.scale)
+    }
+    #[inline(always)]
+    fn bound(&self) -> Real {
+        self.scale * self.c.maj.umax
+    }
+    #[inline(always)]
+    fn now(&self) -> Real {
+        self.t
+    }
+    #[inline(always)]
+    fn set_now(&mut self, t: Real) {
+        self.t = t;
+    }
+    #[inline(always)]
+    fn window(&mut self) -> &mut RefreshWindow {
+        &mut self.refresh
+    }
+    #[inline(always)]
+    fn tally(&mut self) -> &mut Counts {
+        &mut self.c.counts
+    }
+    fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
+        self.c
+            .drive
+            .kick_all_counting(p, t, rng, &mut self.c.counts.background);
+    }
+    fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
+        self.synchronized(p)?;
+        self.c.counts.observations -= 1;
+        Ok(())
+    }
+    #[inline(always)]
+    fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool {
+        let (i, j) = self.c.pairs.next(p, rng);
+        self.c
+            .drive
+            .kick_counting(p, i, t, rng, &mut self.c.counts.background);
+        self.c
+            .drive
+            .kick_counting(p, j, t, rng, &mut self.c.counts.background);
+        self.c.candidate(p, i, j, D::ACTS, rng)
     }
 }

@@ -21,6 +21,7 @@ use super::drive::RoughDrive;
 use super::map::{RoughMap, impact_direction};
 use super::observables::RoughObservables;
 use crate::engine::event::{Majorant, RefreshWindow, admits, observables};
+use crate::engine::jumps::{Jumps, run_events};
 use crate::engine::nosplit::RESCALE_BELOW;
 use crate::engine::pairs::PairsAhead;
 use crate::engine::{Counts, EngineError};
@@ -29,7 +30,6 @@ use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::rng::Rng;
-use crate::sample::standard_exponential;
 use crate::vec3::Vec3;
 
 /// The exact event loop of a rough gas with kernel `K` and drive `D`.
@@ -146,39 +146,7 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
         if !t_end.is_finite() || t_end < self.t {
             return Err(EngineError::TimeBackwards);
         }
-        let n = p.len();
-        let mut rate = self.rate(n);
-        self.refresh.restart();
-        loop {
-            if !D::ACTS && self.refresh.synchronization_due(n) {
-                self.synchronized(p)?;
-                self.counts.observations -= 1;
-                rate = self.rate(n);
-                self.refresh.restart();
-            } else if D::ACTS && K::USES_UMAX && self.refresh.refresh_due() {
-                let before = self.scale * self.maj.umax;
-                self.kick_all(p, self.t, rng);
-                self.synchronized(p)?;
-                self.counts.observations -= 1;
-                self.counts.refreshes += 1;
-                rate = self.rate(n);
-                self.refresh
-                    .refreshed(before, self.scale * self.maj.umax, n);
-            }
-            let t_next = self.t + standard_exponential(rng) / rate;
-            if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
-                break;
-            }
-            self.t = t_next;
-            let (i, j) = self.pairs.next(p, rng);
-            self.kick(p, i, t_next, rng);
-            self.kick(p, j, t_next, rng);
-            let before = self.counts.fictitious;
-            if self.candidate(p, i, j, rng) {
-                rate = self.rate(n);
-            }
-            self.refresh.record(self.counts.fictitious - before);
-        }
+        run_events(self, p, t_end, rng)?;
         self.t = t_end;
         self.kick_all(p, t_end, rng);
         self.synchronized(p)
@@ -286,5 +254,50 @@ impl<K: Kernel, D: RoughDrive> crate::engine::EventLoop for RoughNoSplitting<K, 
     }
     fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
         Some(RoughNoSplitting::rough(self, p))
+    }
+}
+
+impl<K: Kernel, D: RoughDrive> Jumps for RoughNoSplitting<K, D> {
+    const ACTS: bool = D::ACTS;
+    const USES_UMAX: bool = K::USES_UMAX;
+
+    #[inline(always)]
+    fn rate(&mut self, n: usize) -> Real {
+        RoughNoSplitting::rate(self, n)
+    }
+    #[inline(always)]
+    fn bound(&self) -> Real {
+        self.scale * self.maj.umax
+    }
+    #[inline(always)]
+    fn now(&self) -> Real {
+        self.t
+    }
+    #[inline(always)]
+    fn set_now(&mut self, t: Real) {
+        self.t = t;
+    }
+    #[inline(always)]
+    fn window(&mut self) -> &mut RefreshWindow {
+        &mut self.refresh
+    }
+    #[inline(always)]
+    fn tally(&mut self) -> &mut Counts {
+        &mut self.counts
+    }
+    fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
+        RoughNoSplitting::kick_all(self, p, t, rng);
+    }
+    fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
+        self.synchronized(p)?;
+        self.counts.observations -= 1;
+        Ok(())
+    }
+    #[inline(always)]
+    fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool {
+        let (i, j) = self.pairs.next(p, rng);
+        self.kick(p, i, t, rng);
+        self.kick(p, j, t, rng);
+        self.candidate(p, i, j, rng)
     }
 }
