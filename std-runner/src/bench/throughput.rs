@@ -323,7 +323,7 @@ mod tests {
             .iter()
             .filter(|l| l.starts_with("case=nosplit"))
             .collect();
-        assert_eq!(loops.len(), 7);
+        assert_eq!(loops.len(), 9);
         for l in &loops {
             let keys: Vec<&str> = l
                 .split(' ')
