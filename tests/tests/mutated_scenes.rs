@@ -52,6 +52,10 @@ const KEYS: &[&str] = &[
     "run.ensembles",
     "histogram.shells",
     "histogram.radius",
+    "rotation.tangential_restitution",
+    "rotation.inertia",
+    "rotation.temperature",
+    "rotation.noise",
 ];
 
 /// Hostile values: zero, negative, tiny, huge, special, of the wrong type, too long.

@@ -75,21 +75,46 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     let t0 = crate::run::initial_temperature(scene);
     let (gc, lambda) = kernel_constants(&p.kernel);
     let alpha = typical_alpha(scene);
+    // A rough gas: its noise on rotation heats it too (through the collisions), its start
+    // rotational temperature is energy the translation can take, and the tangential
+    // restitution dissipates besides alpha (the two terms of the energy change's closed form,
+    // weighted alike: an order of magnitude is all the estimate needs).
+    let (noise_rot, t_rot0, rough_loss) = p.rotation.map_or((0.0, 0.0, 0.0), |r| {
+        (
+            r.noise,
+            r.temperature,
+            (1.0 - r.beta * r.beta) * r.kappa / (1.0 + r.kappa),
+        )
+    });
+    let beta = match p.drive {
+        DriveChoice::WhiteNoise(beta) => beta,
+        _ => 0.0,
+    };
+    let heated = matches!(p.drive, DriveChoice::WhiteNoise(_)) || noise_rot > 0.0;
     let temperature = match p.drive {
-        DriveChoice::WhiteNoise(beta) => {
-            let dissipation = 1.0 - alpha * alpha;
+        DriveChoice::WhiteNoise(_) | DriveChoice::None if heated => {
+            let heating = beta + noise_rot;
+            let dissipation = 1.0 - alpha * alpha + rough_loss;
             let stationary = if lambda == 0.0 {
-                2.0 * beta / (gc * PI * dissipation)
+                2.0 * heating / (gc * PI * dissipation)
             } else {
                 // 3 beta = (1 - alpha^2)/4 nu T, nu = 4 pi gamma C <|u|>, <|u|> = 4 sqrt(T/pi).
-                (3.0 * beta / (dissipation * 4.0 * PI.sqrt() * gc)).powf(2.0 / 3.0)
+                (3.0 * heating / (dissipation * 4.0 * PI.sqrt() * gc)).powf(2.0 / 3.0)
             };
-            t0.max(stationary.min(t0 + 2.0 * beta * t_end))
+            // No dissipation at all: the energy bound (every unit of noise kept).
+            let bound = t0 + t_rot0 + 2.0 * heating * t_end;
+            t0.max(stationary.min(bound))
         }
         DriveChoice::HostMedium {
             temperature, mass, ..
         } => t0.max(temperature / mass),
         _ => t0,
+    };
+    // A rough gas's rotation can hand its energy to the translation.
+    let temperature = if p.rotation.is_some() {
+        temperature.max(t0 + t_rot0)
+    } else {
+        temperature
     };
     // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) thermal speeds.
     let umax = 2.0 * (temperature * (2.0 * n.ln() + 3.0)).sqrt();
@@ -101,7 +126,9 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     let nu0 = 4.0 * PI * gc * (4.0 * (t0 / PI).sqrt()).powf(lambda);
     let zeta0 = 0.25 * (1.0 - alpha * alpha) * nu0;
     let effective_time = match p.drive {
-        DriveChoice::None if s * zeta0 * t_end > 1e-6 => (s * zeta0 * t_end).ln_1p() / (s * zeta0),
+        DriveChoice::None if !heated && s * zeta0 * t_end > 1e-6 => {
+            (s * zeta0 * t_end).ln_1p() / (s * zeta0)
+        }
         _ => t_end,
     };
     let background = match p.drive {
