@@ -158,6 +158,11 @@ const _: () = assert!(
         && GDSMC_MAX_PAIRS == gdsmc_core::mixture::MAX_PAIRS
 );
 
+/// The core's defaults of a rough gas (uniform spheres, `T_rot` 1, no noise on rotation) with
+/// tangential restitution -1: switching `rough` on alone gives the smooth gas with spins.
+const SMOOTH: gdsmc_core::physics::RotationChoice =
+    gdsmc_core::physics::RotationChoice::spheres(-1.0);
+
 impl gdsmc_config {
     /// GRW Example 3 with 1024 particles.
     pub fn example3() -> Self {
@@ -198,10 +203,10 @@ impl gdsmc_config {
             pair_restitution_set: 0,
             pair_restitution: [1.0; GDSMC_MAX_PAIRS],
             rough: 0,
-            tangential_restitution: -1.0,
-            inertia: 0.4,
-            rotation_temperature: 1.0,
-            rotation_noise: 0.0,
+            tangential_restitution: SMOOTH.beta,
+            inertia: SMOOTH.kappa,
+            rotation_temperature: SMOOTH.temperature,
+            rotation_noise: SMOOTH.noise,
         }
     }
 }

@@ -55,23 +55,33 @@ pub struct RotationSpec {
     /// Tangential restitution beta in [-1, 1] (-1: smooth, 1: perfectly rough).
     pub tangential_restitution: Spanned<f64>,
     /// Reduced moment of inertia kappa in (0, 2/3]. Default 2/5 (uniform spheres).
-    #[serde(default = "two_fifths")]
+    #[serde(default = "default_inertia")]
     pub inertia: Spanned<f64>,
     /// Start rotational temperature (>= 0), a Maxwellian of the angular velocities. Default 1.
-    #[serde(default = "one")]
+    #[serde(default = "default_rotation_temperature")]
     pub temperature: Spanned<f64>,
     /// White-noise strength on rotation (>= 0): `dT_rot/dt = 2 noise` from it alone, as
     /// `drive.beta` gives `dT_tr/dt = 2 beta`. Default 0.
-    #[serde(default = "zero")]
+    #[serde(default = "default_rotation_noise")]
     pub noise: Spanned<f64>,
 }
 
-fn two_fifths() -> Spanned<f64> {
-    Spanned::new(0..0, 0.4)
+/// The core's defaults of a rough gas (`RotationChoice::spheres`), one place for every front
+/// end.
+fn default_rotation() -> gdsmc_core::physics::RotationChoice {
+    gdsmc_core::physics::RotationChoice::spheres(-1.0)
 }
 
-fn zero() -> Spanned<f64> {
-    Spanned::new(0..0, 0.0)
+fn default_inertia() -> Spanned<f64> {
+    Spanned::new(0..0, default_rotation().kappa)
+}
+
+fn default_rotation_temperature() -> Spanned<f64> {
+    Spanned::new(0..0, default_rotation().temperature)
+}
+
+fn default_rotation_noise() -> Spanned<f64> {
+    Spanned::new(0..0, default_rotation().noise)
 }
 
 /// One `[[species]]` table: a species of a granular mixture (Garzó and Dufty 1999).

@@ -228,8 +228,8 @@ pub struct RotationChoice {
 
 impl RotationChoice {
     /// Uniform spheres (`kappa = 2/5`) with tangential restitution `beta`, starting at
-    /// `T_rot = 1`, no noise on rotation.
-    pub fn spheres(beta: Real) -> Self {
+    /// `T_rot = 1`, no noise on rotation: the defaults every front end gives a rough gas.
+    pub const fn spheres(beta: Real) -> Self {
         RotationChoice {
             beta,
             kappa: 0.4,
