@@ -286,6 +286,11 @@ typedef struct {
     // Rough particles: white-noise strength on rotation >= 0 (`dT_rot/dt = 2 rotation_noise`
     // from it alone).
     double rotation_noise;
+    // The dimension: 3 (spheres, the default) or 2 (disks: velocities in the (x, y) plane,
+    // `z` components zero; a rough disk's rim velocity along z, `inertia` in (0, 1], 1/2 for
+    // uniform disks). Disks take the no-splitting scheme, a constant restitution, no drive or
+    // white noise, no species and a drift in the plane.
+    uint32_t dimension;
 } gdsmc_config;
 
 #ifdef __cplusplus
@@ -367,7 +372,7 @@ gdsmc_status gdsmc_sim_reseed(gdsmc_sim *sim, uint64_t seed);
 // alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
 // seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS), a unit host medium, and smooth
 // uniform spheres' rotation (tangential restitution -1, inertia 2/5, rotational temperature 1)
-// for when those are switched on.
+// for when those are switched on; dimension 3.
 //
 // # Safety
 // `out` must be NULL or point to writable memory for one gdsmc_config.

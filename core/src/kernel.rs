@@ -37,6 +37,12 @@ pub trait Kernel: Copy {
     /// True when the majorant depends on the maximal relative speed `Umax` (`lambda > 0`).
     const USES_UMAX: bool;
 
+    /// True for hard spheres: the scattering direction follows the hard-particle impact law.
+    /// In d = 3 that law makes `e` of GRW (3) uniform, as every kernel here has it; in d = 2
+    /// (hard disks) it does not ([`crate::geometry::Disks`]), while the Maxwell and VHS
+    /// kernels keep isotropic scattering.
+    const HARD: bool = false;
+
     /// `int_{S^2} B de <= B_max = 4 pi gamma C_lambda Umax^lambda`: GRW (19), RW (7), (19).
     fn b_max(&self, umax: Real) -> Real;
 
@@ -153,6 +159,7 @@ impl HardSpheres {
 
 impl Kernel for HardSpheres {
     const USES_UMAX: bool = true;
+    const HARD: bool = true;
     fn scaled(&self, f: Real) -> Result<Self, KernelError> {
         HardSpheres::new(self.strength, f)
     }

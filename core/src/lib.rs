@@ -41,6 +41,7 @@ pub mod collision;
 pub mod collisional;
 pub mod drive;
 pub mod engine;
+pub mod geometry;
 pub mod histogram;
 pub mod kernel;
 pub mod math;

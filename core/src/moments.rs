@@ -7,6 +7,11 @@
 //!   assume the bulk velocity zero. GRW (13) and RW (24) are exact for it.
 //! - `t_bulk = (1/3n) sum |v - V|^2 = (2/3) e` with `e` of GRW (11): about the bulk velocity, as
 //!   BRS (8) and MS use it.
+//!
+//! Disks (`d = 2`, [`crate::geometry`]) count two degrees of freedom: `T = <|v|^2>/2`, and the
+//! cumulants take MS (3) and (70) at `d = 2` ([`Observables::of_dim`]); the formulas below say
+//! `d = 3`, the general ones are `a2 = <c^4>/(d(d+2)T^2) - 1`,
+//! `a3 = 1 + 3 a2 - <c^6>/(d(d+2)(d+4) T^3)`.
 
 use crate::batch::sums::{Sums, accumulate};
 use crate::math::{Real, log10, sqrt};
@@ -66,10 +71,25 @@ impl Observables {
         Self::from_sums(&accumulate(p.as_slice()))
     }
 
+    /// As [`Observables::of`] in `d` dimensions (2: disks, whose `z` components are zero).
+    pub fn of_dim(p: &Particles<'_>, d: usize) -> Self {
+        Self::from_sums_dim(&accumulate(p.as_slice()), d)
+    }
+
     /// Observables from moment sums. The raw quantities (`t_raw`, `M`, `r`, `v4`, `v6`) come
     /// from the raw sums, everything about the bulk velocity from the central sums, which keep
     /// their accuracy when `|V|` is large against the thermal speed (cooling gases, drifts).
     pub fn from_sums(s: &Sums) -> Self {
+        Self::from_sums_dim(s, 3)
+    }
+
+    /// As [`Observables::from_sums`] in `d` dimensions (2 or 3): temperatures per degree of
+    /// freedom, MS (3) and (70) at that `d`, RW (29)'s weights at that `d` (Grad's: the stress
+    /// deviator within the plane, `2/((d+2)T)` for the heat flux, `gamma = <|c|^4> - d(d+2)T^2`
+    /// over `8 d(d+2) T^2`).
+    pub fn from_sums_dim(s: &Sums, d: usize) -> Self {
+        let dr = d as Real;
+        let (m4, m6) = (dr * (dr + 2.0), dr * (dr + 2.0) * (dr + 4.0));
         let inv = 1.0 / s.n as Real;
         let bulk = Vec3::new(s.s1[0] * inv, s.s1[1] * inv, s.s1[2] * inv);
         let m: [Real; 6] = core::array::from_fn(|k| s.s2[k] * inv);
@@ -78,11 +98,11 @@ impl Observables {
             0.5 * s.s3[1] * inv,
             0.5 * s.s3[2] * inv,
         );
-        let t_raw = (m[0] + m[1] + m[2]) / 3.0;
+        let t_raw = trace(&m, d) / dr;
         // GRW Section 1: P = M - rho V V^T and q = r - (M + (tr M/2 - rho |V|^2) I) V are the
         // central second moment and half the central third moment.
         let stress: [Real; 6] = core::array::from_fn(|k| s.c2[k] * inv);
-        let t_bulk = (stress[0] + stress[1] + stress[2]) / 3.0;
+        let t_bulk = trace(&stress, d) / dr;
         let heat_flux = Vec3::new(
             0.5 * s.c3[0] * inv,
             0.5 * s.c3[1] * inv,
@@ -92,16 +112,23 @@ impl Observables {
         let c6 = s.c6 * inv;
         let (c1, c3) = (s.c1 * inv, s.c3n * inv);
         let t = t_bulk;
-        let a2 = c4 / (15.0 * t * t) - 1.0;
-        let a3 = 1.0 + 3.0 * a2 - c6 / (105.0 * t * t * t);
-        let dev = [stress[0] - t, stress[1] - t, stress[2] - t];
-        let frob2 = dev[0] * dev[0]
-            + dev[1] * dev[1]
-            + dev[2] * dev[2]
-            + 2.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]);
-        let gamma = c4 - 15.0 * t * t;
+        let a2 = c4 / (m4 * t * t) - 1.0;
+        let a3 = 1.0 + 3.0 * a2 - c6 / (m6 * t * t * t);
+        let frob2 = if d == 2 {
+            let dev = [stress[0] - t, stress[1] - t];
+            dev[0] * dev[0] + dev[1] * dev[1] + 2.0 * (stress[3] * stress[3])
+        } else {
+            let dev = [stress[0] - t, stress[1] - t, stress[2] - t];
+            dev[0] * dev[0]
+                + dev[1] * dev[1]
+                + dev[2] * dev[2]
+                + 2.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5])
+        };
+        let gamma = c4 - m4 * t * t;
         let crit = sqrt(
-            0.5 * frob2 + 2.0 / (5.0 * t) * heat_flux.norm2() + gamma * gamma / (120.0 * t * t),
+            0.5 * frob2
+                + 2.0 / ((dr + 2.0) * t) * heat_flux.norm2()
+                + gamma * gamma / (8.0 * m4 * t * t),
         ) / t;
         Observables {
             bulk,
@@ -134,6 +161,11 @@ impl Observables {
     /// directly at observations). `log10_t_bulk` stays finite where
     /// `t_bulk` underflows.
     pub fn in_units(&self, s: Real, offset: Vec3) -> Observables {
+        self.in_units_dim(s, offset, 3)
+    }
+
+    /// As [`Observables::in_units`] in `d` dimensions.
+    pub fn in_units_dim(&self, s: Real, offset: Vec3, d: usize) -> Observables {
         if s == 1.0 && offset == Vec3::ZERO {
             return *self;
         }
@@ -174,7 +206,7 @@ impl Observables {
         };
         Observables {
             bulk,
-            t_raw: t_bulk + v2 / 3.0,
+            t_raw: t_bulk + v2 / d as Real,
             t_bulk,
             pressure: t_bulk,
             stress,
@@ -219,5 +251,16 @@ impl Observables {
             ("<|c|^6>", self.c6.is_finite()),
         ];
         checks.iter().find(|(_, ok)| !ok).map(|(name, _)| *name)
+    }
+}
+
+/// The trace of an upper-triangle tensor `[xx, yy, zz, ..]` over the first `d` axes; for
+/// `d = 3` the sum in the order it always was (the same bits).
+#[inline]
+fn trace(m: &[Real; 6], d: usize) -> Real {
+    if d == 2 {
+        m[0] + m[1]
+    } else {
+        m[0] + m[1] + m[2]
     }
 }

@@ -144,6 +144,11 @@ pub struct gdsmc_config {
     /// Rough particles: white-noise strength on rotation >= 0 (`dT_rot/dt = 2 rotation_noise`
     /// from it alone).
     pub rotation_noise: f64,
+    /// The dimension: 3 (spheres, the default) or 2 (disks: velocities in the (x, y) plane,
+    /// `z` components zero; a rough disk's rim velocity along z, `inertia` in (0, 1], 1/2 for
+    /// uniform disks). Disks take the no-splitting scheme, a constant restitution, no drive or
+    /// white noise, no species and a drift in the plane.
+    pub dimension: u32,
 }
 
 /// Most species a mixture may have (the core's `mixture::MAX_SPECIES`, written out for the
@@ -207,6 +212,7 @@ impl gdsmc_config {
             inertia: SMOOTH.kappa,
             rotation_temperature: SMOOTH.temperature,
             rotation_noise: SMOOTH.noise,
+            dimension: 3,
         }
     }
 }
@@ -215,7 +221,7 @@ impl gdsmc_config {
 /// alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,
 /// seed 1, stream 0; dt = 1/4, step_factor = 0.01 (MS), a unit host medium, and smooth
 /// uniform spheres' rotation (tangential restitution -1, inertia 2/5, rotational temperature 1)
-/// for when those are switched on.
+/// for when those are switched on; dimension 3.
 ///
 /// # Safety
 /// `out` must be NULL or point to writable memory for one gdsmc_config.

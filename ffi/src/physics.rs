@@ -6,8 +6,8 @@
 use crate::config::*;
 use crate::status::{Failure, Msg, fail, gdsmc_status, msg};
 use gdsmc_core::physics::{
-    BackgroundKernel, Component, DriveChoice, KernelChoice, Model, Param, Physics, PhysicsError,
-    RestitutionLaw, RotationChoice, SchemeChoice, SpeciesChoice,
+    BackgroundKernel, Component, DimensionChoice, DriveChoice, KernelChoice, Model, Param, Physics,
+    PhysicsError, RestitutionLaw, RotationChoice, SchemeChoice, SpeciesChoice,
 };
 
 fn invalid<T>(m: Msg) -> Result<T, Failure> {
@@ -60,6 +60,7 @@ fn field(p: Param) -> &'static str {
         Param::Inertia => "inertia",
         Param::RotationTemperature => "rotation_temperature",
         Param::RotationNoise => "rotation_noise",
+        Param::Dimension => "dimension",
     }
 }
 
@@ -161,6 +162,15 @@ impl gdsmc_config {
             drift: self.drift,
         };
         self.mixture(&mut physics)?;
+        physics.dimension = match self.dimension {
+            3 => DimensionChoice::Three,
+            2 => DimensionChoice::Two,
+            d => {
+                return invalid(msg!(
+                    "config.dimension must be 2 (disks) or 3 (spheres), got {d}"
+                ));
+            }
+        };
         if self.rough != 0 {
             physics.rotation = Some(RotationChoice {
                 beta: self.tangential_restitution,
@@ -234,6 +244,7 @@ impl gdsmc_config {
             cfg.species_diameter[k] = s.diameter;
             cfg.species_beta[k] = s.beta;
         }
+        cfg.dimension = p.dimension.d() as u32;
         if let Some(r) = p.rotation {
             cfg.rough = 1;
             cfg.tangential_restitution = r.beta;

@@ -108,6 +108,16 @@ impl Scene {
         self.physics.rotation.is_none_or(|r| r.beta == -1.0)
     }
 
+    /// Whether the particles are disks (`particles.dimension = 2`).
+    pub fn is_disks(&self) -> bool {
+        self.physics.dimension == gdsmc_core::physics::DimensionChoice::Two
+    }
+
+    /// The dimension `d`: 3 for spheres, 2 for disks.
+    pub fn dimension(&self) -> usize {
+        self.physics.dimension.d()
+    }
+
     /// Values each ensemble appends after its observables: the speed histogram, the reduced
     /// histogram and the marginal histograms (first and last observation).
     pub fn extra_len(&self) -> usize {

@@ -54,9 +54,10 @@ pub struct SceneFile {
 pub struct RotationSpec {
     /// Tangential restitution beta in [-1, 1] (-1: smooth, 1: perfectly rough).
     pub tangential_restitution: Spanned<f64>,
-    /// Reduced moment of inertia kappa in (0, 2/3]. Default 2/5 (uniform spheres).
-    #[serde(default = "default_inertia")]
-    pub inertia: Spanned<f64>,
+    /// Reduced moment of inertia kappa: in (0, 2/3] for spheres, default 2/5 (uniform
+    /// spheres); in (0, 1] for disks, default 1/2 (uniform disks).
+    #[serde(default)]
+    pub inertia: Option<Spanned<f64>>,
     /// Start rotational temperature (>= 0), a Maxwellian of the angular velocities. Default 1.
     #[serde(default = "default_rotation_temperature")]
     pub temperature: Spanned<f64>,
@@ -70,10 +71,6 @@ pub struct RotationSpec {
 /// end.
 fn default_rotation() -> gdsmc_core::physics::RotationChoice {
     gdsmc_core::physics::RotationChoice::spheres(-1.0)
-}
-
-fn default_inertia() -> Spanned<f64> {
-    Spanned::new(0..0, default_rotation().kappa)
 }
 
 fn default_rotation_temperature() -> Spanned<f64> {
@@ -147,6 +144,9 @@ pub struct ParticlesSpec {
     /// Initial distribution. Default: the standard Maxwellian GRW (27).
     #[serde(default)]
     pub initial: InitialSpec,
+    /// The dimension: 3 (spheres, the default) or 2 (disks: velocities in a plane).
+    #[serde(default)]
+    pub dimension: Option<Spanned<i64>>,
 }
 
 fn default_n() -> Spanned<usize> {
@@ -158,6 +158,7 @@ impl Default for ParticlesSpec {
         ParticlesSpec {
             n: default_n(),
             initial: InitialSpec::default(),
+            dimension: None,
         }
     }
 }

@@ -13,8 +13,13 @@
 //! in t with slope `zeta*/2` in the cooling state); its half-width is the sum of the two
 //! ends' (a bound whatever their correlation).
 //!
+//! With a second argument `disks` the same for rough hard disks (`d = 2`, uniform disks,
+//! kappa = 1/2, `scenes/rough-disks-hcs.toml`, the approximation for disks), writing
+//! `rough-disks-hcs.*`.
+//!
 //! ```sh
 //! cargo run --release -p gdsmc --example rough_cooling -- docs
+//! cargo run --release -p gdsmc --example rough_cooling -- docs disks
 //! ```
 
 use gdsmc_runner::reference::rough::RoughApproximation;
@@ -28,20 +33,53 @@ const BETAS: [f64; 9] = [-0.75, -0.5, -0.25, 0.0, 0.25, 0.5, 0.75, 0.9, 1.0];
 const ALPHAS: [f64; 2] = [0.9, 0.7];
 const N: usize = 2048;
 const ENSEMBLES: u64 = 40;
-const KAPPA: f64 = 0.4;
 /// gamma C of the scene (gamma = 4, C = 1/(4 pi)).
 const STRENGTH: f64 = 1.0 / std::f64::consts::PI;
 /// Collisions per particle over the whole run.
 const COLLISIONS: f64 = 300.0;
 const POINTS: usize = 60;
 
-fn approximation(alpha: f64, beta: f64) -> RoughApproximation {
-    RoughApproximation::new(alpha, beta, KAPPA, STRENGTH, 1.0, [0.0; 2])
+/// The particles: dimension, reduced moment of inertia, scene and output name, chart title.
+struct Shape {
+    d: usize,
+    kappa: f64,
+    name: &'static str,
+    title: &'static str,
+}
+
+const SPHERES: Shape = Shape {
+    d: 3,
+    kappa: 0.4,
+    name: "rough-hcs",
+    title: "Rough hard spheres (kappa = 2/5)",
+};
+
+const DISKS: Shape = Shape {
+    d: 2,
+    kappa: 0.5,
+    name: "rough-disks-hcs",
+    title: "Rough hard disks (kappa = 1/2)",
+};
+
+fn approximation(shape: &Shape, alpha: f64, beta: f64) -> RoughApproximation {
+    RoughApproximation::in_dimension(shape.d, alpha, beta, shape.kappa, STRENGTH, 1.0, [0.0; 2])
+}
+
+/// `E |g|` at `T_tr = 1` in `d` dimensions: `2 Gamma((d + 1)/2) / Gamma(d/2)`.
+fn mean_relative_speed(d: usize) -> f64 {
+    let d = d as f64;
+    2.0 * libm::tgamma((d + 1.0) / 2.0) / libm::tgamma(d / 2.0)
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = std::env::args().nth(1).unwrap_or_else(|| "docs".into());
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/rough-hcs.toml");
+    let shape = match std::env::args().nth(2).as_deref() {
+        Some("disks") => DISKS,
+        _ => SPHERES,
+    };
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../scenes")
+        .join(format!("{}.toml", shape.name));
     let mut csv = String::from(
         "alpha,beta,theta,theta_half_width,theta_ma,zeta_star,zeta_half_width,zeta_ma\n",
     );
@@ -54,12 +92,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let (mut th_sim, mut th_ma, mut z_sim, mut z_ma) =
             (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         for (k, beta) in BETAS.into_iter().enumerate() {
-            let ma = approximation(alpha, beta);
+            let ma = approximation(&shape, alpha, beta);
             let theta_ma = ma.cooling_theta().ok_or("beta > -1 has a theta")?;
             let (zeta_ma, _) = ma.cooling_rates(1.0).ok_or("beta > -1 has rates")?;
-            // Collisions per particle per unit of ln(1 + t/t0): 2 nu / zeta = 3 / (2 (A - B theta)).
-            let [a, b, _] = ma.abc;
-            let per_log = 1.5 / (a - b * theta_ma);
+            // Collisions per particle per unit of ln(1 + t/t0): 2 nu / zeta at T_tr = 1, with
+            // nu = 4 pi gamma C E|g| (spheres: 3 / (2 (A - B theta))).
+            let per_log = 2.0 * ma.rate * mean_relative_speed(shape.d) / zeta_ma;
             let span = COLLISIONS / per_log;
             let t0 = 2.0 / zeta_ma; // Haff: T = 1/(1 + t/t0)^2 from T_tr = 1
             let set = [
@@ -132,7 +170,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         for i in 0..=80 {
             let beta = -0.9 + 1.9 * i as f64 / 80.0;
-            let ma = approximation(alpha, beta);
+            let ma = approximation(&shape, alpha, beta);
             if let (Some(th), Some((z, _))) = (ma.cooling_theta(), ma.cooling_rates(1.0)) {
                 th_ma.push((beta, th, 0.0));
                 z_ma.push((beta, z, 0.0));
@@ -159,22 +197,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = Path::new(&out);
     std::fs::create_dir_all(dir)?;
     let theta = profile(
-        "Rough hard spheres (kappa = 2/5), cooling state: theta = T_rot / T_tr",
+        &format!("{}, cooling state: theta = T_rot / T_tr", shape.title),
         "tangential restitution beta",
         "theta",
         false,
         &theta_series,
     )?;
     let zeta = profile(
-        "Rough hard spheres (kappa = 2/5), cooling state: zeta / sqrt(T_tr)",
+        &format!("{}, cooling state: zeta / sqrt(T_tr)", shape.title),
         "tangential restitution beta",
         "zeta*",
         false,
         &zeta_series,
     )?;
-    std::fs::write(dir.join("rough-hcs.csv"), csv)?;
-    std::fs::write(dir.join("rough-hcs-theta.svg"), theta.svg)?;
-    std::fs::write(dir.join("rough-hcs-zeta.svg"), zeta.svg)?;
+    std::fs::write(dir.join(format!("{}.csv", shape.name)), csv)?;
+    std::fs::write(dir.join(format!("{}-theta.svg", shape.name)), theta.svg)?;
+    std::fs::write(dir.join(format!("{}-zeta.svg", shape.name)), zeta.svg)?;
     print!("{table}");
     eprintln!("{:.1} s", started.elapsed().as_secs_f64());
     Ok(())

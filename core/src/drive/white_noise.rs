@@ -4,6 +4,7 @@
 
 use super::Drive;
 use crate::batch::kick::white_noise_kick_all;
+use crate::geometry::{Disks, Geometry};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
 use crate::rng::Rng;
@@ -41,5 +42,32 @@ impl Drive for WhiteNoise {
 
     fn kick_all<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
         white_noise_kick_all(2.0 * self.beta, p, t, rng);
+    }
+}
+
+/// White noise of strength `beta >= 0` on disks (`d = 2`, [`crate::geometry`]): GRW (18) on
+/// the two components of the plane, `dT/dt = 2 beta` per degree of freedom as in d = 3.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlanarWhiteNoise {
+    beta: Real,
+}
+
+impl PlanarWhiteNoise {
+    /// `None` unless `beta` is finite and `>= 0`.
+    pub fn new(beta: Real) -> Option<Self> {
+        WhiteNoise::new(beta).map(|w| PlanarWhiteNoise { beta: w.beta })
+    }
+    /// The heating strength `beta`.
+    pub fn beta(&self) -> Real {
+        self.beta
+    }
+}
+
+impl Drive for PlanarWhiteNoise {
+    const ACTS: bool = true;
+
+    #[inline(always)]
+    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
+        v + sqrt(2.0 * self.beta * dt) * Disks::normal(rng)
     }
 }

@@ -7,13 +7,13 @@ use super::pairs::PairsAhead;
 use super::{Counts, EngineError};
 use crate::collision::inelastic;
 use crate::drive::Drive;
+use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform01};
-use crate::sample::unit_sphere;
 use crate::vec3::Vec3;
 
 /// The adaptive majorant `Umax` of the relative speed and the reference velocity `V` it is
@@ -58,8 +58,9 @@ impl Majorant {
 /// What the Markov-jump loops ([`super::NoSplitting`], [`super::Splitting`]) share: the
 /// physics (kernel, drive, restitution law), the majorant, the counts and the pairs drawn
 /// ahead, with the two things both do the same way: process a candidate pair and synchronize.
+/// `G` is the dimension ([`crate::geometry`]): it chooses the scattering direction.
 #[derive(Clone, Debug)]
-pub struct Collider<K, D, A> {
+pub struct Collider<K, D, A, G = Spheres> {
     /// The collision kernel.
     pub kernel: K,
     /// The drive.
@@ -72,9 +73,10 @@ pub struct Collider<K, D, A> {
     pub counts: Counts,
     /// Candidate pairs drawn ahead.
     pub pairs: PairsAhead,
+    dim: core::marker::PhantomData<G>,
 }
 
-impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
+impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Collider<K, D, A, G> {
     /// The physics with an empty majorant and zero counts.
     pub fn new(kernel: K, drive: D, restitution: A) -> Self {
         Collider {
@@ -84,6 +86,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
             maj: Majorant::default(),
             counts: Counts::default(),
             pairs: PairsAhead::default(),
+            dim: core::marker::PhantomData,
         }
     }
 
@@ -96,7 +99,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
 
     /// Processes the candidate pair `(i, j)` whose partners are already at the event time: the
     /// fictitious-collision test against the majorant that generated the event (GRW (20)),
-    /// else a uniform direction and GRW (3); the majorant covers the new velocities (and the
+    /// else a scattering direction (uniform on the sphere; [`Geometry::scattering`]) and GRW (3); the majorant covers the new velocities (and the
     /// kicked ones when `cover_kicked`). Returns true when the majorant changed (the caller
     /// then recomputes its rate).
     #[inline(always)]
@@ -122,7 +125,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Collider<K, D, A> {
             return self.maj.umax != umax_event;
         }
         let u = vi - vj;
-        let e = unit_sphere(rng);
+        let e = G::scattering::<K, R>(u, rng);
         let alpha = clamped_coefficient(&self.restitution, u, e, &mut self.counts);
         let (a, b) = inelastic(vi, vj, e, alpha);
         p.set_velocity(i, a);
@@ -186,7 +189,12 @@ pub fn admits<K: Kernel, R: Rng + ?Sized>(
 /// The observables of a synchronized system, or [`EngineError::NonFinite`] (every loop's
 /// check after a synchronization).
 pub fn observables(p: &Particles<'_>) -> Result<Observables, EngineError> {
-    let obs = Observables::of(p);
+    observables_dim(p, 3)
+}
+
+/// As [`observables`] in `d` dimensions ([`Observables::of_dim`]).
+pub fn observables_dim(p: &Particles<'_>, d: usize) -> Result<Observables, EngineError> {
+    let obs = Observables::of_dim(p, d);
     match obs.non_finite() {
         None => Ok(obs),
         Some(what) => Err(EngineError::NonFinite(what)),

@@ -49,9 +49,9 @@ pub trait EventLoop {
 }
 
 macro_rules! impl_event_loop {
-    ($t:ident) => {
-        impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution>
-            EventLoop for $t<K, D, A>
+    ($t:ident, [$($g:tt)*], $ty:ty) => {
+        impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution, $($g)*>
+            EventLoop for $ty
         {
             fn advance_to<R: Rng + ?Sized>(
                 &mut self,
@@ -76,8 +76,8 @@ macro_rules! impl_event_loop {
         }
     };
 }
-impl_event_loop!(NoSplitting);
-impl_event_loop!(Splitting);
+impl_event_loop!(NoSplitting, [G: crate::geometry::Geometry], NoSplitting<K, D, A, G>);
+impl_event_loop!(Splitting, [], Splitting<K, D, A>);
 
 impl<D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop for TimeStepped<D, A> {
     fn advance_to<R: Rng + ?Sized>(

@@ -34,10 +34,11 @@
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
 
-use super::event::{Collider, RefreshWindow, observables};
+use super::event::{Collider, RefreshWindow, observables_dim};
 use super::jumps::{Jumps, run_events};
 use super::{Counts, EngineError};
 use crate::drive::Drive;
+use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
@@ -46,10 +47,12 @@ use crate::restitution::Restitution;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
-/// The exact (no-splitting) event loop for kernel `K`, drive `D` and restitution law `A`.
+/// The exact (no-splitting) event loop for kernel `K`, drive `D`, restitution law `A` and
+/// dimension `G` (spheres unless named; disks: [`crate::geometry::Disks`], whose drive acts in
+/// the plane).
 #[derive(Clone, Debug)]
-pub struct NoSplitting<K, D, A> {
-    c: Collider<K, D, A>,
+pub struct NoSplitting<K, D, A, G = Spheres> {
+    c: Collider<K, D, A, G>,
     t: Real,
     refresh: RefreshWindow,
     scale: Real,
@@ -65,8 +68,22 @@ pub const RESCALE_BELOW: Real = 1e-8;
 impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     /// Starts the scheme at time `t0` on the particles `p` (already holding the initial
     /// velocities): sets every last-kick time to `t0` and `Umax = 2 max |v_i - V|`
-    /// (GRW steps 1.1-1.4). Returns the observables at `t0`.
+    /// (GRW steps 1.1-1.4). Returns the observables at `t0`. Spheres; disks:
+    /// [`NoSplitting::start_in`].
     pub fn start(
+        kernel: K,
+        drive: D,
+        restitution: A,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(Self, Observables), EngineError> {
+        Self::start_in(kernel, drive, restitution, p, t0)
+    }
+}
+
+impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
+    /// As [`NoSplitting::start`] in dimension `G` (named by the result's type).
+    pub fn start_in(
         kernel: K,
         drive: D,
         restitution: A,
@@ -161,7 +178,8 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     /// Observables of the synchronized system (in physical units); refreshes `V` and `Umax`,
     /// and rescales a cooling gas whose stored temperature fell below the threshold.
     fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        let mut obs = observables(p)?;
+        let d = G::CHOICE.d();
+        let mut obs = observables_dim(p, d)?;
         if !D::ACTS
             && obs.t_bulk > 0.0
             && obs.t_bulk < self.rescale_below * max(1.0, obs.bulk.norm2())
@@ -175,10 +193,10 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
             self.offset += self.scale * obs.bulk;
             self.scale /= s;
             self.c.counts.rescales += 1;
-            obs = Observables::of(p);
+            obs = Observables::of_dim(p, d);
         }
         self.c.synchronized(&obs);
-        Ok(obs.in_units(self.scale, self.offset))
+        Ok(obs.in_units_dim(self.scale, self.offset, d))
     }
 
     /// Sets the stored temperature below which a gas with no drive is rescaled (default
@@ -194,7 +212,7 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     }
 }
 
-impl<K: Kernel, D: Drive, A: Restitution> Jumps for NoSplitting<K, D, A> {
+impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Jumps for NoSplitting<K, D, A, G> {
     const ACTS: bool = D::ACTS;
     const USES_UMAX: bool = K::USES_UMAX;
 

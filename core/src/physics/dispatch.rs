@@ -3,14 +3,16 @@
 //! choices above it, so that every leaf is a monomorphized event loop.
 
 use super::engine::{
-    ByDrive, ByLaw, ByMixtureDrive, ByRoughDrive, ByScheme, Engine, MixtureEngine, RoughEngine,
+    ByDiskDrive, ByDrive, ByLaw, ByMixtureDrive, ByRoughDrive, ByScheme, DiskEngine, Engine,
+    MixtureEngine, RoughDiskEngine, RoughEngine,
 };
 use super::model::{DriveModel, KernelModel, LawModel, Model, SchemeModel};
 use super::rotation::RoughModel;
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
-use crate::drive::{Drive, NoDrive};
+use crate::drive::{Drive, NoDrive, PlanarWhiteNoise};
 use crate::engine::{EngineError, NoSplitting, Splitting, TimeStepped};
+use crate::geometry::{DimensionChoice, Disks, Geometry};
 use crate::kernel::Kernel;
 use crate::math::Real;
 use crate::mixture::{MixtureNoSplitting, PairPhysics, StartError};
@@ -54,13 +56,23 @@ impl Model {
         if bad {
             return Err(EngineError::NonFinite("an initial velocity"));
         }
+        let disks = self.dimension == DimensionChoice::Two;
+        if disks {
+            // A Maxwellian's projection on the plane is the Maxwellian of disks at the same
+            // temperature (the components are independent): the z components are dropped.
+            for q in p.as_mut_slice() {
+                q.vz = 0.0;
+            }
+        }
         if let Some(r) = &self.rough {
-            // The rim velocities after all translational ones, from their own Maxwellian.
+            // The rim velocities after all translational ones, from their own Maxwellian
+            // (disks keep its z component, their one rotational degree of freedom).
             if !p.has_spins() {
                 return Err(EngineError::Spins);
             }
             for s in p.spins_mut() {
-                *s = Spin::new(r.start.sample(rng));
+                let w = r.start.sample(rng);
+                *s = Spin::new(if disks { Vec3::new(0.0, 0.0, w.z) } else { w });
             }
         }
         Ok(())
@@ -90,6 +102,9 @@ impl Model {
             };
             return wrap(engine, Engine::Mixture);
         }
+        if self.dimension == DimensionChoice::Two {
+            return wrap(self.disks(p, t0), Engine::Disks);
+        }
         if let Some(r) = &self.rough {
             let engine = match self.kernel {
                 KernelModel::Maxwell(k) => wrap(rough(r, k, p, t0), RoughEngine::Maxwell),
@@ -114,6 +129,59 @@ impl Model {
     ) -> Result<(Engine, Observables), EngineError> {
         self.initialize(p, t0, rng)?;
         self.start(p, t0)
+    }
+
+    /// Disks: the smooth loop by kernel and drive, or the rough one. Out of line, as the
+    /// mixture's start is, so that the spheres' frames do not grow.
+    #[inline(never)]
+    fn disks(
+        &self,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(DiskEngine, Observables), EngineError> {
+        if let Some(r) = &self.rough {
+            let engine = match self.kernel {
+                KernelModel::Maxwell(k) => {
+                    wrap(rough::<_, Disks>(r, k, p, t0), RoughDiskEngine::Maxwell)
+                }
+                KernelModel::HardSpheres(k) => {
+                    wrap(rough::<_, Disks>(r, k, p, t0), RoughDiskEngine::HardSpheres)
+                }
+                KernelModel::Vhs(k) => wrap(rough::<_, Disks>(r, k, p, t0), RoughDiskEngine::Vhs),
+            };
+            return wrap(engine, DiskEngine::Rough);
+        }
+        match self.kernel {
+            KernelModel::Maxwell(k) => wrap(self.disk_drive(k, p, t0), DiskEngine::Maxwell),
+            KernelModel::HardSpheres(k) => wrap(self.disk_drive(k, p, t0), DiskEngine::HardSpheres),
+            KernelModel::Vhs(k) => wrap(self.disk_drive(k, p, t0), DiskEngine::Vhs),
+        }
+    }
+
+    fn disk_drive<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
+        // Validated: disks have a constant law and no drive or white noise.
+        let LawModel::Constant(a) = self.law else {
+            return Err(EngineError::NonFinite("a restitution law of disks"));
+        };
+        match self.drive {
+            DriveModel::WhiteNoise(w) => {
+                let d = PlanarWhiteNoise::new(w.beta())
+                    .ok_or(EngineError::NonFinite("the white noise"))?;
+                wrap(
+                    NoSplitting::start_in(k, d, a, p, t0),
+                    ByDiskDrive::WhiteNoise,
+                )
+            }
+            _ => wrap(
+                NoSplitting::start_in(k, NoDrive, a, p, t0),
+                ByDiskDrive::None,
+            ),
+        }
     }
 
     fn by_drive<K: Kernel>(
@@ -233,27 +301,28 @@ fn mixture<K: Kernel>(
     }
 }
 
-/// A mixture loop's start as an engine's: its refusal as an engine error (the model was
-/// validated, so only the engine's own refusals remain), the whole gas's observables.
+/// The rough loop of kernel `k` in dimension `G`, by drive.
 #[inline(never)]
-fn rough<K: Kernel>(
+fn rough<K: Kernel, G: Geometry>(
     r: &RoughModel,
     k: K,
     p: &mut Particles<'_>,
     t0: Real,
-) -> Result<(ByRoughDrive<K>, Observables), EngineError> {
+) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
     match r.noise {
         None => wrap(
-            RoughNoSplitting::start(k, NoDrive, r.map, p, t0),
+            RoughNoSplitting::start_in(k, NoDrive, r.map, p, t0),
             ByRoughDrive::None,
         ),
         Some(d) => wrap(
-            RoughNoSplitting::start(k, d, r.map, p, t0),
+            RoughNoSplitting::start_in(k, d, r.map, p, t0),
             ByRoughDrive::Noise,
         ),
     }
 }
 
+/// A mixture loop's start as an engine's: its refusal as an engine error (the model was
+/// validated, so only the engine's own refusals remain), the whole gas's observables.
 fn started<E>(
     e: Result<(E, crate::mixture::MixtureObservables), StartError>,
 ) -> Result<(E, Observables), EngineError> {

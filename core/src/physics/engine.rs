@@ -6,9 +6,10 @@
 
 use crate::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, MaxwellBackground,
-    NoDrive, WhiteNoise,
+    NoDrive, PlanarWhiteNoise, WhiteNoise,
 };
 use crate::engine::{Counts, EngineError, EventLoop, NoSplitting, Splitting, TimeStepped};
+use crate::geometry::{Disks, Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use crate::math::Real;
 use crate::mixture::{MixtureNoSplitting, MixtureObservables};
@@ -37,6 +38,42 @@ pub enum Engine {
     Mixture(MixtureEngine),
     /// Rough particles (translation and rotation).
     Rough(RoughEngine),
+    /// Disks (`d = 2`), smooth or rough.
+    Disks(DiskEngine),
+}
+
+/// The engine of disks (`d = 2`, no-splitting, a constant restitution), smooth by kernel or
+/// rough.
+#[derive(Clone, Debug)]
+pub enum DiskEngine {
+    /// Maxwell pseudo-molecules.
+    Maxwell(ByDiskDrive<Maxwell>),
+    /// Hard disks.
+    HardSpheres(ByDiskDrive<HardSpheres>),
+    /// Variable hard disks (isotropic scattering).
+    Vhs(ByDiskDrive<Vhs>),
+    /// Rough disks.
+    Rough(RoughDiskEngine),
+}
+
+/// Smooth disks by drive, for kernel `K`.
+#[derive(Clone, Debug)]
+pub enum ByDiskDrive<K> {
+    /// No drive: the disks cool.
+    None(NoSplitting<K, NoDrive, Constant, Disks>),
+    /// White noise in the plane.
+    WhiteNoise(NoSplitting<K, PlanarWhiteNoise, Constant, Disks>),
+}
+
+/// Rough disks by kernel.
+#[derive(Clone, Debug)]
+pub enum RoughDiskEngine {
+    /// Maxwell pseudo-molecules.
+    Maxwell(ByRoughDrive<Maxwell, Disks>),
+    /// Hard disks.
+    HardSpheres(ByRoughDrive<HardSpheres, Disks>),
+    /// Variable hard disks.
+    Vhs(ByRoughDrive<Vhs, Disks>),
 }
 
 /// A rough gas's engine (no-splitting, a constant normal restitution), by kernel.
@@ -50,13 +87,13 @@ pub enum RoughEngine {
     Vhs(ByRoughDrive<Vhs>),
 }
 
-/// A rough gas's engine by drive, for kernel `K`.
+/// A rough gas's engine by drive, for kernel `K` and dimension `G`.
 #[derive(Clone, Debug)]
-pub enum ByRoughDrive<K> {
+pub enum ByRoughDrive<K, G = Spheres> {
     /// No drive: the gas cools.
-    None(RoughNoSplitting<K, NoDrive>),
+    None(RoughNoSplitting<K, NoDrive, G>),
     /// White noise on translation and rotation.
-    Noise(RoughNoSplitting<K, RoughNoise>),
+    Noise(RoughNoSplitting<K, RoughNoise, G>),
 }
 
 /// A mixture's engine (no-splitting, a constant restitution per species pair), by kernel.
@@ -152,9 +189,12 @@ macro_rules! forward {
     };
 }
 
-forward!(Engine, [], Maxwell, HardSpheres, Vhs, Mixture, Rough);
+forward!(Engine, [], Maxwell, HardSpheres, Vhs, Mixture, Rough, Disks);
+forward!(DiskEngine, [], Maxwell, HardSpheres, Vhs, Rough);
+forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise);
+forward!(RoughDiskEngine, [], Maxwell, HardSpheres, Vhs);
 forward!(RoughEngine, [], Maxwell, HardSpheres, Vhs);
-forward!(ByRoughDrive<K>, [K: Kernel], None, Noise);
+forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
 forward!(MixtureEngine, [], Maxwell, HardSpheres, Vhs);
 forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);

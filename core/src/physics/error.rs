@@ -78,6 +78,8 @@ pub enum Param {
     RotationTemperature,
     /// The white-noise strength on rotation, >= 0.
     RotationNoise,
+    /// The dimension (2: disks, 3: spheres).
+    Dimension,
 }
 
 impl core::fmt::Display for Param {
@@ -118,6 +120,7 @@ impl core::fmt::Display for Param {
             Param::Inertia => f.write_str("inertia"),
             Param::RotationTemperature => f.write_str("rotation_temperature"),
             Param::RotationNoise => f.write_str("rotation_noise"),
+            Param::Dimension => f.write_str("dimension"),
         }
     }
 }

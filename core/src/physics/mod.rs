@@ -40,6 +40,7 @@
 //! assert_eq!(bad.validate().unwrap_err().to_string(), "restitution must lie in (0, 1], got 1.5");
 //! ```
 
+mod dimension;
 mod dispatch;
 pub mod engine;
 pub mod error;
@@ -51,6 +52,7 @@ pub use engine::Engine;
 pub use error::{Param, PhysicsError, Problem};
 pub use model::Model;
 
+pub use crate::geometry::DimensionChoice;
 use crate::math::Real;
 pub use crate::mixture::{MAX_PAIRS, MAX_SPECIES};
 
@@ -237,6 +239,23 @@ impl RotationChoice {
             noise: 0.0,
         }
     }
+
+    /// Uniform disks (`kappa = 1/2`), otherwise as [`RotationChoice::spheres`].
+    pub const fn disks(beta: Real) -> Self {
+        RotationChoice {
+            kappa: 0.5,
+            ..Self::spheres(beta)
+        }
+    }
+
+    /// The defaults of a rough gas in `dimension`: [`RotationChoice::spheres`] or
+    /// [`RotationChoice::disks`].
+    pub const fn uniform(dimension: DimensionChoice, beta: Real) -> Self {
+        match dimension {
+            DimensionChoice::Three => Self::spheres(beta),
+            DimensionChoice::Two => Self::disks(beta),
+        }
+    }
 }
 
 /// Everything physical about a simulation, as plain data; see the module docs.
@@ -265,6 +284,11 @@ pub struct Physics {
     /// restitution (alpha), no drive or white noise, the no-splitting scheme and one spin per
     /// particle beside the particle buffer ([`crate::particles::Particles::with_spins`]).
     pub rotation: Option<RotationChoice>,
+    /// The dimension: spheres (`d = 3`, the default) or disks (`d = 2`,
+    /// [`crate::geometry`]). Disks take the no-splitting scheme, a constant restitution, no
+    /// drive or white noise, one species and start drifts in the plane; a rough disk has one
+    /// rotational degree of freedom and `kappa` in (0, 1].
+    pub dimension: DimensionChoice,
 }
 
 impl Physics {
@@ -289,6 +313,7 @@ impl Physics {
             species: heapless::Vec::new(),
             pair_restitution: heapless::Vec::new(),
             rotation: None,
+            dimension: DimensionChoice::Three,
         }
     }
 

@@ -62,6 +62,7 @@ pub struct Model {
     pub(super) scheme: SchemeModel,
     pub(super) mixture: Option<super::species::MixtureModel>,
     pub(super) rough: Option<super::rotation::RoughModel>,
+    pub(super) dimension: super::DimensionChoice,
 }
 
 fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -293,6 +294,7 @@ impl Model {
         let drive = drive(physics.drive)?;
         let scheme = scheme(physics.scheme, kernel, physics.drive)?;
         let mixture = super::species::mixture(physics, kernel, law, drive, scheme)?;
+        let dimension = super::dimension::dimension(physics, law, drive, scheme)?;
         let rough = super::rotation::rotation(physics, law, drive, scheme)?;
         Ok(Model {
             n: physics.n,
@@ -303,7 +305,13 @@ impl Model {
             scheme,
             mixture,
             rough,
+            dimension,
         })
+    }
+
+    /// The dimension (spheres or disks).
+    pub fn dimension(&self) -> super::DimensionChoice {
+        self.dimension
     }
 
     /// Particles per system.

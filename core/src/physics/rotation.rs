@@ -1,11 +1,11 @@
 //! The validated rotation of a [`super::Physics`] with rough particles: each rule from its own
-//! constructor ([`RoughMap::new`] for `alpha`, `beta`, `kappa`; [`Maxwellian::new`] for the
+//! constructor ([`RoughMap::new`] or [`RoughMap::for_disks`] for `alpha`, `beta`, `kappa`; [`Maxwellian::new`] for the
 //! start of the rim velocities; [`RoughNoise::new`] for the drive), refusals named by the
 //! rotation's parameters.
 
 use super::error::{Param, PhysicsError, Problem};
 use super::model::{DriveModel, LawModel, SchemeModel};
-use super::{Physics, RotationChoice};
+use super::{DimensionChoice, Physics, RotationChoice};
 use crate::math::Real;
 use crate::restitution::Restitution;
 use crate::rough::{RoughError, RoughMap, RoughNoise};
@@ -18,7 +18,8 @@ pub struct RoughModel {
     /// The collision map (alpha, beta, kappa).
     pub map: RoughMap,
     /// The start distribution of the rim velocities: a Maxwellian of temperature
-    /// `T_rot / kappa` per unit mass, so that `kappa <|w|^2>/3 = T_rot`.
+    /// `T_rot / kappa` per unit mass, so that `kappa <|w|^2>/3 = T_rot` (disks keep its `z`
+    /// component: `kappa <w_z^2> = T_rot`).
     pub start: Maxwellian,
     /// The white noise on translation and rotation; `None`: no drive.
     pub noise: Option<RoughNoise>,
@@ -78,9 +79,14 @@ pub(super) fn rotation(
             Problem::NotFinite(value)
         },
     };
-    let map = RoughMap::new(alpha, r.beta, r.kappa).map_err(|e| match e {
+    let map = match physics.dimension {
+        DimensionChoice::Three => RoughMap::new(alpha, r.beta, r.kappa),
+        DimensionChoice::Two => RoughMap::for_disks(alpha, r.beta, r.kappa),
+    };
+    let map = map.map_err(|e| match e {
         RoughError::Beta => outside(Param::TangentialRestitution, r.beta, "[-1, 1]"),
         RoughError::Kappa => outside(Param::Inertia, r.kappa, "(0, 2/3]"),
+        RoughError::DiskKappa => outside(Param::Inertia, r.kappa, "(0, 1] for disks"),
         // alpha passed the law's own rule, which is the map's.
         RoughError::Alpha => PhysicsError {
             param: Param::Restitution,

@@ -3,16 +3,17 @@
 //! Megías and Santos 2019; GRW (18) applied to each part).
 //!
 //! Translation: `v(t + dt) = v(t) + sqrt(2 beta dt) xi` (GRW (18)), so `dT_tr/dt = 2 beta`
-//! from the noise alone. Rotation: the rim velocity `w` gets `sqrt(2 beta_rot dt / kappa) xi`,
-//! so that `T_rot = kappa <|w|^2>/3` grows at `dT_rot/dt = 2 beta_rot`: the two strengths put
+//! from the noise alone. Rotation: the rim velocity `w` gets `sqrt(2 beta_rot dt / kappa) xi`
+//! on each of its degrees of freedom (3 for spheres, 1 for disks), so that
+//! `T_rot = kappa <|w|^2>/d_rot` grows at `dT_rot/dt = 2 beta_rot`: the two strengths put
 //! the same energy per unit time into their part when they are equal. Both are exact for any
 //! `dt` (the kick solves the heat equation of its part), so the lazy kicks of the no-splitting
 //! loop keep it exact.
 
 use crate::drive::NoDrive;
+use crate::geometry::Geometry;
 use crate::math::{Real, sqrt};
 use crate::rng::Rng;
-use crate::sample::standard_normal3;
 use crate::vec3::Vec3;
 
 /// A drive of a rough gas: how `(v, w)` evolve over `dt` with no collision.
@@ -20,15 +21,28 @@ pub trait RoughDrive: Copy {
     /// False when nothing acts (the loop then skips the kicks and keeps every particle current).
     const ACTS: bool;
 
-    /// `(v, w)` after `dt >= 0` of the drive alone.
-    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, w: Vec3, dt: Real, rng: &mut R) -> (Vec3, Vec3);
+    /// `(v, w)` after `dt >= 0` of the drive alone, in dimension `G` (disks: noise in the plane
+    /// and along the rim velocity's one axis, `z`).
+    fn evolve<G: Geometry, R: Rng + ?Sized>(
+        &self,
+        v: Vec3,
+        w: Vec3,
+        dt: Real,
+        rng: &mut R,
+    ) -> (Vec3, Vec3);
 }
 
 impl RoughDrive for NoDrive {
     const ACTS: bool = false;
 
     #[inline(always)]
-    fn evolve<R: Rng + ?Sized>(&self, v: Vec3, w: Vec3, _dt: Real, _rng: &mut R) -> (Vec3, Vec3) {
+    fn evolve<G: Geometry, R: Rng + ?Sized>(
+        &self,
+        v: Vec3,
+        w: Vec3,
+        _dt: Real,
+        _rng: &mut R,
+    ) -> (Vec3, Vec3) {
         (v, w)
     }
 }
@@ -62,7 +76,7 @@ impl RoughDrive for RoughNoise {
     const ACTS: bool = true;
 
     #[inline(always)]
-    fn evolve<R: Rng + ?Sized>(
+    fn evolve<G: Geometry, R: Rng + ?Sized>(
         &self,
         mut v: Vec3,
         mut w: Vec3,
@@ -70,10 +84,10 @@ impl RoughDrive for RoughNoise {
         rng: &mut R,
     ) -> (Vec3, Vec3) {
         if self.tr > 0.0 {
-            v += sqrt(self.tr * dt) * standard_normal3(rng);
+            v += sqrt(self.tr * dt) * G::normal(rng);
         }
         if self.rot > 0.0 {
-            w += sqrt(self.rot * dt) * standard_normal3(rng);
+            w += sqrt(self.rot * dt) * G::spin_normal(rng);
         }
         (v, w)
     }

@@ -54,6 +54,9 @@ pub enum RoughError {
     /// The reduced moment of inertia is not in (0, 2/3] (2/5: uniform spheres; 2/3: a
     /// hollow shell, the largest a sphere can have).
     Kappa,
+    /// The reduced moment of inertia of a disk is not in (0, 1] (1/2: uniform disks; 1: a
+    /// ring, the largest a disk can have).
+    DiskKappa,
 }
 
 impl core::fmt::Display for RoughError {
@@ -62,6 +65,7 @@ impl core::fmt::Display for RoughError {
             RoughError::Alpha => "normal restitution alpha must lie in (0, 1]",
             RoughError::Beta => "tangential restitution beta must lie in [-1, 1]",
             RoughError::Kappa => "reduced moment of inertia kappa must lie in (0, 2/3]",
+            RoughError::DiskKappa => "reduced moment of inertia kappa of disks must lie in (0, 1]",
         })
     }
 }
@@ -83,14 +87,30 @@ pub struct RoughMap {
 impl RoughMap {
     /// The map for `0 < alpha <= 1`, `-1 <= beta <= 1`, `0 < kappa <= 2/3`.
     pub fn new(alpha: Real, beta: Real, kappa: Real) -> Result<Self, RoughError> {
+        Self::checked(alpha, beta, kappa, 2.0 / 3.0, RoughError::Kappa)
+    }
+
+    /// The map of rough disks (`d = 2`: velocities in the plane, rim velocities along `z`, the
+    /// same formulas), `0 < kappa <= 1` (1/2: uniform disks).
+    pub fn for_disks(alpha: Real, beta: Real, kappa: Real) -> Result<Self, RoughError> {
+        Self::checked(alpha, beta, kappa, 1.0, RoughError::DiskKappa)
+    }
+
+    fn checked(
+        alpha: Real,
+        beta: Real,
+        kappa: Real,
+        max_kappa: Real,
+        bad_kappa: RoughError,
+    ) -> Result<Self, RoughError> {
         if !(alpha > 0.0 && alpha <= 1.0) {
             return Err(RoughError::Alpha);
         }
         if !(-1.0..=1.0).contains(&beta) {
             return Err(RoughError::Beta);
         }
-        if !(kappa > 0.0 && kappa <= 2.0 / 3.0) {
-            return Err(RoughError::Kappa);
+        if !(kappa > 0.0 && kappa <= max_kappa) {
+            return Err(bad_kappa);
         }
         Ok(RoughMap {
             alpha,

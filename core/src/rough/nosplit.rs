@@ -4,8 +4,9 @@
 //! the translational relative speed `|v_i - v_j|` (hard spheres: `|g . n|` over the impact
 //! directions; Luding et al. 1998), so the majorant, the waiting times, the fictitious-collision
 //! test and the refresh schedule are those of [`crate::engine::NoSplitting`] unchanged. An
-//! accepted pair draws its impact direction `n` with density `2 n . u_hat` on the approaching
-//! hemisphere ([`super::impact_direction`]: the hard-sphere impact law; for the Maxwell kernel
+//! accepted pair draws its impact direction `n` with density proportional to `n . u_hat` where
+//! the pair approaches ([`super::impact_direction`]: the hard-sphere impact law; disks:
+//! the impact parameter uniform, [`crate::geometry::Disks`]; for the Maxwell kernel
 //! the same law at a constant rate, which with `beta = -1` is GRW (3) with a uniform
 //! direction, so the smooth gas is recovered in law) and applies [`RoughMap::collide`]
 //! (Huthmann and Zippelius 1997). Both partners are kicked lazily from their last-kick times
@@ -18,13 +19,14 @@
 //! system follows the same rules at the majorant rate times `scale^lambda`.
 
 use super::drive::RoughDrive;
-use super::map::{RoughMap, impact_direction};
+use super::map::RoughMap;
 use super::observables::RoughObservables;
-use crate::engine::event::{Majorant, RefreshWindow, admits, observables};
+use crate::engine::event::{Majorant, RefreshWindow, admits, observables_dim};
 use crate::engine::jumps::{Jumps, run_events};
 use crate::engine::nosplit::RESCALE_BELOW;
 use crate::engine::pairs::PairsAhead;
 use crate::engine::{Counts, EngineError};
+use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
@@ -32,9 +34,10 @@ use crate::particles::Particles;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
-/// The exact event loop of a rough gas with kernel `K` and drive `D`.
+/// The exact event loop of a rough gas with kernel `K`, drive `D` and dimension `G` (rough
+/// spheres unless named; disks: impact directions in the plane, rim velocities along `z`).
 #[derive(Clone, Debug)]
-pub struct RoughNoSplitting<K, D> {
+pub struct RoughNoSplitting<K, D, G = Spheres> {
     kernel: K,
     drive: D,
     map: RoughMap,
@@ -45,13 +48,27 @@ pub struct RoughNoSplitting<K, D> {
     refresh: RefreshWindow,
     scale: Real,
     offset: Vec3,
+    dim: core::marker::PhantomData<G>,
 }
 
 impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
     /// Starts at `t0` on the particles and spins `p` (holding the initial velocities): every
     /// last-kick time becomes `t0` and `Umax = 2 max |v_i - V|` (GRW steps 1.1-1.4). Returns
-    /// the translational observables at `t0`.
+    /// the translational observables at `t0`. Spheres; disks: [`RoughNoSplitting::start_in`].
     pub fn start(
+        kernel: K,
+        drive: D,
+        map: RoughMap,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(Self, Observables), EngineError> {
+        Self::start_in(kernel, drive, map, p, t0)
+    }
+}
+
+impl<K: Kernel, D: RoughDrive, G: Geometry> RoughNoSplitting<K, D, G> {
+    /// As [`RoughNoSplitting::start`] in dimension `G` (named by the result's type).
+    pub fn start_in(
         kernel: K,
         drive: D,
         map: RoughMap,
@@ -76,6 +93,7 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
             refresh: RefreshWindow::new(p.len()),
             scale: 1.0,
             offset: Vec3::ZERO,
+            dim: core::marker::PhantomData,
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
@@ -104,7 +122,7 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
     /// The rotational observables now (the particles must be at the current time, as they are
     /// after [`Self::advance_to`]).
     pub fn rough(&self, p: &Particles<'_>) -> RoughObservables {
-        RoughObservables::of(p, self.map.kappa(), self.scale)
+        RoughObservables::of_dim(p, self.map.kappa(), self.scale, G::CHOICE)
     }
 
     #[inline(always)]
@@ -119,7 +137,7 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
         }
         let dt = t - p.kick_time(i);
         if dt > 0.0 {
-            let (v, w) = self.drive.evolve(p.velocity(i), p.spin(i), dt, rng);
+            let (v, w) = self.drive.evolve::<G, R>(p.velocity(i), p.spin(i), dt, rng);
             p.set_velocity(i, v);
             p.set_spin(i, w);
             p.get_mut(i).t_kick = t;
@@ -169,7 +187,7 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
         if !admits(&self.kernel, maj, counts, vi, vj, D::ACTS, rng) {
             return self.maj.umax != umax_event;
         }
-        let nrm = impact_direction(vi - vj, rng);
+        let nrm = G::impact(vi - vj, rng);
         let (a, wa, b, wb) = self.map.collide(vi, p.spin(i), vj, p.spin(j), nrm);
         p.set_velocity(i, a);
         p.set_spin(i, wa);
@@ -201,7 +219,8 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
     /// checks the spins, and rescales a cooling gas whose stored temperature fell below the
     /// threshold (module docs).
     fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        let mut obs = observables(p)?;
+        let d = G::CHOICE.d();
+        let mut obs = observables_dim(p, d)?;
         if !p
             .spins()
             .iter()
@@ -221,17 +240,17 @@ impl<K: Kernel, D: RoughDrive> RoughNoSplitting<K, D> {
             self.offset += self.scale * obs.bulk;
             self.scale /= s;
             self.counts.rescales += 1;
-            obs = Observables::of(p);
+            obs = Observables::of_dim(p, d);
         }
         self.counts.observations += 1;
         if K::USES_UMAX {
             self.maj = Majorant::new(2.0 * obs.max_peculiar_speed, obs.bulk);
         }
-        Ok(obs.in_units(self.scale, self.offset))
+        Ok(obs.in_units_dim(self.scale, self.offset, d))
     }
 }
 
-impl<K: Kernel, D: RoughDrive> crate::engine::EventLoop for RoughNoSplitting<K, D> {
+impl<K: Kernel, D: RoughDrive, G: Geometry> crate::engine::EventLoop for RoughNoSplitting<K, D, G> {
     fn advance_to<R: Rng + ?Sized>(
         &mut self,
         p: &mut Particles<'_>,
@@ -257,7 +276,7 @@ impl<K: Kernel, D: RoughDrive> crate::engine::EventLoop for RoughNoSplitting<K, 
     }
 }
 
-impl<K: Kernel, D: RoughDrive> Jumps for RoughNoSplitting<K, D> {
+impl<K: Kernel, D: RoughDrive, G: Geometry> Jumps for RoughNoSplitting<K, D, G> {
     const ACTS: bool = D::ACTS;
     const USES_UMAX: bool = K::USES_UMAX;
 

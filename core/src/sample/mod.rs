@@ -4,6 +4,7 @@
 //! `sample(&self, rng)` method generic over [`crate::rng::Rng`]; parameters are validated by a
 //! fallible constructor that names the bad parameter.
 
+pub mod circle;
 pub mod exponential;
 pub mod maxwellian;
 pub mod mixture;
@@ -13,6 +14,7 @@ pub mod sphere;
 #[allow(missing_docs)]
 pub mod ziggurat_tables;
 
+pub use circle::unit_circle;
 pub use exponential::standard_exponential;
 pub use maxwellian::Maxwellian;
 pub use mixture::MaxwellianMixture;

@@ -83,6 +83,29 @@ impl<'a> Ctx<'a> {
 }
 
 impl SceneFile {
+    /// Disks (`particles.dimension = 2`) run, observe their moments and compare with the
+    /// references written for any dimension; the distributions (speed shells, reduced and
+    /// marginal histograms, the tail laws) and the collisional moments are written for spheres,
+    /// and are refused at their key rather than computed with the wrong volume.
+    fn spheres_only(&self, ctx: &Ctx<'_>) -> Result<(), Error> {
+        let why = "is written for spheres (d = 3); disks (particles.dimension = 2) do not have it";
+        if let Some(h) = &self.histogram {
+            return ctx.invalid(h.shells.span(), "histogram", why);
+        }
+        if let Some(h) = &self.reduced_histogram {
+            return ctx.invalid(h.shells.span(), "reduced_histogram", why);
+        }
+        if let Some(h) = &self.marginal_histogram {
+            return ctx.invalid(h.axis.span(), "marginal_histogram", why);
+        }
+        if let Some(k) = &self.observe.collisional_pairs
+            && *k.get_ref() > 0
+        {
+            return ctx.invalid(k.span(), "observe.collisional_pairs", why);
+        }
+        Ok(())
+    }
+
     /// Validates the file's values; `path` and `text` are used to name the line of a bad value.
     pub fn validate(&self, path: &Path, text: &str) -> Result<Scene, Error> {
         let mut ctx = Ctx::new(path, text);
@@ -92,7 +115,8 @@ impl SceneFile {
         let times = observe::times(&ctx, &self.observe)?;
         let scheme = scheme::scheme(&mut ctx, &self.scheme)?;
         let mixture = species::mixture(&mut ctx, self, n)?;
-        let rotation = rotation::rotation(&mut ctx, &self.rotation);
+        let dimension = particles::dimension(&mut ctx, &self.particles)?;
+        let rotation = rotation::rotation(&mut ctx, &self.rotation, dimension);
         let physics = Physics {
             n,
             initial,
@@ -103,8 +127,12 @@ impl SceneFile {
             species: mixture.species,
             pair_restitution: mixture.pair_restitution,
             rotation,
+            dimension,
         };
         physics.validate().map_err(|e| ctx.physics_error(e))?;
+        if dimension == gdsmc_core::physics::DimensionChoice::Two {
+            self.spheres_only(&ctx)?;
+        }
         scheme::on_grid(&ctx, &self.scheme, physics.scheme, &times)?;
         let observe = observe::observe(&ctx, &self.observe, &times, &physics)?;
         let histograms = observe::histograms(&ctx, self)?;

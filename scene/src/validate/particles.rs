@@ -3,13 +3,30 @@
 use super::Ctx;
 use crate::error::Error;
 use crate::schema::{InitialKind, ParticlesSpec, one};
-use gdsmc_core::physics::{Component, MAX_COMPONENTS, Param};
+use gdsmc_core::physics::{Component, DimensionChoice, MAX_COMPONENTS, Param};
 use toml::Spanned;
 
 type Initial = heapless::Vec<Component, MAX_COMPONENTS>;
 
 fn span_of<T>(v: &Option<Spanned<T>>) -> std::ops::Range<usize> {
     v.as_ref().map_or(0..0, |s| s.span())
+}
+
+/// The dimension of `[particles]` (`dimension = 2` or `3`; absent: 3), recorded at its key.
+pub(super) fn dimension(ctx: &mut Ctx<'_>, spec: &ParticlesSpec) -> Result<DimensionChoice, Error> {
+    let Some(d) = &spec.dimension else {
+        return Ok(DimensionChoice::Three);
+    };
+    ctx.holds(Param::Dimension, "particles.dimension", d.span());
+    match *d.get_ref() {
+        3 => Ok(DimensionChoice::Three),
+        2 => Ok(DimensionChoice::Two),
+        other => ctx.invalid(
+            d.span(),
+            "particles.dimension",
+            format!("must be 2 (disks) or 3 (spheres), got {other}"),
+        ),
+    }
 }
 
 /// The particle count and the initial components, with the keys that hold them.

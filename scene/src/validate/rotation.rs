@@ -5,18 +5,25 @@
 
 use super::Ctx;
 use crate::schema::RotationSpec;
-use gdsmc_core::physics::{Param, RotationChoice};
+use gdsmc_core::physics::{DimensionChoice, Param, RotationChoice};
 
-/// The rotation of a scene, if it has a `[rotation]` table.
-pub(super) fn rotation(ctx: &mut Ctx<'_>, r: &Option<RotationSpec>) -> Option<RotationChoice> {
+/// The rotation of a scene, if it has a `[rotation]` table; an absent `inertia` is the core's
+/// default for the dimension (uniform spheres or disks).
+pub(super) fn rotation(
+    ctx: &mut Ctx<'_>,
+    r: &Option<RotationSpec>,
+    dimension: DimensionChoice,
+) -> Option<RotationChoice> {
     let r = r.as_ref()?;
+    let defaults = RotationChoice::uniform(dimension, *r.tangential_restitution.get_ref());
     ctx.holds(Param::Rotation, "rotation", r.tangential_restitution.span());
     ctx.holds(
         Param::TangentialRestitution,
         "rotation.tangential_restitution",
         r.tangential_restitution.span(),
     );
-    ctx.holds(Param::Inertia, "rotation.inertia", r.inertia.span());
+    let inertia_span = r.inertia.as_ref().map_or(0..0, |k| k.span());
+    ctx.holds(Param::Inertia, "rotation.inertia", inertia_span);
     ctx.holds(
         Param::RotationTemperature,
         "rotation.temperature",
@@ -25,7 +32,7 @@ pub(super) fn rotation(ctx: &mut Ctx<'_>, r: &Option<RotationSpec>) -> Option<Ro
     ctx.holds(Param::RotationNoise, "rotation.noise", r.noise.span());
     Some(RotationChoice {
         beta: *r.tangential_restitution.get_ref(),
-        kappa: *r.inertia.get_ref(),
+        kappa: r.inertia.as_ref().map_or(defaults.kappa, |k| *k.get_ref()),
         temperature: *r.temperature.get_ref(),
         noise: *r.noise.get_ref(),
     })

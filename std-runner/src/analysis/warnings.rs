@@ -66,8 +66,8 @@ fn non_finite(stats: &RunStats) -> Option<Warning> {
 /// The temperature columns a steady-state window is checked on.
 const STEADY_CHECKED: [&str; 2] = ["T", "T_bulk"];
 
-/// The columns a steady-state window must hold steady: the temperatures, for a cooling rough
-/// gas theta, or for a mixture its species' temperature ratios (a cooling mixture's temperature keeps falling while its
+/// The columns a steady-state window must hold steady: the temperatures, for a cooling
+/// one-species gas a2, for a cooling rough gas theta, or for a mixture its species' temperature ratios (a cooling mixture's temperature keeps falling while its
 /// ratios settle: Garzó and Dufty 1999's cooling state).
 fn steady_checked(scene: &Scene) -> Vec<&'static str> {
     let species = scene.physics.species.len();
@@ -82,6 +82,11 @@ fn steady_checked(scene: &Scene) -> Vec<&'static str> {
         };
     }
     if species == 0 {
+        // A cooling one-species gas's temperature keeps falling (Haff's law) while its shape,
+        // a2, settles into the cooling state.
+        if matches!(scene.physics.drive, DriveChoice::None) {
+            return vec!["a2"];
+        }
         return STEADY_CHECKED.to_vec();
     }
     crate::run::columns::SPECIES_COLUMNS[..species]

@@ -212,7 +212,8 @@ pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::Rou
         DriveChoice::WhiteNoise(b) => b,
         _ => 0.0,
     };
-    Some(crate::reference::rough::RoughApproximation::new(
+    Some(crate::reference::rough::RoughApproximation::in_dimension(
+        scene.dimension(),
         alpha,
         r.beta,
         r.kappa,
@@ -273,12 +274,32 @@ fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     }
 }
 
+/// The first-Sonine `a2` of the cooling state of smooth hard spheres or disks (van Noije and
+/// Ernst 1998; MS (5) for `d = 3`), when the scene is one.
+pub fn sonine_cooling_a2(scene: &Scene) -> Option<f64> {
+    if !scene.physics.species.is_empty() || !scene.translation_is_smooth() {
+        return None;
+    }
+    let alpha = scene.physics.restitution.constant()?;
+    let hard = matches!(scene.physics.kernel, KernelChoice::HardSpheres { .. });
+    (hard && matches!(scene.physics.drive, DriveChoice::None))
+        .then(|| crate::reference::exact::sonine::a2_cooling_in(scene.dimension() as f64, alpha))
+}
+
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     if !scene.physics.species.is_empty() {
         return mixture_curves(scene);
     }
     let mut out = rough_curves(scene);
+    if let Some(a2) = sonine_cooling_a2(scene) {
+        out.push(ReferenceCurve {
+            name: "a2_sonine",
+            of: "a2",
+            source: "van Noije and Ernst 1998, first Sonine approximation of the cooling state (MS (5) for d = 3); an approximation, reached once the gas has relaxed",
+            curve: Box::new(move |_| a2),
+        });
+    }
     if let (Some(models), Some(f0)) = (hydro_models(scene), initial_sampler(scene)) {
         let t_end = scene.times.last().copied().unwrap_or(1.0);
         for (model, (tn, vn, src)) in models.iter().zip([
@@ -339,7 +360,9 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
         });
     }
     if let (Some(mt), Some(f0)) = (maxwell_temperature(scene), initial_sampler(scene)) {
-        let v0 = f0.mean().norm2() / 3.0;
+        // GRW (13)-(14) hold per degree of freedom in any dimension (the derivation in
+        // `exact.rs` counts d components; disks keep it with d = 2).
+        let v0 = f0.mean().norm2() / scene.dimension() as f64;
         out.push(ReferenceCurve {
             name: "T_exact",
             of: "T",

@@ -191,8 +191,15 @@ pub mod sonine {
 
     /// MS (5): the homogeneous cooling state and the Gaussian thermostat (van Noije, Ernst).
     pub fn a2_cooling_5(a: f64) -> f64 {
+        a2_cooling_in(D, a)
+    }
+
+    /// MS (5) in `d` dimensions, as van Noije and Ernst (1998) give it for hard spheres
+    /// (`d = 3`) and disks (`d = 2`): `16 (1 - a)(1 - 2a^2) / (9 + 24d - a(41 - 8d) +
+    /// 30 (1 - a) a^2)`.
+    pub fn a2_cooling_in(d: f64, a: f64) -> f64 {
         16.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
-            / (9.0 + 24.0 * D - a * (41.0 - 8.0 * D) + 30.0 * (1.0 - a) * a * a)
+            / (9.0 + 24.0 * d - a * (41.0 - 8.0 * d) + 30.0 * (1.0 - a) * a * a)
     }
     /// MS (10): the stochastic (white-noise) thermostat.
     pub fn a2_white_noise_10(a: f64) -> f64 {

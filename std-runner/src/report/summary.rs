@@ -41,6 +41,12 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             c.background as f64 / c.collisions.max(1) as f64
         );
     }
+    if scene.is_disks() {
+        let _ = writeln!(
+            s,
+            "particles  disks (d = 2): velocities in a plane, T per degree of freedom = <|c|^2>/2, a2 = <c^4>/(8 T^2) - 1"
+        );
+    }
     let mixture = !scene.physics.species.is_empty();
     let mut shown = vec!["T", "T_bulk", "a2", "crit"];
     if mixture {

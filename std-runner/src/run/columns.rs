@@ -132,9 +132,14 @@ pub const COOLING_COLUMNS: [&str; gdsmc_core::mixture::MAX_SPECIES + 1] =
 /// `cw2 = 3 <(c . w)^2> / (<c^2> <w^2>) - 1` (Brilliantov et al. 2007).
 pub const ROUGH_COLUMNS: [&str; 5] = ["T_rot", "theta", "T_total", "a2_rot", "cw2"];
 
-/// The rough columns' values of one observation, in [`ROUGH_COLUMNS`] order.
-pub fn rough_values(r: &gdsmc_core::rough::RoughObservables) -> [f64; 5] {
-    [r.t_rot, r.theta(), r.t_total(), r.a2_rot, r.cw2]
+/// The rough columns' values of one observation, in [`ROUGH_COLUMNS`] order (for disks,
+/// `T_total = (2 T_bulk + T_rot)/3` and `cw2` as [`gdsmc_core::rough::RoughObservables`]
+/// defines it).
+pub fn rough_values(
+    r: &gdsmc_core::rough::RoughObservables,
+    dim: gdsmc_core::physics::DimensionChoice,
+) -> [f64; 5] {
+    [r.t_rot, r.theta(), r.t_total_in(dim), r.a2_rot, r.cw2]
 }
 
 /// The mixture columns' values of one observation, in [`names`] order.

@@ -170,7 +170,10 @@ fn observe<E: EventLoop>(
             out.extend([mu2, mu4]);
         }
         if let Some(r) = engine.rough(p) {
-            out.extend(crate::run::columns::rough_values(&r));
+            out.extend(crate::run::columns::rough_values(
+                &r,
+                scene.physics.dimension,
+            ));
         }
         if let Some(m) = engine.species(p) {
             out.extend(crate::run::columns::mixture_values(&m));

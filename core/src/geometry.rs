@@ -1,0 +1,171 @@
+//! The dimension `d` of velocity space, composed into the loops at compile time: spheres
+//! (`d = 3`, every paper's setting) or disks (`d = 2`, the vibrated monolayers of the
+//! granular-gas literature; van Noije and Ernst 1998 give the smooth gas for any `d`).
+//!
+//! Disks keep the one particle record: their velocities lie in the `(x, y)` plane with `z = 0`
+//! exactly (every map, kick and sampler here keeps it so), and a rough disk's rim velocity
+//! lies along `z` (its one rotational degree of freedom). What `d` changes:
+//!
+//! - the scattering direction `e` of GRW (3): uniform on S^{d-1} for the Maxwell and VHS
+//!   kernels (isotropic scattering); for hard particles the reflection of `u_hat` at an impact
+//!   direction with density proportional to `u_hat . n`, which is uniform in d = 3 but not in
+//!   d = 2: there the impact parameter `b` is uniform on `(-1, 1)`, `n = sqrt(1 - b^2) u_hat +
+//!   b u_perp` and `e = (2b^2 - 1) u_hat - 2b sqrt(1 - b^2) u_perp`;
+//! - the white-noise kick GRW (18) acts on `d` components;
+//! - temperatures and cumulants count `d` degrees of freedom: `T = <|c|^2>/d`, MS (3)
+//!   `a2 = <c^4>/(d(d+2) T^2) - 1` ([`crate::moments::Observables::of_dim`]).
+//!
+//! The kernels keep their total pair rate `int B de = 4 pi gamma C_lambda |u|^lambda` in both
+//! dimensions (the time unit is set by the rate constant; a hard-disk gas of diameter `sigma`
+//! at areal density `n_A` has `4 pi gamma C_1 = sigma n_A`).
+
+use crate::kernel::Kernel;
+use crate::math::{Real, sqrt};
+use crate::rng::{Rng, uniform01};
+use crate::sample::{standard_normal, standard_normal3, unit_circle, unit_sphere};
+use crate::vec3::Vec3;
+
+/// The choice of dimension as plain data (a front end's `dimension = 2`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DimensionChoice {
+    /// Spheres, `d = 3`.
+    #[default]
+    Three,
+    /// Disks, `d = 2`.
+    Two,
+}
+
+impl DimensionChoice {
+    /// `d` as a number.
+    pub const fn d(self) -> usize {
+        match self {
+            DimensionChoice::Three => 3,
+            DimensionChoice::Two => 2,
+        }
+    }
+
+    /// Rotational degrees of freedom of a rough particle: 3 for spheres, 1 for disks.
+    pub const fn spin_dof(self) -> usize {
+        match self {
+            DimensionChoice::Three => 3,
+            DimensionChoice::Two => 1,
+        }
+    }
+}
+
+/// The dimension as a type: what the loops draw and how they count degrees of freedom
+/// (module docs). Implemented by [`Spheres`] and [`Disks`].
+pub trait Geometry: Copy + Default + core::fmt::Debug + PartialEq + 'static {
+    /// The plain-data choice this type implements.
+    const CHOICE: DimensionChoice;
+
+    /// The scattering direction `e` of GRW (3) for a pair of relative velocity `u` under
+    /// kernel `K` (module docs).
+    fn scattering<K: Kernel, R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3;
+
+    /// The unit vector `n` from particle 1 to 2 at a hard-particle collision of relative
+    /// velocity `u = v1 - v2`: density proportional to `u_hat . n` where the pair approaches
+    /// (`u . n >= 0`), uniform when `u = 0`.
+    fn impact<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3;
+
+    /// A standard normal vector of velocity space (`z = 0` for disks): the white-noise kick's.
+    fn normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3;
+
+    /// A standard normal vector of the rim velocity's degrees of freedom (along `z` only for
+    /// disks).
+    fn spin_normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3;
+}
+
+/// Spheres: `d = 3`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Spheres;
+
+/// Disks: `d = 2`, velocities in the `(x, y)` plane, rim velocities along `z`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Disks;
+
+impl Geometry for Spheres {
+    const CHOICE: DimensionChoice = DimensionChoice::Three;
+
+    #[inline(always)]
+    fn scattering<K: Kernel, R: Rng + ?Sized>(_u: Vec3, rng: &mut R) -> Vec3 {
+        unit_sphere(rng)
+    }
+
+    #[inline(always)]
+    fn impact<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
+        crate::rough::impact_direction(u, rng)
+    }
+
+    #[inline(always)]
+    fn normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
+        standard_normal3(rng)
+    }
+
+    #[inline(always)]
+    fn spin_normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
+        standard_normal3(rng)
+    }
+}
+
+/// `u_hat` and the in-plane unit vector `u_perp` a quarter turn from it, or `None` for `u = 0`
+/// (scaled by the largest component first, so that a tiny `u` does not underflow).
+#[inline(always)]
+fn plane_frame(u: Vec3) -> Option<(Vec3, Vec3)> {
+    let big = u.x.abs().max(u.y.abs());
+    if big == 0.0 {
+        return None;
+    }
+    let (x, y) = (u.x / big, u.y / big);
+    let inv = 1.0 / sqrt(x * x + y * y);
+    let (x, y) = (x * inv, y * inv);
+    Some((Vec3::new(x, y, 0.0), Vec3::new(-y, x, 0.0)))
+}
+
+/// The impact parameter `b` uniform on `(-1, 1)` and `sqrt(1 - b^2)`.
+#[inline(always)]
+fn impact_parameter<R: Rng + ?Sized>(rng: &mut R) -> (Real, Real) {
+    let b = 2.0 * uniform01(rng) - 1.0;
+    (b, sqrt(1.0 - b * b))
+}
+
+impl Geometry for Disks {
+    const CHOICE: DimensionChoice = DimensionChoice::Two;
+
+    #[inline(always)]
+    fn scattering<K: Kernel, R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
+        if !K::HARD {
+            return unit_circle(rng);
+        }
+        match plane_frame(u) {
+            // A pair at rest collides trivially whatever e is.
+            None => unit_circle(rng),
+            Some((uh, up)) => {
+                let (b, c) = impact_parameter(rng);
+                (2.0 * b * b - 1.0) * uh - (2.0 * b * c) * up
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn impact<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
+        match plane_frame(u) {
+            None => unit_circle(rng),
+            Some((uh, up)) => {
+                let (b, c) = impact_parameter(rng);
+                c * uh + b * up
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
+        let x = standard_normal(rng);
+        Vec3::new(x, standard_normal(rng), 0.0)
+    }
+
+    #[inline(always)]
+    fn spin_normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
+        Vec3::new(0.0, 0.0, standard_normal(rng))
+    }
+}

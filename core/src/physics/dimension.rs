@@ -1,0 +1,51 @@
+//! The validated dimension of a [`super::Physics`]: disks (`d = 2`, [`crate::geometry`]) run
+//! the loops composed for them, which are the no-splitting scheme with a constant restitution
+//! and no drive or white noise in the plane, one species, and start drifts in the plane.
+
+use super::error::{Param, PhysicsError, Problem};
+use super::model::{DriveModel, LawModel, SchemeModel};
+use super::{DimensionChoice, Physics};
+
+fn refuse<T>(param: Param, why: &'static str) -> Result<T, PhysicsError> {
+    Err(PhysicsError {
+        param,
+        problem: Problem::DoesNotFit(why),
+    })
+}
+
+/// Validates the dimension of `physics` against the law, drive and scheme already validated.
+pub(super) fn dimension(
+    physics: &Physics,
+    law: LawModel,
+    drive: DriveModel,
+    scheme: SchemeModel,
+) -> Result<DimensionChoice, PhysicsError> {
+    if physics.dimension == DimensionChoice::Three {
+        return Ok(DimensionChoice::Three);
+    }
+    if !physics.species.is_empty() {
+        return refuse(
+            Param::Dimension,
+            "of 2 (disks) cannot be combined with species",
+        );
+    }
+    if !matches!(scheme, SchemeModel::NoSplitting) {
+        return refuse(Param::Scheme, "must be no-splitting for disks");
+    }
+    if !matches!(law, LawModel::Constant(_)) {
+        return refuse(Param::Restitution, "must be constant for disks");
+    }
+    if !matches!(drive, DriveModel::None | DriveModel::WhiteNoise(_)) {
+        return refuse(
+            Param::Dimension,
+            "of 2 (disks) takes no drive or white noise (the thermostats and the host medium \
+             are written for spheres)",
+        );
+    }
+    for (k, c) in physics.initial.iter().enumerate() {
+        if c.drift[2] != 0.0 {
+            return refuse(Param::Drift(k), "must lie in the plane (z = 0) for disks");
+        }
+    }
+    Ok(DimensionChoice::Two)
+}

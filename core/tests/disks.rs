@@ -1,0 +1,193 @@
+//! Disks (`d = 2`, `gdsmc_core::geometry::Disks`): the hard-disk impact and scattering laws
+//! (KS tests at fixed seeds), velocities that stay in the plane, the elastic perfectly rough
+//! disks' equipartition of their finite system, and the refusals. Statistical checks use fixed
+//! seeds and 99.9% levels.
+
+mod common;
+
+use common::{ks_critical_999, ks_statistic, mean_ci};
+use gdsmc_core::engine::EventLoop;
+use gdsmc_core::geometry::{DimensionChoice, Disks, Geometry};
+use gdsmc_core::kernel::{HardSpheres, Maxwell};
+use gdsmc_core::particles::{Particle, Particles, Spin};
+use gdsmc_core::physics::{
+    DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice, SchemeChoice,
+};
+use gdsmc_core::rng::{Streams, seeded};
+use gdsmc_core::vec3::Vec3;
+
+fn disks(n: usize, kernel: KernelChoice, alpha: f64, drive: DriveChoice) -> Physics {
+    let mut ph = Physics::new(
+        n,
+        kernel,
+        RestitutionLaw::Constant(alpha),
+        drive,
+        SchemeChoice::NoSplitting,
+    );
+    ph.dimension = DimensionChoice::Two;
+    ph
+}
+
+const HARD: KernelChoice = KernelChoice::HardSpheres {
+    gamma: 1.0,
+    c: 0.25 / core::f64::consts::PI,
+};
+
+/// The impact direction of hard disks: in the plane, on the approaching side, and its
+/// component across `u_hat` (the impact parameter `b`) uniform on (-1, 1). Also the scattering
+/// direction of GRW (3) for hard disks: `u_hat . e = 2 b^2 - 1`, so `sqrt((1 + u_hat . e)/2)
+/// = |b|` is uniform on (0, 1); for the Maxwell kernel `e` is uniform on the circle (its angle
+/// uniform). Three KS tests, Bonferroni 3 x 0.1%: the critical value at 0.1%/3 is taken as
+/// the 99.9% one times 1.12 (sqrt(ln(2/0.000333)/ln(2/0.001))).
+#[test]
+fn hard_disks_have_the_impact_law_and_maxwell_disks_scatter_isotropically() {
+    let mut rng = seeded(77);
+    let u = Vec3::new(0.3, -1.7, 0.0);
+    let (uh, up) = (
+        (1.0 / u.norm()) * u,
+        (1.0 / u.norm()) * Vec3::new(1.7, 0.3, 0.0),
+    );
+    let m = 200_000;
+    let crit = 1.12 * ks_critical_999(m);
+    let mut b = Vec::with_capacity(m);
+    for _ in 0..m {
+        let n = Disks::impact(u, &mut rng);
+        assert_eq!(n.z, 0.0);
+        assert!((n.norm() - 1.0).abs() < 1e-14 && n.dot(u) >= 0.0);
+        b.push(n.dot(up));
+    }
+    let d = ks_statistic(&mut b, |x| ((x + 1.0) / 2.0).clamp(0.0, 1.0));
+    assert!(d < crit, "impact parameter: KS {d} >= {crit}");
+    let mut s = Vec::with_capacity(m);
+    for _ in 0..m {
+        let e = Disks::scattering::<HardSpheres, _>(u, &mut rng);
+        assert_eq!(e.z, 0.0);
+        s.push(((1.0 + uh.dot(e)) / 2.0).max(0.0).sqrt());
+    }
+    let d = ks_statistic(&mut s, |x| x.clamp(0.0, 1.0));
+    assert!(d < crit, "hard-disk scattering: KS {d} >= {crit}");
+    let mut a = Vec::with_capacity(m);
+    for _ in 0..m {
+        let e = Disks::scattering::<Maxwell, _>(u, &mut rng);
+        assert!(e.z == 0.0 && (e.norm() - 1.0).abs() < 1e-14);
+        a.push(e.y.atan2(e.x));
+    }
+    let pi = core::f64::consts::PI;
+    let d = ks_statistic(&mut a, |x| ((x + pi) / (2.0 * pi)).clamp(0.0, 1.0));
+    assert!(d < crit, "Maxwell disks' scattering: KS {d} >= {crit}");
+}
+
+/// Every velocity stays in the plane, through collisions, white noise and observations, and
+/// the observables count two degrees of freedom (`T = <|v|^2>/2`).
+#[test]
+fn disks_stay_in_the_plane() {
+    let n = 64;
+    let model = disks(n, HARD, 0.8, DriveChoice::WhiteNoise(0.5))
+        .validate()
+        .unwrap();
+    let mut buf = vec![Particle::default(); n];
+    let mut p = Particles::new(&mut buf).unwrap();
+    let mut rng = seeded(3);
+    let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+    let obs = e.advance_to(&mut p, 20.0, &mut rng).unwrap();
+    assert!(e.counts().collisions > 10 * n as u64);
+    assert!(p.as_slice().iter().all(|q| q.vz == 0.0));
+    let t: f64 = p
+        .as_slice()
+        .iter()
+        .map(|q| q.velocity().norm2())
+        .sum::<f64>()
+        / (2 * n) as f64;
+    assert!((obs.t_raw - t).abs() <= 1e-12 * t, "{} vs {t}", obs.t_raw);
+}
+
+/// Alpha = beta = 1 keeps the energy; its stationary law is uniform on the energy shell with
+/// the momentum fixed: `2(n - 1)` translational and `n` rotational degrees of freedom (one
+/// per disk) share it equally, so `E[T_tr] = (n - 1)/n E[T_rot]` with `T_tr = <|c|^2>/2`,
+/// `T_rot = kappa <w_z^2>`. At n = 8 the sample must also refuse `T_tr = T_rot`.
+#[test]
+fn elastic_perfectly_rough_disks_relax_to_equipartition_of_their_finite_system() {
+    let n = 8;
+    let mut ph = disks(n, HARD, 1.0, DriveChoice::None);
+    ph.rotation = Some(RotationChoice {
+        temperature: 0.0,
+        ..RotationChoice::disks(1.0)
+    });
+    let model = ph.validate().unwrap();
+    let mut streams = Streams::new(2025);
+    let (mut d_finite, mut d_naive) = (Vec::new(), Vec::new());
+    let mut collisions = 0u64;
+    let ensembles = 20_000;
+    for _ in 0..ensembles {
+        let mut rng = streams.next().unwrap();
+        let mut buf = vec![Particle::default(); n];
+        let mut spins = vec![Spin::default(); n];
+        let mut p = Particles::with_spins(&mut buf, &mut spins).unwrap();
+        let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+        e.advance_to(&mut p, 40.0, &mut rng).unwrap();
+        collisions += e.counts().collisions;
+        assert!(p.as_slice().iter().all(|q| q.vz == 0.0));
+        assert!(
+            p.spins()
+                .iter()
+                .all(|s| s.rim_velocity().x == 0.0 && s.rim_velocity().y == 0.0)
+        );
+        let r = e.rough(&p).unwrap();
+        d_finite.push(r.t_tr - (n as f64 - 1.0) / n as f64 * r.t_rot);
+        d_naive.push(r.t_tr - r.t_rot);
+    }
+    assert!(collisions as f64 / (ensembles * n) as f64 > 20.0);
+    let (m, h) = mean_ci(&d_finite);
+    assert!(m.abs() <= h, "E[T_tr - (n-1)/n T_rot] = {m} +- {h}");
+    let (m, h) = mean_ci(&d_naive);
+    assert!(
+        m.abs() > h,
+        "the test cannot tell (n-1)/n from 1: {m} +- {h}"
+    );
+}
+
+/// Disks refuse what is written for spheres only, naming the parameter.
+#[test]
+fn disks_refuse_what_they_do_not_have() {
+    let mut splitting = disks(8, HARD, 0.9, DriveChoice::None);
+    splitting.scheme = SchemeChoice::Euler(0.1);
+    let mut impact = disks(8, HARD, 0.9, DriveChoice::None);
+    impact.restitution = RestitutionLaw::ImpactSpeed {
+        beta0: 0.1,
+        delta: 0.1,
+    };
+    let mut drift = disks(8, HARD, 0.9, DriveChoice::None);
+    drift.initial[0].drift = [0.0, 0.0, 1.0];
+    let mut inertia = disks(8, HARD, 0.9, DriveChoice::None);
+    inertia.rotation = Some(RotationChoice {
+        kappa: 1.2,
+        ..RotationChoice::disks(0.0)
+    });
+    let cases: [(Physics, &str); 5] = [
+        (
+            disks(8, HARD, 0.9, DriveChoice::Gaussian(0.1)),
+            "dimension of 2 (disks) takes no drive or white noise",
+        ),
+        (splitting, "scheme must be no-splitting for disks"),
+        (impact, "restitution must be constant for disks"),
+        (
+            drift,
+            "components[0].drift must lie in the plane (z = 0) for disks",
+        ),
+        (inertia, "inertia must lie in (0, 1] for disks, got 1.2"),
+    ];
+    for (ph, want) in cases {
+        let got = ph.validate().unwrap_err().to_string();
+        assert!(
+            got.starts_with(want),
+            "{got:?} does not start with {want:?}"
+        );
+    }
+    // A rough disk's kappa may exceed a sphere's 2/3.
+    let mut ring = disks(8, HARD, 0.9, DriveChoice::None);
+    ring.rotation = Some(RotationChoice {
+        kappa: 0.9,
+        ..RotationChoice::disks(0.0)
+    });
+    assert!(ring.validate().is_ok());
+}
