@@ -64,6 +64,11 @@ static void config_errors(void) {
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.drive = 99");
     c = base(); c.scheme = 4;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 4");
+    c = base(); c.dimension = 4;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.dimension must be 2 (disks) or 3 (spheres), got 4");
+    c = base(); c.dimension = 2; c.scheme = GDSMC_SCHEME_EULER;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme must be no-splitting for disks");
     c = base(); c.restitution = 1.5;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
     c = base(); c.restitution = 0.0;
@@ -280,6 +285,10 @@ static void rough_particles(void) {
     c.tangential_restitution = 0.0;
     c.inertia = 0.9;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.inertia must lie in (0, 2/3]");
+    c.dimension = 2;
+    c.inertia = 1.2;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.inertia must lie in (0, 1] for disks");
+    c.dimension = 3;
     c.inertia = 0.4;
     c.drive = GDSMC_DRIVE_GAUSSIAN;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.rough takes no drive or white noise");
