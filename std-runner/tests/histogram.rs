@@ -47,8 +47,8 @@ fn initial_shells_are_maxwellian() {
     // The tail fit of the simulated shells matches the fit of the exact shells within its
     // interval (the same shells: the exact histogram is resolved everywhere).
     exact_hist.push(&exact_row);
-    let fit = gdsmc_runner::analysis::tails::fit(*radius, h).expect("enough resolved shells");
-    let want = gdsmc_runner::analysis::tails::fit(*radius, &exact_hist).expect("exact fit");
+    let fit = gdsmc_runner::analysis::tails::fit(*radius, h, 3).expect("enough resolved shells");
+    let want = gdsmc_runner::analysis::tails::fit(*radius, &exact_hist, 3).expect("exact fit");
     assert!(
         (fit.slope - want.slope).abs() <= fit.slope_ci,
         "slope {} +- {} vs exact shells {}",
@@ -61,4 +61,42 @@ fn initial_shells_are_maxwellian() {
         "a Maxwellian's shells give an exponent near 2: {}",
         want.slope
     );
+}
+
+/// Disks: the initial shells of the two-dimensional Maxwellian against the chi distribution
+/// with 2 degrees of freedom, `P(|v| < r) = 1 - exp(-r^2/2)`, each of the 17 shells as above
+/// (Bonferroni z = 4.0); and the density of histograms.csv's rule (weight over the ring's
+/// area) against the reduced Maxwellian's weight over the same area (`phi_shell_in(2, ..)`).
+#[test]
+fn initial_shells_of_disks_are_the_planar_maxwellian() {
+    use gdsmc_runner::reference::exact::tail::{phi_shell_in, shell_volume_in};
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/disks-white-noise.toml");
+    let mut s = scene::load(&p).unwrap();
+    s.set_n(5000);
+    s.ensembles = 40;
+    s.times = vec![0.0];
+    s.histogram = Some((16, 4.0));
+    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
+    assert_eq!(st.dimension, 2);
+    let (radius, h) = st.histogram.as_ref().unwrap();
+    let chi2 = |r: f64| 1.0 - (-0.5 * r * r).exp();
+    for k in 0..=16 {
+        let lo = radius * k as f64 / 16.0;
+        let hi = if k == 16 { f64::INFINITY } else { lo + 0.25 };
+        let exact = chi2(hi) - chi2(lo);
+        // The reduced Maxwellian of unit temperature, c = |v| / sqrt 2, gives the same weight.
+        let s2 = 2f64.sqrt();
+        assert!((phi_shell_in(2, lo / s2, hi / s2) - exact).abs() < 1e-15);
+        let (m, ci) = (h.mean(k), h.ci(k));
+        if exact > 1e-6 {
+            assert!(
+                (m - exact).abs() <= ci * 4.0 / multiplier(40),
+                "shell {k}: {m} +- {ci}, exact {exact}"
+            );
+        }
+        if k < 16 {
+            let area = std::f64::consts::PI * (hi * hi - lo * lo);
+            assert!((shell_volume_in(2, lo, hi) - area).abs() <= 1e-15 * area);
+        }
+    }
 }

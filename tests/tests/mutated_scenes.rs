@@ -56,6 +56,7 @@ const KEYS: &[&str] = &[
     "rotation.inertia",
     "rotation.temperature",
     "rotation.noise",
+    "particles.dimension",
 ];
 
 /// Hostile values: zero, negative, tiny, huge, special, of the wrong type, too long.
@@ -69,6 +70,7 @@ const VALUES: &[&str] = &[
     "nan",
     "inf",
     "0.9",
+    "2",
     "7",
     "9223372036854775807",
     "\"vhs\"",

@@ -29,14 +29,22 @@ pub fn reference_exponent(scene: &crate::scene::Scene) -> f64 {
     1.0 + lambda / 2.0
 }
 
-/// The points `(k, x_k, y_k)` of GRW Section 4.3 (k0 = 1, shells k = 2..K, 1-based as GRW).
-pub fn tail_points(radius: f64, hist: &Accumulator) -> Vec<(usize, f64, f64)> {
+/// The points `(k, x_k, y_k)` of GRW Section 4.3 (k0 = 1, shells k = 2..K, 1-based as GRW),
+/// the shells' volumes in `d` dimensions (2: disks).
+pub fn tail_points(radius: f64, hist: &Accumulator, d: usize) -> Vec<(usize, f64, f64)> {
     let kk = hist.len().saturating_sub(1);
     if kk < 3 {
         return Vec::new();
     }
     let h = radius / kk as f64;
     let vol = |k: usize| {
+        if d == 2 {
+            return crate::reference::exact::tail::shell_volume_in(
+                2,
+                (k - 1) as f64 * h,
+                k as f64 * h,
+            );
+        }
         4.0 / 3.0
             * std::f64::consts::PI
             * h.powi(3)
@@ -58,8 +66,8 @@ pub fn tail_points(radius: f64, hist: &Accumulator) -> Vec<(usize, f64, f64)> {
 /// Least-squares line through the outer half (in `x`) of the tail points, where the
 /// asymptotic exponent shows (the inner points still carry the Maxwellian core's exponent 2);
 /// `None` with fewer than three points.
-pub fn fit(radius: f64, hist: &Accumulator) -> Option<TailFit> {
-    let all = tail_points(radius, hist);
+pub fn fit(radius: f64, hist: &Accumulator, d: usize) -> Option<TailFit> {
+    let all = tail_points(radius, hist, d);
     line(all[all.len() / 2..].to_vec())
 }
 
@@ -67,8 +75,8 @@ pub fn fit(radius: f64, hist: &Accumulator) -> Option<TailFit> {
 /// reached its asymptote (GRW (16)) they agree; a slope that still changes with the speed
 /// beyond both intervals means the fitted exponent is not yet the asymptotic one. `None` with
 /// fewer than three points in a half.
-pub fn halves(radius: f64, hist: &Accumulator) -> Option<(TailFit, TailFit)> {
-    let all = tail_points(radius, hist);
+pub fn halves(radius: f64, hist: &Accumulator, d: usize) -> Option<(TailFit, TailFit)> {
+    let all = tail_points(radius, hist, d);
     let used = &all[all.len() / 2..];
     let mid = used.len() / 2;
     Some((line(used[..mid].to_vec())?, line(used[mid..].to_vec())?))

@@ -149,8 +149,8 @@ fn unsteady(scene: &Scene, stats: &RunStats) -> Option<Warning> {
 fn tail_not_asymptotic(scene: &Scene, stats: &RunStats) -> Option<Warning> {
     use crate::analysis::tails::{TailFit, fit, halves};
     let (radius, h) = stats.histogram.as_ref()?;
-    let all = fit(*radius, h)?;
-    let (inner, outer) = halves(*radius, h)?;
+    let all = fit(*radius, h, stats.dimension)?;
+    let (inner, outer) = halves(*radius, h, stats.dimension)?;
     let drifts = (outer.slope - inner.slope).abs() > inner.slope_ci + outer.slope_ci;
     let reference = crate::analysis::tails::reference_exponent(scene);
     let heated = scene.translation_is_smooth()

@@ -278,6 +278,26 @@ pub mod tail {
         4.0 / 3.0 * PI * (b.powi(3) - a.powi(3))
     }
 
+    /// The volume of the shell `a <= |v| < b` in `d` dimensions: [`shell_volume`] for 3, the
+    /// ring's area `pi (b^2 - a^2)` for 2 (disks).
+    pub fn shell_volume_in(d: usize, a: f64, b: f64) -> f64 {
+        if d == 2 {
+            PI * (b * b - a * a)
+        } else {
+            shell_volume(a, b)
+        }
+    }
+
+    /// The weight of the reduced Maxwellian of `d` dimensions in the shell `a <= |c| < b`:
+    /// [`phi_shell`] for 3, `exp(-a^2) - exp(-b^2)` for 2 (density `exp(-c^2)/pi`).
+    pub fn phi_shell_in(d: usize, a: f64, b: f64) -> f64 {
+        if d == 2 {
+            (-a * a).exp() - (-b * b).exp()
+        } else {
+            phi_shell(a, b)
+        }
+    }
+
     /// The weight of `phi` in the shell `a <= |c| < b`: `F(b) - F(a)`,
     /// `F(c) = erf(c) - 2 c exp(-c^2) / sqrt(pi)` (exact; `b` may be infinite).
     pub fn phi_shell(a: f64, b: f64) -> f64 {

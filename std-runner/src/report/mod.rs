@@ -43,10 +43,12 @@ pub fn observables_csv(stats: &RunStats, refs: &[ReferenceCurve]) -> Result<Vec<
 
 /// histograms.csv: the radial-shell histogram at the last observation (GRW (31)-(33)):
 /// `r_lo, r_hi, f, f_ci` per shell (the weight of the shell, and its 99.9% half-width), and
-/// `density` = `f` over the shell volume; the last shell is `[R, inf)`.
+/// `density` = `f` over the shell volume (a ring's area for disks, `d = 2`); the last shell is
+/// `[R, inf)`.
 pub fn histograms_csv(
     radius: f64,
     hist: &crate::run::stats::Accumulator,
+    d: usize,
 ) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record(["r_lo", "r_hi", "f", "f_ci", "density"])?;
@@ -58,7 +60,7 @@ pub fn histograms_csv(
         } else {
             radius * (i + 1) as f64 / k as f64
         };
-        let vol = crate::reference::exact::tail::shell_volume(lo, hi);
+        let vol = crate::reference::exact::tail::shell_volume_in(d, lo, hi);
         w.write_record([
             format!("{lo:?}"),
             format!("{hi:?}"),
@@ -121,7 +123,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     let tail = stats
         .histogram
         .as_ref()
-        .and_then(|(radius, h)| crate::analysis::tails::fit(*radius, h))
+        .and_then(|(radius, h)| crate::analysis::tails::fit(*radius, h, stats.dimension))
         .map(|f| {
             serde_json::json!({
                 "k0": 1,
@@ -130,7 +132,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
                 "shells_used": f.points.len(),
                 "reference_exponent_grw_16": crate::analysis::tails::reference_exponent(scene),
                 "halves": stats.histogram.as_ref().and_then(|(radius, h)| {
-                    crate::analysis::tails::halves(*radius, h)
+                    crate::analysis::tails::halves(*radius, h, stats.dimension)
                 }).map(|(a, b)| serde_json::json!({
                     "inner": { "slope": a.slope, "slope_ci": a.slope_ci,
                         "shells": [a.points[0].0, a.points[a.points.len() - 1].0] },
@@ -217,7 +219,8 @@ pub fn tables(
     let json = serde_json::to_vec_pretty(&summary_json(scene, stats, refs)).expect("json");
     out.push(("summary.json".into(), json));
     if let Some((radius, h)) = &stats.histogram {
-        let bytes = histograms_csv(*radius, h).map_err(|e| csv_err("histograms.csv", e))?;
+        let bytes = histograms_csv(*radius, h, stats.dimension)
+            .map_err(|e| csv_err("histograms.csv", e))?;
         out.push(("histograms.csv".into(), bytes));
     }
     if let Some(r) = crate::analysis::distribution::reduced(scene, stats) {

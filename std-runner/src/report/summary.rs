@@ -109,7 +109,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         let _ = writeln!(s);
     }
     if let Some((radius, h)) = &stats.histogram {
-        match crate::analysis::tails::fit(*radius, h) {
+        match crate::analysis::tails::fit(*radius, h, stats.dimension) {
             Some(f) => {
                 let _ = writeln!(
                     s,

@@ -343,6 +343,7 @@ pub fn stats_of(scene: &Scene, totals: Totals, timing: Timing) -> RunStats {
         acc: st,
     });
     RunStats {
+        dimension: scene.dimension(),
         times: scene.times.clone(),
         names: names(scene),
         acc,

@@ -72,6 +72,8 @@ pub struct RunStats {
     /// The radial-shell histogram at the last observation (radius R, statistics of the K + 1
     /// shell weights over ensembles), when the scene asks for it.
     pub histogram: Option<(f64, Accumulator)>,
+    /// The dimension of velocity space (3: spheres, 2: disks): the shells' volumes.
+    pub dimension: usize,
     /// The reduced-speed histogram (`c_max`, statistics of the K + 1 shell weights of
     /// `c = |v - V| / v0`, each ensemble's averaged over the steady observations).
     pub reduced: Option<(f64, Accumulator)>,

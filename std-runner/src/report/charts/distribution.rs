@@ -27,7 +27,7 @@ pub fn distribution_charts(
                 radius * i as f64 / k as f64,
                 radius * (i + 1) as f64 / k as f64,
             );
-            (lo, hi, tail::shell_volume(lo, hi))
+            (lo, hi, tail::shell_volume_in(stats.dimension, lo, hi))
         };
         let pts = (0..k)
             .map(|i| {
@@ -45,7 +45,7 @@ pub fn distribution_charts(
                 let v0 = (2.0 * temperature).sqrt();
                 (
                     0.5 * (lo + hi),
-                    tail::phi_shell(lo / v0, hi / v0) / vol,
+                    tail::phi_shell_in(stats.dimension, lo / v0, hi / v0) / vol,
                     0.0,
                 )
             })

@@ -32,9 +32,9 @@ pub fn all(
 ) -> Vec<(String, Result<Chart, String>)> {
     let mut out = time::charts(title, stats, refs);
     if let Some((radius, h)) = &stats.histogram
-        && let Some(fit) = crate::analysis::tails::fit(*radius, h)
+        && let Some(fit) = crate::analysis::tails::fit(*radius, h, stats.dimension)
     {
-        let points = crate::analysis::tails::tail_points(*radius, h);
+        let points = crate::analysis::tails::tail_points(*radius, h, stats.dimension);
         out.push((
             "tail".into(),
             tail(&format!("{title}: tail (GRW Section 4.3)"), &fit, &points),
