@@ -62,7 +62,7 @@ fn the_same_bad_value_gets_the_same_words() {
     let mut base = gdsmc_config::example3();
     base.kernel = gdsmc::GDSMC_KERNEL_HARD_SPHERES;
     (base.gamma, base.c, base.n) = (1.0, 1.0, 64);
-    let cases: [Case; 11] = [
+    let cases: [Case; 13] = [
         (
             "[observe]",
             "[rotation]\ntangential_restitution = 1.5\n[observe]",
@@ -103,6 +103,29 @@ fn the_same_bad_value_gets_the_same_words() {
             |c| c.restitution = 1.5,
         ),
         ("n = 64", "n = 1", &[], "particles.n", "n", |c| c.n = 1),
+        (
+            "n = 64",
+            "n = 64\ndimension = 2\ninitial = { kind = \"maxwellian\", drift = [0.0, 0.0, 1.0] }",
+            &[],
+            "particles.initial.drift",
+            "drift",
+            |c| {
+                c.dimension = 2;
+                c.drift = [0.0, 0.0, 1.0];
+            },
+        ),
+        (
+            "n = 64",
+            "n = 64\ndimension = 2",
+            &["scheme.kind=euler", "scheme.dt=0.1"],
+            "scheme.kind",
+            "scheme",
+            |c| {
+                c.dimension = 2;
+                c.scheme = gdsmc::GDSMC_SCHEME_EULER;
+                c.dt = 0.1;
+            },
+        ),
         (
             "beta = 1.0",
             "beta = -0.5",

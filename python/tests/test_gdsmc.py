@@ -75,6 +75,8 @@ def strip_timing(v):
         ("mixture-maxwell", ["--n", "200", "--ensembles", "8", "--seed", "3"]),
         # Rough particles: the rotation's columns (T_rot, theta, ...) and references.
         ("rough-hcs", ["--n", "200", "--ensembles", "6", "--seed", "5"]),
+        # Rough disks (d = 2): the same columns, the references for disks.
+        ("rough-disks-hcs", ["--n", "200", "--ensembles", "6", "--seed", "5"]),
     ],
 )
 def test_same_numbers_as_the_command(tmp_path, name, args):

@@ -5,10 +5,14 @@
 //! alpha = |beta| = 1 keeps the energy; beta = -1 returns the rim velocities bit for bit. And
 //! the impact direction for any finite relative velocity: a unit vector on the approaching
 //! hemisphere. Rounding bounds as in core/tests/rough_maps.rs (k ulps of the magnitudes, the
-//! rotational ones divided by kappa).
+//! rotational ones divided by kappa). Disks (`gdsmc_core::geometry::Disks`): the same map on
+//! velocities in the plane and spins along z keeps them there exactly, and the disks' impact and
+//! hard-disk scattering directions are unit vectors in the plane (the impact approaching).
 
 use crate::bounded;
 use arbitrary::Unstructured;
+use gdsmc_core::geometry::{Disks, Geometry};
+use gdsmc_core::kernel::HardSpheres;
 use gdsmc_core::rng::seeded;
 use gdsmc_core::rough::{RoughMap, impact_direction};
 use gdsmc_core::vec3::Vec3;
@@ -121,6 +125,36 @@ pub fn rough_maps(data: &[u8]) {
         assert!(
             d.dot(uu) >= -1e-12 * uu.norm(),
             "impact direction receding: {d:?} for {uu:?}"
+        );
+    }
+    // Disks: planar velocities, spins along z, an in-plane contact direction.
+    let planar = |v: Vec3| Vec3::new(v.x, v.y, 0.0);
+    let axial = |w: Vec3| Vec3::new(0.0, 0.0, w.z);
+    let np = planar(n);
+    if np.norm() > 1e-3 {
+        let np = (1.0 / np.norm()) * np;
+        let (p1, q1, p2, q2) = (planar(v1), axial(w1), planar(v2), axial(w2));
+        let (a1, b1, a2, b2) = m.collide(p1, q1, p2, q2, np);
+        assert!(
+            a1.z == 0.0 && a2.z == 0.0 && b1.x == 0.0 && b1.y == 0.0 && b2.x == 0.0 && b2.y == 0.0,
+            "disks left their axes: {a1:?} {b1:?} {a2:?} {b2:?}: {}",
+            what()
+        );
+    }
+    if let Ok(seed) = u.arbitrary::<u64>() {
+        let mut rng = seeded(seed);
+        let uu = planar(v1 - v2);
+        let d = Disks::impact(uu, &mut rng);
+        let e = Disks::scattering::<HardSpheres, _>(uu, &mut rng);
+        for (name, x) in [("impact", d), ("scattering", e)] {
+            assert!(
+                x.is_finite() && x.z == 0.0 && (x.norm() - 1.0).abs() <= 1e-12,
+                "disks' {name} direction not a unit vector of the plane: {x:?} for {uu:?}"
+            );
+        }
+        assert!(
+            d.dot(uu) >= -1e-12 * uu.norm(),
+            "disks' impact direction receding: {d:?} for {uu:?}"
         );
     }
 }
