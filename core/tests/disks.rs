@@ -5,15 +5,15 @@
 
 mod common;
 
-use common::{ks_critical_999, ks_statistic, mean_ci};
+use common::{check_finite_equipartition, ks_critical_999, ks_statistic};
 use gdsmc_core::engine::EventLoop;
 use gdsmc_core::geometry::{DimensionChoice, Disks, Geometry};
 use gdsmc_core::kernel::{HardSpheres, Maxwell};
-use gdsmc_core::particles::{Particle, Particles, Spin};
+use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::physics::{
     DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice, SchemeChoice,
 };
-use gdsmc_core::rng::{Streams, seeded};
+use gdsmc_core::rng::seeded;
 use gdsmc_core::vec3::Vec3;
 
 fn disks(n: usize, kernel: KernelChoice, alpha: f64, drive: DriveChoice) -> Physics {
@@ -114,36 +114,14 @@ fn elastic_perfectly_rough_disks_relax_to_equipartition_of_their_finite_system()
         ..RotationChoice::disks(1.0)
     });
     let model = ph.validate().unwrap();
-    let mut streams = Streams::new(2025);
-    let (mut d_finite, mut d_naive) = (Vec::new(), Vec::new());
-    let mut collisions = 0u64;
-    let ensembles = 20_000;
-    for _ in 0..ensembles {
-        let mut rng = streams.next().unwrap();
-        let mut buf = vec![Particle::default(); n];
-        let mut spins = vec![Spin::default(); n];
-        let mut p = Particles::with_spins(&mut buf, &mut spins).unwrap();
-        let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
-        e.advance_to(&mut p, 40.0, &mut rng).unwrap();
-        collisions += e.counts().collisions;
+    check_finite_equipartition(&model, 20_000, 2025, 0.5, |p| {
         assert!(p.as_slice().iter().all(|q| q.vz == 0.0));
         assert!(
             p.spins()
                 .iter()
                 .all(|s| s.rim_velocity().x == 0.0 && s.rim_velocity().y == 0.0)
         );
-        let r = e.rough(&p).unwrap();
-        d_finite.push(r.t_tr - (n as f64 - 1.0) / n as f64 * r.t_rot);
-        d_naive.push(r.t_tr - r.t_rot);
-    }
-    assert!(collisions as f64 / (ensembles * n) as f64 > 20.0);
-    let (m, h) = mean_ci(&d_finite);
-    assert!(m.abs() <= h, "E[T_tr - (n-1)/n T_rot] = {m} +- {h}");
-    let (m, h) = mean_ci(&d_naive);
-    assert!(
-        m.abs() > h,
-        "the test cannot tell (n-1)/n from 1: {m} +- {h}"
-    );
+    });
 }
 
 /// Disks refuse what is written for spheres only, naming the parameter.

@@ -12,15 +12,23 @@ fn chi3_cdf(r: f64) -> f64 {
     libm::erf(r / 2f64.sqrt()) - (2.0 / std::f64::consts::PI).sqrt() * r * (-0.5 * r * r).exp()
 }
 
-#[test]
-fn initial_shells_are_maxwellian() {
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
+/// The 16 shells up to 4 (and the last, [4, inf)) of a shipped scene's initial Maxwellian:
+/// n = 5000, 40 ensembles.
+fn initial_shells(scene_name: &str) -> gdsmc_runner::run::RunStats {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../scenes")
+        .join(format!("{scene_name}.toml"));
     let mut s = scene::load(&p).unwrap();
     s.set_n(5000);
     s.ensembles = 40;
     s.times = vec![0.0];
     s.histogram = Some((16, 4.0));
-    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
+    gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap()
+}
+
+#[test]
+fn initial_shells_are_maxwellian() {
+    let st = initial_shells("grw-example3");
     let (radius, h) = st.histogram.as_ref().unwrap();
     assert_eq!(h.len(), 17);
     let mut total = 0.0;
@@ -70,13 +78,7 @@ fn initial_shells_are_maxwellian() {
 #[test]
 fn initial_shells_of_disks_are_the_planar_maxwellian() {
     use gdsmc_runner::reference::exact::tail::{phi_shell_in, shell_volume_in};
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/disks-white-noise.toml");
-    let mut s = scene::load(&p).unwrap();
-    s.set_n(5000);
-    s.ensembles = 40;
-    s.times = vec![0.0];
-    s.histogram = Some((16, 4.0));
-    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
+    let st = initial_shells("disks-white-noise");
     assert_eq!(st.dimension, 2);
     let (radius, h) = st.histogram.as_ref().unwrap();
     let chi2 = |r: f64| 1.0 - (-0.5 * r * r).exp();

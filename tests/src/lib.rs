@@ -42,6 +42,22 @@ pub fn at(stats: &RunStats, ti: usize, name: &str) -> (f64, f64) {
     (stats.mean(ti, c), stats.ci(ti, c))
 }
 
+/// How many observation times after the first put column `name` farther from `reference(t)`
+/// than `factor` times its 99.9% half-width: a check that must refuse a wrong reference.
+pub fn times_outside(
+    stats: &RunStats,
+    name: &str,
+    factor: f64,
+    reference: impl Fn(f64) -> f64,
+) -> usize {
+    (1..stats.times.len())
+        .filter(|&ti| {
+            let (m, c) = at(stats, ti, name);
+            (m - reference(stats.times[ti])).abs() > factor * c
+        })
+        .count()
+}
+
 /// Index of the observation time `t` (exactly one of the scene's times).
 pub fn time_index(stats: &RunStats, t: f64) -> usize {
     stats

@@ -34,12 +34,7 @@ fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
     h.times = s.times.clone();
     assert!(maxwell_temperature(&h).is_none());
     let st = run(&h);
-    let outside = (1..st.times.len())
-        .filter(|&ti| {
-            let (m, c) = at(&st, ti, "T_bulk");
-            (m - mt.finite_n_bulk_mean(n, st.times[ti])).abs() > f * c
-        })
-        .count();
+    let outside = times_outside(&st, "T_bulk", f, |t| mt.finite_n_bulk_mean(n, t));
     assert!(
         outside >= st.times.len() - 2,
         "only {outside} times tell hard disks from Maxwell disks"

@@ -47,12 +47,7 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     r.steady_from = None;
     assert!(maxwell_temperature(&r).is_none());
     let st = run(&r);
-    let outside = (1..st.times.len())
-        .filter(|&ti| {
-            let (m, c) = at(&st, ti, "T_bulk");
-            (m - mt.finite_n_bulk_mean(n, st.times[ti])).abs() > f * c
-        })
-        .count();
+    let outside = times_outside(&st, "T_bulk", f, |t| mt.finite_n_bulk_mean(n, t));
     assert!(
         outside >= st.times.len() - 2,
         "only {outside} times tell beta = 0 from smooth"

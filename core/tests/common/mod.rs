@@ -32,6 +32,57 @@ pub fn mean_ci(xs: &[f64]) -> (f64, f64) {
     (m, 3.2 * (var / n).sqrt())
 }
 
+/// The elastic perfectly rough gas's check (`core/tests/rough_gas.rs`, `core/tests/disks.rs`):
+/// `ensembles` systems of `model` (n particles and spins, reduced moment of inertia `kappa`)
+/// from the streams of `seed`, each run to t = 40 keeping `sum |v|^2 + kappa |w|^2` to
+/// rounding, then `each` on the final system; the finite system's equipartition
+/// `E[T_tr] = (n - 1)/n E[T_rot]` must hold within the 99.9% interval and the same sample
+/// must refuse `T_tr = T_rot`.
+pub fn check_finite_equipartition(
+    model: &gdsmc_core::physics::Model,
+    ensembles: usize,
+    seed: u64,
+    kappa: f64,
+    each: impl Fn(&gdsmc_core::particles::Particles<'_>),
+) {
+    use gdsmc_core::engine::EventLoop;
+    use gdsmc_core::particles::{Particle, Particles, Spin};
+    let n = model.n();
+    let energy = |p: &Particles<'_>| {
+        let tr: f64 = p.as_slice().iter().map(|q| q.velocity().norm2()).sum();
+        let rot: f64 = p.spins().iter().map(|s| s.rim_velocity().norm2()).sum();
+        tr + kappa * rot
+    };
+    let (mut d_finite, mut d_naive) = (Vec::new(), Vec::new());
+    let mut streams = gdsmc_core::rng::Streams::new(seed);
+    let mut collisions = 0u64;
+    for _ in 0..ensembles {
+        let mut rng = streams.next().unwrap();
+        let mut buf = vec![Particle::default(); n];
+        let mut spins = vec![Spin::default(); n];
+        let mut p = Particles::with_spins(&mut buf, &mut spins).unwrap();
+        let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+        let e0 = energy(&p);
+        e.advance_to(&mut p, 40.0, &mut rng).unwrap();
+        let e1 = energy(&p);
+        assert!((e1 - e0).abs() <= 1e-12 * e0, "energy {e0} -> {e1}");
+        collisions += e.counts().collisions;
+        each(&p);
+        let r = e.rough(&p).unwrap();
+        d_finite.push(r.t_tr - (n as f64 - 1.0) / n as f64 * r.t_rot);
+        d_naive.push(r.t_tr - r.t_rot);
+    }
+    // Relaxed: dozens of collisions per particle.
+    assert!(collisions as f64 / (ensembles * n) as f64 > 20.0);
+    let (m, h) = mean_ci(&d_finite);
+    assert!(m.abs() <= h, "E[T_tr - (n-1)/n T_rot] = {m} +- {h}");
+    let (m, h) = mean_ci(&d_naive);
+    assert!(
+        m.abs() > h,
+        "the test cannot tell (n-1)/n from 1: {m} +- {h}"
+    );
+}
+
 /// Proptest strategies shared by the collision-map tests.
 pub mod strategies {
     use gdsmc_core::vec3::Vec3;
