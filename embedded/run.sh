@@ -87,8 +87,8 @@ for name, elf, out, fp in [("mps2-an386, Cortex-M4F", m4, o4, "software (single-
     text, ram = size(elf)
     f = figs(out)
     rows.append(f"| {name} | {fp} | {text/1024:.0f} KiB | {ram/1024:.1f} KiB | {f['stack_peak_bytes']/1024:.1f} KiB "
-                f"| {f['particles_per_kib']} | {f['grw3.per_collision']:,} | {f['hcs.per_candidate']:,} | {f['rough.per_collision']:,} |")
-print("| board (QEMU) | f64 | flash | static RAM | peak stack | particles per KiB | instructions per collision, GRW Ex. 3 | instructions per candidate, cooling hard spheres | instructions per collision, cooling rough spheres |")
+                f"| {f['particles_per_kib']} | {f['grw3.per_collision']:,} | {f['hcs.per_collision']:,} | {f['rough.per_collision']:,} |")
+print("| board (QEMU) | f64 | flash | static RAM | peak stack | particles per KiB | instructions per collision, GRW Ex. 3 | instructions per collision, cooling hard spheres | instructions per collision, cooling rough spheres |")
 text, ram = size(cfw)
 rows.append(f"| mps2-an386, Cortex-M4F, C firmware (GRW Ex. 3 only, newlib) | software (single-precision FPU) | {text/1024:.0f} KiB | {ram/1024:.1f} KiB | - | 32 | - | - | - |")
 print("|---|---|---|---|---|---|---|---|---|")

@@ -5,10 +5,12 @@ pub(crate) mod jumps;
 pub mod nosplit;
 pub mod pairs;
 pub mod splitting;
+pub mod sum_form;
 pub mod time_stepped;
 
 pub use nosplit::NoSplitting;
 pub use splitting::{Splitting, SplittingOrder};
+pub use sum_form::SumNoSplitting;
 pub use time_stepped::TimeStepped;
 
 use crate::math::Real;

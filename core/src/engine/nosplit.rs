@@ -154,16 +154,11 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
     /// summed directly from the physical velocities `offset + scale v` (their peculiar parts
     /// are below the bulk's last digits there, so this is as accurate as the sum can be).
     /// Only a gas with no drive is ever stored rescaled.
-    fn with_raw_v6(&self, p: &Particles<'_>, mut obs: Observables) -> Observables {
-        if !D::ACTS && obs.v6.is_nan() && self.offset != Vec3::ZERO {
-            let mut s = 0.0;
-            for q in p.as_slice() {
-                let v2 = (self.offset + self.scale * q.velocity()).norm2();
-                s += v2 * v2 * v2;
-            }
-            obs.v6 = s / p.len() as Real;
+    fn with_raw_v6(&self, p: &Particles<'_>, obs: Observables) -> Observables {
+        if D::ACTS {
+            return obs;
         }
-        obs
+        with_raw_v6(p, obs, self.scale, self.offset)
     }
 
     /// Re-synchronizes after the caller changed velocities between calls: every last-kick time
@@ -181,19 +176,16 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
         let d = G::CHOICE.d();
         let mut obs = observables_dim(p, d)?;
         if !D::ACTS
-            && obs.t_bulk > 0.0
-            && obs.t_bulk < self.rescale_below * max(1.0, obs.bulk.norm2())
+            && rescale(
+                p,
+                &mut obs,
+                self.rescale_below,
+                &mut self.scale,
+                &mut self.offset,
+                d,
+            )
         {
-            // v_phys = offset + scale v: store the peculiar velocities at unit temperature.
-            let s = 1.0 / sqrt(obs.t_bulk);
-            for q in p.as_mut_slice() {
-                let v = q.velocity();
-                q.set_velocity(s * (v - obs.bulk));
-            }
-            self.offset += self.scale * obs.bulk;
-            self.scale /= s;
             self.c.counts.rescales += 1;
-            obs = Observables::of_dim(p, d);
         }
         self.c.synchronized(&obs);
         Ok(obs.in_units_dim(self.scale, self.offset, d))
@@ -210,6 +202,52 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
     pub fn velocity_map(&self) -> (Real, Vec3) {
         (self.scale, self.offset)
     }
+}
+
+/// Stores a cooling gas rescaled (module docs) when its temperature `obs.t_bulk` (stored
+/// units) has fallen below `below` times `max(1, |V|^2)`: `v_phys = offset + scale v`, the
+/// stored peculiar velocities at unit temperature; `obs` becomes the stored system's (in `d`
+/// dimensions). True when it rescaled.
+pub(crate) fn rescale(
+    p: &mut Particles<'_>,
+    obs: &mut Observables,
+    below: Real,
+    scale: &mut Real,
+    offset: &mut Vec3,
+    d: usize,
+) -> bool {
+    if !(obs.t_bulk > 0.0 && obs.t_bulk < below * max(1.0, obs.bulk.norm2())) {
+        return false;
+    }
+    let s = 1.0 / sqrt(obs.t_bulk);
+    for q in p.as_mut_slice() {
+        let v = q.velocity();
+        q.set_velocity(s * (v - obs.bulk));
+    }
+    *offset += *scale * obs.bulk;
+    *scale /= s;
+    *obs = Observables::of_dim(p, d);
+    true
+}
+
+/// `<|v|^6>` of a gas stored rescaled about a bulk velocity cannot be rebuilt from the central
+/// moments ([`Observables::in_units`] leaves it NaN): summed directly from the physical
+/// velocities `offset + scale v` at an observation.
+pub(crate) fn with_raw_v6(
+    p: &Particles<'_>,
+    mut obs: Observables,
+    scale: Real,
+    offset: Vec3,
+) -> Observables {
+    if obs.v6.is_nan() && offset != Vec3::ZERO {
+        let mut s = 0.0;
+        for q in p.as_slice() {
+            let v2 = (offset + scale * q.velocity()).norm2();
+            s += v2 * v2 * v2;
+        }
+        obs.v6 = s / p.len() as Real;
+    }
+    obs
 }
 
 impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Jumps for NoSplitting<K, D, A, G> {

@@ -11,7 +11,7 @@ use super::rotation::RoughModel;
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
 use crate::drive::{Drive, NoDrive, PlanarWhiteNoise};
-use crate::engine::{EngineError, NoSplitting, Splitting, TimeStepped};
+use crate::engine::{EngineError, NoSplitting, Splitting, SumNoSplitting, TimeStepped};
 use crate::geometry::{DimensionChoice, Disks, Geometry};
 use crate::kernel::Kernel;
 use crate::math::Real;
@@ -224,6 +224,13 @@ impl Model {
         t0: Real,
     ) -> Result<(ByScheme<K, D, A>, Observables), EngineError> {
         match self.scheme {
+            // Hard spheres with no drive: the sum-form majorant.
+            SchemeModel::NoSplitting if !D::ACTS && K::HARD && self.sum_form => {
+                let hs = k
+                    .as_hard_spheres()
+                    .ok_or(EngineError::NonFinite("a hard-sphere kernel"))?;
+                wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
+            }
             SchemeModel::NoSplitting => {
                 wrap(NoSplitting::start(k, d, a, p, t0), ByScheme::NoSplitting)
             }

@@ -8,7 +8,9 @@ use crate::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, MaxwellBackground,
     NoDrive, PlanarWhiteNoise, WhiteNoise,
 };
-use crate::engine::{Counts, EngineError, EventLoop, NoSplitting, Splitting, TimeStepped};
+use crate::engine::{
+    Counts, EngineError, EventLoop, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
+};
 use crate::geometry::{Disks, Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use crate::math::Real;
@@ -153,6 +155,9 @@ pub enum ByScheme<K, D, A> {
     Splitting(Splitting<K, D, A>),
     /// MS's time-stepped scheme (hard spheres only; built only under [`Engine::HardSpheres`]).
     TimeStepped(TimeStepped<D, A>),
+    /// The exact scheme of hard spheres with no drive on the sum-form majorant (built only under
+    /// [`Engine::HardSpheres`] with [`ByDrive::None`]).
+    SumForm(SumNoSplitting<A>),
 }
 
 /// Implements [`EventLoop`] for one level by forwarding every method to the variant.
@@ -199,4 +204,4 @@ forward!(MixtureEngine, [], Maxwell, HardSpheres, Vhs);
 forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
-forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], NoSplitting, Splitting, TimeStepped);
+forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], NoSplitting, Splitting, TimeStepped, SumForm);

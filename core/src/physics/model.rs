@@ -63,6 +63,9 @@ pub struct Model {
     pub(super) mixture: Option<super::species::MixtureModel>,
     pub(super) rough: Option<super::rotation::RoughModel>,
     pub(super) dimension: super::DimensionChoice,
+    /// Hard spheres with no drive run on the sum-form majorant ([`crate::engine::SumNoSplitting`]);
+    /// false: on `Umax` ([`crate::engine::NoSplitting`]), for comparisons.
+    pub(super) sum_form: bool,
 }
 
 fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -306,7 +309,15 @@ impl Model {
             mixture,
             rough,
             dimension,
+            sum_form: true,
         })
+    }
+
+    /// The same model on the `Umax` majorant of GRW step 1.4 for hard spheres with no drive
+    /// (the loop before the sum form): the same process, for comparisons and benchmarks.
+    pub fn with_umax_majorant(mut self) -> Self {
+        self.sum_form = false;
+        self
     }
 
     /// The dimension (spheres or disks).

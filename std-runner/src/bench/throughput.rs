@@ -1,8 +1,9 @@
 //! `gdsmc bench throughput`: the speed of the hot loops, one line per case, beside the
 //! machine's own limits (random numbers per second, random reads per second).
 //!
-//! Lines have the form `case=<name> kernel=<k> n=<n> collisions_per_s=<x> attempts_per_s=<y>`
-//! for the no-splitting event loop (GRW Section 3 / RW Algorithm 3), and
+//! Lines have the form `case=<name> kernel=<k> n=<n> collisions_per_s=<x> attempts_per_s=<y>
+//! acceptance=<a>` for the no-splitting event loop (GRW Section 3 / RW Algorithm 3; `a` the
+//! fraction of candidates that collide), and
 //! `case=<name> n=<n> particles_per_s=<x>` (or `numbers_per_s`, `reads_per_s`) for the
 //! batch kernels and the limits. Each loop line ends with `of_pair_limit`, its candidates per
 //! second as a fraction of the machine's limit for that memory traffic at the same n
@@ -13,7 +14,7 @@ use gdsmc_core::batch::{kick, sums};
 use gdsmc_core::drive::{
     Drive, HardSphereBackground, HostMedium, HostMediumParams, NoDrive, WhiteNoise,
 };
-use gdsmc_core::engine::{EventLoop, NoSplitting};
+use gdsmc_core::engine::{EventLoop, NoSplitting, SumNoSplitting};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::restitution::Constant;
@@ -66,6 +67,16 @@ fn event_loop<K: Kernel, D: Drive>(
     let mut p = Particles::new(&mut buf).expect("n >= 2");
     let law = Constant::new(alpha).expect("alpha in (0, 1]");
     let (mut e, _) = NoSplitting::start(kernel, drive, law, &mut p, 0.0).expect("finite start");
+    timed(&mut e, &mut p, budget)
+}
+
+/// The loop runs use for hard spheres with no drive: the sum-form majorant
+/// ([`SumNoSplitting`]); returns (collisions per second, attempts per second).
+fn sum_form_loop(kernel: HardSpheres, alpha: f64, n: usize, budget: Duration) -> (f64, f64) {
+    let mut buf = system(n, 1);
+    let mut p = Particles::new(&mut buf).expect("n >= 2");
+    let law = Constant::new(alpha).expect("alpha in (0, 1]");
+    let (mut e, _) = SumNoSplitting::start(kernel, law, &mut p, 0.0).expect("finite start");
     timed(&mut e, &mut p, budget)
 }
 
@@ -167,6 +178,16 @@ fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
     (k as f64 * per as f64) / start.elapsed().as_secs_f64()
 }
 
+/// One event-loop line: its collisions and candidates per second, the fraction of candidates
+/// that collide, and the candidates as a fraction of the pair-update limit.
+fn loop_line(case: &str, kernel: &str, n: usize, coll: f64, att: f64, limit: f64) -> String {
+    format!(
+        "case={case} kernel={kernel} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} acceptance={:.3} of_pair_limit={:.3}",
+        coll / att,
+        att / limit
+    )
+}
+
 /// One event-loop case: `(alpha, heated)` to (collisions, attempts) per second.
 type LoopCase<'a> = dyn Fn(f64, bool) -> (f64, f64) + 'a;
 
@@ -193,7 +214,7 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
                 if heated {
                     event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
                 } else {
-                    event_loop(k, NoDrive, a, n, o.budget)
+                    sum_form_loop(k, a, n, o.budget)
                 }
             }),
             ("vhs", &|a, heated| {
@@ -215,9 +236,30 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
         );
         let k = HardSpheres::new(1.0, 0.125).expect("valid");
         let (coll, att) = event_loop(k, hm, 0.5, n, o.budget);
-        line(format!(
-            "case=nosplit-host-medium-alpha0.5 kernel=hard-spheres n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} of_pair_limit={:.3}",
-            att / limit
+        line(loop_line(
+            "nosplit-host-medium-alpha0.5",
+            "hard-spheres",
+            n,
+            coll,
+            att,
+            limit,
+        ));
+        // Hard spheres with no drive on the Umax majorant (GRW step 1.4), the loop before the
+        // sum form: the comparison for the elastic hard-sphere line below.
+        let (coll, att) = event_loop(
+            HardSpheres::new(g, c).expect("valid"),
+            NoDrive,
+            1.0,
+            n,
+            o.budget,
+        );
+        line(loop_line(
+            "nosplit-umax-elastic-alpha1",
+            "hard-spheres",
+            n,
+            coll,
+            att,
+            limit,
         ));
         // Rough hard spheres (uniform spheres): the elastic perfectly rough gas and the heated
         // one with beta = 0 (both translation and rotation kicked).
@@ -238,10 +280,7 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             ),
         ] {
             let (coll, att) = coll_att;
-            line(format!(
-                "case={case} kernel=hard-spheres n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} of_pair_limit={:.3}",
-                att / limit
-            ));
+            line(loop_line(case, "hard-spheres", n, coll, att, limit));
         }
         for (name, f) in kernels {
             for (case, alpha, heated) in [
@@ -249,10 +288,7 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
                 ("nosplit-elastic-alpha1", 1.0, false),
             ] {
                 let (coll, att) = f(alpha, heated);
-                line(format!(
-                    "case={case} kernel={name} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} of_pair_limit={:.3}",
-                    att / limit
-                ));
+                line(loop_line(case, name, n, coll, att, limit));
             }
         }
     }
@@ -323,7 +359,7 @@ mod tests {
             .iter()
             .filter(|l| l.starts_with("case=nosplit"))
             .collect();
-        assert_eq!(loops.len(), 9);
+        assert_eq!(loops.len(), 10);
         for l in &loops {
             let keys: Vec<&str> = l
                 .split(' ')
@@ -337,6 +373,7 @@ mod tests {
                     "n",
                     "collisions_per_s",
                     "attempts_per_s",
+                    "acceptance",
                     "of_pair_limit"
                 ],
                 "{l}"

@@ -1,0 +1,314 @@
+//! The exact no-splitting loop of hard spheres with no drive on the sum-form majorant
+//! `|v_i - v_j| <= |c_i| + |c_j|` (`c = v - V` about a fixed reference velocity `V`): GRW
+//! Section 3's scheme with the per-pair majorant `|c_i| + |c_j|` in place of `Umax`.
+//!
+//! The pair `{i, j}` is drawn with probability `(|c_i| + |c_j|) / ((n - 1) sum_k |c_k|)`:
+//! `i` uniform and kept with probability `|c_i| / c_max` (else drawn again: these draws are
+//! the weighted choice, not events), then `j` uniform among the others. The waiting times are
+//! exponential with the total majorant rate `4 pi gamma C_1 (n - 1)/n sum_k |c_k|` (the sum
+//! over pairs of `4 pi gamma C_1 (|c_i| + |c_j|)/n`, the pair rate of [`super::NoSplitting`]
+//! with `Umax` replaced), and the candidate collides with probability
+//! `|u| / (|c_i| + |c_j|)` (GRW (20) with this majorant), so every pair collides at its
+//! hard-sphere rate `4 pi gamma C_1 |u| / n`: the same process as [`super::NoSplitting`]'s,
+//! with no truncation (with no drive nothing moves between events, so the bound holds at every
+//! event). For a Maxwellian `E|u| / E(|c_i| + |c_j|) = 1/sqrt(2)`: about 0.7 of the candidates
+//! collide, against about 0.21 with `Umax = 2 max |c|` at n = 1e5.
+//!
+//! A gas with no drive does not use its particles' `t_kick` slots (every particle is always
+//! current), so they hold `|c_i|` during a run (no memory beyond the particles); `sum |c|` is
+//! kept by the collisions and summed anew at every synchronization (every `2n` candidates),
+//! `c_max` only grows between synchronizations and is made exact at them. The uniform indices
+//! are drawn [`AHEAD`] uses early and prefetched at large `n` (they do not depend on the
+//! state, so drawing them early changes nothing). Everything else is [`super::NoSplitting`]'s
+//! with no drive: the synchronization, the rescaled storage of a cooling gas
+//! ([`super::nosplit::RESCALE_BELOW`]), the observables.
+
+use super::event::{RefreshWindow, clamped_coefficient, observables};
+use super::jumps::{Jumps, run_events};
+use super::nosplit::{RESCALE_BELOW, rescale, with_raw_v6};
+use super::pairs::PREFETCH_FROM;
+use super::{Counts, EngineError};
+use crate::collision::inelastic;
+use crate::kernel::{HardSpheres, Kernel};
+use crate::math::{Real, max, sqrt};
+use crate::moments::Observables;
+use crate::particles::Particles;
+use crate::restitution::Restitution;
+use crate::rng::{Rng, uniform_index, uniform01};
+use crate::sample::unit_sphere;
+use crate::vec3::Vec3;
+
+/// Uniform indices drawn this many uses ahead at large `n` (their particles prefetched).
+pub const AHEAD: usize = 16;
+
+/// The exact loop of hard spheres with no drive and restitution law `A` on the sum-form
+/// majorant (module docs).
+#[derive(Clone, Debug)]
+pub struct SumNoSplitting<A> {
+    kernel: HardSpheres,
+    restitution: A,
+    /// Uniform indices in `0..n`, drawn ahead (a ring; `head == AHEAD`: empty).
+    ahead: [usize; AHEAD],
+    head: usize,
+    /// The reference velocity `V` (stored units).
+    vref: Vec3,
+    /// `sum_k |c_k|` and an upper bound of every `|c_k|` (stored units).
+    sum: Real,
+    cmax: Real,
+    /// Whether the `t_kick` slots hold `|c|`.
+    ready: bool,
+    counts: Counts,
+    t: Real,
+    refresh: RefreshWindow,
+    scale: Real,
+    offset: Vec3,
+}
+
+impl<A: Restitution> SumNoSplitting<A> {
+    /// Starts at `t0` on the particles `p` (holding the initial velocities); returns the
+    /// observables at `t0`.
+    pub fn start(
+        kernel: HardSpheres,
+        restitution: A,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(Self, Observables), EngineError> {
+        if !t0.is_finite() {
+            return Err(EngineError::TimeBackwards);
+        }
+        p.reset_kick_times(t0);
+        let mut s = SumNoSplitting {
+            kernel,
+            restitution,
+            ahead: [0; AHEAD],
+            head: AHEAD,
+            vref: Vec3::ZERO,
+            sum: 0.0,
+            cmax: 0.0,
+            ready: false,
+            counts: Counts::default(),
+            t: t0,
+            refresh: RefreshWindow::new(p.len()),
+            scale: 1.0,
+            offset: Vec3::ZERO,
+        };
+        let obs = s.synchronized(p, false)?;
+        Ok((s, obs))
+    }
+
+    /// Current time.
+    pub fn time(&self) -> Real {
+        self.t
+    }
+
+    /// Event counts so far.
+    pub fn counts(&self) -> Counts {
+        self.counts
+    }
+
+    /// The map from stored to physical velocities.
+    pub fn velocity_map(&self) -> (Real, Vec3) {
+        (self.scale, self.offset)
+    }
+
+    /// Stores `|c_k|` about `vref` in every `t_kick` slot and sums them; `c_max` exact. O(n).
+    fn prepare(&mut self, p: &mut Particles<'_>, vref: Vec3) {
+        self.vref = vref;
+        let (mut sum, mut cmax) = (0.0, 0.0);
+        for q in p.as_mut_slice() {
+            let c = sqrt((q.velocity() - vref).norm2());
+            q.t_kick = c;
+            sum += c;
+            cmax = max(cmax, c);
+        }
+        (self.sum, self.cmax, self.ready) = (sum, cmax, true);
+    }
+
+    /// Runs to `t_end >= time()` and returns the observables there (every particle is always
+    /// current: there is no drive).
+    #[inline(never)]
+    pub fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<Observables, EngineError> {
+        if !t_end.is_finite() || t_end < self.t {
+            return Err(EngineError::TimeBackwards);
+        }
+        if !self.ready {
+            let vref = Observables::of(p).bulk;
+            self.prepare(p, vref);
+        }
+        run_events(self, p, t_end, rng)?;
+        self.t = t_end;
+        // The t_kick slots are the caller's again.
+        p.reset_kick_times(t_end);
+        self.ready = false;
+        let obs = self.synchronized(p, false)?;
+        Ok(with_raw_v6(p, obs, self.scale, self.offset))
+    }
+
+    /// Re-synchronizes after the caller changed the velocities (physical ones).
+    pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        (self.scale, self.offset) = (1.0, Vec3::ZERO);
+        p.reset_kick_times(self.t);
+        self.ready = false;
+        self.synchronized(p, false)
+    }
+
+    /// Observables of the system (physical units); rescales a cooling gas below the threshold
+    /// and, within a run (`in_run`), stores and sums `|c|` anew about the bulk velocity.
+    fn synchronized(
+        &mut self,
+        p: &mut Particles<'_>,
+        in_run: bool,
+    ) -> Result<Observables, EngineError> {
+        let mut obs = observables(p)?;
+        if rescale(
+            p,
+            &mut obs,
+            RESCALE_BELOW,
+            &mut self.scale,
+            &mut self.offset,
+            3,
+        ) {
+            self.counts.rescales += 1;
+        }
+        self.counts.observations += 1;
+        if in_run {
+            self.prepare(p, obs.bulk);
+        }
+        Ok(obs.in_units(self.scale, self.offset))
+    }
+
+    /// The next uniform index in `0..n`: drawn [`AHEAD`] uses ago and prefetched at large `n`.
+    #[inline(always)]
+    fn uniform<R: Rng + ?Sized>(&mut self, p: &Particles<'_>, rng: &mut R) -> usize {
+        let n = p.len();
+        if n < PREFETCH_FROM {
+            return uniform_index(rng, n);
+        }
+        if self.head == AHEAD {
+            for k in 0..AHEAD {
+                self.ahead[k] = uniform_index(rng, n);
+                p.prefetch(self.ahead[k]);
+            }
+            self.head = 0;
+        }
+        let i = self.ahead[self.head];
+        let next = uniform_index(rng, n);
+        p.prefetch(next);
+        self.ahead[self.head] = next;
+        self.head = (self.head + 1) % AHEAD;
+        i
+    }
+}
+
+impl<A: Restitution> super::EventLoop for SumNoSplitting<A> {
+    fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<Observables, EngineError> {
+        SumNoSplitting::advance_to(self, p, t_end, rng)
+    }
+    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        SumNoSplitting::resync(self, p)
+    }
+    fn time(&self) -> Real {
+        self.t
+    }
+    fn counts(&self) -> Counts {
+        self.counts
+    }
+    fn velocity_map(&self) -> (Real, Vec3) {
+        (self.scale, self.offset)
+    }
+}
+
+impl<A: Restitution> Jumps for SumNoSplitting<A> {
+    const ACTS: bool = false;
+    const USES_UMAX: bool = true;
+
+    #[inline(always)]
+    fn rate(&mut self, n: usize) -> Real {
+        let pairs = (n - 1) as Real / n as Real;
+        self.kernel.pair_rate(self.scale * self.sum) * pairs
+    }
+    #[inline(always)]
+    fn bound(&self) -> Real {
+        self.scale * self.sum
+    }
+    #[inline(always)]
+    fn now(&self) -> Real {
+        self.t
+    }
+    #[inline(always)]
+    fn set_now(&mut self, t: Real) {
+        self.t = t;
+    }
+    #[inline(always)]
+    fn window(&mut self) -> &mut RefreshWindow {
+        &mut self.refresh
+    }
+    #[inline(always)]
+    fn tally(&mut self) -> &mut Counts {
+        &mut self.counts
+    }
+    fn kick_all<R: Rng + ?Sized>(&mut self, _p: &mut Particles<'_>, _t: Real, _rng: &mut R) {}
+    fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
+        self.synchronized(p, true)?;
+        self.counts.observations -= 1;
+        Ok(())
+    }
+    /// One candidate (module docs): `i` in proportion to `|c_i|`, `j` uniform among the
+    /// others, accepted with probability `|u| / (|c_i| + |c_j|)` (tested without a square
+    /// root); then a uniform direction, GRW (3), and the two `|c|` and their sum updated.
+    #[inline(always)]
+    fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, _t: Real, rng: &mut R) -> bool {
+        let mut trials = 0u32;
+        let i = loop {
+            let i = self.uniform(p, rng);
+            if uniform01(rng) * self.cmax < p.kick_time(i) {
+                break i;
+            }
+            trials += 1;
+            if trials == 1 << 24 {
+                // Every |c| is (nearly) 0 while the kept sum is not, by rounding: sum them
+                // anew (the rate then follows) and draw the next waiting time.
+                let vref = self.vref;
+                self.prepare(p, vref);
+                return true;
+            }
+        };
+        let j = loop {
+            let j = self.uniform(p, rng);
+            if j != i {
+                break j;
+            }
+        };
+        let (vi, vj) = (p.velocity(i), p.velocity(j));
+        let (ci, cj) = (p.kick_time(i), p.kick_time(j));
+        self.counts.candidates += 1;
+        let u = vi - vj;
+        let r = uniform01(rng) * (ci + cj);
+        if r * r >= u.norm2() {
+            self.counts.fictitious += 1;
+            return false;
+        }
+        let e = unit_sphere(rng);
+        let alpha = clamped_coefficient(&self.restitution, u, e, &mut self.counts);
+        let (a, b) = inelastic(vi, vj, e, alpha);
+        let (ca, cb) = (sqrt((a - self.vref).norm2()), sqrt((b - self.vref).norm2()));
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        p.get_mut(i).t_kick = ca;
+        p.get_mut(j).t_kick = cb;
+        self.sum += (ca + cb) - (ci + cj);
+        self.cmax = max(self.cmax, max(ca, cb));
+        self.counts.collisions += 1;
+        true
+    }
+}
