@@ -4,6 +4,8 @@ mod common;
 use common::*;
 use gdsmc_core::batch::kick::*;
 use gdsmc_core::batch::sums::*;
+use gdsmc_core::batch::sync::*;
+use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::rng::seeded;
 use gdsmc_core::sample::{Maxwellian, standard_normal};
@@ -53,6 +55,44 @@ fn simd_sums_equal_scalar_sums() {
             assert!(rel(x, y) < 1e-13, "n = {n}: {x} vs {y}");
         }
         assert!(rel(a.max_c2, b.max_c2) < 1e-13, "n = {n}");
+    }
+}
+
+#[test]
+fn simd_sync_sums_equal_scalar_and_the_observables() {
+    let mut rng = seeded(37);
+    // A drift far above the thermal speed: the sums about a nearby reference keep the digits.
+    let mx = Maxwellian::new(1.0, 2.0, Vec3::new(30.0, -20.0, 100.0)).unwrap();
+    for n in [1usize, 2, 3, 4, 5, 7, 8, 9, 63, 64, 65, 1001] {
+        let mut q: Vec<Particle> = (0..n)
+            .map(|_| Particle::new(mx.sample(&mut rng), 0.0))
+            .collect();
+        let vref = Vec3::new(30.1, -19.9, 100.05);
+        let a = sync_sums_simd(&q, vref);
+        let b = sync_sums_scalar(&q, vref);
+        assert_eq!(a.n, b.n);
+        for (x, y) in a.s1.iter().zip(&b.s1) {
+            assert!(
+                (x - y).abs() <= 1e-13 * (n as f64) * (1.0 + y.abs()),
+                "n = {n}: {x} vs {y}"
+            );
+        }
+        assert!(rel(a.s2, b.s2) < 1e-13, "n = {n}");
+        assert_eq!(a.max2, b.max2, "n = {n}: the same maximum");
+        if n < 2 {
+            continue;
+        }
+        let obs = Observables::of(&Particles::new(&mut q).unwrap());
+        let v = a.bulk(vref);
+        assert!((v - obs.bulk).norm() <= 1e-13 * obs.bulk.norm(), "n = {n}");
+        assert!(rel(a.t_bulk(3), obs.t_bulk) < 1e-10, "n = {n}");
+        // Umax = 2 max |v - vref| bounds every relative speed, as GRW step 1.4's about V.
+        let umax = 2.0 * a.max2.sqrt();
+        for x in &q {
+            for y in &q {
+                assert!((x.velocity() - y.velocity()).norm() <= umax, "n = {n}");
+            }
+        }
     }
 }
 

@@ -1,4 +1,5 @@
-//! SIMD batch kernels over all particles: the kick to an observation time and the moment sums.
+//! SIMD batch kernels over all particles: the kick to an observation time, the moment sums and
+//! the lighter sums of a synchronization within a run.
 //!
 //! Each kernel has a plain scalar twin; the `scalar` feature makes the dispatching functions use
 //! the twins (so CI tests both paths), and the tests compare the two with a fixed seed. SIMD is
@@ -6,3 +7,4 @@
 
 pub mod kick;
 pub mod sums;
+pub mod sync;

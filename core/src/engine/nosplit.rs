@@ -18,7 +18,10 @@
 //! between observations: with a drive, whenever more than half of the last `2n` (then `4n`, ...)
 //! candidates were fictitious, after kicking every particle to the current time as an
 //! observation does, so the process stays the same ([`Counts::refreshes`]); with no drive (every
-//! particle always current) every `2n` candidates.
+//! particle always current) every `2n` candidates, in one light pass
+//! ([`crate::batch::sync`]): `Umax = 2 max |v_i - V|` about the `V` of the last observation
+//! (the momentum is conserved, and any `V` gives a true bound), the temperature for the
+//! rescale test below, and the finiteness of the velocities.
 //!
 //! A gas with no drive cools for ever (the homogeneous cooling state). Its peculiar velocities,
 //! stored beside a bulk velocity `V`, would lose digits (and stop at a rounding floor near
@@ -34,9 +37,10 @@
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
 
-use super::event::{Collider, RefreshWindow, observables_dim};
+use super::event::{Collider, Majorant, RefreshWindow, observables_dim};
 use super::jumps::{Jumps, run_events};
 use super::{Counts, EngineError};
+use crate::batch::sync::{SyncSums, sync_sums};
 use crate::drive::Drive;
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
@@ -216,7 +220,7 @@ pub(crate) fn rescale(
     offset: &mut Vec3,
     d: usize,
 ) -> bool {
-    if !(obs.t_bulk > 0.0 && obs.t_bulk < below * max(1.0, obs.bulk.norm2())) {
+    if !rescale_due(obs.t_bulk, obs.bulk, below) {
         return false;
     }
     let s = 1.0 / sqrt(obs.t_bulk);
@@ -228,6 +232,29 @@ pub(crate) fn rescale(
     *scale /= s;
     *obs = Observables::of_dim(p, d);
     true
+}
+
+/// Whether a gas with no drive at temperature `t_bulk` about the bulk velocity `bulk` (stored
+/// units) is due to be stored rescaled: below `below` times `max(1, |V|^2)` (module docs).
+pub(crate) fn rescale_due(t_bulk: Real, bulk: Vec3, below: Real) -> bool {
+    t_bulk > 0.0 && t_bulk < below * max(1.0, bulk.norm2())
+}
+
+/// The bulk velocity and the temperature of a synchronization's light sums about `vref`, or
+/// the error naming the first that is not finite (as [`super::event::observables`] would).
+pub(crate) fn checked_sync(
+    sums: &SyncSums,
+    vref: Vec3,
+    d: usize,
+) -> Result<(Vec3, Real), EngineError> {
+    let (bulk, t_bulk) = (sums.bulk(vref), sums.t_bulk(d));
+    if !bulk.is_finite() {
+        return Err(EngineError::NonFinite("the bulk velocity V"));
+    }
+    if !(t_bulk.is_finite() && sums.max2.is_finite()) {
+        return Err(EngineError::NonFinite("T_bulk"));
+    }
+    Ok((bulk, t_bulk))
 }
 
 /// `<|v|^6>` of a gas stored rescaled about a bulk velocity cannot be rebuilt from the central
@@ -284,6 +311,22 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Jumps for NoSplitting<K, 
             .kick_all_counting(p, t, rng, &mut self.c.counts.background);
     }
     fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
+        if !D::ACTS {
+            let d = G::CHOICE.d();
+            let vref = self.c.maj.vref;
+            let sums = sync_sums(p.as_slice(), vref);
+            let (bulk, t_bulk) = checked_sync(&sums, vref, d)?;
+            if !rescale_due(t_bulk, bulk, self.rescale_below) {
+                // The light pass (batch::sync): `Umax = 2 max |v_i - vref|`, about the
+                // previous reference, a bound as exact as about the bulk itself. Kernels
+                // with no `Umax` keep the reference near the bulk for the next pass.
+                self.c.maj = Majorant::new(2.0 * sqrt(sums.max2), vref);
+                if !K::USES_UMAX {
+                    self.c.maj.vref = bulk;
+                }
+                return Ok(());
+            }
+        }
         self.synchronized(p)?;
         self.c.counts.observations -= 1;
         Ok(())

@@ -16,7 +16,8 @@
 //!
 //! A gas with no drive does not use its particles' `t_kick` slots (every particle is always
 //! current), so they hold `|c_i|` during a run (no memory beyond the particles); `sum |c|` is
-//! kept by the collisions and summed anew at every synchronization (every `2n` candidates),
+//! kept by the collisions and summed anew at every synchronization (every `2n` candidates, in
+//! one pass about the kept `V`, which also gives the temperature for the rescale test),
 //! `c_max` only grows between synchronizations and is made exact at them. The uniform indices
 //! are drawn [`AHEAD`] uses early and prefetched at large `n` (they do not depend on the
 //! state, so drawing them early changes nothing). Everything else is [`super::NoSplitting`]'s
@@ -25,9 +26,10 @@
 
 use super::event::{RefreshWindow, clamped_coefficient, observables};
 use super::jumps::{Jumps, run_events};
-use super::nosplit::{RESCALE_BELOW, rescale, with_raw_v6};
+use super::nosplit::{RESCALE_BELOW, checked_sync, rescale, rescale_due, with_raw_v6};
 use super::pairs::PREFETCH_FROM;
 use super::{Counts, EngineError};
+use crate::batch::sync::SyncSums;
 use crate::collision::inelastic;
 use crate::kernel::{HardSpheres, Kernel};
 use crate::math::{Real, max, sqrt};
@@ -111,17 +113,30 @@ impl<A: Restitution> SumNoSplitting<A> {
         (self.scale, self.offset)
     }
 
-    /// Stores `|c_k|` about `vref` in every `t_kick` slot and sums them; `c_max` exact. O(n).
-    fn prepare(&mut self, p: &mut Particles<'_>, vref: Vec3) {
+    /// Stores `|c_k|` about `vref` in every `t_kick` slot and sums them; `c_max` exact. One
+    /// pass, which also returns a synchronization's sums about `vref` ([`SyncSums`]).
+    fn prepare(&mut self, p: &mut Particles<'_>, vref: Vec3) -> SyncSums {
         self.vref = vref;
         let (mut sum, mut cmax) = (0.0, 0.0);
+        let mut sums = SyncSums {
+            n: p.len(),
+            ..SyncSums::default()
+        };
         for q in p.as_mut_slice() {
-            let c = sqrt((q.velocity() - vref).norm2());
-            q.t_kick = c;
-            sum += c;
-            cmax = max(cmax, c);
+            let c = q.velocity() - vref;
+            let c2 = c.norm2();
+            let cn = sqrt(c2);
+            q.t_kick = cn;
+            sum += cn;
+            cmax = max(cmax, cn);
+            sums.s1[0] += c.x;
+            sums.s1[1] += c.y;
+            sums.s1[2] += c.z;
+            sums.s2 += c2;
         }
+        sums.max2 = cmax * cmax;
         (self.sum, self.cmax, self.ready) = (sum, cmax, true);
+        sums
     }
 
     /// Runs to `t_end >= time()` and returns the observables there (every particle is always
@@ -258,9 +273,17 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
         &mut self.counts
     }
     fn kick_all<R: Rng + ?Sized>(&mut self, _p: &mut Particles<'_>, _t: Real, _rng: &mut R) {}
+    /// One pass about the kept reference (the bulk velocity does not move: collisions conserve
+    /// the momentum): the bounds and their sum anew, the finiteness and the cooling gas's
+    /// rescale test from the same pass; the full synchronization only when it rescales.
     fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
-        self.synchronized(p, true)?;
-        self.counts.observations -= 1;
+        let vref = self.vref;
+        let sums = self.prepare(p, vref);
+        let (bulk, t_bulk) = checked_sync(&sums, vref, 3)?;
+        if rescale_due(t_bulk, bulk, RESCALE_BELOW) {
+            self.synchronized(p, true)?;
+            self.counts.observations -= 1;
+        }
         Ok(())
     }
     /// One candidate (module docs): `i` in proportion to `|c_i|`, `j` uniform among the
