@@ -153,7 +153,7 @@ enum Bench {
     /// limits (random numbers per second, independent random reads per second).
     ///
     /// One line per case:
-    ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y> acceptance=<a> of_pair_limit=<f>
+    ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y> acceptance=<a> of_pair_limit=<f> of_rng=<g> [background_per_s=<b>]
     ///   case=<name> n=<n> particles_per_s=<x>
     #[command(verbatim_doc_comment)]
     Throughput {

@@ -8,7 +8,9 @@
 //! batch kernels and the limits. Each loop line ends with `of_pair_limit`, its candidates per
 //! second as a fraction of the machine's limit for that memory traffic at the same n
 //! (`case=limit-pair-update`: random pairs read and written, drawn ahead and prefetched at the
-//! best lookahead, in the run's huge-page buffer).
+//! best lookahead, in the run's huge-page buffer), and `of_rng`, the same as a fraction of the
+//! generator's raw rate (`case=limit-xoshiro256pp`); the host medium's line adds
+//! `background_per_s`, its grain-background collisions (BRS (26)), which are most of its work.
 
 use gdsmc_core::batch::{kick, sums};
 use gdsmc_core::drive::{
@@ -107,6 +109,17 @@ fn rough_loop<D: RoughDrive>(
 /// observation's O(n) cost then stays small), then for `budget`; (collisions per second,
 /// attempts per second) over the timed part.
 fn timed<E: EventLoop>(e: &mut E, p: &mut Particles<'_>, budget: Duration) -> (f64, f64) {
+    let (coll, att, _) = timed_with_background(e, p, budget);
+    (coll, att)
+}
+
+/// As [`timed`], with the drive's background events per second third (a host medium's
+/// grain-background collisions, BRS (26); 0 for other drives).
+fn timed_with_background<E: EventLoop>(
+    e: &mut E,
+    p: &mut Particles<'_>,
+    budget: Duration,
+) -> (f64, f64, f64) {
     let n = p.len();
     let mut rng = seeded(2);
     let mut dt = 1e-3;
@@ -130,6 +143,7 @@ fn timed<E: EventLoop>(e: &mut E, p: &mut Particles<'_>, budget: Duration) -> (f
     (
         (c.collisions - c0.collisions) as f64 / s,
         (c.candidates - c0.candidates) as f64 / s,
+        (c.background - c0.background) as f64 / s,
     )
 }
 
@@ -178,14 +192,38 @@ fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
     (k as f64 * per as f64) / start.elapsed().as_secs_f64()
 }
 
+/// The machine's limits a loop line is set against.
+#[derive(Clone, Copy, Debug)]
+struct Limits {
+    /// Random pairs read and written per second at this n ([`pair_limit`]).
+    pairs: f64,
+    /// Raw xoshiro256++ numbers per second ([`rng_limit`]).
+    numbers: f64,
+}
+
 /// One event-loop line: its collisions and candidates per second, the fraction of candidates
-/// that collide, and the candidates as a fraction of the pair-update limit.
-fn loop_line(case: &str, kernel: &str, n: usize, coll: f64, att: f64, limit: f64) -> String {
+/// that collide, and the candidates as a fraction of the pair-update limit and of the
+/// generator's raw rate (a candidate needs several numbers: the pair, the waiting time, the
+/// direction, the acceptance draw).
+fn loop_line(case: &str, kernel: &str, n: usize, coll: f64, att: f64, lim: Limits) -> String {
     format!(
-        "case={case} kernel={kernel} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} acceptance={:.3} of_pair_limit={:.3}",
+        "case={case} kernel={kernel} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} acceptance={:.3} of_pair_limit={:.3} of_rng={:.4}",
         coll / att,
-        att / limit
+        att / lim.pairs,
+        att / lim.numbers
     )
+}
+
+/// Raw xoshiro256++ numbers per second, one core.
+fn rng_limit(budget: Duration) -> f64 {
+    let mut rng = seeded(6);
+    rate(budget, 1 << 16, || {
+        let mut x = 0u64;
+        for _ in 0..1 << 16 {
+            x ^= rng.next_u64();
+        }
+        black_box(x);
+    })
 }
 
 /// One event-loop case: `(alpha, heated)` to (collisions, attempts) per second.
@@ -195,11 +233,16 @@ type LoopCase<'a> = dyn Fn(f64, bool) -> (f64, f64) + 'a;
 pub fn run(o: &Options, mut line: impl FnMut(String)) {
     let g = 4.0;
     let c = 1.0 / (4.0 * PI);
+    let numbers = rng_limit(o.budget);
+    line(format!(
+        "case=limit-xoshiro256pp numbers_per_s={numbers:.4e}"
+    ));
     for &n in &o.sizes {
-        let (limit, lookahead) = pair_limit(n, o.budget);
+        let (pairs, lookahead) = pair_limit(n, o.budget);
         line(format!(
-            "case=limit-pair-update n={n} pairs_per_s={limit:.4e} lookahead={lookahead}"
+            "case=limit-pair-update n={n} pairs_per_s={pairs:.4e} lookahead={lookahead}"
         ));
+        let limit = Limits { pairs, numbers };
         let kernels: [(&str, &LoopCase); 3] = [
             ("maxwell", &|a, heated| {
                 let k = Maxwell::new(g, c).expect("valid");
@@ -235,14 +278,23 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             HardSphereBackground,
         );
         let k = HardSpheres::new(1.0, 0.125).expect("valid");
-        let (coll, att) = event_loop(k, hm, 0.5, n, o.budget);
-        line(loop_line(
-            "nosplit-host-medium-alpha0.5",
-            "hard-spheres",
-            n,
-            coll,
-            att,
-            limit,
+        let (coll, att, bg) = {
+            let mut buf = system(n, 1);
+            let mut p = Particles::new(&mut buf).expect("n >= 2");
+            let law = Constant::new(0.5).expect("alpha in (0, 1]");
+            let (mut e, _) = NoSplitting::start(k, hm, law, &mut p, 0.0).expect("finite start");
+            timed_with_background(&mut e, &mut p, o.budget)
+        };
+        line(format!(
+            "{} background_per_s={bg:.4e}",
+            loop_line(
+                "nosplit-host-medium-alpha0.5",
+                "hard-spheres",
+                n,
+                coll,
+                att,
+                limit,
+            )
         ));
         // Hard spheres with no drive on the Umax majorant (GRW step 1.4), the loop before the
         // sum form: the comparison for the elastic hard-sphere line below.
@@ -310,16 +362,8 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
         });
         line(format!("case=moment-sums n={n} particles_per_s={r:.4e}"));
     }
-    // The machine's limits for the loops above.
+    // The machine's other limits for the loops above.
     let mut rng = seeded(6);
-    let r = rate(o.budget, 1 << 16, || {
-        let mut x = 0u64;
-        for _ in 0..1 << 16 {
-            x ^= rng.next_u64();
-        }
-        black_box(x);
-    });
-    line(format!("case=limit-xoshiro256pp numbers_per_s={r:.4e}"));
     let r = rate(o.budget, 1 << 16, || {
         let mut x = 0.0;
         for _ in 0..1 << 16 {
@@ -374,10 +418,14 @@ mod tests {
                     "collisions_per_s",
                     "attempts_per_s",
                     "acceptance",
-                    "of_pair_limit"
-                ],
+                    "of_pair_limit",
+                    "of_rng",
+                    "background_per_s"
+                ][..keys.len()],
                 "{l}"
             );
+            // Only the host medium's line counts background events.
+            assert_eq!(keys.len() == 9, l.contains("host-medium"), "{l}");
             let num = |k: &str| -> f64 {
                 l.split(' ')
                     .find_map(|kv| kv.strip_prefix(&format!("{k}=")))
@@ -387,6 +435,11 @@ mod tests {
             };
             assert!(num("attempts_per_s") >= num("collisions_per_s"));
             assert!(num("collisions_per_s") > 0.0);
+            assert!(num("of_rng") > 0.0);
+            if l.contains("host-medium") {
+                // BRS Example 4: about 16 background collisions per grain-grain one.
+                assert!(num("background_per_s") > num("collisions_per_s"), "{l}");
+            }
         }
         assert!(
             lines
