@@ -21,14 +21,15 @@
 use super::drive::RoughDrive;
 use super::map::RoughMap;
 use super::observables::RoughObservables;
+use crate::batch::sync::sync_sums;
 use crate::engine::event::{Majorant, RefreshWindow, admits, observables_dim};
 use crate::engine::jumps::{Jumps, run_events};
-use crate::engine::nosplit::RESCALE_BELOW;
+use crate::engine::nosplit::{RESCALE_BELOW, checked_sync, rescale_due};
 use crate::engine::pairs::PairsAhead;
 use crate::engine::{Counts, EngineError};
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
-use crate::math::{Real, max, sqrt};
+use crate::math::{Real, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::rng::Rng;
@@ -221,14 +222,8 @@ impl<K: Kernel, D: RoughDrive, G: Geometry> RoughNoSplitting<K, D, G> {
     fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
         let d = G::CHOICE.d();
         let mut obs = observables_dim(p, d)?;
-        if !p
-            .spins()
-            .iter()
-            .all(|s| s.rim_velocity().norm2().is_finite())
-        {
-            return Err(EngineError::NonFinite("a rim velocity"));
-        }
-        if !D::ACTS && obs.t_bulk > 0.0 && obs.t_bulk < RESCALE_BELOW * max(1.0, obs.bulk.norm2()) {
+        spins_finite(p)?;
+        if !D::ACTS && rescale_due(obs.t_bulk, obs.bulk, RESCALE_BELOW) {
             let s = 1.0 / sqrt(obs.t_bulk);
             for q in p.as_mut_slice() {
                 let v = q.velocity();
@@ -247,6 +242,18 @@ impl<K: Kernel, D: RoughDrive, G: Geometry> RoughNoSplitting<K, D, G> {
             self.maj = Majorant::new(2.0 * obs.max_peculiar_speed, obs.bulk);
         }
         Ok(obs.in_units_dim(self.scale, self.offset, d))
+    }
+}
+
+/// Every rim velocity finite, or the error naming them.
+fn spins_finite(p: &Particles<'_>) -> Result<(), EngineError> {
+    if p.spins()
+        .iter()
+        .all(|s| s.rim_velocity().norm2().is_finite())
+    {
+        Ok(())
+    } else {
+        Err(EngineError::NonFinite("a rim velocity"))
     }
 }
 
@@ -307,7 +314,24 @@ impl<K: Kernel, D: RoughDrive, G: Geometry> Jumps for RoughNoSplitting<K, D, G> 
     fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
         RoughNoSplitting::kick_all(self, p, t, rng);
     }
+    /// With no drive, one light pass as the smooth loop's
+    /// ([`crate::engine::NoSplitting`]'s module docs), and the spins' finiteness; the full
+    /// synchronization when the rescale is due or with a drive.
     fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
+        if !D::ACTS {
+            let d = G::CHOICE.d();
+            let vref = self.maj.vref;
+            let sums = sync_sums(p.as_slice(), vref);
+            let (bulk, t_bulk) = checked_sync(&sums, vref, d)?;
+            if !rescale_due(t_bulk, bulk, RESCALE_BELOW) {
+                spins_finite(p)?;
+                self.maj = Majorant::new(2.0 * sqrt(sums.max2), vref);
+                if !K::USES_UMAX {
+                    self.maj.vref = bulk;
+                }
+                return Ok(());
+            }
+        }
         self.synchronized(p)?;
         self.counts.observations -= 1;
         Ok(())
