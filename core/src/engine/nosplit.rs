@@ -240,6 +240,30 @@ pub(crate) fn rescale_due(t_bulk: Real, bulk: Vec3, below: Real) -> bool {
     t_bulk > 0.0 && t_bulk < below * max(1.0, bulk.norm2())
 }
 
+/// A gas with no drive re-synchronized within a run by the light pass ([`crate::batch::sync`]):
+/// `Umax = 2 max |v_i - vref|` about the majorant's reference (the last bulk velocity: the
+/// momentum is conserved, and the bound is as exact about any reference); kernels with no
+/// `Umax` move the reference to the bulk for the next pass. False, changing nothing, when the
+/// cooling gas's rescale is due (the caller then synchronizes in full).
+pub(crate) fn light_resync<K: Kernel>(
+    p: &Particles<'_>,
+    maj: &mut Majorant,
+    d: usize,
+    below: Real,
+) -> Result<bool, EngineError> {
+    let vref = maj.vref;
+    let sums = sync_sums(p.as_slice(), vref);
+    let (bulk, t_bulk) = checked_sync(&sums, vref, d)?;
+    if rescale_due(t_bulk, bulk, below) {
+        return Ok(false);
+    }
+    *maj = Majorant::new(2.0 * sqrt(sums.max2), vref);
+    if !K::USES_UMAX {
+        maj.vref = bulk;
+    }
+    Ok(true)
+}
+
 /// The bulk velocity and the temperature of a synchronization's light sums about `vref`, or
 /// the error naming the first that is not finite (as [`super::event::observables`] would).
 pub(crate) fn checked_sync(
@@ -311,21 +335,8 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Jumps for NoSplitting<K, 
             .kick_all_counting(p, t, rng, &mut self.c.counts.background);
     }
     fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
-        if !D::ACTS {
-            let d = G::CHOICE.d();
-            let vref = self.c.maj.vref;
-            let sums = sync_sums(p.as_slice(), vref);
-            let (bulk, t_bulk) = checked_sync(&sums, vref, d)?;
-            if !rescale_due(t_bulk, bulk, self.rescale_below) {
-                // The light pass (batch::sync): `Umax = 2 max |v_i - vref|`, about the
-                // previous reference, a bound as exact as about the bulk itself. Kernels
-                // with no `Umax` keep the reference near the bulk for the next pass.
-                self.c.maj = Majorant::new(2.0 * sqrt(sums.max2), vref);
-                if !K::USES_UMAX {
-                    self.c.maj.vref = bulk;
-                }
-                return Ok(());
-            }
+        if !D::ACTS && light_resync::<K>(p, &mut self.c.maj, G::CHOICE.d(), self.rescale_below)? {
+            return Ok(());
         }
         self.synchronized(p)?;
         self.c.counts.observations -= 1;

@@ -21,10 +21,9 @@
 use super::drive::RoughDrive;
 use super::map::RoughMap;
 use super::observables::RoughObservables;
-use crate::batch::sync::sync_sums;
 use crate::engine::event::{Majorant, RefreshWindow, admits, observables_dim};
 use crate::engine::jumps::{Jumps, run_events};
-use crate::engine::nosplit::{RESCALE_BELOW, checked_sync, rescale_due};
+use crate::engine::nosplit::{RESCALE_BELOW, light_resync, rescale_due};
 use crate::engine::pairs::PairsAhead;
 use crate::engine::{Counts, EngineError};
 use crate::geometry::{Geometry, Spheres};
@@ -318,19 +317,8 @@ impl<K: Kernel, D: RoughDrive, G: Geometry> Jumps for RoughNoSplitting<K, D, G> 
     /// ([`crate::engine::NoSplitting`]'s module docs), and the spins' finiteness; the full
     /// synchronization when the rescale is due or with a drive.
     fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
-        if !D::ACTS {
-            let d = G::CHOICE.d();
-            let vref = self.maj.vref;
-            let sums = sync_sums(p.as_slice(), vref);
-            let (bulk, t_bulk) = checked_sync(&sums, vref, d)?;
-            if !rescale_due(t_bulk, bulk, RESCALE_BELOW) {
-                spins_finite(p)?;
-                self.maj = Majorant::new(2.0 * sqrt(sums.max2), vref);
-                if !K::USES_UMAX {
-                    self.maj.vref = bulk;
-                }
-                return Ok(());
-            }
+        if !D::ACTS && light_resync::<K>(p, &mut self.maj, G::CHOICE.d(), RESCALE_BELOW)? {
+            return spins_finite(p);
         }
         self.synchronized(p)?;
         self.counts.observations -= 1;
