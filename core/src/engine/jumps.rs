@@ -41,6 +41,31 @@ pub(crate) trait Jumps {
     fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool;
 }
 
+/// The four accessors of [`Jumps`] every loop writes the same way, from the loop's time field,
+/// its [`RefreshWindow`] field and the place of its [`Counts`]:
+/// `jumps_state!(t, refresh, counts)` or `jumps_state!(t, refresh, c.counts)`.
+macro_rules! jumps_state {
+    ($t:ident, $window:ident, $($counts:ident).+) => {
+        #[inline(always)]
+        fn now(&self) -> $crate::math::Real {
+            self.$t
+        }
+        #[inline(always)]
+        fn set_now(&mut self, t: $crate::math::Real) {
+            self.$t = t;
+        }
+        #[inline(always)]
+        fn window(&mut self) -> &mut $crate::engine::event::RefreshWindow {
+            &mut self.$window
+        }
+        #[inline(always)]
+        fn tally(&mut self) -> &mut $crate::engine::Counts {
+            &mut self.$($counts).+
+        }
+    };
+}
+pub(crate) use jumps_state;
+
 /// Runs the events of `j` up to (not including) `t_end`, leaving its time at the last event
 /// (the caller then kicks every particle to `t_end` and observes). With no drive the majorant
 /// is made exact every `2n` candidates (a cooling gas is rescaled then); with a drive whenever

@@ -50,36 +50,58 @@ pub trait EventLoop {
     }
 }
 
+/// Implements [`EventLoop`] for a loop type `$ty` (generics `[$g]`) by forwarding every method
+/// to the inherent one of the same name on `$t`; methods in a trailing `{ ... }` are added
+/// (a rough gas's `rough`).
 macro_rules! impl_event_loop {
     ($t:ident, [$($g:tt)*], $ty:ty) => {
-        impl<K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution, $($g)*>
-            EventLoop for $ty
-        {
-            fn advance_to<R: Rng + ?Sized>(
+        $crate::engine::impl_event_loop!($t, [$($g)*], $ty, {});
+    };
+    ($t:ident, [$($g:tt)*], $ty:ty, { $($extra:tt)* }) => {
+        impl<$($g)*> $crate::engine::EventLoop for $ty {
+            $($extra)*
+            fn advance_to<R: $crate::rng::Rng + ?Sized>(
                 &mut self,
-                p: &mut Particles<'_>,
-                t_end: Real,
+                p: &mut $crate::particles::Particles<'_>,
+                t_end: $crate::math::Real,
                 rng: &mut R,
-            ) -> Result<Observables, EngineError> {
+            ) -> Result<$crate::moments::Observables, $crate::engine::EngineError> {
                 $t::advance_to(self, p, t_end, rng)
             }
-            fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+            fn resync(
+                &mut self,
+                p: &mut $crate::particles::Particles<'_>,
+            ) -> Result<$crate::moments::Observables, $crate::engine::EngineError> {
                 $t::resync(self, p)
             }
-            fn time(&self) -> Real {
+            fn time(&self) -> $crate::math::Real {
                 $t::time(self)
             }
-            fn counts(&self) -> Counts {
+            fn counts(&self) -> $crate::engine::Counts {
                 $t::counts(self)
             }
-            fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
+            fn velocity_map(&self) -> ($crate::math::Real, $crate::vec3::Vec3) {
                 $t::velocity_map(self)
             }
         }
     };
 }
-impl_event_loop!(NoSplitting, [G: crate::geometry::Geometry], NoSplitting<K, D, A, G>);
-impl_event_loop!(Splitting, [], Splitting<K, D, A>);
+pub(crate) use impl_event_loop;
+impl_event_loop!(
+    NoSplitting,
+    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution, G: crate::geometry::Geometry],
+    NoSplitting<K, D, A, G>
+);
+impl_event_loop!(
+    Splitting,
+    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution],
+    Splitting<K, D, A>
+);
+impl_event_loop!(
+    SumNoSplitting,
+    [A: crate::restitution::Restitution],
+    SumNoSplitting<A>
+);
 
 impl<D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop for TimeStepped<D, A> {
     fn advance_to<R: Rng + ?Sized>(

@@ -38,7 +38,7 @@
 //! collisions, and none of that bookkeeping is compiled in.
 
 use super::event::{Collider, Majorant, RefreshWindow, observables_dim};
-use super::jumps::{Jumps, run_events};
+use super::jumps::{Jumps, jumps_state, run_events};
 use super::{Counts, EngineError};
 use crate::batch::sync::{SyncSums, sync_sums};
 use crate::drive::Drive;
@@ -313,22 +313,7 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Jumps for NoSplitting<K, 
     fn bound(&self) -> Real {
         self.scale * self.c.maj.umax
     }
-    #[inline(always)]
-    fn now(&self) -> Real {
-        self.t
-    }
-    #[inline(always)]
-    fn set_now(&mut self, t: Real) {
-        self.t = t;
-    }
-    #[inline(always)]
-    fn window(&mut self) -> &mut RefreshWindow {
-        &mut self.refresh
-    }
-    #[inline(always)]
-    fn tally(&mut self) -> &mut Counts {
-        &mut self.c.counts
-    }
+    jumps_state!(t, refresh, c.counts);
     fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
         self.c
             .drive

@@ -25,7 +25,7 @@
 //! ([`super::nosplit::RESCALE_BELOW`]), the observables.
 
 use super::event::{RefreshWindow, clamped_coefficient, observables};
-use super::jumps::{Jumps, run_events};
+use super::jumps::{Jumps, jumps_state, run_events};
 use super::nosplit::{RESCALE_BELOW, checked_sync, rescale, rescale_due, with_raw_v6};
 use super::pairs::PREFETCH_FROM;
 use super::{Counts, EngineError};
@@ -220,29 +220,6 @@ impl<A: Restitution> SumNoSplitting<A> {
     }
 }
 
-impl<A: Restitution> super::EventLoop for SumNoSplitting<A> {
-    fn advance_to<R: Rng + ?Sized>(
-        &mut self,
-        p: &mut Particles<'_>,
-        t_end: Real,
-        rng: &mut R,
-    ) -> Result<Observables, EngineError> {
-        SumNoSplitting::advance_to(self, p, t_end, rng)
-    }
-    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        SumNoSplitting::resync(self, p)
-    }
-    fn time(&self) -> Real {
-        self.t
-    }
-    fn counts(&self) -> Counts {
-        self.counts
-    }
-    fn velocity_map(&self) -> (Real, Vec3) {
-        (self.scale, self.offset)
-    }
-}
-
 impl<A: Restitution> Jumps for SumNoSplitting<A> {
     const ACTS: bool = false;
     const USES_UMAX: bool = true;
@@ -256,22 +233,7 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
     fn bound(&self) -> Real {
         self.scale * self.sum
     }
-    #[inline(always)]
-    fn now(&self) -> Real {
-        self.t
-    }
-    #[inline(always)]
-    fn set_now(&mut self, t: Real) {
-        self.t = t;
-    }
-    #[inline(always)]
-    fn window(&mut self) -> &mut RefreshWindow {
-        &mut self.refresh
-    }
-    #[inline(always)]
-    fn tally(&mut self) -> &mut Counts {
-        &mut self.counts
-    }
+    jumps_state!(t, refresh, counts);
     fn kick_all<R: Rng + ?Sized>(&mut self, _p: &mut Particles<'_>, _t: Real, _rng: &mut R) {}
     /// One pass about the kept reference (the bulk velocity does not move: collisions conserve
     /// the momentum): the bounds and their sum anew, the finiteness and the cooling gas's

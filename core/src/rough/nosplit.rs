@@ -22,7 +22,7 @@ use super::drive::RoughDrive;
 use super::map::RoughMap;
 use super::observables::RoughObservables;
 use crate::engine::event::{Majorant, RefreshWindow, admits, observables_dim};
-use crate::engine::jumps::{Jumps, run_events};
+use crate::engine::jumps::{Jumps, jumps_state, run_events};
 use crate::engine::nosplit::{RESCALE_BELOW, light_resync, rescale_due};
 use crate::engine::pairs::PairsAhead;
 use crate::engine::{Counts, EngineError};
@@ -256,31 +256,16 @@ fn spins_finite(p: &Particles<'_>) -> Result<(), EngineError> {
     }
 }
 
-impl<K: Kernel, D: RoughDrive, G: Geometry> crate::engine::EventLoop for RoughNoSplitting<K, D, G> {
-    fn advance_to<R: Rng + ?Sized>(
-        &mut self,
-        p: &mut Particles<'_>,
-        t_end: Real,
-        rng: &mut R,
-    ) -> Result<Observables, EngineError> {
-        RoughNoSplitting::advance_to(self, p, t_end, rng)
+crate::engine::impl_event_loop!(
+    RoughNoSplitting,
+    [K: Kernel, D: RoughDrive, G: Geometry],
+    RoughNoSplitting<K, D, G>,
+    {
+        fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
+            Some(RoughNoSplitting::rough(self, p))
+        }
     }
-    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        RoughNoSplitting::resync(self, p)
-    }
-    fn time(&self) -> Real {
-        self.t
-    }
-    fn counts(&self) -> Counts {
-        self.counts
-    }
-    fn velocity_map(&self) -> (Real, Vec3) {
-        (self.scale, self.offset)
-    }
-    fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
-        Some(RoughNoSplitting::rough(self, p))
-    }
-}
+);
 
 impl<K: Kernel, D: RoughDrive, G: Geometry> Jumps for RoughNoSplitting<K, D, G> {
     const ACTS: bool = D::ACTS;
@@ -294,22 +279,7 @@ impl<K: Kernel, D: RoughDrive, G: Geometry> Jumps for RoughNoSplitting<K, D, G> 
     fn bound(&self) -> Real {
         self.scale * self.maj.umax
     }
-    #[inline(always)]
-    fn now(&self) -> Real {
-        self.t
-    }
-    #[inline(always)]
-    fn set_now(&mut self, t: Real) {
-        self.t = t;
-    }
-    #[inline(always)]
-    fn window(&mut self) -> &mut RefreshWindow {
-        &mut self.refresh
-    }
-    #[inline(always)]
-    fn tally(&mut self) -> &mut Counts {
-        &mut self.counts
-    }
+    jumps_state!(t, refresh, counts);
     fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
         RoughNoSplitting::kick_all(self, p, t, rng);
     }
