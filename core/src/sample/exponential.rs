@@ -9,6 +9,7 @@
 //! assert!(standard_exponential(&mut rng) >= 0.0);
 //! ```
 
+use super::squeeze::{Shape, Wedge};
 use super::ziggurat_tables::{EXP_F, EXP_R, EXP_X};
 use crate::math::{Real, exp, ln, one_to_two};
 use crate::rng::{Rng, uniform_open01, uniform01};
@@ -38,7 +39,22 @@ fn exponential_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, x: Real) -> Rea
             return EXP_R - ln(uniform_open01(rng));
         }
         let y = EXP_F[i + 1] + (EXP_F[i] - EXP_F[i + 1]) * uniform01(rng);
-        if y < exp(-x) {
+        // exp(-x) is convex: squeezed between its tangents and its chord.
+        let (a, b, fa, fb) = (EXP_X[i + 1], EXP_X[i], EXP_F[i + 1], EXP_F[i]);
+        let w = Wedge {
+            a,
+            b,
+            fa,
+            fb,
+            da: -fa,
+            db: -fb,
+            shape: Shape::Convex,
+        };
+        let inside = match w.decide(x, y) {
+            Some(d) => d,
+            None => y < exp(-x),
+        };
+        if inside {
             return x;
         }
         let bits = rng.next_u64();

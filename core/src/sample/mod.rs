@@ -11,6 +11,7 @@ pub mod mixture;
 pub mod normal;
 pub mod partner;
 pub mod sphere;
+mod squeeze;
 #[allow(missing_docs)]
 pub mod ziggurat_tables;
 

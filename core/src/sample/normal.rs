@@ -1,7 +1,8 @@
 //! The standard normal distribution, density `exp(-x^2/2) / sqrt(2 pi)`, by the ziggurat method
 //! of Marsaglia and Tsang (2000) with 256 layers: one 64-bit draw and one table comparison in
-//! about 98.8% of cases; the wedges are resolved by exact rejection and the tail beyond
-//! `R = 3.654...` by Marsaglia's exact tail method. Used for the white-noise kicks GRW (18).
+//! about 98.8% of cases; the wedges are resolved by exact rejection (squeezed: `exp` only near
+//! the wedge's bounds, [`super::squeeze`]) and the tail beyond `R = 3.654...` by Marsaglia's
+//! exact tail method. Used for the white-noise kicks GRW (18).
 //!
 //! ```
 //! use gdsmc_core::{rng::seeded, sample::standard_normal};
@@ -10,6 +11,7 @@
 //! assert!(x.is_finite());
 //! ```
 
+use super::squeeze::{Shape, Wedge};
 use super::ziggurat_tables::{NORM_F, NORM_R, NORM_X};
 use crate::math::{Real, abs, exp, ln, one_to_two};
 use crate::rng::{Rng, uniform_open01, uniform01};
@@ -43,7 +45,11 @@ fn normal_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, u: Real, x: Real) ->
             return tail(rng, u < 0.0);
         }
         let y = NORM_F[i + 1] + (NORM_F[i] - NORM_F[i + 1]) * uniform01(rng);
-        if y < exp(-0.5 * x * x) {
+        let inside = match wedge(i).and_then(|w| w.decide(abs(x), y)) {
+            Some(d) => d,
+            None => y < exp(-0.5 * x * x),
+        };
+        if inside {
             return x;
         }
         let bits = rng.next_u64();
@@ -54,6 +60,29 @@ fn normal_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, u: Real, x: Real) ->
             return x;
         }
     }
+}
+
+/// Layer `i >= 1`'s wedge `|x| in [x_{i+1}, x_i]` of `exp(-x^2/2)` ([`Wedge`]): convex beyond
+/// `|x| = 1`, concave inside it; `None` for the one layer that straddles 1.
+#[inline(always)]
+fn wedge(i: usize) -> Option<Wedge> {
+    let (a, b, fa, fb) = (NORM_X[i + 1], NORM_X[i], NORM_F[i + 1], NORM_F[i]);
+    let shape = if a >= 1.0 {
+        Shape::Convex
+    } else if b <= 1.0 {
+        Shape::Concave
+    } else {
+        return None;
+    };
+    Some(Wedge {
+        a,
+        b,
+        fa,
+        fb,
+        da: -a * fa,
+        db: -b * fb,
+        shape,
+    })
 }
 
 /// The normal tail beyond `R` (Marsaglia 1964): exact.
