@@ -229,6 +229,17 @@ impl Kernel for Vhs {
             1.0
         }
     }
+    /// `r < (|u| / Umax)^lambda`; for `lambda = 1/2` (GRW Example 8's VHS) as
+    /// `(r^2 Umax)^2 < |u|^2`, with no power and no square root (both sides non-negative; an
+    /// overshoot `|u| > Umax` is accepted for every `r < 1`, as `min(1, .)` does).
+    #[inline(always)]
+    fn accepts(&self, u2: Real, umax: Real, r: Real) -> bool {
+        if self.lambda == 0.5 {
+            let ru = r * r * umax;
+            return ru * ru < u2;
+        }
+        r < self.acceptance(sqrt(u2), umax)
+    }
     #[inline(always)]
     fn pair_rate(&self, urel: Real) -> Real {
         4.0 * PI * self.strength * powf(urel, self.lambda)
