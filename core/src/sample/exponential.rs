@@ -28,6 +28,22 @@ pub fn standard_exponential<R: Rng + ?Sized>(rng: &mut R) -> Real {
     exponential_rejection(rng, i, x)
 }
 
+/// Layer `i >= 1`'s wedge `x in [x_{i+1}, x_i]` of `exp(-x)` ([`Wedge`]): convex, so squeezed
+/// between its tangents and its chord.
+#[inline(always)]
+pub(super) fn wedge(i: usize) -> Wedge {
+    let (a, b, fa, fb) = (EXP_X[i + 1], EXP_X[i], EXP_F[i + 1], EXP_F[i]);
+    Wedge {
+        a,
+        b,
+        fa,
+        fb,
+        da: -fa,
+        db: -fb,
+        shape: Shape::Convex,
+    }
+}
+
 /// The rejection path from a draw `(i, x)` outside its layer's rectangle: the tail of the base
 /// strip, or the wedge test, then fresh draws as [`standard_exponential`] makes them.
 #[cold]
@@ -39,18 +55,7 @@ fn exponential_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, x: Real) -> Rea
             return EXP_R - ln(uniform_open01(rng));
         }
         let y = EXP_F[i + 1] + (EXP_F[i] - EXP_F[i + 1]) * uniform01(rng);
-        // exp(-x) is convex: squeezed between its tangents and its chord.
-        let (a, b, fa, fb) = (EXP_X[i + 1], EXP_X[i], EXP_F[i + 1], EXP_F[i]);
-        let w = Wedge {
-            a,
-            b,
-            fa,
-            fb,
-            da: -fa,
-            db: -fb,
-            shape: Shape::Convex,
-        };
-        let inside = match w.decide(x, y) {
+        let inside = match wedge(i).decide(x, y) {
             Some(d) => d,
             None => y < exp(-x),
         };

@@ -65,7 +65,7 @@ fn normal_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, u: Real, x: Real) ->
 /// Layer `i >= 1`'s wedge `|x| in [x_{i+1}, x_i]` of `exp(-x^2/2)` ([`Wedge`]): convex beyond
 /// `|x| = 1`, concave inside it; `None` for the one layer that straddles 1.
 #[inline(always)]
-fn wedge(i: usize) -> Option<Wedge> {
+pub(super) fn wedge(i: usize) -> Option<Wedge> {
     let (a, b, fa, fb) = (NORM_X[i + 1], NORM_X[i], NORM_F[i + 1], NORM_F[i]);
     let shape = if a >= 1.0 {
         Shape::Convex

@@ -67,7 +67,6 @@ mod tests {
     //! draw for draw from the same seeds, and the squeeze's decisions against `exp` at points
     //! crowded near every wedge's bounds.
     use super::super::ziggurat_tables::{EXP_F, EXP_R, EXP_X, NORM_F, NORM_R, NORM_X};
-    use super::{Shape, Wedge};
     use crate::math::{Real, abs, exp, ln, one_to_two};
     use crate::rng::{Rng, seeded, uniform_open01, uniform01};
     use crate::sample::{standard_exponential, standard_normal};
@@ -143,34 +142,17 @@ mod tests {
             .map(|i| (true, i))
             .chain((1..256).map(|i| (false, i)))
         {
-            let (xs, fs) = if normal {
-                (&NORM_X, &NORM_F)
-            } else {
-                (&EXP_X, &EXP_F)
-            };
-            let (a, b, fa, fb) = (xs[i + 1], xs[i], fs[i + 1], fs[i]);
             let f = |x: Real| if normal { exp(-0.5 * x * x) } else { exp(-x) };
-            let (da, db) = if normal {
-                (-a * fa, -b * fb)
+            // The samplers' own wedges (`None`: the normal layer that straddles 1).
+            let w = if normal {
+                match super::super::normal::wedge(i) {
+                    Some(w) => w,
+                    None => continue,
+                }
             } else {
-                (-fa, -fb)
+                super::super::exponential::wedge(i)
             };
-            let shape = if !normal || a >= 1.0 {
-                Shape::Convex
-            } else if b <= 1.0 {
-                Shape::Concave
-            } else {
-                continue;
-            };
-            let w = Wedge {
-                a,
-                b,
-                fa,
-                fb,
-                da,
-                db,
-                shape,
-            };
+            let (a, b, fa, fb, da, db) = (w.a, w.b, w.fa, w.fb, w.da, w.db);
             for k in 0..=64 {
                 let x = a + (b - a) * (k as Real / 64.0);
                 let chord = fa + (fb - fa) * ((x - a) / (b - a));
