@@ -111,6 +111,9 @@ typedef enum {
     GDSMC_PANIC = 9,
     // Memory for the particles could not be allocated (gdsmc_sim_create).
     GDSMC_OUT_OF_MEMORY = 10,
+    // gdsmc_sim_advance would take more work (candidate events, background events, particle
+    // updates) than the simulation's limit (gdsmc_sim_set_work_limit); nothing was run.
+    GDSMC_TOO_MUCH_WORK = 11,
 } gdsmc_status;
 
 // A simulation: `n` particles, its engine, generator and current time. Opaque to C.
@@ -302,7 +305,11 @@ const char *gdsmc_version(void);
 
 // Runs the simulation to time `t` (>= its current time), kicks every particle there and, if
 // `out` is not NULL, writes the observables at `t` to `*out`. GDSMC_TIME_BACKWARDS for an
-// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed.
+// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed, GDSMC_TOO_MUCH_WORK
+// (nothing run, the state unchanged) when the work the current state asks for up to `t` (its
+// event rate times `t` minus the current time; see gdsmc_sim_set_work_limit) is above the
+// simulation's limit: a time or velocities far beyond what the call was meant for. The rate
+// is today's: a heated gas's grows during the call.
 //
 // # Safety
 // `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
@@ -367,6 +374,16 @@ gdsmc_status gdsmc_sim_set_velocities(gdsmc_sim *sim, const double *velocities, 
 // # Safety
 // `sim` must be NULL or a handle from gdsmc.
 gdsmc_status gdsmc_sim_reseed(gdsmc_sim *sim, uint64_t seed);
+
+// Sets the most work one gdsmc_sim_advance may ask for: events of the collision majorant,
+// background events of a host medium and particle updates of stepped schemes, estimated from
+// the current state before the call runs (default 1e12, about a day of one core on a desktop;
+// a microcontroller may want far less). `limit` must be positive (INFINITY: no limit);
+// GDSMC_INVALID_ARGUMENT otherwise.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc.
+gdsmc_status gdsmc_sim_set_work_limit(gdsmc_sim *sim, double limit);
 
 // Fills `*out` with the defaults: GRW Example 3 (Maxwell kernel, gamma = 4, C = 1/(4 pi),
 // alpha = 1/2, white noise beta = 1, standard Maxwellian start, no splitting) with n = 1024,

@@ -7,13 +7,17 @@ use crate::observables::{
 };
 use crate::sim::{check_len, gdsmc_sim, live, particles_of};
 use crate::status::{engine_error, fail, gdsmc_status, msg};
-use gdsmc_core::engine::EventLoop;
+use gdsmc_core::engine::{EventLoop, work_to};
 use gdsmc_core::rng::seeded;
 use gdsmc_core::vec3::Vec3;
 
 /// Runs the simulation to time `t` (>= its current time), kicks every particle there and, if
 /// `out` is not NULL, writes the observables at `t` to `*out`. GDSMC_TIME_BACKWARDS for an
-/// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed.
+/// earlier (or non-finite) `t`, GDSMC_NON_FINITE if the state overflowed, GDSMC_TOO_MUCH_WORK
+/// (nothing run, the state unchanged) when the work the current state asks for up to `t` (its
+/// event rate times `t` minus the current time; see gdsmc_sim_set_work_limit) is above the
+/// simulation's limit: a time or velocities far beyond what the call was meant for. The rate
+/// is today's: a heated gas's grows during the call.
 ///
 /// # Safety
 /// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one gdsmc_observables.
@@ -27,6 +31,20 @@ pub unsafe extern "C" fn gdsmc_sim_advance(
         let s = live(sim)?;
         if !out.is_null() {
             check_ptr(out, "out")?;
+        }
+        if t.is_finite() && t > s.engine.time() {
+            let work = work_to(&s.engine, s.n, t);
+            if work > s.work_limit {
+                return fail(
+                    gdsmc_status::GDSMC_TOO_MUCH_WORK,
+                    msg!(
+                        "advancing from t = {} to t = {t} asks for about {work:.1e} events and particle updates ({:.1e} per unit time now), above the limit {:.1e}; advance to an earlier time, check the velocities, or raise the limit with gdsmc_sim_set_work_limit",
+                        s.engine.time(),
+                        s.engine.work_rate(s.n),
+                        s.work_limit
+                    ),
+                );
+            }
         }
         let mut rng = s.rng.clone();
         let mut p = particles_of(s);
@@ -276,6 +294,29 @@ pub unsafe extern "C" fn gdsmc_sim_reseed(sim: *mut gdsmc_sim, seed: u64) -> gds
     guard(|| {
         let s = live(sim)?;
         s.rng = seeded(seed);
+        Ok(())
+    })
+}
+
+/// Sets the most work one gdsmc_sim_advance may ask for: events of the collision majorant,
+/// background events of a host medium and particle updates of stepped schemes, estimated from
+/// the current state before the call runs (default 1e12, about a day of one core on a desktop;
+/// a microcontroller may want far less). `limit` must be positive (INFINITY: no limit);
+/// GDSMC_INVALID_ARGUMENT otherwise.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_set_work_limit(sim: *mut gdsmc_sim, limit: f64) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        if limit.is_nan() || limit <= 0.0 {
+            return fail(
+                gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                msg!("work limit {limit}: must be positive (INFINITY for none)"),
+            );
+        }
+        s.work_limit = limit;
         Ok(())
     })
 }

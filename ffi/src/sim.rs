@@ -30,6 +30,8 @@ pub struct gdsmc_sim {
     pub(crate) engine: Engine,
     pub(crate) rng: Xoshiro256PlusPlus,
     pub(crate) last: Observables,
+    /// The most work units one gdsmc_sim_advance may ask for (gdsmc_sim_set_work_limit).
+    pub(crate) work_limit: f64,
 }
 
 // A rough gas's spins live in the records after its particles: the same size and alignment.
@@ -107,6 +109,7 @@ pub(crate) fn build(
         engine,
         rng,
         last,
+        work_limit: gdsmc_core::engine::WORK_LIMIT,
     })
 }
 

@@ -31,6 +31,9 @@ pub enum gdsmc_status {
     GDSMC_PANIC = 9,
     /// Memory for the particles could not be allocated (gdsmc_sim_create).
     GDSMC_OUT_OF_MEMORY = 10,
+    /// gdsmc_sim_advance would take more work (candidate events, background events, particle
+    /// updates) than the simulation's limit (gdsmc_sim_set_work_limit); nothing was run.
+    GDSMC_TOO_MUCH_WORK = 11,
 }
 
 /// Most bytes a message keeps (longer ones are cut at a character boundary).

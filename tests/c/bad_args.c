@@ -328,11 +328,53 @@ static void rough_particles(void) {
     free(mem);
 }
 
+/* Work far beyond what a call can mean is refused before anything runs, the state unchanged:
+ * the C ABI's caller gets no endless call (the fuzzer once set one velocity of a hard-sphere
+ * gas to 4.7e18, and an advance by 0.01 then asked for about 1e17 events). */
+static void work_limit(void) {
+    gdsmc_config c = base();
+    c.kernel = GDSMC_KERNEL_HARD_SPHERES;
+    c.drive = GDSMC_DRIVE_NONE;
+    gdsmc_sim *sim = NULL;
+    gdsmc_observables o;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 0.5, &o), GDSMC_OK, "");
+    double v[3 * 64], u[3 * 64], w[3 * 64];
+    STATUS(gdsmc_sim_get_velocities(sim, v, 3 * 64), GDSMC_OK, "");
+
+    /* A time 1e15 ahead: about 1e17 candidates at this gas's rate. */
+    STATUS(gdsmc_sim_advance(sim, 1e15, &o), GDSMC_TOO_MUCH_WORK, "gdsmc_sim_set_work_limit");
+    gdsmc_sim_get_velocities(sim, u, 3 * 64);
+    EXPECT(memcmp(u, v, sizeof v) == 0, "a refused advance changed the velocities");
+    STATUS(gdsmc_sim_observables(sim, &o), GDSMC_OK, "");
+    EXPECT(o.t == 0.5, "a refused advance moved the time to %g", o.t);
+
+    /* One velocity of 1e30 (its moments stay finite): a step of 0.01 is refused. */
+    memcpy(w, v, sizeof v);
+    w[5] = 1e30;
+    STATUS(gdsmc_sim_set_velocities(sim, w, 3 * 64), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 0.51, &o), GDSMC_TOO_MUCH_WORK, "per unit time now");
+    STATUS(gdsmc_sim_set_velocities(sim, v, 3 * 64), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 0.51, &o), GDSMC_OK, "");
+
+    /* The limit is the caller's: positive (INFINITY for none). */
+    STATUS(gdsmc_sim_set_work_limit(sim, 0.0), GDSMC_INVALID_ARGUMENT, "must be positive");
+    STATUS(gdsmc_sim_set_work_limit(sim, NAN), GDSMC_INVALID_ARGUMENT, "must be positive");
+    STATUS(gdsmc_sim_set_work_limit(NULL, 1.0), GDSMC_NULL_POINTER, "`sim` is NULL");
+    STATUS(gdsmc_sim_set_work_limit(sim, 1.0), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 1.0, &o), GDSMC_TOO_MUCH_WORK, "above the limit 1.0e0");
+    STATUS(gdsmc_sim_set_work_limit(sim, INFINITY), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 1.0, &o), GDSMC_OK, "");
+    EXPECT(o.t == 1.0 && o.collisions > 0, "advance after the limit was lifted: t=%g", o.t);
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+}
+
 int main(void) {
     printf("gdsmc %s C ABI checks\n", gdsmc_version());
     config_errors();
     toml_errors();
     handle_errors();
+    work_limit();
     allocation_free();
     schemes_and_host_medium();
     time_stepped_and_impact_law();

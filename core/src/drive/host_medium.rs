@@ -38,6 +38,11 @@ pub trait BackgroundKernel: Copy {
         dt: Real,
         rng: &mut R,
     ) -> Option<(Vec3, Real)>;
+
+    /// The candidate rate of background events of a grain at distance `a` from the
+    /// background's drift velocity, `|v - u^B| = a` (the majorant [`BackgroundKernel::next`]
+    /// draws its waiting times from).
+    fn rate_bound(&self, m: &HostMediumParams, a: Real) -> Real;
 }
 
 /// The background Maxwellian and the constants derived from it.
@@ -101,13 +106,19 @@ impl BackgroundKernel for MaxwellBackground {
         dt: Real,
         rng: &mut R,
     ) -> Option<(Vec3, Real)> {
-        let tau = standard_exponential(rng) / (4.0 * PI * m.c1 * m.density);
+        let tau = standard_exponential(rng) / self.rate_bound(m, 0.0);
         if tau >= dt {
             return None;
         }
         let w = m.background.sample(rng);
         let omega = unit_sphere(rng);
         Some((elastic_background(v, w, omega, m.ratio).0, tau))
+    }
+
+    /// `4 pi C_1 rho^B`, whatever the grain's speed.
+    #[inline]
+    fn rate_bound(&self, m: &HostMediumParams, _a: Real) -> Real {
+        4.0 * PI * m.c1 * m.density
     }
 }
 
@@ -127,7 +138,7 @@ impl BackgroundKernel for HardSphereBackground {
         let ub = m.background.drift();
         let b = m.partner.b();
         let a = (v - ub).norm();
-        let bound = m.c1 * m.density * (4.0 * PI * a + 8.0 * sqrt(PI) * b);
+        let bound = self.rate_bound(m, a);
         let mut used = 0.0;
         loop {
             used += standard_exponential(rng) / bound;
@@ -145,6 +156,12 @@ impl BackgroundKernel for HardSphereBackground {
                 return Some((elastic_background(v, w, omega, m.ratio).0, used));
             }
         }
+    }
+
+    /// BRS (28): `C_1 rho^B (4 pi a + 8 sqrt(pi) b)` with the partner scale `b`.
+    #[inline]
+    fn rate_bound(&self, m: &HostMediumParams, a: Real) -> Real {
+        m.c1 * m.density * (4.0 * PI * a + 8.0 * sqrt(PI) * m.partner.b())
     }
 }
 
@@ -166,6 +183,13 @@ impl<B: BackgroundKernel> HostMedium<B> {
 impl<B: BackgroundKernel> Drive for HostMedium<B> {
     const ACTS: bool = true;
     const COUNTS_EVENTS: bool = true;
+
+    /// The background majorant at the farthest a grain of speed `speed` can be from the drift.
+    #[inline]
+    fn event_rate(&self, speed: Real) -> Real {
+        let a = speed + self.params.background.drift().norm();
+        self.kernel.rate_bound(&self.params, a)
+    }
 
     #[inline]
     fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3 {

@@ -34,6 +34,14 @@ pub trait Drive: Copy {
     /// host medium's background collisions); false: every kick counts nothing.
     const COUNTS_EVENTS: bool = false;
 
+    /// Events per unit time the drive costs one grain whose speed is at most `speed`: a host
+    /// medium's background majorant (BRS (28)); 0 (the default) for a drive in closed form. For
+    /// [`crate::engine::EventLoop::work_rate`].
+    #[inline(always)]
+    fn event_rate(&self, _speed: Real) -> Real {
+        0.0
+    }
+
     /// The velocity after the drive acted on `v` for a time `dt >= 0`.
     fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3;
 

@@ -97,6 +97,14 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Collider<K, D, A, G> {
         self.kernel.majorant_rate(n, scale * self.maj.umax)
     }
 
+    /// [`crate::engine::EventLoop::work_rate`] of a loop on this collider: the majorant's
+    /// candidates ([`Collider::rate`]) and `n` times the drive's events per grain at the
+    /// largest speed the majorant allows, `|V| + Umax / 2` (physical: `offset + scale V`).
+    pub fn work_rate(&self, n: usize, scale: Real, offset: Vec3) -> Real {
+        let speed = (offset + scale * self.maj.vref).norm() + 0.5 * scale * self.maj.umax;
+        self.rate(n, scale) + n as Real * self.drive.event_rate(speed)
+    }
+
     /// Processes the candidate pair `(i, j)` whose partners are already at the event time: the
     /// fictitious-collision test against the majorant that generated the event (GRW (20)),
     /// else a scattering direction (uniform on the sphere; [`Geometry::scattering`]) and GRW (3); the majorant covers the new velocities (and the

@@ -115,6 +115,11 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
         self.t
     }
 
+    /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]).
+    pub fn work_rate(&self, n: usize) -> Real {
+        self.c.work_rate(n, self.scale, self.offset)
+    }
+
     /// Current majorant of the relative speed (0 for kernels that need none).
     pub fn umax(&self) -> Real {
         self.c.maj.umax

@@ -78,6 +78,12 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         (1.0, crate::vec3::Vec3::ZERO)
     }
 
+    /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]): the
+    /// collision stages' candidates and drive events, and `n` kicks per step.
+    pub fn work_rate(&self, n: usize) -> Real {
+        self.c.work_rate(n, 1.0, crate::vec3::Vec3::ZERO) + n as Real / self.dt
+    }
+
     /// The time step.
     pub fn dt(&self) -> Real {
         self.dt

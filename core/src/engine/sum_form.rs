@@ -59,6 +59,9 @@ pub struct SumNoSplitting<A> {
     cmax: Real,
     /// Whether the `t_kick` slots hold `|c|`.
     ready: bool,
+    /// `<|c|>` about the bulk velocity at the last synchronization (stored units; the
+    /// `t_kick` slots are the caller's between calls, so [`Self::work_rate`] reads this).
+    mean_c: Real,
     counts: Counts,
     t: Real,
     refresh: RefreshWindow,
@@ -88,6 +91,7 @@ impl<A: Restitution> SumNoSplitting<A> {
             sum: 0.0,
             cmax: 0.0,
             ready: false,
+            mean_c: 0.0,
             counts: Counts::default(),
             t: t0,
             refresh: RefreshWindow::new(p.len()),
@@ -106,6 +110,14 @@ impl<A: Restitution> SumNoSplitting<A> {
     /// Event counts so far.
     pub fn counts(&self) -> Counts {
         self.counts
+    }
+
+    /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]): the
+    /// sum-form majorant's candidates (there is no drive) with `sum |c| = n <|c|>` as at the
+    /// last synchronization (start, advance, resync).
+    pub fn work_rate(&self, n: usize) -> Real {
+        let pairs = (n.max(1) - 1) as Real / n.max(1) as Real;
+        self.kernel.pair_rate(self.scale * n as Real * self.mean_c) * pairs
     }
 
     /// The map from stored to physical velocities.
@@ -191,6 +203,7 @@ impl<A: Restitution> SumNoSplitting<A> {
             self.counts.rescales += 1;
         }
         self.counts.observations += 1;
+        self.mean_c = obs.c1;
         if in_run {
             self.prepare(p, obs.bulk);
         }

@@ -87,6 +87,13 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
         self.counts
     }
 
+    /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]): the
+    /// candidates `(1/2) (n - 1) omega_max` and `n` kicks per step of [`Self::step_length`].
+    pub fn work_rate(&self, n: usize) -> Real {
+        let candidates = 0.5 * (n.max(1) - 1) as Real * self.omega_max;
+        candidates + n as Real / self.step_length(self.temperature)
+    }
+
     /// Steps taken so far.
     pub fn steps(&self) -> u64 {
         self.steps

@@ -168,24 +168,45 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
         }
     }
 
+    /// The majorant rate of pair type `k` (physical units).
+    fn type_rate(&self, k: usize) -> Real {
+        let n = self.sp.total();
+        let (s, t) = self.pair_of[k];
+        let umax = self.scale * self.pair_umax(k);
+        let kernel = &self.physics[k].kernel;
+        if s == t {
+            let ns = self.sp.count(s);
+            if ns < 2 {
+                0.0
+            } else {
+                kernel.majorant_rate(ns, umax) * (ns as Real / n as Real)
+            }
+        } else {
+            kernel.b_max(umax) * (self.sp.pairs(s, t) / n as Real)
+        }
+    }
+
+    /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]): the
+    /// majorant's candidates of every pair type and, per species, its count times its drive's
+    /// events per grain at the largest speed its majorant allows (`|V_s| + Umax_s / 2`). The
+    /// species' counts sum to `n`.
+    pub fn work_rate(&self, _n: usize) -> Real {
+        let candidates: Real = (0..self.sp.pair_types()).map(|k| self.type_rate(k)).sum();
+        let events: Real = (0..self.sp.len())
+            .map(|s| {
+                let m = &self.maj[s];
+                let speed = (self.offset + self.scale * m.vref).norm() + 0.5 * self.scale * m.umax;
+                self.sp.count(s) as Real * self.drives[s].event_rate(speed)
+            })
+            .sum();
+        candidates + events
+    }
+
     /// Recomputes the cumulative majorant rates; returns the total.
     fn rates(&mut self) -> Real {
-        let n = self.sp.total();
         let mut total = 0.0;
         for k in 0..self.sp.pair_types() {
-            let (s, t) = self.pair_of[k];
-            let umax = self.scale * self.pair_umax(k);
-            let kernel = &self.physics[k].kernel;
-            let r = if s == t {
-                let ns = self.sp.count(s);
-                if ns < 2 {
-                    0.0
-                } else {
-                    kernel.majorant_rate(ns, umax) * (ns as Real / n as Real)
-                }
-            } else {
-                kernel.b_max(umax) * (self.sp.pairs(s, t) / n as Real)
-            };
+            let r = self.type_rate(k);
             total += r;
             self.cumulative[k] = total;
             if r > 0.0 {
@@ -434,6 +455,9 @@ impl<K: Kernel, D: Drive, A: Restitution> crate::engine::EventLoop for MixtureNo
     }
     fn counts(&self) -> Counts {
         self.counts
+    }
+    fn work_rate(&self, n: usize) -> Real {
+        MixtureNoSplitting::work_rate(self, n)
     }
     fn velocity_map(&self) -> (Real, Vec3) {
         (self.scale, self.offset)

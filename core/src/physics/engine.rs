@@ -181,6 +181,9 @@ macro_rules! forward {
             fn counts(&self) -> Counts {
                 match self { $(Self::$v(e) => EventLoop::counts(e)),+ }
             }
+            fn work_rate(&self, n: usize) -> Real {
+                match self { $(Self::$v(e) => EventLoop::work_rate(e, n)),+ }
+            }
             fn velocity_map(&self) -> (Real, Vec3) {
                 match self { $(Self::$v(e) => EventLoop::velocity_map(e)),+ }
             }

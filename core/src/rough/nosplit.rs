@@ -109,6 +109,12 @@ impl<K: Kernel, D: RoughDrive, G: Geometry> RoughNoSplitting<K, D, G> {
         self.counts
     }
 
+    /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]): the
+    /// majorant's candidates (the rough drives act in closed form).
+    pub fn work_rate(&self, n: usize) -> Real {
+        self.rate(n)
+    }
+
     /// The collision map.
     pub fn map(&self) -> &RoughMap {
         &self.map

@@ -7,6 +7,8 @@
 //! The harness advances a simulation only when its configuration bounds the work (at most 256
 //! particles, rates and speeds of order 100, time steps not tiny, to time 0.01): refusing
 //! configurations whose work is absurd before running is issue 18's subject, not this target's.
+//! Velocities set through the ABI are not guarded here: each handle gets a work limit of 1e6
+//! (gdsmc_sim_set_work_limit), and the ABI refuses an advance its state makes absurd.
 
 use crate::wild;
 use arbitrary::Unstructured;
@@ -149,8 +151,8 @@ fn bounded_work(c: &gdsmc_config) -> bool {
         && match c.scheme {
             GDSMC_SCHEME_EULER | GDSMC_SCHEME_STRANG => within(c.dt, 1e-3, 1e300),
             // Found by a 10-minute run: a step factor of 1e-300 with a valid dt passed an
-            // earlier version of this guard and never returned (the C ABI has no work limit
-            // yet: issue 18).
+            // earlier version of this guard and never returned (before the C ABI's work
+            // limit; kept: the step shrinks as the gas heats, which the limit cannot see).
             GDSMC_SCHEME_TIME_STEPPED => within(c.step_factor, 0.1, 1e300),
             _ => true,
         }
@@ -161,17 +163,19 @@ fn exercise(u: &mut Unstructured<'_>, mut sim: *mut gdsmc_sim, c: &gdsmc_config,
     let n = c.n as usize;
     let mut o = gdsmc_observables::default();
     let mut buf = vec![0.0f64; 3 * n + 3];
-    // Whether the velocities are still of order 100 (`bounded_work`): `set_velocities` takes
-    // any finite ones, and one of 4.7e18 among 28 hard spheres makes a run to t = 0.01 about
-    // 1e17 events (found with -seed=1, regressions/c_abi).
-    let mut calm = true;
+    // `set_velocities` takes any finite velocities, and one of 4.7e18 among 28 hard spheres
+    // made a run to t = 0.01 about 1e17 events (found with -seed=1, regressions/c_abi): the
+    // handle's work limit refuses such an advance (GDSMC_TOO_MUCH_WORK).
+    // SAFETY: `sim` is a live handle from gdsmc.
+    let s = unsafe { gdsmc_sim_set_work_limit(sim, 1e6) };
+    assert_eq!(s, gdsmc_status::GDSMC_OK, "set_work_limit {s:?}");
     for _ in 0..u.int_in_range(0u8..=8).unwrap_or(0) {
         // SAFETY: `sim` is a live handle from gdsmc; buffers are valid for the lengths passed.
         unsafe {
             match u.int_in_range(0u8..=6).unwrap_or(0) {
                 0 => {
                     let t = wild(u);
-                    let t = if bounded_work(c) && calm && t.is_finite() && t > 0.0 {
+                    let t = if bounded_work(c) && t.is_finite() && t > 0.0 {
                         t.min(0.01)
                     } else {
                         -t.abs() - 1.0
@@ -214,10 +218,6 @@ fn exercise(u: &mut Unstructured<'_>, mut sim: *mut gdsmc_sim, c: &gdsmc_config,
                     }
                     let len = u.int_in_range(0..=buf.len()).unwrap_or(0);
                     let _ = gdsmc_sim_set_velocities(sim, buf.as_ptr(), len);
-                    let mut now = vec![0.0f64; 3 * n];
-                    let s = gdsmc_sim_get_velocities(sim, now.as_mut_ptr(), now.len());
-                    assert_eq!(s, gdsmc_status::GDSMC_OK, "get_velocities {s:?}");
-                    calm = now.iter().all(|x| x.abs() <= 100.0);
                 }
                 5 => {
                     let _ = gdsmc_sim_reseed(sim, u.arbitrary().unwrap_or(0));

@@ -15,9 +15,9 @@ use crate::error::Error;
 use crate::scene::{DriveChoice, KernelChoice, RestitutionLaw, Scene, SchemeChoice};
 use std::f64::consts::PI;
 
-/// Work units (events and particle updates) a run may need without `--allow-long`: about a
-/// day of one core at the measured 1e7-3e7 events/s (`gdsmc bench throughput`).
-pub const MAX_WORK: f64 = 1e12;
+/// Work units (events and particle updates) a run may need without `--allow-long`: the core's
+/// [`gdsmc_core::engine::WORK_LIMIT`], about a day of one core, which the C ABI applies too.
+pub const MAX_WORK: f64 = gdsmc_core::engine::WORK_LIMIT;
 
 /// Most worker threads.
 pub const MAX_THREADS: usize = 4096;
