@@ -88,6 +88,10 @@ public:
         check(gdsmc_sim_set_velocities(sim_, v.data(), v.size()), "gdsmc_sim_set_velocities");
     }
     void reseed(uint64_t seed) { check(gdsmc_sim_reseed(sim_, seed), "gdsmc_sim_reseed"); }
+    // The most work one advance may ask for (events and particle updates; default 1e12).
+    void set_work_limit(double limit) {
+        check(gdsmc_sim_set_work_limit(sim_, limit), "gdsmc_sim_set_work_limit");
+    }
     gdsmc_sim *raw() noexcept { return sim_; }
 
 private:

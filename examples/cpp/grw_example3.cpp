@@ -37,6 +37,21 @@ int main() {
         } catch (const gdsmc::Error &e) {
             std::printf("refused as expected (status %d): %s\n", static_cast<int>(e.status()), e.what());
         }
+        // So is an advance above the simulation's work limit (about 8190 candidates per unit
+        // time here), before it runs anything.
+        try {
+            gdsmc::Simulation s(cfg);
+            s.set_work_limit(1e3);
+            s.advance(1.0);
+            std::printf("advance above the work limit accepted\n");
+            return 1;
+        } catch (const gdsmc::Error &e) {
+            if (e.status() != GDSMC_TOO_MUCH_WORK) {
+                std::fprintf(stderr, "work limit: %s\n", e.what());
+                return 1;
+            }
+            std::printf("refused as expected (status %d): %s\n", static_cast<int>(e.status()), e.what());
+        }
     } catch (const gdsmc::Error &e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;
