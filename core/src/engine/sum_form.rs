@@ -116,8 +116,15 @@ impl<A: Restitution> SumNoSplitting<A> {
     /// sum-form majorant's candidates (there is no drive) with `sum |c| = n <|c|>` as at the
     /// last synchronization (start, advance, resync).
     pub fn work_rate(&self, n: usize) -> Real {
-        let pairs = (n.max(1) - 1) as Real / n.max(1) as Real;
-        self.kernel.pair_rate(self.scale * n as Real * self.mean_c) * pairs
+        self.rate_of(n, n as Real * self.mean_c)
+    }
+
+    /// The total majorant rate of `n >= 1` particles whose `sum |c|` is `sum` (stored units):
+    /// `4 pi gamma C_1 (n - 1)/n sum |c|` (module docs).
+    #[inline(always)]
+    fn rate_of(&self, n: usize, sum: Real) -> Real {
+        let n = n.max(1);
+        self.kernel.pair_rate(self.scale * sum) * ((n - 1) as Real / n as Real)
     }
 
     /// The map from stored to physical velocities.
@@ -239,8 +246,7 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
 
     #[inline(always)]
     fn rate(&mut self, n: usize) -> Real {
-        let pairs = (n - 1) as Real / n as Real;
-        self.kernel.pair_rate(self.scale * self.sum) * pairs
+        self.rate_of(n, self.sum)
     }
     #[inline(always)]
     fn bound(&self) -> Real {
