@@ -41,8 +41,24 @@ impl MassRatio {
 /// Post-collisional grain and background velocities `(v', w')` of BRS (2).
 #[inline(always)]
 pub fn elastic_background(v: Vec3, w: Vec3, omega: Vec3, a: MassRatio) -> (Vec3, Vec3) {
-    let a = a.0;
-    let g = (v - w).norm();
-    let centre = (1.0 - a) * v + a * w;
-    (centre + (a * g) * omega, centre - ((1.0 - a) * g) * omega)
+    let g = v - w;
+    let g_len = g.norm();
+    (
+        grain_after_background(v, g, g_len, omega, a),
+        centre(v, g, a) - ((1.0 - a.0) * g_len) * omega,
+    )
+}
+
+/// The grain's post-collisional velocity `v'` of BRS (2) from its relative velocity
+/// `g = v - w` and `|g|` (a sampler that has both saves the background's half and a root):
+/// `v' = v - a g + a |g| omega`, the same as `(1 - a) v + a w + a |g| omega`.
+#[inline(always)]
+pub fn grain_after_background(v: Vec3, g: Vec3, g_len: Real, omega: Vec3, a: MassRatio) -> Vec3 {
+    centre(v, g, a) + (a.0 * g_len) * omega
+}
+
+/// The centre-of-mass velocity `(1 - a) v + a w = v - a g` of BRS (2).
+#[inline(always)]
+fn centre(v: Vec3, g: Vec3, a: MassRatio) -> Vec3 {
+    v - a.0 * g
 }

@@ -4,5 +4,5 @@
 pub mod background;
 pub mod inelastic;
 
-pub use background::{MassRatio, elastic_background};
+pub use background::{MassRatio, elastic_background, grain_after_background};
 pub use inelastic::{energy_change, inelastic, scattering_direction_from_impact};

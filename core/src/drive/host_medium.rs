@@ -21,10 +21,12 @@
 //! Grains have unit mass; `T^B`, `m^B` are the background's temperature and mass.
 
 use super::Drive;
-use crate::collision::{MassRatio, elastic_background};
+use crate::collision::{MassRatio, elastic_background, grain_after_background};
 use crate::math::{PI, Real, sqrt};
 use crate::rng::{Rng, uniform01};
-use crate::sample::{BackgroundPartner, Maxwellian, standard_exponential, unit_sphere};
+use crate::sample::{
+    BackgroundPartner, Maxwellian, standard_exponential, standard_normal3, unit_sphere,
+};
 use crate::vec3::Vec3;
 
 /// The grain-background collision kernel `B_1`.
@@ -135,25 +137,35 @@ impl BackgroundKernel for HardSphereBackground {
         dt: Real,
         rng: &mut R,
     ) -> Option<(Vec3, Real)> {
-        let ub = m.background.drift();
-        let b = m.partner.b();
-        let a = (v - ub).norm();
-        let bound = self.rate_bound(m, a);
+        // Everything about the drift: `c = v - u^B`, the partner `x = w - u^B`, `g = c - x`.
+        let c = v - m.background.drift();
+        let a = c.norm();
+        // One division per event: the waiting times of its candidates share the rate.
+        let inv_bound = 1.0 / self.rate_bound(m, a);
+        let mixture = a + m.partner.mean_relative_speed();
+        let sigma = m.background.thermal_scale();
         let mut used = 0.0;
         loop {
-            used += standard_exponential(rng) / bound;
+            used += standard_exponential(rng) * inv_bound;
             if used >= dt {
                 return None;
             }
-            let mean_partner = 2.0 * b / sqrt(PI);
-            let w = if uniform01(rng) * (a + mean_partner) < a {
-                m.background.sample(rng)
+            // The partner from the mixture `a/(a + 2b/sqrt(pi))` of `M^B` and BRS (29), with
+            // its speed about the drift.
+            let (x, s) = if uniform01(rng) * mixture < a {
+                let x = sigma * standard_normal3(rng);
+                (x, x.norm())
             } else {
-                m.partner.sample(rng)
+                m.partner.sample_about_drift(rng)
             };
-            let omega = unit_sphere(rng);
-            if uniform01(rng) * (a + (w - ub).norm()) < (v - w).norm() {
-                return Some((elastic_background(v, w, omega, m.ratio).0, used));
+            let g = c - x;
+            let g2 = g.norm2();
+            // `r < |g| / (a + s)` as `(r (a + s))^2 < |g|^2`: no root for a rejection. The
+            // direction is drawn only for a real collision.
+            let r = uniform01(rng) * (a + s);
+            if r * r < g2 {
+                let omega = unit_sphere(rng);
+                return Some((grain_after_background(v, g, sqrt(g2), omega, m.ratio), used));
             }
         }
     }
