@@ -6,11 +6,11 @@ use super::{BackgroundKernel, DriveChoice, KernelChoice, Physics, RestitutionLaw
 use super::{Component, MAX_COMPONENTS};
 use crate::drive::host_medium::HostMediumError;
 use crate::drive::{
-    ConstantForce, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
+    ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
     MaxwellBackground, WhiteNoise,
 };
 use crate::engine::{SplittingOrder, check_step};
-use crate::kernel::{HardSpheres, KernelError, Maxwell, Vhs};
+use crate::kernel::{HardSpheres, Kernel, KernelError, Maxwell, Vhs};
 use crate::math::Real;
 use crate::particles::{ParticlesError, check_count};
 use crate::restitution::{Constant, ImpactSpeed, ImpactSpeedError};
@@ -344,5 +344,28 @@ impl Model {
     /// from their own Maxwellians).
     pub fn initial(&self) -> &MaxwellianMixture<MAX_COMPONENTS> {
         &self.initial
+    }
+
+    /// The exact schemes' candidate rate of `n` particles whose relative speeds stay below
+    /// `umax`, `2 pi gamma C_lambda (n - 1) Umax^lambda` (GRW Section 3, RW (20)): the
+    /// kernel's [`Kernel::majorant_rate`], for estimates made before any engine exists.
+    pub fn majorant_rate(&self, n: usize, umax: Real) -> Real {
+        match self.kernel {
+            KernelModel::Maxwell(k) => k.majorant_rate(n, umax),
+            KernelModel::HardSpheres(k) => k.majorant_rate(n, umax),
+            KernelModel::Vhs(k) => k.majorant_rate(n, umax),
+        }
+    }
+
+    /// The candidate rate of one grain's background events, a grain of speed `speed` taken
+    /// as far from the background's drift as it can be (`|v - u^B| <= speed + |u^B|`): a host
+    /// medium's bound, `4 pi C_1 rho^B` (BRS (11)) or BRS (28) ([`Drive::event_rate`]); 0
+    /// without a host medium.
+    pub fn background_rate(&self, speed: Real) -> Real {
+        match self.drive {
+            DriveModel::HostMaxwell(d) => d.event_rate(speed),
+            DriveModel::HostHardSpheres(d) => d.event_rate(speed),
+            _ => 0.0,
+        }
     }
 }

@@ -116,9 +116,13 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     } else {
         temperature
     };
-    // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) thermal speeds.
+    // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) thermal speeds. The rates are the core's
+    // (its majorant and background bounds), from the validated physics.
+    let model = p.validate().ok();
     let umax = 2.0 * (temperature * (2.0 * n.ln() + 3.0)).sqrt();
-    let rate = 2.0 * PI * gc * (n - 1.0) * umax.powf(lambda);
+    let rate = model
+        .as_ref()
+        .map_or(f64::NAN, |md| md.majorant_rate(p.n, umax));
     // A gas with no drive cools (Haff's law for hard spheres): with the cooling rate
     // zeta0 = (1 - alpha^2)/4 nu0 and the rate going as T^(lambda/2), T = T0 (1 + s zeta0
     // t)^(-1/s), s = lambda/2, the rate integrates to ln(1 + s zeta0 t)/(s zeta0) instead of t.
@@ -131,28 +135,12 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         }
         _ => t_end,
     };
-    let background = match p.drive {
-        DriveChoice::HostMedium {
-            kernel,
-            c1,
-            density,
-            mass,
-            temperature: tb,
-            drift,
-        } => {
-            let per_grain = match kernel {
-                crate::scene::BackgroundKernel::Maxwell => 4.0 * PI * c1 * density,
-                crate::scene::BackgroundKernel::HardSpheres => {
-                    let a = (3.0 * temperature).sqrt()
-                        + (drift[0] * drift[0] + drift[1] * drift[1] + drift[2] * drift[2]).sqrt();
-                    let b = (2.0 * tb / mass).sqrt();
-                    c1 * density * (4.0 * PI * a + 8.0 * PI.sqrt() * b)
-                }
-            };
-            per_grain * n * t_end * m
-        }
-        _ => 0.0,
-    };
+    // A host medium's grains at a typical speed `sqrt(3 T)`.
+    let background = model.as_ref().map_or(f64::NAN, |md| {
+        md.background_rate((3.0 * temperature).sqrt())
+    }) * n
+        * t_end
+        * m;
     let steps = match p.scheme {
         SchemeChoice::NoSplitting => 0.0,
         SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => t_end / dt,
