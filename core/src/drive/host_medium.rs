@@ -15,7 +15,8 @@
 //! - Hard-sphere background kernel `B_1 = C_1 |g|` (BRS (19)): thinning against the majorant
 //!   `E_1max(v) = C_1 rho^B (4 pi a + 8 pi^{1/2} b)`, `a = |v - u^B|`, `b = (2 T^B/m^B)^{1/2}`
 //!   (BRS (28)); the partner from the mixture `a/(a + 2b/sqrt(pi))` of `M^B` and the density
-//!   BRS (29); rejected with probability `1 - |v - w| / (|v - u^B| + |w - u^B|)` (BRS
+//!   BRS (29) (both from the same four normals, see [`HardSphereBackground`]); rejected with
+//!   probability `1 - |v - w| / (|v - u^B| + |w - u^B|)` (BRS
 //!   Algorithm 2). The majorant is recomputed after each background event, when `v` changes.
 //!
 //! Grains have unit mass; `T^B`, `m^B` are the background's temperature and mass.
@@ -25,7 +26,8 @@ use crate::collision::{MassRatio, elastic_background, grain_after_background};
 use crate::math::{PI, Real, sqrt};
 use crate::rng::{Rng, uniform01};
 use crate::sample::{
-    BackgroundPartner, Maxwellian, standard_exponential, standard_normal3, unit_sphere,
+    BackgroundPartner, Maxwellian, standard_exponential, standard_normal, standard_normal3,
+    unit_sphere,
 };
 use crate::vec3::Vec3;
 
@@ -125,6 +127,13 @@ impl BackgroundKernel for MaxwellBackground {
 }
 
 /// Hard-sphere background kernel `B_1 = C_1 |g|`.
+///
+/// Candidates at BRS (28)'s rate; the partner `w = u^B + x` from the mixture of `M^B` and BRS
+/// (29) drawn from four normals `N, N_4` whichever is picked: `x = sigma N` (`sigma^2 =
+/// T^B/m^B`) for `M^B`, `x = sigma sqrt(|N|^2 + N_4^2) N/|N|` for BRS (29) (its `|x|^2/b^2`
+/// is half a chi-squared with 4 degrees of freedom, Gamma(2), in a uniform direction), so the
+/// choice is a select, not a branch; the thinning test without a root; the direction of the
+/// collision drawn only when it is real.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct HardSphereBackground;
 
@@ -151,13 +160,18 @@ impl BackgroundKernel for HardSphereBackground {
                 return None;
             }
             // The partner from the mixture `a/(a + 2b/sqrt(pi))` of `M^B` and BRS (29), with
-            // its speed about the drift.
-            let (x, s) = if uniform01(rng) * mixture < a {
-                let x = sigma * standard_normal3(rng);
-                (x, x.norm())
-            } else {
-                m.partner.sample_about_drift(rng)
-            };
+            // its speed `s` about the drift, one construction for both (no branch to
+            // mispredict): `x = sigma N` with `N` three normals is `M^B`'s; stretched to the
+            // length `sigma sqrt(|N|^2 + N_4^2)` it is BRS (29)'s, whose `s^2/b^2` is
+            // Gamma(2) (`|N|^2 + N_4^2` is chi-squared with 4 degrees of freedom, halved: `b^2
+            // = 2 sigma^2`) in the uniform direction of `N`.
+            let pick_bg = uniform01(rng) * mixture < a;
+            let n = standard_normal3(rng);
+            let n4 = standard_normal(rng);
+            let q = n.norm2();
+            let s = sigma * sqrt(if pick_bg { q } else { q + n4 * n4 });
+            // `q = 0` needs three exact zeros (about 2^-156): `x = 0` then.
+            let x = if q > 0.0 { s / sqrt(q) } else { 0.0 } * n;
             let g = c - x;
             let g2 = g.norm2();
             // `r < |g| / (a + s)` as `(r (a + s))^2 < |g|^2`: no root for a rejection. The

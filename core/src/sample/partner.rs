@@ -48,15 +48,7 @@ impl BackgroundPartner {
     /// One partner velocity.
     #[inline]
     pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Vec3 {
-        self.drift + self.sample_about_drift(rng).0
-    }
-
-    /// One partner velocity relative to the drift, `w - u^B`, with its length `|w - u^B|`
-    /// (known without a root: `b sqrt(E_1 + E_2)`). The same draws as [`Self::sample`].
-    #[inline(always)]
-    pub fn sample_about_drift<R: Rng + ?Sized>(&self, rng: &mut R) -> (Vec3, Real) {
         let y = standard_exponential(rng) + standard_exponential(rng);
-        let s = self.b * sqrt(y);
-        (s * unit_sphere(rng), s)
+        self.drift + (self.b * sqrt(y)) * unit_sphere(rng)
     }
 }
