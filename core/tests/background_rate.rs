@@ -50,3 +50,20 @@ fn first_collision_comes_at_the_exact_rate() {
         );
     }
 }
+
+/// No time, a time a rounding left below zero, or no number at all: no candidate, no draw of
+/// a collision.
+#[test]
+fn no_time_no_collision() {
+    let bg = Maxwellian::new(1.0, 1.0, Vec3::new(0.0, 1.0, 0.0)).unwrap();
+    let m = HostMediumParams::new(bg, 1.0, 1.0).unwrap();
+    let mut rng = seeded(7);
+    for dt in [0.0, -1e-300, -1.0, f64::NAN] {
+        for v in [Vec3::ZERO, Vec3::new(1e3, 0.0, 0.0)] {
+            assert!(
+                HardSphereBackground.next(&m, v, dt, &mut rng).is_none(),
+                "dt = {dt}, v = {v:?}"
+            );
+        }
+    }
+}

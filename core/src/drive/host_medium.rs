@@ -148,17 +148,21 @@ impl BackgroundKernel for HardSphereBackground {
     ) -> Option<(Vec3, Real)> {
         // Everything about the drift: `c = v - u^B`, the partner `x = w - u^B`, `g = c - x`.
         let c = v - m.background.drift();
+        // Waiting times in units of the majorant: the candidates come while the sum `e` of
+        // standard exponentials is below `dt (k0 a + k1)`. Every kick's last call ends at a
+        // time test, mostly at its first draw; that one needs no root: `e - dt k1 >= dt k0 a`
+        // as squares. (No time, or a time a rounding left below 0, has no candidate.)
+        let (k0, k1) = rate_terms(m);
+        let mut e = standard_exponential(rng);
+        let y = e - dt * k1;
+        if dt.is_nan() || dt <= 0.0 || (y >= 0.0 && y * y >= (dt * k0) * (dt * k0) * c.norm2()) {
+            return None;
+        }
         let a = c.norm();
-        // One division per event: the waiting times of its candidates share the rate.
-        let inv_bound = 1.0 / self.rate_bound(m, a);
+        let budget = dt * (k0 * a + k1);
         let mixture = a + m.partner.mean_relative_speed();
         let sigma = m.background.thermal_scale();
-        let mut used = 0.0;
         loop {
-            used += standard_exponential(rng) * inv_bound;
-            if used >= dt {
-                return None;
-            }
             // The partner from the mixture `a/(a + 2b/sqrt(pi))` of `M^B` and BRS (29), with
             // its speed `s` about the drift, one construction for both (no branch to
             // mispredict): `x = sigma N` with `N` three normals is `M^B`'s; stretched to the
@@ -179,7 +183,12 @@ impl BackgroundKernel for HardSphereBackground {
             let r = uniform01(rng) * (a + s);
             if r * r < g2 {
                 let omega = unit_sphere(rng);
+                let used = e / (k0 * a + k1);
                 return Some((grain_after_background(v, g, sqrt(g2), omega, m.ratio), used));
+            }
+            e += standard_exponential(rng);
+            if e >= budget {
+                return None;
             }
         }
     }
@@ -187,8 +196,16 @@ impl BackgroundKernel for HardSphereBackground {
     /// BRS (28): `C_1 rho^B (4 pi a + 8 sqrt(pi) b)` with the partner scale `b`.
     #[inline]
     fn rate_bound(&self, m: &HostMediumParams, a: Real) -> Real {
-        m.c1 * m.density * (4.0 * PI * a + 8.0 * sqrt(PI) * m.partner.b())
+        let (k0, k1) = rate_terms(m);
+        k0 * a + k1
     }
+}
+
+/// BRS (28)'s majorant as `k0 a + k1`: `k0 = 4 pi C_1 rho^B`, `k1 = 8 sqrt(pi) C_1 rho^B b`.
+#[inline(always)]
+fn rate_terms(m: &HostMediumParams) -> (Real, Real) {
+    let s = m.c1 * m.density;
+    (s * 4.0 * PI, s * 8.0 * sqrt(PI) * m.partner.b())
 }
 
 /// The host-medium drive with background kernel `B`.
