@@ -11,6 +11,10 @@ pub type Real = f64;
 /// pi.
 pub const PI: Real = core::f64::consts::PI;
 
+/// `sqrt(pi)`, the correctly rounded root of [`PI`] (the same bits as `sqrt(PI)`, which the
+/// SSE2 `sqrt` would otherwise compute at run time: inline assembly is never folded).
+pub const SQRT_PI: Real = 1.772_453_850_905_515_9;
+
 /// Square root.
 #[inline(always)]
 pub fn sqrt(x: Real) -> Real {
@@ -90,4 +94,14 @@ pub type RealX4 = wide::f64x4;
 #[inline(always)]
 pub fn one_to_two(bits: u64) -> Real {
     f64::from_bits((bits >> 12) | 0x3ff0_0000_0000_0000)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sqrt_pi_is_the_root_of_pi_to_the_bit() {
+        assert_eq!(SQRT_PI.to_bits(), sqrt(PI).to_bits());
+    }
 }

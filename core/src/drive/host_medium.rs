@@ -23,7 +23,7 @@
 
 use super::Drive;
 use crate::collision::{MassRatio, elastic_background, grain_after_background};
-use crate::math::{PI, Real, sqrt};
+use crate::math::{PI, Real, SQRT_PI, sqrt};
 use crate::rng::{Rng, uniform01};
 use crate::sample::{
     BackgroundPartner, Maxwellian, standard_exponential, standard_normal, standard_normal3,
@@ -205,7 +205,7 @@ impl BackgroundKernel for HardSphereBackground {
 #[inline(always)]
 fn rate_terms(m: &HostMediumParams) -> (Real, Real) {
     let s = m.c1 * m.density;
-    (s * 4.0 * PI, s * 8.0 * sqrt(PI) * m.partner.b())
+    (s * 4.0 * PI, s * 8.0 * SQRT_PI * m.partner.b())
 }
 
 /// The host-medium drive with background kernel `B`.

@@ -15,7 +15,7 @@
 //! ```
 
 use super::{Maxwellian, standard_exponential, unit_sphere};
-use crate::math::{PI, Real, sqrt};
+use crate::math::{Real, SQRT_PI, sqrt};
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
@@ -42,7 +42,7 @@ impl BackgroundPartner {
 
     /// The mean speed `int |w - u^B| M^B(w) dw = 2 b / sqrt(pi)` (BRS, text before (29)).
     pub fn mean_relative_speed(&self) -> Real {
-        2.0 * self.b / sqrt(PI)
+        2.0 * self.b / SQRT_PI
     }
 
     /// One partner velocity.
