@@ -377,3 +377,50 @@ fn a_buffer_of_the_wrong_size_is_refused() {
     let mut p = Particles::new(&mut buf).unwrap();
     assert!(model.launch(&mut p, 0.0, &mut seeded(1)).is_err());
 }
+
+/// A splitting step longer than the run is refused by the description's span rule, and the
+/// engine's grid refuses every advance such a step would skip (before: `dt = 1e300` to `t = 8`
+/// was "on the grid" at step 0 and returned the start's observables as `t = 8`'s).
+#[test]
+fn a_step_that_takes_no_step_is_refused() {
+    use gdsmc_core::engine::{EngineError, grid_index};
+    let strang = |dt| SchemeChoice::Strang(dt);
+    assert!(strang(8.0).check_span(8.0).is_ok());
+    assert!(SchemeChoice::NoSplitting.check_span(1.0).is_ok());
+    for dt in [8.000001, 1e300, f64::MAX, f64::INFINITY, f64::NAN] {
+        let e = strang(dt).check_span(8.0).unwrap_err();
+        assert_eq!(e.param, Param::Dt, "dt = {dt}");
+        assert!(e.to_string().contains("at most the run's span 8"), "{e}");
+    }
+    // The grid: the start, whole steps to within 1e-9 of a step, nothing else.
+    assert_eq!(grid_index(0.0, 0.25, 0.0), Some(0));
+    assert_eq!(grid_index(0.0, 0.1, 0.3), Some(3));
+    assert_eq!(grid_index(1.0, 0.5, 3.0), Some(4));
+    for (dt, t) in [
+        (1e300, 8.0),
+        (1.0, 1e-12),
+        (1.0, 0.4),
+        (0.25, 0.3),
+        (0.25, -1.0),
+        (0.25, f64::NAN),
+        (0.25, f64::INFINITY),
+        (1e-300, 1e10),
+    ] {
+        assert_eq!(grid_index(0.0, dt, t), None, "dt = {dt}, t = {t}");
+    }
+    // The engine applies the same rule: a Strang scheme with dt = 1e300 cannot advance to 8.
+    let model = Physics {
+        scheme: strang(1e300),
+        ..grw3()
+    }
+    .validate()
+    .unwrap();
+    let mut buf = [Particle::default(); 16];
+    let mut p = Particles::new(&mut buf).unwrap();
+    let mut rng = seeded(1);
+    let (mut engine, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+    assert_eq!(
+        engine.advance_to(&mut p, 8.0, &mut rng).unwrap_err(),
+        EngineError::OffGrid
+    );
+}

@@ -56,6 +56,28 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
         key: key.to_string(),
         message,
     };
+    // A key given twice (`--n 64 --set particles.n=nan`, or a table and a key in it) would have
+    // the later value replace the earlier before either is checked: refused, naming both.
+    for (i, a) in overrides.iter().enumerate() {
+        for b in &overrides[..i] {
+            let (ka, kb) = (a.key(), b.key());
+            let nested = |outer: &str, inner: &str| {
+                inner.len() > outer.len()
+                    && inner.starts_with(outer)
+                    && inner.as_bytes()[outer.len()] == b'.'
+            };
+            if ka == kb || nested(ka, kb) || nested(kb, ka) {
+                return Err(bad(
+                    Some(a),
+                    ka,
+                    format!(
+                        "is set twice ({} {} and {} {}): give each key once",
+                        b.source, b.assignment, a.source, a.assignment
+                    ),
+                ));
+            }
+        }
+    }
     let mut doc: toml::Table = toml::from_str(text).map_err(|e| Error::Parse {
         path: path.to_path_buf(),
         message: e.to_string(),

@@ -53,6 +53,15 @@ pub enum Error {
     /// `gdsmc merge`: the shards given do not make one run (missing, duplicated, of several runs).
     #[error("{0}")]
     Shards(String),
+    /// gdsmc will not write here: the place holds what gdsmc did not write (a user's
+    /// directory or file, a link), or what it asks for would not fit.
+    #[error("{path}: {message}")]
+    Refused {
+        /// The place.
+        path: PathBuf,
+        /// Why, and what to do instead.
+        message: String,
+    },
     /// An output file could not be written.
     #[error("{path}: cannot write: {source}")]
     Write {

@@ -241,7 +241,10 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                     source,
                 })
             })?;
-            let shard = shard.as_deref().map(run::shard::parse_spec).transpose()?;
+            let shard = shard
+                .as_deref()
+                .map(|spec| run::shard::parse_spec(spec, sc.ensembles))
+                .transpose()?;
             // Absurd work is refused before anything is allocated or run.
             let work = run::estimate::check(&sc, threads, allow_long)?;
             let range = shard.map_or(0..sc.ensembles, |(k, s)| {
@@ -337,10 +340,16 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             format,
         } => {
             let files = run::shard::files(&inputs)?;
+            // A given output place is checked before the shards are read.
+            if let Some(o) = &out {
+                run::shard::check_output(o, &files)?;
+                gdsmc_runner::report::set::check_replaceable(o)?;
+            }
             let started = std::time::Instant::now();
             let m = run::shard::merge_files(&files)?;
             let merge_s = started.elapsed().as_secs_f64();
             let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&m.scene.name));
+            run::shard::check_output(&dir, &files)?;
             let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
             write_outputs(&m.scene, &m.stats, set, &dir, format)?;
             println!(
@@ -443,6 +452,12 @@ fn journaled(job: &run::Journaled, total: u64) -> Result<run::JournalRun, gdsmc_
             "continued {}: {} ensembles were already done",
             job.path.display(),
             r.resumed
+        );
+    }
+    if let Some(why) = &r.damage {
+        eprintln!(
+            "note: {} was cut after its last good record ({why}); the ensembles after it were run again",
+            job.path.display()
         );
     }
     Ok(r)
@@ -552,6 +567,9 @@ fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
     }
 }
 
+/// The first words of every report.md `gdsmc reproduce` writes.
+const REPORT_SIGNATURE: &str = "# gdsmc reproduce:";
+
 fn reproduce(
     names: &[String],
     quick: bool,
@@ -571,6 +589,8 @@ fn reproduce(
         source: e,
     })?;
     let report = dir.join("report.md");
+    // A report.md that is not gdsmc's is refused before any table runs, not replaced.
+    gdsmc_runner::report::files::check_own(&report, REPORT_SIGNATURE)?;
     let start = std::time::Instant::now();
     let mut done = Vec::new();
     let mut write_err = None;
@@ -578,7 +598,9 @@ fn reproduce(
         print!("{}", reproduce::text(t));
         done.push(t.clone());
         let md = reproduce::markdown(&done, &opts, start.elapsed().as_secs_f64());
-        if let Err(e) = gdsmc_runner::report::files::write_atomic(&report, md.as_bytes()) {
+        if let Err(e) =
+            gdsmc_runner::report::files::write_own(&report, md.as_bytes(), REPORT_SIGNATURE)
+        {
             write_err.get_or_insert(e);
         }
     })?;

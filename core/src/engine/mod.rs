@@ -164,6 +164,27 @@ pub fn check_step(h: Real) -> Result<Real, EngineError> {
     }
 }
 
+/// The step index `k` of the time `t` on a splitting scheme's grid `t0 + k dt` (RW Algorithms
+/// 1-2 observe only there), to within `1e-9` of a step: `None` when `t` is not finite, before
+/// `t0`, off the grid, or later than `t0` by less than half a step (a span that would take no
+/// step at all: `dt = 1e300` to `t = 8` is not the exact `t = 0`). The one grid rule of the
+/// engine ([`Splitting::advance_to`]) and of every front end's check of observation times.
+pub fn grid_index(t0: Real, dt: Real, t: Real) -> Option<u64> {
+    if !(t.is_finite() && t >= t0 && dt.is_finite() && dt > 0.0) {
+        return None;
+    }
+    let k = (t - t0) / dt;
+    // More steps than a u64 counts (or an infinite k) is no grid a run can step on.
+    if k.is_nan() || k >= u64::MAX as Real {
+        return None;
+    }
+    let target = (k + 0.5) as u64;
+    if crate::math::abs(k - target as Real) > 1e-9 * (1.0 + k) || (target == 0 && t > t0) {
+        return None;
+    }
+    Some(target)
+}
+
 /// Event counts of a run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Counts {

@@ -14,7 +14,7 @@ use super::event::{Collider, observables};
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
-use crate::math::{Real, abs};
+use crate::math::Real;
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
@@ -94,8 +94,9 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         self.c.counts
     }
 
-    /// Runs whole steps up to `t_end`, which must lie on the grid `t0 + k dt` (to within
-    /// `1e-9` of a step) and not before the current time. Returns the observables there.
+    /// Runs whole steps up to `t_end`, which must lie on the grid `t0 + k dt`
+    /// ([`super::grid_index`]: to within `1e-9` of a step, and a later time at least half a
+    /// step on) and not before the current time. Returns the observables there.
     // Its own function, called once per observation: the engine's dispatch above it stays
     // small and a profile names the loop.
     #[inline(never)]
@@ -108,11 +109,7 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         if !t_end.is_finite() || t_end < self.time() {
             return Err(EngineError::TimeBackwards);
         }
-        let k = (t_end - self.t0) / self.dt;
-        let target = (k + 0.5) as u64;
-        if abs(k - target as Real) > 1e-9 * (1.0 + k) {
-            return Err(EngineError::OffGrid);
-        }
+        let target = super::grid_index(self.t0, self.dt, t_end).ok_or(EngineError::OffGrid)?;
         while self.steps < target {
             self.step(p, rng);
         }

@@ -155,6 +155,13 @@ pub enum Problem {
     Strength(Real),
     /// A temperature this large for its mass makes the thermal speed infinite (`2 T / m`).
     ThermalSpeed(Real),
+    /// A time step longer than the run it steps through: not one step would be taken.
+    LongerThanSpan {
+        /// The step.
+        value: Real,
+        /// The run's span (from its start to its last time).
+        span: Real,
+    },
     /// The parameter does not fit the rest of the description (the message says why).
     DoesNotFit(&'static str),
 }
@@ -183,6 +190,10 @@ impl core::fmt::Display for Problem {
             Problem::ThermalSpeed(t) => write!(
                 f,
                 "= {t} is too large for its mass: 2 temperature / mass overflows"
+            ),
+            Problem::LongerThanSpan { value, span } => write!(
+                f,
+                "must be at most the run's span {span} (not one step would be taken), got {value}"
             ),
             Problem::DoesNotFit(why) => f.write_str(why),
         }

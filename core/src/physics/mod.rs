@@ -168,6 +168,25 @@ pub enum SchemeChoice {
     TimeStepped(Real),
 }
 
+impl SchemeChoice {
+    /// Checks the scheme against the span of a run (from its start to its last time): a
+    /// splitting step must be at most the span, or not one step is taken (RW Algorithms 1-2
+    /// advance in whole steps; [`crate::engine::grid_index`] refuses every time such a step
+    /// would skip). The rule every front end that knows its span applies; the engine's grid
+    /// refuses the same advances.
+    pub fn check_span(&self, span: Real) -> Result<(), PhysicsError> {
+        match *self {
+            SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) if dt.is_nan() || dt > span => {
+                Err(PhysicsError {
+                    param: Param::Dt,
+                    problem: Problem::LongerThanSpan { value: dt, span },
+                })
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
 /// One weighted Maxwellian of the initial distribution (BRS (35), (36)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Component {

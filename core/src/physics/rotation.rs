@@ -98,6 +98,17 @@ pub(super) fn rotation(
     })?;
     at_least_zero(Param::RotationTemperature, r.temperature)?;
     let start = Maxwellian::new(1.0, r.temperature / r.kappa, Vec3::ZERO).map_err(|e| {
+        // A temperature that is fine alone overflows only through a tiny kappa: that is the
+        // parameter to change.
+        if Maxwellian::new(1.0, r.temperature, Vec3::ZERO).is_ok() {
+            return PhysicsError {
+                param: Param::Inertia,
+                problem: Problem::DoesNotFit(
+                    "is too small for the rotation's start temperature: T_rot / kappa, the \
+                     spins' temperature, overflows",
+                ),
+            };
+        }
         let problem = match e {
             ParamError::ThermalSpeed => Problem::ThermalSpeed(r.temperature),
             _ => Problem::NotFinite(r.temperature / r.kappa),

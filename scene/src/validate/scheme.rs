@@ -64,13 +64,18 @@ pub(super) fn on_grid(
     let (SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt)) = scheme else {
         return Ok(());
     };
-    if let Some(t) = times.iter().find(|&&t| {
-        let k = t / dt;
-        (k - k.round()).abs() > 1e-9 * (1.0 + k)
-    }) {
-        let span = sch.dt.as_ref().map_or(0..0, |d| d.span());
+    let at = sch.dt.as_ref().map_or(0..0, |d| d.span());
+    // The run starts at 0 (the engine is launched there) and ends at its last time.
+    let t_end = times.last().copied().unwrap_or(0.0);
+    if let Err(e) = scheme.check_span(t_end) {
+        return ctx.invalid(at, "scheme.dt", e.problem.to_string());
+    }
+    if let Some(t) = times
+        .iter()
+        .find(|&&t| gdsmc_core::engine::grid_index(0.0, dt, t).is_none())
+    {
         return ctx.invalid(
-            span,
+            at,
             "scheme.dt",
             format!("must divide every observation time; {t} is not a multiple of {dt}"),
         );

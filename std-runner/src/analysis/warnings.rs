@@ -17,7 +17,7 @@ pub const PRECISION_RATIO: f64 = 1e-6;
 /// One warning.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Warning {
-    /// Short code: `non-finite`, `unsteady`, `tail-not-asymptotic`, `splitting-step`, `time-step`, `majorant`,
+    /// Short code: `no-intervals`, `non-finite`, `unsteady`, `tail-not-asymptotic`, `splitting-step`, `time-step`, `majorant`,
     /// `restitution-clamped`, `precision`.
     pub code: &'static str,
     /// What fired, how large the error is expected to be, and what to do.
@@ -197,7 +197,16 @@ fn tail_not_asymptotic(scene: &Scene, stats: &RunStats) -> Option<Warning> {
 
 /// Every warning of a finished run.
 pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
-    let mut w: Vec<Warning> = non_finite(stats).into_iter().collect();
+    let mut w: Vec<Warning> = Vec::new();
+    if stats.ensembles == 1 {
+        w.push(Warning {
+            code: "no-intervals",
+            message: "one ensemble: every _ci column is NaN, since a confidence interval needs \
+                      the spread of at least two ensembles (it is undefined, not zero). Run with --ensembles 2 or more for intervals."
+                .into(),
+        });
+    }
+    w.extend(non_finite(stats));
     w.extend(unsteady(scene, stats));
     w.extend(tail_not_asymptotic(scene, stats));
     let c = stats.counts;

@@ -15,7 +15,7 @@
 use crate::error::Error;
 use crate::reference::curves::maxwell_temperature;
 use crate::report::charts::{Series, Style, profile};
-use crate::report::files::write_atomic;
+use crate::report::files::write_own;
 use crate::run;
 use crate::run::stats::LAMBDA_999;
 use crate::scene::{Scene, SchemeChoice};
@@ -299,9 +299,14 @@ pub fn write(dir: &Path, scene: &str, points: &[Point], target: f64) -> Result<S
         path: path.clone(),
         source: std::io::Error::other(e.to_string()),
     })?;
-    write_atomic(&path, &bytes)?;
+    // Into a place the user may have chosen: only files of gdsmc's are replaced.
+    write_own(&path, &bytes, "scheme,n,dt,K,runs,cpu_s_per_run")?;
     match chart(&format!("{scene}: work against precision (RW 4.2)"), points) {
-        Ok(svg) => write_atomic(&dir.join("work_precision.svg"), svg.as_bytes())?,
+        Ok(svg) => write_own(
+            &dir.join("work_precision.svg"),
+            svg.as_bytes(),
+            "work against precision (RW 4.2)",
+        )?,
         Err(e) => eprintln!("work_precision.svg: not drawn ({e})"),
     }
     let mut s = String::new();

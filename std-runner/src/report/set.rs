@@ -6,6 +6,11 @@
 //! (`renameat2(RENAME_EXCHANGE)`), elsewhere two renames. A run killed at any moment leaves the
 //! previous whole set or the new whole set at the target, never a mix; staging directories of
 //! killed runs are removed by the next run. [`verify`] tells a whole set from a broken one.
+//!
+//! Only what gdsmc wrote is ever replaced ([`check_replaceable`], before the run and again just
+//! before the swap): the target must be absent, an empty directory, or a whole gdsmc set that
+//! holds nothing its manifest does not list. A user's directory, a regular file or a link at
+//! the target is refused, naming it, and left as it is.
 
 use crate::error::Error;
 use std::path::{Path, PathBuf};
@@ -55,10 +60,102 @@ fn alive(pid: u32) -> bool {
     }
 }
 
+/// Whether a new set may replace what is at `target`: nothing, an empty directory, or a whole
+/// gdsmc output set (its manifest verifies, [`verify`]) holding only the files the manifest
+/// lists, each a regular file. Anything else is refused, naming the path and what is there.
+pub fn check_replaceable(target: &Path) -> Result<(), Error> {
+    let refuse = |message: String| Error::Refused {
+        path: target.to_path_buf(),
+        message,
+    };
+    let meta = match std::fs::symlink_metadata(target) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => return Err(write_err(target)(e)),
+        Ok(m) => m,
+    };
+    let t = meta.file_type();
+    if t.is_symlink() {
+        return Err(refuse(
+            "is a symbolic link: gdsmc replaces only a directory it wrote, never what a link \
+             points to; give the directory itself or a new name as the output directory (--out)"
+                .into(),
+        ));
+    }
+    if !t.is_dir() {
+        return Err(refuse(
+            "exists and is not a directory (a file gdsmc did not write); it is left as it is: \
+             choose another output directory (--out)"
+                .into(),
+        ));
+    }
+    let mut entries: Vec<(String, bool)> = std::fs::read_dir(target)
+        .map_err(write_err(target))?
+        .map(|e| {
+            e.map(|e| {
+                let name = e.file_name().to_string_lossy().into_owned();
+                let file = e.file_type().is_ok_and(|t| t.is_file());
+                (name, file)
+            })
+        })
+        .collect::<Result<_, _>>()
+        .map_err(write_err(target))?;
+    if entries.is_empty() {
+        return Ok(());
+    }
+    entries.sort();
+    let listed = |names: &[(String, bool)]| {
+        let shown: Vec<String> = names
+            .iter()
+            .take(4)
+            .map(|(n, file)| if *file { n.clone() } else { format!("{n}/") })
+            .collect();
+        let more = names.len().saturating_sub(4);
+        if more > 0 {
+            format!("{} and {more} more", shown.join(", "))
+        } else {
+            shown.join(", ")
+        }
+    };
+    let keep = "it is left as it is: choose another output directory (--out) or move them away";
+    if !entries.iter().any(|(n, _)| n == MANIFEST) {
+        return Err(refuse(format!(
+            "holds files gdsmc did not write ({}) and no gdsmc {MANIFEST}; gdsmc replaces only \
+             an empty directory or an output set of its own; {keep}",
+            listed(&entries)
+        )));
+    }
+    let manifest = read_manifest(target).map_err(|why| {
+        refuse(format!(
+            "is not a whole gdsmc output set ({why}); gdsmc replaces only an empty directory or \
+             an output set of its own; {keep}"
+        ))
+    })?;
+    let own: Vec<&str> = manifest.files.iter().map(|(n, _, _)| n.as_str()).collect();
+    let foreign: Vec<(String, bool)> = entries
+        .into_iter()
+        .filter(|(n, file)| !(*file && (n == MANIFEST || own.contains(&n.as_str()))))
+        .collect();
+    if !foreign.is_empty() {
+        return Err(refuse(format!(
+            "is a gdsmc output set that also holds what its {MANIFEST} does not list ({}); \
+             {keep}",
+            listed(&foreign)
+        )));
+    }
+    verify(target).map_err(|why| {
+        refuse(format!(
+            "is a gdsmc output set changed since gdsmc wrote it ({why}); {keep}"
+        ))
+    })?;
+    Ok(())
+}
+
 impl OutputSet {
-    /// Prepares writing a set to `target`: creates its parent and the staging directory, and
-    /// removes the staging directories of runs that were killed.
+    /// Prepares writing a set to `target`: refuses a target gdsmc may not replace
+    /// ([`check_replaceable`]), creates its parent and the staging directory, and removes the
+    /// staging directories of runs that were killed.
     pub fn prepare(target: &Path) -> Result<Self, Error> {
+        check_replaceable(target)?;
         let parent = match target.parent() {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
@@ -70,13 +167,18 @@ impl OutputSet {
                 let name = e.file_name().to_string_lossy().into_owned();
                 if let Some(pid) = name.strip_prefix(&prefix).and_then(|p| p.parse().ok())
                     && !alive(pid)
+                    && e.file_type().is_ok_and(|t| t.is_dir())
                 {
                     let _ = std::fs::remove_dir_all(e.path());
                 }
             }
         }
         let staging = parent.join(format!("{prefix}{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&staging);
+        // A directory of this name is a staging directory of a killed run whose process id
+        // this one now has; anything else there is left alone (the create below refuses it).
+        if std::fs::symlink_metadata(&staging).is_ok_and(|m| m.is_dir()) {
+            let _ = std::fs::remove_dir_all(&staging);
+        }
         std::fs::create_dir(&staging).map_err(write_err(&staging))?;
         Ok(OutputSet {
             target: target.to_path_buf(),
@@ -127,10 +229,12 @@ impl OutputSet {
         Ok(written)
     }
 
-    /// The staging directory becomes the target; the previous set, if any, is removed.
+    /// The staging directory becomes the target; the previous set, if any, is removed (checked
+    /// again: something may have been put there while the run ran).
     fn swap_in(&self) -> Result<(), Error> {
         let (staging, target) = (&self.staging, &self.target);
-        if !target.exists() {
+        check_replaceable(target)?;
+        if std::fs::symlink_metadata(target).is_err() {
             return std::fs::rename(staging, target).map_err(write_err(target));
         }
         #[cfg(target_os = "linux")]
@@ -161,20 +265,56 @@ impl Drop for OutputSet {
     }
 }
 
+/// A manifest as read: the run object and every file with its size and checksum.
+struct Manifest {
+    run: serde_json::Value,
+    files: Vec<(String, u64, String)>,
+}
+
+/// Reads `dir`'s manifest; a file name that is not a plain name (a path) is refused.
+fn read_manifest(dir: &Path) -> Result<Manifest, String> {
+    let path = dir.join(MANIFEST);
+    let f = crate::report::files::open_regular(&path).map_err(|e| format!("{MANIFEST}: {e}"))?;
+    let mut text = Vec::new();
+    std::io::Read::read_to_end(&mut std::io::Read::take(f, 16 << 20), &mut text)
+        .map_err(|e| format!("{MANIFEST}: {e}"))?;
+    let m: serde_json::Value =
+        serde_json::from_slice(&text).map_err(|e| format!("{MANIFEST}: {e}"))?;
+    let list = m["files"]
+        .as_array()
+        .ok_or(format!("{MANIFEST} without files"))?;
+    let mut files = Vec::with_capacity(list.len());
+    for f in list {
+        let name = f["name"].as_str().ok_or("a file without a name")?;
+        if name.is_empty() || name.contains(['/', '\\']) || name == "." || name == ".." {
+            return Err(format!("{MANIFEST} lists `{name}`, not a file name"));
+        }
+        let bytes = f["bytes"].as_u64().ok_or("a file without a size")?;
+        let sum = f["fnv1a64"].as_str().ok_or("a file without a checksum")?;
+        files.push((name.to_string(), bytes, sum.to_string()));
+    }
+    Ok(Manifest {
+        run: m["run"].clone(),
+        files,
+    })
+}
+
 /// Checks that `dir` holds a whole set: a manifest, and every file it lists with its size and
 /// checksum. Returns the manifest's `run` object.
 pub fn verify(dir: &Path) -> Result<serde_json::Value, String> {
-    let text = std::fs::read(dir.join(MANIFEST)).map_err(|e| format!("no manifest: {e}"))?;
-    let m: serde_json::Value =
-        serde_json::from_slice(&text).map_err(|e| format!("manifest: {e}"))?;
-    let files = m["files"].as_array().ok_or("manifest without files")?;
-    for f in files {
-        let name = f["name"].as_str().ok_or("a file without a name")?;
-        let bytes = std::fs::read(dir.join(name)).map_err(|e| format!("{name}: {e}"))?;
-        let sum = format!("{:016x}", fnv1a(&bytes));
-        if f["bytes"].as_u64() != Some(bytes.len() as u64) || f["fnv1a64"].as_str() != Some(&sum) {
+    let m = read_manifest(dir)?;
+    for (name, len, sum) in &m.files {
+        let path = dir.join(name);
+        let f = crate::report::files::open_regular(&path).map_err(|e| format!("{name}: {e}"))?;
+        if f.metadata().map_err(|e| format!("{name}: {e}"))?.len() != *len {
+            return Err(format!("{name} is not the file the manifest lists"));
+        }
+        let mut bytes = Vec::new();
+        std::io::Read::read_to_end(&mut std::io::Read::take(f, *len), &mut bytes)
+            .map_err(|e| format!("{name}: {e}"))?;
+        if bytes.len() as u64 != *len || format!("{:016x}", fnv1a(&bytes)) != *sum {
             return Err(format!("{name} is not the file the manifest lists"));
         }
     }
-    Ok(m["run"].clone())
+    Ok(m.run)
 }

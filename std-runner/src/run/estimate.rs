@@ -7,9 +7,13 @@
 //! (BRS (26), its majorant (28) for hard spheres), `n` per observation and per step of a
 //! stepped scheme, and the random pairs of the collisional moments at every observation. Rates use a temperature scale: the initial one, or for white noise the
 //! stationary one of GRW (13) (Maxwell) or of the energy balance with the hard-sphere collision
-//! frequency, whichever is larger; thermostats are taken as keeping the initial scale (MS's
-//! scaled states). It is an order of magnitude, shown in the summary; the limit is far above
-//! any useful run.
+//! frequency, whichever is larger. The thermostats heat or cool towards the temperature where
+//! their work balances the collisional cooling: the Gaussian thermostat's `dT/dt = 2 zeta T -
+//! zeta_0 (T/T0)^s T` (MS (12) against Haff's law, `s = lambda/2`) is solved in closed form (a
+//! logistic law for `(T/T0)^s`, which the candidate rate follows), the constant force's
+//! (MS (14)) `dT/dt = (2/3) g <|c|>` is bounded by its balance and by the speed it can add. The
+//! output phase counts the values written (rows times columns). It is an order of magnitude,
+//! shown in the summary; the limit is far above any useful run.
 
 use crate::error::Error;
 use crate::scene::{DriveChoice, KernelChoice, RestitutionLaw, Scene, SchemeChoice};
@@ -25,6 +29,16 @@ pub const MAX_THREADS: usize = 4096;
 /// Bytes of particle memory one ensemble may need.
 pub const MAX_PARTICLE_BYTES: f64 = 64.0 * (1u64 << 30) as f64;
 
+/// Most values in one ensemble's row (observation times times columns, and histograms): each
+/// worker holds one row, the fold two more, and observables.csv writes two text cells per
+/// value, so 2^24 values are 128 MiB a row and about a GB of CSV.
+pub const MAX_ROW_VALUES: usize = 1 << 24;
+
+/// Work units per value written: formatting a cell of the CSV and a point of a chart costs
+/// about as much as a few collision events (measured: 200 ns a value, 1e5 observation times
+/// of GRW Example 3 written in 1.4 s).
+const OUTPUT_UNITS: f64 = 4.0;
+
 /// The estimate of one run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WorkEstimate {
@@ -37,12 +51,33 @@ pub struct WorkEstimate {
     pub updates: f64,
     /// Bytes of particles per ensemble.
     pub particle_bytes: f64,
+    /// Values in one ensemble's row (observation times times columns, and histograms).
+    pub row_values: usize,
+    /// The fold of every ensemble's row and the writing of the outputs.
+    pub output: f64,
 }
 
 impl WorkEstimate {
     /// All work units.
     pub fn total(&self) -> f64 {
-        self.events + self.background + self.updates
+        self.events + self.background + self.updates + self.output
+    }
+}
+
+/// `int_0^t y`, `y(0) = 1`, for the logistic law `y' = r y - c y^2`: with `y = (T/T0)^s` the
+/// candidate rate of a gas under the Gaussian thermostat (`r = 2 s zeta`, `c = s zeta_0`),
+/// relative to its start. Written so that no intermediate overflows where the result does not.
+fn logistic_integral(r: f64, c: f64, t: f64) -> f64 {
+    if c == 0.0 {
+        return if r == 0.0 { t } else { (r * t).exp_m1() / r };
+    }
+    if r == 0.0 {
+        (c * t).ln_1p() / c
+    } else if r > 0.0 {
+        // ln(1 + c (e^{rt} - 1)/r) = r t + ln(e^{-rt} + (c/r)(1 - e^{-rt})).
+        (r * t + ((-r * t).exp() - (c / r) * (-r * t).exp_m1()).ln()) / c
+    } else {
+        (c * (r * t).exp_m1() / r).ln_1p() / c
     }
 }
 
@@ -108,6 +143,15 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         DriveChoice::HostMedium {
             temperature, mass, ..
         } => t0.max(temperature / mass),
+        DriveChoice::ConstantForce(g) => {
+            // (2/3) g <|c|> = zeta_0 (T/T0)^s T with <|c|> = sqrt(8 T/pi): the balance, and
+            // the speed g t the force adds with no collision at all.
+            let (s, zeta0) = haff(t0, gc, lambda, alpha);
+            let drive = 2.0 / 3.0 * g * (8.0 / PI).sqrt();
+            let stationary = (drive * t0.powf(s) / zeta0).powf(1.0 / (s + 0.5));
+            let bound = (t0.sqrt() + g * t_end / 3f64.sqrt()).powi(2);
+            t0.max(stationary.min(bound))
+        }
         _ => t0,
     };
     // A rough gas's rotation can hand its energy to the translation.
@@ -126,13 +170,13 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     // A gas with no drive cools (Haff's law for hard spheres): with the cooling rate
     // zeta0 = (1 - alpha^2)/4 nu0 and the rate going as T^(lambda/2), T = T0 (1 + s zeta0
     // t)^(-1/s), s = lambda/2, the rate integrates to ln(1 + s zeta0 t)/(s zeta0) instead of t.
-    let s = 0.5 * lambda;
-    let nu0 = 4.0 * PI * gc * (4.0 * (t0 / PI).sqrt()).powf(lambda);
-    let zeta0 = 0.25 * (1.0 - alpha * alpha) * nu0;
+    // The Gaussian thermostat adds 2 zeta T: the logistic law of logistic_integral.
+    let (s, zeta0) = haff(t0, gc, lambda, alpha);
     let effective_time = match p.drive {
         DriveChoice::None if !heated && s * zeta0 * t_end > 1e-6 => {
             (s * zeta0 * t_end).ln_1p() / (s * zeta0)
         }
+        DriveChoice::Gaussian(zeta) => logistic_integral(2.0 * s * zeta, s * zeta0, t_end),
         _ => t_end,
     };
     // A host medium's grains at a typical speed `sqrt(3 T)`.
@@ -150,7 +194,10 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
             t_end / (f * mfp / (2.0 * temperature).sqrt())
         }
     };
+    let row_values = crate::run::totals::Totals::row_len_of(scene);
     WorkEstimate {
+        row_values,
+        output: row_values as f64 * (m + OUTPUT_UNITS),
         events: rate * effective_time * m,
         background,
         updates: (n * (scene.times.len() as f64 + steps)
@@ -158,6 +205,14 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
             * m,
         particle_bytes: 32.0 * n,
     }
+}
+
+/// Haff's law for the kernel: `s = lambda/2` and the cooling rate `zeta_0 = (1 - alpha^2)/4
+/// nu_0` of the temperature at `t0` (`nu_0 = 4 pi gamma C <|u|>^lambda`, `<|u|> = 4
+/// sqrt(T/pi)`), so that `dT/dt = -zeta_0 (T/T0)^s T`.
+fn haff(t0: f64, gc: f64, lambda: f64, alpha: f64) -> (f64, f64) {
+    let nu0 = 4.0 * PI * gc * (4.0 * (t0 / PI).sqrt()).powf(lambda);
+    (0.5 * lambda, 0.25 * (1.0 - alpha * alpha) * nu0)
 }
 
 /// Refuses a run whose estimate exceeds the limits (the work one only without `allow_long`),
@@ -181,13 +236,28 @@ pub fn check(scene: &Scene, threads: usize, allow_long: bool) -> Result<WorkEsti
             ),
         });
     }
+    if e.row_values > MAX_ROW_VALUES {
+        return Err(Error::Argument {
+            flag: "observe.intervals".into(),
+            message: format!(
+                "= {} gives {} observation times and {} values per ensemble ({:.1} GiB a row, \
+                 held by every worker, and about {:.0} GB of observables.csv), above the limit \
+                 {MAX_ROW_VALUES}: observe fewer times",
+                scene.times.len() - 1,
+                scene.times.len(),
+                e.row_values,
+                e.row_values as f64 * 8.0 / (1u64 << 30) as f64,
+                e.row_values as f64 * 2.0 * 22.0 / 1e9,
+            ),
+        });
+    }
     let total = e.total();
     if !allow_long && (total.is_nan() || total > MAX_WORK) {
         return Err(Error::Argument {
             flag: "observe.t_end, particles.n, run.ensembles and the rates".into(),
             message: format!(
-                "ask for about {total:.1e} events and particle updates ({:.1e} collision candidates, {:.1e} background events, {:.1e} updates of observations and steps), above the limit {MAX_WORK:.0e} (about a day of one core); shorten the run or pass --allow-long",
-                e.events, e.background, e.updates
+                "ask for about {total:.1e} events and particle updates ({:.1e} collision candidates, {:.1e} background events, {:.1e} updates of observations and steps, {:.1e} for the outputs), above the limit {MAX_WORK:.0e} (about a day of one core); shorten the run or pass --allow-long",
+                e.events, e.background, e.updates, e.output
             ),
         });
     }

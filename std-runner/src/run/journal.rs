@@ -12,22 +12,28 @@
 //! ```
 //!
 //! A record's words are the ensemble's event counts (9 integers) and its row (observables then
-//! histograms, as f64 bits), so a merge folds exactly the values a single run folds. The CRC
-//! covers the record's ensemble, length and words. A file without its end record is a run in
-//! progress or one that was killed: its records up to the first incomplete or damaged one are
-//! kept, the rest is cut off when the run resumes.
+//! histograms, as f64 bits), so a merge folds exactly the values a single run folds. A record's
+//! CRC covers its ensemble, length and words and is seeded with the run's key
+//! ([`Header::key`]: the CRC-32 of what identifies the run), so a record of another run (another
+//! seed, scene, shard or version) spliced in after a valid header fails its check like damage.
+//! A file without its end record is a run in progress or one that was killed: its records up to
+//! the first incomplete or damaged one are kept, the rest is cut off when the run resumes.
+//!
+//! The header is checked whole before anything is computed from it (the shard's range against
+//! its index, count and ensembles, the row length), and a file is read only when it is a
+//! regular file no longer than its header allows ([`read_file`]).
 
 use crate::error::Error;
 use crate::scene::Scene;
 use gdsmc_core::engine::Counts;
 use serde::{Deserialize, Serialize};
-use std::io::Write;
+use std::io::{Read, Write};
 use std::path::Path;
 
 /// The file's first bytes.
 pub const MAGIC: &[u8; 16] = b"GDSMC-ENSEMBLES\n";
-/// The layout's version; a reader refuses any other.
-pub const FORMAT: u32 = 2;
+/// The layout's version; a reader refuses any other (3: records bound to their run).
+pub const FORMAT: u32 = 3;
 /// The file extension of shards and journals.
 pub const EXTENSION: &str = "gdsmc-ensembles";
 /// Event counts per record (the fields of [`Counts`]).
@@ -36,6 +42,10 @@ const COUNT_WORDS: usize = 9;
 const LOCK_WAIT: std::time::Duration = std::time::Duration::from_secs(3);
 /// The end record's ensemble field.
 const END: u64 = u64::MAX;
+/// Most bytes of a header's JSON (the scene's text is in it).
+const MAX_HEADER: usize = 16 << 20;
+/// Most values per ensemble a header may state: the most a run may have.
+const MAX_ROW: usize = crate::run::estimate::MAX_ROW_VALUES;
 
 /// What a journal is of: enough to rebuild the scene and to tell journals of different runs
 /// apart.
@@ -91,7 +101,7 @@ impl Header {
             shard,
             start: range.start,
             end: range.end,
-            row_len: crate::run::totals::Totals::new(scene).row_len(),
+            row_len: crate::run::totals::Totals::row_len_of(scene),
         }
     }
 
@@ -107,7 +117,11 @@ impl Header {
             .collect();
         let scene =
             crate::scene::parse_with(Path::new(&self.scene_path), &self.scene_text, &overrides)?;
-        if fingerprint(&scene) != self.fingerprint || scene.seed != self.seed {
+        if fingerprint(&scene) != self.fingerprint
+            || scene.seed != self.seed
+            || scene.ensembles != self.ensembles
+            || crate::run::totals::Totals::row_len_of(&scene) != self.row_len
+        {
             return Err(Error::Journal {
                 path: path.to_path_buf(),
                 message: format!(
@@ -119,6 +133,65 @@ impl Header {
             });
         }
         Ok(scene)
+    }
+
+    /// The run's key: the CRC-32 of everything [`Header::same_run`] compares, which seeds every
+    /// record's CRC, so a record checks only in a file of its own run.
+    pub fn key(&self) -> u32 {
+        let id = format!(
+            "{}\n{}\n{}\n{}\n{:?}\n{}\n{}\n{}",
+            self.gdsmc_version,
+            self.fingerprint,
+            self.seed,
+            self.ensembles,
+            self.shard,
+            self.start,
+            self.end,
+            self.row_len
+        );
+        crc32fast::hash(id.as_bytes())
+    }
+
+    /// What is wrong with a header read from a file, if anything: a shard's range must be its
+    /// index's (`0 <= K < S <= ensembles`), a whole run's all ensembles, the row length
+    /// bounded. Checked before any arithmetic on it.
+    fn check(&self) -> Result<(), String> {
+        if self.start > self.end || self.end > self.ensembles {
+            return Err(format!(
+                "inconsistent header: ensembles {}..{} of {}",
+                self.start, self.end, self.ensembles
+            ));
+        }
+        if self.row_len > MAX_ROW {
+            return Err(format!(
+                "inconsistent header: {} values per ensemble (at most {MAX_ROW})",
+                self.row_len
+            ));
+        }
+        let expected = match self.shard {
+            Some((k, s)) => {
+                if s == 0 || k >= s || s > self.ensembles {
+                    return Err(format!(
+                        "inconsistent header: shard {k}/{s} of {} ensembles (a shard K/S needs \
+                         0 <= K < S <= ensembles)",
+                        self.ensembles
+                    ));
+                }
+                crate::run::shard::range(k, s, self.ensembles)
+            }
+            None => 0..self.ensembles,
+        };
+        if self.start != expected.start || self.end != expected.end {
+            return Err(format!(
+                "inconsistent header: {} holds ensembles {}..{}, not {}..{}",
+                shard_words(self.shard),
+                expected.start,
+                expected.end,
+                self.start,
+                self.end
+            ));
+        }
+        Ok(())
     }
 
     /// Whether a journal with this header holds ensembles of the run `other` describes (the
@@ -277,25 +350,32 @@ pub fn header_bytes(h: &Header) -> Vec<u8> {
     out
 }
 
-fn record_bytes(ensemble: u64, words: &[u64]) -> Vec<u8> {
+/// A record's CRC: CRC-32 of its bytes, seeded with the run's key ([`Header::key`]).
+fn record_crc(key: u32, bytes: &[u8]) -> u32 {
+    let mut h = crc32fast::Hasher::new_with_initial(key);
+    h.update(bytes);
+    h.finalize()
+}
+
+fn record_bytes(key: u32, ensemble: u64, words: &[u64]) -> Vec<u8> {
     let mut out = Vec::with_capacity(16 + 8 * words.len());
     out.extend_from_slice(&ensemble.to_le_bytes());
     out.extend_from_slice(&(words.len() as u32).to_le_bytes());
     for w in words {
         out.extend_from_slice(&w.to_le_bytes());
     }
-    let crc = crc32fast::hash(&out);
+    let crc = record_crc(key, &out);
     out.extend_from_slice(&crc.to_le_bytes());
     out
 }
 
-/// One ensemble's record.
-pub fn ensemble_record(ensemble: u64, row: &[f64], counts: &Counts) -> Vec<u8> {
+/// One ensemble's record in a file of the run whose key is `key` ([`Header::key`]).
+pub fn ensemble_record(key: u32, ensemble: u64, row: &[f64], counts: &Counts) -> Vec<u8> {
     let words: Vec<u64> = counts_words(counts)
         .into_iter()
         .chain(row.iter().map(|x| x.to_bits()))
         .collect();
-    record_bytes(ensemble, &words)
+    record_bytes(key, ensemble, &words)
 }
 
 /// How the ensembles of a finished file were run.
@@ -309,9 +389,11 @@ pub struct Timing {
     pub threads: u64,
 }
 
-/// The end record: the file is complete with `ensembles` records.
-pub fn end_record(ensembles: u64, t: Timing) -> Vec<u8> {
+/// The end record: the file (of the run whose key is `key`) is complete with `ensembles`
+/// records.
+pub fn end_record(key: u32, ensembles: u64, t: Timing) -> Vec<u8> {
     record_bytes(
+        key,
         END,
         &[ensembles, t.wall.to_bits(), t.cpu.to_bits(), t.threads],
     )
@@ -371,6 +453,11 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
         )));
     }
     let len = u32_of(&head[4..]) as usize;
+    if len > MAX_HEADER {
+        return Err(bad(format!(
+            "a header of {len} bytes (at most {MAX_HEADER}): not a gdsmc ensemble file"
+        )));
+    }
     let json = take(&mut b, len).ok_or_else(|| bad("truncated in its header".into()))?;
     let crc = take(&mut b, 4).ok_or_else(|| bad("truncated in its header".into()))?;
     if crc32fast::hash(json) != u32_of(crc) {
@@ -378,12 +465,8 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
     }
     let header: Header =
         serde_json::from_slice(json).map_err(|e| bad(format!("unreadable header: {e}")))?;
-    if header.start > header.end || header.end > header.ensembles {
-        return Err(bad(format!(
-            "inconsistent header: ensembles {}..{} of {}",
-            header.start, header.end, header.ensembles
-        )));
-    }
+    header.check().map_err(bad)?;
+    let key = header.key();
     let words = COUNT_WORDS + header.row_len;
     let mut rows = Vec::new();
     let mut valid_len = (bytes.len() - b.len()) as u64;
@@ -409,9 +492,10 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
             damage = Some(format!("truncated in the record of ensemble {at}"));
             break;
         };
-        if crc32fast::hash(&rec[..12 + 8 * n]) != u32_of(crc) {
+        if record_crc(key, &rec[..12 + 8 * n]) != u32_of(crc) {
             damage = Some(format!(
-                "damaged at the record of ensemble {at} (checksum mismatch)"
+                "damaged at the record of ensemble {at} (checksum mismatch: damaged, or a \
+                 record of another run)"
             ));
             break;
         }
@@ -471,6 +555,71 @@ pub fn read(path: &Path, bytes: &[u8]) -> Result<Contents, Error> {
     })
 }
 
+/// The most bytes a file with this header can hold: the header, every ensemble's record and
+/// the end record (`None` when that does not fit a `u64`).
+fn most_bytes(header_len: u64, h: &Header) -> Option<u64> {
+    let record = 16 + 8 * (COUNT_WORDS as u64 + h.row_len as u64);
+    (h.end - h.start)
+        .checked_mul(record)?
+        .checked_add(header_len)?
+        .checked_add(16 + 8 * 4)
+}
+
+/// Reads an ensemble file's bytes from an open file: the header first, checked, then at most
+/// the bytes its header allows (a longer file is refused before it is read whole).
+fn read_bounded(path: &Path, mut f: impl std::io::Read) -> Result<Vec<u8>, Error> {
+    let bad = |message: String| Error::Journal {
+        path: path.to_path_buf(),
+        message,
+    };
+    let io = |e: std::io::Error| bad(format!("cannot read: {e}"));
+    let mut bytes = Vec::new();
+    (&mut f)
+        .take(MAGIC.len() as u64 + 8)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() < MAGIC.len() + 8 {
+        return Ok(bytes); // too short for a header: read() names it
+    }
+    let len = (u32_of(&bytes[MAGIC.len() + 4..]) as usize).min(MAX_HEADER + 1);
+    (&mut f)
+        .take(len as u64 + 4)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    // A bad header is read()'s to name; only a good one bounds the rest.
+    let header = read(path, &bytes)?.header;
+    let most = most_bytes(bytes.len() as u64, &header)
+        .ok_or_else(|| bad("inconsistent header: its size overflows".into()))?;
+    f.take(most - bytes.len() as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > most {
+        return Err(bad(format!(
+            "longer than its header allows ({} ensembles of {} values: at most {most} bytes)",
+            header.end - header.start,
+            header.row_len
+        )));
+    }
+    Ok(bytes)
+}
+
+/// Reads an ensemble file (a shard given to merge): only a regular file (a FIFO, device or
+/// directory is refused by its type), and no longer than its header allows.
+pub fn read_file(path: &Path) -> Result<Vec<u8>, Error> {
+    let f = crate::report::files::open_regular(path).map_err(|e| Error::Journal {
+        path: path.to_path_buf(),
+        message: format!("cannot read: {e}"),
+    })?;
+    read_bounded(path, f)
+}
+
+/// Whether `bytes` can be the start of an ensemble file: empty, or beginning with (a prefix
+/// of) the magic. Anything else at a journal's place is not gdsmc's to overwrite.
+fn is_own(bytes: &[u8]) -> bool {
+    let n = bytes.len().min(MAGIC.len());
+    bytes[..n] == MAGIC[..n]
+}
+
 /// A journal file being written: records appended as ensembles finish in order, flushed after
 /// each, so a run killed at any moment leaves every finished ensemble readable.
 pub struct Writer {
@@ -481,19 +630,17 @@ pub struct Writer {
 impl Writer {
     /// Opens (or creates) the journal at `path` for this process alone (an exclusive lock,
     /// held until the writer is dropped: two runs into one output place would interleave
-    /// their records) and returns what it holds.
-    pub fn open(path: &Path) -> Result<(Self, Vec<u8>), Error> {
+    /// their records) and returns what it holds, or why that cannot be continued. A file that
+    /// is not gdsmc's (another's file, a link, a FIFO) is refused and left as it is.
+    #[allow(clippy::type_complexity)]
+    pub fn open(path: &Path) -> Result<(Self, Result<Vec<u8>, String>), Error> {
         let werr = |source| Error::Write {
             path: path.to_path_buf(),
             source,
         };
-        let mut file = std::fs::OpenOptions::new()
-            .read(true)
-            .write(true)
-            .create(true)
-            .truncate(false)
-            .open(path)
-            .map_err(werr)?;
+        // Never through a link (one planted at the journal's place would have its target
+        // overwritten), only a regular file.
+        let mut file = crate::report::files::open_own(path)?;
         // A process that was just killed (e.g. the ranks of an mpirun ended by a signal) can
         // hold the lock for a moment longer: wait up to LOCK_WAIT before giving up.
         let asked = std::time::Instant::now();
@@ -515,8 +662,24 @@ impl Writer {
                 Err(std::fs::TryLockError::Error(e)) => return Err(werr(e)),
             }
         }
-        let mut bytes = Vec::new();
-        std::io::Read::read_to_end(&mut file, &mut bytes).map_err(werr)?;
+        let mut head = Vec::new();
+        (&mut file)
+            .take(MAGIC.len() as u64)
+            .read_to_end(&mut head)
+            .map_err(werr)?;
+        if !is_own(&head) {
+            return Err(Error::Journal {
+                path: path.to_path_buf(),
+                message: "is not a gdsmc ensemble journal (no GDSMC-ENSEMBLES magic), and gdsmc \
+                          does not overwrite what it did not write: move it away or choose \
+                          another --out"
+                    .into(),
+            });
+        }
+        std::io::Seek::rewind(&mut file).map_err(werr)?;
+        // A gdsmc file that cannot be continued (another format, a header that does not hold,
+        // longer than its header allows) is the caller's to start anew.
+        let bytes = read_bounded(path, &mut file).map_err(|e| e.to_string());
         Ok((
             Writer {
                 path: path.to_path_buf(),
@@ -564,10 +727,10 @@ mod tests {
             overrides: vec![("--n".into(), "particles.n=8".into())],
             fingerprint: "fp".into(),
             seed: 3,
-            ensembles: 10,
+            ensembles: 6,
             shard: Some((1, 2)),
-            start: 5,
-            end: 8,
+            start: 3,
+            end: 6,
             row_len: 3,
         }
     }
@@ -595,14 +758,14 @@ mod tests {
         let mut b = header_bytes(&header());
         let head = b.len();
         for (k, (row, c)) in rows().iter().enumerate() {
-            b.extend(ensemble_record(5 + k as u64, row, c));
+            b.extend(ensemble_record(header().key(), 3 + k as u64, row, c));
         }
         let t = Timing {
             wall: 1.5,
             cpu: 2.5,
             threads: 2,
         };
-        b.extend(end_record(3, t));
+        b.extend(end_record(header().key(), 3, t));
         (b, head)
     }
 
@@ -643,7 +806,7 @@ mod tests {
     fn no_record_beyond_the_range() {
         let mut b = header_bytes(&header());
         for (k, (row, c)) in rows().iter().chain(rows().iter()).enumerate() {
-            b.extend(ensemble_record(5 + k as u64, row, c));
+            b.extend(ensemble_record(header().key(), 3 + k as u64, row, c));
         }
         let c = read(Path::new("x"), &b).unwrap();
         assert_eq!(c.rows.len(), 3);

@@ -262,6 +262,9 @@ pub struct JournalRun {
     pub resumed: u64,
     /// Why an existing journal was not continued, when one was there.
     pub discarded: Option<String>,
+    /// Why the journal continued was cut short (damage, or records of another run after its
+    /// last good record), when it was: those ensembles were run again.
+    pub damage: Option<String>,
 }
 
 impl Journaled<'_> {
@@ -280,17 +283,25 @@ impl Journaled<'_> {
         let mut discarded = None;
         let (mut writer, bytes) = journal::Writer::open(self.path)?;
         let mut kept = None;
-        if !self.fresh && !bytes.is_empty() {
-            match journal::read(self.path, &bytes) {
+        let mut damage = None;
+        match bytes {
+            Ok(b) if self.fresh || b.is_empty() => {}
+            Ok(b) => match journal::read(self.path, &b) {
                 Ok(c) if c.header.same_run(&self.header) => {
                     for (row, counts) in &c.rows {
                         totals.push(row, counts);
                     }
                     kept = Some(c.valid_len);
+                    // Bytes after the last good record are cut off: say why.
+                    if c.valid_len < b.len() as u64 {
+                        damage = c.damage;
+                    }
                 }
                 Ok(c) => discarded = Some(c.header.difference(&self.header)),
                 Err(e) => discarded = Some(e.to_string()),
-            }
+            },
+            Err(why) if !self.fresh => discarded = Some(why),
+            Err(_) => {}
         }
         match kept {
             Some(len) => writer.keep(len)?,
@@ -299,19 +310,29 @@ impl Journaled<'_> {
         let resumed = totals.ensembles;
         progress(resumed);
         let range = self.header.start + resumed..self.header.end;
-        job(scene, clock.threads, progress, stop, |job| {
+        let key = self.header.key();
+        let ran = job(scene, clock.threads, progress, stop, |job| {
             job.fold(range, &mut totals, &mut |e, row, c| {
-                writer.append(&journal::ensemble_record(e, row, c))
+                writer.append(&journal::ensemble_record(key, e, row, c))
             })
-        })?;
+        });
+        if let Err(e) = ran {
+            // A journal with no finished ensemble holds nothing to continue: it goes.
+            if totals.ensembles == 0 {
+                drop(writer);
+                let _ = std::fs::remove_file(self.path);
+            }
+            return Err(e);
+        }
         let timing = clock.timing();
         if totals.ensembles == self.header.end - self.header.start {
-            writer.append(&journal::end_record(totals.ensembles, timing))?;
+            writer.append(&journal::end_record(key, totals.ensembles, timing))?;
         }
         Ok(JournalRun {
             stats: stats_of(scene, totals, timing),
             resumed,
             discarded,
+            damage,
         })
     }
 }

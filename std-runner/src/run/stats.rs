@@ -23,7 +23,19 @@ pub fn level_999() -> f64 {
 /// Student-t quantile with `samples - 1` degrees of freedom at the two-sided level of
 /// [`LAMBDA_999`] (see the module docs). NaN below two samples.
 pub fn multiplier(samples: u64) -> f64 {
-    quantile_t(samples.saturating_sub(1), level_999())
+    // The inverse of Student's t costs microseconds and every cell of a run asks for the same
+    // one: the last answer is kept (per thread; the same bits as computing it again).
+    thread_local! {
+        static LAST: std::cell::Cell<Option<(u64, f64)>> = const { std::cell::Cell::new(None) };
+    }
+    LAST.with(|last| match last.get() {
+        Some((m, x)) if m == samples => x,
+        _ => {
+            let x = quantile_t(samples.saturating_sub(1), level_999());
+            last.set(Some((samples, x)));
+            x
+        }
+    })
 }
 
 /// The two-sided quantile of Student's t with `dof` degrees of freedom: the `x` with

@@ -44,6 +44,12 @@ impl Totals {
         }
     }
 
+    /// Values in one ensemble's row of `scene`, without allocating the fold: the observables
+    /// (`times x columns`), then the histograms.
+    pub fn row_len_of(scene: &Scene) -> usize {
+        scene.times.len() * names(scene).len() + scene.extra_len()
+    }
+
     /// Values in one ensemble's row: the observables (`times x columns`), then the histograms.
     pub fn row_len(&self) -> usize {
         self.acc.len() + self.hist.len()
