@@ -82,7 +82,9 @@ pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
         }
     };
     let m = match e {
-        EngineError::OffGrid => msg!("the time is not a multiple of config.dt (splitting schemes)"),
+        EngineError::OffGrid => msg!(
+            "the time is not a whole multiple of config.dt from the start, at least one step on (splitting schemes)"
+        ),
         _ => msg!("{e}"),
     };
     Failure(s, m)

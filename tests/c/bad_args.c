@@ -213,6 +213,11 @@ static void schemes_and_host_medium(void) {
     STATUS(gdsmc_sim_advance(sim, 0.5, &o), GDSMC_OK, "");
     EXPECT(o.t == 0.5, "strang t = %g", o.t);
     STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
+    /* A step longer than the advance takes no step: refused, not the start's state as t = 8. */
+    c.dt = 1e300;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_OK, "");
+    STATUS(gdsmc_sim_advance(sim, 8.0, &o), GDSMC_INVALID_ARGUMENT, "at least one step");
+    STATUS(gdsmc_sim_destroy(&sim), GDSMC_OK, "");
 
     c = base(); c.drive = GDSMC_DRIVE_HOST_MEDIUM; c.background_kernel = 5;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.background_kernel = 5");

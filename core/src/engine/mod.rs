@@ -260,7 +260,10 @@ impl core::fmt::Display for EngineError {
                     "{what} became non-finite (the velocities left the range of f64)"
                 );
             }
-            EngineError::OffGrid => "the time is not a multiple of the scheme's time step",
+            EngineError::OffGrid => {
+                "the time is not on the scheme's grid: a whole multiple of the time step from the \
+                 start, at least one step on"
+            }
             EngineError::ParticleCount => "the particle buffer does not hold n particles",
             EngineError::Spins => "a rough gas needs a spin buffer of n spins beside its particles",
         })
