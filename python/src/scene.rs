@@ -34,9 +34,12 @@ impl Scene {
         })
     }
 
-    /// This scene with one more override (validated).
+    /// This scene with one more override (validated). An earlier override of the same key
+    /// was validated when it was made and is replaced (a scene's `set` of a key set before
+    /// changes it), so no key is ever given twice.
     pub(crate) fn with(&self, o: sc::Override) -> PyResult<Self> {
         let mut overrides = self.overrides.clone();
+        overrides.retain(|e| !e.overlaps(&o));
         overrides.push(o);
         Scene::build(self.path.clone(), self.text.clone(), overrides)
     }

@@ -162,6 +162,16 @@ def test_set_and_properties():
     assert len(t.times) == len(gdsmc.run(t, ensembles=3).times)
 
 
+def test_setting_a_key_again_changes_it():
+    # Each set is validated when made; setting the key again replaces it (the command refuses
+    # a key given twice, where the first value would never be checked).
+    s = gdsmc.Scene.from_file(SCENES / "grw-example3.toml").set("particles.n", 64)
+    t = s.set("particles.n", 32).set("collisions.restitution", 0.4)
+    assert t.n == 32
+    assert t.overrides == ["particles.n=32", "collisions.restitution=0.4"]
+    assert gdsmc.run(t, n=16, ensembles=2).scene.n == 16
+
+
 def test_progress_callback_counts_every_ensemble():
     seen = []
     r = gdsmc.run(SCENES / "grw-example3.toml", n=200, ensembles=30, progress=seen.append)

@@ -35,6 +35,18 @@ impl Override {
         }
     }
 
+    /// Whether this override and `other` set the same value: the same key, or one a table
+    /// holding the other's key.
+    pub fn overlaps(&self, other: &Override) -> bool {
+        let (a, b) = (self.key(), other.key());
+        let nested = |outer: &str, inner: &str| {
+            inner.len() > outer.len()
+                && inner.starts_with(outer)
+                && inner.as_bytes()[outer.len()] == b'.'
+        };
+        a == b || nested(a, b) || nested(b, a)
+    }
+
     fn key(&self) -> &str {
         self.assignment
             .split_once('=')
@@ -60,16 +72,10 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
     // the later value replace the earlier before either is checked: refused, naming both.
     for (i, a) in overrides.iter().enumerate() {
         for b in &overrides[..i] {
-            let (ka, kb) = (a.key(), b.key());
-            let nested = |outer: &str, inner: &str| {
-                inner.len() > outer.len()
-                    && inner.starts_with(outer)
-                    && inner.as_bytes()[outer.len()] == b'.'
-            };
-            if ka == kb || nested(ka, kb) || nested(kb, ka) {
+            if a.overlaps(b) {
                 return Err(bad(
                     Some(a),
-                    ka,
+                    a.key(),
                     format!(
                         "is set twice ({} {} and {} {}): give each key once",
                         b.source, b.assignment, a.source, a.assignment

@@ -446,9 +446,17 @@ fn the_smaller_items() {
         .output()
         .unwrap();
     ok(&o);
-    assert!(String::from_utf8_lossy(&o.stdout).contains("[no-intervals]"));
-    let summary = std::fs::read_to_string(one.join("summary.json")).unwrap();
-    assert!(summary.contains("\"no-intervals\""), "{summary}");
+    assert!(String::from_utf8_lossy(&o.stdout).contains("note: one ensemble"));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(one.join("summary.json")).unwrap()).unwrap();
+    let note = summary["no_intervals"].as_str().unwrap_or("");
+    assert!(note.contains("_ci column"), "{summary}");
+    // Two ensembles: no such note.
+    let two = r.join("two");
+    ok(&small_run("grw-example3", &["--out", s(&two)]));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(two.join("summary.json")).unwrap()).unwrap();
+    assert!(summary["no_intervals"].is_null(), "{summary}");
 
     refused(
         &small_run(

@@ -17,11 +17,32 @@ pub const PRECISION_RATIO: f64 = 1e-6;
 /// One warning.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Warning {
-    /// Short code: `no-intervals`, `non-finite`, `unsteady`, `tail-not-asymptotic`, `splitting-step`, `time-step`, `majorant`,
+    /// Short code: `non-finite`, `unsteady`, `tail-not-asymptotic`, `splitting-step`, `time-step`, `majorant`,
     /// `restitution-clamped`, `precision`.
     pub code: &'static str,
     /// What fired, how large the error is expected to be, and what to do.
     pub message: String,
+}
+
+/// What a run of one ensemble has no interval for, in words (`None` for two or more): every
+/// `_ci` column of observables.csv is NaN (a confidence interval needs the spread of two
+/// ensembles: it is undefined, not zero), while a steady-state average still has one, from
+/// the spread of its observation times (RW Section 4.2). Not a warning: RW's steady runs are
+/// single systems by design.
+pub fn no_intervals(stats: &RunStats) -> Option<String> {
+    (stats.ensembles == 1).then(|| {
+        let steady = if stats.steady.is_some() {
+            " The steady-state averages have intervals from the spread of their observation \
+             times (RW Section 4.2)."
+        } else {
+            ""
+        };
+        format!(
+            "one ensemble: every _ci column of observables.csv is NaN, since a confidence \
+             interval needs the spread of at least two ensembles (it is undefined, not zero); \
+             run with --ensembles 2 or more for intervals.{steady}"
+        )
+    })
 }
 
 /// The energy relaxation rate `k = nu (1 - alpha^2) / 4` from the run's collision frequency
@@ -198,14 +219,6 @@ fn tail_not_asymptotic(scene: &Scene, stats: &RunStats) -> Option<Warning> {
 /// Every warning of a finished run.
 pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     let mut w: Vec<Warning> = Vec::new();
-    if stats.ensembles == 1 {
-        w.push(Warning {
-            code: "no-intervals",
-            message: "one ensemble: every _ci column is NaN, since a confidence interval needs \
-                      the spread of at least two ensembles (it is undefined, not zero). Run with --ensembles 2 or more for intervals."
-                .into(),
-        });
-    }
     w.extend(non_finite(stats));
     w.extend(unsteady(scene, stats));
     w.extend(tail_not_asymptotic(scene, stats));

@@ -169,6 +169,7 @@ pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) ->
     });
     serde_json::json!({
         "warnings": warnings,
+        "no_intervals": crate::analysis::warnings::no_intervals(stats),
         "thermostat": thermostat,
         "reduced_distribution": reduced,
         "tail": tail,

@@ -171,6 +171,9 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
     if let Some(b) = crate::reference::thermostat::GaussianBalance::of(scene) {
         let _ = writeln!(s, "\ndrive: {}", b.describe());
     }
+    if let Some(note) = crate::analysis::warnings::no_intervals(stats) {
+        let _ = writeln!(s, "\nnote: {note}");
+    }
     let warnings = crate::analysis::warnings::check(scene, stats);
     if !warnings.is_empty() {
         let _ = writeln!(
