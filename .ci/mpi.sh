@@ -55,4 +55,19 @@ ls -la "$W"/.big-mpi.* 2>/dev/null || echo "(no journal left: the job was killed
 grep -E "continued|not continued|MPI ranks" "$W/rerun.log" || true
 same "$W/big-one" "$W/big-mpi"
 if ls "$W"/.big-mpi.* >/dev/null 2>&1; then echo "journals left after a finished run"; exit 1; fi
+# A user's directory at --out: refused by rank 0 before any work, every rank told (no hang),
+# the directory left as it was; more ranks than ensembles refused by every rank alike.
+mkdir -p "$W/users" && echo draft > "$W/users/thesis.tex"
+if timeout 120 "${MPIRUN[@]}" $G run scenes/grw-example3.toml --n 64 --ensembles 4 \
+    --out "$W/users" > "$W/users.log" 2>&1; then
+    echo "mpirun wrote into a user's directory"; exit 1
+fi
+grep -q "gdsmc did not write" "$W/users.log" || { cat "$W/users.log"; exit 1; }
+[ "$(ls "$W/users")" = "thesis.tex" ] && [ "$(cat "$W/users/thesis.tex")" = "draft" ]
+if timeout 120 mpirun --allow-run-as-root --oversubscribe -n 3 $G run scenes/grw-example3.toml \
+    --n 64 --ensembles 2 --out "$W/few" > "$W/few.log" 2>&1; then
+    echo "3 ranks ran 2 ensembles"; exit 1
+fi
+grep -q "3 ranks for 2 ensembles" "$W/few.log" || { cat "$W/few.log"; exit 1; }
+echo "refused: a user's directory, more ranks than ensembles"
 cargo clippy -p gdsmc --features mpi --all-targets --target-dir target/mpi -- -D warnings

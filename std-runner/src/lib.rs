@@ -7,13 +7,16 @@
 //! The modules depend on each other in one direction:
 //! [`run`] (ensembles, statistics) <- [`reference`] (exact and hydrodynamic curves) <-
 //! [`analysis`] (tails, distributions, warnings) <- [`report`] (files, charts, summary) <-
-//! [`reproduce`] (the papers' tables) and [`bench`] (speed).
+//! [`reproduce`] (the papers' tables) and [`bench`] (speed). Beneath them all, [`files`]:
+//! writing and reading files safely (never through a link, never over what gdsmc did not
+//! write).
 
 #![deny(unsafe_code)]
 
 pub mod analysis;
 pub mod bench;
 pub mod error;
+pub mod files;
 pub mod reference;
 pub mod report;
 pub mod reproduce;

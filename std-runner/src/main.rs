@@ -397,6 +397,7 @@ fn mpi_run(
         |sh, range| run::journal::Header::new(sc, path, text, overrides, Some(sh), range),
         &dir,
         threads,
+        || gdsmc_runner::report::set::check_replaceable(&dir),
         |m| {
             let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
             write_outputs(&m.scene, &m.stats, set, &dir, format)?;
@@ -590,7 +591,7 @@ fn reproduce(
     })?;
     let report = dir.join("report.md");
     // A report.md that is not gdsmc's is refused before any table runs, not replaced.
-    gdsmc_runner::report::files::check_own(&report, REPORT_SIGNATURE)?;
+    gdsmc_runner::files::check_own(&report, REPORT_SIGNATURE)?;
     let start = std::time::Instant::now();
     let mut done = Vec::new();
     let mut write_err = None;
@@ -598,9 +599,7 @@ fn reproduce(
         print!("{}", reproduce::text(t));
         done.push(t.clone());
         let md = reproduce::markdown(&done, &opts, start.elapsed().as_secs_f64());
-        if let Err(e) =
-            gdsmc_runner::report::files::write_own(&report, md.as_bytes(), REPORT_SIGNATURE)
-        {
+        if let Err(e) = gdsmc_runner::files::write_own(&report, md.as_bytes(), REPORT_SIGNATURE) {
             write_err.get_or_insert(e);
         }
     })?;

@@ -13,9 +13,9 @@
 //! no-splitting scheme are RW's efficiency comparison (RW: Euler about 100, Strang about 2).
 
 use crate::error::Error;
+use crate::files::write_own;
 use crate::reference::curves::maxwell_temperature;
 use crate::report::charts::{Series, Style, profile};
-use crate::report::files::write_own;
 use crate::run;
 use crate::run::stats::LAMBDA_999;
 use crate::scene::{Scene, SchemeChoice};

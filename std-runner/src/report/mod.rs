@@ -1,17 +1,16 @@
 //! What a run leaves behind: observables.csv, histograms.csv, reduced.csv, marginal.csv,
-//! summary.json and the charts, each written whole ([`files::write_atomic`]), and the text
+//! summary.json and the charts, each written whole ([`crate::files::write_atomic`]), and the text
 //! summary the command prints.
 
 pub mod charts;
-pub mod files;
 pub mod set;
 pub mod summary;
 
 use crate::error::Error;
+use crate::files::write_atomic;
 use crate::reference::curves::ReferenceCurve;
 use crate::run::RunStats;
 use crate::scene::Scene;
-use files::write_atomic;
 use std::path::Path;
 
 /// observables.csv: `t`, then `NAME` and `NAME_ci` for every observable, then the reference

@@ -222,7 +222,7 @@ impl OutputSet {
             path: path.clone(),
             source: std::io::Error::other(e),
         })?;
-        crate::report::files::write_atomic(&path, &text)?;
+        crate::files::write_atomic(&path, &text)?;
         self.swap_in()?;
         self.committed = true;
         written.push(MANIFEST.to_string());
@@ -274,7 +274,7 @@ struct Manifest {
 /// Reads `dir`'s manifest; a file name that is not a plain name (a path) is refused.
 fn read_manifest(dir: &Path) -> Result<Manifest, String> {
     let path = dir.join(MANIFEST);
-    let f = crate::report::files::open_regular(&path).map_err(|e| format!("{MANIFEST}: {e}"))?;
+    let f = crate::files::open_regular(&path).map_err(|e| format!("{MANIFEST}: {e}"))?;
     let mut text = Vec::new();
     std::io::Read::read_to_end(&mut std::io::Read::take(f, 16 << 20), &mut text)
         .map_err(|e| format!("{MANIFEST}: {e}"))?;
@@ -305,7 +305,7 @@ pub fn verify(dir: &Path) -> Result<serde_json::Value, String> {
     let m = read_manifest(dir)?;
     for (name, len, sum) in &m.files {
         let path = dir.join(name);
-        let f = crate::report::files::open_regular(&path).map_err(|e| format!("{name}: {e}"))?;
+        let f = crate::files::open_regular(&path).map_err(|e| format!("{name}: {e}"))?;
         if f.metadata().map_err(|e| format!("{name}: {e}"))?.len() != *len {
             return Err(format!("{name} is not the file the manifest lists"));
         }

@@ -177,7 +177,7 @@ impl Header {
                         self.ensembles
                     ));
                 }
-                crate::run::shard::range(k, s, self.ensembles)
+                range(k, s, self.ensembles)
             }
             None => 0..self.ensembles,
         };
@@ -265,6 +265,13 @@ pub fn shard_words(shard: Option<(u64, u64)>) -> String {
         Some((k, s)) => format!("shard {k}/{s}"),
         None => "a whole run".into(),
     }
+}
+
+/// The ensembles of shard `k` of `s` in a run of `m`: `[k m / s, (k + 1) m / s)` (sizes differ
+/// by at most one; every ensemble in exactly one shard).
+pub fn range(k: u64, s: u64, m: u64) -> std::ops::Range<u64> {
+    let at = |k: u64| (k as u128 * m as u128 / s as u128) as u64;
+    at(k)..at(k + 1)
 }
 
 /// The file name of shard `k` of `s` of the scene `name`.
@@ -606,7 +613,7 @@ fn read_bounded(path: &Path, mut f: impl std::io::Read) -> Result<Vec<u8>, Error
 /// Reads an ensemble file (a shard given to merge): only a regular file (a FIFO, device or
 /// directory is refused by its type), and no longer than its header allows.
 pub fn read_file(path: &Path) -> Result<Vec<u8>, Error> {
-    let f = crate::report::files::open_regular(path).map_err(|e| Error::Journal {
+    let f = crate::files::open_regular(path).map_err(|e| Error::Journal {
         path: path.to_path_buf(),
         message: format!("cannot read: {e}"),
     })?;
@@ -640,7 +647,7 @@ impl Writer {
         };
         // Never through a link (one planted at the journal's place would have its target
         // overwritten), only a regular file.
-        let mut file = crate::report::files::open_own(path)?;
+        let mut file = crate::files::open_own(path)?;
         // A process that was just killed (e.g. the ranks of an mpirun ended by a signal) can
         // hold the lock for a moment longer: wait up to LOCK_WAIT before giving up.
         let asked = std::time::Instant::now();

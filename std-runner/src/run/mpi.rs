@@ -66,16 +66,48 @@ impl World {
 
 /// Runs this rank's shard of `scene` (`header_of(shard, range)` gives its journal header) and,
 /// on rank 0, merges every rank's and hands the result to `write`; the journals are removed
-/// when `write` succeeds. Returns the merged run on rank 0, `None` on the others.
+/// when `write` succeeds. Before any work rank 0 asks `check_place` whether the output place
+/// may be written (every rank hears the answer). Returns the merged run on rank 0, `None` on
+/// the others.
+#[allow(clippy::too_many_arguments)]
 pub fn run(
     w: &World,
     scene: &Scene,
     header_of: impl Fn((u64, u64), std::ops::Range<u64>) -> Header,
     dir: &Path,
     threads: usize,
+    check_place: impl FnOnce() -> Result<(), Error>,
     write: impl FnOnce(&Merged) -> Result<(), Error>,
 ) -> Result<Option<Merged>, Error> {
     let (r, p) = (w.rank(), w.size());
+    // Every rank decides this alike, before any message: no rank waits for another.
+    if p > scene.ensembles {
+        return Err(Error::Argument {
+            flag: "mpirun -n".into(),
+            message: format!(
+                "{p} ranks for {} ensembles (run.ensembles) would leave ranks without an \
+                 ensemble; use at most {} ranks",
+                scene.ensembles, scene.ensembles
+            ),
+        });
+    }
+    // The output place is rank 0's to check, before any work; every rank hears its verdict.
+    let mut place_ok = 1u8;
+    let place = if r == 0 {
+        let c = check_place();
+        place_ok = u8::from(c.is_ok());
+        c
+    } else {
+        Ok(())
+    };
+    w.world.process_at_rank(0).broadcast_into(&mut place_ok);
+    place?;
+    if place_ok == 0 {
+        return Err(Error::Refused {
+            path: dir.to_path_buf(),
+            message: "refused by rank 0 (its message says why)".into(),
+        });
+    }
     let range = shard::range(r, p, scene.ensembles);
     let path = journal::beside(dir, Some((r, p)));
     let job = Journaled {

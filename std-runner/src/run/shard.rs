@@ -14,13 +14,6 @@ use crate::scene::Scene;
 use std::borrow::Cow;
 use std::path::PathBuf;
 
-/// The ensembles of shard `k` of `s` in a run of `m`: `[k m / s, (k + 1) m / s)` (sizes differ
-/// by at most one; every ensemble in exactly one shard).
-pub fn range(k: u64, s: u64, m: u64) -> std::ops::Range<u64> {
-    let at = |k: u64| (k as u128 * m as u128 / s as u128) as u64;
-    at(k)..at(k + 1)
-}
-
 /// Parses `K/S` (0 <= K < S) for a run of `ensembles` ensembles, which must be at least S (a
 /// shard with no ensemble is refused: S above the ensemble count cannot be what was meant);
 /// errors name the flag.
@@ -52,7 +45,7 @@ pub fn parse_spec(spec: &str, ensembles: u64) -> Result<(u64, u64), Error> {
     Ok((k, s))
 }
 
-pub use crate::run::journal::file_name;
+pub use crate::run::journal::{file_name, range};
 
 /// The ensemble files among `inputs`: each a file, or a directory whose visible
 /// `*.gdsmc-ensembles` files are taken (sorted by name).

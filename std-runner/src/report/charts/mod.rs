@@ -16,8 +16,8 @@ pub use profile::{Series, Style, profile};
 pub use tail::tail;
 
 use crate::error::Error;
+use crate::files::write_atomic;
 use crate::reference::curves::ReferenceCurve;
-use crate::report::files::write_atomic;
 use crate::run::RunStats;
 use std::path::Path;
 
