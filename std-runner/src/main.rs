@@ -56,11 +56,13 @@ enum Command {
         /// Worker threads (default: all cores). Results are identical for any value.
         #[arg(long, default_value_t = 0, hide_default_value = true)]
         threads: usize,
-        /// Output directory (default: out/SCENE-NAME).
+        /// Output directory (default: out/SCENE-NAME). Replaced only when it is empty or a
+        /// whole gdsmc output set; a directory with other files, a file or a link is refused.
         #[arg(long)]
         out: Option<PathBuf>,
         /// Override any scene value, e.g. --set collisions.restitution=0.4 (repeatable; the
-        /// value is TOML, a bare word is a string). Validated like the file.
+        /// value is TOML, a bare word is a string). Validated like the file; a key given twice
+        /// (here or by --n, --ensembles, --seed) is refused.
         #[arg(long = "set", value_name = "KEY.PATH=VALUE")]
         set: Vec<String>,
         /// Run even when the work estimate is above the limit (1e12 events and particle
@@ -96,7 +98,8 @@ enum Command {
         /// Shard files, or directories of them.
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
-        /// Output directory (default: out/SCENE-NAME).
+        /// Output directory (default: out/SCENE-NAME): as for `run`, and never one holding
+        /// the shards.
         #[arg(long)]
         out: Option<PathBuf>,
         /// Chart formats, comma-separated: svg, png, pdf.

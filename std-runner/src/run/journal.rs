@@ -847,3 +847,65 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod hostile {
+    use super::*;
+
+    /// Every field of a valid header set to each of a list of hostile values, with a valid
+    /// checksum: never a panic, and a header that breaks the layout's rules is refused as
+    /// inconsistent before anything is computed from it.
+    #[test]
+    fn every_forged_header_is_read_without_a_panic() {
+        let h = Header {
+            gdsmc_version: "test".into(),
+            scene_path: "s.toml".into(),
+            scene_text: "name = \"s\"".into(),
+            overrides: Vec::new(),
+            fingerprint: "fp".into(),
+            seed: 3,
+            ensembles: 6,
+            shard: Some((1, 2)),
+            start: 3,
+            end: 6,
+            row_len: 2,
+        };
+        let values: [serde_json::Value; 9] = [
+            serde_json::json!(0),
+            serde_json::json!(1),
+            serde_json::json!(7),
+            serde_json::json!(u32::MAX),
+            serde_json::json!(u64::MAX),
+            serde_json::json!([0, 0]),
+            serde_json::json!([5, 2]),
+            serde_json::json!([0, u64::MAX]),
+            serde_json::json!(null),
+        ];
+        let mut refused = 0;
+        for field in ["ensembles", "shard", "start", "end", "row_len"] {
+            for v in &values {
+                let mut j = serde_json::to_value(&h).unwrap();
+                j[field] = v.clone();
+                let Ok(forged) = serde_json::from_value::<Header>(j) else {
+                    continue; // not a header at all: the reader's JSON error
+                };
+                let mut b = header_bytes(&forged);
+                b.extend(ensemble_record(
+                    forged.key(),
+                    3,
+                    &[1.0, 2.0],
+                    &Counts::default(),
+                ));
+                match read(Path::new("x"), &b) {
+                    Err(e) => {
+                        assert!(e.to_string().contains("inconsistent header"), "{e}");
+                        refused += 1;
+                    }
+                    Ok(c) => assert!(forged.check().is_ok() && c.end.is_none()),
+                }
+                let _ = read_bounded(Path::new("x"), &b[..]);
+            }
+        }
+        assert!(refused >= 20, "only {refused} forgeries refused");
+    }
+}
