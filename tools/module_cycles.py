@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Lists import cycles among a crate's modules (files), from its `crate::` and `super::` paths.
+"""Lists import cycles among a crate's modules (files), from its `crate::`, `super::` and `self::`
+paths (grouped ones, `super::{a, b}`, included).
 
 Usage: tools/module_cycles.py CRATE_SRC_DIR. Exits 1 and prints each cycle when there is one.
 A module is a file; `crate::a::b::c` names the deepest existing file of the path.
@@ -27,13 +28,31 @@ edges = {m: set() for m in mods}
 for m, f in mods.items():
     text = open(f).read()
     text = re.sub(r"//.*", "", text)
+    # Grouped paths, `super::{a, b::c}` and `crate::x::{y, z}`: one path per member (nested
+    # groups once more).
+    group = re.compile(r"\b((?:crate|super|self)(?:::\w+)*)::\{([^{}]*)\}")
+    for _ in range(3):
+        text = group.sub(
+            lambda g: " ".join(
+                g.group(1) + "::" + x.strip().split(" as ")[0]
+                for x in g.group(2).split(",")
+                if x.strip() and x.strip() != "self"
+            )
+            + " " + g.group(1),
+            text,
+        )
     for p in re.findall(r"\bcrate((?:::\w+)+)", text):
         t = resolve(p.strip(":").split("::"))
         if t is not None and t != m and t != ():
             edges[m].add(t)
-    base = m if f.endswith("mod.rs") else m[:-1]
-    for p in re.findall(r"\bsuper((?:::\w+)+)", text):
-        t = resolve(list(base[:-1]) + p.strip(":").split("::"))
+    # `super` is the module's parent whether the module is a file (`a/b.rs`: a) or a folder
+    # (`a/b/mod.rs`: a again); `self` the module itself. `super::super::` climbs further.
+    for kw, p in re.findall(r"\b(super|self)((?:::\w+)+)", text):
+        parts = p.strip(":").split("::")
+        at = list(m[:-1]) if kw == "super" else list(m)
+        while parts and parts[0] == "super":
+            at, parts = at[:-1], parts[1:]
+        t = resolve(at + parts)
         if t is not None and t != m and t != ():
             edges[m].add(t)
 

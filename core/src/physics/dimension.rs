@@ -3,7 +3,7 @@
 //! and no drive or white noise in the plane, one species, and start drifts in the plane.
 
 use super::error::{Param, PhysicsError, Problem};
-use super::model::{DriveModel, LawModel, SchemeModel};
+use super::parts::{DriveModel, LawModel, SchemeModel};
 use super::{DimensionChoice, Physics};
 
 fn refuse<T>(param: Param, why: &'static str) -> Result<T, PhysicsError> {

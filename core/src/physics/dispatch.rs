@@ -6,7 +6,8 @@ use super::engine::{
     ByDiskDrive, ByDrive, ByLaw, ByMixtureDrive, ByRoughDrive, ByScheme, DiskEngine, Engine,
     MixtureEngine, RoughDiskEngine, RoughEngine,
 };
-use super::model::{DriveModel, KernelModel, LawModel, Model, SchemeModel};
+use super::model::Model;
+use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
 use super::rotation::RoughModel;
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};

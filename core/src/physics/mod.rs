@@ -45,6 +45,7 @@ mod dispatch;
 pub mod engine;
 pub mod error;
 pub mod model;
+mod parts;
 mod rotation;
 mod species;
 
@@ -339,7 +340,7 @@ impl Physics {
     /// Checks the particle count alone (`n >= 2`, addressable): for front ends that size
     /// memory before they have a whole description.
     pub fn check_n(n: usize) -> Result<(), PhysicsError> {
-        model::particle_count(n)
+        parts::particle_count(n)
     }
 
     /// Checks every physical rule and returns the validated [`Model`], or the first

@@ -4,7 +4,7 @@
 //! rotation's parameters.
 
 use super::error::{Param, PhysicsError, Problem};
-use super::model::{DriveModel, LawModel, SchemeModel};
+use super::parts::{DriveModel, LawModel, SchemeModel};
 use super::{DimensionChoice, Physics, RotationChoice};
 use crate::math::Real;
 use crate::restitution::Restitution;

@@ -3,7 +3,7 @@
 //! [`Constant::new`], [`WhiteNoise::new`]), refusals named by species or pair.
 
 use super::error::{Param, PhysicsError, Problem};
-use super::model::{DriveModel, KernelModel, LawModel, SchemeModel};
+use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
 use super::{MAX_PAIRS, MAX_SPECIES, Physics, SpeciesChoice};
 use crate::drive::WhiteNoise;
 use crate::kernel::{Kernel, KernelError};
