@@ -286,6 +286,49 @@ fn records_of_another_run_are_refused() {
     assert!(!r.join("m").exists());
 }
 
+/// A whole run's journal whose records are another run's (seed 2's, after seed 1's header) is
+/// not continued from them: the run says it cut the journal after its last good record, runs
+/// those ensembles, and writes exactly what a fresh run writes.
+#[test]
+fn a_spliced_journal_is_not_continued() {
+    use gdsmc_runner::run::journal::{Header, ensemble_record, header_bytes};
+    use gdsmc_runner::scene::{Override, load_with};
+    let r = root("spliced-journal");
+    let path = scene("grw-example3");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let header = |seed: u64| {
+        let o = [
+            Override::flag("n", "particles.n", 64),
+            Override::flag("ensembles", "run.ensembles", 2),
+            Override::flag("seed", "run.seed", seed),
+        ];
+        let sc = load_with(&path, &o).unwrap();
+        Header::new(&sc, &path, &text, &o, None, 0..2)
+    };
+    let (mine, theirs) = (header(1), header(2));
+    let mut b = header_bytes(&mine);
+    let row = vec![1.0; mine.row_len];
+    b.extend(ensemble_record(
+        theirs.key(),
+        0,
+        &row,
+        &gdsmc_core::engine::Counts::default(),
+    ));
+    std::fs::write(r.join(".o.gdsmc-ensembles"), &b).unwrap();
+    let o = small_run("grw-example3", &["--seed", "1", "--out", s(&r.join("o"))]);
+    ok(&o);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("another run"), "{err}");
+    ok(&small_run(
+        "grw-example3",
+        &["--seed", "1", "--out", s(&r.join("fresh"))],
+    ));
+    assert_eq!(
+        std::fs::read(r.join("o/observables.csv")).unwrap(),
+        std::fs::read(r.join("fresh/observables.csv")).unwrap()
+    );
+}
+
 /// Forged headers with valid checksums (`"shard": [0, 0]`, K >= S, a range not the shard's, a
 /// huge row) are refused naming the file, never a panic; a FIFO, a device and a directory
 /// given as shards are refused by their type; a shard longer than its header allows is refused
