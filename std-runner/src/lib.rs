@@ -6,10 +6,10 @@
 //!
 //! The modules depend on each other in one direction:
 //! [`run`] (ensembles, statistics) <- [`reference`] (exact and hydrodynamic curves) <-
-//! [`analysis`] (tails, distributions, warnings) <- [`report`] (files, charts, summary) <-
-//! [`reproduce`] (the papers' tables) and [`bench`] (speed). Beneath them all, [`files`]:
-//! writing and reading files safely (never through a link, never over what gdsmc did not
-//! write).
+//! [`analysis`] (tails, distributions, warnings) <- [`report`] (output sets, charts, summary)
+//! <- [`bench`] (speed); [`reproduce`] (the papers' tables) needs [`run`] and [`reference`]
+//! only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
+//! never over what gdsmc did not write).
 
 #![deny(unsafe_code)]
 
