@@ -424,3 +424,16 @@ fn a_step_that_takes_no_step_is_refused() {
         EngineError::OffGrid
     );
 }
+
+/// A broken invariant of the validated model is its own error, saying it is a bug, not a
+/// non-finite velocity the caller could have caused.
+#[test]
+fn a_broken_invariant_says_it_is_a_bug() {
+    use gdsmc_core::engine::EngineError;
+    let e = EngineError::Invariant("a hard kernel is hard spheres").to_string();
+    assert!(
+        e.contains("a hard kernel is hard spheres") && e.contains("a bug in gdsmc"),
+        "{e}"
+    );
+    assert!(!e.contains("non-finite"), "{e}");
+}

@@ -80,6 +80,8 @@ pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
         EngineError::OffGrid | EngineError::ParticleCount | EngineError::Spins => {
             gdsmc_status::GDSMC_INVALID_ARGUMENT
         }
+        // A bug of ours, reported as the panic boundary reports one.
+        EngineError::Invariant(_) => gdsmc_status::GDSMC_PANIC,
     };
     let m = match e {
         EngineError::OffGrid => msg!(

@@ -248,6 +248,9 @@ pub enum EngineError {
     ParticleCount,
     /// A rough gas was started without one spin per particle.
     Spins,
+    /// A rule the validated model guarantees did not hold when the engine was composed (a
+    /// bug in gdsmc, never the caller's input): names the rule.
+    Invariant(&'static str),
 }
 
 impl core::fmt::Display for EngineError {
@@ -266,6 +269,13 @@ impl core::fmt::Display for EngineError {
             }
             EngineError::ParticleCount => "the particle buffer does not hold n particles",
             EngineError::Spins => "a rough gas needs a spin buffer of n spins beside its particles",
+            EngineError::Invariant(what) => {
+                return write!(
+                    f,
+                    "a rule of the validated model did not hold ({what}): a bug in gdsmc, please \
+                     report it with the scene"
+                );
+            }
         })
     }
 }

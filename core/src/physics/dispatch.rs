@@ -167,12 +167,13 @@ impl Model {
     ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
         // Validated: disks have a constant law and no drive or white noise.
         let LawModel::Constant(a) = self.law else {
-            return Err(EngineError::NonFinite("a restitution law of disks"));
+            return Err(EngineError::Invariant("disks have a constant restitution"));
         };
         match self.drive {
             DriveModel::WhiteNoise(w) => {
-                let d = PlanarWhiteNoise::new(w.beta())
-                    .ok_or(EngineError::NonFinite("the white noise"))?;
+                let d = PlanarWhiteNoise::new(w.beta()).ok_or(EngineError::Invariant(
+                    "a validated white noise is planar white noise",
+                ))?;
                 wrap(
                     NoSplitting::start_in(k, d, a, p, t0),
                     ByDiskDrive::WhiteNoise,
@@ -229,7 +230,7 @@ impl Model {
             SchemeModel::NoSplitting if !D::ACTS && K::HARD && self.sum_form => {
                 let hs = k
                     .as_hard_spheres()
-                    .ok_or(EngineError::NonFinite("a hard-sphere kernel"))?;
+                    .ok_or(EngineError::Invariant("a hard kernel is hard spheres"))?;
                 wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
             }
             SchemeModel::NoSplitting => {
@@ -268,7 +269,7 @@ fn mixture<K: Kernel>(
         // Validated: every scaled kernel exists.
         pair.kernel = k
             .scaled(mx.factors[j])
-            .map_err(|_| EngineError::NonFinite("a pair kernel"))?;
+            .map_err(|_| EngineError::Invariant("every scaled pair kernel exists"))?;
         pair.restitution = mx.laws[j];
     }
     let physics = &physics[..types];
