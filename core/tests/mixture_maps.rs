@@ -166,6 +166,15 @@ fn bad_mixtures_are_refused_by_name() {
         Species::new(&[1], &[1.0]),
         Err(MixtureError::TooFewParticles)
     );
+    // Counts whose sum overflows are too many, not too few.
+    assert_eq!(
+        Species::new(&[usize::MAX, 2], &[1.0, 1.0]),
+        Err(MixtureError::TooManyParticles)
+    );
+    assert_eq!(
+        Species::new(&[usize::MAX / 2, usize::MAX / 2], &[1.0, 1.0]),
+        Err(MixtureError::TooManyParticles)
+    );
     assert_eq!(
         Species::new(&[2, 2], &[1.0, -1.0]),
         Err(MixtureError::Mass(1))

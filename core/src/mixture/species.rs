@@ -33,6 +33,8 @@ pub enum MixtureError {
     EmptySpecies(usize),
     /// Fewer than two particles in all.
     TooFewParticles,
+    /// More particles in all than memory can address (the counts' sum overflows).
+    TooManyParticles,
     /// A species' mass is not finite and positive.
     Mass(usize),
     /// The per-pair data (kernels, restitution) do not hold one entry per pair type.
@@ -54,6 +56,9 @@ impl core::fmt::Display for MixtureError {
             }
             MixtureError::EmptySpecies(s) => write!(f, "species {s} has no particle"),
             MixtureError::TooFewParticles => f.write_str("a mixture needs at least 2 particles"),
+            MixtureError::TooManyParticles => {
+                f.write_str("the species' counts add up to more particles than memory can address")
+            }
             MixtureError::Mass(s) => write!(f, "the mass of species {s} must be finite and > 0"),
             MixtureError::PairCount { expected, got } => write!(
                 f,
@@ -106,11 +111,13 @@ impl Species {
             sp.total = sp
                 .total
                 .checked_add(counts[k])
-                .ok_or(MixtureError::TooFewParticles)?;
+                .ok_or(MixtureError::TooManyParticles)?;
         }
-        if sp.total < 2 {
-            return Err(MixtureError::TooFewParticles);
-        }
+        // The particle count's one rule (crate::particles::check_count).
+        crate::particles::check_count(sp.total).map_err(|e| match e {
+            crate::particles::ParticlesError::TooFew => MixtureError::TooFewParticles,
+            _ => MixtureError::TooManyParticles,
+        })?;
         Ok(sp)
     }
 

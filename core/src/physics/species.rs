@@ -103,6 +103,10 @@ pub(super) fn mixture(
                 param: Param::N,
                 problem: Problem::TooFewParticles(total),
             },
+            MixtureError::TooManyParticles => PhysicsError {
+                param: Param::N,
+                problem: Problem::TooManyParticles(total),
+            },
             _ => PhysicsError {
                 param: Param::Species,
                 problem: Problem::DoesNotFit("is not a valid list of species"),
