@@ -82,17 +82,37 @@ impl Restitution for ImpactSpeed {
     }
 }
 
+/// The domain of a restitution coefficient `alpha` (GRW (3)): the words every message uses.
+pub const ALPHA_RANGE: &str = "(0, 1]";
+
+/// A restitution coefficient outside [`ALPHA_RANGE`] (the value given).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AlphaError(pub Real);
+
+impl core::fmt::Display for AlphaError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "restitution coefficient alpha must lie in {ALPHA_RANGE}, got {}",
+            self.0
+        )
+    }
+}
+
+impl core::error::Error for AlphaError {}
+
 /// A constant restitution coefficient `alpha` in (0, 1] (GRW (3), BRS (9) with `delta = 0`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Constant(Real);
 
 impl Constant {
-    /// `None` unless `0 < alpha <= 1`.
-    pub fn new(alpha: Real) -> Option<Self> {
+    /// The law of `alpha`, the rule of [`ALPHA_RANGE`] checked here and only here: `0 < alpha
+    /// <= 1` (NaN refused).
+    pub fn new(alpha: Real) -> Result<Self, AlphaError> {
         if alpha > 0.0 && alpha <= 1.0 {
-            Some(Constant(alpha))
+            Ok(Constant(alpha))
         } else {
-            None
+            Err(AlphaError(alpha))
         }
     }
     /// The coefficient.

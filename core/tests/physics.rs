@@ -437,3 +437,27 @@ fn a_broken_invariant_says_it_is_a_bug() {
     );
     assert!(!e.contains("non-finite"), "{e}");
 }
+
+/// The restitution's rule is checked in one constructor and its words come from one constant:
+/// the law, the rough map and the description say the same range.
+#[test]
+fn alpha_has_one_rule_and_one_wording() {
+    use gdsmc_core::restitution::{ALPHA_RANGE, AlphaError, Constant};
+    use gdsmc_core::rough::{RoughError, RoughMap};
+    for bad in [0.0, -0.5, 1.0 + 1e-12, f64::NAN, f64::INFINITY] {
+        let e = Constant::new(bad).unwrap_err();
+        assert!(matches!(e, AlphaError(x) if x.to_bits() == bad.to_bits()));
+        assert!(e.to_string().contains(ALPHA_RANGE), "{e}");
+        assert_eq!(RoughMap::new(bad, 0.0, 0.4).unwrap_err(), RoughError::Alpha);
+    }
+    assert!(RoughError::Alpha.to_string().contains(ALPHA_RANGE));
+    assert_eq!(Constant::new(1.0).unwrap().alpha(), 1.0);
+    let msg = Physics {
+        restitution: RestitutionLaw::Constant(0.0),
+        ..grw3()
+    }
+    .validate()
+    .unwrap_err()
+    .to_string();
+    assert_eq!(msg, format!("restitution must lie in {ALPHA_RANGE}, got 0"));
+}

@@ -16,7 +16,7 @@ use crate::engine::{SplittingOrder, check_step};
 use crate::kernel::{HardSpheres, KernelError, Maxwell, Vhs};
 use crate::math::Real;
 use crate::particles::{ParticlesError, check_count};
-use crate::restitution::{Constant, ImpactSpeed, ImpactSpeedError};
+use crate::restitution::{ALPHA_RANGE, Constant, ImpactSpeed, ImpactSpeedError};
 use crate::sample::{Maxwellian, MaxwellianMixture, ParamError};
 use crate::vec3::Vec3;
 
@@ -177,11 +177,11 @@ pub(super) fn law(r: RestitutionLaw) -> Result<LawModel, PhysicsError> {
         RestitutionLaw::Constant(alpha) => {
             Constant::new(alpha)
                 .map(LawModel::Constant)
-                .ok_or(PhysicsError {
+                .map_err(|_| PhysicsError {
                     param: Param::Restitution,
                     problem: Problem::OutOfRange {
                         value: alpha,
-                        range: "(0, 1]",
+                        range: ALPHA_RANGE,
                     },
                 })
         }

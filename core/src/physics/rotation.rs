@@ -92,7 +92,7 @@ pub(super) fn rotation(
             param: Param::Restitution,
             problem: Problem::OutOfRange {
                 value: alpha,
-                range: "(0, 1]",
+                range: crate::restitution::ALPHA_RANGE,
             },
         },
     })?;

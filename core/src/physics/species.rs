@@ -9,7 +9,7 @@ use crate::drive::WhiteNoise;
 use crate::kernel::{Kernel, KernelError};
 use crate::math::Real;
 use crate::mixture::{MixtureError, Species};
-use crate::restitution::Constant;
+use crate::restitution::{ALPHA_RANGE, Constant};
 use crate::sample::{Maxwellian, ParamError};
 use crate::vec3::Vec3;
 
@@ -166,11 +166,11 @@ pub(super) fn mixture(
     for k in 0..types {
         let (s, t) = species.pair(k);
         if let Some(&alpha) = given.get(k) {
-            laws[k] = Constant::new(alpha).ok_or(PhysicsError {
+            laws[k] = Constant::new(alpha).map_err(|_| PhysicsError {
                 param: Param::PairRestitution(s, t),
                 problem: Problem::OutOfRange {
                     value: alpha,
-                    range: "(0, 1]",
+                    range: ALPHA_RANGE,
                 },
             })?;
         }

@@ -62,7 +62,13 @@ pub enum RoughError {
 impl core::fmt::Display for RoughError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(match self {
-            RoughError::Alpha => "normal restitution alpha must lie in (0, 1]",
+            RoughError::Alpha => {
+                return write!(
+                    f,
+                    "normal restitution alpha must lie in {}",
+                    crate::restitution::ALPHA_RANGE
+                );
+            }
             RoughError::Beta => "tangential restitution beta must lie in [-1, 1]",
             RoughError::Kappa => "reduced moment of inertia kappa must lie in (0, 2/3]",
             RoughError::DiskKappa => "reduced moment of inertia kappa of disks must lie in (0, 1]",
@@ -103,9 +109,8 @@ impl RoughMap {
         max_kappa: Real,
         bad_kappa: RoughError,
     ) -> Result<Self, RoughError> {
-        if !(alpha > 0.0 && alpha <= 1.0) {
-            return Err(RoughError::Alpha);
-        }
+        // The restitution's one rule.
+        crate::restitution::Constant::new(alpha).map_err(|_| RoughError::Alpha)?;
         if !(-1.0..=1.0).contains(&beta) {
             return Err(RoughError::Beta);
         }

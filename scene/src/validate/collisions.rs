@@ -71,7 +71,10 @@ pub(super) fn collisions(
             return ctx.invalid(
                 0..0,
                 "collisions.restitution",
-                "is required (a coefficient in (0, 1]), or give collisions.impact_speed_law",
+                format!(
+                    "is required (a coefficient in {}), or give collisions.impact_speed_law",
+                    gdsmc_core::restitution::ALPHA_RANGE
+                ),
             );
         }
     };
