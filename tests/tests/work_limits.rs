@@ -33,9 +33,10 @@ fn absurd_work_is_refused_naming_the_keys() {
     for (name, set) in [
         ("grw-example3", &["observe.t_end=1e300"][..]),
         ("grw-example5", &["collisions.gamma=1e300"][..]),
+        // 8e12 steps of 1024 particles (dt = 1e-300 is refused before, by the grid: below).
         (
             "grw-example3",
-            &["scheme.kind=euler", "scheme.dt=1e-300"][..],
+            &["scheme.kind=euler", "scheme.dt=1e-12"][..],
         ),
         ("brs-example5", &["drive.density=1e300"][..]),
         (
@@ -66,4 +67,11 @@ fn absurd_work_is_refused_naming_the_keys() {
     let s = with("grw-example3", &["particles.n=1000000000000"]);
     let e = check(&s, 2, true).unwrap_err().to_string();
     assert!(e.starts_with("particles.n: = 1000000000000 needs"), "{e}");
+    // A step too small for a u64 step count is no grid at all: refused with the scene,
+    // naming scheme.dt, before any estimate.
+    let set = ["scheme.kind=euler".to_string(), "scheme.dt=1e-300".into()];
+    let e = scene::load_with_overrides(&scene_path("grw-example3"), &set)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("scheme.dt") && e.contains("2^64 steps"), "{e}");
 }

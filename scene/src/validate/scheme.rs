@@ -74,11 +74,12 @@ pub(super) fn on_grid(
         .iter()
         .find(|&&t| gdsmc_core::engine::grid_index(0.0, dt, t).is_none())
     {
-        return ctx.invalid(
-            at,
-            "scheme.dt",
-            format!("must divide every observation time; {t} is not a multiple of {dt}"),
-        );
+        let message = if t / dt >= u64::MAX as f64 {
+            format!("= {dt} is too small: reaching t = {t} would take more than 2^64 steps")
+        } else {
+            format!("must divide every observation time; {t} is not a multiple of {dt}")
+        };
+        return ctx.invalid(at, "scheme.dt", message);
     }
     Ok(())
 }
