@@ -2,24 +2,24 @@
 //! `f_1` counts `|v| < r_1`, `f_k` counts `r_{k-1} <= |v| < r_k`, `f_{K+1}` counts `|v| >= R`,
 //! each with the particle weight `g = 1/n`.
 
+use crate::engine::Frame;
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
-use crate::vec3::Vec3;
 
 /// Adds the shell weights of `p` to `out` (`K + 1` entries, the last one for `|v| >= R`),
 /// for shells of width `radius / (out.len() - 1)`. Returns `false` (adding nothing) when `out`
 /// has fewer than two entries or `radius` is not finite and positive.
 pub fn radial_shells(p: &Particles<'_>, radius: Real, out: &mut [Real]) -> bool {
-    radial_shells_mapped(p, radius, 1.0, Vec3::ZERO, out)
+    radial_shells_mapped(p, radius, Frame::IDENTITY, out)
 }
 
-/// As [`radial_shells`], for the physical velocities `offset + scale v` of a system stored
-/// rescaled (a cooling gas, [`crate::engine::NoSplitting::velocity_map`]).
+/// As [`radial_shells`], for the velocities `frame.physical(v)` (a system stored rescaled, a
+/// cooling gas: [`crate::engine::NoSplitting::velocity_map`]; or any affine map, e.g. to
+/// reduced velocities).
 pub fn radial_shells_mapped(
     p: &Particles<'_>,
     radius: Real,
-    scale: Real,
-    offset: Vec3,
+    frame: Frame,
     out: &mut [Real],
 ) -> bool {
     let k = out.len().saturating_sub(1);
@@ -28,12 +28,12 @@ pub fn radial_shells_mapped(
     }
     let g = 1.0 / p.len() as Real;
     let per = k as Real / radius;
-    let identity = scale == 1.0 && offset == Vec3::ZERO;
+    let identity = frame.is_identity();
     for q in p.as_slice() {
         let v = if identity {
             q.velocity()
         } else {
-            offset + scale * q.velocity()
+            frame.physical(q.velocity())
         };
         let r = sqrt(v.norm2());
         let i = if r >= radius {
@@ -47,7 +47,7 @@ pub fn radial_shells_mapped(
 }
 
 /// Adds the weights of the marginal histogram of velocity component `axis` (0, 1 or 2) of the
-/// physical velocities `offset + scale v` to `out`: `K = out.len() - 2` bins of width `2R / K`
+/// velocities `frame.physical(v)` to `out`: `K = out.len() - 2` bins of width `2R / K`
 /// over `[-R, R)`, then `out[K]` for components below `-R` and `out[K + 1]` for those at or
 /// above `R`; particle weight `1/n`. It estimates BRS's integrated distribution
 /// `f_1(t, v_1) = int f(t, v) dv_2 dv_3` (BRS Figure 4). Returns `false` (adding nothing) when
@@ -56,8 +56,7 @@ pub fn component_bins(
     p: &Particles<'_>,
     axis: usize,
     radius: Real,
-    scale: Real,
-    offset: Vec3,
+    frame: Frame,
     out: &mut [Real],
 ) -> bool {
     let k = out.len().saturating_sub(2);
@@ -67,7 +66,7 @@ pub fn component_bins(
     let g = 1.0 / p.len() as Real;
     let per = k as Real / (2.0 * radius);
     for q in p.as_slice() {
-        let v = (offset + scale * q.velocity()).to_array()[axis];
+        let v = frame.physical(q.velocity()).to_array()[axis];
         let i = if v < -radius {
             k
         } else if v >= radius {

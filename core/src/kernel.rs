@@ -33,7 +33,7 @@ impl core::fmt::Display for KernelError {
 
 /// An isotropic collision kernel `B = gamma C_lambda |u|^lambda` (GRW (1), (5)): `gamma` is the
 /// collision-rate constant of GRW (1) and folded into the kernel's strength.
-pub trait Kernel: Copy {
+pub trait Kernel: Copy + core::fmt::Debug {
     /// True when the majorant depends on the maximal relative speed `Umax` (`lambda > 0`).
     const USES_UMAX: bool;
 

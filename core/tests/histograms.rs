@@ -1,6 +1,7 @@
 //! The histogram kernels bin exactly where their docs say: bin edges, overflow bins, the
 //! physical-velocity map `offset + scale v`, and the refusal of bad arguments.
 
+use gdsmc_core::engine::Frame;
 use gdsmc_core::histogram::{component_bins, radial_shells, radial_shells_mapped};
 use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::vec3::Vec3;
@@ -15,7 +16,7 @@ fn component_bins_edges_and_overflow() {
     let mut q = particles(&xs.map(|x| Vec3::new(0.0, x, 7.0)));
     let p = Particles::new(&mut q).unwrap();
     let mut out = [0.0; 6];
-    assert!(component_bins(&p, 1, 2.0, 1.0, Vec3::ZERO, &mut out));
+    assert!(component_bins(&p, 1, 2.0, Frame::IDENTITY, &mut out));
     let g = 1.0 / 7.0;
     // bins [-2,-1), [-1,0), [0,1), [1,2), below -2, at or above 2
     assert_eq!(out, [g, g, 2.0 * g, g, g, g]);
@@ -31,8 +32,10 @@ fn component_bins_maps_stored_velocities() {
         &p,
         0,
         2.0,
-        0.5,
-        Vec3::new(1.0, 0.0, 0.0),
+        Frame {
+            scale: 0.5,
+            offset: Vec3::new(1.0, 0.0, 0.0)
+        },
         &mut out
     ));
     assert_eq!(out, [0.0, 0.0, 0.5, 0.5, 0.0, 0.0]);
@@ -43,9 +46,9 @@ fn bad_arguments_add_nothing() {
     let mut q = particles(&[Vec3::ZERO, Vec3::ZERO]);
     let p = Particles::new(&mut q).unwrap();
     let mut out = [0.0; 4];
-    assert!(!component_bins(&p, 3, 1.0, 1.0, Vec3::ZERO, &mut out));
-    assert!(!component_bins(&p, 0, f64::NAN, 1.0, Vec3::ZERO, &mut out));
-    assert!(!component_bins(&p, 0, 1.0, 1.0, Vec3::ZERO, &mut out[..2]));
+    assert!(!component_bins(&p, 3, 1.0, Frame::IDENTITY, &mut out));
+    assert!(!component_bins(&p, 0, f64::NAN, Frame::IDENTITY, &mut out));
+    assert!(!component_bins(&p, 0, 1.0, Frame::IDENTITY, &mut out[..2]));
     assert!(!radial_shells(&p, -1.0, &mut out));
     assert_eq!(out, [0.0; 4]);
 }
@@ -61,8 +64,10 @@ fn reduced_shells_by_the_velocity_map() {
     assert!(radial_shells_mapped(
         &p,
         2.0,
-        1.0 / v0,
-        (-1.0 / v0) * bulk,
+        Frame {
+            scale: 1.0 / v0,
+            offset: (-1.0 / v0) * bulk
+        },
         &mut out
     ));
     assert_eq!(out, [0.5, 0.5, 0.0]);

@@ -5,6 +5,7 @@ use gdsmc_core::drive::{GaussianThermostat, HardSphereBackground, HostMedium, Ho
 use gdsmc_core::engine::{EventLoop, NoSplitting, Splitting, SplittingOrder, TimeStepped};
 use gdsmc_core::kernel::{HardSpheres, Maxwell, Vhs};
 use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::physics::engine::ByKernel;
 use gdsmc_core::physics::{
     BackgroundKernel, Component, DriveChoice, Engine, KernelChoice, Param, Physics, Problem,
     RestitutionLaw, SchemeChoice,
@@ -297,7 +298,7 @@ fn dispatch_builds_the_hand_composed_loop() {
                 .unwrap()
                 .0
         },
-        |e| matches!(e, Engine::Maxwell(_)),
+        |e| matches!(e, Engine::Smooth(ByKernel::Maxwell(_))),
     );
     let vhs = Physics {
         kernel: KernelChoice::Vhs {
@@ -318,7 +319,7 @@ fn dispatch_builds_the_hand_composed_loop() {
                 .unwrap()
                 .0
         },
-        |e| matches!(e, Engine::Vhs(_)),
+        |e| matches!(e, Engine::Smooth(ByKernel::Vhs(_))),
     );
     let ms = Physics {
         kernel: KernelChoice::HardSpheres { gamma: 1.0, c: 0.1 },
@@ -335,7 +336,7 @@ fn dispatch_builds_the_hand_composed_loop() {
                 .unwrap()
                 .0
         },
-        |e| matches!(e, Engine::HardSpheres(_)),
+        |e| matches!(e, Engine::Smooth(ByKernel::HardSpheres(_))),
     );
     let brs = Physics {
         kernel: KernelChoice::HardSpheres { gamma: 1.0, c: 1.0 },
@@ -366,7 +367,7 @@ fn dispatch_builds_the_hand_composed_loop() {
                 .unwrap()
                 .0
         },
-        |e| matches!(e, Engine::HardSpheres(_)),
+        |e| matches!(e, Engine::Smooth(ByKernel::HardSpheres(_))),
     );
 }
 

@@ -191,9 +191,9 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
         // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
         let dst = unsafe { core::slice::from_raw_parts_mut(out, 3 * s.n) };
         let p = particles_of(s);
-        let (scale, offset) = s.engine.velocity_map();
+        let frame = s.engine.velocity_map();
         for (d, q) in dst.chunks_exact_mut(3).zip(p.as_slice()) {
-            let v = offset + scale * q.velocity();
+            let v = frame.physical(q.velocity());
             d.copy_from_slice(&[v.x, v.y, v.z]);
         }
         Ok(())
@@ -224,7 +224,7 @@ pub unsafe extern "C" fn gdsmc_sim_get_rim_velocities(
         // SAFETY: `out` is non-null, aligned and has `len >= 3 n` doubles.
         let dst = unsafe { core::slice::from_raw_parts_mut(out, 3 * s.n) };
         let p = particles_of(s);
-        let (scale, _) = s.engine.velocity_map();
+        let scale = s.engine.velocity_map().scale;
         for (d, q) in dst.chunks_exact_mut(3).zip(p.spins()) {
             let w = scale * q.rim_velocity();
             d.copy_from_slice(&[w.x, w.y, w.z]);

@@ -1,11 +1,12 @@
 //! What every Markov-jump event loop does with a candidate pair: the fictitious-collision test
-//! against the majorant (GRW (20)), the inelastic map GRW (3) with a uniform direction, and the
-//! majorant update with the bound that holds, `max(Umax, 2|v - V|)` (RW (21)); and what every
-//! loop does when all particles are at one time ([`Collider::synchronized`], [`observables`]).
+//! against the majorant (GRW (20)), the collision map ([`super::CollisionMap`]: GRW (3) or
+//! the rough map), and the majorant update with the bound that holds, `max(Umax, 2|v - V|)`
+//! (RW (21)); and what every loop does when all particles are at one time
+//! ([`Collider::synchronized`], [`observables`]).
 
+use super::collision_map::CollisionMap;
 use super::pairs::PairsAhead;
 use super::{Counts, EngineError};
-use crate::collision::inelastic;
 use crate::drive::Drive;
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
@@ -65,8 +66,8 @@ pub struct Collider<K, D, A, G = Spheres> {
     pub kernel: K,
     /// The drive.
     pub drive: D,
-    /// The restitution law.
-    pub restitution: A,
+    /// The collision map: a restitution law (smooth particles) or the rough map.
+    pub map: A,
     /// The majorant of the relative speed.
     pub maj: Majorant,
     /// Event counts.
@@ -76,13 +77,13 @@ pub struct Collider<K, D, A, G = Spheres> {
     dim: core::marker::PhantomData<G>,
 }
 
-impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Collider<K, D, A, G> {
+impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Collider<K, D, A, G> {
     /// The physics with an empty majorant and zero counts.
-    pub fn new(kernel: K, drive: D, restitution: A) -> Self {
+    pub fn new(kernel: K, drive: D, map: A) -> Self {
         Collider {
             kernel,
             drive,
-            restitution,
+            map,
             maj: Majorant::default(),
             counts: Counts::default(),
             pairs: PairsAhead::default(),
@@ -107,8 +108,9 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Collider<K, D, A, G> {
 
     /// Processes the candidate pair `(i, j)` whose partners are already at the event time: the
     /// fictitious-collision test against the majorant that generated the event (GRW (20)),
-    /// else a scattering direction (uniform on the sphere; [`Geometry::scattering`]) and GRW (3); the majorant covers the new velocities (and the
-    /// kicked ones when `cover_kicked`). Returns true when the majorant changed (the caller
+    /// else the collision map ([`CollisionMap::collide_pair`]: GRW (3) with a scattering
+    /// direction, or the rough map); the majorant covers the new velocities (and the kicked
+    /// ones when `cover_kicked`). Returns true when the majorant changed (the caller
     /// then recomputes its rate).
     #[inline(always)]
     pub fn candidate<R: Rng + ?Sized>(
@@ -132,12 +134,9 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Collider<K, D, A, G> {
         ) {
             return self.maj.umax != umax_event;
         }
-        let u = vi - vj;
-        let e = G::scattering::<K, R>(u, rng);
-        let alpha = clamped_coefficient(&self.restitution, u, e, &mut self.counts);
-        let (a, b) = inelastic(vi, vj, e, alpha);
-        p.set_velocity(i, a);
-        p.set_velocity(j, b);
+        let (a, b) = self
+            .map
+            .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, &mut self.counts);
         self.counts.collisions += 1;
         if K::USES_UMAX {
             self.maj.cover(a);

@@ -1,6 +1,8 @@
 //! Event loops. [`NoSplitting`] is the exact scheme of GRW Section 3 / RW Algorithm 3.
 
+pub mod collision_map;
 pub mod event;
+pub mod frame;
 pub(crate) mod jumps;
 pub mod nosplit;
 pub mod pairs;
@@ -8,6 +10,8 @@ pub mod splitting;
 pub mod sum_form;
 pub mod time_stepped;
 
+pub use collision_map::CollisionMap;
+pub use frame::Frame;
 pub use nosplit::NoSplitting;
 pub use splitting::{Splitting, SplittingOrder};
 pub use sum_form::SumNoSplitting;
@@ -39,9 +43,9 @@ pub trait EventLoop {
     /// work of an advance to `t` is about `work_rate(n) * (t - time())` ([`work_to`]); a
     /// heated gas's majorant grows during it, so this is an estimate, not a bound.
     fn work_rate(&self, n: usize) -> Real;
-    /// The map `v_phys = offset + scale v` from stored to physical velocities, `(scale, offset)`.
-    fn velocity_map(&self) -> (Real, crate::vec3::Vec3) {
-        (1.0, crate::vec3::Vec3::ZERO)
+    /// The map `v_phys = offset + scale v` from stored to physical velocities.
+    fn velocity_map(&self) -> Frame {
+        Frame::IDENTITY
     }
     /// A mixture's observables per species of the synchronized particles `p` (right after
     /// [`EventLoop::advance_to`] or a start), in physical units; `None` for a one-species gas.
@@ -89,7 +93,7 @@ macro_rules! impl_event_loop {
             fn work_rate(&self, n: usize) -> $crate::math::Real {
                 $t::work_rate(self, n)
             }
-            fn velocity_map(&self) -> ($crate::math::Real, $crate::vec3::Vec3) {
+            fn velocity_map(&self) -> $crate::engine::Frame {
                 $t::velocity_map(self)
             }
         }
@@ -98,8 +102,13 @@ macro_rules! impl_event_loop {
 pub(crate) use impl_event_loop;
 impl_event_loop!(
     NoSplitting,
-    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution, G: crate::geometry::Geometry],
-    NoSplitting<K, D, A, G>
+    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry],
+    NoSplitting<K, D, A, G>,
+    {
+        fn rough(&self, p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+            NoSplitting::rough(self, p)
+        }
+    }
 );
 impl_event_loop!(
     Splitting,

@@ -23,56 +23,55 @@
 //! (the momentum is conserved, and any `V` gives a true bound), the temperature for the
 //! rescale test below, and the finiteness of the velocities.
 //!
-//! A gas with no drive cools for ever (the homogeneous cooling state). Its peculiar velocities,
-//! stored beside a bulk velocity `V`, would lose digits (and stop at a rounding floor near
-//! `T ~ (1e-16 |V|)^2`), and its temperature would underflow. So that it can be followed for as
-//! long as asked, when at a synchronization (every `2n` candidates) its temperature has fallen
-//! below `1e-8 max(1, |V|^2)` ([`RESCALE_BELOW`]), the velocities are stored rescaled:
-//! `v_phys = offset + scale v`, the stored peculiar velocities at unit temperature. The collision maps are linear and the fictitious-collision
-//! test depends on ratios only, so the stored system evolves by the same rules, with the
-//! physical majorant rate `scale^lambda` times the stored one: time is not rescaled, the event
-//! rate is. Observables are returned in physical units, `log10_t_bulk` included, which stays
-//! finite where the temperature itself would underflow ([`Counts::rescales`]).
+//! A gas with no drive cools for ever: at a synchronization whose temperature has fallen
+//! below [`RESCALE_BELOW`] the velocities are stored rescaled ([`super::frame`]); the
+//! observables are returned in physical units ([`Counts::rescales`]).
+//!
+//! The particle model is the collision map `A` ([`CollisionMap`]): a restitution law (smooth
+//! particles, GRW (3)) or [`crate::rough::RoughMap`] (rough particles: rotation does not enter
+//! the collision rate, so the majorant, the waiting times, the fictitious test and the refresh
+//! schedule are unchanged; an accepted pair draws its impact direction and applies the rough
+//! map, and the drive kicks translation and rotation together). With spins the loop checks
+//! them at every synchronization and rescales them with the velocities.
 //!
 //! For Maxwell pseudo-molecules the majorant is the kernel itself: no `Umax`, no fictitious
 //! collisions, and none of that bookkeeping is compiled in.
 
+use super::collision_map::CollisionMap;
 use super::event::{Collider, Majorant, RefreshWindow, observables_dim};
+use super::frame::{Frame, rescale_due};
 use super::jumps::{Jumps, jumps_state, run_events};
 use super::{Counts, EngineError};
 use crate::batch::sync::{SyncSums, sync_sums};
 use crate::drive::Drive;
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
-use crate::math::{Real, max, sqrt};
+use crate::math::{Real, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
-use crate::restitution::Restitution;
 use crate::rng::Rng;
+use crate::rough::RoughObservables;
 use crate::vec3::Vec3;
 
-/// The exact (no-splitting) event loop for kernel `K`, drive `D`, restitution law `A` and
-/// dimension `G` (spheres unless named; disks: [`crate::geometry::Disks`], whose drive acts in
-/// the plane).
+pub use super::frame::RESCALE_BELOW;
+
+/// The exact (no-splitting) event loop for kernel `K`, drive `D`, collision map `A` (a
+/// restitution law, or the rough map) and dimension `G` (spheres unless named; disks:
+/// [`crate::geometry::Disks`], whose drive acts in the plane).
 #[derive(Clone, Debug)]
 pub struct NoSplitting<K, D, A, G = Spheres> {
     c: Collider<K, D, A, G>,
     t: Real,
     refresh: RefreshWindow,
-    scale: Real,
-    offset: Vec3,
+    frame: Frame,
     rescale_below: Real,
 }
 
-/// A gas with no drive is rescaled when its stored temperature falls below this times
-/// `max(1, |V|^2)` (stored units): the peculiar velocities then still carry 12 of their 16
-/// digits beside the bulk velocity (module docs).
-pub const RESCALE_BELOW: Real = 1e-8;
-
-impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
+impl<K: Kernel, D: Drive, A: CollisionMap> NoSplitting<K, D, A> {
     /// Starts the scheme at time `t0` on the particles `p` (already holding the initial
     /// velocities): sets every last-kick time to `t0` and `Umax = 2 max |v_i - V|`
-    /// (GRW steps 1.1-1.4). Returns the observables at `t0`. Spheres; disks:
+    /// (GRW steps 1.1-1.4). Returns the observables at `t0`. A rough gas's `p` holds one spin
+    /// per particle ([`EngineError::Spins`] otherwise). Spheres; disks:
     /// [`NoSplitting::start_in`].
     pub fn start(
         kernel: K,
@@ -85,8 +84,10 @@ impl<K: Kernel, D: Drive, A: Restitution> NoSplitting<K, D, A> {
     }
 }
 
-impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
+impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> {
     /// As [`NoSplitting::start`] in dimension `G` (named by the result's type).
+    // Out of line: called once per run, and the dispatch above it stays small.
+    #[inline(never)]
     pub fn start_in(
         kernel: K,
         drive: D,
@@ -97,13 +98,15 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
         if !t0.is_finite() {
             return Err(EngineError::TimeBackwards);
         }
+        if A::SPINS && !p.has_spins() {
+            return Err(EngineError::Spins);
+        }
         p.reset_kick_times(t0);
         let mut s = NoSplitting {
             c: Collider::new(kernel, drive, restitution),
             t: t0,
             refresh: RefreshWindow::new(p.len()),
-            scale: 1.0,
-            offset: Vec3::ZERO,
+            frame: Frame::IDENTITY,
             rescale_below: RESCALE_BELOW,
         };
         let obs = s.synchronized(p)?;
@@ -117,7 +120,7 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
 
     /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]).
     pub fn work_rate(&self, n: usize) -> Real {
-        self.c.work_rate(n, self.scale, self.offset)
+        self.c.work_rate(n, self.frame.scale, self.frame.offset)
     }
 
     /// Current majorant of the relative speed (0 for kernels that need none).
@@ -133,6 +136,17 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
     /// The kernel.
     pub fn kernel(&self) -> &K {
         &self.c.kernel
+    }
+
+    /// The collision map (a restitution law, or the rough map).
+    pub fn map(&self) -> &A {
+        &self.c.map
+    }
+
+    /// A rough gas's rotational observables now (the particles at the current time, as after
+    /// [`Self::advance_to`]); `None` for smooth particles.
+    pub fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
+        self.c.map.rough(p, self.frame.scale, G::CHOICE)
     }
 
     /// Runs the process to time `t_end >= time()`, kicks every particle to `t_end` and returns
@@ -155,49 +169,36 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
             .drive
             .kick_all_counting(p, t_end, rng, &mut self.c.counts.background);
         let obs = self.synchronized(p)?;
-        Ok(self.with_raw_v6(p, obs))
-    }
-
-    /// `<|v|^6>` of a gas stored rescaled about a bulk velocity cannot be rebuilt from the
-    /// central moments ([`Observables::in_units`] leaves it NaN); at an observation it is
-    /// summed directly from the physical velocities `offset + scale v` (their peculiar parts
-    /// are below the bulk's last digits there, so this is as accurate as the sum can be).
-    /// Only a gas with no drive is ever stored rescaled.
-    fn with_raw_v6(&self, p: &Particles<'_>, obs: Observables) -> Observables {
-        if D::ACTS {
-            return obs;
-        }
-        with_raw_v6(p, obs, self.scale, self.offset)
+        Ok(self.frame.with_raw_v6(p.as_slice(), obs))
     }
 
     /// Re-synchronizes after the caller changed velocities between calls: every last-kick time
     /// becomes the current time and `V`, `Umax` are recomputed. Returns the observables.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        // The caller's velocities are physical.
-        (self.scale, self.offset) = (1.0, Vec3::ZERO);
+        // The caller's velocities are physical (a rough gas's spins are left as stored).
+        self.frame.reset(p, A::SPINS);
         p.reset_kick_times(self.t);
         self.synchronized(p)
     }
 
     /// Observables of the synchronized system (in physical units); refreshes `V` and `Umax`,
-    /// and rescales a cooling gas whose stored temperature fell below the threshold.
+    /// checks a rough gas's spins, and rescales a cooling gas whose stored temperature fell
+    /// below the threshold.
     fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
         let d = G::CHOICE.d();
         let mut obs = observables_dim(p, d)?;
+        if A::SPINS {
+            spins_finite(p)?;
+        }
         if !D::ACTS
-            && rescale(
-                p,
-                &mut obs,
-                self.rescale_below,
-                &mut self.scale,
-                &mut self.offset,
-                d,
-            )
+            && self
+                .frame
+                .rescale(p, &mut obs, self.rescale_below, d, A::SPINS)
         {
             self.c.counts.rescales += 1;
         }
         self.c.synchronized(&obs);
-        Ok(obs.in_units_dim(self.scale, self.offset, d))
+        Ok(self.frame.observables(&obs, d))
     }
 
     /// Sets the stored temperature below which a gas with no drive is rescaled (default
@@ -208,41 +209,21 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> NoSplitting<K, D, A, G> {
 
     /// The map from stored to physical velocities, `v_phys = offset + scale v` (identity unless
     /// a cooling gas was rescaled).
-    pub fn velocity_map(&self) -> (Real, Vec3) {
-        (self.scale, self.offset)
+    pub fn velocity_map(&self) -> Frame {
+        self.frame
     }
 }
 
-/// Stores a cooling gas rescaled (module docs) when its temperature `obs.t_bulk` (stored
-/// units) has fallen below `below` times `max(1, |V|^2)`: `v_phys = offset + scale v`, the
-/// stored peculiar velocities at unit temperature; `obs` becomes the stored system's (in `d`
-/// dimensions). True when it rescaled.
-pub(crate) fn rescale(
-    p: &mut Particles<'_>,
-    obs: &mut Observables,
-    below: Real,
-    scale: &mut Real,
-    offset: &mut Vec3,
-    d: usize,
-) -> bool {
-    if !rescale_due(obs.t_bulk, obs.bulk, below) {
-        return false;
+/// Every rim velocity finite, or the error naming them.
+fn spins_finite(p: &Particles<'_>) -> Result<(), EngineError> {
+    if p.spins()
+        .iter()
+        .all(|s| s.rim_velocity().norm2().is_finite())
+    {
+        Ok(())
+    } else {
+        Err(EngineError::NonFinite("a rim velocity"))
     }
-    let s = 1.0 / sqrt(obs.t_bulk);
-    for q in p.as_mut_slice() {
-        let v = q.velocity();
-        q.set_velocity(s * (v - obs.bulk));
-    }
-    *offset += *scale * obs.bulk;
-    *scale /= s;
-    *obs = Observables::of_dim(p, d);
-    true
-}
-
-/// Whether a gas with no drive at temperature `t_bulk` about the bulk velocity `bulk` (stored
-/// units) is due to be stored rescaled: below `below` times `max(1, |V|^2)` (module docs).
-pub(crate) fn rescale_due(t_bulk: Real, bulk: Vec3, below: Real) -> bool {
-    t_bulk > 0.0 && t_bulk < below * max(1.0, bulk.norm2())
 }
 
 /// A gas with no drive re-synchronized within a run by the light pass ([`crate::batch::sync`]):
@@ -286,37 +267,17 @@ pub(crate) fn checked_sync(
     Ok((bulk, t_bulk))
 }
 
-/// `<|v|^6>` of a gas stored rescaled about a bulk velocity cannot be rebuilt from the central
-/// moments ([`Observables::in_units`] leaves it NaN): summed directly from the physical
-/// velocities `offset + scale v` at an observation.
-pub(crate) fn with_raw_v6(
-    p: &Particles<'_>,
-    mut obs: Observables,
-    scale: Real,
-    offset: Vec3,
-) -> Observables {
-    if obs.v6.is_nan() && offset != Vec3::ZERO {
-        let mut s = 0.0;
-        for q in p.as_slice() {
-            let v2 = (offset + scale * q.velocity()).norm2();
-            s += v2 * v2 * v2;
-        }
-        obs.v6 = s / p.len() as Real;
-    }
-    obs
-}
-
-impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Jumps for NoSplitting<K, D, A, G> {
+impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Jumps for NoSplitting<K, D, A, G> {
     const ACTS: bool = D::ACTS;
     const USES_UMAX: bool = K::USES_UMAX;
 
     #[inline(always)]
     fn rate(&mut self, n: usize) -> Real {
-        self.c.rate(n, self.scale)
+        self.c.rate(n, self.frame.scale)
     }
     #[inline(always)]
     fn bound(&self) -> Real {
-        self.scale * self.c.maj.umax
+        self.frame.scale * self.c.maj.umax
     }
     jumps_state!(t, refresh, c.counts);
     fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
@@ -326,7 +287,7 @@ impl<K: Kernel, D: Drive, A: Restitution, G: Geometry> Jumps for NoSplitting<K, 
     }
     fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError> {
         if !D::ACTS && light_resync::<K>(p, &mut self.c.maj, G::CHOICE.d(), self.rescale_below)? {
-            return Ok(());
+            return if A::SPINS { spins_finite(p) } else { Ok(()) };
         }
         self.synchronized(p)?;
         self.c.counts.observations -= 1;

@@ -25,8 +25,9 @@
 //! ([`super::nosplit::RESCALE_BELOW`]), the observables.
 
 use super::event::{RefreshWindow, clamped_coefficient, observables};
+use super::frame::{Frame, RESCALE_BELOW, rescale_due};
 use super::jumps::{Jumps, jumps_state, run_events};
-use super::nosplit::{RESCALE_BELOW, checked_sync, rescale, rescale_due, with_raw_v6};
+use super::nosplit::checked_sync;
 use super::pairs::PREFETCH_FROM;
 use super::{Counts, EngineError};
 use crate::batch::sync::SyncSums;
@@ -65,13 +66,14 @@ pub struct SumNoSplitting<A> {
     counts: Counts,
     t: Real,
     refresh: RefreshWindow,
-    scale: Real,
-    offset: Vec3,
+    frame: Frame,
 }
 
 impl<A: Restitution> SumNoSplitting<A> {
     /// Starts at `t0` on the particles `p` (holding the initial velocities); returns the
     /// observables at `t0`.
+    // Out of line: called once per run, and the dispatch above it stays small.
+    #[inline(never)]
     pub fn start(
         kernel: HardSpheres,
         restitution: A,
@@ -95,8 +97,7 @@ impl<A: Restitution> SumNoSplitting<A> {
             counts: Counts::default(),
             t: t0,
             refresh: RefreshWindow::new(p.len()),
-            scale: 1.0,
-            offset: Vec3::ZERO,
+            frame: Frame::IDENTITY,
         };
         let obs = s.synchronized(p, false)?;
         Ok((s, obs))
@@ -124,12 +125,12 @@ impl<A: Restitution> SumNoSplitting<A> {
     #[inline(always)]
     fn rate_of(&self, n: usize, sum: Real) -> Real {
         let n = n.max(1);
-        self.kernel.pair_rate(self.scale * sum) * ((n - 1) as Real / n as Real)
+        self.kernel.pair_rate(self.frame.scale * sum) * ((n - 1) as Real / n as Real)
     }
 
     /// The map from stored to physical velocities.
-    pub fn velocity_map(&self) -> (Real, Vec3) {
-        (self.scale, self.offset)
+    pub fn velocity_map(&self) -> Frame {
+        self.frame
     }
 
     /// Stores `|c_k|` about `vref` in every `t_kick` slot and sums them; `c_max` exact. One
@@ -180,12 +181,12 @@ impl<A: Restitution> SumNoSplitting<A> {
         p.reset_kick_times(t_end);
         self.ready = false;
         let obs = self.synchronized(p, false)?;
-        Ok(with_raw_v6(p, obs, self.scale, self.offset))
+        Ok(self.frame.with_raw_v6(p.as_slice(), obs))
     }
 
     /// Re-synchronizes after the caller changed the velocities (physical ones).
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        (self.scale, self.offset) = (1.0, Vec3::ZERO);
+        self.frame = Frame::IDENTITY;
         p.reset_kick_times(self.t);
         self.ready = false;
         self.synchronized(p, false)
@@ -199,14 +200,7 @@ impl<A: Restitution> SumNoSplitting<A> {
         in_run: bool,
     ) -> Result<Observables, EngineError> {
         let mut obs = observables(p)?;
-        if rescale(
-            p,
-            &mut obs,
-            RESCALE_BELOW,
-            &mut self.scale,
-            &mut self.offset,
-            3,
-        ) {
+        if self.frame.rescale(p, &mut obs, RESCALE_BELOW, 3, false) {
             self.counts.rescales += 1;
         }
         self.counts.observations += 1;
@@ -214,7 +208,7 @@ impl<A: Restitution> SumNoSplitting<A> {
         if in_run {
             self.prepare(p, obs.bulk);
         }
-        Ok(obs.in_units(self.scale, self.offset))
+        Ok(self.frame.observables(&obs, 3))
     }
 
     /// The next uniform index in `0..n`: drawn [`AHEAD`] uses ago and prefetched at large `n`.
@@ -250,7 +244,7 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
     }
     #[inline(always)]
     fn bound(&self) -> Real {
-        self.scale * self.sum
+        self.frame.scale * self.sum
     }
     jumps_state!(t, refresh, counts);
     fn kick_all<R: Rng + ?Sized>(&mut self, _p: &mut Particles<'_>, _t: Real, _rng: &mut R) {}

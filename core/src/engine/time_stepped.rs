@@ -47,6 +47,8 @@ pub struct TimeStepped<D, A> {
 impl<D: Drive, A: Restitution> TimeStepped<D, A> {
     /// Starts at `t0` with step factor `f > 0` (`h = f lambda / v_0`; MS: 0.01) on particles
     /// holding the initial velocities. `omega_max` starts from `Umax = 2 max |v - V|`.
+    // Out of line: called once per run, and the dispatch above it stays small.
+    #[inline(never)]
     pub fn start(
         kernel: HardSpheres,
         drive: D,

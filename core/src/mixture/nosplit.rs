@@ -27,15 +27,14 @@ use super::observables::MixtureObservables;
 use super::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species};
 use crate::drive::Drive;
 use crate::engine::event::{Majorant, RefreshWindow, clamped_coefficient};
-use crate::engine::nosplit::RESCALE_BELOW;
+use crate::engine::frame::{Frame, RESCALE_BELOW};
 use crate::engine::{Counts, EngineError};
 use crate::kernel::Kernel;
-use crate::math::{Real, max, sqrt};
+use crate::math::{Real, max};
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_index, uniform_pair, uniform01};
 use crate::sample::{standard_exponential, unit_sphere};
-use crate::vec3::Vec3;
 
 /// The physics of one pair type `(s, t)`: kernel, restitution law, masses.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,8 +65,7 @@ pub struct MixtureNoSplitting<K, D, A> {
     pair_collisions: [u64; MAX_PAIRS],
     t: Real,
     refresh: RefreshWindow,
-    scale: Real,
-    offset: Vec3,
+    frame: Frame,
 }
 
 impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
@@ -117,8 +115,7 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
             pair_collisions: [0; MAX_PAIRS],
             t: t0,
             refresh: RefreshWindow::new(p.len()),
-            scale: 1.0,
-            offset: Vec3::ZERO,
+            frame: Frame::IDENTITY,
         };
         let obs = s.synchronized(p).map_err(StartError::Engine)?;
         Ok((s, obs))
@@ -147,14 +144,14 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
     /// Re-synchronizes after the caller changed velocities between calls (physical units):
     /// every last-kick time becomes the current time, the majorants are recomputed.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
-        (self.scale, self.offset) = (1.0, Vec3::ZERO);
+        self.frame = Frame::IDENTITY;
         p.reset_kick_times(self.t);
         self.synchronized(p)
     }
 
     /// The map `v_phys = offset + scale v` from stored to physical velocities.
-    pub fn velocity_map(&self) -> (Real, Vec3) {
-        (self.scale, self.offset)
+    pub fn velocity_map(&self) -> Frame {
+        self.frame
     }
 
     /// The majorant `U_st` of pair type `k` (stored units).
@@ -172,7 +169,7 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
     fn type_rate(&self, k: usize) -> Real {
         let n = self.sp.total();
         let (s, t) = self.pair_of[k];
-        let umax = self.scale * self.pair_umax(k);
+        let umax = self.frame.scale * self.pair_umax(k);
         let kernel = &self.physics[k].kernel;
         if s == t {
             let ns = self.sp.count(s);
@@ -195,7 +192,8 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
         let events: Real = (0..self.sp.len())
             .map(|s| {
                 let m = &self.maj[s];
-                let speed = (self.offset + self.scale * m.vref).norm() + 0.5 * self.scale * m.umax;
+                let speed = (self.frame.offset + self.frame.scale * m.vref).norm()
+                    + 0.5 * self.frame.scale * m.umax;
                 self.sp.count(s) as Real * self.drives[s].event_rate(speed)
             })
             .sum();
@@ -239,13 +237,14 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
                 rate = self.rates();
                 self.refresh.restart();
             } else if D::ACTS && K::USES_UMAX && self.refresh.refresh_due() {
-                let before = self.scale * self.bound();
+                let before = self.frame.scale * self.bound();
                 self.kick_all(p, self.t, rng);
                 self.synchronized(p)?;
                 self.counts.observations -= 1;
                 self.counts.refreshes += 1;
                 rate = self.rates();
-                self.refresh.refreshed(before, self.scale * self.bound(), n);
+                self.refresh
+                    .refreshed(before, self.frame.scale * self.bound(), n);
             }
             let t_next = self.t + standard_exponential(rng) / rate;
             if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
@@ -364,15 +363,8 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
         if let Some(what) = obs.all.non_finite() {
             return Err(EngineError::NonFinite(what));
         }
-        let all = obs.all;
-        if !D::ACTS && all.t_bulk > 0.0 && all.t_bulk < RESCALE_BELOW * max(1.0, all.bulk.norm2()) {
-            let s = 1.0 / sqrt(all.t_bulk);
-            for q in p.as_mut_slice() {
-                let v = q.velocity();
-                q.set_velocity(s * (v - all.bulk));
-            }
-            self.offset += self.scale * all.bulk;
-            self.scale /= s;
+        let mut all = obs.all;
+        if !D::ACTS && self.frame.rescale(p, &mut all, RESCALE_BELOW, 3, false) {
             self.counts.rescales += 1;
             obs = MixtureObservables::of(p.as_slice(), &self.sp);
         }
@@ -402,31 +394,21 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
                 (obs.species[s].bulk - obs.species[t].bulk).norm()
             };
         }
-        Ok(self.with_raw_v6(p, obs.in_units(self.scale, self.offset)))
+        Ok(self.with_raw_v6(p, obs.in_units(self.frame.scale, self.frame.offset)))
     }
 
     /// `<|v|^6>` of a gas stored rescaled about a bulk velocity, summed from the physical
     /// velocities (as [`crate::engine::NoSplitting`] does; [`crate::moments::Observables::in_units`]
     /// leaves it NaN).
     fn with_raw_v6(&self, p: &Particles<'_>, mut obs: MixtureObservables) -> MixtureObservables {
-        if D::ACTS || self.offset == Vec3::ZERO {
+        if D::ACTS {
             return obs;
         }
-        let v6 = |q: &[crate::particles::Particle]| {
-            let mut s = 0.0;
-            for x in q {
-                let v2 = (self.offset + self.scale * x.velocity()).norm2();
-                s += v2 * v2 * v2;
-            }
-            s / q.len() as Real
-        };
-        if obs.all.v6.is_nan() {
-            obs.all.v6 = v6(p.as_slice());
-        }
+        obs.all = self.frame.with_raw_v6(p.as_slice(), obs.all);
         for s in 0..self.sp.len() {
-            if obs.species[s].v6.is_nan() {
-                obs.species[s].v6 = v6(&p.as_slice()[self.sp.range(s)]);
-            }
+            obs.species[s] = self
+                .frame
+                .with_raw_v6(&p.as_slice()[self.sp.range(s)], obs.species[s]);
         }
         obs
     }
@@ -459,13 +441,13 @@ impl<K: Kernel, D: Drive, A: Restitution> crate::engine::EventLoop for MixtureNo
     fn work_rate(&self, n: usize) -> Real {
         MixtureNoSplitting::work_rate(self, n)
     }
-    fn velocity_map(&self) -> (Real, Vec3) {
-        (self.scale, self.offset)
+    fn velocity_map(&self) -> Frame {
+        self.frame
     }
     #[inline(never)]
     fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
         let obs = MixtureObservables::of(p.as_slice(), &self.sp);
-        Some(self.with_raw_v6(p, obs.in_units(self.scale, self.offset)))
+        Some(self.with_raw_v6(p, obs.in_units(self.frame.scale, self.frame.offset)))
     }
 }
 

@@ -3,8 +3,8 @@
 //! choices above it, so that every leaf is a monomorphized event loop.
 
 use super::engine::{
-    ByDiskDrive, ByDrive, ByLaw, ByMixtureDrive, ByRoughDrive, ByScheme, DiskEngine, Engine,
-    MixtureEngine, RoughDiskEngine, RoughEngine,
+    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive, ByScheme, Engine, Family,
+    Mixture, Rough, Smooth, SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
@@ -13,7 +13,7 @@ use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
 use crate::drive::{Drive, NoDrive, PlanarWhiteNoise};
 use crate::engine::{EngineError, NoSplitting, Splitting, SumNoSplitting, TimeStepped};
-use crate::geometry::{DimensionChoice, Disks, Geometry};
+use crate::geometry::{DimensionChoice, Disks, Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
 use crate::mixture::{MixtureNoSplitting, PairPhysics, StartError};
@@ -21,8 +21,8 @@ use crate::moments::Observables;
 use crate::particles::{Particle, Particles, Spin};
 use crate::restitution::Restitution;
 use crate::rng::Rng;
-use crate::rough::RoughNoSplitting;
 use crate::vec3::Vec3;
+use core::marker::PhantomData;
 
 impl Model {
     /// Draws every particle's velocity from the initial distribution (one uniform for the
@@ -90,34 +90,28 @@ impl Model {
         if p.len() != self.n() {
             return Err(EngineError::ParticleCount);
         }
+        let k = self.kernel;
         if let Some(mx) = &self.mixture {
-            let engine = match self.kernel {
-                KernelModel::Maxwell(k) => {
-                    wrap(mixture(mx, k, self.drive, p, t0), MixtureEngine::Maxwell)
-                }
-                KernelModel::HardSpheres(k) => wrap(
-                    mixture(mx, k, self.drive, p, t0),
-                    MixtureEngine::HardSpheres,
-                ),
-                KernelModel::Vhs(k) => wrap(mixture(mx, k, self.drive, p, t0), MixtureEngine::Vhs),
-            };
-            return wrap(engine, Engine::Mixture);
+            return wrap(
+                by_kernel(k, &MixtureBuild(mx, self.drive), p, t0),
+                Engine::Mixture,
+            );
         }
-        if self.dimension == DimensionChoice::Two {
-            return wrap(self.disks(p, t0), Engine::Disks);
-        }
-        if let Some(r) = &self.rough {
-            let engine = match self.kernel {
-                KernelModel::Maxwell(k) => wrap(rough(r, k, p, t0), RoughEngine::Maxwell),
-                KernelModel::HardSpheres(k) => wrap(rough(r, k, p, t0), RoughEngine::HardSpheres),
-                KernelModel::Vhs(k) => wrap(rough(r, k, p, t0), RoughEngine::Vhs),
-            };
-            return wrap(engine, Engine::Rough);
-        }
-        match self.kernel {
-            KernelModel::Maxwell(k) => wrap(self.by_drive(k, p, t0), Engine::Maxwell),
-            KernelModel::HardSpheres(k) => wrap(self.by_drive(k, p, t0), Engine::HardSpheres),
-            KernelModel::Vhs(k) => wrap(self.by_drive(k, p, t0), Engine::Vhs),
+        match (&self.rough, self.dimension) {
+            (Some(r), DimensionChoice::Three) => wrap(
+                by_kernel(k, &RoughBuild::<Spheres>(r, PhantomData), p, t0),
+                Engine::Rough,
+            ),
+            (Some(r), DimensionChoice::Two) => wrap(
+                by_kernel(k, &RoughBuild::<Disks>(r, PhantomData), p, t0),
+                Engine::RoughDisks,
+            ),
+            (None, DimensionChoice::Two) => {
+                wrap(by_kernel(k, &DiskBuild(self), p, t0), Engine::Disks)
+            }
+            (None, DimensionChoice::Three) => {
+                wrap(by_kernel(k, &SmoothBuild(self), p, t0), Engine::Smooth)
+            }
         }
     }
 
@@ -130,33 +124,6 @@ impl Model {
     ) -> Result<(Engine, Observables), EngineError> {
         self.initialize(p, t0, rng)?;
         self.start(p, t0)
-    }
-
-    /// Disks: the smooth loop by kernel and drive, or the rough one. Out of line, as the
-    /// mixture's start is, so that the spheres' frames do not grow.
-    #[inline(never)]
-    fn disks(
-        &self,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(DiskEngine, Observables), EngineError> {
-        if let Some(r) = &self.rough {
-            let engine = match self.kernel {
-                KernelModel::Maxwell(k) => {
-                    wrap(rough::<_, Disks>(r, k, p, t0), RoughDiskEngine::Maxwell)
-                }
-                KernelModel::HardSpheres(k) => {
-                    wrap(rough::<_, Disks>(r, k, p, t0), RoughDiskEngine::HardSpheres)
-                }
-                KernelModel::Vhs(k) => wrap(rough::<_, Disks>(r, k, p, t0), RoughDiskEngine::Vhs),
-            };
-            return wrap(engine, DiskEngine::Rough);
-        }
-        match self.kernel {
-            KernelModel::Maxwell(k) => wrap(self.disk_drive(k, p, t0), DiskEngine::Maxwell),
-            KernelModel::HardSpheres(k) => wrap(self.disk_drive(k, p, t0), DiskEngine::HardSpheres),
-            KernelModel::Vhs(k) => wrap(self.disk_drive(k, p, t0), DiskEngine::Vhs),
-        }
     }
 
     fn disk_drive<K: Kernel>(
@@ -320,13 +287,99 @@ fn rough<K: Kernel, G: Geometry>(
 ) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
     match r.noise {
         None => wrap(
-            RoughNoSplitting::start_in(k, NoDrive, r.map, p, t0),
+            NoSplitting::start_in(k, NoDrive, r.map, p, t0),
             ByRoughDrive::None,
         ),
         Some(d) => wrap(
-            RoughNoSplitting::start_in(k, d, r.map, p, t0),
+            NoSplitting::start_in(k, d.in_dim::<G>(), r.map, p, t0),
             ByRoughDrive::Noise,
         ),
+    }
+}
+
+/// What builds one family's engine for any kernel: the level below [`by_kernel`].
+trait Build {
+    /// The family built.
+    type F: Family;
+    /// The family's engine for kernel `k`, started at `t0` on `p`.
+    fn build<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(<Self::F as Family>::Of<K>, Observables), EngineError>;
+}
+
+/// The one kernel level of the dispatch, for every family. Out of line: each family's start
+/// keeps its locals (a mixture's pair table, its per-species observables) in its own frame,
+/// not in [`Model::start`]'s for every physics.
+#[inline(never)]
+fn by_kernel<B: Build>(
+    kernel: KernelModel,
+    b: &B,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Result<(ByKernel<B::F>, Observables), EngineError> {
+    match kernel {
+        KernelModel::Maxwell(k) => wrap(b.build(k, p, t0), ByKernel::Maxwell),
+        KernelModel::HardSpheres(k) => wrap(b.build(k, p, t0), ByKernel::HardSpheres),
+        KernelModel::Vhs(k) => wrap(b.build(k, p, t0), ByKernel::Vhs),
+    }
+}
+
+/// Smooth spheres of one species: by drive, law and scheme.
+struct SmoothBuild<'a>(&'a Model);
+impl Build for SmoothBuild<'_> {
+    type F = Smooth;
+    fn build<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByDrive<K>, Observables), EngineError> {
+        self.0.by_drive(k, p, t0)
+    }
+}
+
+/// Smooth disks: by drive.
+struct DiskBuild<'a>(&'a Model);
+impl Build for DiskBuild<'_> {
+    type F = SmoothDisks;
+    fn build<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
+        self.0.disk_drive(k, p, t0)
+    }
+}
+
+/// Rough particles in dimension `G`: by drive.
+struct RoughBuild<'a, G>(&'a RoughModel, PhantomData<G>);
+impl<G: Geometry> Build for RoughBuild<'_, G> {
+    type F = Rough<G>;
+    fn build<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
+        rough(self.0, k, p, t0)
+    }
+}
+
+/// A mixture: the pair kernels scaled from `k`, by drive.
+struct MixtureBuild<'a>(&'a MixtureModel, DriveModel);
+impl Build for MixtureBuild<'_> {
+    type F = Mixture;
+    fn build<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByMixtureDrive<K>, Observables), EngineError> {
+        mixture(self.0, k, self.1, p, t0)
     }
 }
 

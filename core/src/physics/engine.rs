@@ -1,6 +1,7 @@
 //! The statically composed engine behind a [`super::Model`]: a nest of small enums, one level
-//! per choice (kernel, drive, restitution law, scheme), whose leaves are the monomorphized
-//! event loops. No box and no allocation (a C caller or a firmware keeps it in its own memory);
+//! per choice (particle model, species and dimension; kernel, written once for every family;
+//! drive, restitution law or collision map, scheme), whose leaves are the monomorphized event
+//! loops. No box and no allocation (a C caller or a firmware keeps it in its own memory);
 //! each call goes down the nest once (four `match`es per call, i.e. per observation) and then
 //! runs a loop that holds only the physics it names.
 
@@ -9,7 +10,7 @@ use crate::drive::{
     NoDrive, PlanarWhiteNoise, WhiteNoise,
 };
 use crate::engine::{
-    Counts, EngineError, EventLoop, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
+    Counts, EngineError, EventLoop, Frame, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
 };
 use crate::geometry::{Disks, Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
@@ -19,10 +20,10 @@ use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
 use crate::rng::Rng;
-use crate::rough::{RoughNoSplitting, RoughNoise, RoughObservables};
-use crate::vec3::Vec3;
+use crate::rough::{RoughMap, RoughNoise, RoughObservables};
 
-/// The engine of a validated physics, by kernel.
+/// The engine of a validated physics: by particle model, species and dimension, then one
+/// kernel level ([`ByKernel`]) over the family's nest of drives, laws and schemes.
 // The mixture's loop keeps its per-species and per-pair state in fixed arrays (about 1.4 KB
 // against 0.5 KB for the one-species loops); the core has no allocator to box it, and an
 // engine lives in its caller's memory once per system, so the size is paid once, not per
@@ -30,32 +31,63 @@ use crate::vec3::Vec3;
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum Engine {
-    /// Maxwell pseudo-molecules.
-    Maxwell(ByDrive<Maxwell>),
-    /// Hard spheres (also the time-stepped scheme).
-    HardSpheres(ByDrive<HardSpheres>),
-    /// Variable hard spheres.
-    Vhs(ByDrive<Vhs>),
-    /// A mixture of several species.
-    Mixture(MixtureEngine),
-    /// Rough particles (translation and rotation).
-    Rough(RoughEngine),
-    /// Disks (`d = 2`), smooth or rough.
-    Disks(DiskEngine),
+    /// Smooth spheres of one species: by drive, law and scheme.
+    Smooth(ByKernel<Smooth>),
+    /// A mixture of several species of smooth spheres.
+    Mixture(ByKernel<Mixture>),
+    /// Rough spheres (translation and rotation).
+    Rough(ByKernel<Rough<Spheres>>),
+    /// Smooth disks (`d = 2`).
+    Disks(ByKernel<SmoothDisks>),
+    /// Rough disks.
+    RoughDisks(ByKernel<Rough<Disks>>),
 }
 
-/// The engine of disks (`d = 2`, no-splitting, a constant restitution), smooth by kernel or
-/// rough.
+/// A family of loops that takes every kernel: what it is for kernel `K` ([`ByKernel`] holds
+/// one of them).
+pub trait Family {
+    /// The family's engine for kernel `K`.
+    type Of<K: Kernel>: EventLoop + Clone + core::fmt::Debug;
+}
+
+/// The one kernel level, for every family: the kernel chosen at run time, the family's nest
+/// below it generic over the kernel.
 #[derive(Clone, Debug)]
-pub enum DiskEngine {
+pub enum ByKernel<F: Family> {
     /// Maxwell pseudo-molecules.
-    Maxwell(ByDiskDrive<Maxwell>),
-    /// Hard disks.
-    HardSpheres(ByDiskDrive<HardSpheres>),
-    /// Variable hard disks (isotropic scattering).
-    Vhs(ByDiskDrive<Vhs>),
-    /// Rough disks.
-    Rough(RoughDiskEngine),
+    Maxwell(F::Of<Maxwell>),
+    /// Hard spheres (hard disks in `d = 2`).
+    HardSpheres(F::Of<HardSpheres>),
+    /// Variable hard spheres.
+    Vhs(F::Of<Vhs>),
+}
+
+/// Smooth spheres of one species ([`ByDrive`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Smooth;
+impl Family for Smooth {
+    type Of<K: Kernel> = ByDrive<K>;
+}
+
+/// Smooth disks ([`ByDiskDrive`]).
+#[derive(Clone, Copy, Debug)]
+pub struct SmoothDisks;
+impl Family for SmoothDisks {
+    type Of<K: Kernel> = ByDiskDrive<K>;
+}
+
+/// Rough particles in dimension `G` ([`ByRoughDrive`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Rough<G>(core::marker::PhantomData<G>);
+impl<G: Geometry> Family for Rough<G> {
+    type Of<K: Kernel> = ByRoughDrive<K, G>;
+}
+
+/// Mixtures of smooth spheres ([`ByMixtureDrive`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Mixture;
+impl Family for Mixture {
+    type Of<K: Kernel> = ByMixtureDrive<K>;
 }
 
 /// Smooth disks by drive, for kernel `K`.
@@ -67,46 +99,14 @@ pub enum ByDiskDrive<K> {
     WhiteNoise(NoSplitting<K, PlanarWhiteNoise, Constant, Disks>),
 }
 
-/// Rough disks by kernel.
-#[derive(Clone, Debug)]
-pub enum RoughDiskEngine {
-    /// Maxwell pseudo-molecules.
-    Maxwell(ByRoughDrive<Maxwell, Disks>),
-    /// Hard disks.
-    HardSpheres(ByRoughDrive<HardSpheres, Disks>),
-    /// Variable hard disks.
-    Vhs(ByRoughDrive<Vhs, Disks>),
-}
-
-/// A rough gas's engine (no-splitting, a constant normal restitution), by kernel.
-#[derive(Clone, Debug)]
-pub enum RoughEngine {
-    /// Maxwell pseudo-molecules.
-    Maxwell(ByRoughDrive<Maxwell>),
-    /// Hard spheres.
-    HardSpheres(ByRoughDrive<HardSpheres>),
-    /// Variable hard spheres.
-    Vhs(ByRoughDrive<Vhs>),
-}
-
-/// A rough gas's engine by drive, for kernel `K` and dimension `G`.
+/// A rough gas's engine by drive (the exact loop with the rough map), for kernel `K` and
+/// dimension `G`.
 #[derive(Clone, Debug)]
 pub enum ByRoughDrive<K, G = Spheres> {
     /// No drive: the gas cools.
-    None(RoughNoSplitting<K, NoDrive, G>),
+    None(NoSplitting<K, NoDrive, RoughMap, G>),
     /// White noise on translation and rotation.
-    Noise(RoughNoSplitting<K, RoughNoise, G>),
-}
-
-/// A mixture's engine (no-splitting, a constant restitution per species pair), by kernel.
-#[derive(Clone, Debug)]
-pub enum MixtureEngine {
-    /// Maxwell pseudo-molecules.
-    Maxwell(ByMixtureDrive<Maxwell>),
-    /// Hard spheres.
-    HardSpheres(ByMixtureDrive<HardSpheres>),
-    /// Variable hard spheres.
-    Vhs(ByMixtureDrive<Vhs>),
+    Noise(NoSplitting<K, RoughNoise<G>, RoughMap, G>),
 }
 
 /// A mixture's engine by drive, for kernel `K`.
@@ -153,10 +153,10 @@ pub enum ByScheme<K, D, A> {
     NoSplitting(NoSplitting<K, D, A>),
     /// Euler or Strang splitting (RW Algorithms 1, 2).
     Splitting(Splitting<K, D, A>),
-    /// MS's time-stepped scheme (hard spheres only; built only under [`Engine::HardSpheres`]).
+    /// MS's time-stepped scheme (hard spheres only; built only under [`ByKernel::HardSpheres`]).
     TimeStepped(TimeStepped<D, A>),
     /// The exact scheme of hard spheres with no drive on the sum-form majorant (built only under
-    /// [`Engine::HardSpheres`] with [`ByDrive::None`]).
+    /// [`ByKernel::HardSpheres`] with [`ByDrive::None`]).
     SumForm(SumNoSplitting<A>),
 }
 
@@ -184,7 +184,7 @@ macro_rules! forward {
             fn work_rate(&self, n: usize) -> Real {
                 match self { $(Self::$v(e) => EventLoop::work_rate(e, n)),+ }
             }
-            fn velocity_map(&self) -> (Real, Vec3) {
+            fn velocity_map(&self) -> Frame {
                 match self { $(Self::$v(e) => EventLoop::velocity_map(e)),+ }
             }
             fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
@@ -197,13 +197,10 @@ macro_rules! forward {
     };
 }
 
-forward!(Engine, [], Maxwell, HardSpheres, Vhs, Mixture, Rough, Disks);
-forward!(DiskEngine, [], Maxwell, HardSpheres, Vhs, Rough);
+forward!(Engine, [], Smooth, Mixture, Rough, Disks, RoughDisks);
+forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise);
-forward!(RoughDiskEngine, [], Maxwell, HardSpheres, Vhs);
-forward!(RoughEngine, [], Maxwell, HardSpheres, Vhs);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
-forward!(MixtureEngine, [], Maxwell, HardSpheres, Vhs);
 forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);

@@ -10,60 +10,50 @@
 //! `dt` (the kick solves the heat equation of its part), so the lazy kicks of the no-splitting
 //! loop keep it exact.
 
-use crate::drive::NoDrive;
-use crate::geometry::Geometry;
+use crate::drive::Drive;
+use crate::geometry::{Geometry, Spheres};
 use crate::math::{Real, sqrt};
+use crate::particles::Particles;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
-/// A drive of a rough gas: how `(v, w)` evolve over `dt` with no collision.
-pub trait RoughDrive: Copy {
-    /// False when nothing acts (the loop then skips the kicks and keeps every particle current).
-    const ACTS: bool;
-
-    /// `(v, w)` after `dt >= 0` of the drive alone, in dimension `G` (disks: noise in the plane
-    /// and along the rim velocity's one axis, `z`).
-    fn evolve<G: Geometry, R: Rng + ?Sized>(
-        &self,
-        v: Vec3,
-        w: Vec3,
-        dt: Real,
-        rng: &mut R,
-    ) -> (Vec3, Vec3);
-}
-
-impl RoughDrive for NoDrive {
-    const ACTS: bool = false;
-
-    #[inline(always)]
-    fn evolve<G: Geometry, R: Rng + ?Sized>(
-        &self,
-        v: Vec3,
-        w: Vec3,
-        _dt: Real,
-        _rng: &mut R,
-    ) -> (Vec3, Vec3) {
-        (v, w)
-    }
-}
-
-/// White noise of strength `beta` on translation and `beta_rot` on rotation (module docs).
-/// A zero strength draws nothing for its part.
+/// White noise of strength `beta` on translation and `beta_rot` on rotation (module docs), in
+/// dimension `G` (disks: in the plane and along the rim velocity's one axis, `z`). A zero
+/// strength draws nothing for its part. With no noise a rough gas takes
+/// [`crate::drive::NoDrive`], as a smooth one does.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RoughNoise {
+pub struct RoughNoise<G = Spheres> {
     /// `2 beta`: the variance rate of each translational component.
     tr: Real,
     /// `2 beta_rot / kappa`: the variance rate of each rim-velocity component.
     rot: Real,
+    dim: core::marker::PhantomData<G>,
 }
 
 impl RoughNoise {
     /// The noise of strengths `beta, beta_rot >= 0` on a gas of reduced moment of inertia
-    /// `kappa > 0`; `None` when a strength is negative or a rate not finite.
+    /// `kappa > 0`; `None` when a strength is negative or a rate not finite. Spheres; disks:
+    /// [`RoughNoise::in_dim`].
     pub fn new(beta: Real, beta_rot: Real, kappa: Real) -> Option<Self> {
         let (tr, rot) = (2.0 * beta, 2.0 * beta_rot / kappa);
         let ok = |x: Real| x.is_finite() && x >= 0.0;
-        (ok(tr) && ok(rot) && kappa > 0.0).then_some(RoughNoise { tr, rot })
+        (ok(tr) && ok(rot) && kappa > 0.0).then_some(RoughNoise {
+            tr,
+            rot,
+            dim: core::marker::PhantomData,
+        })
+    }
+}
+
+impl<G: Geometry> RoughNoise<G> {
+    /// The same strengths in dimension `H`.
+    #[must_use]
+    pub fn in_dim<H: Geometry>(self) -> RoughNoise<H> {
+        RoughNoise {
+            tr: self.tr,
+            rot: self.rot,
+            dim: core::marker::PhantomData,
+        }
     }
 
     /// `dT_tr/dt` from the noise: `2 beta`.
@@ -72,23 +62,32 @@ impl RoughNoise {
     }
 }
 
-impl RoughDrive for RoughNoise {
+impl<G: Geometry> Drive for RoughNoise<G> {
     const ACTS: bool = true;
 
+    /// The translational part alone (GRW (18) in `G`); the loops kick with
+    /// [`Drive::kick`], which moves the rim velocity too.
     #[inline(always)]
-    fn evolve<G: Geometry, R: Rng + ?Sized>(
-        &self,
-        mut v: Vec3,
-        mut w: Vec3,
-        dt: Real,
-        rng: &mut R,
-    ) -> (Vec3, Vec3) {
+    fn evolve<R: Rng + ?Sized>(&self, mut v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
         if self.tr > 0.0 {
             v += sqrt(self.tr * dt) * G::normal(rng);
         }
-        if self.rot > 0.0 {
-            w += sqrt(self.rot * dt) * G::spin_normal(rng);
+        v
+    }
+
+    /// Brings particle `i`'s velocity and rim velocity to `t` (translation drawn first); a
+    /// particle already at `t` draws nothing.
+    #[inline(always)]
+    fn kick<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, i: usize, t: Real, rng: &mut R) {
+        let dt = t - p.kick_time(i);
+        if dt > 0.0 {
+            let v = self.evolve(p.velocity(i), dt, rng);
+            p.set_velocity(i, v);
+            if self.rot > 0.0 {
+                let w = p.spin(i) + sqrt(self.rot * dt) * G::spin_normal(rng);
+                p.set_spin(i, w);
+            }
+            p.get_mut(i).t_kick = t;
         }
-        (v, w)
     }
 }

@@ -39,7 +39,10 @@
 //! assert!(((a1 + a2) - (v1 + v2)).norm() < 1e-15); // momentum kept
 //! ```
 
+use super::RoughObservables;
+use crate::geometry::{DimensionChoice, Geometry};
 use crate::math::{Real, sqrt};
+use crate::particles::Particles;
 use crate::rng::Rng;
 use crate::sample::unit_sphere;
 use crate::vec3::Vec3;
@@ -212,5 +215,38 @@ pub fn impact_direction<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
         if d2 > 1e-16 {
             return (1.0 / sqrt(d2)) * d;
         }
+    }
+}
+
+impl crate::engine::CollisionMap for RoughMap {
+    const SPINS: bool = true;
+
+    /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughMap::collide`] on the
+    /// velocities and rim velocities.
+    #[inline(always)]
+    fn collide_pair<K: crate::kernel::Kernel, G: Geometry, R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        rng: &mut R,
+        _counts: &mut crate::engine::Counts,
+    ) -> (Vec3, Vec3) {
+        let nrm = G::impact(vi - vj, rng);
+        let (a, wa, b, wb) = self.collide(vi, p.spin(i), vj, p.spin(j), nrm);
+        p.set_velocity(i, a);
+        p.set_spin(i, wa);
+        p.set_velocity(j, b);
+        p.set_spin(j, wb);
+        (a, b)
+    }
+
+    fn rough(
+        &self,
+        p: &Particles<'_>,
+        scale: Real,
+        dim: DimensionChoice,
+    ) -> Option<RoughObservables> {
+        Some(RoughObservables::of_dim(p, self.kappa, scale, dim))
     }
 }

@@ -158,7 +158,7 @@ pub fn run(
         writeln!(out)?;
     }
     let instructions = clock().wrapping_sub(start);
-    let (scale, offset) = engine.velocity_map();
+    let gdsmc_core::engine::Frame { scale, offset } = engine.velocity_map();
     writeln!(
         out,
         "{name} checksum={:016x} scale={scale:?} offset=[{:?}, {:?}, {:?}]",

@@ -21,7 +21,7 @@ use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::{Rng, seeded, uniform_index, uniform_pair};
-use gdsmc_core::rough::{RoughDrive, RoughMap, RoughNoSplitting, RoughNoise};
+use gdsmc_core::rough::{RoughMap, RoughNoise};
 use gdsmc_core::sample::{Maxwellian, standard_normal};
 use gdsmc_core::vec3::Vec3;
 use std::f64::consts::PI;
@@ -85,13 +85,7 @@ fn sum_form_loop(kernel: HardSpheres, alpha: f64, n: usize, budget: Duration) ->
 /// The rough gas's loop (hard spheres, the rough map with `alpha`, `beta`, uniform spheres,
 /// spins at the translational temperature) in growing time steps until `budget` has passed;
 /// returns (collisions per second, attempts per second).
-fn rough_loop<D: RoughDrive>(
-    drive: D,
-    alpha: f64,
-    beta: f64,
-    n: usize,
-    budget: Duration,
-) -> (f64, f64) {
+fn rough_loop<D: Drive>(drive: D, alpha: f64, beta: f64, n: usize, budget: Duration) -> (f64, f64) {
     let mut buf = system(n, 1);
     let mut spins: Vec<Spin> = {
         let mut rng = seeded(5);
@@ -101,7 +95,7 @@ fn rough_loop<D: RoughDrive>(
     let mut p = Particles::with_spins(&mut buf, &mut spins).expect("n >= 2");
     let map = RoughMap::new(alpha, beta, 0.4).expect("valid");
     let k = HardSpheres::new(4.0, 1.0 / (4.0 * PI)).expect("valid");
-    let (mut e, _) = RoughNoSplitting::start(k, drive, map, &mut p, 0.0).expect("finite start");
+    let (mut e, _) = NoSplitting::start(k, drive, map, &mut p, 0.0).expect("finite start");
     timed(&mut e, &mut p, budget)
 }
 

@@ -6,7 +6,7 @@ use crate::run::columns::COLUMNS;
 use crate::run::cooling::CoolingRates;
 use crate::scene::Scene;
 use gdsmc_core::collisional::collisional_moments;
-use gdsmc_core::engine::{Counts, EngineError, EventLoop};
+use gdsmc_core::engine::{Counts, EngineError, EventLoop, Frame};
 use gdsmc_core::histogram::{component_bins, radial_shells_mapped};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles, Spin};
@@ -144,16 +144,24 @@ fn observe<E: EventLoop>(
         {
             // c = (v - V) / v0.
             let inv = 1.0 / (2.0 * t_bulk).sqrt();
-            radial_shells_mapped(p, c_max, inv, -inv * bulk, &mut reduced);
+            radial_shells_mapped(
+                p,
+                c_max,
+                Frame {
+                    scale: inv,
+                    offset: -inv * bulk,
+                },
+                &mut reduced,
+            );
             reduced_points += 1;
         }
         if let Some((axis, _, radius)) = scene.marginal_histogram {
-            let (scale, offset) = engine.velocity_map();
+            let frame = engine.velocity_map();
             if ti == 0 {
-                component_bins(p, axis, radius, scale, offset, &mut marginal_first);
+                component_bins(p, axis, radius, frame, &mut marginal_first);
             }
             if ti == nt - 1 {
-                component_bins(p, axis, radius, scale, offset, &mut marginal_last);
+                component_bins(p, axis, radius, frame, &mut marginal_last);
             }
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
@@ -182,7 +190,7 @@ fn observe<E: EventLoop>(
                     c,
                     scene,
                     p,
-                    engine.velocity_map().0,
+                    engine.velocity_map().scale,
                     &mut diag,
                 ));
             }
@@ -191,8 +199,7 @@ fn observe<E: EventLoop>(
     // The histogram of the last observation rides at the end of the row (split off in the job).
     if let Some((k, radius)) = scene.histogram {
         let mut h = vec![0.0; k + 1];
-        let (scale, offset) = engine.velocity_map();
-        radial_shells_mapped(p, radius, scale, offset, &mut h);
+        radial_shells_mapped(p, radius, engine.velocity_map(), &mut h);
         out.extend(h);
     }
     if reduced_points > 0 {

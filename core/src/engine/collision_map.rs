@@ -1,0 +1,76 @@
+//! The particle-model axis of the exact loops: what an accepted candidate pair does.
+//!
+//! - Smooth particles: every restitution law ([`Restitution`]) is a map: a scattering
+//!   direction `e` ([`Geometry::scattering`]: uniform on the sphere, or the hard-disk law),
+//!   the law's coefficient clamped to [0, 1] and GRW (3).
+//! - Rough particles: [`crate::rough::RoughMap`] draws the impact direction
+//!   ([`Geometry::impact`]) and applies the map of Huthmann and Zippelius (1997) to the
+//!   velocities and the rim velocities (the spins beside the particles).
+//!
+//! The loops ([`super::NoSplitting`]) are written once over this trait: whether the particles
+//! carry spins ([`CollisionMap::SPINS`]) is a constant in each leaf, so a smooth gas compiles
+//! no spin check, rescale or observable.
+
+use super::Counts;
+use super::event::clamped_coefficient;
+use crate::collision::inelastic;
+use crate::geometry::{DimensionChoice, Geometry};
+use crate::kernel::Kernel;
+use crate::particles::Particles;
+use crate::restitution::Restitution;
+use crate::rng::Rng;
+use crate::rough::RoughObservables;
+use crate::vec3::Vec3;
+
+/// What a collision does to an accepted pair: the particle model (module docs).
+pub trait CollisionMap: Copy {
+    /// Whether the particles carry rim velocities (a rough gas): the loops then need a spin
+    /// buffer, check the spins' finiteness and rescale them with the velocities.
+    const SPINS: bool;
+
+    /// Collides the `pair` `(i, j)` of `velocities` `(vi, vj)` (at the event time) under kernel `K`
+    /// in dimension `G`: draws the direction, writes the new velocities (and spins) into `p`,
+    /// counts a clamped coefficient, and returns the new velocities (the majorant covers them).
+    fn collide_pair<K: Kernel, G: Geometry, R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        pair: (usize, usize),
+        velocities: (Vec3, Vec3),
+        rng: &mut R,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3);
+
+    /// The rotational observables of `p` (stored with rim velocities `w_phys = scale w`) in
+    /// dimension `dim`; `None` for smooth particles.
+    fn rough(
+        &self,
+        _p: &Particles<'_>,
+        _scale: crate::math::Real,
+        _dim: DimensionChoice,
+    ) -> Option<RoughObservables> {
+        None
+    }
+}
+
+impl<A: Restitution> CollisionMap for A {
+    const SPINS: bool = false;
+
+    /// GRW (3) with the scattering direction of `G` and the law's clamped coefficient.
+    #[inline(always)]
+    fn collide_pair<K: Kernel, G: Geometry, R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        rng: &mut R,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3) {
+        let u = vi - vj;
+        let e = G::scattering::<K, R>(u, rng);
+        let alpha = clamped_coefficient(self, u, e, counts);
+        let (a, b) = inelastic(vi, vj, e, alpha);
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        (a, b)
+    }
+}
