@@ -44,7 +44,7 @@ fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
         };
         Failure(status, msg!("{e}"))
     })?;
-    let mut cfg = gdsmc_config::from_physics(&scene.physics)?;
+    let mut cfg = gdsmc_config::from_physics(scene.physics())?;
     cfg.seed = scene.seed;
     Ok(cfg)
 }

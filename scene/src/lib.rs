@@ -41,7 +41,8 @@ mod validate;
 
 pub use error::Error;
 pub use gdsmc_core::physics::{
-    BackgroundKernel, Component, DriveChoice, KernelChoice, Physics, RestitutionLaw, SchemeChoice,
+    BackgroundKernel, Component, DriveChoice, KernelChoice, Model, Physics, RestitutionLaw,
+    SchemeChoice,
 };
 pub use overrides::{Override, load_with, load_with_overrides, parse_with, parse_with_overrides};
 pub use schema::SceneFile;
@@ -50,14 +51,19 @@ pub use validate::DEFAULT_STEP_FACTOR;
 use std::path::{Path, PathBuf};
 
 /// A validated scene, ready to run.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Scene {
     /// Name (file stem when the file names none).
     pub name: String,
     /// Description.
     pub description: String,
-    /// The physics: particles, initial distribution, kernel, restitution, drive, scheme.
-    pub physics: Physics,
+    /// The physics: particles, initial distribution, kernel, restitution, drive, scheme
+    /// (read with [`Scene::physics`], changed only through [`Scene::with_physics`]).
+    physics: Physics,
+    /// The physics validated by the core: what every run starts from ([`Scene::model`]).
+    model: Model,
+    /// The key that held each physics parameter in the file (to name a later change's error).
+    keys: Vec<(gdsmc_core::physics::Param, String)>,
     /// Observation times, increasing.
     pub times: Vec<f64>,
     /// Index of the first observation time of the steady-state average, if any.
@@ -81,23 +87,121 @@ pub struct Scene {
     pub species_fractions: Vec<f64>,
 }
 
+impl PartialEq for Scene {
+    /// Every field but the model, which is a function of the physics.
+    fn eq(&self, o: &Self) -> bool {
+        let Scene {
+            name,
+            description,
+            physics,
+            model: _,
+            keys: _,
+            times,
+            steady_from,
+            collisional_pairs,
+            histogram,
+            reduced_histogram,
+            marginal_histogram,
+            ensembles,
+            seed,
+            species_names,
+            species_fractions,
+        } = self;
+        (
+            name,
+            description,
+            physics,
+            times,
+            steady_from,
+            collisional_pairs,
+        ) == (
+            &o.name,
+            &o.description,
+            &o.physics,
+            &o.times,
+            &o.steady_from,
+            &o.collisional_pairs,
+        ) && (
+            histogram,
+            reduced_histogram,
+            marginal_histogram,
+            ensembles,
+            seed,
+        ) == (
+            &o.histogram,
+            &o.reduced_histogram,
+            &o.marginal_histogram,
+            &o.ensembles,
+            &o.seed,
+        ) && (species_names, species_fractions) == (&o.species_names, &o.species_fractions)
+    }
+}
+
 impl Scene {
     /// Particles per ensemble.
     pub fn n(&self) -> usize {
         self.physics.n
     }
 
-    /// Sets the particle count, and a mixture's species counts from their fractions as the
-    /// file's `particles.n` does (`validate::species::counts`). A species left without a
-    /// particle is refused when the physics is validated.
-    pub fn set_n(&mut self, n: usize) {
-        self.physics.n = n;
-        if !self.species_fractions.is_empty() {
-            let counts = validate::species::counts(&self.species_fractions, n);
-            for (s, c) in self.physics.species.iter_mut().zip(counts) {
-                s.count = c;
-            }
+    /// The physics as plain data (validated: [`Scene::model`] is its model).
+    pub fn physics(&self) -> &Physics {
+        &self.physics
+    }
+
+    /// The validated physics every run of the scene starts from: the runner never validates
+    /// again.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// Changes the physics through `f` and validates the result as a scene file's would be:
+    /// the core's one validation, then the scene's rules that depend on the physics (every
+    /// observation time on a splitting scheme's grid, what collisional pairs and disks allow).
+    /// On error the scene is unchanged; the error names the key.
+    pub fn with_physics(&mut self, f: impl FnOnce(&mut Physics)) -> Result<(), Error> {
+        let mut physics = self.physics.clone();
+        f(&mut physics);
+        let invalid = |key: &str, message: String| Error::Invalid {
+            path: PathBuf::from(format!("scene {}", self.name)),
+            line: 0,
+            key: key.to_string(),
+            message,
+        };
+        let model = physics.validate().map_err(|e| {
+            let key = self.keys.iter().find(|(p, _)| *p == e.param);
+            let key = key.map_or_else(|| e.param.to_string(), |(_, k)| k.clone());
+            invalid(&key, e.problem.to_string())
+        })?;
+        if let Some((key, message)) = validate::physics_rules(
+            &physics,
+            &self.times,
+            self.collisional_pairs,
+            (
+                self.reduced_histogram.is_some(),
+                self.marginal_histogram.is_some(),
+            ),
+        ) {
+            return Err(invalid(key, message));
         }
+        self.physics = physics;
+        self.model = model;
+        Ok(())
+    }
+
+    /// Sets the particle count, and a mixture's species counts from their fractions as the
+    /// file's `particles.n` does (`validate::species::counts`), validated as
+    /// [`Scene::with_physics`] does (a species left without a particle is refused).
+    pub fn set_n(&mut self, n: usize) -> Result<(), Error> {
+        let fractions = self.species_fractions.clone();
+        self.with_physics(|ph| {
+            ph.n = n;
+            if !fractions.is_empty() {
+                let counts = validate::species::counts(&fractions, n);
+                for (s, c) in ph.species.iter_mut().zip(counts) {
+                    s.count = c;
+                }
+            }
+        })
     }
 
     /// Whether the translation follows the smooth gas's law: smooth particles, or rough ones

@@ -33,19 +33,19 @@ fn err(text: &str) -> String {
 #[test]
 fn a_mixture_scene_gives_its_species_and_pairs() {
     let s = parse(Path::new("mix.toml"), MIX).unwrap();
-    let sp = &s.physics.species;
+    let sp = &s.physics().species;
     // 10/3 and 20/3: floors 3 and 6, the larger remainder (2/3) to the second species.
     assert_eq!((sp[0].count, sp[1].count), (3, 7));
     assert_eq!((sp[0].mass, sp[1].mass, sp[1].diameter), (4.0, 1.0, 2.0));
     assert_eq!((sp[0].beta, sp[1].beta), (1.0, 1.0));
-    assert_eq!(s.physics.pair_restitution.as_slice(), &[0.9, 0.8, 0.7]);
+    assert_eq!(s.physics().pair_restitution.as_slice(), &[0.9, 0.8, 0.7]);
     assert_eq!(s.species_names, vec!["heavy", "s1"]);
-    let model = s.physics.validate().unwrap();
+    let model = s.physics().validate().unwrap();
     assert_eq!(model.species().unwrap().total(), 10);
     let mut s2 = s.clone();
-    s2.set_n(1000);
+    s2.set_n(1000).expect("a valid particle count");
     assert_eq!(
-        (s2.physics.species[0].count, s2.physics.species[1].count),
+        (s2.physics().species[0].count, s2.physics().species[1].count),
         (333, 667)
     );
 }
@@ -103,7 +103,7 @@ fn bad_species_values_name_line_and_key() {
         ),
     )
     .unwrap();
-    assert!(s.physics.validate().is_ok());
+    assert!(s.physics().validate().is_ok());
     let e = err(&MIX.replace("pair_restitution", "restitution = 0.5\npair_restitution"));
     assert!(
         e.contains("`collisions.restitution` and collisions.pair_restitution exclude each other"),
@@ -128,9 +128,9 @@ fn species_can_be_overridden_by_index() {
         &[set("species[1].mass=2.5"), set("species[0].beta=0.5")],
     )
     .unwrap();
-    assert_eq!(s.physics.species[1].mass, 2.5);
+    assert_eq!(s.physics().species[1].mass, 2.5);
     assert_eq!(
-        (s.physics.species[0].beta, s.physics.species[1].beta),
+        (s.physics().species[0].beta, s.physics().species[1].beta),
         (0.5, 1.0)
     );
     let e = parse_with(Path::new("mix.toml"), MIX, &[set("species[2].mass=1")])

@@ -29,19 +29,19 @@ fn err(text: &str) -> String {
 #[test]
 fn a_rough_scene_gives_its_rotation() {
     let s = parse(Path::new("r.toml"), ROUGH).unwrap();
-    let r = s.physics.rotation.unwrap();
+    let r = s.physics().rotation.unwrap();
     assert_eq!(
         (r.beta, r.kappa, r.temperature, r.noise),
         (0.25, 0.5, 2.0, 0.0)
     );
     assert!(!s.translation_is_smooth());
-    let model = s.physics.validate().unwrap();
+    let model = s.physics().validate().unwrap();
     assert_eq!(model.rough_map().unwrap().kappa(), 0.5);
     // Defaults: uniform spheres, T_rot = 1, no noise on rotation.
     let text = ROUGH.replace("inertia = 0.5\ntemperature = 2.0\n", "");
     let r = parse(Path::new("r.toml"), &text)
         .unwrap()
-        .physics
+        .physics()
         .rotation
         .unwrap();
     assert_eq!((r.kappa, r.temperature, r.noise), (0.4, 1.0, 0.0));
@@ -112,7 +112,7 @@ fn rotation_can_be_overridden() {
         ],
     )
     .unwrap();
-    let r = s.physics.rotation.unwrap();
+    let r = s.physics().rotation.unwrap();
     assert_eq!((r.beta, r.noise), (-1.0, 0.5));
     assert!(s.translation_is_smooth());
     let e = parse_with(

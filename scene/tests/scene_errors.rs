@@ -150,14 +150,14 @@ mod overrides {
         ])
         .unwrap();
         assert_eq!(
-            s.physics.restitution,
+            s.physics().restitution,
             gdsmc_scene::RestitutionLaw::Constant(0.4)
         );
         assert_eq!(s.n(), 10);
-        assert_eq!(s.physics.scheme, SchemeChoice::Strang(0.125));
+        assert_eq!(s.physics().scheme, SchemeChoice::Strang(0.125));
         let s = with(&["collisions.kernel=vhs", "collisions.lambda=0.5"]).unwrap();
         assert!(
-            matches!(s.physics.kernel, gdsmc_scene::KernelChoice::Vhs { lambda, .. } if lambda == 0.5)
+            matches!(s.physics().kernel, gdsmc_scene::KernelChoice::Vhs { lambda, .. } if lambda == 0.5)
         );
     }
 
@@ -207,7 +207,7 @@ mod overrides {
             "{e}"
         );
         let s = with(&["particles.initial.drift=[1.0, 2.0, 3.0]"]).unwrap();
-        assert_eq!(s.physics.initial[0].drift, [1.0, 2.0, 3.0]);
+        assert_eq!(s.physics().initial[0].drift, [1.0, 2.0, 3.0]);
     }
 
     #[test]
@@ -246,4 +246,44 @@ fn flags_are_validated_like_the_file() {
     );
     let s = with(Override::flag("seed", "run.seed", 42)).unwrap();
     assert_eq!((s.seed, s.n()), (42, 64));
+}
+
+/// A physics changed in code after the file was read is validated again, by the same rules as
+/// the file's (the core's validation, the scheme's grid), naming the key; a refused change
+/// leaves the scene and its model as they were.
+#[test]
+fn a_changed_physics_is_validated_again() {
+    use gdsmc_scene::{RestitutionLaw, SchemeChoice};
+    let mut s = parse(Path::new("good.toml"), GOOD).unwrap();
+    let before = s.clone();
+    let e = s
+        .with_physics(|ph| ph.restitution = RestitutionLaw::Constant(1.5))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("`collisions.restitution` must lie in (0, 1]"),
+        "{e}"
+    );
+    assert_eq!(s, before);
+    // The observation times are multiples of 1/32: dt = 0.3 does not divide them.
+    let e = s
+        .with_physics(|ph| ph.scheme = SchemeChoice::Strang(0.3))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("`scheme.dt` must divide every observation time"),
+        "{e}"
+    );
+    assert_eq!(s, before);
+    let e = s.set_n(1).unwrap_err().to_string();
+    assert!(
+        e.starts_with("scene good: `particles.n` must be >= 2"),
+        "{e}"
+    );
+    // An accepted change reaches the model the runs start from.
+    s.with_physics(|ph| ph.scheme = SchemeChoice::Strang(1.0 / 32.0))
+        .unwrap();
+    s.set_n(100).unwrap();
+    assert_eq!(s.model().n(), 100);
+    assert_eq!(s.physics().scheme, SchemeChoice::Strang(1.0 / 32.0));
 }

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 fn a_run_writes_csv_json_and_svg() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
     let mut s = scene::load(&path).unwrap();
-    s.set_n(32);
+    s.set_n(32).expect("a valid particle count");
     s.ensembles = 10;
     let st = gdsmc_runner::run::run(&s, 1, &|_| {}).unwrap();
     let refs = gdsmc_runner::reference::curves::for_scene(&s);
@@ -56,7 +56,7 @@ fn every_chart_of_every_shipped_scene_is_readable() {
     let mut checked = 0;
     for path in names {
         let mut s = scene::load(&path).unwrap();
-        s.set_n(256);
+        s.set_n(256).expect("a valid particle count");
         s.ensembles = 4;
         let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
         let refs = gdsmc_runner::reference::curves::for_scene(&s);

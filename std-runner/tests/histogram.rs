@@ -19,7 +19,7 @@ fn initial_shells(scene_name: &str) -> gdsmc_runner::run::RunStats {
         .join("../scenes")
         .join(format!("{scene_name}.toml"));
     let mut s = scene::load(&p).unwrap();
-    s.set_n(5000);
+    s.set_n(5000).expect("a valid particle count");
     s.ensembles = 40;
     s.times = vec![0.0];
     s.histogram = Some((16, 4.0));

@@ -15,7 +15,7 @@ pub fn scene_path(name: &str) -> PathBuf {
 /// A shipped scene with `n` particles, `m` ensembles and this seed.
 pub fn shipped(name: &str, n: usize, m: u64, seed: u64) -> Scene {
     let mut s = scene::load(&scene_path(name)).expect("shipped scene loads");
-    s.set_n(n);
+    s.set_n(n).expect("a valid particle count");
     s.ensembles = m;
     s.seed = seed;
     s
@@ -25,7 +25,7 @@ pub fn shipped(name: &str, n: usize, m: u64, seed: u64) -> Scene {
 pub fn shipped_set(name: &str, set: &[&str], n: usize, m: u64, seed: u64) -> Scene {
     let set: Vec<String> = set.iter().map(|s| s.to_string()).collect();
     let mut s = scene::load_with_overrides(&scene_path(name), &set).expect("valid overrides");
-    s.set_n(n);
+    s.set_n(n).expect("a valid particle count");
     s.ensembles = m;
     s.seed = seed;
     s

@@ -15,7 +15,8 @@ use gdsmc_validation::*;
 fn maxwell_cooling_is_exponential_over_thirty_decades() {
     let n = 8;
     let mut s = shipped("rw-transient", n, 20_000, 901);
-    s.physics.drive = DriveChoice::None;
+    s.with_physics(|ph| ph.drive = DriveChoice::None)
+        .expect("a valid physics");
     s.times = (0..=10).map(|i| 10.0 * i as f64).collect(); // k = 3/4: T falls to e^-75 ~ 3e-33
     let mt = maxwell_temperature(&s).unwrap();
     let st = run(&s);
@@ -41,8 +42,10 @@ fn gaussian_thermostat_with_maxwell_kernel_is_exact() {
         .enumerate()
     {
         let mut s = shipped("rw-transient", n, 20_000, 910 + k as u64);
-        s.physics.drive = DriveChoice::Gaussian(0.75 / 4.0);
-        s.physics.scheme = scheme;
+        s.with_physics(|ph| ph.drive = DriveChoice::Gaussian(0.75 / 4.0))
+            .expect("a valid physics");
+        s.with_physics(|ph| ph.scheme = scheme)
+            .expect("a valid physics");
         s.times = (0..=8).map(f64::from).collect();
         let mt = maxwell_temperature(&s).unwrap();
         let st = run(&s);
@@ -64,9 +67,11 @@ fn gaussian_thermostat_with_maxwell_kernel_is_exact() {
 fn hard_spheres_follow_haffs_law_over_ten_decades() {
     let (n, alpha) = (2048, 0.5);
     let mut s = shipped("grw-example5", n, 60, 920);
-    s.physics.drive = DriveChoice::None;
-    s.physics.restitution = gdsmc_runner::scene::RestitutionLaw::Constant(alpha);
-    let KernelChoice::HardSpheres { gamma, c } = s.physics.kernel else {
+    s.with_physics(|ph| ph.drive = DriveChoice::None)
+        .expect("a valid physics");
+    s.with_physics(|ph| ph.restitution = gdsmc_runner::scene::RestitutionLaw::Constant(alpha))
+        .expect("a valid physics");
+    let KernelChoice::HardSpheres { gamma, c } = s.physics().kernel else {
         panic!("hard spheres")
     };
     // MS (5), d = 3: a2 of the homogeneous cooling state.

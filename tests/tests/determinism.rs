@@ -33,11 +33,14 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
     // runs must agree to the bit (same random draws, same arithmetic).
     let a = shipped("grw-example5", 64, 20, 5);
     let mut b = a.clone();
-    assert_eq!(a.physics.restitution, RestitutionLaw::Constant(0.5));
-    b.physics.restitution = RestitutionLaw::ImpactSpeed {
-        beta0: 0.25,
-        delta: 0.0,
-    };
+    assert_eq!(a.physics().restitution, RestitutionLaw::Constant(0.5));
+    b.with_physics(|ph| {
+        ph.restitution = RestitutionLaw::ImpactSpeed {
+            beta0: 0.25,
+            delta: 0.0,
+        }
+    })
+    .expect("a valid physics");
     let sa = gdsmc_runner::run::run(&a, 2, &|_| {}).unwrap();
     let sb = gdsmc_runner::run::run(&b, 2, &|_| {}).unwrap();
     assert_eq!(
@@ -46,10 +49,13 @@ fn impact_speed_law_with_delta_zero_is_the_constant_law() {
     );
     // A strong viscoelastic law changes the run and clamps fast impacts to e = 0.
     let mut c = a.clone();
-    c.physics.restitution = RestitutionLaw::ImpactSpeed {
-        beta0: 0.45,
-        delta: 0.2,
-    };
+    c.with_physics(|ph| {
+        ph.restitution = RestitutionLaw::ImpactSpeed {
+            beta0: 0.45,
+            delta: 0.2,
+        }
+    })
+    .expect("a valid physics");
     let sc = gdsmc_runner::run::run(&c, 2, &|_| {}).unwrap();
     assert!(sc.counts.clamped > 0, "{:?}", sc.counts);
     assert_ne!(

@@ -337,8 +337,8 @@ fn cooling_rates_estimate_the_exact_rate_of_change() {
         alpha: vec![0.9, 0.6, 0.8],
         ..mix
     };
-    let rates = CoolingRates::new(&scene.physics).unwrap();
-    let model = scene.physics.validate().unwrap();
+    let rates = CoolingRates::new(&scene).unwrap();
+    let model = scene.physics().validate().unwrap();
     let z = family_factor(4) * gdsmc_runner::run::stats::LAMBDA_999;
     let ensembles = 4000;
     for &t in &[0.0, 1.0] {

@@ -99,7 +99,8 @@ fn one(path: &Path, text: &str, sets: &[String], t: &mut Tally) {
         t.refused_work += 1;
         return;
     }
-    s.set_n(s.physics.n.min(32));
+    s.set_n(s.physics().n.min(32))
+        .expect("a valid particle count");
     s.ensembles = s.ensembles.min(2);
     if estimate(&s).total() > 2e6 {
         t.too_long_for_ci += 1;

@@ -65,7 +65,9 @@ fn the_smooth_limit_of_rough_hard_spheres_is_the_smooth_gas() {
     rough.times = (0..=6).map(|k| 0.5 * k as f64).collect();
     rough.steady_from = None;
     let mut smooth = rough.clone();
-    smooth.physics.rotation = None;
+    smooth
+        .with_physics(|ph| ph.rotation = None)
+        .expect("a valid physics");
     smooth.seed = 1604;
     let (a, b) = (run(&rough), run(&smooth));
     let f = family_factor(a.times.len() - 1);

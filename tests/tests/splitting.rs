@@ -12,7 +12,8 @@ use gdsmc_validation::*;
 
 fn scheme(name: &str, n: usize, m: u64, seed: u64, s: SchemeChoice) -> Scene {
     let mut sc = shipped(name, n, m, seed);
-    sc.physics.scheme = s;
+    sc.with_physics(|ph| ph.scheme = s)
+        .expect("a valid physics");
     sc
 }
 

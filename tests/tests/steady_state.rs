@@ -14,7 +14,8 @@ use gdsmc_validation::*;
 
 fn steady_t(name: &str, scheme: SchemeChoice, seed: u64) -> (f64, f64, f64) {
     let mut s = shipped(name, 65_536, 1, seed);
-    s.physics.scheme = scheme;
+    s.with_physics(|ph| ph.scheme = scheme)
+        .expect("a valid physics");
     let mt = maxwell_temperature(&s).unwrap();
     let st = run(&s);
     let (m, c) = st

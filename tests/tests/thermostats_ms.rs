@@ -24,7 +24,8 @@ use gdsmc_validation::*;
 fn steady(name: &str, seed: u64, alpha: f64) -> (gdsmc_runner::run::RunStats, f64) {
     let (n, m) = if alpha < 0.5 { (8192, 8) } else { (2048, 24) };
     let mut s = shipped(name, n, m, seed);
-    s.physics.restitution = gdsmc_runner::scene::RestitutionLaw::Constant(alpha);
+    s.with_physics(|ph| ph.restitution = gdsmc_runner::scene::RestitutionLaw::Constant(alpha))
+        .expect("a valid physics");
     s.collisional_pairs = 20_000;
     (run(&s), alpha)
 }
@@ -111,7 +112,8 @@ fn constant_force_alpha_08() {
 #[test]
 fn white_noise_alpha_08_time_stepped() {
     let mut s = shipped("ms-white-noise", 2048, 16, 1400);
-    s.physics.scheme = gdsmc_runner::scene::SchemeChoice::TimeStepped(0.01);
+    s.with_physics(|ph| ph.scheme = gdsmc_runner::scene::SchemeChoice::TimeStepped(0.01))
+        .expect("a valid physics");
     s.collisional_pairs = 20_000;
     let st = run(&s);
     let (mu4, c4) = get(&st, "mu4");

@@ -14,10 +14,13 @@ fn time_stepped_converges_to_no_splitting() {
     let st_exact = run(&exact);
     let mut fine = exact.clone();
     fine.seed = 1102;
-    fine.physics.scheme = SchemeChoice::TimeStepped(0.01);
+    fine.with_physics(|ph| ph.scheme = SchemeChoice::TimeStepped(0.01))
+        .expect("a valid physics");
     let st_fine = run(&fine);
     let mut coarse = fine.clone();
-    coarse.physics.scheme = SchemeChoice::TimeStepped(0.5);
+    coarse
+        .with_physics(|ph| ph.scheme = SchemeChoice::TimeStepped(0.5))
+        .expect("a valid physics");
     let st_coarse = run(&coarse);
     let mut resolved = false;
     for ti in 1..exact.times.len() {

@@ -12,10 +12,10 @@
 //! no spin check, rescale or observable.
 
 use super::Counts;
-use super::event::clamped_coefficient;
 use crate::collision::inelastic;
 use crate::geometry::{DimensionChoice, Geometry};
 use crate::kernel::Kernel;
+use crate::math::Real;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::Rng;
@@ -73,4 +73,16 @@ impl<A: Restitution> CollisionMap for A {
         p.set_velocity(j, b);
         (a, b)
     }
+}
+
+/// The restitution coefficient of a law, clamped to [0, 1] (counted in
+/// [`Counts::clamped`] when it had to be).
+#[inline(always)]
+pub fn clamped_coefficient<A: Restitution>(a: &A, u: Vec3, e: Vec3, counts: &mut Counts) -> Real {
+    let alpha = a.coefficient(u, e);
+    if A::CAN_LEAVE_UNIT_INTERVAL && !(0.0..=1.0).contains(&alpha) {
+        counts.clamped += 1;
+        return if alpha > 1.0 { 1.0 } else { 0.0 };
+    }
+    alpha
 }

@@ -13,7 +13,6 @@ use crate::kernel::Kernel;
 use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
-use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform01};
 use crate::vec3::Vec3;
 
@@ -206,18 +205,6 @@ pub fn observables_dim(p: &Particles<'_>, d: usize) -> Result<Observables, Engin
         None => Ok(obs),
         Some(what) => Err(EngineError::NonFinite(what)),
     }
-}
-
-/// The restitution coefficient of a law, clamped to [0, 1] (counted in
-/// [`Counts::clamped`] when it had to be).
-#[inline(always)]
-pub fn clamped_coefficient<A: Restitution>(a: &A, u: Vec3, e: Vec3, counts: &mut Counts) -> Real {
-    let alpha = a.coefficient(u, e);
-    if A::CAN_LEAVE_UNIT_INTERVAL && !(0.0..=1.0).contains(&alpha) {
-        counts.clamped += 1;
-        return if alpha > 1.0 { 1.0 } else { 0.0 };
-    }
-    alpha
 }
 
 /// When a no-splitting loop makes its majorant exact between observations (module docs of

@@ -24,7 +24,8 @@
 //! with no drive: the synchronization, the rescaled storage of a cooling gas
 //! ([`super::nosplit::RESCALE_BELOW`]), the observables.
 
-use super::event::{RefreshWindow, clamped_coefficient, observables};
+use super::collision_map::clamped_coefficient;
+use super::event::{RefreshWindow, observables};
 use super::frame::{Frame, RESCALE_BELOW, rescale_due};
 use super::jumps::{Jumps, jumps_state, run_events};
 use super::nosplit::checked_sync;

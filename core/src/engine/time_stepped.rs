@@ -179,8 +179,12 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
                 continue;
             }
             let e = scattering_direction_from_impact(u, s);
-            let alpha =
-                super::event::clamped_coefficient(&self.restitution, u, e, &mut self.counts);
+            let alpha = super::collision_map::clamped_coefficient(
+                &self.restitution,
+                u,
+                e,
+                &mut self.counts,
+            );
             let (a, b) = inelastic(vi, vj, e, alpha);
             p.set_velocity(i, a);
             p.set_velocity(j, b);

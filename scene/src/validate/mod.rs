@@ -82,6 +82,39 @@ impl<'a> Ctx<'a> {
     }
 }
 
+/// Why an observable written for spheres is refused for disks.
+const SPHERES_ONLY: &str =
+    "is written for spheres (d = 3); disks (particles.dimension = 2) do not have it";
+
+/// The scene's rules that depend on the physics, for a physics changed after the file was
+/// read ([`crate::Scene::with_physics`]): the scheme's grid against the observation `times`,
+/// collisional `pairs`, and what disks refuse (`histograms`: a reduced, a marginal one). The
+/// key and what is wrong, or `None`. The file's validation applies the same rules with the
+/// value's line.
+pub(crate) fn physics_rules(
+    physics: &gdsmc_core::physics::Physics,
+    times: &[f64],
+    pairs: u64,
+    histograms: (bool, bool),
+) -> Option<(&'static str, String)> {
+    if let Some(m) = scheme::grid_problem(physics.scheme, times) {
+        return Some(("scheme.dt", m));
+    }
+    if let Some(m) = observe::pairs_problem(pairs, physics) {
+        return Some(("observe.collisional_pairs", m.to_string()));
+    }
+    if physics.dimension == gdsmc_core::physics::DimensionChoice::Two {
+        let key = match (histograms, pairs > 0) {
+            ((true, _), _) => Some("reduced_histogram"),
+            ((_, true), _) => Some("marginal_histogram"),
+            (_, true) => Some("observe.collisional_pairs"),
+            _ => None,
+        };
+        return key.map(|k| (k, SPHERES_ONLY.to_string()));
+    }
+    None
+}
+
 impl SceneFile {
     /// Disks (`particles.dimension = 2`) run, observe their moments and speed shells (ring
     /// areas) and compare with the references written for any dimension; MS's reduced
@@ -89,7 +122,7 @@ impl SceneFile {
     /// are written for spheres, and are refused at their key rather than computed with the
     /// wrong volume.
     fn spheres_only(&self, ctx: &Ctx<'_>) -> Result<(), Error> {
-        let why = "is written for spheres (d = 3); disks (particles.dimension = 2) do not have it";
+        let why = SPHERES_ONLY;
         if let Some(h) = &self.reduced_histogram {
             return ctx.invalid(h.shells.span(), "reduced_histogram", why);
         }
@@ -127,7 +160,7 @@ impl SceneFile {
             rotation,
             dimension,
         };
-        physics.validate().map_err(|e| ctx.physics_error(e))?;
+        let model = physics.validate().map_err(|e| ctx.physics_error(e))?;
         if dimension == gdsmc_core::physics::DimensionChoice::Two {
             self.spheres_only(&ctx)?;
         }
@@ -144,6 +177,8 @@ impl SceneFile {
             name,
             description: self.description.clone().unwrap_or_default(),
             physics,
+            model,
+            keys: ctx.keys.iter().map(|(p, k, _)| (*p, k.clone())).collect(),
             times,
             steady_from: observe.0,
             collisional_pairs: observe.1,

@@ -115,23 +115,31 @@ pub(super) fn observe(
             );
         }
     };
-    if pairs > 0 && physics.restitution.constant().is_none() {
+    if let Some(why) = pairs_problem(pairs, physics) {
         return ctx.invalid(
             o.collisional_pairs.as_ref().map_or(0..0, |k| k.span()),
             "observe.collisional_pairs",
+            why,
+        );
+    }
+    Ok((steady_from, pairs))
+}
+
+/// The rule of `observe.collisional_pairs` against the physics: what is wrong, or `None`.
+pub(crate) fn pairs_problem(pairs: u64, physics: &Physics) -> Option<&'static str> {
+    if pairs > 0 && physics.restitution.constant().is_none() {
+        return Some(
             "assumes a constant restitution coefficient (MS (65)-(66)); not available with \
              collisions.impact_speed_law",
         );
     }
     if pairs > 0 && physics.rotation.is_some() {
-        return ctx.invalid(
-            o.collisional_pairs.as_ref().map_or(0..0, |k| k.span()),
-            "observe.collisional_pairs",
+        return Some(
             "gives the smooth gas's collisional moments (MS (65)-(67)); not available with \
              [rotation]",
         );
     }
-    Ok((steady_from, pairs))
+    None
 }
 
 /// What the histogram tables ask for: the radial shells `(K, R)`, the reduced shells

@@ -61,25 +61,30 @@ pub(super) fn on_grid(
     scheme: SchemeChoice,
     times: &[f64],
 ) -> Result<(), Error> {
-    let (SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt)) = scheme else {
-        return Ok(());
-    };
     let at = sch.dt.as_ref().map_or(0..0, |d| d.span());
+    match grid_problem(scheme, times) {
+        Some(message) => ctx.invalid(at, "scheme.dt", message),
+        None => Ok(()),
+    }
+}
+
+/// The rule of `scheme.dt` against the observation times (a splitting scheme observes only on
+/// its grid, [`gdsmc_core::engine::grid_index`]): what is wrong, or `None`.
+pub(crate) fn grid_problem(scheme: SchemeChoice, times: &[f64]) -> Option<String> {
+    let (SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt)) = scheme else {
+        return None;
+    };
     // The run starts at 0 (the engine is launched there) and ends at its last time.
     let t_end = times.last().copied().unwrap_or(0.0);
     if let Err(e) = scheme.check_span(t_end) {
-        return ctx.invalid(at, "scheme.dt", e.problem.to_string());
+        return Some(e.problem.to_string());
     }
-    if let Some(t) = times
+    let t = *times
         .iter()
-        .find(|&&t| gdsmc_core::engine::grid_index(0.0, dt, t).is_none())
-    {
-        let message = if t / dt >= u64::MAX as f64 {
-            format!("= {dt} is too small: reaching t = {t} would take more than 2^64 steps")
-        } else {
-            format!("must divide every observation time; {t} is not a multiple of {dt}")
-        };
-        return ctx.invalid(at, "scheme.dt", message);
-    }
-    Ok(())
+        .find(|&&t| gdsmc_core::engine::grid_index(0.0, dt, t).is_none())?;
+    Some(if t / dt >= u64::MAX as f64 {
+        format!("= {dt} is too small: reaching t = {t} would take more than 2^64 steps")
+    } else {
+        format!("must divide every observation time; {t} is not a multiple of {dt}")
+    })
 }

@@ -73,13 +73,13 @@ pub struct Reduced {
 /// The tail law of MS for this scene, with `mu_2` from the run (pairs) or, without pairs,
 /// the first Sonine approximation `mu_2^(0) (1 + 3 a2 / 16)` (MS (26), (28)).
 pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
-    if !matches!(scene.physics.kernel, KernelChoice::HardSpheres { .. })
+    if !matches!(scene.physics().kernel, KernelChoice::HardSpheres { .. })
         || !scene.translation_is_smooth()
     {
         return None;
     }
     // MS's tail laws assume a constant restitution coefficient.
-    let alpha = scene.physics.restitution.constant()?;
+    let alpha = scene.physics().restitution.constant()?;
     let (mu2, mu2_source) = match settled(stats, "mu2") {
         Some((m, _)) => (m, "pairs, MS (67)"),
         None => (
@@ -87,7 +87,7 @@ pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
             "first Sonine, MS (26)",
         ),
     };
-    let (equation, amplitude, power) = match scene.physics.drive {
+    let (equation, amplitude, power) = match scene.physics().drive {
         DriveChoice::WhiteNoise(_) => ("MS (36)", tail::a_white_noise_36(mu2), 1.5),
         DriveChoice::Gaussian(_) | DriveChoice::None => ("MS (42)", tail::a_gaussian_42(mu2), 1.0),
         DriveChoice::ConstantForce(_) => {

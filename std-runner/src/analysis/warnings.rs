@@ -91,11 +91,11 @@ const STEADY_CHECKED: [&str; 2] = ["T", "T_bulk"];
 /// one-species gas a2, for a cooling rough gas theta, or for a mixture its species' temperature ratios (a cooling mixture's temperature keeps falling while its
 /// ratios settle: Garzó and Dufty 1999's cooling state).
 fn steady_checked(scene: &Scene) -> Vec<&'static str> {
-    let species = scene.physics.species.len();
-    if let Some(r) = scene.physics.rotation {
+    let species = scene.physics().species.len();
+    if let Some(r) = scene.physics().rotation {
         // A cooling rough gas's temperatures keep falling while theta settles (Luding et al.
         // 1998); a heated one's settle themselves.
-        let heated = !matches!(scene.physics.drive, DriveChoice::None) || r.noise > 0.0;
+        let heated = !matches!(scene.physics().drive, DriveChoice::None) || r.noise > 0.0;
         return if heated {
             vec!["T_bulk", "T_rot"]
         } else {
@@ -105,7 +105,7 @@ fn steady_checked(scene: &Scene) -> Vec<&'static str> {
     if species == 0 {
         // A cooling one-species gas's temperature keeps falling (Haff's law) while its shape,
         // a2, settles into the cooling state.
-        if matches!(scene.physics.drive, DriveChoice::None) {
+        if matches!(scene.physics().drive, DriveChoice::None) {
             return vec!["a2"];
         }
         return STEADY_CHECKED.to_vec();
@@ -175,8 +175,8 @@ fn tail_not_asymptotic(scene: &Scene, stats: &RunStats) -> Option<Warning> {
     let drifts = (outer.slope - inner.slope).abs() > inner.slope_ci + outer.slope_ci;
     let reference = crate::analysis::tails::reference_exponent(scene);
     let heated = scene.translation_is_smooth()
-        && matches!(scene.physics.drive, DriveChoice::WhiteNoise(b) if b > 0.0)
-        && matches!(scene.physics.restitution, crate::scene::RestitutionLaw::Constant(a) if a < 1.0);
+        && matches!(scene.physics().drive, DriveChoice::WhiteNoise(b) if b > 0.0)
+        && matches!(scene.physics().restitution, crate::scene::RestitutionLaw::Constant(a) if a < 1.0);
     let misses = heated && (all.slope - reference).abs() > all.slope_ci;
     if !(drifts || misses) {
         return None;
@@ -227,9 +227,9 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     // k dt / 2 (Euler) and (k dt)^2 / 24 (Strang) to leading order (reference.rs,
     // splitting_bulk_mean; RW Tables 2-4 and 6).
     if let (SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt), Some(k)) =
-        (scene.physics.scheme, relaxation_rate(scene, stats))
+        (scene.physics().scheme, relaxation_rate(scene, stats))
     {
-        let euler = matches!(scene.physics.scheme, SchemeChoice::Euler(_));
+        let euler = matches!(scene.physics().scheme, SchemeChoice::Euler(_));
         let err = if euler {
             k * dt / 2.0
         } else {
@@ -250,7 +250,7 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     }
     // The MS time-stepped scheme decouples drive and collisions over h = f lambda / v0, an
     // Euler-like splitting with k h = (1 - alpha^2) f / 4 per mean free time.
-    if let SchemeChoice::TimeStepped(f) = scene.physics.scheme {
+    if let SchemeChoice::TimeStepped(f) = scene.physics().scheme {
         let a = crate::run::estimate::typical_alpha(scene);
         let err = (1.0 - a * a) * f / 8.0;
         if err > STEP_ERROR {
@@ -284,8 +284,8 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     // Stored velocities keep about 16 digits of v = V + c; when |c| << |V| the peculiar
     // velocities, and with them T_bulk, a2, a3 and crit, lose digits. The no-splitting
     // scheme without drive stores a cooling gas rescaled about V and keeps every digit.
-    let rescaled = scene.physics.scheme == SchemeChoice::NoSplitting
-        && scene.physics.drive == DriveChoice::None;
+    let rescaled = scene.physics().scheme == SchemeChoice::NoSplitting
+        && scene.physics().drive == DriveChoice::None;
     let (Some(tb), Some(vn), false) = (stats.col("T_bulk"), stats.col("V_norm"), rescaled) else {
         return w;
     };

@@ -134,14 +134,15 @@ pub fn measure(
     let mut out = Vec::new();
     for (k, c) in ladder.iter().enumerate() {
         let mut s = base.clone();
-        s.set_n(c.n);
+        s.set_n(c.n)?;
         s.ensembles = runs;
         s.seed = base.seed.wrapping_add(k as u64);
-        s.physics.scheme = match c.scheme {
+        let scheme = match c.scheme {
             "strang" => SchemeChoice::Strang(c.dt),
             "euler" => SchemeChoice::Euler(c.dt),
             _ => SchemeChoice::NoSplitting,
         };
+        s.with_physics(|ph| ph.scheme = scheme)?;
         let st = run::run(&s, threads, &|_| {})?;
         let steady = st.steady.as_ref().expect("steady_from set");
         let col = st.col("T_bulk").expect("the temperature column");
@@ -150,7 +151,7 @@ pub fn measure(
         let pts = &s.times[first..];
         let exact_mean = pts
             .iter()
-            .map(|&t| match s.physics.scheme {
+            .map(|&t| match s.physics().scheme {
                 SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(c.n, dt, true, t),
                 SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(c.n, dt, false, t),
                 _ => mt.finite_n_bulk_mean(c.n, t),

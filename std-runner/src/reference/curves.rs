@@ -18,16 +18,16 @@ pub struct ReferenceCurve {
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
 pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
-    if !scene.physics.species.is_empty() || !scene.translation_is_smooth() {
+    if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
         return None; // a one-species solution of smooth particles
     }
-    let alpha = scene.physics.restitution.constant()?;
-    let KernelChoice::Maxwell { gamma, c } = scene.physics.kernel else {
+    let alpha = scene.physics().restitution.constant()?;
+    let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
         return None;
     };
-    let t0 = initial_sampler(scene)?.temperature();
+    let t0 = initial_sampler(scene).temperature();
     let m = |beta| MaxwellTemperature::new(t0, alpha, beta, gamma, c);
-    match scene.physics.drive {
+    match scene.physics().drive {
         DriveChoice::None => Some(m(0.0)),
         DriveChoice::WhiteNoise(b) => Some(m(b)),
         DriveChoice::Gaussian(z) => Some(m(0.0).with_gaussian(z)),
@@ -37,11 +37,11 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
 pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
-    if !scene.physics.species.is_empty() {
+    if !scene.physics().species.is_empty() {
         return None; // a one-species solution
     }
-    let alpha = scene.physics.restitution.constant()?;
-    let KernelChoice::Maxwell { gamma, c } = scene.physics.kernel else {
+    let alpha = scene.physics().restitution.constant()?;
+    let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
         return None;
     };
     let DriveChoice::HostMedium {
@@ -51,11 +51,11 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
         mass,
         temperature,
         drift,
-    } = scene.physics.drive
+    } = scene.physics().drive
     else {
         return None;
     };
-    let f0 = initial_sampler(scene)?;
+    let f0 = initial_sampler(scene);
     let u0 = f0.mean();
     Some(HostMediumMaxwell {
         u0: u0.to_array(),
@@ -71,11 +71,11 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
 
 /// The BRS (21), (22) closure models of a hard-sphere gas in a hard-sphere host medium.
 pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroModel; 2]> {
-    if !scene.physics.species.is_empty() {
+    if !scene.physics().species.is_empty() {
         return None; // a one-species solution
     }
     use crate::reference::hydro::{Closure, HydroModel};
-    let KernelChoice::HardSpheres { gamma, c } = scene.physics.kernel else {
+    let KernelChoice::HardSpheres { gamma, c } = scene.physics().kernel else {
         return None;
     };
     let DriveChoice::HostMedium {
@@ -85,11 +85,11 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroMode
         mass,
         temperature,
         drift,
-    } = scene.physics.drive
+    } = scene.physics().drive
     else {
         return None;
     };
-    let alpha = scene.physics.restitution.constant()?;
+    let alpha = scene.physics().restitution.constant()?;
     let m = |closure| HydroModel {
         alpha: mass / (1.0 + mass),
         tb: temperature,
@@ -116,10 +116,9 @@ const SPECIES_REFERENCES: [[&str; 3]; gdsmc_core::mixture::MAX_SPECIES] = [
 /// strength `kappa_st = 4 pi gamma C ((d_s + d_t)/2)^2` and the restitution of every pair
 /// type, the kernel exponent, and each species' white noise.
 fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianApproximation> {
-    let ph = &scene.physics;
+    let ph = &scene.physics();
     let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
-    let model = ph.validate().ok()?;
-    let sp = model.species()?;
+    let sp = scene.model().species()?;
     let (kappa, alpha) = crate::run::cooling::pair_kernels(ph, sp)?
         .into_iter()
         .unzip();
@@ -145,7 +144,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some(ma) = approximation(scene) else {
         return out;
     };
-    let ph = &scene.physics;
+    let ph = &scene.physics();
     let species = ph.species.len();
     let approx = ma.steady_ratios();
     let cols = crate::run::columns::SPECIES_COLUMNS;
@@ -205,10 +204,10 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
 
 /// The Maxwellian approximation of a rough gas (`reference/rough.rs`), when the scene is one.
 pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::RoughApproximation> {
-    let r = scene.physics.rotation?;
-    let alpha = scene.physics.restitution.constant()?;
-    let (strength, lambda) = crate::run::estimate::kernel_constants(&scene.physics.kernel);
-    let beta = match scene.physics.drive {
+    let r = scene.physics().rotation?;
+    let alpha = scene.physics().restitution.constant()?;
+    let (strength, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
+    let beta = match scene.physics().drive {
         DriveChoice::WhiteNoise(b) => b,
         _ => 0.0,
     };
@@ -226,10 +225,10 @@ pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::Rou
 /// A rough gas's Maxwellian-approximation curves: `T_bulk_MA` (the translational temperature),
 /// `T_rot_MA` and `theta_MA`, solved from the scene's start.
 fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
-    let (Some(ma), Some(f0), Some(r)) = (
+    let (Some(ma), f0, Some(r)) = (
         rough_approximation(scene),
         initial_sampler(scene),
-        scene.physics.rotation,
+        scene.physics().rotation,
     ) else {
         return Vec::new();
     };
@@ -277,18 +276,18 @@ fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
 /// The first-Sonine `a2` of the cooling state of smooth hard spheres or disks (van Noije and
 /// Ernst 1998; MS (5) for `d = 3`), when the scene is one.
 pub fn sonine_cooling_a2(scene: &Scene) -> Option<f64> {
-    if !scene.physics.species.is_empty() || !scene.translation_is_smooth() {
+    if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
         return None;
     }
-    let alpha = scene.physics.restitution.constant()?;
-    let hard = matches!(scene.physics.kernel, KernelChoice::HardSpheres { .. });
-    (hard && matches!(scene.physics.drive, DriveChoice::None))
+    let alpha = scene.physics().restitution.constant()?;
+    let hard = matches!(scene.physics().kernel, KernelChoice::HardSpheres { .. });
+    (hard && matches!(scene.physics().drive, DriveChoice::None))
         .then(|| crate::reference::exact::sonine::a2_cooling_in(scene.dimension() as f64, alpha))
 }
 
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
-    if !scene.physics.species.is_empty() {
+    if !scene.physics().species.is_empty() {
         return mixture_curves(scene);
     }
     let mut out = rough_curves(scene);
@@ -300,7 +299,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             curve: Box::new(move |_| a2),
         });
     }
-    if let (Some(models), Some(f0)) = (hydro_models(scene), initial_sampler(scene)) {
+    if let (Some(models), f0) = (hydro_models(scene), initial_sampler(scene)) {
         let t_end = scene.times.last().copied().unwrap_or(1.0);
         for (model, (tn, vn, src)) in models.iter().zip([
             (
@@ -359,7 +358,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             curve: Box::new(move |t| h.temperature(t)),
         });
     }
-    if let (Some(mt), Some(f0)) = (maxwell_temperature(scene), initial_sampler(scene)) {
+    if let (Some(mt), f0) = (maxwell_temperature(scene), initial_sampler(scene)) {
         // GRW (13)-(14) hold per degree of freedom in any dimension (the derivation in
         // `exact.rs` counts d components; disks keep it with d = 2).
         let v0 = f0.mean().norm2() / scene.dimension() as f64;
@@ -379,7 +378,8 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
         // for T_bulk and for the raw T (which adds the random walk of the bulk velocity,
         // `bulk_to_raw`, and the initial drift).
         let n = scene.n();
-        let finite: std::sync::Arc<dyn Fn(f64) -> f64 + Send + Sync> = match scene.physics.scheme {
+        let finite: std::sync::Arc<dyn Fn(f64) -> f64 + Send + Sync> = match scene.physics().scheme
+        {
             SchemeChoice::NoSplitting => std::sync::Arc::new(move |t| mt.finite_n_bulk_mean(n, t)),
             SchemeChoice::Euler(dt) => {
                 std::sync::Arc::new(move |t| mt.splitting_bulk_mean(n, dt, false, t))

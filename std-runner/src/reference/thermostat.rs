@@ -36,13 +36,13 @@ impl GaussianBalance {
     /// coefficient below 1 (else none), from its initial temperature.
     pub fn of(scene: &Scene) -> Option<Self> {
         let t0 = crate::run::initial_temperature(scene);
-        let DriveChoice::Gaussian(zeta) = scene.physics.drive else {
+        let DriveChoice::Gaussian(zeta) = scene.physics().drive else {
             return None;
         };
-        let RestitutionLaw::Constant(alpha) = scene.physics.restitution else {
+        let RestitutionLaw::Constant(alpha) = scene.physics().restitution else {
             return None;
         };
-        let (gc, lambda) = crate::run::estimate::kernel_constants(&scene.physics.kernel);
+        let (gc, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
         let p = 2.0 + lambda;
         let moment = 2f64.powf(p) * gamma((3.0 + p) / 2.0) / gamma(1.5);
         let kappa = PI / 6.0 * gc * (1.0 - alpha * alpha) * moment;

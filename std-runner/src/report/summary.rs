@@ -47,19 +47,19 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             "particles  disks (d = 2): velocities in a plane, T per degree of freedom = <|c|^2>/2, a2 = <c^4>/(8 T^2) - 1"
         );
     }
-    let mixture = !scene.physics.species.is_empty();
+    let mixture = !scene.physics().species.is_empty();
     let mut shown = vec!["T", "T_bulk", "a2", "crit"];
     if mixture {
         let cols = crate::run::columns::SPECIES_COLUMNS;
         let _ = write!(s, "species   ");
-        for (k, sp) in scene.physics.species.iter().enumerate() {
+        for (k, sp) in scene.physics().species.iter().enumerate() {
             let _ = write!(
                 s,
                 " s{k} = {} ({} particles, mass {}){}",
                 scene.species_names[k],
                 sp.count,
                 sp.mass,
-                if k + 1 < scene.physics.species.len() {
+                if k + 1 < scene.physics().species.len() {
                     ","
                 } else {
                     "\n"
@@ -67,10 +67,10 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             );
         }
         shown = vec![crate::run::columns::MIXTURE_TEMPERATURE];
-        shown.extend(cols[..scene.physics.species.len()].iter().map(|c| c[0]));
+        shown.extend(cols[..scene.physics().species.len()].iter().map(|c| c[0]));
         shown.push(cols[0][1]);
     }
-    if let Some(r) = scene.physics.rotation {
+    if let Some(r) = scene.physics().rotation {
         let _ = writeln!(
             s,
             "rotation   rough particles: tangential restitution beta = {}, kappa = {}; T_bulk is the translational temperature",
@@ -193,14 +193,14 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         let mut names = vec!["T", "T_bulk", "a2", "a3", "crit", "mu2", "mu4"];
         if mixture {
             names = vec![crate::run::columns::MIXTURE_TEMPERATURE];
-            for c in &crate::run::columns::SPECIES_COLUMNS[..scene.physics.species.len()] {
+            for c in &crate::run::columns::SPECIES_COLUMNS[..scene.physics().species.len()] {
                 names.extend([c[1], c[2]]);
             }
-            names.extend(&crate::run::columns::COOLING_COLUMNS[..=scene.physics.species.len()]);
+            names.extend(&crate::run::columns::COOLING_COLUMNS[..=scene.physics().species.len()]);
         }
-        if let Some(r) = scene.physics.rotation {
+        if let Some(r) = scene.physics().rotation {
             // A cooling rough gas's temperatures keep falling: only its ratios settle.
-            let heated = !matches!(scene.physics.drive, DriveChoice::None) || r.noise > 0.0;
+            let heated = !matches!(scene.physics().drive, DriveChoice::None) || r.noise > 0.0;
             names = if heated {
                 vec!["T_bulk", "T_rot", "theta", "T_total", "a2", "a2_rot", "cw2"]
             } else {

@@ -70,7 +70,8 @@ pub(crate) fn scene(name: &str, set: &[String], n: usize, m: u64, seed: u64) -> 
     let path = format!("scenes/{name}.toml");
     let mut s = scene::parse_with_overrides(Path::new(&path), text, set)
         .expect("shipped scenes and reproduce's overrides are valid");
-    s.set_n(n);
+    s.set_n(n)
+        .expect("reproduce's particle counts are valid for its scenes");
     s.ensembles = m;
     s.seed = seed;
     s

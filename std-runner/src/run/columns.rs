@@ -161,11 +161,11 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
 /// `observe.collisional_pairs` the [`COOLING_COLUMNS`] instead of `mu2`, `mu4`).
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
-    let species = scene.physics.species.len();
+    let species = scene.physics().species.len();
     if scene.collisional_pairs > 0 && species == 0 {
         v.extend(COLLISIONAL);
     }
-    if scene.physics.rotation.is_some() {
+    if scene.physics().rotation.is_some() {
         v.extend(ROUGH_COLUMNS);
     }
     if species > 0 {

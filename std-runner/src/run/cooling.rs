@@ -60,10 +60,10 @@ pub struct CoolingRates {
 }
 
 impl CoolingRates {
-    /// The rates of a mixture physics (`None` for one species or an invalid physics).
-    pub fn new(ph: &Physics) -> Option<Self> {
-        let model = ph.validate().ok()?;
-        let species = *model.species()?;
+    /// The rates of a mixture scene (`None` for one species).
+    pub fn new(scene: &crate::scene::Scene) -> Option<Self> {
+        let ph = scene.physics();
+        let species = *scene.model().species()?;
         let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
         let pairs = pair_kernels(ph, &species)?
             .into_iter()

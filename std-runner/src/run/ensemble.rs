@@ -15,14 +15,14 @@ use gdsmc_core::rng::Xoshiro256PlusPlus;
 use gdsmc_core::sample::MaxwellianMixture;
 use gdsmc_core::vec3::Vec3;
 
-/// The initial distribution of a scene as a core sampler (`None` if its physics is invalid).
-pub fn initial_sampler(scene: &Scene) -> Option<MaxwellianMixture<MAX_COMPONENTS>> {
-    scene.physics.validate().ok().map(|m| m.initial().clone())
+/// The initial distribution of a scene as a core sampler.
+pub fn initial_sampler(scene: &Scene) -> MaxwellianMixture<MAX_COMPONENTS> {
+    scene.model().initial().clone()
 }
 
-/// The temperature of a scene's initial distribution (1 if its physics is invalid).
+/// The temperature of a scene's initial distribution.
 pub fn initial_temperature(scene: &Scene) -> f64 {
-    initial_sampler(scene).map_or(1.0, |f| f.temperature())
+    initial_sampler(scene).temperature()
 }
 
 /// Why an ensemble stopped: the engine's error and the observation time it was advancing to.
@@ -123,7 +123,7 @@ fn observe<E: EventLoop>(
     let (mut marginal_first, mut marginal_last) =
         (vec![0.0; marginal_len], vec![0.0; marginal_len]);
     let cooling = (scene.collisional_pairs > 0)
-        .then(|| CoolingRates::new(&scene.physics))
+        .then(|| CoolingRates::new(scene))
         .flatten();
     for (ti, &t) in scene.times.iter().enumerate() {
         let obs = if t == 0.0 {
@@ -169,7 +169,7 @@ fn observe<E: EventLoop>(
         if let (true, Some((bulk, t_bulk)), Some(alpha), true) = (
             scene.collisional_pairs > 0,
             stored,
-            scene.physics.restitution.constant(),
+            scene.physics().restitution.constant(),
             cooling.is_none(),
         ) {
             // mu2, mu4 are reduced by v0, so the stored units do.
@@ -180,7 +180,7 @@ fn observe<E: EventLoop>(
         if let Some(r) = engine.rough(p) {
             out.extend(crate::run::columns::rough_values(
                 &r,
-                scene.physics.dimension,
+                scene.physics().dimension,
             ));
         }
         if let Some(m) = engine.species(p) {
@@ -220,13 +220,13 @@ fn cooling_rates(
     scale: f64,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Vec<f64> {
-    let (_, lambda) = crate::run::estimate::kernel_constants(&scene.physics.kernel);
+    let (_, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
     let unit = scale.powf(lambda);
     let rates = c.rates(p, scene.collisional_pairs, rng);
-    let n: usize = scene.physics.species.iter().map(|s| s.count).sum();
+    let n: usize = scene.physics().species.iter().map(|s| s.count).sum();
     let (mut t, mut dt) = (0.0, 0.0);
     for (s, &(ts, dts)) in rates.iter().enumerate() {
-        let x = scene.physics.species[s].count as f64 / n as f64;
+        let x = scene.physics().species[s].count as f64 / n as f64;
         t += x * ts;
         dt += x * dts;
     }

@@ -85,7 +85,7 @@ fn logistic_integral(r: f64, c: f64, t: f64) -> f64 {
 /// constant, or for the impact-speed law BRS (9) its value at unit normal impact speed,
 /// `1 - 2 beta0` (in [0, 1]).
 pub fn typical_alpha(scene: &Scene) -> f64 {
-    match scene.physics.restitution {
+    match scene.physics().restitution {
         RestitutionLaw::Constant(a) => a,
         RestitutionLaw::ImpactSpeed { beta0, .. } => (1.0 - 2.0 * beta0).clamp(0.0, 1.0),
     }
@@ -103,7 +103,7 @@ pub fn kernel_constants(kernel: &KernelChoice) -> (f64, f64) {
 
 /// The estimate for `scene`.
 pub fn estimate(scene: &Scene) -> WorkEstimate {
-    let p = &scene.physics;
+    let p = &scene.physics();
     let n = p.n as f64;
     let t_end = scene.times.last().copied().unwrap_or(0.0);
     let m = scene.ensembles as f64;
@@ -162,11 +162,9 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     };
     // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) thermal speeds. The rates are the core's
     // (its majorant and background bounds), from the validated physics.
-    let model = p.validate().ok();
+    let model = scene.model();
     let umax = 2.0 * (temperature * (2.0 * n.ln() + 3.0)).sqrt();
-    let rate = model
-        .as_ref()
-        .map_or(f64::NAN, |md| md.majorant_rate(p.n, umax));
+    let rate = model.majorant_rate(p.n, umax);
     // A gas with no drive cools (Haff's law for hard spheres): with the cooling rate
     // zeta0 = (1 - alpha^2)/4 nu0 and the rate going as T^(lambda/2), T = T0 (1 + s zeta0
     // t)^(-1/s), s = lambda/2, the rate integrates to ln(1 + s zeta0 t)/(s zeta0) instead of t.
@@ -180,11 +178,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         _ => t_end,
     };
     // A host medium's grains at a typical speed `sqrt(3 T)`.
-    let background = model.as_ref().map_or(f64::NAN, |md| {
-        md.background_rate((3.0 * temperature).sqrt())
-    }) * n
-        * t_end
-        * m;
+    let background = model.background_rate((3.0 * temperature).sqrt()) * n * t_end * m;
     let steps = match p.scheme {
         SchemeChoice::NoSplitting => 0.0,
         SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => t_end / dt,

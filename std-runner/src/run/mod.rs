@@ -187,7 +187,7 @@ pub fn run_interruptible(
     Ok(stats_of(scene, totals, clock.timing()))
 }
 
-/// Validates the scene's physics and runs `f` with the job of its ensembles.
+/// Runs `f` with the job of the scene's ensembles (on the scene's validated model).
 fn job<T>(
     scene: &Scene,
     threads: usize,
@@ -195,13 +195,9 @@ fn job<T>(
     stop: &AtomicBool,
     f: impl FnOnce(&EnsembleJob) -> Result<T, Error>,
 ) -> Result<T, Error> {
-    let model = scene
-        .physics
-        .validate()
-        .map_err(|e| Error::Physics(e.to_string()))?;
     f(&EnsembleJob {
         scene,
-        model: &model,
+        model: scene.model(),
         threads,
         progress,
         stop,
