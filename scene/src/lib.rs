@@ -188,6 +188,38 @@ impl Scene {
         Ok(())
     }
 
+    /// Sets the observation times (finite, from 0 on, increasing), validated against the
+    /// physics as [`Scene::with_physics`] does (a splitting scheme's grid). Set the times
+    /// first when both change. On error the scene is unchanged.
+    pub fn set_times(&mut self, times: Vec<f64>) -> Result<(), Error> {
+        let invalid = |key: &str, message: String| Error::Invalid {
+            path: PathBuf::from(format!("scene {}", self.name)),
+            line: 0,
+            key: key.to_string(),
+            message,
+        };
+        let ordered = times.windows(2).all(|w| w[0] < w[1]);
+        if times.is_empty() || !ordered || !times.iter().all(|t| t.is_finite() && *t >= 0.0) {
+            return Err(invalid(
+                "observe.times",
+                "must be finite, from 0 on and increasing".to_string(),
+            ));
+        }
+        if let Some((key, message)) = validate::physics_rules(
+            &self.physics,
+            &times,
+            self.collisional_pairs,
+            (
+                self.reduced_histogram.is_some(),
+                self.marginal_histogram.is_some(),
+            ),
+        ) {
+            return Err(invalid(key, message));
+        }
+        self.times = times;
+        Ok(())
+    }
+
     /// Sets the particle count, and a mixture's species counts from their fractions as the
     /// file's `particles.n` does (`validate::species::counts`), validated as
     /// [`Scene::with_physics`] does (a species left without a particle is refused).

@@ -21,7 +21,7 @@ fn initial_shells(scene_name: &str) -> gdsmc_runner::run::RunStats {
     let mut s = scene::load(&p).unwrap();
     s.set_n(5000).expect("a valid particle count");
     s.ensembles = 40;
-    s.times = vec![0.0];
+    s.set_times(vec![0.0]).expect("valid observation times");
     s.histogram = Some((16, 4.0));
     gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap()
 }

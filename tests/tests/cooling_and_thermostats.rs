@@ -17,7 +17,8 @@ fn maxwell_cooling_is_exponential_over_thirty_decades() {
     let mut s = shipped("rw-transient", n, 20_000, 901);
     s.with_physics(|ph| ph.drive = DriveChoice::None)
         .expect("a valid physics");
-    s.times = (0..=10).map(|i| 10.0 * i as f64).collect(); // k = 3/4: T falls to e^-75 ~ 3e-33
+    s.set_times((0..=10).map(|i| 10.0 * i as f64).collect())
+        .expect("valid observation times"); // k = 3/4: T falls to e^-75 ~ 3e-33
     let mt = maxwell_temperature(&s).unwrap();
     let st = run(&s);
     for (ti, &t) in st.times.iter().enumerate() {
@@ -44,9 +45,10 @@ fn gaussian_thermostat_with_maxwell_kernel_is_exact() {
         let mut s = shipped("rw-transient", n, 20_000, 910 + k as u64);
         s.with_physics(|ph| ph.drive = DriveChoice::Gaussian(0.75 / 4.0))
             .expect("a valid physics");
+        s.set_times((0..=8).map(f64::from).collect())
+            .expect("valid observation times");
         s.with_physics(|ph| ph.scheme = scheme)
             .expect("a valid physics");
-        s.times = (0..=8).map(f64::from).collect();
         let mt = maxwell_temperature(&s).unwrap();
         let st = run(&s);
         for (ti, &t) in st.times.iter().enumerate() {
@@ -84,10 +86,13 @@ fn hard_spheres_follow_haffs_law_over_ten_decades() {
         * (1.0 + 3.0 * a2 / 16.0);
     let t0 = 2.0 / xi; // T0 = 1: T = 1 / (1 + t/t0)^2
     // Times where Haff's T is 1e-2, 1e-4, ..., 1e-10.
-    s.times = [0.0, 1e1, 1e2, 1e3, 1e4, 1e5]
-        .iter()
-        .map(|&r: &f64| (r - 1.0).max(0.0) * t0)
-        .collect();
+    s.set_times(
+        [0.0, 1e1, 1e2, 1e3, 1e4, 1e5]
+            .iter()
+            .map(|&r: &f64| (r - 1.0).max(0.0) * t0)
+            .collect(),
+    )
+    .expect("valid observation times");
     let st = run(&s);
     assert_eq!(
         st.counts.overshoots, 0,

@@ -10,7 +10,8 @@ use gdsmc_validation::*;
 fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
     let n = 8;
     let mut s = shipped_set("disks-white-noise", &[], n, 20_000, 2201);
-    s.times = (0..=8).map(|k| 0.5 * k as f64).collect();
+    s.set_times((0..=8).map(|k| 0.5 * k as f64).collect())
+        .expect("valid observation times");
     let mt = maxwell_temperature(&s).expect("Maxwell disks: GRW (13) applies");
     let st = run(&s);
     let f = family_factor(st.times.len());
@@ -31,7 +32,8 @@ fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
         20_000,
         2202,
     );
-    h.times = s.times.clone();
+    h.set_times(s.times.clone())
+        .expect("valid observation times");
     assert!(maxwell_temperature(&h).is_none());
     let st = run(&h);
     let outside = times_outside(&st, "T_bulk", f, |t| mt.finite_n_bulk_mean(n, t));

@@ -19,7 +19,8 @@ fn bulk_velocity_is_exact_at_any_n() {
         .enumerate()
     {
         let mut s = shipped(name, 4, 20_000, 800 + k as u64);
-        s.times = (0..=8).map(|i| i as f64 / 8.0).collect();
+        s.set_times((0..=8).map(|i| i as f64 / 8.0).collect())
+            .expect("valid observation times");
         let h = host_medium_maxwell(&s).unwrap();
         let st = run(&s);
         for (ti, &t) in st.times.iter().enumerate() {
@@ -45,7 +46,8 @@ fn temperature_follows_brs_15_at_large_n() {
     {
         let n = 2048;
         let mut s = shipped(name, n, 200, 810 + k as u64);
-        s.times = (0..=10).map(|i| i as f64 / 10.0).collect();
+        s.set_times((0..=10).map(|i| i as f64 / 10.0).collect())
+            .expect("valid observation times");
         let h = host_medium_maxwell(&s).unwrap();
         let st = run(&s);
         for (ti, &t) in st.times.iter().enumerate() {

@@ -21,7 +21,8 @@ const MAXWELL_SMOOTH: [&str; 6] = [
 fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     let n = 8;
     let mut s = shipped_set("rough-hcs", &MAXWELL_SMOOTH, n, 20_000, 1601);
-    s.times = (0..=8).map(|k| 0.5 * k as f64).collect();
+    s.set_times((0..=8).map(|k| 0.5 * k as f64).collect())
+        .expect("valid observation times");
     s.steady_from = None;
     let mt = maxwell_temperature(&s).expect("beta = -1: GRW (13) applies");
     let st = run(&s);
@@ -43,7 +44,8 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     let mut set = MAXWELL_SMOOTH;
     set[2] = "rotation.tangential_restitution=0";
     let mut r = shipped_set("rough-hcs", &set, n, 20_000, 1602);
-    r.times = s.times.clone();
+    r.set_times(s.times.clone())
+        .expect("valid observation times");
     r.steady_from = None;
     assert!(maxwell_temperature(&r).is_none());
     let st = run(&r);
@@ -62,7 +64,9 @@ fn the_smooth_limit_of_rough_hard_spheres_is_the_smooth_gas() {
         "rotation.tangential_restitution=-1",
     ];
     let mut rough = shipped_set("rough-hcs", &set, n, 4000, 1603);
-    rough.times = (0..=6).map(|k| 0.5 * k as f64).collect();
+    rough
+        .set_times((0..=6).map(|k| 0.5 * k as f64).collect())
+        .expect("valid observation times");
     rough.steady_from = None;
     let mut smooth = rough.clone();
     smooth

@@ -10,8 +10,11 @@ use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::scene::{Scene, SchemeChoice};
 use gdsmc_validation::*;
 
-fn scheme(name: &str, n: usize, m: u64, seed: u64, s: SchemeChoice) -> Scene {
+/// A shipped scene observed at `times` (set first: the scheme's grid is checked against them)
+/// with scheme `s`.
+fn scheme(name: &str, n: usize, m: u64, seed: u64, s: SchemeChoice, times: Vec<f64>) -> Scene {
     let mut sc = shipped(name, n, m, seed);
+    sc.set_times(times).expect("valid observation times");
     sc.with_physics(|ph| ph.scheme = s)
         .expect("a valid physics");
     sc
@@ -24,8 +27,8 @@ fn splitting_means_are_exact_at_small_n() {
         .into_iter()
         .enumerate()
     {
-        let mut sc = scheme("rw-transient", n, 40_000, 600 + k as u64, s);
-        sc.times = (0..=8).map(f64::from).collect();
+        let times = (0..=8).map(f64::from).collect();
+        let sc = scheme("rw-transient", n, 40_000, 600 + k as u64, s, times);
         let mt = maxwell_temperature(&sc).unwrap();
         let st = run(&sc);
         let strang = matches!(s, SchemeChoice::Strang(_));
@@ -63,9 +66,9 @@ fn euler_is_first_order_and_strang_second_order() {
                 SchemeChoice::Euler(_) => SchemeChoice::Euler(dt),
                 _ => SchemeChoice::Strang(dt),
             };
-            let mut sc = scheme("rw-transient", n, 150, 700 + k as u64, s);
             let kk = (8.0 / dt).round() as usize;
-            sc.times = (0..=kk).map(|i| i as f64 * dt).collect();
+            let times = (0..=kk).map(|i| i as f64 * dt).collect();
+            let sc = scheme("rw-transient", n, 150, 700 + k as u64, s, times);
             let mt = maxwell_temperature(&sc).unwrap();
             let st = run(&sc);
             let strang = matches!(s, SchemeChoice::Strang(_));

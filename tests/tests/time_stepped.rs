@@ -10,7 +10,9 @@ use gdsmc_validation::*;
 fn time_stepped_converges_to_no_splitting() {
     let n = 256;
     let mut exact = shipped("grw-example5", n, 3000, 1101);
-    exact.times = vec![0.0, 0.5, 1.0, 2.0];
+    exact
+        .set_times(vec![0.0, 0.5, 1.0, 2.0])
+        .expect("valid observation times");
     let st_exact = run(&exact);
     let mut fine = exact.clone();
     fine.seed = 1102;
