@@ -19,7 +19,7 @@ pub fn scene_reader(data: &[u8]) {
 fn check(text: &str, overrides: &[String]) {
     match gdsmc_scene::parse_with_overrides(Path::new("fuzz.toml"), text, overrides) {
         Ok(scene) => {
-            if let Err(e) = scene.physics.validate() {
+            if let Err(e) = scene.physics().validate() {
                 panic!("the scene reader accepted physics the core refuses: {e}\n{text}");
             }
             assert!(
