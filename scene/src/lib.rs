@@ -161,61 +161,52 @@ impl Scene {
     pub fn with_physics(&mut self, f: impl FnOnce(&mut Physics)) -> Result<(), Error> {
         let mut physics = self.physics.clone();
         f(&mut physics);
-        let invalid = |key: &str, message: String| Error::Invalid {
+        let model = physics.validate().map_err(|e| {
+            let key = self.keys.iter().find(|(p, _)| *p == e.param);
+            let key = key.map_or_else(|| e.param.to_string(), |(_, k)| k.clone());
+            self.invalid(&key, e.problem.to_string())
+        })?;
+        self.rules(&physics, &self.times)?;
+        self.physics = physics;
+        self.model = model;
+        Ok(())
+    }
+
+    /// An error of a change made in code (no line), at `key`.
+    fn invalid(&self, key: &str, message: String) -> Error {
+        Error::Invalid {
             path: PathBuf::from(format!("scene {}", self.name)),
             line: 0,
             key: key.to_string(),
             message,
-        };
-        let model = physics.validate().map_err(|e| {
-            let key = self.keys.iter().find(|(p, _)| *p == e.param);
-            let key = key.map_or_else(|| e.param.to_string(), |(_, k)| k.clone());
-            invalid(&key, e.problem.to_string())
-        })?;
-        if let Some((key, message)) = validate::physics_rules(
-            &physics,
-            &self.times,
-            self.collisional_pairs,
-            (
-                self.reduced_histogram.is_some(),
-                self.marginal_histogram.is_some(),
-            ),
-        ) {
-            return Err(invalid(key, message));
         }
-        self.physics = physics;
-        self.model = model;
-        Ok(())
+    }
+
+    /// The scene's rules that depend on the physics ([`validate::physics_rules`]) for
+    /// `physics` observed at `times`.
+    fn rules(&self, physics: &Physics, times: &[f64]) -> Result<(), Error> {
+        let histograms = (
+            self.reduced_histogram.is_some(),
+            self.marginal_histogram.is_some(),
+        );
+        match validate::physics_rules(physics, times, self.collisional_pairs, histograms) {
+            Some((key, message)) => Err(self.invalid(key, message)),
+            None => Ok(()),
+        }
     }
 
     /// Sets the observation times (finite, from 0 on, increasing), validated against the
     /// physics as [`Scene::with_physics`] does (a splitting scheme's grid). Set the times
     /// first when both change. On error the scene is unchanged.
     pub fn set_times(&mut self, times: Vec<f64>) -> Result<(), Error> {
-        let invalid = |key: &str, message: String| Error::Invalid {
-            path: PathBuf::from(format!("scene {}", self.name)),
-            line: 0,
-            key: key.to_string(),
-            message,
-        };
         let ordered = times.windows(2).all(|w| w[0] < w[1]);
         if times.is_empty() || !ordered || !times.iter().all(|t| t.is_finite() && *t >= 0.0) {
-            return Err(invalid(
+            return Err(self.invalid(
                 "observe.times",
                 "must be finite, from 0 on and increasing".to_string(),
             ));
         }
-        if let Some((key, message)) = validate::physics_rules(
-            &self.physics,
-            &times,
-            self.collisional_pairs,
-            (
-                self.reduced_histogram.is_some(),
-                self.marginal_histogram.is_some(),
-            ),
-        ) {
-            return Err(invalid(key, message));
-        }
+        self.rules(&self.physics, &times)?;
         self.times = times;
         Ok(())
     }
