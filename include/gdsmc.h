@@ -275,8 +275,9 @@ typedef struct {
     double pair_restitution[GDSMC_MAX_PAIRS];
     // Nonzero: rough particles (Huthmann and Zippelius 1997): each has a rim velocity
     // `w = (sigma/2) omega` beside its velocity, and `restitution` is the normal restitution.
-    // The drive is none or white noise, the scheme no splitting, the restitution constant, no
-    // species. A caller buffer needs room for the spins: gdsmc_config_footprint.
+    // The drive is none or white noise, the scheme no splitting, the restitution constant.
+    // With species, a rough mixture: every species and pair takes the values below. A caller
+    // buffer needs room for the spins: gdsmc_config_footprint.
     uint32_t rough;
     // Rough particles: tangential restitution beta in [-1, 1] (-1: smooth, rotation untouched;
     // 1: perfectly rough).
@@ -292,7 +293,7 @@ typedef struct {
     // The dimension: 3 (spheres, the default) or 2 (disks: velocities in the (x, y) plane,
     // `z` components zero; a rough disk's rim velocity along z, `inertia` in (0, 1], 1/2 for
     // uniform disks). Disks take the no-splitting scheme, a constant restitution, no drive or
-    // white noise, no species and a drift in the plane.
+    // white noise and a drift in the plane (one species or a mixture).
     uint32_t dimension;
 } gdsmc_config;
 

@@ -55,6 +55,12 @@ fn field(p: Param) -> &'static str {
         Param::SpeciesDiameter(_) => "species_diameter",
         Param::SpeciesBeta(_) => "species_beta",
         Param::PairRestitution(..) => "pair_restitution",
+        // Not C fields (yet): a C rough mixture takes the rotation's values for every species
+        // and pair, so these name what they would be.
+        Param::SpeciesInertia(_) => "inertia",
+        Param::SpeciesRotationTemperature(_) => "rotation_temperature",
+        Param::SpeciesRotationNoise(_) => "rotation_noise",
+        Param::PairTangentialRestitution(..) => "tangential_restitution",
         Param::Rotation => "rough",
         Param::TangentialRestitution => "tangential_restitution",
         Param::Inertia => "inertia",
@@ -204,6 +210,9 @@ impl gdsmc_config {
                 temperature: self.species_temperature[k],
                 diameter: self.species_diameter[k],
                 beta: self.species_beta[k],
+                inertia: None,
+                rotation_temperature: None,
+                rotation_noise: None,
             });
             if count == 0 {
                 return invalid(msg!("config.species_count[{k}] must be >= 1, got 0"));

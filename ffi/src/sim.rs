@@ -42,7 +42,7 @@ const _: () = assert!(
 /// The 32-byte records a simulation of `model` needs: `n` particles, and for a rough gas `n`
 /// spins after them.
 pub(crate) fn slots(model: &Model) -> usize {
-    if model.rough_map().is_some() {
+    if model.rotates() {
         2 * model.n()
     } else {
         model.n()

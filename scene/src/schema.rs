@@ -65,6 +65,10 @@ pub struct RotationSpec {
     /// `drive.beta` gives `dT_tr/dt = 2 beta`. Default 0.
     #[serde(default = "default_rotation_noise")]
     pub noise: Spanned<f64>,
+    /// A mixture's tangential restitution per species pair: a symmetric matrix, one row per
+    /// species (default: `tangential_restitution` for every pair).
+    #[serde(default)]
+    pub pair_tangential_restitution: Option<Spanned<Vec<Vec<f64>>>>,
 }
 
 /// The core's defaults of a rough gas (`RotationChoice::spheres`), one place for every front
@@ -105,6 +109,18 @@ pub struct SpeciesSpec {
     /// `drive.beta`.
     #[serde(default)]
     pub beta: Option<Spanned<f64>>,
+    /// Rough particles: this species' reduced moment of inertia kappa. Default:
+    /// `rotation.inertia`.
+    #[serde(default)]
+    pub inertia: Option<Spanned<f64>>,
+    /// Rough particles: this species' start rotational temperature
+    /// `T_rot = m kappa <|w|^2>/d_rot` (>= 0). Default: `rotation.temperature`.
+    #[serde(default)]
+    pub rotation_temperature: Option<Spanned<f64>>,
+    /// Rough particles: the white-noise strength on this species' rotation (>= 0). Default:
+    /// `rotation.noise`.
+    #[serde(default)]
+    pub rotation_noise: Option<Spanned<f64>>,
 }
 
 /// `[marginal_histogram]`: `bins` bins over `[-radius, radius)` of velocity component `axis`.

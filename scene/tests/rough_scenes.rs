@@ -127,3 +127,64 @@ fn rotation_can_be_overridden() {
         "{e}"
     );
 }
+
+const ROUGH_MIXTURE: &str = r#"
+[particles]
+n = 64
+[[species]]
+fraction = 0.5
+mass = 2.0
+[[species]]
+fraction = 0.5
+inertia = 0.2
+rotation_temperature = 3.0
+[collisions]
+kernel = "hard-spheres"
+restitution = 0.9
+[rotation]
+tangential_restitution = 0.25
+pair_tangential_restitution = [[0.25, 0.5], [0.5, -0.5]]
+[drive]
+kind = "none"
+[observe]
+t_end = 1.0
+"#;
+
+/// A rough mixture: each species' own rotation where it names one, the rotation's otherwise;
+/// the pairs' tangential restitution from the matrix; bad values named by line and key.
+#[test]
+fn a_rough_mixture_gives_each_species_and_pair_its_rotation() {
+    let s = parse(Path::new("r.toml"), ROUGH_MIXTURE).unwrap();
+    let ph = s.physics();
+    assert_eq!(ph.species[0].inertia, None);
+    assert_eq!(ph.species[1].inertia, Some(0.2));
+    assert_eq!(ph.species[1].rotation_temperature, Some(3.0));
+    assert_eq!(&ph.pair_tangential_restitution[..], &[0.25, 0.5, -0.5]);
+    assert!(s.model().rotates());
+    let e = err(&ROUGH_MIXTURE.replace("inertia = 0.2", "inertia = 0.9"));
+    assert!(
+        e.starts_with("bad.toml:9: `species[1].inertia` must lie in (0, 2/3], got 0.9"),
+        "{e}"
+    );
+    let e = err(&ROUGH_MIXTURE.replace("[[0.25, 0.5], [0.5, -0.5]]", "[[0.25, 2.0], [2.0, -0.5]]"));
+    assert!(
+        e.starts_with(
+            "bad.toml:16: `rotation.pair_tangential_restitution` must lie in [-1, 1], got 2"
+        ),
+        "{e}"
+    );
+    let e = err(&ROUGH_MIXTURE.replace("[[0.25, 0.5], [0.5, -0.5]]", "[[0.25, 0.5], [0.4, -0.5]]"));
+    assert!(e.contains("must be symmetric"), "{e}");
+    // Without [rotation] a species' rotation is refused at its key.
+    let smooth = ROUGH_MIXTURE
+        .replace("[rotation]\ntangential_restitution = 0.25\n", "")
+        .replace(
+            "pair_tangential_restitution = [[0.25, 0.5], [0.5, -0.5]]\n",
+            "",
+        );
+    let e = err(&smooth);
+    assert!(
+        e.starts_with("bad.toml:9: `species[1].inertia` is only used with rough particles"),
+        "{e}"
+    );
+}

@@ -215,7 +215,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> 
 }
 
 /// Every rim velocity finite, or the error naming them.
-fn spins_finite(p: &Particles<'_>) -> Result<(), EngineError> {
+pub(crate) fn spins_finite(p: &Particles<'_>) -> Result<(), EngineError> {
     if p.spins()
         .iter()
         .all(|s| s.rim_velocity().norm2().is_finite())

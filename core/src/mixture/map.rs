@@ -23,8 +23,70 @@
 //! ```
 
 use crate::collision::inelastic;
+use crate::engine::Counts;
+use crate::engine::collision_map::{CollisionMap, clamped_coefficient};
+use crate::geometry::Geometry;
+use crate::kernel::Kernel;
 use crate::math::Real;
+use crate::particles::Particles;
+use crate::restitution::Restitution;
+use crate::rng::Rng;
 use crate::vec3::Vec3;
+
+/// The particle model of a mixture's pair type: what it becomes between partners of masses
+/// `m_s` and `m_t` (the masses live in [`super::Species`], once). Every restitution law is one
+/// ([`MassMap`]: smooth particles); rough particles: [`crate::rough::RoughPairLaw`].
+pub trait PairLaw: Copy + core::fmt::Debug {
+    /// The collision map of the pair type.
+    type Map: CollisionMap + core::fmt::Debug;
+
+    /// The map between partners of masses `m_s` (first) and `m_t` (second).
+    fn between(&self, m_s: Real, m_t: Real) -> Self::Map;
+}
+
+impl<A: Restitution + core::fmt::Debug> PairLaw for A {
+    type Map = MassMap<A>;
+
+    fn between(&self, m_s: Real, m_t: Real) -> MassMap<A> {
+        MassMap {
+            law: *self,
+            masses: MassRatio::new(m_s, m_t),
+        }
+    }
+}
+
+/// Smooth particles of two masses: a restitution law and the pair's [`MassRatio`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MassMap<A> {
+    /// The restitution law of the pair.
+    pub law: A,
+    /// The partners' mass fractions.
+    pub masses: MassRatio,
+}
+
+impl<A: Restitution> CollisionMap for MassMap<A> {
+    const SPINS: bool = false;
+
+    /// The scattering direction of `G`, the law's clamped coefficient and
+    /// [`MassRatio::collide`] (GRW (3) in the centre-of-mass frame; module docs).
+    #[inline(always)]
+    fn collide_pair<K: Kernel, G: Geometry, R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        rng: &mut R,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3) {
+        let u = vi - vj;
+        let e = G::scattering::<K, R>(u, rng);
+        let alpha = clamped_coefficient(&self.law, u, e, counts);
+        let (a, b) = self.masses.collide(vi, vj, e, alpha);
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        (a, b)
+    }
+}
 
 /// The mass fractions of one pair type: `mu_s = m_s / (m_s + m_t)` and `mu_t`.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -5,8 +5,10 @@
 //! - [`Species`]: counts and masses, the particles of each species a contiguous range of the
 //!   caller's buffer, the pair types `(s, t)`;
 //! - [`MassRatio`]: the collision of unequal masses (GRW (3) in the centre-of-mass frame);
+//! - [`PairLaw`]: what a pair type's law becomes between given masses: a collision map
+//!   ([`MassMap`] for smooth particles, [`crate::rough::RoughPair`] for rough ones);
 //! - [`MixtureNoSplitting`]: the event loop, generic over the kernel, the drive (one per
-//!   species) and the restitution law (one per pair type);
+//!   species), the pair law (one per pair type) and the dimension;
 //! - [`MixtureObservables`]: each species' moments and temperature `T_s` about the flow
 //!   velocity (Garzó and Dufty 1999).
 //!
@@ -37,7 +39,7 @@ pub mod nosplit;
 pub mod observables;
 pub mod species;
 
-pub use map::MassRatio;
+pub use map::{MassMap, MassRatio, PairLaw};
 pub use nosplit::{MixtureNoSplitting, PairPhysics, StartError};
 pub use observables::MixtureObservables;
 pub use species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};

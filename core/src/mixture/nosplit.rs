@@ -5,10 +5,13 @@
 //! pair's kernel: each unordered pair collides at `(1/N) int B de`, as in GRW Section 3 for
 //! one species. Waiting times are exponential with the total rate; the pair type is chosen by
 //! its rate, the particles uniformly within their species; the candidate is fictitious with
-//! probability `1 - (|u| / U_st)^lambda` (GRW (20)); otherwise `e` uniform on the sphere and
-//! the map of [`super::MassRatio`]. There is no time step: the process is the mixture's
-//! Markov jump process exactly, as the one-species loop is (the same thinning argument, per
-//! pair type).
+//! probability `1 - (|u| / U_st)^lambda` (GRW (20)); otherwise the pair type's collision map
+//! ([`super::PairLaw`]: smooth particles of two masses, [`super::MassMap`], or rough ones,
+//! [`crate::rough::RoughPair`]) in dimension `G`. There is no time step: the process is the
+//! mixture's Markov jump process exactly, as the one-species loop is (the same thinning
+//! argument, per pair type). Rotation does not enter the collision rate, so a rough mixture
+//! differs only in its map, its drive (white noise on translation and rotation per species,
+//! [`crate::rough::RoughNoise`]) and its observables.
 //!
 //! The majorant of pair type `(s, t)`: with `V_s` the bulk velocity of species `s` and
 //! `S_s >= max_{i in s} |v_i - V_s|`, the triangle inequality gives
@@ -22,37 +25,41 @@
 //! below [`crate::engine::pairs::PREFETCH_FROM`] particles (no pair-type draw for one type; pairs
 //! drawn when used) and gives its results to the last bit.
 
-use super::map::MassRatio;
+use super::map::PairLaw;
 use super::observables::MixtureObservables;
-use super::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species};
+use super::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 use crate::drive::Drive;
-use crate::engine::collision_map::clamped_coefficient;
+use crate::engine::collision_map::CollisionMap;
 use crate::engine::event::{Majorant, RefreshWindow};
 use crate::engine::frame::{Frame, RESCALE_BELOW};
 use crate::engine::{Counts, EngineError};
+use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{Real, max};
 use crate::particles::Particles;
-use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_index, uniform_pair, uniform01};
-use crate::sample::{standard_exponential, unit_sphere};
+use crate::sample::standard_exponential;
 
-/// The physics of one pair type `(s, t)`: kernel, restitution law, masses.
+/// The physics of one pair type `(s, t)`: kernel and particle model (a restitution law, or
+/// [`crate::rough::RoughPairLaw`]); the masses are the species'.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PairPhysics<K, A> {
     /// The collision kernel of the pair (e.g. hard spheres of diameter `(d_s + d_t)/2`).
     pub kernel: K,
-    /// The restitution law of the pair.
+    /// The pair's law ([`PairLaw`]).
     pub restitution: A,
 }
 
 /// The exact event loop of a mixture: kernel type `K`, drive type `D` (one per species),
-/// restitution law type `A` (one per pair type).
+/// pair law `L` (one per pair type: a restitution law, or rough particles) and dimension `G`
+/// (spheres unless named).
 #[derive(Clone, Debug)]
-pub struct MixtureNoSplitting<K, D, A> {
+pub struct MixtureNoSplitting<K, D, L: PairLaw, G = Spheres> {
     sp: Species,
-    physics: [PairPhysics<K, A>; MAX_PAIRS],
-    masses: [MassRatio; MAX_PAIRS],
+    kernels: [K; MAX_PAIRS],
+    maps: [L::Map; MAX_PAIRS],
+    /// Each species' reduced moment of inertia (rough particles; 0 otherwise).
+    kappa: [Real; MAX_SPECIES],
     pair_of: [(usize, usize); MAX_PAIRS],
     drives: [D; MAX_SPECIES],
     maj: [Majorant; MAX_SPECIES],
@@ -67,21 +74,40 @@ pub struct MixtureNoSplitting<K, D, A> {
     t: Real,
     refresh: RefreshWindow,
     frame: Frame,
+    dim: core::marker::PhantomData<G>,
 }
 
-impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
+impl<K: Kernel, D: Drive, L: PairLaw> MixtureNoSplitting<K, D, L> {
     /// Starts the scheme at `t0` on the particles `p` (species `s` in `sp.range(s)`, velocities
-    /// already set) with one [`PairPhysics`] per pair type (in [`Species::pair`] order) and one
-    /// drive per species. Returns the observables at `t0`.
+    /// already set; rough particles with one spin each) with one [`PairPhysics`] per pair type
+    /// (in [`Species::pair`] order) and one drive per species. Returns the observables at `t0`.
+    /// Spheres; disks: [`MixtureNoSplitting::start_in`].
     pub fn start(
         sp: Species,
-        physics: &[PairPhysics<K, A>],
+        physics: &[PairPhysics<K, L>],
+        drives: &[D],
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(Self, MixtureObservables), StartError> {
+        Self::start_in(sp, physics, drives, p, t0)
+    }
+}
+
+impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G> {
+    /// As [`MixtureNoSplitting::start`] in dimension `G` (named by the result's type).
+    #[inline(never)]
+    pub fn start_in(
+        sp: Species,
+        physics: &[PairPhysics<K, L>],
         drives: &[D],
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(Self, MixtureObservables), StartError> {
         if !t0.is_finite() {
             return Err(StartError::Engine(EngineError::TimeBackwards));
+        }
+        if L::Map::SPINS && !p.has_spins() {
+            return Err(StartError::Engine(EngineError::Spins));
         }
         let types = sp.pair_types();
         if physics.len() != types {
@@ -99,12 +125,18 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
             return Err(StartError::Mixture(MixtureError::ParticleCount));
         }
         p.reset_kick_times(t0);
+        let maps: [L::Map; MAX_PAIRS] = core::array::from_fn(|k| {
+            let k = k.min(types - 1);
+            let (a, b) = sp.pair(k);
+            physics[k].restitution.between(sp.mass(a), sp.mass(b))
+        });
         let mut s = MixtureNoSplitting {
             sp,
-            physics: core::array::from_fn(|k| physics[k.min(types - 1)]),
-            masses: core::array::from_fn(|k| {
-                let (a, b) = sp.pair(k.min(types - 1));
-                MassRatio::new(sp.mass(a), sp.mass(b))
+            kernels: core::array::from_fn(|k| physics[k.min(types - 1)].kernel),
+            maps,
+            kappa: core::array::from_fn(|s| {
+                let s = s.min(sp.len() - 1);
+                maps[pair_index(sp.len(), s, s)].inertia().0
             }),
             pair_of: core::array::from_fn(|k| sp.pair(k.min(types - 1))),
             drives: core::array::from_fn(|k| drives[k.min(sp.len() - 1)]),
@@ -117,6 +149,7 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
             t: t0,
             refresh: RefreshWindow::new(p.len()),
             frame: Frame::IDENTITY,
+            dim: core::marker::PhantomData,
         };
         let obs = s.synchronized(p).map_err(StartError::Engine)?;
         Ok((s, obs))
@@ -145,7 +178,8 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
     /// Re-synchronizes after the caller changed velocities between calls (physical units):
     /// every last-kick time becomes the current time, the majorants are recomputed.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
-        self.frame = Frame::IDENTITY;
+        // The caller's velocities are physical (a rough mixture's spins are left as stored).
+        self.frame.reset(p, L::Map::SPINS);
         p.reset_kick_times(self.t);
         self.synchronized(p)
     }
@@ -171,7 +205,7 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
         let n = self.sp.total();
         let (s, t) = self.pair_of[k];
         let umax = self.frame.scale * self.pair_umax(k);
-        let kernel = &self.physics[k].kernel;
+        let kernel = &self.kernels[k];
         if s == t {
             let ns = self.sp.count(s);
             if ns < 2 {
@@ -317,19 +351,13 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
                 self.maj[s].cover(vi);
                 self.maj[t].cover(vj);
             }
-            if !self.physics[k]
-                .kernel
-                .accepts(u2, umax_event, uniform01(rng))
-            {
+            if !self.kernels[k].accepts(u2, umax_event, uniform01(rng)) {
                 self.counts.fictitious += 1;
                 return self.maj[s].umax != before_s || self.maj[t].umax != before_t;
             }
         }
-        let e = unit_sphere(rng);
-        let alpha = clamped_coefficient(&self.physics[k].restitution, u, e, &mut self.counts);
-        let (a, b) = self.masses[k].collide(vi, vj, e, alpha);
-        p.set_velocity(i, a);
-        p.set_velocity(j, b);
+        let (a, b) =
+            self.maps[k].collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, &mut self.counts);
         self.counts.collisions += 1;
         self.pair_collisions[k] += 1;
         if K::USES_UMAX {
@@ -360,14 +388,22 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
     /// Observables of the synchronized system (physical units); makes every species'
     /// majorant exact and rescales a cooling gas (as [`crate::engine::NoSplitting`] does).
     fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
-        let mut obs = MixtureObservables::of(p.as_slice(), &self.sp);
+        let mut obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
         if let Some(what) = obs.all.non_finite() {
             return Err(EngineError::NonFinite(what));
         }
+        if L::Map::SPINS {
+            crate::engine::nosplit::spins_finite(p)?;
+        }
         let mut all = obs.all;
-        if !D::ACTS && self.frame.rescale(p, &mut all, RESCALE_BELOW, 3, false) {
+        let d = G::CHOICE.d();
+        if !D::ACTS
+            && self
+                .frame
+                .rescale(p, &mut all, RESCALE_BELOW, d, L::Map::SPINS)
+        {
             self.counts.rescales += 1;
-            obs = MixtureObservables::of(p.as_slice(), &self.sp);
+            obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
         }
         self.counts.observations += 1;
         // Drives that act about a centre (the Gaussian thermostat) get the mixture's flow
@@ -395,7 +431,23 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
                 (obs.species[s].bulk - obs.species[t].bulk).norm()
             };
         }
-        Ok(self.with_raw_v6(p, obs.in_units(self.frame.scale, self.frame.offset)))
+        Ok(self.physical(p, obs))
+    }
+
+    /// The observables `obs` of the stored particles `p` in physical units, with a rough
+    /// mixture's rotation.
+    fn physical(&self, p: &Particles<'_>, obs: MixtureObservables) -> MixtureObservables {
+        let obs = self.with_raw_v6(p, obs.in_units(self.frame.scale, self.frame.offset));
+        if !L::Map::SPINS {
+            return obs;
+        }
+        obs.with_rotation(
+            p.as_slice(),
+            p.spins(),
+            &self.sp,
+            &self.kappa,
+            self.frame.scale,
+        )
     }
 
     /// `<|v|^6>` of a gas stored rescaled about a bulk velocity, summed from the physical
@@ -417,7 +469,9 @@ impl<K: Kernel, D: Drive, A: Restitution> MixtureNoSplitting<K, D, A> {
 
 // Each method out of line: a caller's `match` over every engine (the physics dispatch) would
 // otherwise reserve the per-species observables in its frame for every physics.
-impl<K: Kernel, D: Drive, A: Restitution> crate::engine::EventLoop for MixtureNoSplitting<K, D, A> {
+impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> crate::engine::EventLoop
+    for MixtureNoSplitting<K, D, L, G>
+{
     #[inline(never)]
     fn advance_to<R: Rng + ?Sized>(
         &mut self,
@@ -447,8 +501,8 @@ impl<K: Kernel, D: Drive, A: Restitution> crate::engine::EventLoop for MixtureNo
     }
     #[inline(never)]
     fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
-        let obs = MixtureObservables::of(p.as_slice(), &self.sp);
-        Some(self.with_raw_v6(p, obs.in_units(self.frame.scale, self.frame.offset)))
+        let obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
+        Some(self.physical(p, obs))
     }
 }
 

@@ -1,6 +1,7 @@
 //! The validated dimension of a [`super::Physics`]: disks (`d = 2`, [`crate::geometry`]) run
 //! the loops composed for them, which are the no-splitting scheme with a constant restitution
-//! and no drive or white noise in the plane, one species, and start drifts in the plane.
+//! and no drive or white noise in the plane (one species or a mixture, smooth or rough), and
+//! start drifts in the plane.
 
 use super::error::{Param, PhysicsError, Problem};
 use super::parts::{DriveModel, LawModel, SchemeModel};
@@ -22,12 +23,6 @@ pub(super) fn dimension(
 ) -> Result<DimensionChoice, PhysicsError> {
     if physics.dimension == DimensionChoice::Three {
         return Ok(DimensionChoice::Three);
-    }
-    if !physics.species.is_empty() {
-        return refuse(
-            Param::Dimension,
-            "of 2 (disks) cannot be combined with species",
-        );
     }
     if !matches!(scheme, SchemeModel::NoSplitting) {
         return refuse(Param::Scheme, "must be no-splitting for disks");

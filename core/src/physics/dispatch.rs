@@ -3,12 +3,13 @@
 //! choices above it, so that every leaf is a monomorphized event loop.
 
 use super::engine::{
-    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive, ByScheme, Engine, Family,
-    Mixture, Rough, Smooth, SmoothDisks,
+    ByDiskDrive, ByDiskMixtureDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive,
+    ByRoughMixtureDrive, ByScheme, DiskMixture, Engine, Family, Mixture, Rough, RoughMixture,
+    Smooth, SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
-use super::rotation::RoughModel;
+use super::rotation::{MixtureRotation, RoughModel};
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
 use crate::drive::{Drive, NoDrive, PlanarWhiteNoise};
@@ -16,7 +17,7 @@ use crate::engine::{EngineError, NoSplitting, Splitting, SumNoSplitting, TimeSte
 use crate::geometry::{DimensionChoice, Disks, Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
-use crate::mixture::{MixtureNoSplitting, PairPhysics, StartError};
+use crate::mixture::{MixtureNoSplitting, PairLaw, PairPhysics, StartError};
 use crate::moments::Observables;
 use crate::particles::{Particle, Particles, Spin};
 use crate::restitution::Restitution;
@@ -37,11 +38,25 @@ impl Model {
         if p.len() != self.n() {
             return Err(EngineError::ParticleCount);
         }
+        let disks = self.dimension == DimensionChoice::Two;
         if let Some(mx) = &self.mixture {
-            // Species by species, each from its own Maxwellian, in particle order.
+            // Species by species, each from its own Maxwellian, in particle order (disks drop
+            // the z components, as below).
             for s in 0..mx.species.len() {
                 for q in &mut p.as_mut_slice()[mx.species.range(s)] {
-                    *q = Particle::new(mx.starts[s].sample(rng), t0);
+                    let v = mx.starts[s].sample(rng);
+                    *q = Particle::new(if disks { Vec3::new(v.x, v.y, 0.0) } else { v }, t0);
+                }
+            }
+            if let Some(r) = &mx.rotation {
+                // The rim velocities after all translational ones, species by species.
+                if !p.has_spins() {
+                    return Err(EngineError::Spins);
+                }
+                for s in 0..mx.species.len() {
+                    for w in &mut p.spins_mut()[mx.species.range(s)] {
+                        *w = Spin::new(planar_spin(r.starts[s].sample(rng), disks));
+                    }
                 }
             }
             return Ok(());
@@ -57,7 +72,6 @@ impl Model {
         if bad {
             return Err(EngineError::NonFinite("an initial velocity"));
         }
-        let disks = self.dimension == DimensionChoice::Two;
         if disks {
             // A Maxwellian's projection on the plane is the Maxwellian of disks at the same
             // temperature (the components are independent): the z components are dropped.
@@ -72,8 +86,7 @@ impl Model {
                 return Err(EngineError::Spins);
             }
             for s in p.spins_mut() {
-                let w = r.start.sample(rng);
-                *s = Spin::new(if disks { Vec3::new(0.0, 0.0, w.z) } else { w });
+                *s = Spin::new(planar_spin(r.start.sample(rng), disks));
             }
         }
         Ok(())
@@ -92,10 +105,24 @@ impl Model {
         }
         let k = self.kernel;
         if let Some(mx) = &self.mixture {
-            return wrap(
-                by_kernel(k, &MixtureBuild(mx, self.drive), p, t0),
-                Engine::Mixture,
-            );
+            return match (&mx.rotation, self.dimension) {
+                (None, DimensionChoice::Three) => wrap(
+                    by_kernel(k, &MixtureBuild(mx, self.drive), p, t0),
+                    Engine::Mixture,
+                ),
+                (None, DimensionChoice::Two) => wrap(
+                    by_kernel(k, &DiskMixtureBuild(mx, self.drive), p, t0),
+                    Engine::DiskMixture,
+                ),
+                (Some(r), DimensionChoice::Three) => wrap(
+                    by_kernel(k, &RoughMixtureBuild::<Spheres>(mx, r, PhantomData), p, t0),
+                    Engine::RoughMixture,
+                ),
+                (Some(r), DimensionChoice::Two) => wrap(
+                    by_kernel(k, &RoughMixtureBuild::<Disks>(mx, r, PhantomData), p, t0),
+                    Engine::RoughDiskMixture,
+                ),
+            };
         }
         match (&self.rough, self.dimension) {
             (Some(r), DimensionChoice::Three) => wrap(
@@ -215,10 +242,53 @@ impl Model {
     }
 }
 
-/// The mixture loop of kernel `k` (scaled per pair) and the drive (none, or white noise per
-/// species). Never inlined: its large locals (the pair table, the per-species observables)
-/// would otherwise sit in [`Model::start`]'s frame for every physics (the firmware's peak
-/// stack went from 11.6 to 29.0 KiB when they did).
+/// The pair table of a mixture: kernel `k` scaled by each pair's cross section, each pair's
+/// law from `laws`.
+fn pair_table<K: Kernel, L: Copy>(
+    mx: &MixtureModel,
+    k: K,
+    laws: &[L; MAX_PAIRS],
+) -> Result<[PairPhysics<K, L>; MAX_PAIRS], EngineError> {
+    let mut physics = [PairPhysics {
+        kernel: k,
+        restitution: laws[0],
+    }; MAX_PAIRS];
+    for (j, pair) in physics.iter_mut().enumerate().take(mx.species.pair_types()) {
+        // Validated: every scaled kernel exists.
+        pair.kernel = k
+            .scaled(mx.factors[j])
+            .map_err(|_| EngineError::Invariant("every scaled pair kernel exists"))?;
+        pair.restitution = laws[j];
+    }
+    Ok(physics)
+}
+
+/// A mixture loop started, with the whole gas's observables.
+type Started<K, D, L, G> = Result<(MixtureNoSplitting<K, D, L, G>, Observables), EngineError>;
+
+/// Starts a mixture loop of dimension `G` with the pair table `physics` and one drive per
+/// species from `drives`.
+fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
+    mx: &MixtureModel,
+    physics: &[PairPhysics<K, L>; MAX_PAIRS],
+    drives: &[D; MAX_SPECIES],
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Started<K, D, L, G> {
+    let sp = mx.species;
+    started(MixtureNoSplitting::start_in(
+        sp,
+        &physics[..sp.pair_types()],
+        &drives[..sp.len()],
+        p,
+        t0,
+    ))
+}
+
+/// The mixture loop of kernel `k` (scaled per pair) and the drive (none, white noise per
+/// species, or the Gaussian thermostat). Never inlined: its large locals (the pair table, the
+/// per-species observables) would otherwise sit in [`Model::start`]'s frame for every physics
+/// (the firmware's peak stack went from 11.6 to 29.0 KiB when they did).
 #[inline(never)]
 fn mixture<K: Kernel>(
     mx: &MixtureModel,
@@ -227,53 +297,78 @@ fn mixture<K: Kernel>(
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Result<(ByMixtureDrive<K>, Observables), EngineError> {
-    let types = mx.species.pair_types();
-    let mut physics = [PairPhysics {
-        kernel: k,
-        restitution: mx.laws[0],
-    }; MAX_PAIRS];
-    for (j, pair) in physics.iter_mut().enumerate().take(types) {
-        // Validated: every scaled kernel exists.
-        pair.kernel = k
-            .scaled(mx.factors[j])
-            .map_err(|_| EngineError::Invariant("every scaled pair kernel exists"))?;
-        pair.restitution = mx.laws[j];
+    let physics = pair_table(mx, k, &mx.laws)?;
+    match drive {
+        DriveModel::WhiteNoise(_) => wrap(
+            start_mixture::<K, _, _, Spheres>(mx, &physics, &mx.noises, p, t0),
+            ByMixtureDrive::WhiteNoise,
+        ),
+        DriveModel::Gaussian(g) => wrap(
+            start_mixture::<K, _, _, Spheres>(mx, &physics, &[g; MAX_SPECIES], p, t0),
+            ByMixtureDrive::Gaussian,
+        ),
+        _ => wrap(
+            start_mixture::<K, _, _, Spheres>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+            ByMixtureDrive::None,
+        ),
     }
-    let physics = &physics[..types];
-    let n = mx.species.len();
+}
+
+/// A mixture of smooth disks: none or planar white noise per species.
+#[inline(never)]
+fn disk_mixture<K: Kernel>(
+    mx: &MixtureModel,
+    k: K,
+    drive: DriveModel,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Result<(ByDiskMixtureDrive<K>, Observables), EngineError> {
+    let physics = pair_table(mx, k, &mx.laws)?;
     match drive {
         DriveModel::WhiteNoise(_) => {
-            let started = started(MixtureNoSplitting::start(
-                mx.species,
-                physics,
-                &mx.noises[..n],
-                p,
-                t0,
-            ));
-            wrap(started, ByMixtureDrive::WhiteNoise)
+            let mut planar = [PlanarWhiteNoise::new(0.0)
+                .ok_or(EngineError::Invariant("no noise is planar white noise"))?;
+                MAX_SPECIES];
+            for (w, n) in planar.iter_mut().zip(&mx.noises) {
+                *w = PlanarWhiteNoise::new(n.beta()).ok_or(EngineError::Invariant(
+                    "a validated white noise is planar white noise",
+                ))?;
+            }
+            wrap(
+                start_mixture::<K, _, _, Disks>(mx, &physics, &planar, p, t0),
+                ByDiskMixtureDrive::WhiteNoise,
+            )
         }
-        DriveModel::Gaussian(g) => {
-            let drives = [g; MAX_SPECIES];
-            let started = started(MixtureNoSplitting::start(
-                mx.species,
-                physics,
-                &drives[..n],
-                p,
-                t0,
-            ));
-            wrap(started, ByMixtureDrive::Gaussian)
+        _ => wrap(
+            start_mixture::<K, _, _, Disks>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+            ByDiskMixtureDrive::None,
+        ),
+    }
+}
+
+/// A rough mixture in dimension `G`: no drive, or white noise on translation and rotation per
+/// species.
+#[inline(never)]
+fn rough_mixture<K: Kernel, G: Geometry>(
+    mx: &MixtureModel,
+    rot: &MixtureRotation,
+    k: K,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
+    let physics = pair_table(mx, k, &rot.laws)?;
+    match &rot.noises {
+        Some(noises) => {
+            let noises = noises.map(|w| w.in_dim::<G>());
+            wrap(
+                start_mixture::<K, _, _, G>(mx, &physics, &noises, p, t0),
+                ByRoughMixtureDrive::Noise,
+            )
         }
-        _ => {
-            let drives = [NoDrive; MAX_SPECIES];
-            let started = started(MixtureNoSplitting::start(
-                mx.species,
-                physics,
-                &drives[..n],
-                p,
-                t0,
-            ));
-            wrap(started, ByMixtureDrive::None)
-        }
+        None => wrap(
+            start_mixture::<K, _, _, G>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+            ByRoughMixtureDrive::None,
+        ),
     }
 }
 
@@ -369,6 +464,34 @@ impl<G: Geometry> Build for RoughBuild<'_, G> {
     }
 }
 
+/// A mixture of smooth disks.
+struct DiskMixtureBuild<'a>(&'a MixtureModel, DriveModel);
+impl Build for DiskMixtureBuild<'_> {
+    type F = DiskMixture;
+    fn build<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByDiskMixtureDrive<K>, Observables), EngineError> {
+        disk_mixture(self.0, k, self.1, p, t0)
+    }
+}
+
+/// A mixture of rough particles in dimension `G`.
+struct RoughMixtureBuild<'a, G>(&'a MixtureModel, &'a MixtureRotation, PhantomData<G>);
+impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {
+    type F = RoughMixture<G>;
+    fn build<K: Kernel>(
+        &self,
+        k: K,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
+        rough_mixture(self.0, self.1, k, p, t0)
+    }
+}
+
 /// A mixture: the pair kernels scaled from `k`, by drive.
 struct MixtureBuild<'a>(&'a MixtureModel, DriveModel);
 impl Build for MixtureBuild<'_> {
@@ -392,6 +515,12 @@ fn started<E>(
         StartError::Engine(e) => e,
         StartError::Mixture(_) => EngineError::ParticleCount,
     })
+}
+
+/// A rim velocity drawn in three dimensions as a disk's (its `z` component alone) or a
+/// sphere's.
+fn planar_spin(w: Vec3, disks: bool) -> Vec3 {
+    if disks { Vec3::new(0.0, 0.0, w.z) } else { w }
 }
 
 fn wrap<E, F>(

@@ -20,7 +20,7 @@ use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
 use crate::rng::Rng;
-use crate::rough::{RoughMap, RoughNoise, RoughObservables};
+use crate::rough::{RoughMap, RoughNoise, RoughObservables, RoughPairLaw};
 
 /// The engine of a validated physics: by particle model, species and dimension, then one
 /// kernel level ([`ByKernel`]) over the family's nest of drives, laws and schemes.
@@ -41,6 +41,12 @@ pub enum Engine {
     Disks(ByKernel<SmoothDisks>),
     /// Rough disks.
     RoughDisks(ByKernel<Rough<Disks>>),
+    /// A mixture of smooth disks.
+    DiskMixture(ByKernel<DiskMixture>),
+    /// A mixture of rough spheres.
+    RoughMixture(ByKernel<RoughMixture<Spheres>>),
+    /// A mixture of rough disks.
+    RoughDiskMixture(ByKernel<RoughMixture<Disks>>),
 }
 
 /// A family of loops that takes every kernel: what it is for kernel `K` ([`ByKernel`] holds
@@ -88,6 +94,38 @@ impl<G: Geometry> Family for Rough<G> {
 pub struct Mixture;
 impl Family for Mixture {
     type Of<K: Kernel> = ByMixtureDrive<K>;
+}
+
+/// Mixtures of smooth disks ([`ByDiskMixtureDrive`]).
+#[derive(Clone, Copy, Debug)]
+pub struct DiskMixture;
+impl Family for DiskMixture {
+    type Of<K: Kernel> = ByDiskMixtureDrive<K>;
+}
+
+/// Mixtures of rough particles in dimension `G` ([`ByRoughMixtureDrive`]).
+#[derive(Clone, Copy, Debug)]
+pub struct RoughMixture<G>(core::marker::PhantomData<G>);
+impl<G: Geometry> Family for RoughMixture<G> {
+    type Of<K: Kernel> = ByRoughMixtureDrive<K, G>;
+}
+
+/// A mixture of smooth disks by drive, for kernel `K`.
+#[derive(Clone, Debug)]
+pub enum ByDiskMixtureDrive<K> {
+    /// No drive: the mixture cools.
+    None(MixtureNoSplitting<K, NoDrive, Constant, Disks>),
+    /// White noise in the plane, each species its own strength.
+    WhiteNoise(MixtureNoSplitting<K, PlanarWhiteNoise, Constant, Disks>),
+}
+
+/// A rough mixture by drive, for kernel `K` and dimension `G`.
+#[derive(Clone, Debug)]
+pub enum ByRoughMixtureDrive<K, G> {
+    /// No drive: the mixture cools.
+    None(MixtureNoSplitting<K, NoDrive, RoughPairLaw, G>),
+    /// White noise on translation and rotation, each species its own strengths.
+    Noise(MixtureNoSplitting<K, RoughNoise<G>, RoughPairLaw, G>),
 }
 
 /// Smooth disks by drive, for kernel `K`.
@@ -197,11 +235,24 @@ macro_rules! forward {
     };
 }
 
-forward!(Engine, [], Smooth, Mixture, Rough, Disks, RoughDisks);
+forward!(
+    Engine,
+    [],
+    Smooth,
+    Mixture,
+    Rough,
+    Disks,
+    RoughDisks,
+    DiskMixture,
+    RoughMixture,
+    RoughDiskMixture
+);
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
 forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
+forward!(ByDiskMixtureDrive<K>, [K: Kernel], None, WhiteNoise);
+forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], NoSplitting, Splitting, TimeStepped, SumForm);

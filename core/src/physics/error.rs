@@ -68,6 +68,14 @@ pub enum Param {
     SpeciesBeta(usize),
     /// Restitution coefficient of the species pair `(s, t)`.
     PairRestitution(usize, usize),
+    /// Reduced moment of inertia of species `k` (rough mixtures).
+    SpeciesInertia(usize),
+    /// Start rotational temperature of species `k` (rough mixtures).
+    SpeciesRotationTemperature(usize),
+    /// White-noise strength on the rotation of species `k` (rough mixtures).
+    SpeciesRotationNoise(usize),
+    /// Tangential restitution of the species pair `(s, t)` (rough mixtures).
+    PairTangentialRestitution(usize, usize),
     /// The rotation of rough particles as a whole.
     Rotation,
     /// The tangential restitution beta of rough particles, in [-1, 1].
@@ -115,6 +123,14 @@ impl core::fmt::Display for Param {
             Param::SpeciesDiameter(k) => write!(f, "species[{k}].diameter"),
             Param::SpeciesBeta(k) => write!(f, "species[{k}].beta"),
             Param::PairRestitution(s, t) => write!(f, "restitution of species pair ({s}, {t})"),
+            Param::SpeciesInertia(k) => write!(f, "species[{k}].inertia"),
+            Param::SpeciesRotationTemperature(k) => {
+                write!(f, "species[{k}].rotation_temperature")
+            }
+            Param::SpeciesRotationNoise(k) => write!(f, "species[{k}].rotation_noise"),
+            Param::PairTangentialRestitution(s, t) => {
+                write!(f, "tangential restitution of species pair ({s}, {t})")
+            }
             Param::Rotation => f.write_str("rotation"),
             Param::TangentialRestitution => f.write_str("tangential_restitution"),
             Param::Inertia => f.write_str("inertia"),

@@ -229,6 +229,33 @@ pub struct SpeciesChoice {
     /// White-noise strength beta >= 0 of this species (with the white-noise drive; GRW (18)
     /// per species).
     pub beta: Real,
+    /// Rough particles: this species' reduced moment of inertia `kappa` (`None`: the
+    /// rotation's).
+    pub inertia: Option<Real>,
+    /// Rough particles: this species' start rotational temperature
+    /// `T_rot,s = m_s kappa_s <|w|^2>/d_rot >= 0` (`None`: the rotation's).
+    pub rotation_temperature: Option<Real>,
+    /// Rough particles: the white-noise strength on this species' rotation, `>= 0`,
+    /// `dT_rot,s/dt = 2 m_s noise` from it alone, as `beta` on translation (`None`: the
+    /// rotation's).
+    pub rotation_noise: Option<Real>,
+}
+
+impl SpeciesChoice {
+    /// A species of `count` particles of mass `mass` starting at `temperature`, diameter 1,
+    /// no white noise, its rotation (if rough) the description's.
+    pub const fn new(count: usize, mass: Real, temperature: Real) -> Self {
+        SpeciesChoice {
+            count,
+            mass,
+            temperature,
+            diameter: 1.0,
+            beta: 0.0,
+            inertia: None,
+            rotation_temperature: None,
+            rotation_noise: None,
+        }
+    }
 }
 
 /// The rotation of rough particles (Huthmann and Zippelius 1997; [`crate::rough`]): the
@@ -295,19 +322,27 @@ pub struct Physics {
     pub scheme: SchemeChoice,
     /// The species of a mixture (empty: one species, the gas described above). With species,
     /// `n` is their total, the initial distribution is theirs (`initial` is not used), the
-    /// drive is none or white noise (each species its own beta) and the scheme no-splitting.
+    /// drive is none, white noise (each species its own beta) or, for smooth spheres, the
+    /// Gaussian thermostat, and the scheme no-splitting. With a `rotation` they are rough
+    /// (each species its kappa, start rotational temperature and rotational noise, each pair
+    /// its tangential restitution).
     pub species: heapless::Vec<SpeciesChoice, MAX_SPECIES>,
     /// The restitution coefficient of each species pair `(s, t)`, `s <= t`, in the order
     /// `(0,0), (0,1), .., (1,1), ..` (empty: the constant `restitution` for every pair).
     pub pair_restitution: heapless::Vec<Real, MAX_PAIRS>,
+    /// Rough mixtures: the tangential restitution of each species pair, in the order of
+    /// `pair_restitution` (empty: the rotation's `beta` for every pair).
+    pub pair_tangential_restitution: heapless::Vec<Real, MAX_PAIRS>,
     /// Rough particles: their rotation (`None`: smooth particles). A rough gas needs a constant
     /// restitution (alpha), no drive or white noise, the no-splitting scheme and one spin per
-    /// particle beside the particle buffer ([`crate::particles::Particles::with_spins`]).
+    /// particle beside the particle buffer ([`crate::particles::Particles::with_spins`]). With
+    /// species, its values are every species' and pair's unless they name their own.
     pub rotation: Option<RotationChoice>,
     /// The dimension: spheres (`d = 3`, the default) or disks (`d = 2`,
     /// [`crate::geometry`]). Disks take the no-splitting scheme, a constant restitution, no
-    /// drive or white noise, one species and start drifts in the plane; a rough disk has one
-    /// rotational degree of freedom and `kappa` in (0, 1].
+    /// drive or white noise and start drifts in the plane; a rough disk has one rotational
+    /// degree of freedom and `kappa` in (0, 1]; a mixture of disks has the pair cross section
+    /// `(d_s + d_t)/2` (a length) where spheres have its square.
     pub dimension: DimensionChoice,
 }
 
@@ -332,6 +367,7 @@ impl Physics {
             scheme,
             species: heapless::Vec::new(),
             pair_restitution: heapless::Vec::new(),
+            pair_tangential_restitution: heapless::Vec::new(),
             rotation: None,
             dimension: DimensionChoice::Three,
         }

@@ -73,9 +73,16 @@ impl Model {
         self.n
     }
 
-    /// The collision map of a rough gas (`None`: smooth particles, no spins needed).
+    /// The collision map of a rough gas of one species (`None`: smooth particles or a mixture;
+    /// [`Model::rotates`] tells whether spins are needed).
     pub fn rough_map(&self) -> Option<&crate::rough::RoughMap> {
         self.rough.as_ref().map(|r| &r.map)
+    }
+
+    /// Whether the particles are rough (one species or a mixture): the particle buffer then
+    /// needs one spin per particle ([`crate::particles::Particles::with_spins`]).
+    pub fn rotates(&self) -> bool {
+        self.rough.is_some() || self.mixture.as_ref().is_some_and(|m| m.rotation.is_some())
     }
 
     /// The species of a mixture (`None`: one species).

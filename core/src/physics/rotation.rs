@@ -5,10 +5,10 @@
 
 use super::error::{Param, PhysicsError, Problem};
 use super::parts::{DriveModel, LawModel, SchemeModel};
-use super::{DimensionChoice, Physics, RotationChoice};
+use super::{DimensionChoice, MAX_PAIRS, MAX_SPECIES, Physics, RotationChoice};
 use crate::math::Real;
 use crate::restitution::Restitution;
-use crate::rough::{RoughError, RoughMap, RoughNoise};
+use crate::rough::{RoughError, RoughMap, RoughNoise, RoughPairLaw};
 use crate::sample::{Maxwellian, ParamError};
 use crate::vec3::Vec3;
 
@@ -39,8 +39,139 @@ fn at_least_zero(param: Param, x: Real) -> Result<Real, PhysicsError> {
     }
 }
 
+/// The rotation of a rough mixture: each pair's law, each species' rim-velocity start and
+/// noise.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MixtureRotation {
+    /// The law of each pair type (alpha, beta, the partners' kappa).
+    pub laws: [RoughPairLaw; MAX_PAIRS],
+    /// Each species' start distribution of the rim velocities: a Maxwellian of mass `m_s`
+    /// and temperature `T_rot,s / kappa_s`, so that `m_s kappa_s <|w|^2>/d_rot = T_rot,s`.
+    pub starts: [Maxwellian; MAX_SPECIES],
+    /// Each species' white noise on translation and rotation; `None`: no drive.
+    pub noises: Option<[RoughNoise; MAX_SPECIES]>,
+}
+
+/// The kappa of `dimension`'s rough particles by [`RoughMap`]'s rule, its refusal named `param`.
+fn inertia(param: Param, kappa: Real, dimension: DimensionChoice) -> Result<Real, PhysicsError> {
+    let map = match dimension {
+        DimensionChoice::Three => RoughMap::new(1.0, 0.0, kappa),
+        DimensionChoice::Two => RoughMap::for_disks(1.0, 0.0, kappa),
+    };
+    map.map(|_| kappa).map_err(|_| PhysicsError {
+        param,
+        problem: if kappa.is_finite() {
+            Problem::OutOfRange {
+                value: kappa,
+                range: match dimension {
+                    DimensionChoice::Three => "(0, 2/3]",
+                    DimensionChoice::Two => "(0, 1] for disks",
+                },
+            }
+        } else {
+            Problem::NotFinite(kappa)
+        },
+    })
+}
+
+/// Validates a rough mixture's rotation: `r` gives every species' and pair's value unless
+/// `physics` names its own; `alphas` are the pairs' validated normal restitutions, `betas`
+/// the species' translational noise (white noise; `None`: no drive).
+pub(super) fn mixture_rotation(
+    physics: &Physics,
+    r: RotationChoice,
+    species: &crate::mixture::Species,
+    alphas: &[Real],
+    betas: Option<&[Real]>,
+    scheme: SchemeModel,
+) -> Result<MixtureRotation, PhysicsError> {
+    if !matches!(scheme, SchemeModel::NoSplitting) {
+        return refuse(
+            Param::Scheme,
+            Problem::DoesNotFit("must be no-splitting for rough particles"),
+        );
+    }
+    let dim = physics.dimension;
+    let list = &physics.species;
+    let mut kappa = [0.4; MAX_SPECIES];
+    let mut starts = [Maxwellian::standard(); MAX_SPECIES];
+    let mut noises = [RoughNoise::new(0.0, 0.0, 1.0).expect("no noise"); MAX_SPECIES];
+    let mut driven = betas.is_some();
+    for (k, c) in list.iter().enumerate() {
+        let (kp, kp_param) = match c.inertia {
+            Some(x) => (x, Param::SpeciesInertia(k)),
+            None => (r.kappa, Param::Inertia),
+        };
+        kappa[k] = inertia(kp_param, kp, dim)?;
+        let (t, t_param) = match c.rotation_temperature {
+            Some(x) => (x, Param::SpeciesRotationTemperature(k)),
+            None => (r.temperature, Param::RotationTemperature),
+        };
+        at_least_zero(t_param, t)?;
+        starts[k] = Maxwellian::new(species.mass(k), t / kappa[k], Vec3::ZERO).map_err(|_| {
+            PhysicsError {
+                param: t_param,
+                problem: Problem::DoesNotFit(
+                    "is too large for this species' mass and inertia: T_rot / (m kappa), the \
+                     spins' temperature per unit mass, overflows",
+                ),
+            }
+        })?;
+        let (w, w_param) = match c.rotation_noise {
+            Some(x) => (x, Param::SpeciesRotationNoise(k)),
+            None => (r.noise, Param::RotationNoise),
+        };
+        at_least_zero(w_param, w)?;
+        driven |= w > 0.0;
+        let beta = betas.map_or(0.0, |b| b[k]);
+        noises[k] = RoughNoise::new(beta, w, kappa[k]).ok_or(PhysicsError {
+            param: w_param,
+            problem: Problem::DoesNotFit(
+                "makes the rotational noise rate 2 noise / kappa overflow",
+            ),
+        })?;
+    }
+    let given = &physics.pair_tangential_restitution;
+    let types = alphas.len();
+    if !given.is_empty() && given.len() != types {
+        return refuse(
+            Param::Species,
+            Problem::DoesNotFit("need one tangential restitution per species pair, or none"),
+        );
+    }
+    let mut laws = [RoughPairLaw::new(1.0, 0.0, 0.4, 0.4).expect("valid"); MAX_PAIRS];
+    for (k, law) in laws.iter_mut().enumerate().take(types) {
+        let (s, t) = species.pair(k);
+        let (beta, param) = match given.get(k) {
+            Some(&b) => (b, Param::PairTangentialRestitution(s, t)),
+            None => (r.beta, Param::TangentialRestitution),
+        };
+        let made = match dim {
+            DimensionChoice::Three => RoughPairLaw::new(alphas[k], beta, kappa[s], kappa[t]),
+            DimensionChoice::Two => RoughPairLaw::for_disks(alphas[k], beta, kappa[s], kappa[t]),
+        };
+        // alpha and both kappas passed their rules above: only beta can be refused here.
+        *law = made.map_err(|_| PhysicsError {
+            param,
+            problem: if beta.is_finite() {
+                Problem::OutOfRange {
+                    value: beta,
+                    range: "[-1, 1]",
+                }
+            } else {
+                Problem::NotFinite(beta)
+            },
+        })?;
+    }
+    Ok(MixtureRotation {
+        laws,
+        starts,
+        noises: driven.then_some(noises),
+    })
+}
+
 /// Validates the rotation of `physics` against the law, drive and scheme already validated;
-/// `None` when its particles are smooth.
+/// `None` when its particles are smooth or form a mixture ([`mixture_rotation`]).
 pub(super) fn rotation(
     physics: &Physics,
     law: LawModel,
@@ -51,10 +182,7 @@ pub(super) fn rotation(
         return Ok(None);
     };
     if !physics.species.is_empty() {
-        return refuse(
-            Param::Rotation,
-            Problem::DoesNotFit("cannot be combined with species (a rough mixture)"),
-        );
+        return Ok(None);
     }
     if !matches!(scheme, SchemeModel::NoSplitting) {
         return refuse(

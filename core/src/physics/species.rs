@@ -4,12 +4,13 @@
 
 use super::error::{Param, PhysicsError, Problem};
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
-use super::{MAX_PAIRS, MAX_SPECIES, Physics, SpeciesChoice};
+use super::rotation::{MixtureRotation, mixture_rotation};
+use super::{DimensionChoice, MAX_PAIRS, MAX_SPECIES, Physics, SpeciesChoice};
 use crate::drive::WhiteNoise;
 use crate::kernel::{Kernel, KernelError};
 use crate::math::Real;
 use crate::mixture::{MixtureError, Species};
-use crate::restitution::{ALPHA_RANGE, Constant};
+use crate::restitution::{ALPHA_RANGE, Constant, Restitution};
 use crate::sample::{Maxwellian, ParamError};
 use crate::vec3::Vec3;
 
@@ -26,6 +27,8 @@ pub struct MixtureModel {
     pub laws: [Constant; MAX_PAIRS],
     /// The white-noise drive of each species (with the white-noise drive).
     pub noises: [WhiteNoise; MAX_SPECIES],
+    /// Rough particles: the pairs' laws and the species' spins; `None`: smooth particles.
+    pub rotation: Option<MixtureRotation>,
 }
 
 fn refuse<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -122,6 +125,14 @@ pub(super) fn mixture(
     match drive {
         // The Gaussian thermostat acts on every species about the mixture's flow velocity,
         // which collisions and the thermostat keep: exact between synchronizations.
+        DriveModel::Gaussian(_) if physics.rotation.is_some() => {
+            return refuse(
+                Param::Rotation,
+                Problem::DoesNotFit(
+                    "takes no drive or white noise (on translation, and `noise` on rotation)",
+                ),
+            );
+        }
         DriveModel::None | DriveModel::Gaussian(_) => {}
         DriveModel::WhiteNoise(_) => {
             for (k, c) in list.iter().enumerate() {
@@ -174,8 +185,13 @@ pub(super) fn mixture(
                 },
             })?;
         }
+        // The pair's cross section: the square of its contact distance for spheres, the
+        // distance itself for disks (the kernels' `C` is the total cross section).
         let d = 0.5 * (list[s].diameter + list[t].diameter);
-        factors[k] = d * d;
+        factors[k] = match physics.dimension {
+            DimensionChoice::Three => d * d,
+            DimensionChoice::Two => d,
+        };
         let scaled = |f| match kernel {
             KernelModel::Maxwell(k) => k.scaled(f).map(|_| ()),
             KernelModel::HardSpheres(k) => k.scaled(f).map(|_| ()),
@@ -185,11 +201,50 @@ pub(super) fn mixture(
             return refuse(Param::SpeciesDiameter(t), Problem::Strength(factors[k]));
         }
     }
+    for (k, c) in list.iter().enumerate() {
+        let named = [
+            (c.inertia, Param::SpeciesInertia(k)),
+            (c.rotation_temperature, Param::SpeciesRotationTemperature(k)),
+            (c.rotation_noise, Param::SpeciesRotationNoise(k)),
+        ];
+        for (value, param) in named {
+            if value.is_some() && physics.rotation.is_none() {
+                return refuse(
+                    param,
+                    Problem::DoesNotFit("is only used with rough particles"),
+                );
+            }
+        }
+    }
+    let rotation = match physics.rotation {
+        None if !physics.pair_tangential_restitution.is_empty() => {
+            return refuse(
+                Param::PairTangentialRestitution(0, 0),
+                Problem::DoesNotFit("is only used with rough particles"),
+            );
+        }
+        None => None,
+        Some(r) => {
+            let alphas: [Real; MAX_PAIRS] =
+                core::array::from_fn(|k| laws[k].coefficient(Vec3::ZERO, Vec3::ZERO));
+            let betas: [Real; MAX_SPECIES] = core::array::from_fn(|k| noises[k].beta());
+            let driven = matches!(drive, DriveModel::WhiteNoise(_));
+            Some(mixture_rotation(
+                physics,
+                r,
+                &species,
+                &alphas[..types],
+                driven.then_some(&betas[..list.len()]),
+                scheme,
+            )?)
+        }
+    };
     Ok(Some(MixtureModel {
         species,
         starts,
         factors,
         laws,
         noises,
+        rotation,
     }))
 }

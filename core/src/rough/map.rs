@@ -241,6 +241,10 @@ impl crate::engine::CollisionMap for RoughMap {
         (a, b)
     }
 
+    fn inertia(&self) -> (Real, Real) {
+        (self.kappa, self.kappa)
+    }
+
     fn rough(
         &self,
         p: &Particles<'_>,

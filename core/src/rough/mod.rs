@@ -12,7 +12,9 @@
 pub mod drive;
 pub mod map;
 pub mod observables;
+pub mod pair;
 
 pub use drive::RoughNoise;
 pub use map::{RoughError, RoughMap, impact_direction};
 pub use observables::RoughObservables;
+pub use pair::{RoughPair, RoughPairLaw};

@@ -3,14 +3,15 @@
 //! cumulant of the rim velocities, and the translation-rotation correlation `<(c . w)^2>`
 //! (Brilliantov, Pöschel, Kranz and Zippelius 2007), all per unit mass.
 
+use crate::batch::sums::accumulate;
 use crate::geometry::DimensionChoice;
 use crate::math::Real;
 use crate::moments::Observables;
-use crate::particles::Particles;
+use crate::particles::{Particle, Particles, Spin};
 use crate::vec3::Vec3;
 
 /// The rotational observables of a rough gas at one time (physical units).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RoughObservables {
     /// Translational temperature `T_tr = <|v - V|^2>/d` (the smooth gas's `T_bulk`).
     pub t_tr: Real,
@@ -36,16 +37,28 @@ impl RoughObservables {
 
     /// As [`RoughObservables::of`] for spheres or disks.
     pub fn of_dim(p: &Particles<'_>, kappa: Real, scale: Real, dim: DimensionChoice) -> Self {
+        Self::of_parts(p.as_slice(), p.spins(), kappa, scale, dim)
+    }
+
+    /// As [`RoughObservables::of_dim`] for the particles `q` with the rim velocities `spins`
+    /// (one per particle; a mixture's species).
+    pub fn of_parts(
+        q: &[Particle],
+        spins: &[Spin],
+        kappa: Real,
+        scale: Real,
+        dim: DimensionChoice,
+    ) -> Self {
         let disks = dim == DimensionChoice::Two;
-        let n = p.len() as Real;
+        let n = q.len() as Real;
         let mut bulk = Vec3::ZERO;
-        for q in p.as_slice() {
-            bulk += q.velocity();
+        for x in q {
+            bulk += x.velocity();
         }
         bulk = (1.0 / n) * bulk;
         let (mut c2, mut w2, mut w4, mut cw) = (0.0, 0.0, 0.0, 0.0);
-        for (q, s) in p.as_slice().iter().zip(p.spins()) {
-            let c = q.velocity() - bulk;
+        for (x, s) in q.iter().zip(spins) {
+            let c = x.velocity() - bulk;
             let w = s.rim_velocity();
             let ww = w.norm2();
             let cc = c.norm2();
@@ -64,7 +77,7 @@ impl RoughObservables {
         let dof = dim.spin_dof() as Real;
         RoughObservables {
             // The translational moments' own sums, so that T_tr is T_bulk to the bit.
-            t_tr: s2 * Observables::of_dim(p, dim.d()).t_bulk,
+            t_tr: s2 * Observables::from_sums_dim(&accumulate(q), dim.d()).t_bulk,
             t_rot: s2 * kappa * w2 / dof,
             a2_rot: dof / (dof + 2.0) * w4 / (w2 * w2) - 1.0,
             cw2: if disks { 1.0 } else { 3.0 } * cw / (c2 * w2) - 1.0,

@@ -157,6 +157,7 @@ impl SceneFile {
             scheme,
             species: mixture.species,
             pair_restitution: mixture.pair_restitution,
+            pair_tangential_restitution: mixture.pair_tangential_restitution,
             rotation,
             dimension,
         };

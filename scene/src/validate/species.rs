@@ -7,6 +7,7 @@ use super::Ctx;
 use crate::error::Error;
 use crate::schema::{DriveKind, InitialKind, SceneFile};
 use gdsmc_core::physics::{MAX_PAIRS, MAX_SPECIES, Param, SpeciesChoice};
+use toml::Spanned;
 
 /// The species and the per-pair restitution of a scene.
 pub(crate) struct Mixture {
@@ -14,6 +15,8 @@ pub(crate) struct Mixture {
     pub species: heapless::Vec<SpeciesChoice, MAX_SPECIES>,
     /// Per pair type (empty: the constant restitution for every pair).
     pub pair_restitution: heapless::Vec<f64, MAX_PAIRS>,
+    /// Rough mixtures: the tangential restitution per pair type (empty: the rotation's).
+    pub pair_tangential_restitution: heapless::Vec<f64, MAX_PAIRS>,
     /// The species' labels.
     pub names: Vec<String>,
     /// The species' mole fractions as written.
@@ -49,15 +52,27 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
     let mut out = Mixture {
         species: heapless::Vec::new(),
         pair_restitution: heapless::Vec::new(),
+        pair_tangential_restitution: heapless::Vec::new(),
         names: Vec::new(),
         fractions: Vec::new(),
     };
     let pairs = &file.collisions.pair_restitution;
+    let tangential = file
+        .rotation
+        .as_ref()
+        .and_then(|r| r.pair_tangential_restitution.as_ref());
     let Some(list) = &file.species else {
         if let Some(m) = pairs {
             return ctx.invalid(
                 m.span(),
                 "collisions.pair_restitution",
+                "is only used with [[species]]",
+            );
+        }
+        if let Some(m) = tangential {
+            return ctx.invalid(
+                m.span(),
+                "rotation.pair_tangential_restitution",
                 "is only used with [[species]]",
             );
         }
@@ -140,12 +155,32 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
                 drive_beta
             }
         };
+        let mut rotation = |value: &Option<Spanned<f64>>, param: Param, name: &str| {
+            value.as_ref().map(|v| {
+                ctx.holds(param, key(name), v.span());
+                *v.get_ref()
+            })
+        };
+        let inertia = rotation(&s.inertia, Param::SpeciesInertia(k), "inertia");
+        let rotation_temperature = rotation(
+            &s.rotation_temperature,
+            Param::SpeciesRotationTemperature(k),
+            "rotation_temperature",
+        );
+        let rotation_noise = rotation(
+            &s.rotation_noise,
+            Param::SpeciesRotationNoise(k),
+            "rotation_noise",
+        );
         let _ = out.species.push(SpeciesChoice {
             count: counts[k],
             mass: *s.mass.get_ref(),
             temperature: *s.temperature.get_ref(),
             diameter: *s.diameter.get_ref(),
             beta,
+            inertia,
+            rotation_temperature,
+            rotation_noise,
         });
         out.names
             .push(s.name.clone().unwrap_or_else(|| format!("s{k}")));
@@ -165,31 +200,59 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
         }
     }
     if let Some(m) = pairs {
-        let s = list.len();
-        let rows = m.get_ref();
-        let key = "collisions.pair_restitution";
-        if rows.len() != s || rows.iter().any(|r| r.len() != s) {
-            return ctx.invalid(
-                m.span(),
-                key,
-                format!("must be a {s} x {s} matrix (one row per species)"),
-            );
-        }
-        for (a, row) in rows.iter().enumerate() {
-            for (b, &x) in row.iter().enumerate().skip(a) {
-                if x != rows[b][a] {
-                    return ctx.invalid(
-                        m.span(),
-                        key,
-                        format!(
-                            "must be symmetric: row {a} column {b} is {x}, row {b} column {a} is {}",
-                            rows[b][a]
-                        ),
-                    );
-                }
-                ctx.holds(Param::PairRestitution(a, b), key, m.span());
-                let _ = out.pair_restitution.push(x);
+        out.pair_restitution = matrix(
+            ctx,
+            m,
+            list.len(),
+            "collisions.pair_restitution",
+            Param::PairRestitution,
+        )?;
+    }
+    if let Some(m) = tangential {
+        out.pair_tangential_restitution = matrix(
+            ctx,
+            m,
+            list.len(),
+            "rotation.pair_tangential_restitution",
+            Param::PairTangentialRestitution,
+        )?;
+    }
+    Ok(out)
+}
+
+/// A symmetric `s x s` matrix of per-pair values at `key`, as the upper triangle in pair order
+/// (`(0,0), (0,1), .., (1,1), ..`), each entry recorded as held by `key` for `param`.
+fn matrix(
+    ctx: &mut Ctx<'_>,
+    m: &Spanned<Vec<Vec<f64>>>,
+    s: usize,
+    key: &str,
+    param: fn(usize, usize) -> Param,
+) -> Result<heapless::Vec<f64, MAX_PAIRS>, Error> {
+    let rows = m.get_ref();
+    if rows.len() != s || rows.iter().any(|r| r.len() != s) {
+        return ctx.invalid(
+            m.span(),
+            key,
+            format!("must be a {s} x {s} matrix (one row per species)"),
+        );
+    }
+    let mut out = heapless::Vec::new();
+    for (a, row) in rows.iter().enumerate() {
+        for (b, &x) in row.iter().enumerate().skip(a) {
+            if x != rows[b][a] {
+                return ctx.invalid(
+                    m.span(),
+                    key,
+                    format!(
+                        "must be symmetric: row {a} column {b} is {x}, row {b} column {a} is {}",
+                        rows[b][a]
+                    ),
+                );
             }
+            ctx.holds(param(a, b), key, m.span());
+            // At most MAX_SPECIES rows: the triangle fits.
+            let _ = out.push(x);
         }
     }
     Ok(out)

@@ -117,6 +117,11 @@ const SPECIES_REFERENCES: [[&str; 3]; gdsmc_core::mixture::MAX_SPECIES] = [
 /// type, the kernel exponent, and each species' white noise.
 fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianApproximation> {
     let ph = &scene.physics();
+    // Garzó and Dufty's approximation and the exact moments are those of smooth spheres: a
+    // rough mixture or a mixture of disks has none of them (yet).
+    if ph.rotation.is_some() || ph.dimension != gdsmc_core::physics::DimensionChoice::Three {
+        return None;
+    }
     let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
     let sp = scene.model().species()?;
     let (kappa, alpha) = crate::run::cooling::pair_kernels(ph, sp)?

@@ -71,12 +71,28 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         shown.push(cols[0][1]);
     }
     if let Some(r) = scene.physics().rotation {
-        let _ = writeln!(
-            s,
-            "rotation   rough particles: tangential restitution beta = {}, kappa = {}; T_bulk is the translational temperature",
-            r.beta, r.kappa
-        );
-        shown = vec!["T_bulk", "T_rot", "theta", "a2", "a2_rot"];
+        if mixture {
+            let _ = writeln!(
+                s,
+                "rotation   rough mixture: tangential restitution beta = {} unless a pair names its own; T_sk is species k's translational temperature, T_rot_sk its rotational one, theta_sk their ratio",
+                r.beta
+            );
+            let species = scene.physics().species.len();
+            let rough = crate::run::columns::ROUGH_SPECIES_COLUMNS;
+            shown = vec![
+                crate::run::columns::MIXTURE_TEMPERATURE,
+                crate::run::columns::ROUGH_MIXTURE_TEMPERATURE,
+            ];
+            shown.extend(rough[..species].iter().map(|c| c[1]));
+            shown.push(crate::run::columns::SPECIES_COLUMNS[0][1]);
+        } else {
+            let _ = writeln!(
+                s,
+                "rotation   rough particles: tangential restitution beta = {}, kappa = {}; T_bulk is the translational temperature",
+                r.beta, r.kappa
+            );
+            shown = vec!["T_bulk", "T_rot", "theta", "a2", "a2_rot"];
+        }
     }
     let _ = write!(s, "\n{:>8}", "t");
     for &name in &shown {
@@ -198,7 +214,12 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             }
             names.extend(&crate::run::columns::COOLING_COLUMNS[..=scene.physics().species.len()]);
         }
-        if let Some(r) = scene.physics().rotation {
+        if let (Some(_), true) = (scene.physics().rotation, mixture) {
+            // The rough mixture's ratios beside the species' (its temperatures are above).
+            for c in &crate::run::columns::ROUGH_SPECIES_COLUMNS[..scene.physics().species.len()] {
+                names.extend([c[1], c[2]]);
+            }
+        } else if let Some(r) = scene.physics().rotation {
             // A cooling rough gas's temperatures keep falling: only its ratios settle.
             let heated = !matches!(scene.physics().drive, DriveChoice::None) || r.noise > 0.0;
             names = if heated {

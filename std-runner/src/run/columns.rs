@@ -125,6 +125,21 @@ pub const SPECIES_COLUMNS: [[&str; 4]; gdsmc_core::mixture::MAX_SPECIES] = [
 pub const COOLING_COLUMNS: [&str; gdsmc_core::mixture::MAX_SPECIES + 1] =
     ["zeta_mix", "zeta_s0", "zeta_s1", "zeta_s2", "zeta_s3"];
 
+/// A rough mixture's rotational temperature `T_rot_mix = sum_s x_s T_rot,s` (after the
+/// species' translational columns).
+pub const ROUGH_MIXTURE_TEMPERATURE: &str = "T_rot_mix";
+
+/// Per species `k` of a rough mixture: its rotational temperature
+/// `T_rot_sk = m_s kappa_s <|w|^2>_s / d_rot`, its ratio `theta_sk = T_rot_sk / T_sk` to its
+/// translational temperature (Santos, Kremer and Garzó 2010), and its rim velocities' fourth
+/// cumulant `a2_rot_sk`.
+pub const ROUGH_SPECIES_COLUMNS: [[&str; 3]; gdsmc_core::mixture::MAX_SPECIES] = [
+    ["T_rot_s0", "theta_s0", "a2_rot_s0"],
+    ["T_rot_s1", "theta_s1", "a2_rot_s1"],
+    ["T_rot_s2", "theta_s2", "a2_rot_s2"],
+    ["T_rot_s3", "theta_s3", "a2_rot_s3"],
+];
+
 /// A rough gas's columns (Huthmann and Zippelius 1997): the rotational temperature
 /// `T_rot = kappa <|w|^2>/3`, `theta = T_rot / T_bulk` (`T_bulk` is the translational
 /// temperature `T_tr`), the mean energy per degree of freedom `T_total = (T_bulk + T_rot)/2`,
@@ -151,27 +166,42 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
         let ts = m.temperature(s);
         v.extend([ts, ts / t, m.species[s].a2, (m.species[s].bulk - u).norm()]);
     }
+    if let (Some(rot), Some(t_rot)) = (m.rotation, m.mixture_rotational_temperature()) {
+        v.push(t_rot);
+        for (s, r) in rot.iter().enumerate().take(m.len) {
+            let tr = m.masses[s] * r.t_rot;
+            v.extend([tr, tr / m.temperature(s), r.a2_rot]);
+        }
+    }
     v
 }
 
 /// The column names of a scene's observables.csv, in order: [`COLUMNS`], then `mu2`, `mu4`
 /// (MS (67)) when `observe.collisional_pairs` is set, then a rough gas's [`ROUGH_COLUMNS`],
 /// then a mixture's columns
-/// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species, and with
-/// `observe.collisional_pairs` the [`COOLING_COLUMNS`] instead of `mu2`, `mu4`).
+/// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species; for rough particles
+/// [`ROUGH_MIXTURE_TEMPERATURE`] and [`ROUGH_SPECIES_COLUMNS`] per species instead of the rough
+/// gas's; and with `observe.collisional_pairs` the [`COOLING_COLUMNS`] instead of `mu2`, `mu4`).
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
     let species = scene.physics().species.len();
     if scene.collisional_pairs > 0 && species == 0 {
         v.extend(COLLISIONAL);
     }
-    if scene.physics().rotation.is_some() {
+    let rough = scene.physics().rotation.is_some();
+    if rough && species == 0 {
         v.extend(ROUGH_COLUMNS);
     }
     if species > 0 {
         v.push(MIXTURE_TEMPERATURE);
         for cols in &SPECIES_COLUMNS[..species] {
             v.extend(cols);
+        }
+        if rough {
+            v.push(ROUGH_MIXTURE_TEMPERATURE);
+            for cols in &ROUGH_SPECIES_COLUMNS[..species] {
+                v.extend(cols);
+            }
         }
         if scene.collisional_pairs > 0 {
             v.extend(&COOLING_COLUMNS[..species + 1]);

@@ -59,11 +59,7 @@ pub fn particle_buffer(n: usize) -> Result<Vec<Particle>, crate::Error> {
 /// Room for the spins of a rough gas's `n` particles (empty for smooth particles), asked of
 /// the allocator fallibly as [`particle_buffer`] does.
 pub fn spin_buffer(model: &Model) -> Result<Vec<Spin>, crate::Error> {
-    let n = if model.rough_map().is_some() {
-        model.n()
-    } else {
-        0
-    };
+    let n = if model.rotates() { model.n() } else { 0 };
     let mut buf = Vec::new();
     buf.try_reserve_exact(n)
         .map_err(|_| crate::Error::OutOfMemory {

@@ -1,0 +1,204 @@
+//! The collision of two rough particles of different species: masses `m_1`, `m_2`, reduced
+//! moments of inertia `kappa_1`, `kappa_2` (`I_i = kappa_i m_i sigma_i^2 / 4`), one normal and
+//! one tangential restitution for the pair (Santos, Kremer and Garzó 2010, Section 2; the
+//! binary form of Huthmann and Zippelius 1997, [`super::map`]).
+//!
+//! In rim velocities `w_i = (sigma_i/2) omega_i` the diameters drop out, and the contact
+//! velocity is `g = v1 - v2 + (w1 + w2) x n` as for one species. The impulse `J = m_1 dv1 =
+//! -m_2 dv2` with the torques `I_i d omega_i = (sigma_i/2) n x J` changes it by
+//! `dg_n = J_n / mu` and `dg_t = J_t D`, `mu = m_1 m_2/(m_1 + m_2)`,
+//! `D = 1/mu + 1/(kappa_1 m_1) + 1/(kappa_2 m_2)`. Asking `g_n' = -alpha g_n`,
+//! `g_t' = -beta g_t`:
+//!
+//! ```text
+//! dv1 = -(1 + alpha) mu_2 g_n - kappa_1 c_1 g_t,    dw1 = -c_1 n x g_t,   mu_2 = m_2/(m_1 + m_2),
+//! dv2 =  (1 + alpha) mu_1 g_n + kappa_2 c_2 g_t,    dw2 = -c_2 n x g_t,
+//! c_i = (1 + beta) / (kappa_i m_i D) = (1 + beta) / (1 + kappa_i m_i/mu + kappa_i m_i/(kappa_j m_j)).
+//! ```
+//!
+//! Momentum `m_1 v1 + m_2 v2` is kept, and the energy `sum m_i (|v_i|^2 + kappa_i |w_i|^2)/2`
+//! when `alpha = beta = 1`. For equal masses and inertia `c_i` is [`RoughMap`]'s `eta_t/kappa`
+//! and `kappa c_i` its `eta_t`: such a pair is collided by [`RoughMap::collide`] itself, so a
+//! one-species rough mixture has the one-species rough gas's bits. `c_i` is computed in the
+//! form above, finite for any kappa (no division of a rounding residue by a small kappa; see
+//! [`super::map`]).
+//!
+//! ```
+//! use gdsmc_core::{rough::RoughPairLaw, mixture::PairLaw, vec3::Vec3};
+//! let law = RoughPairLaw::new(1.0, 1.0, 0.4, 0.2).unwrap(); // elastic, perfectly rough
+//! let map = law.between(1.0, 3.0);
+//! let (v1, w1, v2, w2) = (Vec3::new(1.0, 0.2, 0.0), Vec3::new(0.0, 0.0, 0.3),
+//!                         Vec3::new(-1.0, 0.0, 0.1), Vec3::new(0.1, 0.0, 0.0));
+//! let (a1, b1, a2, b2) = map.collide(v1, w1, v2, w2, Vec3::new(-1.0, 0.0, 0.0));
+//! let e = |v: Vec3, w: Vec3, m: f64, k: f64| m * (v.norm2() + k * w.norm2());
+//! let before = e(v1, w1, 1.0, 0.4) + e(v2, w2, 3.0, 0.2);
+//! let after = e(a1, b1, 1.0, 0.4) + e(a2, b2, 3.0, 0.2);
+//! assert!((after - before).abs() < 1e-14);
+//! assert!(((1.0 * a1 + 3.0 * a2) - (1.0 * v1 + 3.0 * v2)).norm() < 1e-15);
+//! ```
+
+use super::map::{RoughError, RoughMap};
+use crate::engine::{CollisionMap, Counts};
+use crate::geometry::Geometry;
+use crate::kernel::Kernel;
+use crate::math::Real;
+use crate::mixture::PairLaw;
+use crate::particles::Particles;
+use crate::rng::Rng;
+use crate::vec3::Vec3;
+
+/// The rough particles of one pair type of a mixture: `alpha`, `beta` and the partners'
+/// `kappa` (each by [`RoughMap`]'s rules); the masses come from the species
+/// ([`PairLaw::between`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoughPairLaw {
+    /// The map of the first partner's inertia (holds `alpha`, `beta`, `kappa_1`).
+    first: RoughMap,
+    /// The second partner's `kappa`.
+    kappa_2: Real,
+}
+
+impl RoughPairLaw {
+    /// Spheres: `0 < alpha <= 1`, `-1 <= beta <= 1`, each `kappa` in `(0, 2/3]`.
+    pub fn new(alpha: Real, beta: Real, kappa_1: Real, kappa_2: Real) -> Result<Self, RoughError> {
+        RoughMap::new(alpha, beta, kappa_2)?;
+        Ok(RoughPairLaw {
+            first: RoughMap::new(alpha, beta, kappa_1)?,
+            kappa_2,
+        })
+    }
+
+    /// Disks: as [`RoughPairLaw::new`] with each `kappa` in `(0, 1]`.
+    pub fn for_disks(
+        alpha: Real,
+        beta: Real,
+        kappa_1: Real,
+        kappa_2: Real,
+    ) -> Result<Self, RoughError> {
+        RoughMap::for_disks(alpha, beta, kappa_2)?;
+        Ok(RoughPairLaw {
+            first: RoughMap::for_disks(alpha, beta, kappa_1)?,
+            kappa_2,
+        })
+    }
+
+    /// The normal restitution `alpha`.
+    pub fn alpha(&self) -> Real {
+        self.first.alpha()
+    }
+
+    /// The tangential restitution `beta`.
+    pub fn beta(&self) -> Real {
+        self.first.beta()
+    }
+
+    /// The partners' reduced moments of inertia `(kappa_1, kappa_2)`.
+    pub fn inertia(&self) -> (Real, Real) {
+        (self.first.kappa(), self.kappa_2)
+    }
+}
+
+impl PairLaw for RoughPairLaw {
+    type Map = RoughPair;
+
+    fn between(&self, m_1: Real, m_2: Real) -> RoughPair {
+        let (alpha, beta) = (self.first.alpha(), self.first.beta());
+        let (k1, k2) = self.inertia();
+        if m_1 == m_2 && k1 == k2 {
+            return RoughPair {
+                same: Some(self.first),
+                ..RoughPair::default()
+            };
+        }
+        let total = m_1 + m_2;
+        let mu = m_1 * m_2 / total;
+        let (i1, i2) = (k1 * m_1, k2 * m_2);
+        let c1 = (1.0 + beta) / (1.0 + i1 / mu + i1 / i2);
+        let c2 = (1.0 + beta) / (1.0 + i2 / mu + i2 / i1);
+        RoughPair {
+            same: None,
+            normal: ((1.0 + alpha) * (m_2 / total), (1.0 + alpha) * (m_1 / total)),
+            tangential: (k1 * c1, k2 * c2),
+            spin: (c1, c2),
+            kappa: (k1, k2),
+        }
+    }
+}
+
+/// The collision map of a rough pair type between given masses (module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RoughPair {
+    /// Equal partners: the one-species map.
+    same: Option<RoughMap>,
+    /// `((1 + alpha) mu_2, (1 + alpha) mu_1)`.
+    normal: (Real, Real),
+    /// `(kappa_1 c_1, kappa_2 c_2)`.
+    tangential: (Real, Real),
+    /// `(c_1, c_2)`.
+    spin: (Real, Real),
+    /// `(kappa_1, kappa_2)`.
+    kappa: (Real, Real),
+}
+
+impl RoughPair {
+    /// Post-collisional `(v1', w1', v2', w2')` for the unit vector `n` from 1 to 2 (module
+    /// docs). With `beta = -1` the rim velocities are returned unchanged, bit for bit.
+    #[inline(always)]
+    pub fn collide(
+        &self,
+        v1: Vec3,
+        w1: Vec3,
+        v2: Vec3,
+        w2: Vec3,
+        n: Vec3,
+    ) -> (Vec3, Vec3, Vec3, Vec3) {
+        if let Some(m) = &self.same {
+            return m.collide(v1, w1, v2, w2, n);
+        }
+        let g = RoughMap::contact_velocity(v1, w1, v2, w2, n);
+        let gn = g.dot(n) * n;
+        let gt = g - gn;
+        let dv1 = -(self.normal.0 * gn) - self.tangential.0 * gt;
+        let dv2 = self.normal.1 * gn + self.tangential.1 * gt;
+        if self.spin.0 == 0.0 && self.spin.1 == 0.0 {
+            return (v1 + dv1, w1, v2 + dv2, w2);
+        }
+        let nt = n.cross(gt);
+        (
+            v1 + dv1,
+            w1 - self.spin.0 * nt,
+            v2 + dv2,
+            w2 - self.spin.1 * nt,
+        )
+    }
+}
+
+impl CollisionMap for RoughPair {
+    const SPINS: bool = true;
+
+    fn inertia(&self) -> (Real, Real) {
+        match self.same {
+            Some(m) => (m.kappa(), m.kappa()),
+            None => self.kappa,
+        }
+    }
+
+    /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughPair::collide`].
+    #[inline(always)]
+    fn collide_pair<K: Kernel, G: Geometry, R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        rng: &mut R,
+        _counts: &mut Counts,
+    ) -> (Vec3, Vec3) {
+        let nrm = G::impact(vi - vj, rng);
+        let (a, wa, b, wb) = self.collide(vi, p.spin(i), vj, p.spin(j), nrm);
+        p.set_velocity(i, a);
+        p.set_spin(i, wa);
+        p.set_velocity(j, b);
+        p.set_spin(j, wb);
+        (a, b)
+    }
+}

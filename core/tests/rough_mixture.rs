@@ -1,0 +1,291 @@
+//! Rough mixtures: the mixture loop with the rough pair map (`gdsmc_core::rough::pair`).
+//!
+//! - The map of unequal partners keeps momentum, changes the energy by exactly the closed form
+//!   of its normal and tangential parts, and leaves the spins alone at `beta = -1`.
+//! - A one-species rough mixture is the one-species rough loop to the last bit (velocities,
+//!   spins, observables, counts), cooling (through rescales) or driven.
+//! - The elastic perfectly rough mixture keeps its energy to rounding and relaxes to the
+//!   equipartition of its finite system over every species' translational and rotational
+//!   degrees of freedom (99.9% intervals, 3.2 standard errors; the same sample must refuse the
+//!   naive equipartition, so the check can fail).
+
+mod common;
+
+use common::mean_ci;
+use gdsmc_core::drive::{Drive, NoDrive};
+use gdsmc_core::engine::{EventLoop, NoSplitting};
+use gdsmc_core::geometry::{Disks, Geometry, Spheres};
+use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell};
+use gdsmc_core::math::PI;
+use gdsmc_core::mixture::{MixtureNoSplitting, PairLaw, PairPhysics, Species};
+use gdsmc_core::particles::{Particle, Particles, Spin};
+use gdsmc_core::physics::{
+    DimensionChoice, DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice,
+    SchemeChoice, SpeciesChoice,
+};
+use gdsmc_core::rng::{Streams, seeded, stream};
+use gdsmc_core::rough::{RoughMap, RoughNoise, RoughPairLaw};
+use gdsmc_core::sample::{Maxwellian, unit_sphere};
+use gdsmc_core::vec3::Vec3;
+
+/// `sum m (|v|^2 + kappa |w|^2) / 2` of two partners.
+fn energy(m: (f64, f64), k: (f64, f64), v: [Vec3; 4]) -> f64 {
+    0.5 * (m.0 * (v[0].norm2() + k.0 * v[1].norm2()) + m.1 * (v[2].norm2() + k.1 * v[3].norm2()))
+}
+
+/// 10^4 random collisions of unequal partners (masses in (0.1, 10), kappa in (0, 2/3]): the
+/// momentum is kept, and the energy changes by
+/// `-(mu/2)(1 - alpha^2)|g_n|^2 - (1/(2 D))(1 - beta^2)|g_t|^2`, the closed form of an impulse
+/// that reverses each part of the contact velocity (effective masses `mu` and `1/D`,
+/// `D = 1/mu + 1/(kappa_1 m_1) + 1/(kappa_2 m_2)`), derived apart from the map's coefficients.
+/// Both to rounding (relative 1e-12).
+#[test]
+fn the_rough_pair_map_keeps_momentum_and_loses_the_closed_form_energy() {
+    let mut rng = seeded(5);
+    let mut dirs = seeded(6);
+    let mut u = || gdsmc_core::rng::uniform01(&mut rng);
+    for _ in 0..10_000 {
+        let (m1, m2) = (0.1 + 9.9 * u(), 0.1 + 9.9 * u());
+        let (k1, k2) = ((2.0 / 3.0) * (1.0 - u()), (2.0 / 3.0) * (1.0 - u()));
+        let (alpha, beta) = (1.0 - u(), 2.0 * u() - 1.0);
+        let law = RoughPairLaw::new(alpha, beta, k1, k2).unwrap();
+        let map = law.between(m1, m2);
+        let speeds = [2.0 * u(), 2.0 * u(), 2.0 * u(), 2.0 * u()];
+        let before = speeds.map(|r| r * unit_sphere(&mut dirs));
+        let n = unit_sphere(&mut dirs);
+        let (a1, b1, a2, b2) = map.collide(before[0], before[1], before[2], before[3], n);
+        let p0 = m1 * before[0] + m2 * before[2];
+        let p1 = m1 * a1 + m2 * a2;
+        let scale = m1 * before[0].norm() + m2 * before[2].norm();
+        assert!(
+            (p1 - p0).norm() <= 1e-12 * scale,
+            "momentum {p0:?} -> {p1:?}"
+        );
+        let g = RoughMap::contact_velocity(before[0], before[1], before[2], before[3], n);
+        let gn2 = g.dot(n) * g.dot(n);
+        let gt2 = (g.norm2() - gn2).max(0.0);
+        let mu = m1 * m2 / (m1 + m2);
+        let d = 1.0 / mu + 1.0 / (k1 * m1) + 1.0 / (k2 * m2);
+        let expected =
+            -0.5 * mu * (1.0 - alpha * alpha) * gn2 - 0.5 / d * (1.0 - beta * beta) * gt2;
+        let e0 = energy((m1, m2), (k1, k2), before);
+        let e1 = energy((m1, m2), (k1, k2), [a1, b1, a2, b2]);
+        assert!(
+            ((e1 - e0) - expected).abs() <= 1e-12 * e0,
+            "energy change {} against {expected}",
+            e1 - e0
+        );
+        if beta == -1.0 {
+            assert_eq!((b1, b2), (before[1], before[3]));
+        }
+    }
+    // beta = -1 exactly: the spins untouched, bit for bit.
+    let map = RoughPairLaw::new(0.7, -1.0, 0.4, 0.1)
+        .unwrap()
+        .between(1.0, 3.0);
+    let w = (Vec3::new(0.3, -0.2, 0.1), Vec3::new(-1.0, 0.5, 2.0));
+    let (_, b1, _, b2) = map.collide(
+        Vec3::new(1.0, 0.0, 0.0),
+        w.0,
+        Vec3::ZERO,
+        w.1,
+        Vec3::new(-1.0, 0.0, 0.0),
+    );
+    assert_eq!((b1, b2), w);
+}
+
+/// A one-species rough mixture and the rough loop from the same start and stream: equal
+/// observables, rotational observables, velocities, spins and counts at every time, to the bit.
+fn same_as_rough_loop<K: Kernel, D: Drive, G: Geometry>(
+    kernel: K,
+    drive: D,
+    law: RoughPairLaw,
+    n: usize,
+    times: &[f64],
+) {
+    let kappa = law.inertia().0;
+    let one_map = match G::CHOICE {
+        DimensionChoice::Three => RoughMap::new(law.alpha(), law.beta(), kappa),
+        DimensionChoice::Two => RoughMap::for_disks(law.alpha(), law.beta(), kappa),
+    }
+    .unwrap();
+    let f0 = Maxwellian::standard();
+    let mut rng = stream(9, 0);
+    let planar = |v: Vec3| match G::CHOICE {
+        DimensionChoice::Three => v,
+        DimensionChoice::Two => Vec3::new(v.x, v.y, 0.0),
+    };
+    let mut a: Vec<Particle> = (0..n)
+        .map(|_| Particle::new(planar(f0.sample(&mut rng)), 0.0))
+        .collect();
+    let mut sa: Vec<Spin> = (0..n)
+        .map(|_| {
+            let w = f0.sample(&mut rng);
+            Spin::new(match G::CHOICE {
+                DimensionChoice::Three => w,
+                DimensionChoice::Two => Vec3::new(0.0, 0.0, w.z),
+            })
+        })
+        .collect();
+    let (mut b, mut sb) = (a.clone(), sa.clone());
+    let (mut ra, mut rb) = (rng.clone(), rng);
+    let mut pa = Particles::with_spins(&mut a, &mut sa).unwrap();
+    let mut pb = Particles::with_spins(&mut b, &mut sb).unwrap();
+    let (mut one, o1) =
+        NoSplitting::<K, D, RoughMap, G>::start_in(kernel, drive, one_map, &mut pa, 0.0).unwrap();
+    let sp = Species::new(&[n], &[1.0]).unwrap();
+    let pair = PairPhysics {
+        kernel,
+        restitution: law,
+    };
+    let (mut mix, o2) =
+        MixtureNoSplitting::<K, D, RoughPairLaw, G>::start_in(sp, &[pair], &[drive], &mut pb, 0.0)
+            .unwrap();
+    assert_eq!(o1, o2.all);
+    for &t in times {
+        let o1 = one.advance_to(&mut pa, t, &mut ra).unwrap();
+        let o2 = mix.advance_to(&mut pb, t, &mut rb).unwrap();
+        assert_eq!(o1, o2.all, "t = {t}");
+        assert_eq!(one.counts(), mix.counts(), "t = {t}");
+        // The physical state (the loops may store it differently: the mixture kicks no
+        // undriven particle, so its last-kick times stay at the start).
+        let (fa, fb) = (one.velocity_map(), EventLoop::velocity_map(&mix));
+        assert_eq!(fa, fb, "t = {t}");
+        let same = |x: &[Particle], y: &[Particle]| {
+            x.iter().zip(y).all(|(x, y)| x.velocity() == y.velocity())
+        };
+        assert!(
+            same(pa.as_slice(), pb.as_slice()),
+            "t = {t}: velocities differ"
+        );
+        assert_eq!(pa.spins(), pb.spins(), "t = {t}");
+        let r1 = one.rough(&pa).unwrap();
+        let r2 = EventLoop::species(&mix, &pb).unwrap().rotation.unwrap()[0];
+        assert_eq!(r1, r2, "t = {t}");
+    }
+    assert!(mix.counts().collisions > 2 * n as u64);
+}
+
+#[test]
+fn a_one_species_rough_mixture_is_the_rough_loop_bit_for_bit() {
+    let c = 1.0 / (4.0 * PI);
+    let times = [0.5, 1.0, 2.0, 4.0];
+    let hs = HardSpheres::new(4.0, c).unwrap();
+    let law = RoughPairLaw::new(0.9, 0.3, 0.4, 0.4).unwrap();
+    let noise = RoughNoise::new(1.0, 0.5, 0.4).unwrap();
+    same_as_rough_loop::<_, _, Spheres>(hs, noise, law, 400, &times);
+    same_as_rough_loop::<_, _, Spheres>(Maxwell::new(4.0, c).unwrap(), noise, law, 400, &times);
+    // Cooling long enough to be rescaled (velocities and spins together).
+    let long: Vec<f64> = (1..=8).map(|k| 50.0 * k as f64).collect();
+    let cold = RoughPairLaw::new(0.4, 0.0, 0.4, 0.4).unwrap();
+    same_as_rough_loop::<_, _, Spheres>(hs, NoDrive, cold, 300, &long);
+    // Disks, one rotational degree of freedom.
+    let disks = RoughPairLaw::for_disks(0.8, 0.5, 0.5, 0.5).unwrap();
+    same_as_rough_loop::<_, _, Disks>(hs, NoDrive, disks, 300, &times);
+    same_as_rough_loop::<_, _, Disks>(hs, noise.in_dim::<Disks>(), disks, 300, &times);
+}
+
+/// The elastic perfectly rough mixture of `dimension` through `Physics`: species of masses 1
+/// and 4 (four particles each) and inertia 0.4 and 0.2 (the second species' own), all energy
+/// in translation at the start.
+fn elastic_rough_mixture(dimension: DimensionChoice) -> Physics {
+    let mut ph = Physics::new(
+        8,
+        KernelChoice::HardSpheres {
+            gamma: 1.0,
+            c: c1(),
+        },
+        RestitutionLaw::Constant(1.0),
+        DriveChoice::None,
+        SchemeChoice::NoSplitting,
+    );
+    let light = SpeciesChoice::new(4, 1.0, 1.0);
+    let heavy = SpeciesChoice {
+        inertia: Some(0.2),
+        ..SpeciesChoice::new(4, 4.0, 1.0)
+    };
+    ph.species.extend([light, heavy]);
+    ph.rotation = Some(RotationChoice {
+        beta: 1.0,
+        kappa: 0.4,
+        temperature: 0.0,
+        noise: 0.0,
+    });
+    ph.dimension = dimension;
+    ph
+}
+
+fn c1() -> f64 {
+    0.25 / PI
+}
+
+/// The elastic perfectly rough mixture keeps `sum m (|v|^2 + kappa |w|^2)` to rounding, and
+/// its stationary law is uniform on that energy shell with the total momentum fixed. In the
+/// mass-weighted coordinates `sqrt(m) v`, `sqrt(m kappa) w` the momentum fixes one direction
+/// per velocity axis, `(sqrt(m_i))_i / sqrt(M)`, `M = sum m_i`; every other direction carries
+/// the same mean energy `T`. So `E[m_i |v_i - U|^2] = d (1 - m_i/M) T` and
+/// `E[m_i kappa_i |w_i|^2] = d_rot T`: species `s`'s `E[T_s] = (1 - m_s/M) E[T_rot,s]`. At
+/// masses 1 and 4 (`M = 20`) the factors are 0.95 and 0.8; the same sample must refuse
+/// `E[T_s] = E[T_rot,s]` for the heavy species.
+fn check_mixture_equipartition(dimension: DimensionChoice, ensembles: usize, seed: u64) {
+    let model = elastic_rough_mixture(dimension).validate().unwrap();
+    let (masses, kappa) = ([1.0, 4.0], [0.4, 0.2]);
+    let total_mass = 4.0 * (masses[0] + masses[1]);
+    let energy = |p: &Particles<'_>| {
+        (0..8)
+            .map(|i| {
+                let s = i / 4;
+                masses[s] * (p.velocity(i).norm2() + kappa[s] * p.spin(i).norm2())
+            })
+            .sum::<f64>()
+    };
+    let mut finite = [Vec::new(), Vec::new()];
+    let mut naive = Vec::new();
+    let mut streams = Streams::new(seed);
+    let mut collisions = 0;
+    for _ in 0..ensembles {
+        let mut rng = streams.next().unwrap();
+        let mut buf = vec![Particle::default(); 8];
+        let mut spins = vec![Spin::default(); 8];
+        let mut p = Particles::with_spins(&mut buf, &mut spins).unwrap();
+        let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+        let e0 = energy(&p);
+        e.advance_to(&mut p, 60.0, &mut rng).unwrap();
+        let e1 = energy(&p);
+        assert!((e1 - e0).abs() <= 1e-12 * e0, "energy {e0} -> {e1}");
+        collisions += e.counts().collisions;
+        let m = e.species(&p).unwrap();
+        for s in 0..2 {
+            let t_rot = m.rotational_temperature(s).unwrap();
+            let factor = 1.0 - masses[s] / total_mass;
+            finite[s].push(m.temperature(s) - factor * t_rot);
+            if s == 1 {
+                naive.push(m.temperature(s) - t_rot);
+            }
+        }
+    }
+    let per = collisions as f64 / (ensembles * 8) as f64;
+    assert!(per > 20.0, "{per} collisions per particle");
+    // Two species checked together (Bonferroni): each at 0.05%, z = 3.4807 in place of the
+    // 99.9% interval's 3.2.
+    for (s, d) in finite.iter().enumerate() {
+        let (m, h) = mean_ci(d);
+        let h = h * 3.4807 / 3.2;
+        assert!(
+            m.abs() <= h,
+            "species {s}: E[T_s - (1 - m_s/M) T_rot,s] = {m} +- {h}"
+        );
+    }
+    let (m, h) = mean_ci(&naive);
+    assert!(m.abs() > h, "the test cannot tell 0.8 from 1: {m} +- {h}");
+}
+
+#[test]
+fn the_elastic_perfectly_rough_mixture_relaxes_to_equipartition_of_its_finite_system() {
+    check_mixture_equipartition(DimensionChoice::Three, 6000, 31);
+}
+
+#[test]
+fn elastic_perfectly_rough_disk_mixtures_relax_to_equipartition_too() {
+    check_mixture_equipartition(DimensionChoice::Two, 6000, 32);
+}
