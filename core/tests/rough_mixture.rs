@@ -4,6 +4,8 @@
 //!   of its normal and tangential parts, and leaves the spins alone at `beta = -1`.
 //! - A one-species rough mixture is the one-species rough loop to the last bit (velocities,
 //!   spins, observables, counts), cooling (through rescales) or driven.
+//! - A rough mixture with `beta = -1` for every pair is the smooth mixture to the last bit
+//!   (rotation decouples), spheres and hard disks, cooling (through rescales) or driven.
 //! - The elastic perfectly rough mixture keeps its energy to rounding and relaxes to the
 //!   equipartition of its finite system over every species' translational and rotational
 //!   degrees of freedom (99.9% intervals, 3.2 standard errors; the same sample must refuse the
@@ -13,7 +15,7 @@ mod common;
 
 use common::mean_ci;
 use gdsmc_core::drive::{Drive, NoDrive};
-use gdsmc_core::engine::{EventLoop, NoSplitting};
+use gdsmc_core::engine::{Counts, EventLoop, NoSplitting};
 use gdsmc_core::geometry::{Disks, Geometry, Spheres};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell};
 use gdsmc_core::math::PI;
@@ -172,11 +174,12 @@ fn a_one_species_rough_mixture_is_the_rough_loop_bit_for_bit() {
     let times = [0.5, 1.0, 2.0, 4.0];
     let hs = HardSpheres::new(4.0, c).unwrap();
     let law = RoughPairLaw::new(0.9, 0.3, 0.4, 0.4).unwrap();
-    let noise = RoughNoise::new(1.0, 0.5, 0.4).unwrap();
+    let noise = RoughNoise::new(Some(1.0), 0.5, 0.4).unwrap();
     same_as_rough_loop::<_, _, Spheres>(hs, noise, law, 400, &times);
     same_as_rough_loop::<_, _, Spheres>(Maxwell::new(4.0, c).unwrap(), noise, law, 400, &times);
-    // Cooling long enough to be rescaled (velocities and spins together).
-    let long: Vec<f64> = (1..=8).map(|k| 50.0 * k as f64).collect();
+    // Cooling long enough to be rescaled (velocities and spins together): the temperature
+    // falls as 1/t^2, below the rescale threshold 1e-8 within these decades.
+    let long: Vec<f64> = (0..=9).map(|k| 10f64.powi(k)).collect();
     let cold = RoughPairLaw::new(0.4, 0.0, 0.4, 0.4).unwrap();
     same_as_rough_loop::<_, _, Spheres>(hs, NoDrive, cold, 300, &long);
     // Disks, one rotational degree of freedom.
@@ -288,4 +291,135 @@ fn the_elastic_perfectly_rough_mixture_relaxes_to_equipartition_of_its_finite_sy
 #[test]
 fn elastic_perfectly_rough_disk_mixtures_relax_to_equipartition_too() {
     check_mixture_equipartition(DimensionChoice::Two, 6000, 32);
+}
+
+/// A mixture of `species` (count, mass) pairs with hard spheres or Maxwell
+/// molecules, restitution `alpha`, in `dimension`, cooling or under white noise; rough with
+/// `beta = -1` for every pair when `rough`.
+fn smooth_or_rough(
+    species: &[(usize, f64)],
+    (maxwell, alpha): (bool, f64),
+    dimension: DimensionChoice,
+    drive: DriveChoice,
+    rough: bool,
+) -> Physics {
+    let n = species.iter().map(|s| s.0).sum::<usize>();
+    let kernel = if maxwell {
+        KernelChoice::Maxwell {
+            gamma: 4.0,
+            c: c1(),
+        }
+    } else {
+        KernelChoice::HardSpheres {
+            gamma: 4.0,
+            c: c1(),
+        }
+    };
+    let mut ph = Physics::new(
+        n,
+        kernel,
+        RestitutionLaw::Constant(alpha),
+        drive,
+        SchemeChoice::NoSplitting,
+    );
+    for (k, &(count, mass)) in species.iter().enumerate() {
+        ph.species.push(SpeciesChoice {
+            // Each species its own inertia where rough, to show it cannot matter; under white
+            // noise the first species a zero strength (its kicks still draw), the second 0.5.
+            inertia: rough.then_some(0.1 + 0.1 * k as f64),
+            beta: 0.5 * k as f64,
+            ..SpeciesChoice::new(count, mass, 1.0 + k as f64)
+        })
+        .unwrap();
+    }
+    ph.dimension = dimension;
+    if rough {
+        ph.rotation = Some(RotationChoice {
+            beta: -1.0,
+            kappa: 0.4,
+            temperature: 2.0,
+            noise: 0.0,
+        });
+    }
+    ph
+}
+
+/// Rotation decouples at `beta = -1`: the rough gas (one species or a mixture) and the smooth
+/// one from the same seed have equal translational observables, velocities and counts at every
+/// time, to the bit, through the front door (`Model::launch`: the rough start draws its spins
+/// from their own stream), cooling through rescales or driven. Returns the counts.
+fn rough_at_beta_minus_one_is_smooth(
+    species: &[(usize, f64)],
+    kernel: (bool, f64),
+    dimension: DimensionChoice,
+    drive: DriveChoice,
+    times: &[f64],
+) -> Counts {
+    let smooth = smooth_or_rough(species, kernel, dimension, drive, false)
+        .validate()
+        .unwrap();
+    let rough = smooth_or_rough(species, kernel, dimension, drive, true)
+        .validate()
+        .unwrap();
+    assert!(rough.rotates() && !smooth.rotates());
+    let n = smooth.n();
+    let (mut a, mut b) = (vec![Particle::default(); n], vec![Particle::default(); n]);
+    let mut spins = vec![Spin::default(); n];
+    let mut pa = Particles::new(&mut a).unwrap();
+    let mut pb = Particles::with_spins(&mut b, &mut spins).unwrap();
+    let (mut ra, mut rb) = (stream(4, 2), stream(4, 2));
+    let (mut ea, oa) = smooth.launch(&mut pa, 0.0, &mut ra).unwrap();
+    let (mut eb, ob) = rough.launch(&mut pb, 0.0, &mut rb).unwrap();
+    assert_eq!(oa, ob);
+    assert!(
+        (0..n).any(|i| pb.spin(i).norm2() > 0.0),
+        "the spins were drawn"
+    );
+    let spins0 = pb.spins().to_vec();
+    for &t in times {
+        let oa = ea.advance_to(&mut pa, t, &mut ra).unwrap();
+        let ob = eb.advance_to(&mut pb, t, &mut rb).unwrap();
+        assert_eq!(oa, ob, "t = {t}");
+        assert_eq!(ea.counts(), eb.counts(), "t = {t}");
+        let (va, vb) = (pa.as_slice(), pb.as_slice());
+        assert!(
+            va.iter().zip(vb).all(|(x, y)| x.velocity() == y.velocity()),
+            "t = {t}: velocities differ"
+        );
+        if !species.is_empty() {
+            let (sa, sb) = (ea.species(&pa).unwrap(), eb.species(&pb).unwrap());
+            for s in 0..species.len() {
+                assert_eq!(sa.species[s], sb.species[s], "t = {t}, species {s}");
+            }
+        }
+    }
+    assert!(ea.counts().collisions > 3 * n as u64);
+    if ea.counts().rescales == 0 {
+        // Undriven and unrescaled, the spins are the start's (rescales multiply both).
+        assert_eq!(pb.spins(), &spins0[..]);
+    }
+    ea.counts()
+}
+
+#[test]
+fn a_rough_mixture_with_beta_minus_one_is_the_smooth_mixture_bit_for_bit() {
+    use DimensionChoice::{Three, Two};
+    let times = [0.5, 1.0, 2.0, 4.0, 8.0];
+    let mix = [(120, 1.0), (80, 3.0)];
+    let (hard, maxwell) = ((false, 0.8), (true, 0.8));
+    let (none, hot) = (DriveChoice::None, DriveChoice::WhiteNoise(0.0));
+    // Spheres: hard spheres cooling and driven, Maxwell molecules cooling.
+    rough_at_beta_minus_one_is_smooth(&mix, hard, Three, none, &times);
+    rough_at_beta_minus_one_is_smooth(&mix, hard, Three, hot, &times);
+    rough_at_beta_minus_one_is_smooth(&mix, maxwell, Three, none, &times);
+    // Cooling long enough to be rescaled (velocities and spins together): the temperature
+    // falls as 1/t^2, below the rescale threshold 1e-8 within these decades.
+    let long: Vec<f64> = (0..=9).map(|k| 10f64.powi(k)).collect();
+    let c = rough_at_beta_minus_one_is_smooth(&mix, (false, 0.3), Three, none, &long);
+    assert!(c.rescales > 0, "{c:?}");
+    // Hard disks, cooling and driven; one species.
+    rough_at_beta_minus_one_is_smooth(&mix, hard, Two, none, &times);
+    rough_at_beta_minus_one_is_smooth(&mix, hard, Two, hot, &times);
+    rough_at_beta_minus_one_is_smooth(&mix[..1], hard, Two, none, &times);
+    rough_at_beta_minus_one_is_smooth(&mix[..1], hard, Three, hot, &times);
 }

@@ -21,19 +21,21 @@ use crate::mixture::{MixtureNoSplitting, PairLaw, PairPhysics, StartError};
 use crate::moments::Observables;
 use crate::particles::{Particle, Particles, Spin};
 use crate::restitution::Restitution;
-use crate::rng::Rng;
+use crate::rng::Xoshiro256PlusPlus;
 use crate::vec3::Vec3;
 use core::marker::PhantomData;
 
 impl Model {
     /// Draws every particle's velocity from the initial distribution (one uniform for the
     /// component, then the Maxwellian; particle by particle) and sets its last-kick time to
-    /// `t0`. Fails with [`EngineError::ParticleCount`] unless `p` holds `n` particles.
-    pub fn initialize<R: Rng + ?Sized>(
+    /// `t0`; rough particles' rim velocities come from the spin stream ([`spin_stream`]), so
+    /// `rng` advances exactly as for smooth particles. Fails with
+    /// [`EngineError::ParticleCount`] unless `p` holds `n` particles.
+    pub fn initialize(
         &self,
         p: &mut Particles<'_>,
         t0: Real,
-        rng: &mut R,
+        rng: &mut Xoshiro256PlusPlus,
     ) -> Result<(), EngineError> {
         if p.len() != self.n() {
             return Err(EngineError::ParticleCount);
@@ -49,13 +51,14 @@ impl Model {
                 }
             }
             if let Some(r) = &mx.rotation {
-                // The rim velocities after all translational ones, species by species.
+                // The rim velocities species by species, from the spin stream.
                 if !p.has_spins() {
                     return Err(EngineError::Spins);
                 }
+                let mut spins = spin_stream(rng);
                 for s in 0..mx.species.len() {
                     for w in &mut p.spins_mut()[mx.species.range(s)] {
-                        *w = Spin::new(planar_spin(r.starts[s].sample(rng), disks));
+                        *w = Spin::new(planar_spin(r.starts[s].sample(&mut spins), disks));
                     }
                 }
             }
@@ -80,13 +83,14 @@ impl Model {
             }
         }
         if let Some(r) = &self.rough {
-            // The rim velocities after all translational ones, from their own Maxwellian
-            // (disks keep its z component, their one rotational degree of freedom).
+            // The rim velocities from their own Maxwellian (disks keep its z component, their
+            // one rotational degree of freedom), drawn from the spin stream.
             if !p.has_spins() {
                 return Err(EngineError::Spins);
             }
+            let mut spins = spin_stream(rng);
             for s in p.spins_mut() {
-                *s = Spin::new(planar_spin(r.start.sample(rng), disks));
+                *s = Spin::new(planar_spin(r.start.sample(&mut spins), disks));
             }
         }
         Ok(())
@@ -143,11 +147,11 @@ impl Model {
     }
 
     /// [`Model::initialize`] then [`Model::start`].
-    pub fn launch<R: Rng + ?Sized>(
+    pub fn launch(
         &self,
         p: &mut Particles<'_>,
         t0: Real,
-        rng: &mut R,
+        rng: &mut Xoshiro256PlusPlus,
     ) -> Result<(Engine, Observables), EngineError> {
         self.initialize(p, t0, rng)?;
         self.start(p, t0)
@@ -519,6 +523,18 @@ fn started<E>(
 
 /// A rim velocity drawn in three dimensions as a disk's (its `z` component alone) or a
 /// sphere's.
+/// The generator of the initial rim velocities: the ensemble's generator `rng` long-jumped
+/// (2^192 draws), a stretch no ensemble's collisions reach (ensemble `k` starts `k 2^128` draws
+/// into the seed's sequence, [`crate::rng::stream`]). The spins leave `rng` where smooth
+/// particles leave it, so a rough gas whose collisions leave the rotation alone (`beta = -1`)
+/// has the smooth gas's bits.
+#[must_use]
+pub(crate) fn spin_stream(rng: &Xoshiro256PlusPlus) -> Xoshiro256PlusPlus {
+    let mut s = rng.clone();
+    s.long_jump();
+    s
+}
+
 fn planar_spin(w: Vec3, disks: bool) -> Vec3 {
     if disks { Vec3::new(0.0, 0.0, w.z) } else { w }
 }

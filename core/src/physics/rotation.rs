@@ -95,7 +95,7 @@ pub(super) fn mixture_rotation(
     let list = &physics.species;
     let mut kappa = [0.4; MAX_SPECIES];
     let mut starts = [Maxwellian::standard(); MAX_SPECIES];
-    let mut noises = [RoughNoise::new(0.0, 0.0, 1.0).expect("no noise"); MAX_SPECIES];
+    let mut noises = [RoughNoise::new(None, 0.0, 1.0).expect("no noise"); MAX_SPECIES];
     let mut driven = betas.is_some();
     for (k, c) in list.iter().enumerate() {
         let (kp, kp_param) = match c.inertia {
@@ -123,7 +123,7 @@ pub(super) fn mixture_rotation(
         };
         at_least_zero(w_param, w)?;
         driven |= w > 0.0;
-        let beta = betas.map_or(0.0, |b| b[k]);
+        let beta = betas.map(|b| b[k]);
         noises[k] = RoughNoise::new(beta, w, kappa[k]).ok_or(PhysicsError {
             param: w_param,
             problem: Problem::DoesNotFit(
@@ -261,14 +261,12 @@ pub(super) fn rotation(
     };
     let noise = match (beta, r.noise > 0.0) {
         (None, false) => None,
-        (b, _) => Some(RoughNoise::new(b.unwrap_or(0.0), r.noise, r.kappa).ok_or(
-            PhysicsError {
-                param: Param::RotationNoise,
-                problem: Problem::DoesNotFit(
-                    "makes the rotational noise rate 2 noise / kappa overflow",
-                ),
-            },
-        )?),
+        (b, _) => Some(RoughNoise::new(b, r.noise, r.kappa).ok_or(PhysicsError {
+            param: Param::RotationNoise,
+            problem: Problem::DoesNotFit(
+                "makes the rotational noise rate 2 noise / kappa overflow",
+            ),
+        })?),
     };
     Ok(Some(RoughModel { map, start, noise }))
 }

@@ -18,26 +18,30 @@ use crate::rng::Rng;
 use crate::vec3::Vec3;
 
 /// White noise of strength `beta` on translation and `beta_rot` on rotation (module docs), in
-/// dimension `G` (disks: in the plane and along the rim velocity's one axis, `z`). A zero
-/// strength draws nothing for its part. With no noise a rough gas takes
-/// [`crate::drive::NoDrive`], as a smooth one does.
+/// dimension `G` (disks: in the plane and along the rim velocity's one axis, `z`). The
+/// translational part draws whenever it is on, even at `beta = 0`, exactly as the smooth
+/// [`crate::drive::WhiteNoise`] does (so a rough gas whose collisions leave the rotation alone
+/// has the smooth gas's bits); a zero rotational strength draws nothing. With no noise a rough
+/// gas takes [`crate::drive::NoDrive`], as a smooth one does.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoughNoise<G = Spheres> {
-    /// `2 beta`: the variance rate of each translational component.
-    tr: Real,
+    /// `2 beta`: the variance rate of each translational component; `None` when translation
+    /// is not driven.
+    tr: Option<Real>,
     /// `2 beta_rot / kappa`: the variance rate of each rim-velocity component.
     rot: Real,
     dim: core::marker::PhantomData<G>,
 }
 
 impl RoughNoise {
-    /// The noise of strengths `beta, beta_rot >= 0` on a gas of reduced moment of inertia
-    /// `kappa > 0`; `None` when a strength is negative or a rate not finite. Spheres; disks:
+    /// The noise of strengths `beta >= 0` (`None`: translation not driven) and
+    /// `beta_rot >= 0` on a gas of reduced moment of inertia `kappa > 0`; `None` when a
+    /// strength is negative or a rate not finite. Spheres; disks:
     /// [`RoughNoise::in_dim`].
-    pub fn new(beta: Real, beta_rot: Real, kappa: Real) -> Option<Self> {
-        let (tr, rot) = (2.0 * beta, 2.0 * beta_rot / kappa);
+    pub fn new(beta: Option<Real>, beta_rot: Real, kappa: Real) -> Option<Self> {
+        let (tr, rot) = (beta.map(|b| 2.0 * b), 2.0 * beta_rot / kappa);
         let ok = |x: Real| x.is_finite() && x >= 0.0;
-        (ok(tr) && ok(rot) && kappa > 0.0).then_some(RoughNoise {
+        (tr.is_none_or(ok) && ok(rot) && kappa > 0.0).then_some(RoughNoise {
             tr,
             rot,
             dim: core::marker::PhantomData,
@@ -56,9 +60,9 @@ impl<G: Geometry> RoughNoise<G> {
         }
     }
 
-    /// `dT_tr/dt` from the noise: `2 beta`.
+    /// `dT_tr/dt` from the noise: `2 beta` (0 when translation is not driven).
     pub fn heating_tr(&self) -> Real {
-        self.tr
+        self.tr.unwrap_or(0.0)
     }
 }
 
@@ -69,25 +73,24 @@ impl<G: Geometry> Drive for RoughNoise<G> {
     /// [`Drive::kick`], which moves the rim velocity too.
     #[inline(always)]
     fn evolve<R: Rng + ?Sized>(&self, mut v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
-        if self.tr > 0.0 {
-            v += sqrt(self.tr * dt) * G::normal(rng);
+        if let Some(tr) = self.tr {
+            v += sqrt(tr * dt) * G::normal(rng);
         }
         v
     }
 
-    /// Brings particle `i`'s velocity and rim velocity to `t` (translation drawn first); a
-    /// particle already at `t` draws nothing.
+    /// Brings particle `i`'s velocity and rim velocity to `t` (translation drawn first). As
+    /// the smooth [`Drive::kick`], it draws even for a particle already at `t` (a zero kick),
+    /// so the translational draws are the smooth gas's.
     #[inline(always)]
     fn kick<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, i: usize, t: Real, rng: &mut R) {
         let dt = t - p.kick_time(i);
-        if dt > 0.0 {
-            let v = self.evolve(p.velocity(i), dt, rng);
-            p.set_velocity(i, v);
-            if self.rot > 0.0 {
-                let w = p.spin(i) + sqrt(self.rot * dt) * G::spin_normal(rng);
-                p.set_spin(i, w);
-            }
-            p.get_mut(i).t_kick = t;
+        let v = self.evolve(p.velocity(i), dt, rng);
+        p.set_velocity(i, v);
+        if self.rot > 0.0 {
+            let w = p.spin(i) + sqrt(self.rot * dt) * G::spin_normal(rng);
+            p.set_spin(i, w);
         }
+        p.get_mut(i).t_kick = t;
     }
 }

@@ -84,6 +84,8 @@ impl core::error::Error for RoughError {}
 /// The collision map of rough spheres with coefficients `alpha`, `beta`, `kappa`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoughMap {
+    /// `alpha` as the smooth law (the `beta = -1` collision's; one rule for its range).
+    smooth: crate::restitution::Constant,
     alpha: Real,
     beta: Real,
     kappa: Real,
@@ -113,7 +115,7 @@ impl RoughMap {
         bad_kappa: RoughError,
     ) -> Result<Self, RoughError> {
         // The restitution's one rule.
-        crate::restitution::Constant::new(alpha).map_err(|_| RoughError::Alpha)?;
+        let smooth = crate::restitution::Constant::new(alpha).map_err(|_| RoughError::Alpha)?;
         if !(-1.0..=1.0).contains(&beta) {
             return Err(RoughError::Beta);
         }
@@ -121,6 +123,7 @@ impl RoughMap {
             return Err(bad_kappa);
         }
         Ok(RoughMap {
+            smooth,
             alpha,
             beta,
             kappa,
@@ -187,6 +190,17 @@ impl RoughMap {
     }
 }
 
+/// Whether a rough pair whose spin transfer is `eta_t` collides as smooth particles: `beta =
+/// -1` leaves the rotation alone (`eta_t = 0`), and the smooth collision of the scattering form
+/// (GRW (3)) is then the impact form's in distribution ([`impact_direction`] draws `n` through
+/// that very `e`), so the smooth loop's code collides the pair and a rough gas with `beta = -1`
+/// has the smooth gas's bits. Not for pseudo-Maxwell disks: their smooth scattering is
+/// isotropic, while rough disks of any kernel collide with the hard-disk impact law.
+#[inline(always)]
+pub(crate) fn smooth_limit<K: crate::kernel::Kernel, G: Geometry>(eta_t: Real) -> bool {
+    eta_t == 0.0 && (K::HARD || G::CHOICE == DimensionChoice::Three)
+}
+
 /// The unit vector `n` from particle 1 to particle 2 at a hard-sphere collision with relative
 /// velocity `u = v1 - v2`: on the hemisphere where the pair approaches, `u . n >= 0`, with
 /// density proportional to `u_hat . n` (the impact parameter uniform on the disk; MS
@@ -222,7 +236,8 @@ impl crate::engine::CollisionMap for RoughMap {
     const SPINS: bool = true;
 
     /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughMap::collide`] on the
-    /// velocities and rim velocities.
+    /// velocities and rim velocities; with `beta = -1` the smooth collision itself
+    /// ([`smooth_limit`]).
     #[inline(always)]
     fn collide_pair<K: crate::kernel::Kernel, G: Geometry, R: Rng + ?Sized>(
         &self,
@@ -230,8 +245,13 @@ impl crate::engine::CollisionMap for RoughMap {
         (i, j): (usize, usize),
         (vi, vj): (Vec3, Vec3),
         rng: &mut R,
-        _counts: &mut crate::engine::Counts,
+        counts: &mut crate::engine::Counts,
     ) -> (Vec3, Vec3) {
+        if smooth_limit::<K, G>(self.eta_t) {
+            return self
+                .smooth
+                .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
+        }
         let nrm = G::impact(vi - vj, rng);
         let (a, wa, b, wb) = self.collide(vi, p.spin(i), vj, p.spin(j), nrm);
         p.set_velocity(i, a);

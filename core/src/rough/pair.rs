@@ -37,13 +37,14 @@
 //! assert!(((1.0 * a1 + 3.0 * a2) - (1.0 * v1 + 3.0 * v2)).norm() < 1e-15);
 //! ```
 
-use super::map::{RoughError, RoughMap};
+use super::map::{RoughError, RoughMap, smooth_limit};
 use crate::engine::{CollisionMap, Counts};
 use crate::geometry::Geometry;
 use crate::kernel::Kernel;
 use crate::math::Real;
-use crate::mixture::PairLaw;
+use crate::mixture::{MassMap, PairLaw};
 use crate::particles::Particles;
+use crate::restitution::Constant;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
@@ -117,6 +118,11 @@ impl PairLaw for RoughPairLaw {
         let c2 = (1.0 + beta) / (1.0 + i2 / mu + i2 / i1);
         RoughPair {
             same: None,
+            // The restitution's one rule was checked by `first`.
+            smooth: crate::restitution::Constant::new(alpha)
+                .ok()
+                .filter(|_| beta == -1.0)
+                .map(|law| law.between(m_1, m_2)),
             normal: ((1.0 + alpha) * (m_2 / total), (1.0 + alpha) * (m_1 / total)),
             tangential: (k1 * c1, k2 * c2),
             spin: (c1, c2),
@@ -130,6 +136,8 @@ impl PairLaw for RoughPairLaw {
 pub struct RoughPair {
     /// Equal partners: the one-species map.
     same: Option<RoughMap>,
+    /// `beta = -1`: the smooth pair of these masses ([`super::map`]'s smooth limit).
+    smooth: Option<MassMap<Constant>>,
     /// `((1 + alpha) mu_2, (1 + alpha) mu_1)`.
     normal: (Real, Real),
     /// `(kappa_1 c_1, kappa_2 c_2)`.
@@ -183,7 +191,10 @@ impl CollisionMap for RoughPair {
         }
     }
 
-    /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughPair::collide`].
+    /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughPair::collide`]; equal
+    /// partners by [`RoughMap`], and with `beta = -1` the smooth pair's own code (the smooth
+    /// limit of [`super::map`]), so a rough mixture with `beta = -1` has the smooth mixture's
+    /// bits.
     #[inline(always)]
     fn collide_pair<K: Kernel, G: Geometry, R: Rng + ?Sized>(
         &self,
@@ -191,8 +202,15 @@ impl CollisionMap for RoughPair {
         (i, j): (usize, usize),
         (vi, vj): (Vec3, Vec3),
         rng: &mut R,
-        _counts: &mut Counts,
+        counts: &mut Counts,
     ) -> (Vec3, Vec3) {
+        match (&self.same, &self.smooth) {
+            (Some(m), _) => return m.collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts),
+            (None, Some(m)) if smooth_limit::<K, G>(0.0) => {
+                return m.collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
+            }
+            _ => {}
+        }
         let nrm = G::impact(vi - vj, rng);
         let (a, wa, b, wb) = self.collide(vi, p.spin(i), vj, p.spin(j), nrm);
         p.set_velocity(i, a);

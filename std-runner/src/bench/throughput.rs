@@ -317,7 +317,7 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             (
                 "nosplit-rough-white-noise-alpha0.5-beta0",
                 rough_loop(
-                    RoughNoise::new(1.0, 1.0, 0.4).expect("valid"),
+                    RoughNoise::new(Some(1.0), 1.0, 0.4).expect("valid"),
                     0.5,
                     0.0,
                     n,
