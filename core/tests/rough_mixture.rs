@@ -323,14 +323,15 @@ fn smooth_or_rough(
         SchemeChoice::NoSplitting,
     );
     for (k, &(count, mass)) in species.iter().enumerate() {
-        ph.species.push(SpeciesChoice {
-            // Each species its own inertia where rough, to show it cannot matter; under white
-            // noise the first species a zero strength (its kicks still draw), the second 0.5.
-            inertia: rough.then_some(0.1 + 0.1 * k as f64),
-            beta: 0.5 * k as f64,
-            ..SpeciesChoice::new(count, mass, 1.0 + k as f64)
-        })
-        .unwrap();
+        ph.species
+            .push(SpeciesChoice {
+                // Each species its own inertia where rough, to show it cannot matter; under white
+                // noise the first species a zero strength (its kicks still draw), the second 0.5.
+                inertia: rough.then_some(0.1 + 0.1 * k as f64),
+                beta: 0.5 * k as f64,
+                ..SpeciesChoice::new(count, mass, 1.0 + k as f64)
+            })
+            .unwrap();
     }
     ph.dimension = dimension;
     if rough {

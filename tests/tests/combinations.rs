@@ -1,0 +1,255 @@
+//! The combination matrix of docs/combinations.md, generated from the code: every combination
+//! of particle model (smooth, rough), species (one, two), dimension (3, 2), kernel (Maxwell,
+//! hard spheres, VHS), restitution law (constant, impact speed), drive (none, white noise,
+//! Gaussian thermostat, constant force, host medium) and scheme (no-splitting, Euler, Strang,
+//! time-stepped) is described as a core `Physics` and validated. A combination the core takes
+//! is launched and advanced here (n = 16, to t = 0.5) and must give finite observables: that is
+//! the test behind each "runs". A refused one shows the core's own refusal (the parameter and
+//! its rule, one place for each rule). The checked-in table must equal the generated one;
+//! `GDSMC_UPDATE_DOCS=1 cargo test -p gdsmc-validation --test combinations` rewrites it.
+
+use gdsmc_core::engine::EventLoop;
+use gdsmc_core::particles::{Particle, Particles, Spin};
+use gdsmc_core::physics::{
+    BackgroundKernel, DimensionChoice, DriveChoice, KernelChoice, Physics, RestitutionLaw,
+    RotationChoice, SchemeChoice, SpeciesChoice,
+};
+use gdsmc_core::rng::stream;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+const N: usize = 16;
+const T_END: f64 = 0.5;
+
+const KERNELS: [(&str, KernelChoice); 3] = [
+    ("Maxwell", KernelChoice::Maxwell { gamma: 1.0, c: 0.1 }),
+    ("HS", KernelChoice::HardSpheres { gamma: 1.0, c: 0.1 }),
+    (
+        "VHS",
+        KernelChoice::Vhs {
+            gamma: 1.0,
+            c: 0.1,
+            lambda: 0.5,
+        },
+    ),
+];
+
+const LAWS: [(&str, RestitutionLaw); 2] = [
+    ("constant", RestitutionLaw::Constant(0.8)),
+    (
+        "impact speed",
+        RestitutionLaw::ImpactSpeed {
+            beta0: 0.1,
+            delta: 0.2,
+        },
+    ),
+];
+
+const DRIVES: [(&str, DriveChoice); 5] = [
+    ("none", DriveChoice::None),
+    ("white noise", DriveChoice::WhiteNoise(0.5)),
+    ("Gaussian thermostat", DriveChoice::Gaussian(0.5)),
+    ("constant force", DriveChoice::ConstantForce(0.5)),
+    (
+        "host medium",
+        DriveChoice::HostMedium {
+            kernel: BackgroundKernel::HardSpheres,
+            c1: 1.0,
+            density: 1.0,
+            mass: 1.0,
+            temperature: 1.0,
+            drift: [0.0; 3],
+        },
+    ),
+];
+
+const SCHEMES: [(&str, SchemeChoice); 4] = [
+    ("no-splitting", SchemeChoice::NoSplitting),
+    ("Euler", SchemeChoice::Euler(0.125)),
+    ("Strang", SchemeChoice::Strang(0.125)),
+    ("time-stepped", SchemeChoice::TimeStepped(0.01)),
+];
+
+/// One block of the table: particle model, species, dimension.
+#[derive(Clone, Copy)]
+struct Block {
+    rough: bool,
+    mixture: bool,
+    dim: DimensionChoice,
+}
+
+impl Block {
+    fn title(&self) -> String {
+        format!(
+            "{}, {}, {}",
+            if self.rough { "Rough" } else { "Smooth" },
+            if self.mixture {
+                "two species"
+            } else {
+                "one species"
+            },
+            match self.dim {
+                DimensionChoice::Three => "spheres (d = 3)",
+                DimensionChoice::Two => "disks (d = 2)",
+            }
+        )
+    }
+
+    fn physics(
+        &self,
+        kernel: KernelChoice,
+        law: RestitutionLaw,
+        drive: DriveChoice,
+        scheme: SchemeChoice,
+    ) -> Physics {
+        let mut ph = Physics::new(N, kernel, law, drive, scheme);
+        ph.dimension = self.dim;
+        if self.mixture {
+            for (count, mass) in [(N / 2, 1.0), (N / 2, 2.0)] {
+                ph.species
+                    .push(SpeciesChoice {
+                        beta: 0.5,
+                        ..SpeciesChoice::new(count, mass, 1.0)
+                    })
+                    .expect("two species fit");
+            }
+        }
+        if self.rough {
+            ph.rotation = Some(RotationChoice {
+                temperature: 1.0,
+                ..RotationChoice::uniform(self.dim, 0.5)
+            });
+        }
+        ph
+    }
+}
+
+/// `Ok(())` when the combination validates, launches and advances to finite observables;
+/// `Err(reason)` with the core's refusal otherwise. A combination that validates but fails to
+/// run panics: the core took it, so it must run.
+fn outcome(ph: &Physics, what: &str) -> Result<(), String> {
+    let model = ph.validate().map_err(|e| e.to_string())?;
+    let mut buf = vec![Particle::default(); N];
+    let mut spins = vec![Spin::default(); N];
+    let mut p = if model.rotates() {
+        Particles::with_spins(&mut buf, &mut spins).expect("equal lengths")
+    } else {
+        Particles::new(&mut buf).expect("n >= 2")
+    };
+    let mut rng = stream(7, 0);
+    let (mut e, _) = model
+        .launch(&mut p, 0.0, &mut rng)
+        .unwrap_or_else(|err| panic!("{what}: validated but does not start: {err:?}"));
+    let obs = e
+        .advance_to(&mut p, T_END, &mut rng)
+        .unwrap_or_else(|err| panic!("{what}: validated but does not run: {err:?}"));
+    assert!(
+        obs.non_finite().is_none() && obs.t_bulk > 0.0,
+        "{what}: {obs:?}"
+    );
+    Ok(())
+}
+
+/// The markdown of docs/combinations.md.
+fn generate() -> String {
+    let mut reasons: BTreeMap<String, usize> = BTreeMap::new();
+    let mut body = String::new();
+    let mut runs = 0;
+    let mut total = 0;
+    for rough in [false, true] {
+        for mixture in [false, true] {
+            for dim in [DimensionChoice::Three, DimensionChoice::Two] {
+                let b = Block {
+                    rough,
+                    mixture,
+                    dim,
+                };
+                writeln!(body, "\n## {}\n", b.title()).unwrap();
+                let head: Vec<&str> = SCHEMES.iter().map(|s| s.0).collect();
+                writeln!(body, "| drive | law | {} |", head.join(" | ")).unwrap();
+                writeln!(body, "|---|---|{}", "---|".repeat(SCHEMES.len())).unwrap();
+                for (dname, drive) in DRIVES {
+                    for (lname, law) in LAWS {
+                        let mut cells = Vec::new();
+                        for (sname, scheme) in SCHEMES {
+                            // Per kernel: "runs" or the refusal's footnote number.
+                            let mut by_outcome: Vec<(String, Vec<&str>)> = Vec::new();
+                            for (kname, kernel) in KERNELS {
+                                let what =
+                                    format!("{}; {kname}; {lname}; {dname}; {sname}", b.title());
+                                let ph = b.physics(kernel, law, drive, scheme);
+                                total += 1;
+                                let cell = match outcome(&ph, &what) {
+                                    Ok(()) => {
+                                        runs += 1;
+                                        "runs".to_string()
+                                    }
+                                    Err(r) => {
+                                        let k = reasons.len() + 1;
+                                        format!("({})", *reasons.entry(r).or_insert(k))
+                                    }
+                                };
+                                match by_outcome.iter_mut().find(|(c, _)| *c == cell) {
+                                    Some((_, ks)) => ks.push(kname),
+                                    None => by_outcome.push((cell, vec![kname])),
+                                }
+                            }
+                            cells.push(if by_outcome.len() == 1 {
+                                by_outcome[0].0.clone()
+                            } else {
+                                by_outcome
+                                    .iter()
+                                    .map(|(c, ks)| format!("{}: {c}", ks.join(", ")))
+                                    .collect::<Vec<_>>()
+                                    .join("; ")
+                            });
+                        }
+                        writeln!(body, "| {dname} | {lname} | {} |", cells.join(" | ")).unwrap();
+                    }
+                }
+            }
+        }
+    }
+    let mut out = String::new();
+    writeln!(out, "# Combinations of the physics").unwrap();
+    writeln!(
+        out,
+        "\nGenerated by tests/tests/combinations.rs from the core's validation (do not edit; \
+         `GDSMC_UPDATE_DOCS=1 cargo test -p gdsmc-validation --test combinations` rewrites \
+         it, and CI fails when it differs). Every combination of particle model, species, \
+         dimension, kernel (Maxwell, hard spheres HS, variable hard spheres VHS), restitution \
+         law, drive and scheme is described and validated; each cell marked \"runs\" was \
+         launched and advanced by that test (n = {N}, to t = {T_END}) to finite observables, and \
+         each refused one shows the core's refusal, numbered below. Where the kernels differ \
+         the cell names them.\n\n{runs} of {total} combinations run."
+    )
+    .unwrap();
+    out.push_str(&body);
+    writeln!(out, "\n## Refusals\n").unwrap();
+    let mut by_number: Vec<(usize, String)> = reasons.into_iter().map(|(r, k)| (k, r)).collect();
+    by_number.sort();
+    for (k, r) in by_number {
+        writeln!(out, "{k}. {}", r.replace('\n', " ")).unwrap();
+    }
+    out
+}
+
+fn doc_path() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/combinations.md")
+}
+
+#[test]
+fn the_combination_table_is_the_codes() {
+    let generated = generate();
+    let path = doc_path();
+    if std::env::var_os("GDSMC_UPDATE_DOCS").is_some() {
+        std::fs::write(&path, &generated).expect("docs/combinations.md is writable");
+        return;
+    }
+    let checked_in = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        checked_in == generated,
+        "docs/combinations.md is not the code's table: rerun with GDSMC_UPDATE_DOCS=1\n{generated}"
+    );
+}
