@@ -40,12 +40,6 @@ pub trait CollisionMap: Copy {
         counts: &mut Counts,
     ) -> (Vec3, Vec3);
 
-    /// The partners' reduced moments of inertia `(kappa_1, kappa_2)` of a map with spins (a
-    /// mixture's per-species rotational temperatures read them); `(0, 0)` for smooth particles.
-    fn inertia(&self) -> (Real, Real) {
-        (0.0, 0.0)
-    }
-
     /// The rotational observables of `p` (stored with rim velocities `w_phys = scale w`) in
     /// dimension `dim`; `None` for smooth particles.
     fn rough(

@@ -42,6 +42,12 @@ pub trait PairLaw: Copy + core::fmt::Debug {
 
     /// The map between partners of masses `m_s` (first) and `m_t` (second).
     fn between(&self, m_s: Real, m_t: Real) -> Self::Map;
+
+    /// The partners' reduced moments of inertia `(kappa_1, kappa_2)` of a law with spins (a
+    /// mixture's per-species rotational temperatures read them); `(0, 0)` for smooth particles.
+    fn inertia(&self) -> (Real, Real) {
+        (0.0, 0.0)
+    }
 }
 
 impl<A: Restitution + core::fmt::Debug> PairLaw for A {

@@ -136,7 +136,7 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
             maps,
             kappa: core::array::from_fn(|s| {
                 let s = s.min(sp.len() - 1);
-                maps[pair_index(sp.len(), s, s)].inertia().0
+                physics[pair_index(sp.len(), s, s)].restitution.inertia().0
             }),
             pair_of: core::array::from_fn(|k| sp.pair(k.min(types - 1))),
             drives: core::array::from_fn(|k| drives[k.min(sp.len() - 1)]),

@@ -84,9 +84,8 @@ impl core::error::Error for RoughError {}
 /// The collision map of rough spheres with coefficients `alpha`, `beta`, `kappa`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoughMap {
-    /// `alpha` as the smooth law (the `beta = -1` collision's; one rule for its range).
+    /// `alpha`, as the smooth law (the `beta = -1` collision's; one rule for its range).
     smooth: crate::restitution::Constant,
-    alpha: Real,
     beta: Real,
     kappa: Real,
     eta_n: Real,
@@ -124,7 +123,6 @@ impl RoughMap {
         }
         Ok(RoughMap {
             smooth,
-            alpha,
             beta,
             kappa,
             eta_n: 0.5 * (1.0 + alpha),
@@ -135,7 +133,17 @@ impl RoughMap {
 
     /// The normal restitution `alpha`.
     pub fn alpha(&self) -> Real {
-        self.alpha
+        self.smooth.alpha()
+    }
+
+    /// `alpha` as the smooth restitution law.
+    pub fn smooth(&self) -> crate::restitution::Constant {
+        self.smooth
+    }
+
+    /// The spin-transfer coefficients `(eta_t, eta_t / kappa)` (module docs).
+    pub(crate) fn spin_transfer(&self) -> (Real, Real) {
+        (self.eta_t, self.eta_w)
     }
 
     /// The tangential restitution `beta`.
@@ -185,7 +193,7 @@ impl RoughMap {
         };
         let gt2 = (g.norm2() - gn2).max(0.0);
         -0.25
-            * ((1.0 - self.alpha * self.alpha) * gn2
+            * ((1.0 - self.alpha() * self.alpha()) * gn2
                 + (1.0 - self.beta * self.beta) * self.kappa / (1.0 + self.kappa) * gt2)
     }
 }
@@ -259,10 +267,6 @@ impl crate::engine::CollisionMap for RoughMap {
         p.set_velocity(j, b);
         p.set_spin(j, wb);
         (a, b)
-    }
-
-    fn inertia(&self) -> (Real, Real) {
-        (self.kappa, self.kappa)
     }
 
     fn rough(

@@ -18,8 +18,9 @@
 //!
 //! Momentum `m_1 v1 + m_2 v2` is kept, and the energy `sum m_i (|v_i|^2 + kappa_i |w_i|^2)/2`
 //! when `alpha = beta = 1`. For equal masses and inertia `c_i` is [`RoughMap`]'s `eta_t/kappa`
-//! and `kappa c_i` its `eta_t`: such a pair is collided by [`RoughMap::collide`] itself, so a
-//! one-species rough mixture has the one-species rough gas's bits. `c_i` is computed in the
+//! and `kappa c_i` its `eta_t`: such a pair takes [`RoughMap`]'s own coefficients, and the
+//! same operations give [`RoughMap::collide`]'s bits, so a one-species rough mixture has the
+//! one-species rough gas's bits. `c_i` is computed in the
 //! form above, finite for any kappa (no division of a rounding residue by a small kappa; see
 //! [`super::map`]).
 //!
@@ -102,13 +103,22 @@ impl RoughPairLaw {
 impl PairLaw for RoughPairLaw {
     type Map = RoughPair;
 
+    fn inertia(&self) -> (Real, Real) {
+        RoughPairLaw::inertia(self)
+    }
+
     fn between(&self, m_1: Real, m_2: Real) -> RoughPair {
-        let (alpha, beta) = (self.first.alpha(), self.first.beta());
+        let beta = self.first.beta();
         let (k1, k2) = self.inertia();
+        // The restitution's one rule was checked by `first`.
+        let smooth = self.first.smooth().between(m_1, m_2);
         if m_1 == m_2 && k1 == k2 {
+            // The one-species map's own coefficients: the same bits.
+            let (t, w) = self.first.spin_transfer();
             return RoughPair {
-                same: Some(self.first),
-                ..RoughPair::default()
+                smooth,
+                tangential: (t, t),
+                spin: (w, w),
             };
         }
         let total = m_1 + m_2;
@@ -117,40 +127,32 @@ impl PairLaw for RoughPairLaw {
         let c1 = (1.0 + beta) / (1.0 + i1 / mu + i1 / i2);
         let c2 = (1.0 + beta) / (1.0 + i2 / mu + i2 / i1);
         RoughPair {
-            same: None,
-            // The restitution's one rule was checked by `first`.
-            smooth: crate::restitution::Constant::new(alpha)
-                .ok()
-                .filter(|_| beta == -1.0)
-                .map(|law| law.between(m_1, m_2)),
-            normal: ((1.0 + alpha) * (m_2 / total), (1.0 + alpha) * (m_1 / total)),
+            smooth,
             tangential: (k1 * c1, k2 * c2),
             spin: (c1, c2),
-            kappa: (k1, k2),
         }
     }
 }
 
-/// The collision map of a rough pair type between given masses (module docs).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// The collision map of a rough pair type between given masses (module docs). Compact (nine
+/// numbers): a mixture's loop holds one per pair type, and the firmware's memory holds the
+/// loop.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoughPair {
-    /// Equal partners: the one-species map.
-    same: Option<RoughMap>,
-    /// `beta = -1`: the smooth pair of these masses ([`super::map`]'s smooth limit).
-    smooth: Option<MassMap<Constant>>,
-    /// `((1 + alpha) mu_2, (1 + alpha) mu_1)`.
-    normal: (Real, Real),
-    /// `(kappa_1 c_1, kappa_2 c_2)`.
+    /// The smooth pair of these masses: `alpha` and `mu_s`, `mu_t` (the normal part, and the
+    /// whole collision at `beta = -1`, [`super::map`]'s smooth limit).
+    smooth: MassMap<Constant>,
+    /// `(kappa_1 c_1, kappa_2 c_2)`; equal partners: [`RoughMap`]'s `eta_t`.
     tangential: (Real, Real),
-    /// `(c_1, c_2)`.
+    /// `(c_1, c_2)`; equal partners: [`RoughMap`]'s `eta_t / kappa`.
     spin: (Real, Real),
-    /// `(kappa_1, kappa_2)`.
-    kappa: (Real, Real),
 }
 
 impl RoughPair {
     /// Post-collisional `(v1', w1', v2', w2')` for the unit vector `n` from 1 to 2 (module
-    /// docs). With `beta = -1` the rim velocities are returned unchanged, bit for bit.
+    /// docs). With `beta = -1` the rim velocities are returned unchanged, bit for bit; equal
+    /// partners get [`RoughMap::collide`]'s bits (the same coefficients, and
+    /// `(1 + alpha) mu = (1 + alpha)/2` exactly).
     #[inline(always)]
     pub fn collide(
         &self,
@@ -160,14 +162,13 @@ impl RoughPair {
         w2: Vec3,
         n: Vec3,
     ) -> (Vec3, Vec3, Vec3, Vec3) {
-        if let Some(m) = &self.same {
-            return m.collide(v1, w1, v2, w2, n);
-        }
         let g = RoughMap::contact_velocity(v1, w1, v2, w2, n);
         let gn = g.dot(n) * n;
         let gt = g - gn;
-        let dv1 = -(self.normal.0 * gn) - self.tangential.0 * gt;
-        let dv2 = self.normal.1 * gn + self.tangential.1 * gt;
+        let a = 1.0 + self.smooth.law.alpha();
+        let m = &self.smooth.masses;
+        let dv1 = -((a * m.mu_t) * gn) - self.tangential.0 * gt;
+        let dv2 = (a * m.mu_s) * gn + self.tangential.1 * gt;
         if self.spin.0 == 0.0 && self.spin.1 == 0.0 {
             return (v1 + dv1, w1, v2 + dv2, w2);
         }
@@ -184,15 +185,8 @@ impl RoughPair {
 impl CollisionMap for RoughPair {
     const SPINS: bool = true;
 
-    fn inertia(&self) -> (Real, Real) {
-        match self.same {
-            Some(m) => (m.kappa(), m.kappa()),
-            None => self.kappa,
-        }
-    }
-
-    /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughPair::collide`]; equal
-    /// partners by [`RoughMap`], and with `beta = -1` the smooth pair's own code (the smooth
+    /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughPair::collide`]; with
+    /// `beta = -1` the smooth pair's own code (the smooth
     /// limit of [`super::map`]), so a rough mixture with `beta = -1` has the smooth mixture's
     /// bits.
     #[inline(always)]
@@ -204,12 +198,10 @@ impl CollisionMap for RoughPair {
         rng: &mut R,
         counts: &mut Counts,
     ) -> (Vec3, Vec3) {
-        match (&self.same, &self.smooth) {
-            (Some(m), _) => return m.collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts),
-            (None, Some(m)) if smooth_limit::<K, G>(0.0) => {
-                return m.collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
-            }
-            _ => {}
+        if self.spin == (0.0, 0.0) && smooth_limit::<K, G>(0.0) {
+            return self
+                .smooth
+                .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
         }
         let nrm = G::impact(vi - vj, rng);
         let (a, wa, b, wb) = self.collide(vi, p.spin(i), vj, p.spin(j), nrm);
