@@ -32,7 +32,8 @@ fn approximation(mu: f64, alpha: f64) -> f64 {
         lambda: 1.0,
         beta: vec![0.0, 0.0],
     }
-    .steady_ratios();
+    .steady_ratios()
+    .expect("the approximation converges");
     r[0] / r[1]
 }
 

@@ -90,6 +90,29 @@ impl Model {
         self.mixture.as_ref().map(|m| &m.species)
     }
 
+    /// A mixture's pair cross sections, the factor of each pair type's kernel
+    /// (`((d_s + d_t)/2)^(d - 1)`), in [`crate::mixture::pair_index`] order (`None`: one
+    /// species).
+    pub fn pair_cross_sections(&self) -> Option<&[Real]> {
+        self.mixture
+            .as_ref()
+            .map(|m| &m.factors[..m.species.pair_types()])
+    }
+
+    /// A rough mixture's law of each pair type (alpha, beta, the partners' kappa), in
+    /// [`crate::mixture::pair_index`] order (`None`: not a rough mixture).
+    pub fn rough_pair_laws(&self) -> Option<&[crate::rough::RoughPairLaw]> {
+        let m = self.mixture.as_ref()?;
+        Some(&m.rotation.as_ref()?.laws[..m.species.pair_types()])
+    }
+
+    /// A rough mixture's white noise of each species (`None`: not driven, or not a rough
+    /// mixture).
+    pub fn rough_noises(&self) -> Option<&[crate::rough::RoughNoise]> {
+        let m = self.mixture.as_ref()?;
+        Some(&m.rotation.as_ref()?.noises.as_ref()?[..m.species.len()])
+    }
+
     /// The initial distribution as a sampler (of a one-species gas; a mixture's species start
     /// from their own Maxwellians).
     pub fn initial(&self) -> &MaxwellianMixture<MAX_COMPONENTS> {

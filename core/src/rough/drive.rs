@@ -60,9 +60,16 @@ impl<G: Geometry> RoughNoise<G> {
         }
     }
 
-    /// `dT_tr/dt` from the noise: `2 beta` (0 when translation is not driven).
+    /// `dT_tr/dt` from the noise: `2 beta` (0 when translation is not driven); per unit
+    /// mass, the variance rate of each translational component.
     pub fn heating_tr(&self) -> Real {
         self.tr.unwrap_or(0.0)
+    }
+
+    /// `2 beta_rot / kappa`, the variance rate of each rim-velocity component: `dT_rot/dt =
+    /// 2 beta_rot` per unit mass.
+    pub fn rim_rate(&self) -> Real {
+        self.rot
     }
 }
 

@@ -142,16 +142,103 @@ fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianA
     })
 }
 
+/// Per species `k` of a rough mixture: the Maxwellian approximation of `theta_sk` in the
+/// cooling or steady state (its `T_sk_ratio_MA` is [`SPECIES_REFERENCES`]'s).
+const ROUGH_SPECIES_REFERENCES: [&str; gdsmc_core::mixture::MAX_SPECIES] =
+    ["theta_s0_MA", "theta_s1_MA", "theta_s2_MA", "theta_s3_MA"];
+
+/// The Maxwellian approximation of a rough mixture scene (`reference/rough_mixture.rs`),
+/// from the validated model: mole fractions, masses, each pair's law (alpha, beta, the
+/// partners' kappa) and cross section, the kernel, each species' white noise.
+pub fn rough_mixture_approximation(
+    scene: &Scene,
+) -> Option<crate::reference::rough_mixture::RoughMixtureApproximation> {
+    let model = scene.model();
+    let (sp, laws, sections) = (
+        model.species()?,
+        model.rough_pair_laws()?,
+        model.pair_cross_sections()?,
+    );
+    let (strength, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
+    let ns = sp.len();
+    let masses: Vec<f64> = (0..ns).map(|s| sp.mass(s)).collect();
+    let inertia: Vec<f64> = (0..ns)
+        .map(|s| laws[gdsmc_core::mixture::pair_index(ns, s, s)].inertia().0)
+        .collect();
+    let noises = model.rough_noises();
+    let heat = |f: &dyn Fn(&gdsmc_core::rough::RoughNoise, usize) -> f64| -> Vec<f64> {
+        (0..ns)
+            .map(|s| noises.map_or(0.0, |n| f(&n[s], s)))
+            .collect()
+    };
+    Some(crate::reference::rough_mixture::RoughMixtureApproximation {
+        d: scene.dimension(),
+        fractions: (0..ns).map(|s| sp.fraction(s)).collect(),
+        heating: heat(&|n, s| masses[s] * n.heating_tr()),
+        heating_rot: heat(&|n, s| inertia[s] * masses[s] * n.rim_rate()),
+        masses,
+        inertia,
+        strength: sections
+            .iter()
+            .map(|f| 4.0 * std::f64::consts::PI * strength * f)
+            .collect(),
+        alpha: laws.iter().map(|l| l.alpha()).collect(),
+        beta: laws.iter().map(|l| l.beta()).collect(),
+        lambda,
+    })
+}
+
+/// A rough mixture's curves: each species' `T_sk_ratio_MA` and `theta_sk_MA` of the cooling
+/// or steady state.
+fn rough_mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
+    let Some(ma) = rough_mixture_approximation(scene) else {
+        return Vec::new();
+    };
+    let src =
+        "Maxwellian approximation of the cooling (or steady) state (Santos, Kremer and Garzó 2010)";
+    let (cols, rough) = (
+        crate::run::columns::SPECIES_COLUMNS,
+        crate::run::columns::ROUGH_SPECIES_COLUMNS,
+    );
+    let Some((ratios, theta)) = ma.steady() else {
+        eprintln!("{src}: not converged");
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    for s in 0..ratios.len() {
+        let (r, th) = (ratios[s], theta[s]);
+        out.push(ReferenceCurve {
+            name: SPECIES_REFERENCES[s][2],
+            of: cols[s][1],
+            source: src,
+            curve: Box::new(move |_| r),
+        });
+        out.push(ReferenceCurve {
+            name: ROUGH_SPECIES_REFERENCES[s],
+            of: rough[s][1],
+            source: src,
+            curve: Box::new(move |_| th),
+        });
+    }
+    out
+}
+
 /// The reference curves of a mixture scene.
 fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     use crate::reference::mixture::MaxwellMixture;
+    if scene.physics().rotation.is_some() {
+        return rough_mixture_curves(scene);
+    }
     let mut out = Vec::new();
     let Some(ma) = approximation(scene) else {
         return out;
     };
     let ph = &scene.physics();
     let species = ph.species.len();
-    let approx = ma.steady_ratios();
+    let Some(approx) = ma.steady_ratios() else {
+        eprintln!("Garzó and Dufty's Maxwellian approximation: not converged");
+        return out;
+    };
     let cols = crate::run::columns::SPECIES_COLUMNS;
     for s in 0..species {
         let r = approx[s];

@@ -398,8 +398,9 @@ impl MaxwellianApproximation {
     /// The species temperatures over the mixture temperature, `T_s / T` with
     /// `T = sum x_s T_s`, of the cooling state (no drive) or the steady state (white noise):
     /// followed in time from equal temperatures (RK4, the temperature rescaled to 1 after
-    /// each step when cooling) until the ratios change by less than 1e-13.
-    pub fn steady_ratios(&self) -> Vec<f64> {
+    /// each step when cooling) until the ratios change by less than 1e-13; `None` if that
+    /// takes more than 10^6 steps.
+    pub fn steady_ratios(&self) -> Option<Vec<f64>> {
         let ns = self.masses.len();
         let heated = self.beta.iter().any(|&b| b > 0.0);
         let mut theta: Vec<f64> = self.masses.iter().map(|m| 1.0 / m).collect();
@@ -411,10 +412,12 @@ impl MaxwellianApproximation {
         };
         let mut last = ratios(&theta);
         for _ in 0..1_000_000 {
-            // A step of a twentieth of the fastest relaxation time.
+            // A step of a twentieth of the fastest relaxation time: of the collisions' rates
+            // alone, which stay finite at a heated steady state (the whole rate vanishes
+            // there, and a step scaled by it grew without bound and never converged).
             let r = self.rates(&theta);
             let scale = (0..ns)
-                .map(|s| (r[s] / theta[s]).abs())
+                .map(|s| ((r[s] - 2.0 * self.beta[s]) / theta[s]).abs())
                 .fold(1e-300, f64::max);
             let h = 0.05 / scale;
             let add = |x: &[f64], k: &[f64], f: f64| -> Vec<f64> {
@@ -441,10 +444,10 @@ impl MaxwellianApproximation {
                 .fold(0.0, f64::max);
             last = now;
             if change < 1e-13 {
-                break;
+                return Some(last);
             }
         }
-        last
+        None
     }
 }
 
@@ -473,7 +476,8 @@ mod approximation_tests {
             lambda: 0.0,
             beta: vec![0.0, 0.0],
         }
-        .steady_ratios();
+        .steady_ratios()
+        .unwrap();
         let r_exact = t[0] / t[1];
         let r = approx[0] / approx[1];
         assert!((r - r_exact).abs() < 1e-9 * r_exact, "{r} vs {r_exact}");
@@ -490,7 +494,8 @@ mod approximation_tests {
             lambda: 1.0,
             beta: vec![0.0, 0.0],
         }
-        .steady_ratios();
+        .steady_ratios()
+        .unwrap();
         assert!(
             (a[0] - 1.0).abs() < 1e-12 && (a[1] - 1.0).abs() < 1e-12,
             "{a:?}"
@@ -510,7 +515,8 @@ mod approximation_tests {
                 lambda: 1.0,
                 beta: vec![0.0, 0.0],
             }
-            .steady_ratios();
+            .steady_ratios()
+            .unwrap();
             r[0] / r[1]
         };
         assert!(
@@ -520,5 +526,32 @@ mod approximation_tests {
             ratio(0.25)
         );
         assert!((ratio(1.0) - 1.0).abs() < 1e-12);
+    }
+
+    /// The heated steady state is where the rates vanish: the ratios against small fixed
+    /// Euler steps followed to rest (independent of the adaptive step, which once grew
+    /// without bound there and returned a state that was not steady).
+    #[test]
+    fn the_heated_steady_state_is_where_the_rates_vanish() {
+        let a = MaxwellianApproximation {
+            fractions: vec![0.5, 0.5],
+            masses: vec![2.0, 1.0],
+            kappa: vec![4.0, 3.6, 3.2],
+            alpha: vec![0.8; 3],
+            lambda: 1.0,
+            beta: vec![1.0, 1.0],
+        };
+        let r = a.steady_ratios().unwrap();
+        let mut theta = vec![0.5, 1.0];
+        for _ in 0..200_000 {
+            let k = a.rates(&theta);
+            theta.iter_mut().zip(&k).for_each(|(x, d)| *x += 1e-3 * d);
+        }
+        assert!(a.rates(&theta).iter().all(|d| d.abs() < 1e-10));
+        let t: Vec<f64> = (0..2).map(|s| a.masses[s] * theta[s]).collect();
+        let mean = 0.5 * (t[0] + t[1]);
+        for s in 0..2 {
+            assert!((r[s] - t[s] / mean).abs() < 1e-9, "{r:?} vs {t:?}");
+        }
     }
 }

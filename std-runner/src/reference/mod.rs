@@ -8,4 +8,5 @@ pub mod exact;
 pub mod hydro;
 pub mod mixture;
 pub mod rough;
+pub mod rough_mixture;
 pub mod thermostat;
