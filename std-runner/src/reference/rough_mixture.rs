@@ -235,7 +235,7 @@ mod tests {
                 heating_rot: vec![0.0; 2],
             };
             let draws = 400_000;
-            let mut sums = vec![Vec::with_capacity(draws); 4];
+            let mut sums: Vec<Vec<f64>> = (0..4).map(|_| Vec::with_capacity(draws)).collect();
             for _ in 0..draws {
                 let v1 = (tr[0] / m[0]).sqrt() * G::normal(&mut rng);
                 let v2 = (tr[1] / m[1]).sqrt() * G::normal(&mut rng);
