@@ -131,7 +131,8 @@ pub struct gdsmc_config {
     /// Nonzero: rough particles (Huthmann and Zippelius 1997): each has a rim velocity
     /// `w = (sigma/2) omega` beside its velocity, and `restitution` is the normal restitution.
     /// The drive is none or white noise, the scheme no splitting, the restitution constant.
-    /// With species, a rough mixture: every species and pair takes the values below. A caller
+    /// With species, a rough mixture: every species and pair takes the values below unless
+    /// `species_rotation_set` and `pair_tangential_restitution_set` give their own. A caller
     /// buffer needs room for the spins: gdsmc_config_footprint.
     pub rough: u32,
     /// Rough particles: tangential restitution beta in [-1, 1] (-1: smooth, rotation untouched;
@@ -145,6 +146,23 @@ pub struct gdsmc_config {
     /// Rough particles: white-noise strength on rotation >= 0 (`dT_rot/dt = 2 rotation_noise`
     /// from it alone).
     pub rotation_noise: f64,
+    /// A rough mixture: nonzero, each species takes its own `species_inertia`,
+    /// `species_rotation_temperature` and `species_rotation_noise`; 0: every species takes
+    /// `inertia`, `rotation_temperature` and `rotation_noise`.
+    pub species_rotation_set: u32,
+    /// A rough mixture: each species' reduced moment of inertia (as `inertia`).
+    pub species_inertia: [f64; GDSMC_MAX_SPECIES],
+    /// A rough mixture: each species' start rotational temperature (>= 0).
+    pub species_rotation_temperature: [f64; GDSMC_MAX_SPECIES],
+    /// A rough mixture: each species' white noise on rotation (>= 0; `dT_rot,s/dt =
+    /// 2 m_s species_rotation_noise[s]` from it alone).
+    pub species_rotation_noise: [f64; GDSMC_MAX_SPECIES],
+    /// A rough mixture: nonzero, `pair_tangential_restitution` holds the tangential
+    /// restitution of every species pair; 0: every pair has `tangential_restitution`.
+    pub pair_tangential_restitution_set: u32,
+    /// Tangential restitution of each species pair (s, t), s <= t, in `pair_restitution`'s
+    /// order: the first S (S + 1)/2 entries are used.
+    pub pair_tangential_restitution: [f64; GDSMC_MAX_PAIRS],
     /// The dimension: 3 (spheres, the default) or 2 (disks: velocities in the (x, y) plane,
     /// `z` components zero; a rough disk's rim velocity along z, `inertia` in (0, 1], 1/2 for
     /// uniform disks). Disks take the no-splitting scheme, a constant restitution, no drive or
@@ -213,6 +231,12 @@ impl gdsmc_config {
             inertia: SMOOTH.kappa,
             rotation_temperature: SMOOTH.temperature,
             rotation_noise: SMOOTH.noise,
+            species_rotation_set: 0,
+            species_inertia: [SMOOTH.kappa; GDSMC_MAX_SPECIES],
+            species_rotation_temperature: [SMOOTH.temperature; GDSMC_MAX_SPECIES],
+            species_rotation_noise: [SMOOTH.noise; GDSMC_MAX_SPECIES],
+            pair_tangential_restitution_set: 0,
+            pair_tangential_restitution: [SMOOTH.beta; GDSMC_MAX_PAIRS],
             dimension: 3,
         }
     }

@@ -55,12 +55,10 @@ fn field(p: Param) -> &'static str {
         Param::SpeciesDiameter(_) => "species_diameter",
         Param::SpeciesBeta(_) => "species_beta",
         Param::PairRestitution(..) => "pair_restitution",
-        // Not C fields (yet): a C rough mixture takes the rotation's values for every species
-        // and pair, so these name what they would be.
-        Param::SpeciesInertia(_) => "inertia",
-        Param::SpeciesRotationTemperature(_) => "rotation_temperature",
-        Param::SpeciesRotationNoise(_) => "rotation_noise",
-        Param::PairTangentialRestitution(..) => "tangential_restitution",
+        Param::SpeciesInertia(_) => "species_inertia",
+        Param::SpeciesRotationTemperature(_) => "species_rotation_temperature",
+        Param::SpeciesRotationNoise(_) => "species_rotation_noise",
+        Param::PairTangentialRestitution(..) => "pair_tangential_restitution",
         Param::Rotation => "rough",
         Param::TangentialRestitution => "tangential_restitution",
         Param::Inertia => "inertia",
@@ -77,8 +75,13 @@ fn index(p: Param, species: usize) -> Option<usize> {
         | Param::SpeciesMass(k)
         | Param::SpeciesTemperature(k)
         | Param::SpeciesDiameter(k)
-        | Param::SpeciesBeta(k) => Some(k),
-        Param::PairRestitution(s, t) => Some(gdsmc_core::mixture::pair_index(species, s, t)),
+        | Param::SpeciesBeta(k)
+        | Param::SpeciesInertia(k)
+        | Param::SpeciesRotationTemperature(k)
+        | Param::SpeciesRotationNoise(k) => Some(k),
+        Param::PairRestitution(s, t) | Param::PairTangentialRestitution(s, t) => {
+            Some(gdsmc_core::mixture::pair_index(species, s, t))
+        }
         _ => None,
     }
 }
@@ -198,6 +201,8 @@ impl gdsmc_config {
             ));
         }
         let mut total: u64 = 0;
+        // A species' own rotation only where there is one (the core refuses it otherwise).
+        let own = self.rough != 0 && self.species_rotation_set != 0;
         for k in 0..s {
             let Ok(count) = usize::try_from(self.species_count[k]) else {
                 return invalid(msg!("config.species_count[{k}] is too large"));
@@ -210,9 +215,9 @@ impl gdsmc_config {
                 temperature: self.species_temperature[k],
                 diameter: self.species_diameter[k],
                 beta: self.species_beta[k],
-                inertia: None,
-                rotation_temperature: None,
-                rotation_noise: None,
+                inertia: own.then_some(self.species_inertia[k]),
+                rotation_temperature: own.then_some(self.species_rotation_temperature[k]),
+                rotation_noise: own.then_some(self.species_rotation_noise[k]),
             });
             if count == 0 {
                 return invalid(msg!("config.species_count[{k}] must be >= 1, got 0"));
@@ -228,6 +233,11 @@ impl gdsmc_config {
             physics.restitution = RestitutionLaw::Constant(1.0);
             for &alpha in &self.pair_restitution[..s * (s + 1) / 2] {
                 let _ = physics.pair_restitution.push(alpha);
+            }
+        }
+        if s > 0 && self.rough != 0 && self.pair_tangential_restitution_set != 0 {
+            for &beta in &self.pair_tangential_restitution[..s * (s + 1) / 2] {
+                let _ = physics.pair_tangential_restitution.push(beta);
             }
         }
         Ok(())
@@ -260,6 +270,23 @@ impl gdsmc_config {
             cfg.inertia = r.kappa;
             cfg.rotation_temperature = r.temperature;
             cfg.rotation_noise = r.noise;
+            // A species without its own value takes the rotation's: the same physics.
+            for (k, s) in p.species.iter().enumerate() {
+                cfg.species_inertia[k] = s.inertia.unwrap_or(r.kappa);
+                cfg.species_rotation_temperature[k] =
+                    s.rotation_temperature.unwrap_or(r.temperature);
+                cfg.species_rotation_noise[k] = s.rotation_noise.unwrap_or(r.noise);
+            }
+            cfg.species_rotation_set = p.species.iter().any(|s| {
+                s.inertia.is_some()
+                    || s.rotation_temperature.is_some()
+                    || s.rotation_noise.is_some()
+            }) as u32;
+        }
+        if !p.pair_tangential_restitution.is_empty() {
+            cfg.pair_tangential_restitution_set = 1;
+            cfg.pair_tangential_restitution[..p.pair_tangential_restitution.len()]
+                .copy_from_slice(&p.pair_tangential_restitution);
         }
         if !p.pair_restitution.is_empty() {
             cfg.pair_restitution_set = 1;

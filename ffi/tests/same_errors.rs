@@ -275,6 +275,88 @@ fn a_mixture_gets_the_same_words() {
     assert_eq!(c_error(&c), "config.species_count[1] must be >= 1, got 0");
 }
 
+/// A rough mixture's own rotation per species and pair: the same words from the scene (at the
+/// species' or the rotation's key) and from C (at the array field with its index); and a scene
+/// read by `gdsmc_config_from_toml` keeps every species' and pair's rotation.
+#[test]
+fn a_rough_mixture_gets_the_same_words() {
+    let mut base = gdsmc_config::example3();
+    base.kernel = gdsmc::GDSMC_KERNEL_HARD_SPHERES;
+    (base.gamma, base.c, base.n, base.species, base.rough) = (1.0, 1.0, 64, 2, 1);
+    base.tangential_restitution = 0.5;
+    base.species_count[..2].copy_from_slice(&[32, 32]);
+    base.species_mass[..2].copy_from_slice(&[1.0, 2.0]);
+    base.species_rotation_set = 1;
+    let mix = SCENE.replace(
+        "[collisions]",
+        "[[species]]\nfraction = 1.0\n[[species]]\nfraction = 1.0\nmass = 2.0\n[rotation]\ntangential_restitution = 0.5\n[collisions]",
+    );
+    let scene = |sets: &[&str]| {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        gdsmc_scene::parse_with_overrides(Path::new("s.toml"), &mix, &sets)
+            .unwrap_err()
+            .to_string()
+    };
+    let cases: [(&[&str], &str, &str, Edit); 4] = [
+        (
+            &["species[1].inertia=0.9"],
+            "species[1].inertia",
+            "species_inertia[1]",
+            |c| c.species_inertia[1] = 0.9,
+        ),
+        (
+            &["species[0].rotation_temperature=-1"],
+            "species[0].rotation_temperature",
+            "species_rotation_temperature[0]",
+            |c| c.species_rotation_temperature[0] = -1.0,
+        ),
+        (
+            &["species[1].rotation_noise=-1"],
+            "species[1].rotation_noise",
+            "species_rotation_noise[1]",
+            |c| c.species_rotation_noise[1] = -1.0,
+        ),
+        (
+            &["rotation.pair_tangential_restitution=[[0.5, 0.2], [0.2, 1.5]]"],
+            "rotation.pair_tangential_restitution",
+            "pair_tangential_restitution[2]",
+            |c| {
+                c.pair_tangential_restitution_set = 1;
+                c.pair_tangential_restitution[..3].copy_from_slice(&[0.5, 0.2, 1.5]);
+            },
+        ),
+    ];
+    for (sets, key, field, edit) in cases {
+        let s = scene(sets);
+        let mut c = base;
+        edit(&mut c);
+        let cmsg = c_error(&c);
+        let problem = cmsg
+            .strip_prefix(&format!("config.{field} "))
+            .unwrap_or_else(|| panic!("{cmsg}"));
+        assert!(
+            s.ends_with(&format!("`{key}` {problem}")),
+            "scene: {s}\nC:     {cmsg}"
+        );
+    }
+    // The shipped rough disk mixture through gdsmc_config_from_toml: each species' inertia and
+    // each pair's tangential restitution arrive.
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/rough-disk-mixture-white-noise.toml"),
+    )
+    .unwrap();
+    let toml = std::ffi::CString::new(text).unwrap();
+    let mut c = gdsmc_config::example3();
+    // SAFETY: a NUL-terminated string and a writable config.
+    let status = unsafe { gdsmc::gdsmc_config_from_toml(toml.as_ptr(), &mut c) };
+    assert_eq!(status, gdsmc_status::GDSMC_OK);
+    assert_eq!((c.species, c.rough, c.dimension), (2, 1, 2));
+    assert_eq!(c.species_rotation_set, 1);
+    assert_eq!(&c.species_inertia[..2], &[0.5, 1.0]);
+    assert_eq!(c.pair_tangential_restitution_set, 1);
+    assert_eq!(&c.pair_tangential_restitution[..3], &[0.5, 0.0, 0.5]);
+}
+
 /// `gdsmc_sim_species` reads a mixture's species and refuses anything else by name.
 #[test]
 fn species_observables_only_for_a_mixture() {
