@@ -77,9 +77,10 @@ pub(crate) fn engine_error(e: gdsmc_core::engine::EngineError) -> Failure {
     let s = match e {
         EngineError::TimeBackwards => gdsmc_status::GDSMC_TIME_BACKWARDS,
         EngineError::NonFinite(_) => gdsmc_status::GDSMC_NON_FINITE,
-        EngineError::OffGrid | EngineError::ParticleCount | EngineError::Spins => {
-            gdsmc_status::GDSMC_INVALID_ARGUMENT
-        }
+        EngineError::OffGrid
+        | EngineError::ParticleCount
+        | EngineError::Spins
+        | EngineError::NotBuilt(_) => gdsmc_status::GDSMC_INVALID_ARGUMENT,
         // A bug of ours, reported as the panic boundary reports one.
         EngineError::Invariant(_) => gdsmc_status::GDSMC_PANIC,
     };

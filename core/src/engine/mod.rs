@@ -260,6 +260,9 @@ pub enum EngineError {
     /// A rule the validated model guarantees did not hold when the engine was composed (a
     /// bug in gdsmc, never the caller's input): names the rule.
     Invariant(&'static str),
+    /// The physics needs an engine family this build left out (a cargo feature of
+    /// gdsmc-core: `mixtures`, `rough`, `disks`); names the feature.
+    NotBuilt(&'static str),
 }
 
 impl core::fmt::Display for EngineError {
@@ -283,6 +286,13 @@ impl core::fmt::Display for EngineError {
                     f,
                     "a rule of the validated model did not hold ({what}): a bug in gdsmc, please \
                      report it with the scene"
+                );
+            }
+            EngineError::NotBuilt(what) => {
+                return write!(
+                    f,
+                    "this build of gdsmc-core leaves out the engines this physics needs (cargo \
+                     feature `{what}`)"
                 );
             }
         })

@@ -1,6 +1,12 @@
 //! The one dispatch from a validated [`Model`] to the statically composed [`Engine`]: one
 //! `match` per level (kernel, drive, restitution law, scheme), each level generic over the
-//! choices above it, so that every leaf is a monomorphized event loop.
+//! choices above it, so that every leaf is a monomorphized event loop. An engine family a
+//! build leaves out (gdsmc-core's features `mixtures`, `rough`, `disks`) is refused here with
+//! [`EngineError::NotBuilt`], and its builders are then unused.
+#![cfg_attr(
+    not(all(feature = "mixtures", feature = "rough", feature = "disks")),
+    allow(dead_code, unused_imports, unused_variables)
+)]
 
 use super::engine::{
     ByDiskDrive, ByDiskMixtureDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive,
@@ -24,6 +30,18 @@ use crate::restitution::Restitution;
 use crate::rng::Xoshiro256PlusPlus;
 use crate::vec3::Vec3;
 use core::marker::PhantomData;
+
+/// `$e` when the build holds the engine family (`$on`, a cfg predicate on gdsmc-core's
+/// features), else the refusal naming the feature: the family's loops are then not compiled.
+macro_rules! built {
+    ($on:meta, $name:literal, $e:expr) => {{
+        #[cfg($on)]
+        let r = $e;
+        #[cfg(not($on))]
+        let r = Err(EngineError::NotBuilt($name));
+        r
+    }};
+}
 
 impl Model {
     /// Draws every particle's velocity from the initial distribution (one uniform for the
@@ -110,36 +128,64 @@ impl Model {
         let k = self.kernel;
         if let Some(mx) = &self.mixture {
             return match (&mx.rotation, self.dimension) {
-                (None, DimensionChoice::Three) => wrap(
-                    by_kernel(k, &MixtureBuild(mx, self.drive), p, t0),
-                    Engine::Mixture,
+                (None, DimensionChoice::Three) => built!(feature = "mixtures", "mixtures", {
+                    wrap(
+                        by_kernel(k, &MixtureBuild(mx, self.drive), p, t0),
+                        Engine::Mixture,
+                    )
+                }),
+                (None, DimensionChoice::Two) => built!(
+                    all(feature = "mixtures", feature = "disks"),
+                    "mixtures` and `disks",
+                    {
+                        wrap(
+                            by_kernel(k, &DiskMixtureBuild(mx, self.drive), p, t0),
+                            Engine::DiskMixture,
+                        )
+                    }
                 ),
-                (None, DimensionChoice::Two) => wrap(
-                    by_kernel(k, &DiskMixtureBuild(mx, self.drive), p, t0),
-                    Engine::DiskMixture,
+                (Some(r), DimensionChoice::Three) => built!(
+                    all(feature = "mixtures", feature = "rough"),
+                    "mixtures` and `rough",
+                    {
+                        wrap(
+                            by_kernel(k, &RoughMixtureBuild::<Spheres>(mx, r, PhantomData), p, t0),
+                            Engine::RoughMixture,
+                        )
+                    }
                 ),
-                (Some(r), DimensionChoice::Three) => wrap(
-                    by_kernel(k, &RoughMixtureBuild::<Spheres>(mx, r, PhantomData), p, t0),
-                    Engine::RoughMixture,
-                ),
-                (Some(r), DimensionChoice::Two) => wrap(
-                    by_kernel(k, &RoughMixtureBuild::<Disks>(mx, r, PhantomData), p, t0),
-                    Engine::RoughDiskMixture,
+                (Some(r), DimensionChoice::Two) => built!(
+                    all(feature = "mixtures", feature = "rough", feature = "disks"),
+                    "mixtures`, `rough` and `disks",
+                    {
+                        wrap(
+                            by_kernel(k, &RoughMixtureBuild::<Disks>(mx, r, PhantomData), p, t0),
+                            Engine::RoughDiskMixture,
+                        )
+                    }
                 ),
             };
         }
         match (&self.rough, self.dimension) {
-            (Some(r), DimensionChoice::Three) => wrap(
-                by_kernel(k, &RoughBuild::<Spheres>(r, PhantomData), p, t0),
-                Engine::Rough,
+            (Some(r), DimensionChoice::Three) => built!(feature = "rough", "rough", {
+                wrap(
+                    by_kernel(k, &RoughBuild::<Spheres>(r, PhantomData), p, t0),
+                    Engine::Rough,
+                )
+            }),
+            (Some(r), DimensionChoice::Two) => built!(
+                all(feature = "rough", feature = "disks"),
+                "rough` and `disks",
+                {
+                    wrap(
+                        by_kernel(k, &RoughBuild::<Disks>(r, PhantomData), p, t0),
+                        Engine::RoughDisks,
+                    )
+                }
             ),
-            (Some(r), DimensionChoice::Two) => wrap(
-                by_kernel(k, &RoughBuild::<Disks>(r, PhantomData), p, t0),
-                Engine::RoughDisks,
-            ),
-            (None, DimensionChoice::Two) => {
+            (None, DimensionChoice::Two) => built!(feature = "disks", "disks", {
                 wrap(by_kernel(k, &DiskBuild(self), p, t0), Engine::Disks)
-            }
+            }),
             (None, DimensionChoice::Three) => {
                 wrap(by_kernel(k, &SmoothBuild(self), p, t0), Engine::Smooth)
             }
@@ -521,8 +567,6 @@ fn started<E>(
     })
 }
 
-/// A rim velocity drawn in three dimensions as a disk's (its `z` component alone) or a
-/// sphere's.
 /// The generator of the initial rim velocities: the ensemble's generator `rng` long-jumped
 /// (2^192 draws), a stretch no ensemble's collisions reach (ensemble `k` starts `k 2^128` draws
 /// into the seed's sequence, [`crate::rng::stream`]). The spins leave `rng` where smooth
@@ -535,6 +579,8 @@ pub(crate) fn spin_stream(rng: &Xoshiro256PlusPlus) -> Xoshiro256PlusPlus {
     s
 }
 
+/// A rim velocity drawn in three dimensions as a disk's (its `z` component alone) or a
+/// sphere's.
 fn planar_spin(w: Vec3, disks: bool) -> Vec3 {
     if disks { Vec3::new(0.0, 0.0, w.z) } else { w }
 }

@@ -33,20 +33,87 @@ use crate::rough::{RoughMap, RoughNoise, RoughObservables, RoughPairLaw};
 pub enum Engine {
     /// Smooth spheres of one species: by drive, law and scheme.
     Smooth(ByKernel<Smooth>),
-    /// A mixture of several species of smooth spheres.
-    Mixture(ByKernel<Mixture>),
-    /// Rough spheres (translation and rotation).
-    Rough(ByKernel<Rough<Spheres>>),
-    /// Smooth disks (`d = 2`).
-    Disks(ByKernel<SmoothDisks>),
-    /// Rough disks.
-    RoughDisks(ByKernel<Rough<Disks>>),
-    /// A mixture of smooth disks.
-    DiskMixture(ByKernel<DiskMixture>),
-    /// A mixture of rough spheres.
-    RoughMixture(ByKernel<RoughMixture<Spheres>>),
-    /// A mixture of rough disks.
-    RoughDiskMixture(ByKernel<RoughMixture<Disks>>),
+    /// A mixture of several species of smooth spheres (feature `mixtures`).
+    Mixture(Built<ByKernel<Mixture>, MIXTURES>),
+    /// Rough spheres (translation and rotation; feature `rough`).
+    Rough(Built<ByKernel<Rough<Spheres>>, ROUGH>),
+    /// Smooth disks (`d = 2`; feature `disks`).
+    Disks(Built<ByKernel<SmoothDisks>, DISKS>),
+    /// Rough disks (features `rough`, `disks`).
+    RoughDisks(Built<ByKernel<Rough<Disks>>, ROUGH_DISKS>),
+    /// A mixture of smooth disks (features `mixtures`, `disks`).
+    DiskMixture(Built<ByKernel<DiskMixture>, DISK_MIXTURES>),
+    /// A mixture of rough spheres (features `mixtures`, `rough`).
+    RoughMixture(Built<ByKernel<RoughMixture<Spheres>>, ROUGH_MIXTURES>),
+    /// A mixture of rough disks (features `mixtures`, `rough`, `disks`).
+    RoughDiskMixture(Built<ByKernel<RoughMixture<Disks>>, ROUGH_DISK_MIXTURES>),
+}
+
+/// Whether this build holds each engine family (the cargo features of gdsmc-core).
+const MIXTURES: bool = cfg!(feature = "mixtures");
+const ROUGH: bool = cfg!(feature = "rough");
+const DISKS: bool = cfg!(feature = "disks");
+const ROUGH_DISKS: bool = ROUGH && DISKS;
+const DISK_MIXTURES: bool = MIXTURES && DISKS;
+const ROUGH_MIXTURES: bool = MIXTURES && ROUGH;
+const ROUGH_DISK_MIXTURES: bool = MIXTURES && ROUGH && DISKS;
+
+/// An engine family's payload: the family itself when the build holds it, else [`NotBuilt`]
+/// (uninhabited: the variant cannot be made, and none of its loops is compiled).
+pub type Built<T, const ON: bool> = <Select<ON> as Pick<T>>::Out;
+
+/// The switch behind [`Built`].
+pub struct Select<const ON: bool>;
+
+/// What [`Select`] picks for a payload `T`.
+pub trait Pick<T> {
+    /// `T` or [`NotBuilt<T>`].
+    type Out: EventLoop + Clone + core::fmt::Debug;
+}
+
+impl<T: EventLoop + Clone + core::fmt::Debug> Pick<T> for Select<true> {
+    type Out = T;
+}
+
+impl<T: EventLoop + Clone + core::fmt::Debug> Pick<T> for Select<false> {
+    type Out = NotBuilt<T>;
+}
+
+/// An engine family this build left out: no value exists, so its variant of [`Engine`] is
+/// never made (starting its physics returns [`EngineError::NotBuilt`]).
+#[derive(Clone, Debug)]
+pub struct NotBuilt<T>(core::convert::Infallible, core::marker::PhantomData<T>);
+
+impl<T> EventLoop for NotBuilt<T> {
+    fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        _p: &mut Particles<'_>,
+        _t_end: Real,
+        _rng: &mut R,
+    ) -> Result<Observables, EngineError> {
+        match self.0 {}
+    }
+    fn resync(&mut self, _p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        match self.0 {}
+    }
+    fn time(&self) -> Real {
+        match self.0 {}
+    }
+    fn counts(&self) -> Counts {
+        match self.0 {}
+    }
+    fn work_rate(&self, _n: usize) -> Real {
+        match self.0 {}
+    }
+    fn velocity_map(&self) -> Frame {
+        match self.0 {}
+    }
+    fn species(&self, _p: &Particles<'_>) -> Option<MixtureObservables> {
+        match self.0 {}
+    }
+    fn rough(&self, _p: &Particles<'_>) -> Option<RoughObservables> {
+        match self.0 {}
+    }
 }
 
 /// A family of loops that takes every kernel: what it is for kernel `K` ([`ByKernel`] holds
