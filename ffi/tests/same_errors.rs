@@ -57,6 +57,30 @@ type Case = (
     Edit,
 );
 
+/// A mixture's bad value (`--set`s on the scene text `text`, scene key, C field, the same
+/// change in C on `base`).
+type MixtureCase<'a> = (&'a [&'a str], &'a str, &'a str, Edit);
+
+/// Each case gives the same words from the scene (at its key) and from C (at its field).
+fn same_words(base: &gdsmc_config, text: &str, cases: &[MixtureCase<'_>]) {
+    for &(sets, key, field, edit) in cases {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        let s = gdsmc_scene::parse_with_overrides(Path::new("s.toml"), text, &sets)
+            .unwrap_err()
+            .to_string();
+        let mut c = *base;
+        edit(&mut c);
+        let cmsg = c_error(&c);
+        let problem = cmsg
+            .strip_prefix(&format!("config.{field} "))
+            .unwrap_or_else(|| panic!("{cmsg}"));
+        assert!(
+            s.ends_with(&format!("`{key}` {problem}")),
+            "scene: {s}\nC:     {cmsg}"
+        );
+    }
+}
+
 #[test]
 fn the_same_bad_value_gets_the_same_words() {
     let mut base = gdsmc_config::example3();
@@ -213,13 +237,7 @@ fn a_mixture_gets_the_same_words() {
         "[collisions]",
         "[[species]]\nfraction = 1.0\n[[species]]\nfraction = 1.0\nmass = 2.0\n[collisions]",
     );
-    let scene = |sets: &[&str]| {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        gdsmc_scene::parse_with_overrides(Path::new("s.toml"), &mix, &sets)
-            .unwrap_err()
-            .to_string()
-    };
-    let cases: [(&[&str], &str, &str, Edit); 4] = [
+    let cases: [MixtureCase<'_>; 4] = [
         (
             &["species[1].mass=-2"],
             "species[1].mass",
@@ -251,19 +269,7 @@ fn a_mixture_gets_the_same_words() {
             },
         ),
     ];
-    for (sets, key, field, edit) in cases {
-        let s = scene(sets);
-        let mut c = base;
-        edit(&mut c);
-        let cmsg = c_error(&c);
-        let problem = cmsg
-            .strip_prefix(&format!("config.{field} "))
-            .unwrap_or_else(|| panic!("{cmsg}"));
-        assert!(
-            s.ends_with(&format!("`{key}` {problem}")),
-            "scene: {s}\nC:     {cmsg}"
-        );
-    }
+    same_words(&base, &mix, &cases);
     // Counts that do not add up to n, and a species with none.
     let mut c = base;
     c.species_count[1] = 31;
@@ -291,13 +297,7 @@ fn a_rough_mixture_gets_the_same_words() {
         "[collisions]",
         "[[species]]\nfraction = 1.0\n[[species]]\nfraction = 1.0\nmass = 2.0\n[rotation]\ntangential_restitution = 0.5\n[collisions]",
     );
-    let scene = |sets: &[&str]| {
-        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-        gdsmc_scene::parse_with_overrides(Path::new("s.toml"), &mix, &sets)
-            .unwrap_err()
-            .to_string()
-    };
-    let cases: [(&[&str], &str, &str, Edit); 4] = [
+    let cases: [MixtureCase<'_>; 4] = [
         (
             &["species[1].inertia=0.9"],
             "species[1].inertia",
@@ -326,19 +326,7 @@ fn a_rough_mixture_gets_the_same_words() {
             },
         ),
     ];
-    for (sets, key, field, edit) in cases {
-        let s = scene(sets);
-        let mut c = base;
-        edit(&mut c);
-        let cmsg = c_error(&c);
-        let problem = cmsg
-            .strip_prefix(&format!("config.{field} "))
-            .unwrap_or_else(|| panic!("{cmsg}"));
-        assert!(
-            s.ends_with(&format!("`{key}` {problem}")),
-            "scene: {s}\nC:     {cmsg}"
-        );
-    }
+    same_words(&base, &mix, &cases);
     // The shipped rough disk mixture through gdsmc_config_from_toml: each species' inertia and
     // each pair's tangential restitution arrive.
     let text = std::fs::read_to_string(

@@ -402,52 +402,22 @@ impl MaxwellianApproximation {
     /// takes more than 10^6 steps.
     pub fn steady_ratios(&self) -> Option<Vec<f64>> {
         let ns = self.masses.len();
-        let heated = self.beta.iter().any(|&b| b > 0.0);
-        let mut theta: Vec<f64> = self.masses.iter().map(|m| 1.0 / m).collect();
-        let ratios = |theta: &[f64]| -> Vec<f64> {
-            let t: f64 = (0..ns)
+        let temperature = |theta: &[f64]| -> f64 {
+            (0..ns)
                 .map(|s| self.fractions[s] * self.masses[s] * theta[s])
-                .sum();
-            (0..ns).map(|s| self.masses[s] * theta[s] / t).collect()
+                .sum()
         };
-        let mut last = ratios(&theta);
-        for _ in 0..1_000_000 {
-            // A step of a twentieth of the fastest relaxation time: of the collisions' rates
-            // alone, which stay finite at a heated steady state (the whole rate vanishes
-            // there, and a step scaled by it grew without bound and never converged).
-            let r = self.rates(&theta);
-            let scale = (0..ns)
-                .map(|s| ((r[s] - 2.0 * self.beta[s]) / theta[s]).abs())
-                .fold(1e-300, f64::max);
-            let h = 0.05 / scale;
-            let add = |x: &[f64], k: &[f64], f: f64| -> Vec<f64> {
-                x.iter().zip(k).map(|(a, b)| a + f * b).collect()
-            };
-            let k1 = r;
-            let k2 = self.rates(&add(&theta, &k1, h / 2.0));
-            let k3 = self.rates(&add(&theta, &k2, h / 2.0));
-            let k4 = self.rates(&add(&theta, &k3, h));
-            for s in 0..ns {
-                theta[s] += h / 6.0 * (k1[s] + 2.0 * k2[s] + 2.0 * k3[s] + k4[s]);
-            }
-            if !heated {
-                let t: f64 = (0..ns)
-                    .map(|s| self.fractions[s] * self.masses[s] * theta[s])
-                    .sum();
-                theta.iter_mut().for_each(|x| *x /= t);
-            }
-            let now = ratios(&theta);
-            let change = now
-                .iter()
-                .zip(&last)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max);
-            last = now;
-            if change < 1e-13 {
-                return Some(last);
-            }
-        }
-        None
+        let heating: Vec<f64> = self.beta.iter().map(|b| 2.0 * b).collect();
+        super::steady::relax(
+            self.masses.iter().map(|m| 1.0 / m).collect(),
+            |theta| self.rates(theta),
+            &heating,
+            temperature,
+            |theta| {
+                let t = temperature(theta);
+                (0..ns).map(|s| self.masses[s] * theta[s] / t).collect()
+            },
+        )
     }
 }
 

@@ -9,4 +9,5 @@ pub mod hydro;
 pub mod mixture;
 pub mod rough;
 pub mod rough_mixture;
+pub mod steady;
 pub mod thermostat;

@@ -132,62 +132,31 @@ impl RoughMixtureApproximation {
     /// than 1e-13. `None` if that takes more than 10^6 steps.
     pub fn steady(&self) -> Option<(Vec<f64>, Vec<f64>)> {
         let ns = self.species();
-        let heated = self
+        let temperature = |x: &[f64]| -> f64 { (0..ns).map(|s| self.fractions[s] * x[s]).sum() };
+        let heating: Vec<f64> = self
             .heating
             .iter()
             .chain(&self.heating_rot)
-            .any(|&b| b > 0.0);
-        let mut x = vec![1.0; 2 * ns];
-        let f = |x: &[f64]| -> Vec<f64> {
-            let (a, b) = self.rates(&x[..ns], &x[ns..]);
-            a.into_iter().chain(b).collect()
-        };
-        let ratios = |x: &[f64]| -> Vec<f64> {
-            let t: f64 = (0..ns).map(|s| self.fractions[s] * x[s]).sum();
-            (0..ns)
-                .map(|s| x[s] / t)
-                .chain((0..ns).map(|s| x[ns + s] / x[s]))
-                .collect()
-        };
-        let mut last = ratios(&x);
-        for _ in 0..1_000_000 {
-            let k1 = f(&x);
-            // The collisions' relaxation rates alone (the heating's part taken off): finite at
-            // a heated steady state, where the whole rate vanishes.
-            let heat = self.heating.iter().chain(&self.heating_rot);
-            let scale = x
-                .iter()
-                .zip(&k1)
-                .zip(heat)
-                .map(|((a, b), q)| ((b - q) / a).abs())
-                .fold(1e-300, f64::max);
-            let h = 0.05 / scale;
-            let add = |x: &[f64], k: &[f64], c: f64| -> Vec<f64> {
-                x.iter().zip(k).map(|(a, b)| a + c * b).collect()
-            };
-            let k2 = f(&add(&x, &k1, h / 2.0));
-            let k3 = f(&add(&x, &k2, h / 2.0));
-            let k4 = f(&add(&x, &k3, h));
-            for i in 0..2 * ns {
-                x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-            }
-            if !heated {
-                let t: f64 = (0..ns).map(|s| self.fractions[s] * x[s]).sum();
-                x.iter_mut().for_each(|v| *v /= t);
-            }
-            let now = ratios(&x);
-            let change = now
-                .iter()
-                .zip(&last)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max);
-            last = now;
-            if change < 1e-13 {
-                let (t, theta) = last.split_at(ns);
-                return Some((t.to_vec(), theta.to_vec()));
-            }
-        }
-        None
+            .copied()
+            .collect();
+        let last = super::steady::relax(
+            vec![1.0; 2 * ns],
+            |x| {
+                let (a, b) = self.rates(&x[..ns], &x[ns..]);
+                a.into_iter().chain(b).collect()
+            },
+            &heating,
+            temperature,
+            |x| {
+                let t = temperature(x);
+                (0..ns)
+                    .map(|s| x[s] / t)
+                    .chain((0..ns).map(|s| x[ns + s] / x[s]))
+                    .collect()
+            },
+        )?;
+        let (t, theta) = last.split_at(ns);
+        Some((t.to_vec(), theta.to_vec()))
     }
 }
 
