@@ -173,15 +173,8 @@ impl RoughMap {
         w2: Vec3,
         n: Vec3,
     ) -> (Vec3, Vec3, Vec3, Vec3) {
-        let g = Self::contact_velocity(v1, w1, v2, w2, n);
-        let gn = g.dot(n) * n;
-        let gt = g - gn;
-        let dv = -(self.eta_n * gn) - self.eta_t * gt;
-        if self.eta_t == 0.0 {
-            return (v1 + dv, w1, v2 - dv, w2);
-        }
-        let dw = -self.eta_w * n.cross(gt);
-        (v1 + dv, w1 + dw, v2 - dv, w2 + dw)
+        let (n_, t_, w_) = (self.eta_n, self.eta_t, self.eta_w);
+        impulse(v1, w1, v2, w2, n, [(n_, n_), (t_, t_), (w_, w_)])
     }
 
     /// The energy change `-(1/4) [(1 - alpha^2) |g_n|^2 + (1 - beta^2) kappa/(1 + kappa)
@@ -196,6 +189,32 @@ impl RoughMap {
             * ((1.0 - self.alpha() * self.alpha()) * gn2
                 + (1.0 - self.beta * self.beta) * self.kappa / (1.0 + self.kappa) * gt2)
     }
+}
+
+/// The collision of two rough particles with the coefficients `[(a_1, a_2), (t_1, t_2),
+/// (c_1, c_2)]` of each partner's normal, tangential and spin change: `dv1 = -a_1 g_n -
+/// t_1 g_t`, `dv2 = a_2 g_n + t_2 g_t`, `dw_i = -c_i n x g_t` (equal partners: this module's
+/// `eta_n`, `eta_t`, `eta_t / kappa`; unequal: [`super::pair`]). No spin change when both
+/// `c_i` are 0 (`beta = -1`), bit for bit.
+#[inline(always)]
+pub(crate) fn impulse(
+    v1: Vec3,
+    w1: Vec3,
+    v2: Vec3,
+    w2: Vec3,
+    n: Vec3,
+    [normal, tangential, spin]: [(Real, Real); 3],
+) -> (Vec3, Vec3, Vec3, Vec3) {
+    let g = RoughMap::contact_velocity(v1, w1, v2, w2, n);
+    let gn = g.dot(n) * n;
+    let gt = g - gn;
+    let dv1 = -(normal.0 * gn) - tangential.0 * gt;
+    let dv2 = normal.1 * gn + tangential.1 * gt;
+    if spin.0 == 0.0 && spin.1 == 0.0 {
+        return (v1 + dv1, w1, v2 + dv2, w2);
+    }
+    let nt = n.cross(gt);
+    (v1 + dv1, w1 - spin.0 * nt, v2 + dv2, w2 - spin.1 * nt)
 }
 
 /// Whether a rough pair whose spin transfer is `eta_t` collides as smooth particles: `beta =

@@ -38,7 +38,7 @@
 //! assert!(((1.0 * a1 + 3.0 * a2) - (1.0 * v1 + 3.0 * v2)).norm() < 1e-15);
 //! ```
 
-use super::map::{RoughError, RoughMap, smooth_limit};
+use super::map::{RoughError, RoughMap, impulse, smooth_limit};
 use crate::engine::{CollisionMap, Counts};
 use crate::geometry::Geometry;
 use crate::kernel::Kernel;
@@ -162,23 +162,10 @@ impl RoughPair {
         w2: Vec3,
         n: Vec3,
     ) -> (Vec3, Vec3, Vec3, Vec3) {
-        let g = RoughMap::contact_velocity(v1, w1, v2, w2, n);
-        let gn = g.dot(n) * n;
-        let gt = g - gn;
         let a = 1.0 + self.smooth.law.alpha();
         let m = &self.smooth.masses;
-        let dv1 = -((a * m.mu_t) * gn) - self.tangential.0 * gt;
-        let dv2 = (a * m.mu_s) * gn + self.tangential.1 * gt;
-        if self.spin.0 == 0.0 && self.spin.1 == 0.0 {
-            return (v1 + dv1, w1, v2 + dv2, w2);
-        }
-        let nt = n.cross(gt);
-        (
-            v1 + dv1,
-            w1 - self.spin.0 * nt,
-            v2 + dv2,
-            w2 - self.spin.1 * nt,
-        )
+        let normal = (a * m.mu_t, a * m.mu_s);
+        impulse(v1, w1, v2, w2, n, [normal, self.tangential, self.spin])
     }
 }
 
