@@ -173,6 +173,12 @@ typedef struct {
     double bulk_velocity[3];
     // The mixture's flow velocity `U = sum_s m_s N_s V_s / sum_s m_s N_s`.
     double flow_velocity[3];
+    // A rough mixture: the species' rotational temperature `kappa_s m_s <|w|^2>/d_rot`
+    // (0 when the particles are smooth).
+    double rotational_temperature;
+    // A rough mixture: `rotational_temperature / temperature` (0 when the particles are
+    // smooth).
+    double theta;
 } gdsmc_species_observables;
 
 // A rough gas's rotation at the simulation's current time (Huthmann and Zippelius 1997).
@@ -350,7 +356,8 @@ gdsmc_status gdsmc_sim_observables(gdsmc_sim *sim, gdsmc_observables *out);
 gdsmc_status gdsmc_sim_species(gdsmc_sim *sim, uint32_t k, gdsmc_species_observables *out);
 
 // Writes a rough gas's rotational observables at the current time to `*out`.
-// GDSMC_INVALID_ARGUMENT when the particles are smooth (`config.rough = 0`).
+// GDSMC_INVALID_ARGUMENT when the particles are smooth (`config.rough = 0`) or a rough
+// mixture (its rotation is per species: gdsmc_sim_species).
 //
 // # Safety
 // `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one

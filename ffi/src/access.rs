@@ -128,7 +128,8 @@ pub unsafe extern "C" fn gdsmc_sim_species(
 }
 
 /// Writes a rough gas's rotational observables at the current time to `*out`.
-/// GDSMC_INVALID_ARGUMENT when the particles are smooth (`config.rough = 0`).
+/// GDSMC_INVALID_ARGUMENT when the particles are smooth (`config.rough = 0`) or a rough
+/// mixture (its rotation is per species: gdsmc_sim_species).
 ///
 /// # Safety
 /// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for one
@@ -145,7 +146,11 @@ pub unsafe extern "C" fn gdsmc_sim_rotation(
         let Some(r) = s.engine.rough(&p) else {
             return fail(
                 gdsmc_status::GDSMC_INVALID_ARGUMENT,
-                msg!("the particles are smooth (config.rough = 0)"),
+                if p.has_spins() {
+                    msg!("a rough mixture's rotation is per species: gdsmc_sim_species")
+                } else {
+                    msg!("the particles are smooth (config.rough = 0)")
+                },
             );
         };
         // SAFETY: checked non-null and aligned.

@@ -86,6 +86,12 @@ pub struct gdsmc_species_observables {
     pub bulk_velocity: [f64; 3],
     /// The mixture's flow velocity `U = sum_s m_s N_s V_s / sum_s m_s N_s`.
     pub flow_velocity: [f64; 3],
+    /// A rough mixture: the species' rotational temperature `kappa_s m_s <|w|^2>/d_rot`
+    /// (0 when the particles are smooth).
+    pub rotational_temperature: f64,
+    /// A rough mixture: `rotational_temperature / temperature` (0 when the particles are
+    /// smooth).
+    pub theta: f64,
 }
 
 impl gdsmc_species_observables {
@@ -99,6 +105,8 @@ impl gdsmc_species_observables {
             a2: m.species[s].a2,
             bulk_velocity: m.species[s].bulk.to_array(),
             flow_velocity: m.flow_velocity().to_array(),
+            rotational_temperature: m.rotational_temperature(s).unwrap_or(0.0),
+            theta: m.rotational_temperature(s).map_or(0.0, |r| r / t),
         }
     }
 }

@@ -343,6 +343,37 @@ fn a_rough_mixture_gets_the_same_words() {
     assert_eq!(&c.species_inertia[..2], &[0.5, 1.0]);
     assert_eq!(c.pair_tangential_restitution_set, 1);
     assert_eq!(&c.pair_tangential_restitution[..3], &[0.5, 0.0, 0.5]);
+    // Its rotation per species (gdsmc_sim_species), and gdsmc_sim_rotation's refusal naming it.
+    use gdsmc::{
+        gdsmc_rotation_observables, gdsmc_sim_destroy, gdsmc_sim_rotation, gdsmc_sim_species,
+        gdsmc_species_observables,
+    };
+    let mut good = base;
+    good.species_inertia[..2].copy_from_slice(&[0.4, 0.2]);
+    good.species_rotation_temperature[..2].copy_from_slice(&[1.0, 3.0]);
+    let mut sim: *mut gdsmc_sim = std::ptr::null_mut();
+    // SAFETY: valid pointers; the handle is destroyed below.
+    unsafe {
+        assert_eq!(gdsmc_sim_create(&good, &mut sim), gdsmc_status::GDSMC_OK);
+        let mut so = gdsmc_species_observables::default();
+        for k in 0..2 {
+            assert_eq!(gdsmc_sim_species(sim, k, &mut so), gdsmc_status::GDSMC_OK);
+            assert!(so.rotational_temperature > 0.0, "{so:?}");
+            assert_eq!(so.theta, so.rotational_temperature / so.temperature);
+        }
+        let mut r = gdsmc_rotation_observables::default();
+        assert_eq!(
+            gdsmc_sim_rotation(sim, &mut r),
+            gdsmc_status::GDSMC_INVALID_ARGUMENT
+        );
+        let mut buf = vec![0u8; 512];
+        let len = gdsmc_last_error(buf.as_mut_ptr().cast(), buf.len());
+        assert_eq!(
+            std::str::from_utf8(&buf[..len]).unwrap(),
+            "a rough mixture's rotation is per species: gdsmc_sim_species"
+        );
+        assert_eq!(gdsmc_sim_destroy(&mut sim), gdsmc_status::GDSMC_OK);
+    }
 }
 
 /// `gdsmc_sim_species` reads a mixture's species and refuses anything else by name.
