@@ -3,7 +3,10 @@
 # its FPU is single precision, so f64 runs in software) and for a Cortex-M7 with a
 # double-precision FPU (mps2-an500, built with -C target-cpu=cortex-m7: f64 in hardware), runs
 # both, runs the same code on the host, and fails unless all three print the same numbers to
-# the last digit (the trajectories' checksums included).
+# the last digit (the trajectories' checksums included). Then the Cortex-M0 build (the BBC
+# micro:bit, `-M microbit`: 64 KiB of flash allowed by its memory layout, 16 KiB of RAM): GRW
+# Example 3 alone, the core built with only the Maxwell kernel and white noise and its scalar
+# paths (no SIMD lanes there), at opt-level z; compared with the host built the same way.
 #
 #   bash embedded/run.sh                 build, run, compare
 #   bash embedded/run.sh --figures       also print the figures table (markdown)
@@ -24,7 +27,11 @@ REMAP="--remap-path-prefix=$ROOT=/gdsmc --remap-path-prefix=${CARGO_HOME:-$HOME/
 RUSTFLAGS="$REMAP" cargo build --quiet --release -p gdsmc-firmware --target $TARGET
 RUSTFLAGS="$REMAP -C target-cpu=cortex-m7" cargo build --quiet --release -p gdsmc-firmware \
     --target $TARGET --target-dir target/m7
+M0=target/m0/thumbv6m-none-eabi/release/gdsmc-firmware
+RUSTFLAGS="$REMAP" CARGO_PROFILE_RELEASE_OPT_LEVEL=z cargo build --quiet --release -p gdsmc-firmware \
+    --no-default-features --features gdsmc-core/scalar --target thumbv6m-none-eabi --target-dir target/m0
 cargo run --quiet --release -p gdsmc-demo-host > target/host.txt
+cargo run --quiet --release -p gdsmc-demo-host --features gdsmc-core/scalar -- m0 > target/host-m0.txt
 
 timeout 900 $QEMU -M mps2-an386 -cpu cortex-m4 -kernel $M4 > target/m4.txt
 timeout 900 $QEMU -M mps2-an500 -kernel $M7 > target/m7.txt
@@ -37,6 +44,13 @@ for board in m4 m7; do
 done
 lines=$(wc -l < target/host.txt)
 echo "firmware on mps2-an386 (Cortex-M4F) and mps2-an500 (Cortex-M7): $lines lines equal to the host's, checksums of every velocity included"
+timeout 900 $QEMU -M microbit -kernel $M0 > target/m0.txt
+if ! diff <(grep -v '^figure' target/m0.txt) target/host-m0.txt > target/m0.diff; then
+    echo "the micro:bit firmware's numbers differ from the host's:" >&2
+    head -20 target/m0.diff >&2
+    exit 1
+fi
+echo "firmware on microbit (Cortex-M0, GRW Example 3 alone): $(wc -l < target/host-m0.txt) lines equal to the host's"
 
 # The C firmware: the no_std libgdsmc (caller memory, panic = abort) linked into a C main with
 # newlib's semihosting, on the Cortex-M4F; the same main.c on the host against the std build.
@@ -63,9 +77,9 @@ echo "C firmware (no_std libgdsmc) on mps2-an386: $(wc -l < target/c-host.txt) l
 [ -z "$MODE" ] && exit 0
 
 figures() {
-    python3 - "$M4" "$M7" target/m4.txt target/m7.txt "$CFW" <<'PY'
+    python3 - "$M4" "$M7" target/m4.txt target/m7.txt "$CFW" "$M0" target/m0.txt <<'PY'
 import re, subprocess, sys
-m4, m7, o4, o7, cfw = sys.argv[1:6]
+m4, m7, o4, o7, cfw, m0, o0 = sys.argv[1:8]
 def size(elf):
     out = subprocess.run(["arm-none-eabi-size", elf], capture_output=True, text=True, check=True).stdout
     text, data, bss = map(int, out.splitlines()[1].split()[:3])
@@ -89,6 +103,10 @@ for name, elf, out, fp in [("mps2-an386, Cortex-M4F", m4, o4, "software (single-
     rows.append(f"| {name} | {fp} | {text/1024:.0f} KiB | {ram/1024:.1f} KiB | {f['stack_peak_bytes']/1024:.1f} KiB "
                 f"| {f['particles_per_kib']} | {f['grw3.per_collision']:,} | {f['hcs.per_collision']:,} | {f['rough.per_collision']:,} |")
 print("| board (QEMU) | f64 | flash | static RAM | peak stack | particles per KiB | instructions per collision, GRW Ex. 3 | instructions per collision, cooling hard spheres | instructions per collision, cooling rough spheres |")
+text, ram = size(m0)
+f = figs(o0)
+rows.append(f"| microbit, Cortex-M0 (GRW Ex. 3 only, n = 64; core features `maxwell`, `white-noise`, `scalar`) | software (no FPU) | {text/1024:.0f} KiB | {ram/1024:.1f} KiB | {f['stack_peak_bytes']/1024:.1f} KiB "
+            f"| {f['particles_per_kib']} | {f['grw3.per_collision']:,} | - | - |")
 text, ram = size(cfw)
 rows.append(f"| mps2-an386, Cortex-M4F, C firmware (GRW Ex. 3 only, newlib) | software (single-precision FPU) | {text/1024:.0f} KiB | {ram/1024:.1f} KiB | - | 32 | - | - | - |")
 print("|---|---|---|---|---|---|---|---|---|")

@@ -11,7 +11,7 @@ use crate::vec3::Vec3;
 
 /// A law giving the restitution coefficient of a collision with relative velocity `u` and
 /// direction `e` (GRW (3)).
-pub trait Restitution: Copy {
+pub trait Restitution: Copy + core::fmt::Debug {
     /// True when the law can leave [0, 1] (then the loops clamp and count).
     const CAN_LEAVE_UNIT_INTERVAL: bool;
     /// The coefficient (before clamping).

@@ -32,7 +32,7 @@ use crate::sample::{
 use crate::vec3::Vec3;
 
 /// The grain-background collision kernel `B_1`.
-pub trait BackgroundKernel: Copy {
+pub trait BackgroundKernel: Copy + core::fmt::Debug {
     /// Draws the next real background collision of a grain at velocity `v` within `dt`:
     /// the post-collisional velocity and the time used, or `None` if none happens in `dt`.
     fn next<R: Rng + ?Sized>(

@@ -21,7 +21,7 @@ use crate::rng::Rng;
 use crate::vec3::Vec3;
 
 /// A drive acting on each particle independently between collisions.
-pub trait Drive: Copy {
+pub trait Drive: Copy + core::fmt::Debug {
     /// False for a drive that does nothing (then no kick is ever computed).
     const ACTS: bool;
 

@@ -23,7 +23,7 @@ use crate::rough::RoughObservables;
 use crate::vec3::Vec3;
 
 /// What a collision does to an accepted pair: the particle model (module docs).
-pub trait CollisionMap: Copy {
+pub trait CollisionMap: Copy + core::fmt::Debug {
     /// Whether the particles carry rim velocities (a rough gas): the loops then need a spin
     /// buffer, check the spins' finiteness and rescale them with the velocities.
     const SPINS: bool;

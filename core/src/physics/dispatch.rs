@@ -1,10 +1,11 @@
 //! The one dispatch from a validated [`Model`] to the statically composed [`Engine`]: one
 //! `match` per level (kernel, drive, restitution law, scheme), each level generic over the
-//! choices above it, so that every leaf is a monomorphized event loop. An engine family a
-//! build leaves out (gdsmc-core's features `mixtures`, `rough`, `disks`) is refused here with
-//! [`EngineError::NotBuilt`], and its builders are then unused.
+//! choices above it, so that every leaf is a monomorphized event loop. An engine a build
+//! leaves out (gdsmc-core's features: the families `mixtures`, `rough`, `disks`; each kernel,
+//! drive, the impact-speed law, the splitting and time-stepped schemes) is refused here with
+//! [`EngineError::NotBuilt`] naming the feature, and its builders are then unused.
 #![cfg_attr(
-    not(all(feature = "mixtures", feature = "rough", feature = "disks")),
+    not(feature = "full"),
     allow(dead_code, unused_imports, unused_variables)
 )]
 
@@ -31,8 +32,8 @@ use crate::rng::Xoshiro256PlusPlus;
 use crate::vec3::Vec3;
 use core::marker::PhantomData;
 
-/// `$e` when the build holds the engine family (`$on`, a cfg predicate on gdsmc-core's
-/// features), else the refusal naming the feature: the family's loops are then not compiled.
+/// `$e` when the build holds the engine (`$on`, a cfg predicate on gdsmc-core's features),
+/// else the refusal naming the feature: its loops are then not compiled.
 macro_rules! built {
     ($on:meta, $name:literal, $e:expr) => {{
         #[cfg($on)]
@@ -59,7 +60,8 @@ impl Model {
             return Err(EngineError::ParticleCount);
         }
         let disks = self.dimension == DimensionChoice::Two;
-        if let Some(mx) = &self.mixture {
+        if self.has_species() {
+            let mx = self.mixture().ok_or_else(|| self.mixture_left_out())?;
             // Species by species, each from its own Maxwellian, in particle order (disks drop
             // the z components, as below).
             for s in 0..mx.species.len() {
@@ -126,7 +128,8 @@ impl Model {
             return Err(EngineError::ParticleCount);
         }
         let k = self.kernel;
-        if let Some(mx) = &self.mixture {
+        if self.has_species() {
+            let mx = self.mixture().ok_or_else(|| self.mixture_left_out())?;
             return match (&mx.rotation, self.dimension) {
                 (None, DimensionChoice::Three) => built!(feature = "mixtures", "mixtures", {
                     wrap(
@@ -203,6 +206,18 @@ impl Model {
         self.start(p, t0)
     }
 
+    /// The refusal of a mixture by a build without mixtures, naming the features its family
+    /// needs (as [`Model::start`] names them).
+    fn mixture_left_out(&self) -> EngineError {
+        let rotates = self.rotates();
+        EngineError::NotBuilt(match (rotates, self.dimension) {
+            (false, DimensionChoice::Three) => "mixtures",
+            (false, DimensionChoice::Two) => "mixtures` and `disks",
+            (true, DimensionChoice::Three) => "mixtures` and `rough",
+            (true, DimensionChoice::Two) => "mixtures`, `rough` and `disks",
+        })
+    }
+
     fn disk_drive<K: Kernel>(
         &self,
         k: K,
@@ -214,7 +229,7 @@ impl Model {
             return Err(EngineError::Invariant("disks have a constant restitution"));
         };
         match self.drive {
-            DriveModel::WhiteNoise(w) => {
+            DriveModel::WhiteNoise(w) => built!(feature = "white-noise", "white-noise", {
                 let d = PlanarWhiteNoise::new(w.beta()).ok_or(EngineError::Invariant(
                     "a validated white noise is planar white noise",
                 ))?;
@@ -222,11 +237,13 @@ impl Model {
                     NoSplitting::start_in(k, d, a, p, t0),
                     ByDiskDrive::WhiteNoise,
                 )
-            }
-            _ => wrap(
-                NoSplitting::start_in(k, NoDrive, a, p, t0),
-                ByDiskDrive::None,
-            ),
+            }),
+            _ => built!(feature = "cooling", "cooling", {
+                wrap(
+                    NoSplitting::start_in(k, NoDrive, a, p, t0),
+                    ByDiskDrive::None,
+                )
+            }),
         }
     }
 
@@ -237,14 +254,28 @@ impl Model {
         t0: Real,
     ) -> Result<(ByDrive<K>, Observables), EngineError> {
         match self.drive {
-            DriveModel::None => wrap(self.by_law(k, NoDrive, p, t0), ByDrive::None),
-            DriveModel::WhiteNoise(d) => wrap(self.by_law(k, d, p, t0), ByDrive::WhiteNoise),
-            DriveModel::Gaussian(d) => wrap(self.by_law(k, d, p, t0), ByDrive::Gaussian),
-            DriveModel::ConstantForce(d) => wrap(self.by_law(k, d, p, t0), ByDrive::ConstantForce),
-            DriveModel::HostMaxwell(d) => wrap(self.by_law(k, d, p, t0), ByDrive::HostMaxwell),
-            DriveModel::HostHardSpheres(d) => {
+            DriveModel::None => built!(feature = "cooling", "cooling", {
+                wrap(self.by_law(k, NoDrive, p, t0), ByDrive::None)
+            }),
+            DriveModel::WhiteNoise(d) => built!(feature = "white-noise", "white-noise", {
+                wrap(self.by_law(k, d, p, t0), ByDrive::WhiteNoise)
+            }),
+            DriveModel::Gaussian(d) => built!(
+                feature = "gaussian-thermostat",
+                "gaussian-thermostat",
+                wrap(self.by_law(k, d, p, t0), ByDrive::Gaussian)
+            ),
+            DriveModel::ConstantForce(d) => built!(
+                feature = "constant-force",
+                "constant-force",
+                wrap(self.by_law(k, d, p, t0), ByDrive::ConstantForce)
+            ),
+            DriveModel::HostMaxwell(d) => built!(feature = "host-medium", "host-medium", {
+                wrap(self.by_law(k, d, p, t0), ByDrive::HostMaxwell)
+            }),
+            DriveModel::HostHardSpheres(d) => built!(feature = "host-medium", "host-medium", {
                 wrap(self.by_law(k, d, p, t0), ByDrive::HostHardSpheres)
-            }
+            }),
         }
     }
 
@@ -257,7 +288,9 @@ impl Model {
     ) -> Result<(ByLaw<K, D>, Observables), EngineError> {
         match self.law {
             LawModel::Constant(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::Constant),
-            LawModel::ImpactSpeed(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::ImpactSpeed),
+            LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
+                wrap(self.by_scheme(k, d, a, p, t0), ByLaw::ImpactSpeed)
+            }),
         }
     }
 
@@ -272,21 +305,31 @@ impl Model {
         match self.scheme {
             // Hard spheres with no drive: the sum-form majorant.
             SchemeModel::NoSplitting if !D::ACTS && K::HARD && self.sum_form => {
-                let hs = k
-                    .as_hard_spheres()
-                    .ok_or(EngineError::Invariant("a hard kernel is hard spheres"))?;
-                wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
+                built!(feature = "hard-spheres", "hard-spheres", {
+                    let hs = k
+                        .as_hard_spheres()
+                        .ok_or(EngineError::Invariant("a hard kernel is hard spheres"))?;
+                    wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
+                })
             }
             SchemeModel::NoSplitting => {
                 wrap(NoSplitting::start(k, d, a, p, t0), ByScheme::NoSplitting)
             }
-            SchemeModel::Splitting(order, dt) => wrap(
-                Splitting::start(k, d, a, order, dt, p, t0),
-                ByScheme::Splitting,
-            ),
-            SchemeModel::TimeStepped(hs, f) => wrap(
-                TimeStepped::start(hs, d, a, f, p, t0),
-                ByScheme::TimeStepped,
+            SchemeModel::Splitting(order, dt) => built!(feature = "splitting", "splitting", {
+                wrap(
+                    Splitting::start(k, d, a, order, dt, p, t0),
+                    ByScheme::Splitting,
+                )
+            }),
+            SchemeModel::TimeStepped(hs, f) => built!(
+                all(feature = "time-stepped", feature = "hard-spheres"),
+                "time-stepped` and `hard-spheres",
+                {
+                    wrap(
+                        TimeStepped::start(hs, d, a, f, p, t0),
+                        ByScheme::TimeStepped,
+                    )
+                }
             ),
         }
     }
@@ -349,18 +392,26 @@ fn mixture<K: Kernel>(
 ) -> Result<(ByMixtureDrive<K>, Observables), EngineError> {
     let physics = pair_table(mx, k, &mx.laws)?;
     match drive {
-        DriveModel::WhiteNoise(_) => wrap(
-            start_mixture::<K, _, _, Spheres>(mx, &physics, &mx.noises, p, t0),
-            ByMixtureDrive::WhiteNoise,
+        DriveModel::WhiteNoise(_) => built!(feature = "white-noise", "white-noise", {
+            wrap(
+                start_mixture::<K, _, _, Spheres>(mx, &physics, &mx.noises, p, t0),
+                ByMixtureDrive::WhiteNoise,
+            )
+        }),
+        DriveModel::Gaussian(g) => built!(
+            feature = "gaussian-thermostat",
+            "gaussian-thermostat",
+            wrap(
+                start_mixture::<K, _, _, Spheres>(mx, &physics, &[g; MAX_SPECIES], p, t0),
+                ByMixtureDrive::Gaussian,
+            )
         ),
-        DriveModel::Gaussian(g) => wrap(
-            start_mixture::<K, _, _, Spheres>(mx, &physics, &[g; MAX_SPECIES], p, t0),
-            ByMixtureDrive::Gaussian,
-        ),
-        _ => wrap(
-            start_mixture::<K, _, _, Spheres>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
-            ByMixtureDrive::None,
-        ),
+        _ => built!(feature = "cooling", "cooling", {
+            wrap(
+                start_mixture::<K, _, _, Spheres>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                ByMixtureDrive::None,
+            )
+        }),
     }
 }
 
@@ -375,7 +426,7 @@ fn disk_mixture<K: Kernel>(
 ) -> Result<(ByDiskMixtureDrive<K>, Observables), EngineError> {
     let physics = pair_table(mx, k, &mx.laws)?;
     match drive {
-        DriveModel::WhiteNoise(_) => {
+        DriveModel::WhiteNoise(_) => built!(feature = "white-noise", "white-noise", {
             let mut planar = [PlanarWhiteNoise::new(0.0)
                 .ok_or(EngineError::Invariant("no noise is planar white noise"))?;
                 MAX_SPECIES];
@@ -388,11 +439,13 @@ fn disk_mixture<K: Kernel>(
                 start_mixture::<K, _, _, Disks>(mx, &physics, &planar, p, t0),
                 ByDiskMixtureDrive::WhiteNoise,
             )
-        }
-        _ => wrap(
-            start_mixture::<K, _, _, Disks>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
-            ByDiskMixtureDrive::None,
-        ),
+        }),
+        _ => built!(feature = "cooling", "cooling", {
+            wrap(
+                start_mixture::<K, _, _, Disks>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                ByDiskMixtureDrive::None,
+            )
+        }),
     }
 }
 
@@ -408,17 +461,19 @@ fn rough_mixture<K: Kernel, G: Geometry>(
 ) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
     let physics = pair_table(mx, k, &rot.laws)?;
     match &rot.noises {
-        Some(noises) => {
+        Some(noises) => built!(feature = "white-noise", "white-noise", {
             let noises = noises.map(|w| w.in_dim::<G>());
             wrap(
                 start_mixture::<K, _, _, G>(mx, &physics, &noises, p, t0),
                 ByRoughMixtureDrive::Noise,
             )
-        }
-        None => wrap(
-            start_mixture::<K, _, _, G>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
-            ByRoughMixtureDrive::None,
-        ),
+        }),
+        None => built!(feature = "cooling", "cooling", {
+            wrap(
+                start_mixture::<K, _, _, G>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                ByRoughMixtureDrive::None,
+            )
+        }),
     }
 }
 
@@ -431,14 +486,18 @@ fn rough<K: Kernel, G: Geometry>(
     t0: Real,
 ) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
     match r.noise {
-        None => wrap(
-            NoSplitting::start_in(k, NoDrive, r.map, p, t0),
-            ByRoughDrive::None,
-        ),
-        Some(d) => wrap(
-            NoSplitting::start_in(k, d.in_dim::<G>(), r.map, p, t0),
-            ByRoughDrive::Noise,
-        ),
+        None => built!(feature = "cooling", "cooling", {
+            wrap(
+                NoSplitting::start_in(k, NoDrive, r.map, p, t0),
+                ByRoughDrive::None,
+            )
+        }),
+        Some(d) => built!(feature = "white-noise", "white-noise", {
+            wrap(
+                NoSplitting::start_in(k, d.in_dim::<G>(), r.map, p, t0),
+                ByRoughDrive::Noise,
+            )
+        }),
     }
 }
 
@@ -466,9 +525,15 @@ fn by_kernel<B: Build>(
     t0: Real,
 ) -> Result<(ByKernel<B::F>, Observables), EngineError> {
     match kernel {
-        KernelModel::Maxwell(k) => wrap(b.build(k, p, t0), ByKernel::Maxwell),
-        KernelModel::HardSpheres(k) => wrap(b.build(k, p, t0), ByKernel::HardSpheres),
-        KernelModel::Vhs(k) => wrap(b.build(k, p, t0), ByKernel::Vhs),
+        KernelModel::Maxwell(k) => built!(feature = "maxwell", "maxwell", {
+            wrap(b.build(k, p, t0), ByKernel::Maxwell)
+        }),
+        KernelModel::HardSpheres(k) => built!(feature = "hard-spheres", "hard-spheres", {
+            wrap(b.build(k, p, t0), ByKernel::HardSpheres)
+        }),
+        KernelModel::Vhs(k) => built!(feature = "vhs", "vhs", {
+            wrap(b.build(k, p, t0), ByKernel::Vhs)
+        }),
     }
 }
 

@@ -5,6 +5,11 @@
 //! each call goes down the nest once (four `match`es per call, i.e. per observation) and then
 //! runs a loop that holds only the physics it names.
 
+// Clippy sizes a variant whose payload is a [`Built`] projection as empty and then reports the
+// others as large; the loops of one level are of like size (the mixture's, at the family level,
+// is explained at [`Engine`]).
+#![allow(clippy::large_enum_variant)]
+
 use crate::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, MaxwellBackground,
     NoDrive, PlanarWhiteNoise, WhiteNoise,
@@ -28,7 +33,6 @@ use crate::rough::{RoughMap, RoughNoise, RoughObservables, RoughPairLaw};
 // against 0.5 KB for the one-species loops); the core has no allocator to box it, and an
 // engine lives in its caller's memory once per system, so the size is paid once, not per
 // particle or event.
-#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum Engine {
     /// Smooth spheres of one species: by drive, law and scheme.
@@ -57,9 +61,22 @@ const ROUGH_DISKS: bool = ROUGH && DISKS;
 const DISK_MIXTURES: bool = MIXTURES && DISKS;
 const ROUGH_MIXTURES: bool = MIXTURES && ROUGH;
 const ROUGH_DISK_MIXTURES: bool = MIXTURES && ROUGH && DISKS;
+/// Whether this build holds each kernel, drive, law and scheme (the same features).
+const MAXWELL: bool = cfg!(feature = "maxwell");
+const HARD_SPHERES: bool = cfg!(feature = "hard-spheres");
+const VHS: bool = cfg!(feature = "vhs");
+const COOLING: bool = cfg!(feature = "cooling");
+const WHITE_NOISE: bool = cfg!(feature = "white-noise");
+const GAUSSIAN: bool = cfg!(feature = "gaussian-thermostat");
+const CONSTANT_FORCE: bool = cfg!(feature = "constant-force");
+const HOST_MEDIUM: bool = cfg!(feature = "host-medium");
+const IMPACT_SPEED: bool = cfg!(feature = "impact-speed");
+const SPLITTING: bool = cfg!(feature = "splitting");
+const TIME_STEPPED: bool = cfg!(feature = "time-stepped") && HARD_SPHERES;
 
-/// An engine family's payload: the family itself when the build holds it, else [`NotBuilt`]
-/// (uninhabited: the variant cannot be made, and none of its loops is compiled).
+/// A variant's payload at any level (family, kernel, drive, law, scheme): the engine itself
+/// when the build holds it, else [`NotBuilt`] (uninhabited: the variant cannot be made, and
+/// none of its loops is compiled).
 pub type Built<T, const ON: bool> = <Select<ON> as Pick<T>>::Out;
 
 /// The switch behind [`Built`].
@@ -79,8 +96,8 @@ impl<T: EventLoop + Clone + core::fmt::Debug> Pick<T> for Select<false> {
     type Out = NotBuilt<T>;
 }
 
-/// An engine family this build left out: no value exists, so its variant of [`Engine`] is
-/// never made (starting its physics returns [`EngineError::NotBuilt`]).
+/// An engine this build left out: no value exists, so its variant is never made (starting its
+/// physics returns [`EngineError::NotBuilt`]).
 #[derive(Clone, Debug)]
 pub struct NotBuilt<T>(core::convert::Infallible, core::marker::PhantomData<T>);
 
@@ -127,12 +144,12 @@ pub trait Family {
 /// below it generic over the kernel.
 #[derive(Clone, Debug)]
 pub enum ByKernel<F: Family> {
-    /// Maxwell pseudo-molecules.
-    Maxwell(F::Of<Maxwell>),
-    /// Hard spheres (hard disks in `d = 2`).
-    HardSpheres(F::Of<HardSpheres>),
-    /// Variable hard spheres.
-    Vhs(F::Of<Vhs>),
+    /// Maxwell pseudo-molecules (feature `maxwell`).
+    Maxwell(Built<F::Of<Maxwell>, MAXWELL>),
+    /// Hard spheres (hard disks in `d = 2`; feature `hard-spheres`).
+    HardSpheres(Built<F::Of<HardSpheres>, HARD_SPHERES>),
+    /// Variable hard spheres (feature `vhs`).
+    Vhs(Built<F::Of<Vhs>, VHS>),
 }
 
 /// Smooth spheres of one species ([`ByDrive`]).
@@ -179,90 +196,94 @@ impl<G: Geometry> Family for RoughMixture<G> {
 
 /// A mixture of smooth disks by drive, for kernel `K`.
 #[derive(Clone, Debug)]
-pub enum ByDiskMixtureDrive<K> {
-    /// No drive: the mixture cools.
-    None(MixtureNoSplitting<K, NoDrive, Constant, Disks>),
-    /// White noise in the plane, each species its own strength.
-    WhiteNoise(MixtureNoSplitting<K, PlanarWhiteNoise, Constant, Disks>),
+pub enum ByDiskMixtureDrive<K: Kernel> {
+    /// No drive: the mixture cools (feature `cooling`).
+    None(Built<MixtureNoSplitting<K, NoDrive, Constant, Disks>, COOLING>),
+    /// White noise in the plane, each species its own strength (feature `white-noise`).
+    WhiteNoise(Built<MixtureNoSplitting<K, PlanarWhiteNoise, Constant, Disks>, WHITE_NOISE>),
 }
 
 /// A rough mixture by drive, for kernel `K` and dimension `G`.
 #[derive(Clone, Debug)]
-pub enum ByRoughMixtureDrive<K, G> {
-    /// No drive: the mixture cools.
-    None(MixtureNoSplitting<K, NoDrive, RoughPairLaw, G>),
-    /// White noise on translation and rotation, each species its own strengths.
-    Noise(MixtureNoSplitting<K, RoughNoise<G>, RoughPairLaw, G>),
+pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
+    /// No drive: the mixture cools (feature `cooling`).
+    None(Built<MixtureNoSplitting<K, NoDrive, RoughPairLaw, G>, COOLING>),
+    /// White noise on translation and rotation, each species its own strengths (feature
+    /// `white-noise`).
+    Noise(Built<MixtureNoSplitting<K, RoughNoise<G>, RoughPairLaw, G>, WHITE_NOISE>),
 }
 
 /// Smooth disks by drive, for kernel `K`.
 #[derive(Clone, Debug)]
-pub enum ByDiskDrive<K> {
-    /// No drive: the disks cool.
-    None(NoSplitting<K, NoDrive, Constant, Disks>),
-    /// White noise in the plane.
-    WhiteNoise(NoSplitting<K, PlanarWhiteNoise, Constant, Disks>),
+pub enum ByDiskDrive<K: Kernel> {
+    /// No drive: the disks cool (feature `cooling`).
+    None(Built<NoSplitting<K, NoDrive, Constant, Disks>, COOLING>),
+    /// White noise in the plane (feature `white-noise`).
+    WhiteNoise(Built<NoSplitting<K, PlanarWhiteNoise, Constant, Disks>, WHITE_NOISE>),
 }
 
 /// A rough gas's engine by drive (the exact loop with the rough map), for kernel `K` and
 /// dimension `G`.
 #[derive(Clone, Debug)]
-pub enum ByRoughDrive<K, G = Spheres> {
-    /// No drive: the gas cools.
-    None(NoSplitting<K, NoDrive, RoughMap, G>),
-    /// White noise on translation and rotation.
-    Noise(NoSplitting<K, RoughNoise<G>, RoughMap, G>),
+pub enum ByRoughDrive<K: Kernel, G: Geometry = Spheres> {
+    /// No drive: the gas cools (feature `cooling`).
+    None(Built<NoSplitting<K, NoDrive, RoughMap, G>, COOLING>),
+    /// White noise on translation and rotation (feature `white-noise`).
+    Noise(Built<NoSplitting<K, RoughNoise<G>, RoughMap, G>, WHITE_NOISE>),
 }
 
 /// A mixture's engine by drive, for kernel `K`.
 #[derive(Clone, Debug)]
-pub enum ByMixtureDrive<K> {
-    /// No drive: the mixture cools.
-    None(MixtureNoSplitting<K, NoDrive, Constant>),
-    /// White noise, each species its own strength.
-    WhiteNoise(MixtureNoSplitting<K, WhiteNoise, Constant>),
-    /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity.
-    Gaussian(MixtureNoSplitting<K, GaussianThermostat, Constant>),
+pub enum ByMixtureDrive<K: Kernel> {
+    /// No drive: the mixture cools (feature `cooling`).
+    None(Built<MixtureNoSplitting<K, NoDrive, Constant>, COOLING>),
+    /// White noise, each species its own strength (feature `white-noise`).
+    WhiteNoise(Built<MixtureNoSplitting<K, WhiteNoise, Constant>, WHITE_NOISE>),
+    /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity (feature
+    /// `gaussian-thermostat`).
+    Gaussian(Built<MixtureNoSplitting<K, GaussianThermostat, Constant>, GAUSSIAN>),
 }
 
 /// By drive, for kernel `K`.
 #[derive(Clone, Debug)]
-pub enum ByDrive<K> {
-    /// No drive.
-    None(ByLaw<K, NoDrive>),
-    /// White noise (GRW (18)).
-    WhiteNoise(ByLaw<K, WhiteNoise>),
-    /// The Gaussian thermostat (MS (12)).
-    Gaussian(ByLaw<K, GaussianThermostat>),
-    /// The constant force (MS (14)).
-    ConstantForce(ByLaw<K, ConstantForce>),
-    /// A host medium with the Maxwell background kernel (BRS (11)).
-    HostMaxwell(ByLaw<K, HostMedium<MaxwellBackground>>),
-    /// A host medium with the hard-sphere background kernel (BRS (19)).
-    HostHardSpheres(ByLaw<K, HostMedium<HardSphereBackground>>),
+pub enum ByDrive<K: Kernel> {
+    /// No drive: the gas cools (feature `cooling`).
+    None(Built<ByLaw<K, NoDrive>, COOLING>),
+    /// White noise (GRW (18); feature `white-noise`).
+    WhiteNoise(Built<ByLaw<K, WhiteNoise>, WHITE_NOISE>),
+    /// The Gaussian thermostat (MS (12); feature `gaussian-thermostat`).
+    Gaussian(Built<ByLaw<K, GaussianThermostat>, GAUSSIAN>),
+    /// The constant force (MS (14); feature `constant-force`).
+    ConstantForce(Built<ByLaw<K, ConstantForce>, CONSTANT_FORCE>),
+    /// A host medium with the Maxwell background kernel (BRS (11); feature `host-medium`).
+    HostMaxwell(Built<ByLaw<K, HostMedium<MaxwellBackground>>, HOST_MEDIUM>),
+    /// A host medium with the hard-sphere background kernel (BRS (19); feature
+    /// `host-medium`).
+    HostHardSpheres(Built<ByLaw<K, HostMedium<HardSphereBackground>>, HOST_MEDIUM>),
 }
 
 /// By restitution law, for kernel `K` and drive `D`.
 #[derive(Clone, Debug)]
-pub enum ByLaw<K, D> {
+pub enum ByLaw<K: Kernel, D: Drive> {
     /// A constant coefficient.
     Constant(ByScheme<K, D, Constant>),
-    /// The impact-speed law BRS (9)-(10).
-    ImpactSpeed(ByScheme<K, D, ImpactSpeed>),
+    /// The impact-speed law BRS (9)-(10) (feature `impact-speed`).
+    ImpactSpeed(Built<ByScheme<K, D, ImpactSpeed>, IMPACT_SPEED>),
 }
 
 /// By scheme: the event loops themselves.
 #[derive(Clone, Debug)]
-pub enum ByScheme<K, D, A> {
+pub enum ByScheme<K: Kernel, D: Drive, A: Restitution> {
     /// The exact no-splitting scheme (GRW Section 3).
     NoSplitting(NoSplitting<K, D, A>),
-    /// Euler or Strang splitting (RW Algorithms 1, 2).
-    Splitting(Splitting<K, D, A>),
-    /// MS's time-stepped scheme (hard spheres only; built only under [`ByKernel::HardSpheres`]).
-    TimeStepped(TimeStepped<D, A>),
+    /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
+    Splitting(Built<Splitting<K, D, A>, SPLITTING>),
+    /// MS's time-stepped scheme (hard spheres only; built only under [`ByKernel::HardSpheres`];
+    /// features `time-stepped`, `hard-spheres`).
+    TimeStepped(Built<TimeStepped<D, A>, TIME_STEPPED>),
     /// The exact scheme of hard spheres with no drive on the sum-form majorant (built only under
-    /// [`ByKernel::HardSpheres`] with [`ByDrive::None`]).
-    SumForm(SumNoSplitting<A>),
+    /// [`ByKernel::HardSpheres`] with [`ByDrive::None`]; feature `hard-spheres`).
+    SumForm(Built<SumNoSplitting<A>, HARD_SPHERES>),
 }
 
 /// Implements [`EventLoop`] for one level by forwarding every method to the variant.

@@ -7,6 +7,7 @@ use super::parts::{
     DriveModel, KernelModel, LawModel, SchemeModel, drive, initial, kernel, law, particle_count,
     scheme,
 };
+use super::species::Slot;
 use super::{MAX_COMPONENTS, Physics};
 use crate::drive::Drive;
 use crate::kernel::Kernel;
@@ -22,7 +23,7 @@ pub struct Model {
     pub(super) law: LawModel,
     pub(super) drive: DriveModel,
     pub(super) scheme: SchemeModel,
-    pub(super) mixture: Option<super::species::MixtureModel>,
+    pub(super) mixture: Option<super::species::Kept>,
     pub(super) rough: Option<super::rotation::RoughModel>,
     pub(super) dimension: super::DimensionChoice,
     /// Hard spheres with no drive run on the sum-form majorant ([`crate::engine::SumNoSplitting`]);
@@ -31,7 +32,10 @@ pub struct Model {
 }
 
 impl Model {
-    /// Validates `physics` (see [`Physics::validate`]).
+    /// Validates `physics` (see [`Physics::validate`]). Never inlined: its temporaries (the
+    /// optional mixture and rotation models) then live in its own frame, not in every caller's
+    /// for the whole run (a Cortex-M0 has 16 KiB of RAM).
+    #[inline(never)]
     pub fn new(physics: &Physics) -> Result<Self, PhysicsError> {
         particle_count(physics.n)?;
         let initial = initial(&physics.initial)?;
@@ -39,9 +43,18 @@ impl Model {
         let law = law(physics.restitution)?;
         let drive = drive(physics.drive)?;
         let scheme = scheme(physics.scheme, kernel, physics.drive)?;
-        let mixture = super::species::mixture(physics, kernel, law, drive, scheme)?;
+        // The mixture's and the rotation's validations run (and take their stack) only when
+        // the physics has species or rotation.
+        let mixture = if physics.species.is_empty() {
+            None
+        } else {
+            super::species::mixture(physics, kernel, law, drive, scheme)?
+        };
         let dimension = super::dimension::dimension(physics, law, drive, scheme)?;
-        let rough = super::rotation::rotation(physics, law, drive, scheme)?;
+        let rough = match physics.rotation {
+            None => None,
+            Some(_) => super::rotation::rotation(physics, law, drive, scheme)?,
+        };
         Ok(Model {
             n: physics.n,
             initial,
@@ -82,34 +95,43 @@ impl Model {
     /// Whether the particles are rough (one species or a mixture): the particle buffer then
     /// needs one spin per particle ([`crate::particles::Particles::with_spins`]).
     pub fn rotates(&self) -> bool {
-        self.rough.is_some() || self.mixture.as_ref().is_some_and(|m| m.rotation.is_some())
+        self.rough.is_some() || self.mixture.as_ref().is_some_and(Slot::rotates)
     }
 
-    /// The species of a mixture (`None`: one species).
+    /// The validated mixture (`None`: one species, or a build without mixtures).
+    pub(super) fn mixture(&self) -> Option<&super::species::MixtureModel> {
+        self.mixture.as_ref()?.model()
+    }
+
+    /// Whether the physics has species (also in a build without mixtures, which refuses to
+    /// start it).
+    pub fn has_species(&self) -> bool {
+        self.mixture.is_some()
+    }
+
+    /// The species of a mixture (`None`: one species, or a build without mixtures).
     pub fn species(&self) -> Option<&crate::mixture::Species> {
-        self.mixture.as_ref().map(|m| &m.species)
+        self.mixture().map(|m| &m.species)
     }
 
     /// A mixture's pair cross sections, the factor of each pair type's kernel
     /// (`((d_s + d_t)/2)^(d - 1)`), in [`crate::mixture::pair_index`] order (`None`: one
     /// species).
     pub fn pair_cross_sections(&self) -> Option<&[Real]> {
-        self.mixture
-            .as_ref()
-            .map(|m| &m.factors[..m.species.pair_types()])
+        self.mixture().map(|m| &m.factors[..m.species.pair_types()])
     }
 
     /// A rough mixture's law of each pair type (alpha, beta, the partners' kappa), in
     /// [`crate::mixture::pair_index`] order (`None`: not a rough mixture).
     pub fn rough_pair_laws(&self) -> Option<&[crate::rough::RoughPairLaw]> {
-        let m = self.mixture.as_ref()?;
+        let m = self.mixture()?;
         Some(&m.rotation.as_ref()?.laws[..m.species.pair_types()])
     }
 
     /// A rough mixture's white noise of each species (`None`: not driven, or not a rough
     /// mixture).
     pub fn rough_noises(&self) -> Option<&[crate::rough::RoughNoise]> {
-        let m = self.mixture.as_ref()?;
+        let m = self.mixture()?;
         Some(&m.rotation.as_ref()?.noises.as_ref()?[..m.species.len()])
     }
 

@@ -114,6 +114,7 @@ fn maxwellian(
 
 /// The initial mixture (BRS (35)); the component rules live in [`Maxwellian::new`] and
 /// [`MaxwellianMixture::push`].
+#[inline(never)]
 pub(super) fn initial(
     components: &[Component],
 ) -> Result<MaxwellianMixture<MAX_COMPONENTS>, PhysicsError> {

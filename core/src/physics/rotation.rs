@@ -77,6 +77,7 @@ fn inertia(param: Param, kappa: Real, dimension: DimensionChoice) -> Result<Real
 /// Validates a rough mixture's rotation: `r` gives every species' and pair's value unless
 /// `physics` names its own; `alphas` are the pairs' validated normal restitutions, `betas`
 /// the species' translational noise (white noise; `None`: no drive).
+#[inline(never)]
 pub(super) fn mixture_rotation(
     physics: &Physics,
     r: RotationChoice,
@@ -172,6 +173,7 @@ pub(super) fn mixture_rotation(
 
 /// Validates the rotation of `physics` against the law, drive and scheme already validated;
 /// `None` when its particles are smooth or form a mixture ([`mixture_rotation`]).
+#[inline(never)]
 pub(super) fn rotation(
     physics: &Physics,
     law: LawModel,

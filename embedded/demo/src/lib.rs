@@ -96,6 +96,38 @@ pub struct Summary {
     pub instructions: u64,
 }
 
+/// A number printed with the fewest digits that read back to the same bits (Ryu, with its
+/// small tables: core's own float formatting, Grisu with the Dragon fallback, takes about 20
+/// KiB of flash, a third of the Cortex-M0 build's budget).
+pub struct Digits(pub f64);
+
+impl core::fmt::Display for Digits {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(ryu::Buffer::new().format(self.0))
+    }
+}
+
+/// What stopped a run, in words that print no number (so that the firmware does not link the
+/// float formatting for its error path): the parameter a refused physics names, or the engine's
+/// error.
+impl core::fmt::Display for DemoError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            DemoError::Physics(e) => write!(f, "the physics was refused at `{}`", e.param),
+            DemoError::Engine(e) => write!(f, "the engine stopped: {e}"),
+            DemoError::Write => f.write_str("the output failed"),
+        }
+    }
+}
+
+/// Validates the physics `make` builds, out of line: the physics and the validation's
+/// temporaries take stack only while it runs, not beside the run's engine (a Cortex-M0 has 16
+/// KiB of RAM).
+#[inline(never)]
+fn validated(make: impl FnOnce() -> Physics) -> Result<gdsmc_core::physics::Model, DemoError> {
+    make().validate().map_err(DemoError::Physics)
+}
+
 /// FNV-1a over the bits of every velocity component (and rim velocity component).
 fn checksum(p: &Particles<'_>) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
@@ -118,14 +150,14 @@ fn checksum(p: &Particles<'_>) -> u64 {
 /// observation (the firmware counts instructions; the host may return 0).
 pub fn run(
     name: &str,
-    physics: &Physics,
+    physics: impl FnOnce() -> Physics,
     (buf, spins): (&mut [Particle], &mut [Spin]),
     seed: u64,
     times: &[f64],
     out: &mut impl Write,
     mut clock: impl FnMut() -> u64,
 ) -> Result<Summary, DemoError> {
-    let model = physics.validate().map_err(DemoError::Physics)?;
+    let model = validated(physics)?;
     let mut p = if spins.is_empty() {
         Particles::new(buf)
     } else {
@@ -145,15 +177,21 @@ pub fn run(
         }
         write!(
             out,
-            "{name} t={t:?} T={:?} T_bulk={:?} log10_T_bulk={:?} a2={:?} collisions={}",
-            obs.t_raw,
-            obs.t_bulk,
-            obs.log10_t_bulk,
-            obs.a2,
+            "{name} t={} T={} T_bulk={} log10_T_bulk={} a2={} collisions={}",
+            Digits(t),
+            Digits(obs.t_raw),
+            Digits(obs.t_bulk),
+            Digits(obs.log10_t_bulk),
+            Digits(obs.a2),
             engine.counts().collisions
         )?;
         if let Some(r) = engine.rough(&p) {
-            write!(out, " T_rot={:?} theta={:?}", r.t_rot, r.theta())?;
+            write!(
+                out,
+                " T_rot={} theta={}",
+                Digits(r.t_rot),
+                Digits(r.theta())
+            )?;
         }
         writeln!(out)?;
     }
@@ -161,11 +199,12 @@ pub fn run(
     let gdsmc_core::engine::Frame { scale, offset } = engine.velocity_map();
     writeln!(
         out,
-        "{name} checksum={:016x} scale={scale:?} offset=[{:?}, {:?}, {:?}]",
+        "{name} checksum={:016x} scale={} offset=[{}, {}, {}]",
         checksum(&p),
-        offset.x,
-        offset.y,
-        offset.z
+        Digits(scale),
+        Digits(offset.x),
+        Digits(offset.y),
+        Digits(offset.z)
     )?;
     Ok(Summary {
         counts: engine.counts(),
@@ -179,15 +218,50 @@ pub const N: usize = 512;
 /// Particles (and spins) of the rough run.
 pub const N_ROUGH: usize = 256;
 
+/// Particles of GRW Example 3 on the Cortex-M0: GRW Table 1's smallest system. The micro:bit's
+/// 16 KiB of RAM hold them (2 KiB) beside the stack the validation and the loop take (about 12
+/// KiB; `embedded/run.sh` prints the peak).
+pub const N_M0: usize = 64;
+
 /// Observation times of GRW Example 3 (GRW Table 1's interval [0, 8]).
 pub const GRW3_TIMES: [f64; 9] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0];
 
 /// Observation times of the cooling runs (Haff's law: `T ~ t^-2` for `t >> 1/nu0`).
 pub const HCS_TIMES: [f64; 6] = [0.0, 10.0, 20.0, 50.0, 100.0, 200.0];
 
-/// The three runs with seed `seed` on the caller's buffers: GRW Example 3, the cooling hard
-/// spheres, then the cooling rough hard spheres on the first [`N_ROUGH`] particles and
-/// `spins`; one summary each.
+/// GRW Example 3 with seed `seed` on every particle of `buf`, then the exact temperature GRW
+/// (13) at each observation time (the one run of the Cortex-M0 build, which holds only its
+/// engine: gdsmc-core's features `maxwell`, `white-noise`).
+pub fn grw3(
+    buf: &mut [Particle],
+    seed: u64,
+    out: &mut impl Write,
+    clock: impl FnMut() -> u64,
+) -> Result<Summary, DemoError> {
+    let n = buf.len();
+    let s = run(
+        "grw3",
+        || grw_example3(n),
+        (buf, &mut []),
+        seed,
+        &GRW3_TIMES,
+        out,
+        clock,
+    )?;
+    for &t in &GRW3_TIMES[1..] {
+        writeln!(
+            out,
+            "grw3 exact t={} T_GRW13={}",
+            Digits(t),
+            Digits(grw_example3_exact(t))
+        )?;
+    }
+    Ok(s)
+}
+
+/// The three runs with seed `seed` on the caller's buffers: GRW Example 3 ([`grw3`]), the
+/// cooling hard spheres, then the cooling rough hard spheres on the first [`N_ROUGH`]
+/// particles and `spins`; one summary each.
 pub fn all(
     buf: &mut [Particle; N],
     spins: &mut [Spin; N_ROUGH],
@@ -195,25 +269,10 @@ pub fn all(
     out: &mut impl Write,
     mut clock: impl FnMut() -> u64,
 ) -> Result<[Summary; 3], DemoError> {
-    let a = run(
-        "grw3",
-        &grw_example3(N),
-        (buf, &mut []),
-        seed,
-        &GRW3_TIMES,
-        out,
-        &mut clock,
-    )?;
-    for &t in &GRW3_TIMES[1..] {
-        writeln!(
-            out,
-            "grw3 exact t={t:?} T_GRW13={:?}",
-            grw_example3_exact(t)
-        )?;
-    }
+    let a = grw3(buf, seed, out, &mut clock)?;
     let b = run(
         "hcs",
-        &hcs_hard_spheres(N),
+        || hcs_hard_spheres(N),
         (buf, &mut []),
         seed,
         &HCS_TIMES,
@@ -222,7 +281,7 @@ pub fn all(
     )?;
     let c = run(
         "rough",
-        &rough_hcs(N_ROUGH),
+        || rough_hcs(N_ROUGH),
         (&mut buf[..N_ROUGH], spins),
         seed,
         &HCS_TIMES,
