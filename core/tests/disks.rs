@@ -143,8 +143,20 @@ fn disks_refuse_what_they_do_not_have() {
     });
     let cases: [(Physics, &str); 5] = [
         (
-            disks(8, HARD, 0.9, DriveChoice::Gaussian(0.1)),
-            "dimension of 2 (disks) takes no drive or white noise",
+            disks(
+                8,
+                HARD,
+                0.9,
+                DriveChoice::HostMedium {
+                    kernel: gdsmc_core::physics::BackgroundKernel::Maxwell,
+                    c1: 1.0,
+                    density: 1.0,
+                    mass: 1.0,
+                    temperature: 1.0,
+                    drift: [0.0; 3],
+                },
+            ),
+            "dimension of 2 (disks) takes only no drive, white noise or the Gaussian thermostat",
         ),
         (splitting, "scheme must be no-splitting for disks"),
         (impact, "restitution must be constant for disks"),

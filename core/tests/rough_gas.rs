@@ -169,7 +169,7 @@ fn rough_refusals_name_their_parameter() {
                 RotationChoice::spheres(0.0),
                 DriveChoice::Gaussian(1.0),
             ),
-            "rotation takes no drive or white noise (on translation, and `noise` on rotation)",
+            "rotation takes only no drive or white noise (on translation, and `noise` on rotation)",
         ),
     ];
     for (ph, msg) in cases {

@@ -91,7 +91,9 @@ fn bad_species_values_name_line_and_key() {
         "kind = \"host-medium\"\nkernel = \"maxwell\"",
     ));
     assert!(
-        e.contains("`species` take no drive, white noise (per species) or the Gaussian thermostat"),
+        e.contains(
+            "`species` take only no drive, white noise (per species) or the Gaussian thermostat"
+        ),
         "{e}"
     );
     // The Gaussian thermostat acts on every species (about the flow velocity).

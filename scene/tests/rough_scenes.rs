@@ -78,7 +78,7 @@ fn what_a_rough_gas_cannot_take_is_refused_by_key() {
         "kind = \"gaussian\"\nzeta = 0.5",
     ));
     assert!(
-        e.contains("`rotation` takes no drive or white noise"),
+        e.contains("`rotation` takes only no drive or white noise"),
         "{e}"
     );
     let e = err(&ROUGH.replace(

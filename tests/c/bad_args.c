@@ -296,7 +296,7 @@ static void rough_particles(void) {
     c.dimension = 3;
     c.inertia = 0.4;
     c.drive = GDSMC_DRIVE_GAUSSIAN;
-    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.rough takes no drive or white noise");
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.rough takes only no drive or white noise");
     c.drive = GDSMC_DRIVE_WHITE_NOISE;
 
     size_t smooth = 0, bytes = 0, align = 0;

@@ -58,6 +58,26 @@ pub fn times_outside(
         .count()
 }
 
+/// Asserts that column `name` lies within `factor` times its 99.9% half-width of
+/// `reference(t)` at every observation time; `what` names the case in the message.
+pub fn assert_within_at_all_times(
+    stats: &RunStats,
+    name: &str,
+    factor: f64,
+    reference: impl Fn(f64) -> f64,
+    what: &str,
+) {
+    for (ti, &t) in stats.times.iter().enumerate() {
+        let (m, c) = at(stats, ti, name);
+        let r = reference(t);
+        assert!(
+            (m - r).abs() <= factor * c,
+            "{what}, t = {t}: {name} {m} +- {}, reference {r}",
+            factor * c
+        );
+    }
+}
+
 /// Index of the observation time `t` (exactly one of the scene's times).
 pub fn time_index(stats: &RunStats, t: f64) -> usize {
     stats

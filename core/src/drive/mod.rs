@@ -12,7 +12,7 @@ pub mod white_noise;
 pub use host_medium::{HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground};
 pub use none::NoDrive;
 pub use thermostat::{ConstantForce, GaussianThermostat};
-pub use white_noise::{PlanarWhiteNoise, WhiteNoise};
+pub use white_noise::{PlanarWhiteNoise, WhiteNoise, WhiteNoiseIn};
 
 use crate::math::Real;
 use crate::moments::Observables;

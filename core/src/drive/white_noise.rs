@@ -4,7 +4,7 @@
 
 use super::Drive;
 use crate::batch::kick::white_noise_kick_all;
-use crate::geometry::{Disks, Geometry};
+use crate::geometry::{Disks, Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
 use crate::rng::Rng;
@@ -69,5 +69,28 @@ impl Drive for PlanarWhiteNoise {
     #[inline(always)]
     fn evolve<R: Rng + ?Sized>(&self, v: Vec3, dt: Real, rng: &mut R) -> Vec3 {
         v + sqrt(2.0 * self.beta * dt) * Disks::normal(rng)
+    }
+}
+
+/// White noise in the dimension a [`Geometry`] names: [`WhiteNoise`] for spheres,
+/// [`PlanarWhiteNoise`] for disks (a loop generic over the dimension takes `G::Noise`).
+pub trait WhiteNoiseIn: Geometry {
+    /// The white noise of this dimension.
+    type Noise: Drive;
+    /// A validated white noise in this dimension (same `beta`).
+    fn noise(w: WhiteNoise) -> Self::Noise;
+}
+
+impl WhiteNoiseIn for Spheres {
+    type Noise = WhiteNoise;
+    fn noise(w: WhiteNoise) -> WhiteNoise {
+        w
+    }
+}
+
+impl WhiteNoiseIn for Disks {
+    type Noise = PlanarWhiteNoise;
+    fn noise(w: WhiteNoise) -> PlanarWhiteNoise {
+        PlanarWhiteNoise { beta: w.beta }
     }
 }

@@ -1,7 +1,8 @@
 //! The validated dimension of a [`super::Physics`]: disks (`d = 2`, [`crate::geometry`]) run
 //! the loops composed for them, which are the no-splitting scheme with a constant restitution
-//! and no drive or white noise in the plane (one species or a mixture, smooth or rough), and
-//! start drifts in the plane.
+//! and no drive, white noise in the plane or the Gaussian thermostat (one species or a mixture;
+//! rough particles take only no drive or white noise, as in three dimensions), and start drifts in
+//! the plane.
 
 use super::error::{Param, PhysicsError, Problem};
 use super::parts::{DriveModel, LawModel, SchemeModel};
@@ -30,11 +31,17 @@ pub(super) fn dimension(
     if !matches!(law, LawModel::Constant(_)) {
         return refuse(Param::Restitution, "must be constant for disks");
     }
-    if !matches!(drive, DriveModel::None | DriveModel::WhiteNoise(_)) {
+    // The Gaussian thermostat scales the peculiar velocity, `v - V` (MS (61)), which stays in
+    // the plane; the host medium's partners and impact directions are drawn in three
+    // dimensions (BRS (29)).
+    if !matches!(
+        drive,
+        DriveModel::None | DriveModel::WhiteNoise(_) | DriveModel::Gaussian(_)
+    ) {
         return refuse(
             Param::Dimension,
-            "of 2 (disks) takes no drive or white noise (the thermostats and the host medium \
-             are written for spheres)",
+            "of 2 (disks) takes only no drive, white noise or the Gaussian thermostat (the host \
+             medium is written for spheres)",
         );
     }
     for (k, c) in physics.initial.iter().enumerate() {

@@ -10,16 +10,15 @@
 )]
 
 use super::engine::{
-    ByDiskDrive, ByDiskMixtureDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive,
-    ByRoughMixtureDrive, ByScheme, DiskMixture, Engine, Family, Mixture, Rough, RoughMixture,
-    Smooth, SmoothDisks,
+    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive, ByRoughMixtureDrive,
+    ByScheme, Engine, Family, Mixture, Rough, RoughMixture, Smooth, SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
 use super::rotation::{MixtureRotation, RoughModel};
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
-use crate::drive::{Drive, NoDrive, PlanarWhiteNoise};
+use crate::drive::{Drive, NoDrive, WhiteNoiseIn};
 use crate::engine::{EngineError, NoSplitting, Splitting, SumNoSplitting, TimeStepped};
 use crate::geometry::{DimensionChoice, Disks, Geometry, Spheres};
 use crate::kernel::Kernel;
@@ -133,7 +132,12 @@ impl Model {
             return match (&mx.rotation, self.dimension) {
                 (None, DimensionChoice::Three) => built!(feature = "mixtures", "mixtures", {
                     wrap(
-                        by_kernel(k, &MixtureBuild(mx, self.drive), p, t0),
+                        by_kernel(
+                            k,
+                            &MixtureBuild::<Spheres>(mx, self.drive, PhantomData),
+                            p,
+                            t0,
+                        ),
                         Engine::Mixture,
                     )
                 }),
@@ -142,7 +146,12 @@ impl Model {
                     "mixtures` and `disks",
                     {
                         wrap(
-                            by_kernel(k, &DiskMixtureBuild(mx, self.drive), p, t0),
+                            by_kernel(
+                                k,
+                                &MixtureBuild::<Disks>(mx, self.drive, PhantomData),
+                                p,
+                                t0,
+                            ),
                             Engine::DiskMixture,
                         )
                     }
@@ -224,20 +233,23 @@ impl Model {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
-        // Validated: disks have a constant law and no drive or white noise.
+        // Validated: disks have a constant law and no drive, white noise or the Gaussian
+        // thermostat.
         let LawModel::Constant(a) = self.law else {
             return Err(EngineError::Invariant("disks have a constant restitution"));
         };
         match self.drive {
             DriveModel::WhiteNoise(w) => built!(feature = "white-noise", "white-noise", {
-                let d = PlanarWhiteNoise::new(w.beta()).ok_or(EngineError::Invariant(
-                    "a validated white noise is planar white noise",
-                ))?;
                 wrap(
-                    NoSplitting::start_in(k, d, a, p, t0),
+                    NoSplitting::start_in(k, Disks::noise(w), a, p, t0),
                     ByDiskDrive::WhiteNoise,
                 )
             }),
+            DriveModel::Gaussian(g) => built!(
+                feature = "gaussian-thermostat",
+                "gaussian-thermostat",
+                wrap(NoSplitting::start_in(k, g, a, p, t0), ByDiskDrive::Gaussian)
+            ),
             _ => built!(feature = "cooling", "cooling", {
                 wrap(
                     NoSplitting::start_in(k, NoDrive, a, p, t0),
@@ -378,23 +390,23 @@ fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
     ))
 }
 
-/// The mixture loop of kernel `k` (scaled per pair) and the drive (none, white noise per
-/// species, or the Gaussian thermostat). Never inlined: its large locals (the pair table, the
-/// per-species observables) would otherwise sit in [`Model::start`]'s frame for every physics
-/// (the firmware's peak stack went from 11.6 to 29.0 KiB when they did).
+/// The mixture loop of kernel `k` (scaled per pair) in dimension `G` and the drive (none,
+/// white noise per species, or the Gaussian thermostat). Never inlined: its large locals (the
+/// pair table, the per-species observables) would otherwise sit in [`Model::start`]'s frame for
+/// every physics (the firmware's peak stack went from 11.6 to 29.0 KiB when they did).
 #[inline(never)]
-fn mixture<K: Kernel>(
+fn mixture<K: Kernel, G: WhiteNoiseIn>(
     mx: &MixtureModel,
     k: K,
     drive: DriveModel,
     p: &mut Particles<'_>,
     t0: Real,
-) -> Result<(ByMixtureDrive<K>, Observables), EngineError> {
+) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
     let physics = pair_table(mx, k, &mx.laws)?;
     match drive {
         DriveModel::WhiteNoise(_) => built!(feature = "white-noise", "white-noise", {
             wrap(
-                start_mixture::<K, _, _, Spheres>(mx, &physics, &mx.noises, p, t0),
+                start_mixture::<K, _, _, G>(mx, &physics, &mx.noises.map(G::noise), p, t0),
                 ByMixtureDrive::WhiteNoise,
             )
         }),
@@ -402,48 +414,14 @@ fn mixture<K: Kernel>(
             feature = "gaussian-thermostat",
             "gaussian-thermostat",
             wrap(
-                start_mixture::<K, _, _, Spheres>(mx, &physics, &[g; MAX_SPECIES], p, t0),
+                start_mixture::<K, _, _, G>(mx, &physics, &[g; MAX_SPECIES], p, t0),
                 ByMixtureDrive::Gaussian,
             )
         ),
         _ => built!(feature = "cooling", "cooling", {
             wrap(
-                start_mixture::<K, _, _, Spheres>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                start_mixture::<K, _, _, G>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
                 ByMixtureDrive::None,
-            )
-        }),
-    }
-}
-
-/// A mixture of smooth disks: none or planar white noise per species.
-#[inline(never)]
-fn disk_mixture<K: Kernel>(
-    mx: &MixtureModel,
-    k: K,
-    drive: DriveModel,
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Result<(ByDiskMixtureDrive<K>, Observables), EngineError> {
-    let physics = pair_table(mx, k, &mx.laws)?;
-    match drive {
-        DriveModel::WhiteNoise(_) => built!(feature = "white-noise", "white-noise", {
-            let mut planar = [PlanarWhiteNoise::new(0.0)
-                .ok_or(EngineError::Invariant("no noise is planar white noise"))?;
-                MAX_SPECIES];
-            for (w, n) in planar.iter_mut().zip(&mx.noises) {
-                *w = PlanarWhiteNoise::new(n.beta()).ok_or(EngineError::Invariant(
-                    "a validated white noise is planar white noise",
-                ))?;
-            }
-            wrap(
-                start_mixture::<K, _, _, Disks>(mx, &physics, &planar, p, t0),
-                ByDiskMixtureDrive::WhiteNoise,
-            )
-        }),
-        _ => built!(feature = "cooling", "cooling", {
-            wrap(
-                start_mixture::<K, _, _, Disks>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
-                ByDiskMixtureDrive::None,
             )
         }),
     }
@@ -579,20 +557,6 @@ impl<G: Geometry> Build for RoughBuild<'_, G> {
     }
 }
 
-/// A mixture of smooth disks.
-struct DiskMixtureBuild<'a>(&'a MixtureModel, DriveModel);
-impl Build for DiskMixtureBuild<'_> {
-    type F = DiskMixture;
-    fn build<K: Kernel>(
-        &self,
-        k: K,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByDiskMixtureDrive<K>, Observables), EngineError> {
-        disk_mixture(self.0, k, self.1, p, t0)
-    }
-}
-
 /// A mixture of rough particles in dimension `G`.
 struct RoughMixtureBuild<'a, G>(&'a MixtureModel, &'a MixtureRotation, PhantomData<G>);
 impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {
@@ -607,16 +571,16 @@ impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {
     }
 }
 
-/// A mixture: the pair kernels scaled from `k`, by drive.
-struct MixtureBuild<'a>(&'a MixtureModel, DriveModel);
-impl Build for MixtureBuild<'_> {
-    type F = Mixture;
+/// A mixture of smooth particles in dimension `G`: the pair kernels scaled from `k`, by drive.
+struct MixtureBuild<'a, G>(&'a MixtureModel, DriveModel, PhantomData<G>);
+impl<G: WhiteNoiseIn> Build for MixtureBuild<'_, G> {
+    type F = Mixture<G>;
     fn build<K: Kernel>(
         &self,
         k: K,
         p: &mut Particles<'_>,
         t0: Real,
-    ) -> Result<(ByMixtureDrive<K>, Observables), EngineError> {
+    ) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
         mixture(self.0, k, self.1, p, t0)
     }
 }

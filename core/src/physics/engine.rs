@@ -12,7 +12,7 @@
 
 use crate::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, MaxwellBackground,
-    NoDrive, PlanarWhiteNoise, WhiteNoise,
+    NoDrive, PlanarWhiteNoise, WhiteNoise, WhiteNoiseIn,
 };
 use crate::engine::{
     Counts, EngineError, EventLoop, Frame, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
@@ -38,7 +38,7 @@ pub enum Engine {
     /// Smooth spheres of one species: by drive, law and scheme.
     Smooth(ByKernel<Smooth>),
     /// A mixture of several species of smooth spheres (feature `mixtures`).
-    Mixture(Built<ByKernel<Mixture>, MIXTURES>),
+    Mixture(Built<ByKernel<Mixture<Spheres>>, MIXTURES>),
     /// Rough spheres (translation and rotation; feature `rough`).
     Rough(Built<ByKernel<Rough<Spheres>>, ROUGH>),
     /// Smooth disks (`d = 2`; feature `disks`).
@@ -46,7 +46,7 @@ pub enum Engine {
     /// Rough disks (features `rough`, `disks`).
     RoughDisks(Built<ByKernel<Rough<Disks>>, ROUGH_DISKS>),
     /// A mixture of smooth disks (features `mixtures`, `disks`).
-    DiskMixture(Built<ByKernel<DiskMixture>, DISK_MIXTURES>),
+    DiskMixture(Built<ByKernel<Mixture<Disks>>, DISK_MIXTURES>),
     /// A mixture of rough spheres (features `mixtures`, `rough`).
     RoughMixture(Built<ByKernel<RoughMixture<Spheres>>, ROUGH_MIXTURES>),
     /// A mixture of rough disks (features `mixtures`, `rough`, `disks`).
@@ -173,18 +173,11 @@ impl<G: Geometry> Family for Rough<G> {
     type Of<K: Kernel> = ByRoughDrive<K, G>;
 }
 
-/// Mixtures of smooth spheres ([`ByMixtureDrive`]).
+/// Mixtures of smooth particles in dimension `G` ([`ByMixtureDrive`]).
 #[derive(Clone, Copy, Debug)]
-pub struct Mixture;
-impl Family for Mixture {
-    type Of<K: Kernel> = ByMixtureDrive<K>;
-}
-
-/// Mixtures of smooth disks ([`ByDiskMixtureDrive`]).
-#[derive(Clone, Copy, Debug)]
-pub struct DiskMixture;
-impl Family for DiskMixture {
-    type Of<K: Kernel> = ByDiskMixtureDrive<K>;
+pub struct Mixture<G>(core::marker::PhantomData<G>);
+impl<G: WhiteNoiseIn> Family for Mixture<G> {
+    type Of<K: Kernel> = ByMixtureDrive<K, G>;
 }
 
 /// Mixtures of rough particles in dimension `G` ([`ByRoughMixtureDrive`]).
@@ -192,15 +185,6 @@ impl Family for DiskMixture {
 pub struct RoughMixture<G>(core::marker::PhantomData<G>);
 impl<G: Geometry> Family for RoughMixture<G> {
     type Of<K: Kernel> = ByRoughMixtureDrive<K, G>;
-}
-
-/// A mixture of smooth disks by drive, for kernel `K`.
-#[derive(Clone, Debug)]
-pub enum ByDiskMixtureDrive<K: Kernel> {
-    /// No drive: the mixture cools (feature `cooling`).
-    None(Built<MixtureNoSplitting<K, NoDrive, Constant, Disks>, COOLING>),
-    /// White noise in the plane, each species its own strength (feature `white-noise`).
-    WhiteNoise(Built<MixtureNoSplitting<K, PlanarWhiteNoise, Constant, Disks>, WHITE_NOISE>),
 }
 
 /// A rough mixture by drive, for kernel `K` and dimension `G`.
@@ -220,6 +204,8 @@ pub enum ByDiskDrive<K: Kernel> {
     None(Built<NoSplitting<K, NoDrive, Constant, Disks>, COOLING>),
     /// White noise in the plane (feature `white-noise`).
     WhiteNoise(Built<NoSplitting<K, PlanarWhiteNoise, Constant, Disks>, WHITE_NOISE>),
+    /// The Gaussian thermostat (MS (12); feature `gaussian-thermostat`).
+    Gaussian(Built<NoSplitting<K, GaussianThermostat, Constant, Disks>, GAUSSIAN>),
 }
 
 /// A rough gas's engine by drive (the exact loop with the rough map), for kernel `K` and
@@ -232,16 +218,16 @@ pub enum ByRoughDrive<K: Kernel, G: Geometry = Spheres> {
     Noise(Built<NoSplitting<K, RoughNoise<G>, RoughMap, G>, WHITE_NOISE>),
 }
 
-/// A mixture's engine by drive, for kernel `K`.
+/// A mixture's engine by drive, for kernel `K` and dimension `G`.
 #[derive(Clone, Debug)]
-pub enum ByMixtureDrive<K: Kernel> {
+pub enum ByMixtureDrive<K: Kernel, G: WhiteNoiseIn> {
     /// No drive: the mixture cools (feature `cooling`).
-    None(Built<MixtureNoSplitting<K, NoDrive, Constant>, COOLING>),
-    /// White noise, each species its own strength (feature `white-noise`).
-    WhiteNoise(Built<MixtureNoSplitting<K, WhiteNoise, Constant>, WHITE_NOISE>),
+    None(Built<MixtureNoSplitting<K, NoDrive, Constant, G>, COOLING>),
+    /// White noise in the dimension, each species its own strength (feature `white-noise`).
+    WhiteNoise(Built<MixtureNoSplitting<K, G::Noise, Constant, G>, WHITE_NOISE>),
     /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity (feature
     /// `gaussian-thermostat`).
-    Gaussian(Built<MixtureNoSplitting<K, GaussianThermostat, Constant>, GAUSSIAN>),
+    Gaussian(Built<MixtureNoSplitting<K, GaussianThermostat, Constant, G>, GAUSSIAN>),
 }
 
 /// By drive, for kernel `K`.
@@ -336,10 +322,9 @@ forward!(
     RoughDiskMixture
 );
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
-forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise);
+forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
-forward!(ByMixtureDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
-forward!(ByDiskMixtureDrive<K>, [K: Kernel], None, WhiteNoise);
+forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);

@@ -256,7 +256,7 @@ pub(super) fn rotation(
             return refuse(
                 Param::Rotation,
                 Problem::DoesNotFit(
-                    "takes no drive or white noise (on translation, and `noise` on rotation)",
+                    "takes only no drive or white noise (on translation, and `noise` on rotation)",
                 ),
             );
         }

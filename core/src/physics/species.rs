@@ -184,7 +184,7 @@ pub(super) fn mixture(
             return refuse(
                 Param::Rotation,
                 Problem::DoesNotFit(
-                    "takes no drive or white noise (on translation, and `noise` on rotation)",
+                    "takes only no drive or white noise (on translation, and `noise` on rotation)",
                 ),
             );
         }
@@ -205,7 +205,7 @@ pub(super) fn mixture(
             return refuse(
                 Param::Species,
                 Problem::DoesNotFit(
-                    "take no drive, white noise (per species) or the Gaussian thermostat",
+                    "take only no drive, white noise (per species) or the Gaussian thermostat",
                 ),
             );
         }

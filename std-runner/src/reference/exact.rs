@@ -28,8 +28,10 @@ impl MaxwellTemperature {
         }
     }
 
-    /// With a Gaussian thermostat `F = m zeta v` (MS (12)), which adds `2 zeta T` to `dT/dt`:
-    /// `T(t) = T_0 exp(-(k - 2 zeta) t)` (no white noise).
+    /// With a Gaussian thermostat `F = m zeta (v - V)` (MS (12), about the bulk velocity as
+    /// the core applies it), which adds `2 zeta T` to `dT/dt`: `T(t) = T_0 exp(-(k - 2 zeta) t)`
+    /// (no white noise). Exact at finite `n` for the Maxwell kernel in any dimension: the
+    /// scaling of `v - V` commutes with collisions whose rate does not depend on `|u|`.
     pub fn with_gaussian(mut self, zeta: f64) -> Self {
         self.zeta = zeta;
         self
@@ -80,9 +82,11 @@ impl MaxwellTemperature {
     }
 
     /// `E |P(t)|^2 / (3 n^2) = (T_0 + 2 beta t) / n`: what the raw temperature's mean adds to
-    /// the bulk one (zero-mean start; collisions keep `P`, kicks make it a random walk).
+    /// the bulk one (zero-mean start; collisions keep `P`, and so does the Gaussian thermostat,
+    /// which scales the peculiar velocity `v - V` (MS (61)); kicks make it a random walk).
+    /// The same in any dimension: `E |P|^2 = d n T_0 + 2 d n beta t` over `d n^2`.
     pub fn bulk_to_raw(&self, n: usize, t: f64) -> f64 {
-        (self.t0 * (2.0 * self.zeta * t).exp() + 2.0 * self.beta * t) / n as f64
+        (self.t0 + 2.0 * self.beta * t) / n as f64
     }
 
     /// The exact ensemble mean of `T_bulk` of the splitting schemes (RW Algorithms 1 and 2)

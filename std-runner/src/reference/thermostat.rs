@@ -11,7 +11,10 @@
 //! `kappa = pi gamma C (1 - alpha^2)` for Maxwell molecules (GRW (13)'s rate) and
 //! `9.45 gamma C (1 - alpha^2)` for hard spheres. The non-Gaussian correction (for hard spheres
 //! `1 + 3 a2 / 16`, a fraction of a percent at MS's `a2`) is left out: the figures are
-//! estimates for choosing `zeta`, not references to judge a run by.
+//! estimates for choosing `zeta`, not references to judge a run by. They are those of spheres:
+//! disks (whose hard-disk impact law and moments of `u` in the plane give other constants) get
+//! none. A Maxwell gas needs none in any dimension: its exact `T` is GRW (13) times `e^{2 zeta
+//! t}` (`curves::maxwell_temperature`).
 
 use crate::scene::{DriveChoice, RestitutionLaw, Scene};
 use statrs::function::gamma::gamma;
@@ -32,9 +35,12 @@ pub struct GaussianBalance {
 }
 
 impl GaussianBalance {
-    /// The balance for a scene with a Gaussian thermostat and a constant restitution
-    /// coefficient below 1 (else none), from its initial temperature.
+    /// The balance for a scene of spheres with a Gaussian thermostat and a constant
+    /// restitution coefficient below 1 (else none), from its initial temperature.
     pub fn of(scene: &Scene) -> Option<Self> {
+        if scene.dimension() != 3 {
+            return None;
+        }
         let t0 = crate::run::initial_temperature(scene);
         let DriveChoice::Gaussian(zeta) = scene.physics().drive else {
             return None;
