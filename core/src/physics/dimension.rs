@@ -1,11 +1,11 @@
 //! The validated dimension of a [`super::Physics`]: disks (`d = 2`, [`crate::geometry`]) run
-//! the loops composed for them, which are the no-splitting scheme with a constant restitution
-//! and no drive, white noise in the plane or the Gaussian thermostat (one species or a mixture;
+//! the loops composed for them, which are the no-splitting scheme with either restitution law
+//! (BRS (10)'s normal speed follows from the map GRW (3) in any dimension) and no drive, white noise in the plane or the Gaussian thermostat (one species or a mixture;
 //! rough particles take only no drive or white noise, as in three dimensions), and start drifts in
 //! the plane.
 
 use super::error::{Param, PhysicsError, Problem};
-use super::parts::{DriveModel, LawModel, SchemeModel};
+use super::parts::{DriveModel, SchemeModel};
 use super::{DimensionChoice, Physics};
 
 fn refuse<T>(param: Param, why: &'static str) -> Result<T, PhysicsError> {
@@ -15,10 +15,9 @@ fn refuse<T>(param: Param, why: &'static str) -> Result<T, PhysicsError> {
     })
 }
 
-/// Validates the dimension of `physics` against the law, drive and scheme already validated.
+/// Validates the dimension of `physics` against the drive and scheme already validated.
 pub(super) fn dimension(
     physics: &Physics,
-    law: LawModel,
     drive: DriveModel,
     scheme: SchemeModel,
 ) -> Result<DimensionChoice, PhysicsError> {
@@ -27,9 +26,6 @@ pub(super) fn dimension(
     }
     if !matches!(scheme, SchemeModel::NoSplitting) {
         return refuse(Param::Scheme, "must be no-splitting for disks");
-    }
-    if !matches!(law, LawModel::Constant(_)) {
-        return refuse(Param::Restitution, "must be constant for disks");
     }
     // The Gaussian thermostat scales the peculiar velocity, `v - V` (MS (61)), which stays in
     // the plane; the host medium's partners and impact directions are drawn in three

@@ -10,8 +10,9 @@
 )]
 
 use super::engine::{
-    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive, ByRoughMixtureDrive,
-    ByScheme, Engine, Family, Mixture, Rough, RoughMixture, Smooth, SmoothDisks,
+    ByDiskDrive, ByDiskLaw, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive,
+    ByRoughMixtureDrive, ByScheme, Engine, Family, Mixture, Rough, RoughMixture, Smooth,
+    SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
@@ -233,27 +234,40 @@ impl Model {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
-        // Validated: disks have a constant law and no drive, white noise or the Gaussian
-        // thermostat.
-        let LawModel::Constant(a) = self.law else {
-            return Err(EngineError::Invariant("disks have a constant restitution"));
-        };
+        // Validated: disks have no drive, white noise or the Gaussian thermostat.
         match self.drive {
             DriveModel::WhiteNoise(w) => built!(feature = "white-noise", "white-noise", {
                 wrap(
-                    NoSplitting::start_in(k, Disks::noise(w), a, p, t0),
+                    self.disk_law(k, Disks::noise(w), p, t0),
                     ByDiskDrive::WhiteNoise,
                 )
             }),
             DriveModel::Gaussian(g) => built!(
                 feature = "gaussian-thermostat",
                 "gaussian-thermostat",
-                wrap(NoSplitting::start_in(k, g, a, p, t0), ByDiskDrive::Gaussian)
+                wrap(self.disk_law(k, g, p, t0), ByDiskDrive::Gaussian)
             ),
             _ => built!(feature = "cooling", "cooling", {
+                wrap(self.disk_law(k, NoDrive, p, t0), ByDiskDrive::None)
+            }),
+        }
+    }
+
+    fn disk_law<K: Kernel, D: Drive>(
+        &self,
+        k: K,
+        d: D,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Result<(ByDiskLaw<K, D>, Observables), EngineError> {
+        match self.law {
+            LawModel::Constant(a) => {
+                wrap(NoSplitting::start_in(k, d, a, p, t0), ByDiskLaw::Constant)
+            }
+            LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
                 wrap(
-                    NoSplitting::start_in(k, NoDrive, a, p, t0),
-                    ByDiskDrive::None,
+                    NoSplitting::start_in(k, d, a, p, t0),
+                    ByDiskLaw::ImpactSpeed,
                 )
             }),
         }

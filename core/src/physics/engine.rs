@@ -201,11 +201,20 @@ pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
 #[derive(Clone, Debug)]
 pub enum ByDiskDrive<K: Kernel> {
     /// No drive: the disks cool (feature `cooling`).
-    None(Built<NoSplitting<K, NoDrive, Constant, Disks>, COOLING>),
+    None(Built<ByDiskLaw<K, NoDrive>, COOLING>),
     /// White noise in the plane (feature `white-noise`).
-    WhiteNoise(Built<NoSplitting<K, PlanarWhiteNoise, Constant, Disks>, WHITE_NOISE>),
+    WhiteNoise(Built<ByDiskLaw<K, PlanarWhiteNoise>, WHITE_NOISE>),
     /// The Gaussian thermostat (MS (12); feature `gaussian-thermostat`).
-    Gaussian(Built<NoSplitting<K, GaussianThermostat, Constant, Disks>, GAUSSIAN>),
+    Gaussian(Built<ByDiskLaw<K, GaussianThermostat>, GAUSSIAN>),
+}
+
+/// Smooth disks by restitution law (the no-splitting loop), for kernel `K` and drive `D`.
+#[derive(Clone, Debug)]
+pub enum ByDiskLaw<K: Kernel, D: Drive> {
+    /// A constant coefficient.
+    Constant(NoSplitting<K, D, Constant, Disks>),
+    /// The impact-speed law BRS (9)-(10) (feature `impact-speed`).
+    ImpactSpeed(Built<NoSplitting<K, D, ImpactSpeed, Disks>, IMPACT_SPEED>),
 }
 
 /// A rough gas's engine by drive (the exact loop with the rough map), for kernel `K` and
@@ -323,6 +332,7 @@ forward!(
 );
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
+forward!(ByDiskLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
