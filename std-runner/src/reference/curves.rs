@@ -12,8 +12,35 @@ pub struct ReferenceCurve {
     pub of: &'static str,
     /// Paper and equation.
     pub source: &'static str,
+    /// What the curve is to a run's means: the verdict judges only [`Kind::MeanAtN`].
+    pub kind: Kind,
     /// The curve.
     pub curve: Box<dyn Fn(f64) -> f64 + Send + Sync>,
+}
+
+/// What a reference curve is to a run's ensemble means.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// The exact ensemble mean at the run's n (and scheme): the run's mean must lie within its
+    /// interval of it, so the summary's verdict judges it.
+    MeanAtN,
+    /// An exact solution of the Boltzmann equation (n -> infinity): a mean at finite n lies
+    /// `O(1/n)` from it; shown beside the run, not judged.
+    Limit,
+    /// An approximation (Sonine, Maxwellian approximation, hydrodynamic closure): shown, not
+    /// judged.
+    Approximation,
+}
+
+impl Kind {
+    /// The words the summary uses for it.
+    pub fn words(self) -> &'static str {
+        match self {
+            Kind::MeanAtN => "the exact ensemble mean at this n",
+            Kind::Limit => "the n -> infinity solution, O(1/n) from a mean at finite n",
+            Kind::Approximation => "an approximation",
+        }
+    }
 }
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
@@ -211,12 +238,14 @@ fn rough_mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             name: SPECIES_REFERENCES[s][2],
             of: cols[s][1],
             source: src,
+            kind: Kind::Approximation,
             curve: Box::new(move |_| r),
         });
         out.push(ReferenceCurve {
             name: ROUGH_SPECIES_REFERENCES[s],
             of: rough[s][1],
             source: src,
+            kind: Kind::Approximation,
             curve: Box::new(move |_| th),
         });
     }
@@ -246,6 +275,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             name: SPECIES_REFERENCES[s][2],
             of: cols[s][1],
             source: "Garzó and Dufty 1999, Maxwellian approximation of the cooling (or steady) state",
+            kind: Kind::Approximation,
             curve: Box::new(move |_| r),
         });
     }
@@ -266,6 +296,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
                 name: SPECIES_REFERENCES[s][0],
                 of: cols[s][0],
                 source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
+                kind: Kind::MeanAtN,
                 curve: Box::new(move |t| e.temperatures_at(t, false)[s]),
             });
             let (e, x) = (exact.clone(), fractions.clone());
@@ -273,6 +304,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
                 name: SPECIES_REFERENCES[s][1],
                 of: cols[s][1],
                 source: "Boltzmann limit of the exact moments, E T_s / E T_mix",
+                kind: Kind::Limit,
                 curve: Box::new(move |t| {
                     let ts = e.temperatures_at(t, true);
                     let mix: f64 = ts.iter().zip(&x).map(|(a, b)| a * b).sum();
@@ -285,6 +317,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             name: "T_mix_mean_n",
             of: crate::run::columns::MIXTURE_TEMPERATURE,
             source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
+            kind: Kind::MeanAtN,
             curve: Box::new(move |t| {
                 let ts = e.temperatures_at(t, false);
                 ts.iter().zip(&x).map(|(a, b)| a * b).sum()
@@ -339,18 +372,21 @@ fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
                     name: "T_bulk_MA",
                     of: "T_bulk",
                     source: src,
+                    kind: Kind::Approximation,
                     curve: Box::new(move |t| a.at(t).0),
                 },
                 ReferenceCurve {
                     name: "T_rot_MA",
                     of: "T_rot",
                     source: src,
+                    kind: Kind::Approximation,
                     curve: Box::new(move |t| b.at(t).1),
                 },
                 ReferenceCurve {
                     name: "theta_MA",
                     of: "theta",
                     source: src,
+                    kind: Kind::Approximation,
                     curve: Box::new(move |t| {
                         let (x, y) = c.at(t);
                         y / x
@@ -388,6 +424,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             name: "a2_sonine",
             of: "a2",
             source: "van Noije and Ernst 1998, first Sonine approximation of the cooling state (MS (5) for d = 3); an approximation, reached once the gas has relaxed",
+            kind: Kind::Approximation,
             curve: Box::new(move |_| a2),
         });
     }
@@ -414,12 +451,14 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
                         name: tn,
                         of: "T_bulk",
                         source: src,
+                        kind: Kind::Approximation,
                         curve: Box::new(move |t| tr.temperature(t)),
                     });
                     out.push(ReferenceCurve {
                         name: vn,
                         of: "V_y",
                         source: src,
+                        kind: Kind::Approximation,
                         curve: Box::new(move |t| tr2.bulk(t, 1)),
                     });
                 }
@@ -440,6 +479,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
                 name,
                 of,
                 source: "BRS (14)",
+                kind: Kind::MeanAtN,
                 curve: Box::new(move |t| h.bulk(t)[k]),
             });
         }
@@ -447,6 +487,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             name: "T_bulk_exact",
             of: "T_bulk",
             source: "BRS (15)-(17)",
+            kind: Kind::Limit,
             curve: Box::new(move |t| h.temperature(t)),
         });
     }
@@ -458,12 +499,14 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             name: "T_exact",
             of: "T",
             source: "GRW (13)-(14)",
+            kind: Kind::Limit,
             curve: Box::new(move |t| mt.at(t) + v0),
         });
         out.push(ReferenceCurve {
             name: "T_bulk_exact",
             of: "T_bulk",
             source: "GRW (13)-(14)",
+            kind: Kind::Limit,
             curve: Box::new(move |t| mt.at(t)),
         });
         // The exact ensemble mean at this n (and time step): the scheme's whole systematic error,
@@ -486,12 +529,14 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             name: "T_mean_n",
             of: "T",
             source: "exact ensemble mean at this n and scheme",
+            kind: Kind::MeanAtN,
             curve: Box::new(move |t| raw(t) + mt.bulk_to_raw(n, t) + v0),
         });
         out.push(ReferenceCurve {
             name: "T_bulk_mean_n",
             of: "T_bulk",
             source: "exact ensemble mean at this n and scheme",
+            kind: Kind::MeanAtN,
             curve: Box::new(move |t| finite(t)),
         });
     }

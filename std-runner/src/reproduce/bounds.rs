@@ -4,35 +4,19 @@
 //! range holds with probability at least the 99.9% level of the whole report ([`level_999`],
 //! the 3.2-sigma level of GRW (25) and BRS (33)).
 
-use crate::run::stats::{level_999, quantile_t};
+pub use crate::run::stats::{KNOWN, joint, miss};
 use statrs::distribution::{Chi, ContinuousCDF};
 use statrs::function::gamma::ln_gamma;
-
-/// Degrees of freedom standing for a variance known exactly (the normal quantile).
-pub const KNOWN: u64 = u64::MAX;
 
 /// The most checks one report judges (the full report has about 150; `reproduce::run` refuses
 /// more): the run's verdict is Bonferroni-corrected over this many, so that a run of sound
 /// code fails with probability at most 0.14% however many cells it prints.
 pub const FAMILY: usize = 200;
 
-/// The probability a range may miss: `1 - level_999()` (0.00137).
-pub fn miss() -> f64 {
-    1.0 - level_999()
-}
-
 /// The factor that widens a noise half-width made for `k` intervals at the cell's level to the
 /// report's level: `joint(k FAMILY, dof) / joint(k, dof)` (1.4 for one normal interval).
 pub fn family_factor(k: usize, dof: u64) -> f64 {
     joint(k * FAMILY, dof) / joint(k, dof)
-}
-
-/// The multiplier that makes `k` two-sided intervals hold together at the 99.9% level
-/// (Bonferroni: each at `1 - miss/k`), Student-t with `dof` degrees of freedom ([`KNOWN`]: the
-/// normal quantile). `joint(1, KNOWN)` is 3.2.
-pub fn joint(k: usize, dof: u64) -> f64 {
-    let level = 1.0 - miss() / k.max(1) as f64;
-    quantile_t(if dof == KNOWN { u64::MAX / 2 } else { dof }, level)
 }
 
 /// The half-width of the range of a largest error `E = max_k |b_k + e_k|` over `k` times about

@@ -51,6 +51,22 @@ pub fn quantile_t(dof: u64, level: f64) -> f64 {
     StudentsT::new(0.0, 1.0, dof as f64).map_or(f64::NAN, |t| t.inverse_cdf(p))
 }
 
+/// Degrees of freedom standing for a variance known exactly (the normal quantile).
+pub const KNOWN: u64 = u64::MAX;
+
+/// The probability a 99.9% interval may miss: `1 - level_999()` (0.00137).
+pub fn miss() -> f64 {
+    1.0 - level_999()
+}
+
+/// The multiplier that makes `k` two-sided intervals hold together at the 99.9% level
+/// (Bonferroni: each at `1 - miss/k`), Student-t with `dof` degrees of freedom ([`KNOWN`]: the
+/// normal quantile). `joint(1, KNOWN)` is 3.2.
+pub fn joint(k: usize, dof: u64) -> f64 {
+    let level = 1.0 - miss() / k.max(1) as f64;
+    quantile_t(if dof == KNOWN { u64::MAX / 2 } else { dof }, level)
+}
+
 /// Running mean and sum of squared deviations of a vector of quantities.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Accumulator {

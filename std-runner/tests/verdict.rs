@@ -1,0 +1,70 @@
+//! The summary's verdict: GRW Example 3's means agree with the exact ensemble means at this n
+//! (the README's first run), the infinite-n curve is shown as what it is and not judged, and a
+//! reference moved off by a few percent is called a disagreement (the verdict can fail).
+
+use gdsmc_runner::reference::curves::{Kind, ReferenceCurve, for_scene};
+use gdsmc_runner::report::summary::text;
+use gdsmc_runner::scene;
+use std::path::PathBuf;
+
+fn grw3() -> (scene::Scene, gdsmc_runner::run::RunStats) {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
+    let mut s = scene::load(&path).unwrap();
+    s.set_n(64).expect("a valid particle count");
+    s.ensembles = 400;
+    s.seed = 12;
+    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
+    (s, st)
+}
+
+#[test]
+fn grw_example3_agrees_with_the_exact_mean_at_its_n() {
+    let (s, st) = grw3();
+    let refs = for_scene(&s);
+    let out = text(&s, &st, &refs);
+    let verdict = &out[out.find("\nverdict").expect("a verdict")..];
+    for (col, reference) in [("T", "T_mean_n"), ("T_bulk", "T_bulk_mean_n")] {
+        let line = verdict
+            .lines()
+            .find(|l| l.trim_start().starts_with(&format!("{col} ")))
+            .unwrap_or_else(|| panic!("no verdict line for {col}:\n{verdict}"));
+        assert!(
+            line.contains(&format!("agrees with {reference} ("))
+                && line.contains(&format!("all {} within the joint one", st.times.len())),
+            "{line}"
+        );
+    }
+    // T_exact (n -> infinity) is named, not judged: at n = 64 it lies about T/n from the mean.
+    assert!(
+        verdict.contains("shown, not judged (the n -> infinity solution")
+            && verdict.contains("T_exact, T_bulk_exact (GRW (13)-(14))"),
+        "{verdict}"
+    );
+    assert!(!verdict.contains("DISAGREES"), "{verdict}");
+}
+
+#[test]
+fn a_reference_off_by_three_percent_is_a_disagreement() {
+    let (s, st) = grw3();
+    let refs: Vec<ReferenceCurve> = for_scene(&s)
+        .into_iter()
+        .map(|r| {
+            if r.kind == Kind::MeanAtN {
+                let c = r.curve;
+                ReferenceCurve {
+                    curve: Box::new(move |t| 1.03 * c(t)),
+                    ..r
+                }
+            } else {
+                r
+            }
+        })
+        .collect();
+    let out = text(&s, &st, &refs);
+    assert!(
+        out.contains("T        DISAGREES with T_mean_n")
+            && out.contains("T_bulk   DISAGREES with T_bulk_mean_n"),
+        "{}",
+        &out[out.find("\nverdict").unwrap()..]
+    );
+}
