@@ -180,15 +180,13 @@ def test_progress_callback_counts_every_ensemble():
 
 def test_ctrl_c_keeps_the_finished_ensembles():
     s = SCENES / "grw-example3.toml"
-    t0 = time.time()
-    gdsmc.run(s, n=20000, ensembles=40)
-    per40 = time.time() - t0
-    # Enough ensembles for the run to last about 4 s by that estimate (at least 400): a run
-    # that finished before the signal (the estimate includes start-up costs that do not
-    # scale) failed CI once with "DID NOT RAISE".
-    full = max(400, int(40 * 4.0 / max(per40, 1e-3)))
-    # SIGINT to this process during the run, as Ctrl-C or a notebook's interrupt sends it.
-    timer = threading.Timer(min(0.5, per40), os.kill, (os.getpid(), signal.SIGINT))
+    # A run far longer than the signal's delay on any machine (about 30 s of work here, and
+    # stopped after 1 s): sizing it from a timed first run failed CI twice with "DID NOT
+    # RAISE", when that run's start-up costs made the estimate too short.
+    full = 4000
+    # SIGINT to this process during the run, as Ctrl-C or a notebook's interrupt sends it; 1 s
+    # leaves the wrapper's start far behind.
+    timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
     timer.start()
     with pytest.raises(gdsmc.Interrupted) as e:
         gdsmc.run(s, n=20000, ensembles=full)
