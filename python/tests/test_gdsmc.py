@@ -142,6 +142,12 @@ def test_bad_scenes_name_the_key():
         s.set("collisions.restitution", 1.5)
     with pytest.raises(gdsmc.SceneError, match=r"collisions\.no_such_key|no_such_key"):
         s.set("collisions.no_such_key", 1)
+    # A typo in a later set names that key alone, in Python's words (not the command's --set).
+    with pytest.raises(gdsmc.SceneError) as e:
+        s.set("collisions.restitution", 0.4).set("collisions.restitutoin", 0.3)
+    message = str(e.value)
+    assert message.startswith('set("collisions.restitutoin")'), message
+    assert "--set" not in message and "collisions.restitution," not in message, message
     with pytest.raises(gdsmc.SceneError, match=r"particles\.n"):
         gdsmc.run(s, n=0)
     with pytest.raises(gdsmc.SceneError, match="cannot read"):

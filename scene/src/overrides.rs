@@ -168,17 +168,26 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
         }
         Error::Parse { message, .. } => {
             let first = message.lines().last().unwrap_or("").trim().to_string();
-            let keys: Vec<&str> = overrides.iter().map(|o| o.key()).collect();
-            let source = (overrides.len() == 1).then(|| &overrides[0]);
-            bad(
-                source,
-                &keys.join(", "),
-                format!("does not fit the scene schema: {first}"),
-            )
+            // The override that breaks the schema: the first whose prefix of the overrides no
+            // longer reads (only on this error path), else the last; named alone, by its source.
+            let k = (1..overrides.len())
+                .find(|&k| {
+                    matches!(
+                        parse_with(path, text, &overrides[..k]),
+                        Err(Error::Invalid { ref key, ref message, .. })
+                            if key == overrides[k - 1].key() && message.starts_with(SCHEMA)
+                    )
+                })
+                .unwrap_or(overrides.len());
+            let o = &overrides[k - 1];
+            bad(Some(o), o.key(), format!("{SCHEMA}: {first}"))
         }
         other => other,
     })
 }
+
+/// The words of an override that the scene schema does not read.
+const SCHEMA: &str = "does not fit the scene schema";
 
 /// `name[k]` as `(name, k)`.
 fn indexed(part: &str) -> Option<(&str, usize)> {

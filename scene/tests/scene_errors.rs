@@ -174,6 +174,22 @@ mod overrides {
                 && e.contains("unknown field `m`"),
             "{e}"
         );
+        // The bad one of several is named alone, by its own source.
+        let e = with(&["collisions.restitution=0.4", "particles.m=3"]).unwrap_err();
+        assert!(
+            e.starts_with("--set: `particles.m` does not fit the scene schema"),
+            "{e}"
+        );
+        let e = with(&["collisions.restitution=1.5", "particles.m=3"]).unwrap_err();
+        assert!(
+            e.starts_with("--set: `particles.m` does not fit the scene schema"),
+            "{e}"
+        );
+        let e = with(&["particles.m=3", "collisions.restitution=0.4"]).unwrap_err();
+        assert!(
+            e.starts_with("--set: `particles.m` does not fit the scene schema"),
+            "{e}"
+        );
         let e = with(&["particles.n"]).unwrap_err();
         assert!(e.contains("must have the form key.path=value"), "{e}");
         let e = with(&["particles.n.x=3"]).unwrap_err();

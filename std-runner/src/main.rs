@@ -610,14 +610,6 @@ fn reproduce(
         return Err(e);
     }
     let bad = reproduce::failures(&tables);
-    let paper_off: Vec<String> = tables
-        .iter()
-        .flat_map(|t| {
-            t.cells_where(|v| v == reproduce::Verdict::Disagree(reproduce::Blame::Paper))
-                .into_iter()
-                .map(move |d| format!("{}: {d}", t.name))
-        })
-        .collect();
     println!(
         "\n{} tables in {:.0} s; wrote {}\n{}",
         tables.len(),
@@ -625,12 +617,7 @@ fn reproduce(
         report.display(),
         reproduce::Counts::of(&tables).line()
     );
-    if !paper_off.is_empty() {
-        println!(
-            "published figures outside the range of an exact value: {}",
-            paper_off.join("; ")
-        );
-    }
+    print!("{}", reproduce::epilogue(&tables));
     if bad.is_empty() {
         println!(
             "no disagreement of ours beyond the report-wide range (Bonferroni over every \

@@ -27,7 +27,7 @@ mod rw;
 
 pub use cells::{Against, Blame, Cell, Check, Counts, Row, Side, Table, Verdict, rounding};
 pub use figure::fmt;
-pub use report::{markdown, text};
+pub use report::{epilogue, markdown, text};
 pub(crate) use runs::{at, ensembles, go, largest, relative, scene, steady};
 
 use crate::Error;

@@ -67,6 +67,71 @@ pub fn text(t: &Table) -> String {
     s
 }
 
+/// The lines that end a `reproduce` run on the terminal, one per unusual class of cell, each
+/// saying why the cell is what it is: a disagreement of ours that stays within the report-wide
+/// range (expected now and then from sound code, so it does not fail the run), a disputed cell
+/// with the evidence against the paper's figure, and the published figures off an exact value.
+pub fn epilogue(tables: &[Table]) -> String {
+    let mut s = String::new();
+    let mut within = Vec::new();
+    let mut disputed = Vec::new();
+    let mut paper_off = Vec::new();
+    for t in tables {
+        for r in &t.rows {
+            for c in &r.cells {
+                let at = format!("{} {}: {}", t.name, r.label, c.quantity);
+                match c.verdict() {
+                    v if v.against_us() && !c.fails_run() => {
+                        within.push(format!("{at} (ours {}; {})", fmt(c.ours), c.basis()))
+                    }
+                    Verdict::Disputed => {
+                        disputed.push(format!("{at}: {}", c.dispute.as_deref().unwrap_or("")))
+                    }
+                    Verdict::Disagree(crate::reproduce::Blame::Paper) => paper_off.push(format!(
+                        "{at} (paper {}, ours {})",
+                        fmt(c.paper),
+                        fmt(c.ours)
+                    )),
+                    _ => {}
+                }
+            }
+        }
+    }
+    if !within.is_empty() {
+        let _ = writeln!(
+            s,
+            "disagreements of ours within the report-wide range (each misses its own 99.9% range; \
+             the run is judged at 99.9% over every check a report may hold, Bonferroni over {}, \
+             so a sound run shows about one such miss per {} checks and still passes):",
+            super::bounds::FAMILY,
+            (1.0 / crate::run::stats::miss()).round()
+        );
+        for w in &within {
+            let _ = writeln!(s, "  {w}");
+        }
+    }
+    if !disputed.is_empty() {
+        let _ = writeln!(
+            s,
+            "disputed (a check failed, and a consistency check of the same run puts the paper's \
+             figure off):"
+        );
+        for d in &disputed {
+            let _ = writeln!(s, "  {d}");
+        }
+    }
+    if !paper_off.is_empty() {
+        let _ = writeln!(
+            s,
+            "published figures outside the range of an exact value (findings, not failures):"
+        );
+        for p in &paper_off {
+            let _ = writeln!(s, "  {p}");
+        }
+    }
+    s
+}
+
 /// The markdown report of a whole `reproduce` run.
 pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
     let mut s = String::new();
