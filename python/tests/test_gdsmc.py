@@ -187,16 +187,22 @@ def test_progress_callback_counts_every_ensemble():
 def test_ctrl_c_keeps_the_finished_ensembles():
     s = SCENES / "grw-example3.toml"
     # A run far longer than the signal's delay on any machine (about 30 s of work here, and
-    # stopped after 1 s): sizing it from a timed first run failed CI twice with "DID NOT
-    # RAISE", when that run's start-up costs made the estimate too short.
+    # stopped after 1 s), not sized from a timed first run.
     full = 4000
+    # Python's own Ctrl-C handler, whatever this process inherited: a shell that starts a job in
+    # the background starts it with SIGINT ignored, and Python then installs no handler, so the
+    # signal below did nothing (CI run from such a shell: "DID NOT RAISE").
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     # SIGINT to this process during the run, as Ctrl-C or a notebook's interrupt sends it; 1 s
     # leaves the wrapper's start far behind.
     timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
     timer.start()
-    with pytest.raises(gdsmc.Interrupted) as e:
-        gdsmc.run(s, n=20000, ensembles=full)
-    timer.cancel()
+    try:
+        with pytest.raises(gdsmc.Interrupted) as e:
+            gdsmc.run(s, n=20000, ensembles=full)
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, previous)
     kept = e.value.result
     assert isinstance(e.value, KeyboardInterrupt)
     assert 0 < kept.ensembles < full, kept.ensembles
