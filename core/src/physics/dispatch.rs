@@ -35,7 +35,7 @@ use core::marker::PhantomData;
 /// `$e` when the build holds the engine (`$on`, a cfg predicate on gdsmc-core's features),
 /// else the refusal naming the feature: its loops are then not compiled.
 macro_rules! built {
-    ($on:meta, $name:literal, $e:expr) => {{
+    ($on:meta, $name:expr, $e:expr) => {{
         #[cfg($on)]
         let r = $e;
         #[cfg(not($on))]
@@ -61,7 +61,9 @@ impl Model {
         }
         let disks = self.dimension == DimensionChoice::Two;
         if self.has_species() {
-            let mx = self.mixture().ok_or_else(|| self.mixture_left_out())?;
+            let mx = self
+                .mixture()
+                .ok_or_else(|| EngineError::NotBuilt(self.mixture_features()))?;
             // Species by species, each from its own Maxwellian, in particle order (disks drop
             // the z components, as below).
             for s in 0..mx.species.len() {
@@ -129,22 +131,26 @@ impl Model {
         }
         let k = self.kernel;
         if self.has_species() {
-            let mx = self.mixture().ok_or_else(|| self.mixture_left_out())?;
+            let mx = self
+                .mixture()
+                .ok_or_else(|| EngineError::NotBuilt(self.mixture_features()))?;
             return match (&mx.rotation, self.dimension) {
-                (None, DimensionChoice::Three) => built!(feature = "mixtures", "mixtures", {
-                    wrap(
-                        by_kernel(
-                            k,
-                            &MixtureBuild::<Spheres>(mx, self.drive, PhantomData),
-                            p,
-                            t0,
-                        ),
-                        Engine::Mixture,
-                    )
-                }),
+                (None, DimensionChoice::Three) => {
+                    built!(feature = "mixtures", self.mixture_features(), {
+                        wrap(
+                            by_kernel(
+                                k,
+                                &MixtureBuild::<Spheres>(mx, self.drive, PhantomData),
+                                p,
+                                t0,
+                            ),
+                            Engine::Mixture,
+                        )
+                    })
+                }
                 (None, DimensionChoice::Two) => built!(
                     all(feature = "mixtures", feature = "disks"),
-                    "mixtures` and `disks",
+                    self.mixture_features(),
                     {
                         wrap(
                             by_kernel(
@@ -159,7 +165,7 @@ impl Model {
                 ),
                 (Some(r), DimensionChoice::Three) => built!(
                     all(feature = "mixtures", feature = "rough"),
-                    "mixtures` and `rough",
+                    self.mixture_features(),
                     {
                         wrap(
                             by_kernel(k, &RoughMixtureBuild::<Spheres>(mx, r, PhantomData), p, t0),
@@ -169,7 +175,7 @@ impl Model {
                 ),
                 (Some(r), DimensionChoice::Two) => built!(
                     all(feature = "mixtures", feature = "rough", feature = "disks"),
-                    "mixtures`, `rough` and `disks",
+                    self.mixture_features(),
                     {
                         wrap(
                             by_kernel(k, &RoughMixtureBuild::<Disks>(mx, r, PhantomData), p, t0),
@@ -216,16 +222,15 @@ impl Model {
         self.start(p, t0)
     }
 
-    /// The refusal of a mixture by a build without mixtures, naming the features its family
-    /// needs (as [`Model::start`] names them).
-    fn mixture_left_out(&self) -> EngineError {
-        let rotates = self.rotates();
-        EngineError::NotBuilt(match (rotates, self.dimension) {
+    /// The cargo features a mixture's engine family needs (by rotation and dimension): the name
+    /// a build without them refuses it with.
+    fn mixture_features(&self) -> &'static str {
+        match (self.rotates(), self.dimension) {
             (false, DimensionChoice::Three) => "mixtures",
             (false, DimensionChoice::Two) => "mixtures` and `disks",
             (true, DimensionChoice::Three) => "mixtures` and `rough",
             (true, DimensionChoice::Two) => "mixtures`, `rough` and `disks",
-        })
+        }
     }
 
     fn disk_drive<K: Kernel>(
