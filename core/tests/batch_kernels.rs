@@ -211,7 +211,7 @@ fn bulk_temperature_keeps_its_digits_under_a_large_drift() {
     let o = gdsmc_core::moments::Observables::of(&Particles::new(&mut q).unwrap());
     // Sample temperature of 10^4 draws: relative sd sqrt(2/(3n)) = 0.8%; 3.2 sd bound.
     assert!(
-        (o.t_bulk / 1e-20 - 1.0).abs() < 3.2 * (2.0f64 / 30_000.0).sqrt(),
+        (o.t_bulk / 1e-20 - 1.0).abs() < gdsmc_stats::LAMBDA_999 * (2.0f64 / 30_000.0).sqrt(),
         "T_bulk = {:e}",
         o.t_bulk
     );

@@ -8,6 +8,7 @@ use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::rng::seeded;
 use gdsmc_core::sample::Maxwellian;
 use gdsmc_core::vec3::Vec3;
+use gdsmc_stats::LAMBDA_999;
 
 #[test]
 fn maxwellian_collisional_moments() {
@@ -42,9 +43,9 @@ fn maxwellian_collisional_moments() {
         let mu4_0 = (4.5 + alpha * alpha) * mu2_0;
         // Standard error of the pair average, plus the sample's own finite-n fluctuation of T
         // (relative sd sqrt(2/(3n)), entering mu_p as v0^-(p+1)).
-        let t_rel = 3.2 * (2.0 / (3.0 * p.len() as f64)).sqrt();
-        let tol2 = 3.2 * sd2 / (pairs as f64).sqrt() + 1.5 * t_rel * mu2_0;
-        let tol4 = 3.2 * sd4 / (pairs as f64).sqrt() + 2.5 * t_rel * mu4_0;
+        let t_rel = LAMBDA_999 * (2.0 / (3.0 * p.len() as f64)).sqrt();
+        let tol2 = LAMBDA_999 * sd2 / (pairs as f64).sqrt() + 1.5 * t_rel * mu2_0;
+        let tol4 = LAMBDA_999 * sd4 / (pairs as f64).sqrt() + 2.5 * t_rel * mu4_0;
         assert!(
             (mu2 - mu2_0).abs() < tol2,
             "alpha {alpha}: mu2 {mu2} vs {mu2_0} +- {tol2}"

@@ -146,7 +146,7 @@ proptest! {
 }
 
 /// White noise GRW (18) adds `3 (2 beta h)` to the mean square speed: checked at 8 fixed seeds,
-/// each at the 99.9%/8 level (Bonferroni: z = 3.84), with the sample's own standard error.
+/// together at the 99.9% level (Bonferroni over 8, `joint`), with the sample's own standard error.
 #[test]
 fn white_noise_adds_its_exact_mean_square() {
     let (n, beta, h) = (20_000, 0.7, 0.3);
@@ -164,8 +164,8 @@ fn white_noise_adds_its_exact_mean_square() {
             .zip(&before)
             .map(|(q, b)| q.velocity().norm2() - b)
             .collect();
-        let (m, ci) = common::mean_ci(&gain);
-        let z = ci / 3.2 * 3.84;
+        let s = gdsmc_stats::Sample::of(&gain);
+        let (m, z) = (s.mean, s.joint_ci(8));
         let want = 3.0 * 2.0 * beta * h;
         assert!(
             (m - want).abs() <= z,

@@ -31,7 +31,7 @@ fn normal_tail_beyond_r_has_the_right_mass() {
         .count() as f64;
     let expect = m as f64 * 2.0 * (1.0 - normal_cdf(zt::NORM_R));
     assert!(
-        (count - expect).abs() < 3.2 * expect.sqrt(),
+        (count - expect).abs() < gdsmc_stats::LAMBDA_999 * expect.sqrt(),
         "{count} vs {expect}"
     );
 }

@@ -409,9 +409,9 @@ fn species_observables_only_for_a_mixture() {
     let (status, o, _) = read(&mix, 1);
     assert_eq!(status, gdsmc_status::GDSMC_OK);
     assert_eq!(o.count, 512);
-    // Start temperature 3 with 512 particles: within 5 standard errors (sd 3 sqrt(2/3)/sqrt(512)).
+    // Start temperature 3 with 512 particles: within its 99.9% interval (sd 3 sqrt(2/3)/sqrt(512)).
     assert!(
-        (o.temperature - 3.0).abs() < 5.0 * 3.0 * (2.0f64 / 3.0 / 512.0).sqrt(),
+        (o.temperature - 3.0).abs() < gdsmc_stats::LAMBDA_999 * 3.0 * (2.0f64 / 3.0 / 512.0).sqrt(),
         "{o:?}"
     );
     assert!((o.temperature_ratio - o.temperature / o.mixture_temperature).abs() < 1e-15);

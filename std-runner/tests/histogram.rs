@@ -4,8 +4,8 @@
 //! standard error (the 99.9% half-width over the Student-t multiplier of its 40 ensembles)
 //! times z = 4.0, a Bonferroni family level of 99.9%.
 
-use gdsmc_runner::run::stats::multiplier;
 use gdsmc_runner::scene;
+use gdsmc_stats::multiplier;
 use std::path::PathBuf;
 
 fn chi3_cdf(r: f64) -> f64 {
@@ -32,7 +32,7 @@ fn initial_shells_are_maxwellian() {
     let (radius, h) = st.histogram.as_ref().unwrap();
     assert_eq!(h.len(), 17);
     let mut total = 0.0;
-    let mut exact_hist = gdsmc_runner::run::stats::Accumulator::new(17);
+    let mut exact_hist = gdsmc_stats::Accumulator::new(17);
     let mut exact_row = vec![0.0; 17];
     for (k, slot) in exact_row.iter_mut().enumerate() {
         let lo = radius * k as f64 / 16.0;

@@ -86,31 +86,3 @@ pub fn time_index(stats: &RunStats, t: f64) -> usize {
         .position(|&x| (x - t).abs() < 1e-12)
         .expect("observation time")
 }
-
-/// The two-sided normal quantile that keeps a family of `checks` interval checks at a 99.9%
-/// joint level (Bonferroni: each at `0.001 / checks`), as a multiple of the 99.9% half-width
-/// `3.2 sigma`: multiply a `ci` by this to check many points at once.
-pub fn family_factor(checks: usize) -> f64 {
-    let p = 0.001 / checks.max(1) as f64;
-    // Solve erfc(z / sqrt 2) = p by bisection.
-    let (mut lo, mut hi) = (0.0f64, 40.0f64);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if libm::erfc(mid / std::f64::consts::SQRT_2) > p {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi) / gdsmc_runner::run::stats::LAMBDA_999
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn family_factor_is_one_for_one_check_and_grows() {
-        // One check: 99.9% two-sided is z = 3.29, which the papers round to 3.2.
-        assert!((super::family_factor(1) * 3.2 - 3.2905).abs() < 1e-3);
-        assert!((super::family_factor(100) * 3.2 - 4.4172).abs() < 1e-3);
-    }
-}

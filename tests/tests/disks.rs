@@ -4,6 +4,7 @@
 //! whose cooling is not GRW (13)'s. The scene's references say which apply.
 
 use gdsmc_runner::reference::curves::{maxwell_temperature, sonine_cooling_a2};
+use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
 
 #[test]
@@ -14,7 +15,7 @@ fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
         .expect("valid observation times");
     let mt = maxwell_temperature(&s).expect("Maxwell disks: GRW (13) applies");
     let st = run(&s);
-    let f = family_factor(st.times.len());
+    let f = family(st.times.len(), dof(st.ensembles));
     assert_within_at_all_times(
         &st,
         "T_bulk",
@@ -74,7 +75,7 @@ fn maxwell_gases_under_the_gaussian_thermostat_follow_grw_13_scaled_at_finite_n(
         let mt = maxwell_temperature(&s).expect("a Maxwell gas: GRW (13) applies");
         let n = s.n();
         let st = run(&s);
-        let f = family_factor(2 * st.times.len());
+        let f = family(2 * st.times.len(), dof(st.ensembles));
         let what = format!("d = {dimension}");
         assert_within_at_all_times(&st, "T_bulk", f, |t| mt.finite_n_bulk_mean(n, t), &what);
         assert_within_at_all_times(&st, "T", f, |t| mt.finite_n_raw_mean(n, t), &what);

@@ -13,7 +13,7 @@ use gdsmc_core::rng::{Streams, stream};
 use gdsmc_core::sample::Maxwellian;
 use gdsmc_core::vec3::Vec3;
 use gdsmc_runner::reference::mixture::MaxwellMixture;
-use gdsmc_validation::family_factor;
+use gdsmc_stats::{Sample, dof, family, joint};
 
 /// Runs the one-species loop and the one-species mixture from the same start and seed and
 /// asserts equal observables (every field, to the bit) and counts at each time.
@@ -140,10 +140,8 @@ fn simulate<D: Drive>(
 
 /// Mean, and the standard error of the mean, of `xs`.
 fn mean_se(xs: &[f64]) -> (f64, f64) {
-    let m = xs.len() as f64;
-    let mean = xs.iter().sum::<f64>() / m;
-    let var = xs.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / (m - 1.0);
-    (mean, (var / m).sqrt())
+    let s = Sample::of(xs);
+    (s.mean, s.se())
 }
 
 /// Asserts `T_0`, `T_1` and `T_0/T_1` of `samples` within `z` standard errors of the exact
@@ -199,8 +197,8 @@ fn maxwell_mixture_temperatures_follow_the_exact_finite_n_moments() {
     // is then within the interval too).
     let cases = [([3usize, 5usize], 20_000u64), ([600, 400], 300)];
     // Every time, both sizes, three quantities (T_0, T_1, T_0/T_1): 30 checks, each at the
-    // Bonferroni level that keeps the family at 99.9% (normal quantiles: >= 300 ensembles).
-    let z = family_factor(30) * gdsmc_runner::run::stats::LAMBDA_999;
+    // Bonferroni level that keeps the family at 99.9% (Student-t at the fewest, 300 ensembles).
+    let z = joint(30, dof(300));
     let mut distinct = false;
     for (counts, ensembles) in cases {
         let mix = maxwell_mixture(counts);
@@ -230,7 +228,7 @@ fn heated_maxwell_mixture_follows_the_exact_finite_n_moments() {
     let times = [0.25, 1.0, 4.0, 10.0];
     let cases = [([3usize, 5usize], 20_000u64), ([600, 400], 300)];
     // 4 times x 2 sizes x 3 quantities.
-    let z = family_factor(24) * gdsmc_runner::run::stats::LAMBDA_999;
+    let z = joint(24, dof(300));
     let mut distinct = false;
     for (counts, ensembles) in cases {
         let mut mix = maxwell_mixture(counts);
@@ -284,7 +282,7 @@ fn gaussian_thermostat_keeps_the_cooling_states_temperature_ratio() {
             "steady_from = 100.0",
             "steady_from = 30.0\ncollisional_pairs = 2000",
         );
-    let family = family_factor(4);
+    let family = family(4, dof(24));
     let (a, ha) = steady(&hcs, &["T_s0_ratio"])[0];
     let heated = steady(
         &thermostat,
@@ -339,7 +337,7 @@ fn cooling_rates_estimate_the_exact_rate_of_change() {
     };
     let rates = CoolingRates::new(&scene).unwrap();
     let model = scene.physics().validate().unwrap();
-    let z = family_factor(4) * gdsmc_runner::run::stats::LAMBDA_999;
+    let z = joint(4, dof(4000));
     let ensembles = 4000;
     for &t in &[0.0, 1.0] {
         let mut samples = vec![Vec::new(); 2];

@@ -6,6 +6,7 @@
 //! GRW (13) at most times.
 
 use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
 
 const MAXWELL_SMOOTH: [&str; 6] = [
@@ -26,7 +27,7 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     s.steady_from = None;
     let mt = maxwell_temperature(&s).expect("beta = -1: GRW (13) applies");
     let st = run(&s);
-    let f = family_factor(st.times.len());
+    let f = family(st.times.len(), dof(st.ensembles));
     for (ti, &t) in st.times.iter().enumerate() {
         let (m, c) = at(&st, ti, "T_bulk");
         let exact = mt.finite_n_bulk_mean(n, t);
@@ -74,7 +75,7 @@ fn the_smooth_limit_of_rough_hard_spheres_is_the_smooth_gas() {
         .expect("a valid physics");
     smooth.seed = 1604;
     let (a, b) = (run(&rough), run(&smooth));
-    let f = family_factor(a.times.len() - 1);
+    let f = family(a.times.len() - 1, dof(a.ensembles.min(b.ensembles)));
     let mut moved = 0.0;
     for ti in 1..a.times.len() {
         let (ma, ca) = at(&a, ti, "T_bulk");

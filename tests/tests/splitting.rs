@@ -8,6 +8,7 @@
 
 use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::scene::{Scene, SchemeChoice};
+use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
 
 /// A shipped scene observed at `times` (set first: the scheme's grid is checked against them)
@@ -77,7 +78,7 @@ fn euler_is_first_order_and_strang_second_order() {
                 let (m, c) = at(&st, ti, "T");
                 // 95 points are checked in this test (Euler 5 + 9 + 17 + 33, Strang 5 + 9 + 17):
                 // each at the Bonferroni level that keeps the family at 99.9%.
-                let c = c * family_factor(95);
+                let c = c * family(95, dof(st.ensembles));
                 let exact_curve = mt.at(t);
                 let mean_n = mt.splitting_bulk_mean(n, dt, strang, t) + mt.bulk_to_raw(n, t);
                 assert!(

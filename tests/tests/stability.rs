@@ -3,6 +3,7 @@
 //! scheme on the same setting runs clean).
 
 use gdsmc_runner::analysis::warnings::{Warning, check};
+use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
 
 fn warnings(
@@ -138,7 +139,7 @@ fn extreme_dissipation() {
     );
     assert!(w.is_empty(), "{w:?}");
     let mt = gdsmc_runner::reference::curves::maxwell_temperature(&s).unwrap();
-    let z = family_factor(st.times.len());
+    let z = family(st.times.len(), dof(st.ensembles));
     for (ti, &t) in st.times.iter().enumerate() {
         let (m, ci) = at(&st, ti, "T_bulk");
         let ci = z * ci;
@@ -205,7 +206,7 @@ fn host_medium_extreme_mass_ratios() {
         assert!(w.is_empty(), "{w:?}");
         let h = gdsmc_runner::reference::curves::host_medium_maxwell(&s).unwrap();
         // 2 masses x 17 times x 2 quantities, jointly at 99.9%.
-        let z = family_factor(68);
+        let z = family(68, dof(st.ensembles));
         for (ti, &t) in st.times.iter().enumerate().step_by(32) {
             let (m, ci) = at(&st, ti, "T_bulk");
             let ci = z * ci;

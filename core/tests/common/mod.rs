@@ -24,13 +24,7 @@ pub fn normal_cdf(x: f64) -> f64 {
     0.5 * (1.0 + libm::erf(x / std::f64::consts::SQRT_2))
 }
 
-/// Mean and the half-width of its 99.9% confidence interval (lambda = 3.2) of a sample.
-pub fn mean_ci(xs: &[f64]) -> (f64, f64) {
-    let n = xs.len() as f64;
-    let m = xs.iter().sum::<f64>() / n;
-    let var = xs.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1.0);
-    (m, 3.2 * (var / n).sqrt())
-}
+pub use gdsmc_stats::mean_ci;
 
 /// The elastic perfectly rough gas's check (`core/tests/rough_gas.rs`, `core/tests/disks.rs`):
 /// `ensembles` systems of `model` (n particles and spins, reduced moment of inertia `kappa`)

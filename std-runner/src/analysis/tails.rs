@@ -7,7 +7,7 @@
 //! half-width the Student-t quantile (points - 2 degrees of freedom, the 3.2-sigma level) times
 //! the regression standard error.
 
-use crate::run::stats::{Accumulator, level_999, quantile_t};
+use gdsmc_stats::{Accumulator, level_999, quantile_t};
 
 /// A fitted tail exponent.
 #[derive(Clone, Debug, PartialEq)]

@@ -17,8 +17,8 @@ use crate::files::write_own;
 use crate::reference::curves::maxwell_temperature;
 use crate::report::charts::{Series, Style, profile};
 use crate::run;
-use crate::run::stats::LAMBDA_999;
 use crate::scene::{Scene, SchemeChoice};
+use gdsmc_stats::LAMBDA_999;
 use plotters::style::{BLUE, GREEN, RED};
 use std::path::Path;
 

@@ -175,7 +175,7 @@ mod tests {
     /// `G`, weight `|u|^lambda`; per species and part the mean of `E[|u|^lambda dE]` (400,000
     /// draws) against the module docs' formula (the rates per unit strength, one species
     /// `t` of mole fraction 1 as partner). 4 checks per parameter set, 3 sets, per
-    /// dimension: Bonferroni over 12 at 99.9%, 3.2 standard errors -> 4.0.
+    /// dimension: held together at 99.9% (Bonferroni over 12, `gdsmc_stats::joint`).
     fn rates_match_the_pair_map<G: Geometry>(seed: u64, kappas: [f64; 2]) {
         let mut rng = seeded(seed);
         let d = G::CHOICE.d();
@@ -233,11 +233,9 @@ mod tests {
                 d_rot[1] * d_r / 2.0,
             ];
             for (i, (s, want)) in sums.iter().zip(want).enumerate() {
-                let n = s.len() as f64;
-                let mean = s.iter().sum::<f64>() / n;
-                let sd =
-                    (s.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / (n - 1.0)).sqrt();
-                let h = 4.0 * sd / n.sqrt();
+                // Four parts in each of the three cases, held together (Bonferroni).
+                let sample = gdsmc_stats::Sample::of(s);
+                let (mean, h) = (sample.mean, sample.joint_ci(12));
                 assert!(
                     (mean - want).abs() <= h,
                     "d {d} alpha {alpha} beta {beta} lambda {lambda} part {i}: {mean} vs {want} +- {h}"

@@ -46,7 +46,7 @@ pub fn observables_csv(stats: &RunStats, refs: &[ReferenceCurve]) -> Result<Vec<
 /// `[R, inf)`.
 pub fn histograms_csv(
     radius: f64,
-    hist: &crate::run::stats::Accumulator,
+    hist: &gdsmc_stats::Accumulator,
     d: usize,
 ) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());

@@ -2,8 +2,8 @@
 
 use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
-use crate::run::stats::{joint, multiplier};
 use crate::scene::{DriveChoice, Scene};
+use gdsmc_stats::{joint, multiplier};
 use std::fmt::Write;
 
 /// The summary: scene, sizes, timing, counts, and a table of T, T_bulk, a2 and crit at up to

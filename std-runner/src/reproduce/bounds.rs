@@ -4,7 +4,7 @@
 //! range holds with probability at least the 99.9% level of the whole report ([`level_999`],
 //! the 3.2-sigma level of GRW (25) and BRS (33)).
 
-pub use crate::run::stats::{KNOWN, joint, miss};
+pub use gdsmc_stats::{KNOWN, joint, miss};
 use statrs::distribution::{Chi, ContinuousCDF};
 use statrs::function::gamma::ln_gamma;
 
@@ -32,7 +32,7 @@ pub fn max_error(s_max: f64, k: usize, dof: u64) -> f64 {
 /// with standard deviation `sd`: how RW's Conf and BRS's band thickness are defined, so that
 /// ours can be shown beside theirs.
 pub fn width(sd: f64, n: f64) -> f64 {
-    2.0 * crate::run::stats::LAMBDA_999 * sd / n.sqrt()
+    2.0 * gdsmc_stats::LAMBDA_999 * sd / n.sqrt()
 }
 
 /// The range of `||V||_inf = max_m |V(t_m)|`, the largest norm of the ensemble-mean bulk

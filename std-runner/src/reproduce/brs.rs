@@ -10,7 +10,7 @@ use crate::Error;
 use crate::reference::curves::{host_medium_maxwell, hydro_models};
 use crate::reference::hydro::Trajectory;
 use crate::run::initial_sampler;
-use crate::run::stats::LAMBDA_999;
+use gdsmc_stats::LAMBDA_999;
 
 /// BRS Table 1.
 pub const TABLE1: Entry = Entry {

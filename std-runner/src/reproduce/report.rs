@@ -104,7 +104,7 @@ pub fn epilogue(tables: &[Table]) -> String {
              the run is judged at 99.9% over every check a report may hold, Bonferroni over {}, \
              so a sound run shows about one such miss per {} checks and still passes):",
             super::bounds::FAMILY,
-            (1.0 / crate::run::stats::miss()).round()
+            (1.0 / gdsmc_stats::miss()).round()
         );
         for w in &within {
             let _ = writeln!(s, "  {w}");

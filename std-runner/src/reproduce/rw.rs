@@ -8,8 +8,8 @@ use super::{Entry, Options, Row, Table, ensembles, go, largest, relative, scene}
 use crate::Error;
 use crate::reference::curves::maxwell_temperature;
 use crate::reference::exact::MaxwellTemperature;
-use crate::run::stats::LAMBDA_999;
 use crate::scene::Scene;
+use gdsmc_stats::LAMBDA_999;
 
 /// RW's ensembles in Tables 1 and 2: "Unless indicated otherwise, the results are averaged over
 /// N = 10 000 independent ensembles" (RW Section 4.1).
@@ -316,11 +316,12 @@ fn steady_row(
     // independent observations").
     let col = st.col("T").expect("a known column");
     let xs: Vec<f64> = (first..s.times.len()).map(|ti| st.mean(ti, col)).collect();
-    let k = xs.len() as f64;
-    let mean = xs.iter().sum::<f64>() / k;
-    let sd = (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (k - 1.0)).sqrt();
+    let points = gdsmc_stats::Sample::of(&xs);
     Ok((
-        [cell, Cell::shown("Conf", conf, width(sd, k))],
+        [
+            cell,
+            Cell::shown("Conf", conf, width(points.sd, points.n as f64)),
+        ],
         secs,
         st.cpu.as_secs_f64(),
     ))

@@ -18,7 +18,6 @@ pub mod mpi;
 pub mod pages;
 pub mod results;
 pub mod shard;
-pub mod stats;
 pub mod totals;
 
 pub use ensemble::{

@@ -1,8 +1,8 @@
 //! What a run hands back: per (time, column) statistics, steady-state averages, histograms,
 //! counts and timing.
 
-use crate::run::stats::Accumulator;
 use gdsmc_core::engine::Counts;
+use gdsmc_stats::Accumulator;
 use std::time::Duration;
 
 /// Steady-state averages (RW Section 4.2): every observable averaged over the observation

@@ -5,9 +5,9 @@
 //! are bit-identical: floating-point sums depend on the order, so the order is the one rule.
 
 use crate::run::columns::names;
-use crate::run::stats::Accumulator;
 use crate::scene::Scene;
 use gdsmc_core::engine::Counts;
+use gdsmc_stats::Accumulator;
 
 /// The statistics of the ensembles folded so far (a prefix of a range of ensembles).
 #[derive(Clone, Debug)]
