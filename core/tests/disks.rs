@@ -127,8 +127,12 @@ fn elastic_perfectly_rough_disks_relax_to_equipartition_of_their_finite_system()
 /// Disks refuse what is written for spheres only, naming the parameter.
 #[test]
 fn disks_refuse_what_they_do_not_have() {
+    let mut stepped = disks(8, HARD, 0.9, DriveChoice::None);
+    stepped.scheme = SchemeChoice::TimeStepped(0.01);
+    // Disks take the splittings.
     let mut splitting = disks(8, HARD, 0.9, DriveChoice::None);
     splitting.scheme = SchemeChoice::Euler(0.1);
+    assert!(splitting.validate().is_ok());
     let mut impact = disks(8, HARD, 0.9, DriveChoice::None);
     impact.restitution = RestitutionLaw::ImpactSpeed {
         beta0: 0.1,
@@ -166,7 +170,10 @@ fn disks_refuse_what_they_do_not_have() {
             ),
             "dimension of 2 (disks) takes only no drive, white noise or the Gaussian thermostat",
         ),
-        (splitting, "scheme must be no-splitting for disks"),
+        (
+            stepped,
+            "scheme must be no-splitting, Euler or Strang for disks",
+        ),
         (
             impact,
             "restitution must be constant for a mixture (one per species pair)",

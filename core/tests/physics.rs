@@ -315,9 +315,9 @@ fn dispatch_builds_the_hand_composed_loop() {
             let k = Vhs::new(1.0, 0.1, 0.5).unwrap();
             let d = gdsmc_core::drive::WhiteNoise::new(1.0).unwrap();
             let a = Constant::new(0.5).unwrap();
-            Splitting::start(k, d, a, SplittingOrder::Strang, 0.25, q, 0.0)
-                .unwrap()
-                .0
+            let (e, _): (Splitting<_, _, _>, _) =
+                Splitting::start(k, d, a, SplittingOrder::Strang, 0.25, q, 0.0).unwrap();
+            e
         },
         |e| matches!(e, Engine::Smooth(ByKernel::Vhs(_))),
     );

@@ -178,8 +178,11 @@ fn rough_refusals_name_their_parameter() {
     let mut ph = rough(4, 0.9, RotationChoice::spheres(0.0), DriveChoice::None);
     ph.initial[0] = Component::STANDARD;
     ph.scheme = SchemeChoice::Euler(0.1);
+    assert!(ph.validate().is_ok(), "rough particles take the splittings");
+    ph.scheme = SchemeChoice::TimeStepped(0.01);
     assert_eq!(
         ph.validate().unwrap_err().to_string(),
-        "scheme must be no-splitting for rough particles"
+        "scheme must be no-splitting, Euler or Strang for rough particles (MS's time-stepped \
+         scheme is written for smooth spheres)"
     );
 }

@@ -83,10 +83,11 @@ fn what_a_rough_gas_cannot_take_is_refused_by_key() {
     );
     let e = err(&ROUGH.replace(
         "[observe]\n",
-        "[scheme]\nkind = \"euler\"\ndt = 0.1\n[observe]\n",
+        "[scheme]\nkind = \"time-stepped\"\n[observe]\n",
     ));
     assert!(
-        e.contains("`scheme") && e.contains("must be no-splitting for rough particles"),
+        e.contains("`scheme")
+            && e.contains("must be no-splitting, Euler or Strang for rough particles"),
         "{e}"
     );
     let e = err(&ROUGH.replace("t_end = 1.0", "t_end = 1.0\ncollisional_pairs = 100"));

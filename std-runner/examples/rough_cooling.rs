@@ -24,6 +24,7 @@
 
 use gdsmc_runner::reference::rough::RoughApproximation;
 use gdsmc_runner::report::charts::{Series, Style, profile};
+use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene::{self, Override};
 use plotters::style::{BLUE, RED};
 use std::fmt::Write;
@@ -115,10 +116,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let stats = gdsmc_runner::run::run(&s, 0, &|_| {})?;
             let st = stats.steady.as_ref().ok_or("no steady window")?;
             let col = |name| stats.col(name).ok_or(format!("no column {name}"));
-            let (theta, th_half) = st.mean_ci(&stats, col("theta")?);
+            let (theta, th_half) = st.mean_ci(&stats, col(name::THETA)?);
             // Settled: theta's per-time means over the window's two halves agree within the
             // sum of their mean half-widths (the runner's `unsteady` check).
-            let thc = col("theta")?;
+            let thc = col(name::THETA)?;
             let half_mean = |r: std::ops::Range<usize>| {
                 let k = r.len() as f64;
                 let (m, h) = r.fold((0.0, 0.0), |(m, h), i| {
@@ -132,9 +133,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 half_mean(POINTS + 1 - q..POINTS + 1),
             );
             let settled = (mb1 - ma1).abs() <= ha1 + hb1;
-            let (a2, a2_half) = st.mean_ci(&stats, col("a2")?);
-            let (a2r, a2r_half) = st.mean_ci(&stats, col("a2_rot")?);
-            let tc = col("T_bulk")?;
+            let (a2, a2_half) = st.mean_ci(&stats, col(name::A2)?);
+            let (a2r, a2r_half) = st.mean_ci(&stats, col(name::A2_ROT)?);
+            let tc = col(name::T_BULK)?;
             let (i1, i2) = (POINTS / 2, POINTS);
             let x = |i: usize| {
                 let (m, c) = (stats.mean(i, tc), stats.ci(i, tc));
@@ -199,7 +200,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let theta = profile(
         &format!("{}, cooling state: theta = T_rot / T_tr", shape.title),
         "tangential restitution beta",
-        "theta",
+        name::THETA,
         false,
         &theta_series,
     )?;

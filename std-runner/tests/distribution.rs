@@ -6,6 +6,7 @@
 
 use gdsmc_runner::analysis::distribution::{marginal, reduced};
 use gdsmc_runner::reference::exact::tail::{a_white_noise_36, sonine_s2};
+use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene;
 use gdsmc_stats::multiplier;
 use std::path::PathBuf;
@@ -123,7 +124,7 @@ fn white_noise_delta_and_tail_amplitude_ms_figures_2_and_3() {
     let r = reduced(&s, &st).expect("asked for");
     let (a2, a2_ci) = r.a2;
     let steady = |c: &str| st.steady.as_ref().unwrap().mean_ci(&st, st.col(c).unwrap());
-    let (a3, _) = steady("a3");
+    let (a3, _) = steady(name::A3);
     let s3 = |x: f64| -x * x * x / 6.0 + 1.75 * x * x - 4.375 * x + 2.1875;
     let reference = |c: f64| sonine_s2(c * c) + a3 / a2 * s3(c * c);
     let z = 4.1 / multiplier(24);
@@ -146,7 +147,7 @@ fn white_noise_delta_and_tail_amplitude_ms_figures_2_and_3() {
         checked += 1;
     }
     assert_eq!(checked, 15);
-    let (mu2, mu2_ci) = steady("mu2");
+    let (mu2, mu2_ci) = steady(name::MU2);
     let t = r.tail.expect("hard spheres under white noise");
     assert_eq!(t.equation, "MS (36)");
     assert_eq!(t.amplitude, a_white_noise_36(mu2));

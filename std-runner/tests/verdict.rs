@@ -4,6 +4,7 @@
 
 use gdsmc_runner::reference::curves::{Kind, ReferenceCurve, for_scene};
 use gdsmc_runner::report::summary::text;
+use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene;
 use std::path::PathBuf;
 
@@ -23,7 +24,7 @@ fn grw_example3_agrees_with_the_exact_mean_at_its_n() {
     let refs = for_scene(&s);
     let out = text(&s, &st, &refs);
     let verdict = &out[out.find("\nverdict").expect("a verdict")..];
-    for (col, reference) in [("T", "T_mean_n"), ("T_bulk", "T_bulk_mean_n")] {
+    for (col, reference) in [(name::T, "T_mean_n"), (name::T_BULK, "T_bulk_mean_n")] {
         let line = verdict
             .lines()
             .find(|l| l.trim_start().starts_with(&format!("{col} ")))

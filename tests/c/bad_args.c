@@ -67,8 +67,10 @@ static void config_errors(void) {
     c = base(); c.dimension = 4;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
            "config.dimension must be 2 (disks) or 3 (spheres), got 4");
-    c = base(); c.dimension = 2; c.scheme = GDSMC_SCHEME_EULER;
-    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme must be no-splitting for disks");
+    c = base(); c.dimension = 2; c.kernel = GDSMC_KERNEL_HARD_SPHERES;
+    c.scheme = GDSMC_SCHEME_TIME_STEPPED; c.step_factor = 0.01;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.scheme must be no-splitting, Euler or Strang for disks");
     c = base(); c.restitution = 1.5;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
     c = base(); c.restitution = 0.0;

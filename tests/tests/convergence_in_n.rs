@@ -9,6 +9,7 @@
 //! behaviour.
 
 use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 #[test]
@@ -21,7 +22,7 @@ fn temperature_error_falls_fourfold_per_fourfold_n() {
         let mt = maxwell_temperature(&s).unwrap();
         let st = run(&s);
         let ti = time_index(&st, 8.0);
-        let (t, c) = at(&st, ti, "T");
+        let (t, c) = at(&st, ti, name::T);
         let exact = mt.at(8.0);
         let (e, conf) = ((t - exact).abs() / exact, c / exact);
         // The error itself matches the exact finite-n bias within its confidence.

@@ -8,6 +8,7 @@
 //! with a2 of the homogeneous cooling state, MS (5)), checked decade by decade.
 
 use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene::{DriveChoice, KernelChoice, SchemeChoice};
 use gdsmc_validation::*;
 
@@ -22,7 +23,7 @@ fn maxwell_cooling_is_exponential_over_thirty_decades() {
     let mt = maxwell_temperature(&s).unwrap();
     let st = run(&s);
     for (ti, &t) in st.times.iter().enumerate() {
-        let (m, c) = at(&st, ti, "T_bulk");
+        let (m, c) = at(&st, ti, name::T_BULK);
         let exact = mt.finite_n_bulk_mean(n, t);
         assert!(
             (m - exact).abs() <= c,
@@ -52,7 +53,7 @@ fn gaussian_thermostat_with_maxwell_kernel_is_exact() {
         let mt = maxwell_temperature(&s).unwrap();
         let st = run(&s);
         for (ti, &t) in st.times.iter().enumerate() {
-            let (m, c) = at(&st, ti, "T_bulk");
+            let (m, c) = at(&st, ti, name::T_BULK);
             let exact = match scheme {
                 SchemeChoice::NoSplitting => mt.finite_n_bulk_mean(n, t),
                 _ => mt.splitting_bulk_mean(n, 1.0, true, t),
@@ -98,12 +99,12 @@ fn hard_spheres_follow_haffs_law_over_ten_decades() {
         st.counts.overshoots, 0,
         "no drive: the majorant always holds"
     );
-    let (t_last, _) = at(&st, st.times.len() - 1, "T_bulk");
+    let (t_last, _) = at(&st, st.times.len() - 1, name::T_BULK);
     assert!(t_last < 1e-9, "ten decades: T = {t_last:e}");
     for w in 1..st.times.len() - 1 {
         let (ta, tb) = (st.times[w], st.times[w + 1]);
-        let (ma, ca) = at(&st, w, "T_bulk");
-        let (mb, cb) = at(&st, w + 1, "T_bulk");
+        let (ma, ca) = at(&st, w, name::T_BULK);
+        let (mb, cb) = at(&st, w + 1, name::T_BULK);
         let slope = (mb.powf(-0.5) - ma.powf(-0.5)) / (tb - ta);
         // Propagated half-width: d(T^{-1/2}) = T^{-3/2} dT / 2.
         let conf = (0.5 * mb.powf(-1.5) * cb + 0.5 * ma.powf(-1.5) * ca) / (tb - ta);
@@ -139,12 +140,12 @@ fn cooling_gas_has_the_gaussian_thermostats_collisional_moments() {
     let get = |st: &gdsmc_runner::run::RunStats, c: &str| {
         st.steady.as_ref().unwrap().mean_ci(st, st.col(c).unwrap())
     };
-    let t_last = at(&hcs, hcs.times.len() - 1, "log10_T_bulk").0;
+    let t_last = at(&hcs, hcs.times.len() - 1, name::LOG10_T_BULK).0;
     assert!(
         t_last < -8.0,
         "the cooling gas must be stored rescaled: log10 T = {t_last}"
     );
-    for c in ["mu2", "mu4", "a2"] {
+    for c in [name::MU2, name::MU4, name::A2] {
         let (a, ca) = get(&hcs, c);
         let (b, cb) = get(&gauss, c);
         assert!(

@@ -4,6 +4,7 @@
 //! whose cooling is not GRW (13)'s. The scene's references say which apply.
 
 use gdsmc_runner::reference::curves::{maxwell_temperature, sonine_cooling_a2};
+use gdsmc_runner::run::columns::name;
 use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
 
@@ -18,7 +19,7 @@ fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
     let f = family(st.times.len(), dof(st.ensembles));
     assert_within_at_all_times(
         &st,
-        "T_bulk",
+        name::T_BULK,
         f,
         |t| mt.finite_n_bulk_mean(n, t),
         "Maxwell disks",
@@ -35,7 +36,7 @@ fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
         .expect("valid observation times");
     assert!(maxwell_temperature(&h).is_none());
     let st = run(&h);
-    let outside = times_outside(&st, "T_bulk", f, |t| mt.finite_n_bulk_mean(n, t));
+    let outside = times_outside(&st, name::T_BULK, f, |t| mt.finite_n_bulk_mean(n, t));
     assert!(
         outside >= st.times.len() - 2,
         "only {outside} times tell hard disks from Maxwell disks"
@@ -77,15 +78,15 @@ fn maxwell_gases_under_the_gaussian_thermostat_follow_grw_13_scaled_at_finite_n(
         let st = run(&s);
         let f = family(2 * st.times.len(), dof(st.ensembles));
         let what = format!("d = {dimension}");
-        assert_within_at_all_times(&st, "T_bulk", f, |t| mt.finite_n_bulk_mean(n, t), &what);
-        assert_within_at_all_times(&st, "T", f, |t| mt.finite_n_raw_mean(n, t), &what);
+        assert_within_at_all_times(&st, name::T_BULK, f, |t| mt.finite_n_bulk_mean(n, t), &what);
+        assert_within_at_all_times(&st, name::T, f, |t| mt.finite_n_raw_mean(n, t), &what);
         // The check has the power to refuse the raw term that grew with the thermostat, and a
         // thermostat counted once (`e^{zeta t}`) in T_bulk.
         let grown =
             |t: f64| mt.finite_n_bulk_mean(n, t) + mt.t0 * (2.0 * mt.zeta * t).exp() / n as f64;
-        assert!(times_outside(&st, "T", f, grown) >= st.times.len() - 3);
+        assert!(times_outside(&st, name::T, f, grown) >= st.times.len() - 3);
         let once = mt.with_gaussian(0.5 * mt.zeta);
         let once = |t: f64| once.finite_n_bulk_mean(n, t);
-        assert!(times_outside(&st, "T_bulk", f, once) >= st.times.len() - 3);
+        assert!(times_outside(&st, name::T_BULK, f, once) >= st.times.len() - 3);
     }
 }

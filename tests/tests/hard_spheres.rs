@@ -4,6 +4,7 @@
 //! D1 = T(64) - T(256) and D2 = T(256) - T(1024) are significant, of one sign, and their ratio
 //! is 4; the ratio's interval is propagated from the 99.9% confidence half-widths.
 
+use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 #[test]
@@ -23,7 +24,7 @@ fn example5_converges_in_n() {
                 st.counts.fictitious > 0,
                 "hard spheres must see fictitious collisions"
             );
-            at(&st, time_index(&st, 2.0), "T")
+            at(&st, time_index(&st, 2.0), name::T)
         })
         .collect();
     let d1 = runs[0].0 - runs[1].0;

@@ -7,6 +7,7 @@
 //! `core/tests/host_medium_choice.rs`.
 
 use gdsmc_runner::reference::curves::host_medium_maxwell;
+use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 /// Grain-grain collisions keep momentum and each grain's background collisions change its
@@ -24,7 +25,7 @@ fn bulk_velocity_is_exact_at_any_n() {
         let h = host_medium_maxwell(&s).unwrap();
         let st = run(&s);
         for (ti, &t) in st.times.iter().enumerate() {
-            for (c, col) in ["V_x", "V_y", "V_z"].iter().enumerate() {
+            for (c, col) in [name::V_X, name::V_Y, name::V_Z].iter().enumerate() {
                 let (m, ci) = at(&st, ti, col);
                 let exact = h.bulk(t)[c];
                 assert!(
@@ -51,7 +52,7 @@ fn temperature_follows_brs_15_at_large_n() {
         let h = host_medium_maxwell(&s).unwrap();
         let st = run(&s);
         for (ti, &t) in st.times.iter().enumerate() {
-            let (m, ci) = at(&st, ti, "T_bulk");
+            let (m, ci) = at(&st, ti, name::T_BULK);
             let exact = h.temperature(t);
             assert!(
                 exact / n as f64 <= 0.25 * ci,
@@ -85,7 +86,7 @@ fn brs_examples_4_and_5_equilibrium_temperatures() {
             .steady
             .as_ref()
             .expect("the scene asks for a steady-state average");
-        let (t, ci) = steady.mean_ci(&st, st.col("T_bulk").unwrap());
+        let (t, ci) = steady.mean_ci(&st, st.col(name::T_BULK).unwrap());
         let allowance = ci + 5e-4 + paper / n as f64;
         assert!(
             (t - paper).abs() <= allowance,

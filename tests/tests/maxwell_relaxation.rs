@@ -5,6 +5,7 @@
 //! checks per test make a family; with a fixed seed the outcome is deterministic.
 
 use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 /// For the Maxwell kernel the ensemble mean at finite n is known exactly
@@ -20,13 +21,13 @@ fn finite_n_means_are_exact_examples_3_and_4() {
         let st = run(&s);
         for t in [0.0, 0.5, 1.0, 2.0, 4.0, 8.0] {
             let ti = time_index(&st, t);
-            let (tb, cb) = at(&st, ti, "T_bulk");
+            let (tb, cb) = at(&st, ti, name::T_BULK);
             let eb = mt.finite_n_bulk_mean(n, t);
             assert!(
                 (tb - eb).abs() <= cb,
                 "{scene} t={t}: T_bulk {tb} +- {cb}, exact (1-1/n)T = {eb}"
             );
-            let (tr, cr) = at(&st, ti, "T");
+            let (tr, cr) = at(&st, ti, name::T);
             let er = mt.finite_n_raw_mean(n, t);
             assert!(
                 (tr - er).abs() <= cr,
@@ -57,7 +58,7 @@ fn large_n_follows_grw_13() {
         for t in [0.0, 1.0, 2.0, 3.0, 4.0, 6.0, 8.0] {
             let ti = time_index(&st, t);
             let exact = mt.at(t);
-            let (m, c) = at(&st, ti, "T_bulk");
+            let (m, c) = at(&st, ti, name::T_BULK);
             assert!(
                 (mt.finite_n_bulk_mean(n, t) - exact).abs() < 0.25 * c,
                 "{scene} t={t}: bias not negligible"
@@ -66,14 +67,14 @@ fn large_n_follows_grw_13() {
                 (m - exact).abs() <= c,
                 "{scene} t={t}: T_bulk = {m} +- {c}, GRW (13) {exact}"
             );
-            let (m, c) = at(&st, ti, "T");
+            let (m, c) = at(&st, ti, name::T);
             let e = mt.finite_n_raw_mean(n, t);
             assert!(
                 (m - e).abs() <= c,
                 "{scene} t={t}: T = {m} +- {c}, exact finite-n mean {e}"
             );
             // The bulk velocity stays near zero (GRW Remark 1): each component within its CI.
-            for col in ["V_x", "V_y", "V_z"] {
+            for col in [name::V_X, name::V_Y, name::V_Z] {
                 let (m, c) = at(&st, ti, col);
                 assert!(m.abs() <= c, "{scene} t={t}: {col} = {m} +- {c}");
             }

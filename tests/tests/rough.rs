@@ -6,6 +6,7 @@
 //! GRW (13) at most times.
 
 use gdsmc_runner::reference::curves::maxwell_temperature;
+use gdsmc_runner::run::columns::name;
 use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
 
@@ -29,7 +30,7 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     let st = run(&s);
     let f = family(st.times.len(), dof(st.ensembles));
     for (ti, &t) in st.times.iter().enumerate() {
-        let (m, c) = at(&st, ti, "T_bulk");
+        let (m, c) = at(&st, ti, name::T_BULK);
         let exact = mt.finite_n_bulk_mean(n, t);
         assert!(
             (m - exact).abs() <= f * c,
@@ -37,7 +38,7 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
             f * c
         );
         // No collision touches the rotation: T_rot keeps its start (a Maxwellian at 2).
-        let (r, rc) = at(&st, ti, "T_rot");
+        let (r, rc) = at(&st, ti, name::T_ROT);
         assert!((r - 2.0).abs() <= f * rc, "t = {t}: T_rot {r} +- {rc}");
     }
     // The same comparison refuses a rough gas: with beta = 0 the translation loses energy to
@@ -50,7 +51,7 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     r.steady_from = None;
     assert!(maxwell_temperature(&r).is_none());
     let st = run(&r);
-    let outside = times_outside(&st, "T_bulk", f, |t| mt.finite_n_bulk_mean(n, t));
+    let outside = times_outside(&st, name::T_BULK, f, |t| mt.finite_n_bulk_mean(n, t));
     assert!(
         outside >= st.times.len() - 2,
         "only {outside} times tell beta = 0 from smooth"
@@ -78,8 +79,8 @@ fn the_smooth_limit_of_rough_hard_spheres_is_the_smooth_gas() {
     let f = family(a.times.len() - 1, dof(a.ensembles.min(b.ensembles)));
     let mut moved = 0.0;
     for ti in 1..a.times.len() {
-        let (ma, ca) = at(&a, ti, "T_bulk");
-        let (mb, cb) = at(&b, ti, "T_bulk");
+        let (ma, ca) = at(&a, ti, name::T_BULK);
+        let (mb, cb) = at(&b, ti, name::T_BULK);
         let h = f * (ca * ca + cb * cb).sqrt();
         assert!(
             (ma - mb).abs() <= h,

@@ -3,6 +3,7 @@
 //! scheme on the same setting runs clean).
 
 use gdsmc_runner::analysis::warnings::{Warning, check};
+use gdsmc_runner::run::columns::name;
 use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
 
@@ -42,7 +43,7 @@ fn euler_long_step() {
         .steady
         .as_ref()
         .unwrap()
-        .mean_ci(&st, st.col("T_bulk").unwrap());
+        .mean_ci(&st, st.col(name::T_BULK).unwrap());
     let err = t / (8.0 / 3.0) - 1.0;
     assert!(
         (err - 0.094).abs() <= ci / (8.0 / 3.0) + 0.0035 + 1.0 / 4096.0,
@@ -141,7 +142,7 @@ fn extreme_dissipation() {
     let mt = gdsmc_runner::reference::curves::maxwell_temperature(&s).unwrap();
     let z = family(st.times.len(), dof(st.ensembles));
     for (ti, &t) in st.times.iter().enumerate() {
-        let (m, ci) = at(&st, ti, "T_bulk");
+        let (m, ci) = at(&st, ti, name::T_BULK);
         let ci = z * ci;
         let e = mt.finite_n_bulk_mean(s.n(), t);
         assert!((m - e).abs() <= ci, "t = {t}: {m} +- {ci} vs {e}");
@@ -208,7 +209,7 @@ fn host_medium_extreme_mass_ratios() {
         // 2 masses x 17 times x 2 quantities, jointly at 99.9%.
         let z = family(68, dof(st.ensembles));
         for (ti, &t) in st.times.iter().enumerate().step_by(32) {
-            let (m, ci) = at(&st, ti, "T_bulk");
+            let (m, ci) = at(&st, ti, name::T_BULK);
             let ci = z * ci;
             let exact = (1.0 - 1.0 / s.n() as f64) * h.temperature(t);
             // T_bulk's finite-n mean is within O(1/n) of BRS (15); allow T/n beyond the CI.
@@ -216,7 +217,7 @@ fn host_medium_extreme_mass_ratios() {
                 (m - h.temperature(t)).abs() <= ci + h.temperature(t) / s.n() as f64,
                 "mass {mass}, t = {t}: {m} +- {ci} vs {exact}"
             );
-            let (v, cv) = at(&st, ti, "V_y");
+            let (v, cv) = at(&st, ti, name::V_Y);
             let cv = z * cv;
             assert!(
                 (v - h.bulk(t)[1]).abs() <= cv,

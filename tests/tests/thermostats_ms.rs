@@ -15,6 +15,7 @@
 //!   widened by MS's 20% remark.
 
 use gdsmc_runner::reference::exact::sonine::*;
+use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 /// A steady run at alpha with n = 2048 (24 ensembles), or n = 8192 (8 ensembles) at strong
@@ -41,8 +42,8 @@ fn get(st: &gdsmc_runner::run::RunStats, col: &str) -> (f64, f64) {
 fn white_noise_alpha_08() {
     let (st, a) = steady("ms-white-noise", 1001, 0.8);
     assert_eq!(a, 0.8);
-    let (mu2, c2) = get(&st, "mu2");
-    let (mu4, c4) = get(&st, "mu4");
+    let (mu2, c2) = get(&st, name::MU2);
+    let (mu4, c4) = get(&st, name::MU4);
     assert!(
         (mu4 - 4.499).abs() <= c4 + 5e-4,
         "mu4 {mu4} +- {c4}, MS Table 1: 4.499"
@@ -56,7 +57,7 @@ fn white_noise_alpha_08() {
         (mu4 - mu4_maxwellian(a)).abs() > c4,
         "departure from the Maxwellian not resolved"
     );
-    let (a2, ca) = get(&st, "a2");
+    let (a2, ca) = get(&st, name::A2);
     let est = a2_white_noise_10(a);
     assert!(
         (a2 - est).abs() <= ca + 1e-3,
@@ -67,9 +68,9 @@ fn white_noise_alpha_08() {
 #[test]
 fn gaussian_alpha_04() {
     let (st, a) = steady("ms-gaussian", 1002, 0.4);
-    let (mu2, c2) = get(&st, "mu2");
-    let (mu4, c4) = get(&st, "mu4");
-    let (a2, ca) = get(&st, "a2");
+    let (mu2, c2) = get(&st, name::MU2);
+    let (mu4, c4) = get(&st, name::MU4);
+    let (a2, ca) = get(&st, name::A2);
     assert!(
         (mu4 - 11.494).abs() <= c4 + 5e-4,
         "mu4 {mu4} +- {c4}, MS Table 1: 11.494"
@@ -90,12 +91,12 @@ fn gaussian_alpha_04() {
 #[test]
 fn constant_force_alpha_08() {
     let (st, a) = steady("ms-constant-force", 1003, 0.8);
-    let (mu4, c4) = get(&st, "mu4");
+    let (mu4, c4) = get(&st, name::MU4);
     assert!(
         (mu4 - 3.335).abs() <= c4 + 5e-4,
         "mu4 {mu4} +- {c4}, MS Table 1: 3.335"
     );
-    let (a2, ca) = get(&st, "a2");
+    let (a2, ca) = get(&st, name::A2);
     assert!(a2 + ca < 0.0, "a2 {a2} +- {ca} must be negative");
     let (e50, e76) = (a2_constant_force_50(a), a2_constant_force_76(a));
     let (lo, hi) = (e50.min(e76) * 1.2, e50.max(e76) / 1.2);
@@ -116,12 +117,12 @@ fn white_noise_alpha_08_time_stepped() {
         .expect("a valid physics");
     s.collisional_pairs = 20_000;
     let st = run(&s);
-    let (mu4, c4) = get(&st, "mu4");
+    let (mu4, c4) = get(&st, name::MU4);
     assert!(
         (mu4 - 4.499).abs() <= c4 + 5e-4,
         "mu4 {mu4} +- {c4}, MS Table 1: 4.499"
     );
-    let (a2, ca) = get(&st, "a2");
+    let (a2, ca) = get(&st, name::A2);
     let est = a2_white_noise_10(0.8);
     assert!(
         (a2 - est).abs() <= ca + 1e-3,

@@ -3,6 +3,7 @@
 //! with the no-splitting scheme's within the combined 99.9% half-width of the difference,
 //! sqrt(ci_a^2 + ci_b^2); with steps 50 times longer the time-step error is resolved.
 
+use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene::SchemeChoice;
 use gdsmc_validation::*;
 
@@ -26,9 +27,9 @@ fn time_stepped_converges_to_no_splitting() {
     let st_coarse = run(&coarse);
     let mut resolved = false;
     for ti in 1..exact.times.len() {
-        let (a, ca) = at(&st_exact, ti, "T_bulk");
-        let (b, cb) = at(&st_fine, ti, "T_bulk");
-        let (c, cc) = at(&st_coarse, ti, "T_bulk");
+        let (a, ca) = at(&st_exact, ti, name::T_BULK);
+        let (b, cb) = at(&st_fine, ti, name::T_BULK);
+        let (c, cc) = at(&st_coarse, ti, name::T_BULK);
         let t = exact.times[ti];
         assert!(
             (a - b).abs() <= (ca * ca + cb * cb).sqrt(),

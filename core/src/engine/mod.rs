@@ -112,8 +112,13 @@ impl_event_loop!(
 );
 impl_event_loop!(
     Splitting,
-    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: crate::restitution::Restitution],
-    Splitting<K, D, A>
+    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry],
+    Splitting<K, D, A, G>,
+    {
+        fn rough(&self, p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+            Splitting::rough(self, p)
+        }
+    }
 );
 impl_event_loop!(
     SumNoSplitting,

@@ -8,17 +8,23 @@
 //! collide `dt/2`, kick `dt`, collide `dt/2`. The time-step error is first and second order in
 //! `dt` (RW Tables 2-4); the no-splitting scheme ([`super::NoSplitting`]) has none.
 //!
-//! Observation times must lie on the grid `t0 + k dt`.
+//! Observation times must lie on the grid `t0 + k dt`. The scheme is generic over the collision
+//! map (a restitution law, or the rough map with the particles' spins) and the dimension
+//! (spheres or disks), as the no-splitting loop is: the collision steps are the same jump
+//! process, and a kicking step moves what the drive moves (a rough gas's spins too).
 
-use super::event::{Collider, observables};
+use super::collision_map::CollisionMap;
+use super::event::{Collider, observables_dim};
+use super::nosplit::spins_finite;
 use super::{Counts, EngineError};
 use crate::drive::Drive;
+use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
 use crate::moments::Observables;
 use crate::particles::Particles;
-use crate::restitution::Restitution;
 use crate::rng::Rng;
+use crate::rough::RoughObservables;
 use crate::sample::standard_exponential;
 
 /// Which splitting: RW Algorithm 1 or 2.
@@ -30,19 +36,21 @@ pub enum SplittingOrder {
     Strang,
 }
 
-/// A splitting scheme for kernel `K`, drive `D` and restitution law `A`.
+/// A splitting scheme for kernel `K`, drive `D`, collision map `A` (a restitution law, or the
+/// rough map) and dimension `G` (spheres unless named).
 #[derive(Clone, Debug)]
-pub struct Splitting<K, D, A> {
-    c: Collider<K, D, A>,
+pub struct Splitting<K, D, A, G = Spheres> {
+    c: Collider<K, D, A, G>,
     order: SplittingOrder,
     dt: Real,
     t0: Real,
     steps: u64,
 }
 
-impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
+impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Splitting<K, D, A, G> {
     /// Starts the scheme at `t0` with time step `dt > 0` on particles holding the initial
-    /// velocities. Returns the observables at `t0`.
+    /// velocities (and, for the rough map, one spin each: [`EngineError::Spins`] otherwise), in
+    /// dimension `G` (named by the result's type). Returns the observables at `t0`.
     // Out of line: called once per run, and the dispatch above it stays small.
     #[inline(never)]
     pub fn start(
@@ -58,6 +66,9 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         if !t0.is_finite() {
             return Err(EngineError::TimeBackwards);
         }
+        if A::SPINS && !p.has_spins() {
+            return Err(EngineError::Spins);
+        }
         p.reset_kick_times(t0);
         let mut s = Splitting {
             c: Collider::new(kernel, drive, restitution),
@@ -68,6 +79,12 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
         };
         let obs = s.synchronized(p)?;
         Ok((s, obs))
+    }
+
+    /// A rough gas's rotational observables now (the particles at the current time, as after
+    /// [`Self::advance_to`]); `None` for smooth particles.
+    pub fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
+        self.c.map.rough(p, 1.0, G::CHOICE)
     }
 
     /// Current time `t0 + k dt`.
@@ -169,7 +186,10 @@ impl<K: Kernel, D: Drive, A: Restitution> Splitting<K, D, A> {
     }
 
     fn synchronized(&mut self, p: &Particles<'_>) -> Result<Observables, EngineError> {
-        let obs = observables(p)?;
+        let obs = observables_dim(p, G::CHOICE.d())?;
+        if A::SPINS {
+            spins_finite(p)?;
+        }
         self.c.synchronized(&obs);
         Ok(obs)
     }

@@ -1,8 +1,10 @@
 //! The validated dimension of a [`super::Physics`]: disks (`d = 2`, [`crate::geometry`]) run
-//! the loops composed for them, which are the no-splitting scheme with either restitution law
-//! (BRS (10)'s normal speed follows from the map GRW (3) in any dimension) and no drive, white noise in the plane or the Gaussian thermostat (one species or a mixture;
-//! rough particles take only no drive or white noise, as in three dimensions), and start drifts in
-//! the plane.
+//! the loops composed for them: the no-splitting scheme and the Euler and Strang splittings
+//! (RW Algorithms 1-2; a mixture only the first, as in three dimensions) with either
+//! restitution law (BRS (10)'s normal speed follows from the map GRW (3) in any dimension),
+//! and no drive, white noise in the plane or the Gaussian thermostat (one species or a
+//! mixture; rough particles take only no drive or white noise, as in three dimensions), and
+//! start drifts in the plane.
 
 use super::error::{Param, PhysicsError, Problem};
 use super::parts::{DriveModel, SchemeModel};
@@ -24,8 +26,12 @@ pub(super) fn dimension(
     if physics.dimension == DimensionChoice::Three {
         return Ok(DimensionChoice::Three);
     }
-    if !matches!(scheme, SchemeModel::NoSplitting) {
-        return refuse(Param::Scheme, "must be no-splitting for disks");
+    if matches!(scheme, SchemeModel::TimeStepped(..)) {
+        return refuse(
+            Param::Scheme,
+            "must be no-splitting, Euler or Strang for disks (MS's time-stepped scheme is \
+             written for spheres)",
+        );
     }
     // The Gaussian thermostat scales the peculiar velocity, `v - V` (MS (61)), which stays in
     // the plane; the host medium's partners and impact directions are drawn in three

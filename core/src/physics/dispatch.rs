@@ -11,7 +11,7 @@
 
 use super::engine::{
     ByDiskDrive, ByDiskLaw, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive,
-    ByRoughMixtureDrive, ByScheme, Engine, Family, Mixture, Rough, RoughMixture, Smooth,
+    ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough, RoughMixture, Smooth,
     SmoothDisks,
 };
 use super::model::Model;
@@ -20,7 +20,9 @@ use super::rotation::{MixtureRotation, RoughModel};
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
 use crate::drive::{Drive, NoDrive, WhiteNoiseIn};
-use crate::engine::{EngineError, NoSplitting, Splitting, SumNoSplitting, TimeStepped};
+use crate::engine::{
+    CollisionMap, EngineError, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
+};
 use crate::geometry::{DimensionChoice, Disks, Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
@@ -188,7 +190,12 @@ impl Model {
         match (&self.rough, self.dimension) {
             (Some(r), DimensionChoice::Three) => built!(feature = "rough", "rough", {
                 wrap(
-                    by_kernel(k, &RoughBuild::<Spheres>(r, PhantomData), p, t0),
+                    by_kernel(
+                        k,
+                        &RoughBuild::<Spheres>(r, self.scheme, PhantomData),
+                        p,
+                        t0,
+                    ),
                     Engine::Rough,
                 )
             }),
@@ -197,7 +204,7 @@ impl Model {
                 "rough` and `disks",
                 {
                     wrap(
-                        by_kernel(k, &RoughBuild::<Disks>(r, PhantomData), p, t0),
+                        by_kernel(k, &RoughBuild::<Disks>(r, self.scheme, PhantomData), p, t0),
                         Engine::RoughDisks,
                     )
                 }
@@ -267,11 +274,11 @@ impl Model {
     ) -> Result<(ByDiskLaw<K, D>, Observables), EngineError> {
         match self.law {
             LawModel::Constant(a) => {
-                wrap(NoSplitting::start_in(k, d, a, p, t0), ByDiskLaw::Constant)
+                wrap(by_split(self.scheme, k, d, a, p, t0), ByDiskLaw::Constant)
             }
             LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
                 wrap(
-                    NoSplitting::start_in(k, d, a, p, t0),
+                    by_split(self.scheme, k, d, a, p, t0),
                     ByDiskLaw::ImpactSpeed,
                 )
             }),
@@ -343,15 +350,9 @@ impl Model {
                     wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
                 })
             }
-            SchemeModel::NoSplitting => {
-                wrap(NoSplitting::start(k, d, a, p, t0), ByScheme::NoSplitting)
+            SchemeModel::NoSplitting | SchemeModel::Splitting(..) => {
+                wrap(by_split(self.scheme, k, d, a, p, t0), ByScheme::Split)
             }
-            SchemeModel::Splitting(order, dt) => built!(feature = "splitting", "splitting", {
-                wrap(
-                    Splitting::start(k, d, a, order, dt, p, t0),
-                    ByScheme::Splitting,
-                )
-            }),
             SchemeModel::TimeStepped(hs, f) => built!(
                 all(feature = "time-stepped", feature = "hard-spheres"),
                 "time-stepped` and `hard-spheres",
@@ -478,6 +479,7 @@ fn rough_mixture<K: Kernel, G: Geometry>(
 #[inline(never)]
 fn rough<K: Kernel, G: Geometry>(
     r: &RoughModel,
+    scheme: SchemeModel,
     k: K,
     p: &mut Particles<'_>,
     t0: Real,
@@ -485,16 +487,46 @@ fn rough<K: Kernel, G: Geometry>(
     match r.noise {
         None => built!(feature = "cooling", "cooling", {
             wrap(
-                NoSplitting::start_in(k, NoDrive, r.map, p, t0),
+                by_split(scheme, k, NoDrive, r.map, p, t0),
                 ByRoughDrive::None,
             )
         }),
         Some(d) => built!(feature = "white-noise", "white-noise", {
             wrap(
-                NoSplitting::start_in(k, d.in_dim::<G>(), r.map, p, t0),
+                by_split(scheme, k, d.in_dim::<G>(), r.map, p, t0),
                 ByRoughDrive::Noise,
             )
         }),
+    }
+}
+
+/// An engine started, with its observables at the start.
+type Begun<E> = Result<(E, Observables), EngineError>;
+
+/// The scheme level every family but the mixtures shares: the exact loop or a splitting
+/// (smooth spheres' other schemes are [`Model::by_scheme`]'s; validation leaves disks and
+/// rough particles no other).
+fn by_split<K: Kernel, D: Drive, A: CollisionMap, G: Geometry>(
+    scheme: SchemeModel,
+    k: K,
+    d: D,
+    a: A,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Begun<BySplit<K, D, A, G>> {
+    match scheme {
+        SchemeModel::NoSplitting => {
+            wrap(NoSplitting::start_in(k, d, a, p, t0), BySplit::NoSplitting)
+        }
+        SchemeModel::Splitting(order, dt) => built!(feature = "splitting", "splitting", {
+            wrap(
+                Splitting::start(k, d, a, order, dt, p, t0),
+                BySplit::Splitting,
+            )
+        }),
+        SchemeModel::TimeStepped(..) => Err(EngineError::Invariant(
+            "validation refuses the time-stepped scheme for disks and rough particles",
+        )),
     }
 }
 
@@ -563,7 +595,7 @@ impl Build for DiskBuild<'_> {
 }
 
 /// Rough particles in dimension `G`: by drive.
-struct RoughBuild<'a, G>(&'a RoughModel, PhantomData<G>);
+struct RoughBuild<'a, G>(&'a RoughModel, SchemeModel, PhantomData<G>);
 impl<G: Geometry> Build for RoughBuild<'_, G> {
     type F = Rough<G>;
     fn build<K: Kernel>(
@@ -572,7 +604,7 @@ impl<G: Geometry> Build for RoughBuild<'_, G> {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
-        rough(self.0, k, p, t0)
+        rough(self.0, self.1, k, p, t0)
     }
 }
 

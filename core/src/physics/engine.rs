@@ -15,7 +15,8 @@ use crate::drive::{
     NoDrive, PlanarWhiteNoise, WhiteNoise, WhiteNoiseIn,
 };
 use crate::engine::{
-    Counts, EngineError, EventLoop, Frame, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
+    CollisionMap, Counts, EngineError, EventLoop, Frame, NoSplitting, Splitting, SumNoSplitting,
+    TimeStepped,
 };
 use crate::geometry::{Disks, Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
@@ -208,23 +209,33 @@ pub enum ByDiskDrive<K: Kernel> {
     Gaussian(Built<ByDiskLaw<K, GaussianThermostat>, GAUSSIAN>),
 }
 
-/// Smooth disks by restitution law (the no-splitting loop), for kernel `K` and drive `D`.
+/// Smooth disks by restitution law, for kernel `K` and drive `D`.
 #[derive(Clone, Debug)]
 pub enum ByDiskLaw<K: Kernel, D: Drive> {
     /// A constant coefficient.
-    Constant(NoSplitting<K, D, Constant, Disks>),
+    Constant(BySplit<K, D, Constant, Disks>),
     /// The impact-speed law BRS (9)-(10) (feature `impact-speed`).
-    ImpactSpeed(Built<NoSplitting<K, D, ImpactSpeed, Disks>, IMPACT_SPEED>),
+    ImpactSpeed(Built<BySplit<K, D, ImpactSpeed, Disks>, IMPACT_SPEED>),
 }
 
-/// A rough gas's engine by drive (the exact loop with the rough map), for kernel `K` and
-/// dimension `G`.
+/// A rough gas's engine by drive (the rough map), for kernel `K` and dimension `G`.
 #[derive(Clone, Debug)]
 pub enum ByRoughDrive<K: Kernel, G: Geometry = Spheres> {
     /// No drive: the gas cools (feature `cooling`).
-    None(Built<NoSplitting<K, NoDrive, RoughMap, G>, COOLING>),
+    None(Built<BySplit<K, NoDrive, RoughMap, G>, COOLING>),
     /// White noise on translation and rotation (feature `white-noise`).
-    Noise(Built<NoSplitting<K, RoughNoise<G>, RoughMap, G>, WHITE_NOISE>),
+    Noise(Built<BySplit<K, RoughNoise<G>, RoughMap, G>, WHITE_NOISE>),
+}
+
+/// By scheme, the exact loop or the splittings, for every family but the mixtures (smooth
+/// spheres add MS's time-stepped scheme and the sum form in [`ByScheme`]): kernel `K`, drive
+/// `D`, collision map `A`, dimension `G`.
+#[derive(Clone, Debug)]
+pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
+    /// The exact no-splitting scheme (GRW Section 3).
+    NoSplitting(NoSplitting<K, D, A, G>),
+    /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
+    Splitting(Built<Splitting<K, D, A, G>, SPLITTING>),
 }
 
 /// A mixture's engine by drive, for kernel `K` and dimension `G`.
@@ -269,10 +280,9 @@ pub enum ByLaw<K: Kernel, D: Drive> {
 /// By scheme: the event loops themselves.
 #[derive(Clone, Debug)]
 pub enum ByScheme<K: Kernel, D: Drive, A: Restitution> {
-    /// The exact no-splitting scheme (GRW Section 3).
-    NoSplitting(NoSplitting<K, D, A>),
-    /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
-    Splitting(Built<Splitting<K, D, A>, SPLITTING>),
+    /// The exact no-splitting scheme (GRW Section 3) or Euler or Strang splitting (RW
+    /// Algorithms 1, 2): the scheme level every family shares.
+    Split(BySplit<K, D, A, Spheres>),
     /// MS's time-stepped scheme (hard spheres only; built only under [`ByKernel::HardSpheres`];
     /// features `time-stepped`, `hard-spheres`).
     TimeStepped(Built<TimeStepped<D, A>, TIME_STEPPED>),
@@ -334,8 +344,9 @@ forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByDiskLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
+forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
-forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], NoSplitting, Splitting, TimeStepped, SumForm);
+forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], Split, TimeStepped, SumForm);

@@ -186,10 +186,13 @@ pub(super) fn rotation(
     if !physics.species.is_empty() {
         return Ok(None);
     }
-    if !matches!(scheme, SchemeModel::NoSplitting) {
+    if matches!(scheme, SchemeModel::TimeStepped(..)) {
         return refuse(
             Param::Scheme,
-            Problem::DoesNotFit("must be no-splitting for rough particles"),
+            Problem::DoesNotFit(
+                "must be no-splitting, Euler or Strang for rough particles (MS's time-stepped \
+                 scheme is written for smooth spheres)",
+            ),
         );
     }
     let alpha = match law {

@@ -5,6 +5,7 @@
 use crate::reference::exact::sonine::mu2_maxwellian;
 use crate::reference::exact::tail;
 use crate::run::RunStats;
+use crate::run::columns::name;
 use crate::scene::{DriveChoice, KernelChoice, Scene};
 
 /// Mean and 99.9% half-width of a column: the steady-state average when the scene has one,
@@ -80,7 +81,7 @@ pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
     }
     // MS's tail laws assume a constant restitution coefficient.
     let alpha = scene.physics().restitution.constant()?;
-    let (mu2, mu2_source) = match settled(stats, "mu2") {
+    let (mu2, mu2_source) = match settled(stats, name::MU2) {
         Some((m, _)) => (m, "pairs, MS (67)"),
         None => (
             mu2_maxwellian(alpha) * (1.0 + 3.0 * a2 / 16.0),
@@ -91,7 +92,7 @@ pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
         DriveChoice::WhiteNoise(_) => ("MS (36)", tail::a_white_noise_36(mu2), 1.5),
         DriveChoice::Gaussian(_) | DriveChoice::None => ("MS (42)", tail::a_gaussian_42(mu2), 1.0),
         DriveChoice::ConstantForce(_) => {
-            let (c1, _) = settled(stats, "c1")?;
+            let (c1, _) = settled(stats, name::C1)?;
             ("MS (52)", tail::a_constant_force_52(mu2, c1), 2.0)
         }
         DriveChoice::HostMedium { .. } => return None,
@@ -107,7 +108,7 @@ pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
 /// The reduced distribution, when the scene asks for `[reduced_histogram]`.
 pub fn reduced(scene: &Scene, stats: &RunStats) -> Option<Reduced> {
     let (c_max, h) = stats.reduced.as_ref()?;
-    let a2 = settled(stats, "a2")?;
+    let a2 = settled(stats, name::A2)?;
     let tail = tail_law(scene, stats, a2.0);
     let k = h.len() - 1;
     let shells = (0..=k)
@@ -185,10 +186,10 @@ pub fn marginal(stats: &RunStats) -> Option<Marginal> {
     let (axis, radius, first, last) = stats.marginal.as_ref()?;
     let k = first.len() - 2;
     let width = 2.0 * radius / k as f64;
-    let comp = ["V_x", "V_y", "V_z"][*axis];
+    let comp = [name::V_X, name::V_Y, name::V_Z][*axis];
     let params = |ti: usize| {
         let m = |c: &str| stats.mean(ti, stats.col(c).expect("a column"));
-        (m(comp), m("T_bulk"))
+        (m(comp), m(name::T_BULK))
     };
     let nt = stats.times.len();
     let (u0, t0) = params(0);

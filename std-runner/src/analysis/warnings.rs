@@ -3,6 +3,7 @@
 //! stability study in docs/stability.md lists them with the failures they reveal.
 
 use crate::run::RunStats;
+use crate::run::columns::name;
 use crate::scene::{DriveChoice, Scene, SchemeChoice};
 
 /// Expected relative errors above this fire the step-size warnings.
@@ -85,7 +86,7 @@ fn non_finite(stats: &RunStats) -> Option<Warning> {
 }
 
 /// The temperature columns a steady-state window is checked on.
-const STEADY_CHECKED: [&str; 2] = ["T", "T_bulk"];
+const STEADY_CHECKED: [&str; 2] = [name::T, name::T_BULK];
 
 /// The columns a steady-state window must hold steady: the temperatures, for a cooling
 /// one-species gas a2, for a cooling rough gas theta, or for a mixture its species' temperature ratios (a cooling mixture's temperature keeps falling while its
@@ -97,16 +98,16 @@ fn steady_checked(scene: &Scene) -> Vec<&'static str> {
         // 1998); a heated one's settle themselves.
         let heated = !matches!(scene.physics().drive, DriveChoice::None) || r.noise > 0.0;
         return if heated {
-            vec!["T_bulk", "T_rot"]
+            vec![name::T_BULK, name::T_ROT]
         } else {
-            vec!["theta"]
+            vec![name::THETA]
         };
     }
     if species == 0 {
         // A cooling one-species gas's temperature keeps falling (Haff's law) while its shape,
         // a2, settles into the cooling state.
         if matches!(scene.physics().drive, DriveChoice::None) {
-            return vec!["a2"];
+            return vec![name::A2];
         }
         return STEADY_CHECKED.to_vec();
     }
@@ -286,7 +287,8 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
     // scheme without drive stores a cooling gas rescaled about V and keeps every digit.
     let rescaled = scene.physics().scheme == SchemeChoice::NoSplitting
         && scene.physics().drive == DriveChoice::None;
-    let (Some(tb), Some(vn), false) = (stats.col("T_bulk"), stats.col("V_norm"), rescaled) else {
+    let (Some(tb), Some(vn), false) = (stats.col(name::T_BULK), stats.col(name::V_NORM), rescaled)
+    else {
         return w;
     };
     for (ti, &t) in stats.times.iter().enumerate() {

@@ -17,6 +17,7 @@ use crate::files::write_own;
 use crate::reference::curves::maxwell_temperature;
 use crate::report::charts::{Series, Style, profile};
 use crate::run;
+use crate::run::columns::name;
 use crate::scene::{Scene, SchemeChoice};
 use gdsmc_stats::LAMBDA_999;
 use plotters::style::{BLUE, GREEN, RED};
@@ -145,7 +146,7 @@ pub fn measure(
         s.with_physics(|ph| ph.scheme = scheme)?;
         let st = run::run(&s, threads, &|_| {})?;
         let steady = st.steady.as_ref().expect("steady_from set");
-        let col = st.col("T_bulk").expect("the temperature column");
+        let col = st.col(name::T_BULK).expect("the temperature column");
         let mean = (steady.acc.mean(col), steady.acc.ci(col));
         let sd = steady.acc.variance(col).sqrt();
         let pts = &s.times[first..];

@@ -1,6 +1,7 @@
 //! Which reference curves apply to a scene, as extra columns beside the observables.
 
 use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
+use crate::run::columns::name;
 use crate::run::initial_sampler;
 use crate::scene::{BackgroundKernel, DriveChoice, KernelChoice, Scene, SchemeChoice};
 
@@ -370,21 +371,21 @@ fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             vec![
                 ReferenceCurve {
                     name: "T_bulk_MA",
-                    of: "T_bulk",
+                    of: name::T_BULK,
                     source: src,
                     kind: Kind::Approximation,
                     curve: Box::new(move |t| a.at(t).0),
                 },
                 ReferenceCurve {
                     name: "T_rot_MA",
-                    of: "T_rot",
+                    of: name::T_ROT,
                     source: src,
                     kind: Kind::Approximation,
                     curve: Box::new(move |t| b.at(t).1),
                 },
                 ReferenceCurve {
                     name: "theta_MA",
-                    of: "theta",
+                    of: name::THETA,
                     source: src,
                     kind: Kind::Approximation,
                     curve: Box::new(move |t| {
@@ -422,7 +423,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     if let Some(a2) = sonine_cooling_a2(scene) {
         out.push(ReferenceCurve {
             name: "a2_sonine",
-            of: "a2",
+            of: name::A2,
             source: "van Noije and Ernst 1998, first Sonine approximation of the cooling state (MS (5) for d = 3); an approximation, reached once the gas has relaxed",
             kind: Kind::Approximation,
             curve: Box::new(move |_| a2),
@@ -449,14 +450,14 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
                     let tr2 = tr.clone();
                     out.push(ReferenceCurve {
                         name: tn,
-                        of: "T_bulk",
+                        of: name::T_BULK,
                         source: src,
                         kind: Kind::Approximation,
                         curve: Box::new(move |t| tr.temperature(t)),
                     });
                     out.push(ReferenceCurve {
                         name: vn,
-                        of: "V_y",
+                        of: name::V_Y,
                         source: src,
                         kind: Kind::Approximation,
                         curve: Box::new(move |t| tr2.bulk(t, 1)),
@@ -468,9 +469,9 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     }
     if let Some(h) = host_medium_maxwell(scene) {
         for (k, (name, of)) in [
-            ("V_x_exact", "V_x"),
-            ("V_y_exact", "V_y"),
-            ("V_z_exact", "V_z"),
+            ("V_x_exact", name::V_X),
+            ("V_y_exact", name::V_Y),
+            ("V_z_exact", name::V_Z),
         ]
         .into_iter()
         .enumerate()
@@ -485,7 +486,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
         }
         out.push(ReferenceCurve {
             name: "T_bulk_exact",
-            of: "T_bulk",
+            of: name::T_BULK,
             source: "BRS (15)-(17)",
             kind: Kind::Limit,
             curve: Box::new(move |t| h.temperature(t)),
@@ -497,14 +498,14 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
         let v0 = f0.mean().norm2() / scene.dimension() as f64;
         out.push(ReferenceCurve {
             name: "T_exact",
-            of: "T",
+            of: name::T,
             source: "GRW (13)-(14)",
             kind: Kind::Limit,
             curve: Box::new(move |t| mt.at(t) + v0),
         });
         out.push(ReferenceCurve {
             name: "T_bulk_exact",
-            of: "T_bulk",
+            of: name::T_BULK,
             source: "GRW (13)-(14)",
             kind: Kind::Limit,
             curve: Box::new(move |t| mt.at(t)),
@@ -527,14 +528,14 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
         let raw = finite.clone();
         out.push(ReferenceCurve {
             name: "T_mean_n",
-            of: "T",
+            of: name::T,
             source: "exact ensemble mean at this n and scheme",
             kind: Kind::MeanAtN,
             curve: Box::new(move |t| raw(t) + mt.bulk_to_raw(n, t) + v0),
         });
         out.push(ReferenceCurve {
             name: "T_bulk_mean_n",
-            of: "T_bulk",
+            of: name::T_BULK,
             source: "exact ensemble mean at this n and scheme",
             kind: Kind::MeanAtN,
             curve: Box::new(move |t| finite(t)),

@@ -2,6 +2,7 @@
 
 use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
+use crate::run::columns::name;
 use crate::scene::{DriveChoice, Scene};
 use gdsmc_stats::{joint, multiplier};
 use std::fmt::Write;
@@ -49,7 +50,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         );
     }
     let mixture = !scene.physics().species.is_empty();
-    let mut shown = vec!["T", "T_bulk", "a2", "crit"];
+    let mut shown = vec![name::T, name::T_BULK, name::A2, name::CRIT];
     if mixture {
         let cols = crate::run::columns::SPECIES_COLUMNS;
         let _ = write!(s, "species   ");
@@ -92,7 +93,13 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
                 "rotation   rough particles: tangential restitution beta = {}, kappa = {}; T_bulk is the translational temperature",
                 r.beta, r.kappa
             );
-            shown = vec!["T_bulk", "T_rot", "theta", "a2", "a2_rot"];
+            shown = vec![
+                name::T_BULK,
+                name::T_ROT,
+                name::THETA,
+                name::A2,
+                name::A2_ROT,
+            ];
         }
     }
     let _ = write!(s, "\n{:>8}", "t");
@@ -207,7 +214,15 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             "\nsteady state: averages over the {} observation times t >= {} (RW Section 4.2)",
             st.points, stats.times[st.first]
         );
-        let mut names = vec!["T", "T_bulk", "a2", "a3", "crit", "mu2", "mu4"];
+        let mut names = vec![
+            name::T,
+            name::T_BULK,
+            name::A2,
+            name::A3,
+            name::CRIT,
+            name::MU2,
+            name::MU4,
+        ];
         if mixture {
             names = vec![crate::run::columns::MIXTURE_TEMPERATURE];
             for c in &crate::run::columns::SPECIES_COLUMNS[..scene.physics().species.len()] {
@@ -224,9 +239,17 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             // A cooling rough gas's temperatures keep falling: only its ratios settle.
             let heated = !matches!(scene.physics().drive, DriveChoice::None) || r.noise > 0.0;
             names = if heated {
-                vec!["T_bulk", "T_rot", "theta", "T_total", "a2", "a2_rot", "cw2"]
+                vec![
+                    name::T_BULK,
+                    name::T_ROT,
+                    name::THETA,
+                    name::T_TOTAL,
+                    name::A2,
+                    name::A2_ROT,
+                    name::CW2,
+                ]
             } else {
-                vec!["theta", "a2", "a2_rot", "cw2"]
+                vec![name::THETA, name::A2, name::A2_ROT, name::CW2]
             };
         }
         for name in names {

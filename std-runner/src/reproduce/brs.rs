@@ -9,6 +9,7 @@ use super::{Entry, Options, Row, Table, ensembles, go, largest, relative, scene}
 use crate::Error;
 use crate::reference::curves::{host_medium_maxwell, hydro_models};
 use crate::reference::hydro::Trajectory;
+use crate::run::columns::name;
 use crate::run::initial_sampler;
 use gdsmc_stats::LAMBDA_999;
 
@@ -84,11 +85,11 @@ fn table(
         let s = scene(scene_name, &[], n, m, seed + k as u64);
         let h = host_medium_maxwell(&s).expect("a Maxwell host-medium scene");
         let (st, secs) = go(&s, o)?;
-        let rel = relative(&st, "T_bulk", |t| h.temperature(t));
+        let rel = relative(&st, name::T_BULK, |t| h.temperature(t));
         let (ours, sd_rel) = largest(&rel);
         // Our band thickness read as BRS read theirs: 2 x 3.2 x the widest standard error of
         // N_rep ensembles, in temperature units.
-        let col = st.col("T_bulk").expect("a known column");
+        let col = st.col(name::T_BULK).expect("a known column");
         let sd_abs = (0..st.times.len())
             .map(|ti| st.sd(ti, col))
             .fold(0.0, f64::max);
@@ -163,7 +164,7 @@ fn equilibria(o: &Options, seed: u64) -> Result<Table, Error> {
     {
         let s = scene(name, &[], n, m, seed + k as u64);
         let (st, secs) = go(&s, o)?;
-        let ours = super::steady(&st, "T_bulk");
+        let ours = super::steady(&st, name::T_BULK);
         let f0 = initial_sampler(&s);
         let models = hydro_models(&s).expect("a hard-sphere host-medium scene");
         let mut cells = vec![

@@ -7,6 +7,7 @@ use super::judged::{OurLargest, PaperNoise, max_error_exact};
 use super::{Entry, Options, Row, Table, at, ensembles, go, largest, relative, scene};
 use crate::Error;
 use crate::reference::curves::maxwell_temperature;
+use crate::run::columns::name;
 
 /// GRW Table 1 (Example 3, beta = 1).
 pub const TABLE1: Entry = Entry {
@@ -74,7 +75,7 @@ fn table(
         let s = scene(scene_name, &[], n, m, seed + k as u64);
         let mt = maxwell_temperature(&s).expect("a Maxwell scene");
         let (st, secs) = go(&s, o)?;
-        let rel = relative(&st, "T", |t| mt.at(t));
+        let rel = relative(&st, name::T, |t| mt.at(t));
         let (ours, sd) = largest(&rel);
         let bmax = s
             .times
@@ -109,7 +110,7 @@ fn table(
         let v = (0..st.times.len())
             .map(|ti| {
                 let c = |x| at(&st, ti, x).0;
-                (c("V_x").powi(2) + c("V_y").powi(2) + c("V_z").powi(2)).sqrt()
+                (c(name::V_X).powi(2) + c(name::V_Y).powi(2) + c(name::V_Z).powi(2)).sqrt()
             })
             .fold(0.0, f64::max);
         let vcell = |side: Side, big_n: u64| {

@@ -8,6 +8,7 @@ use super::judged::{against_paper, computed};
 use super::{Entry, Options, Row, Table, go, scene, steady};
 use crate::Error;
 use crate::reference::exact::sonine::{mu2_maxwellian, mu4_maxwellian};
+use crate::run::columns::name;
 
 /// MS Table 1.
 pub const TABLE1: Entry = Entry {
@@ -69,19 +70,19 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
             let s = scene(scene_name, &set, n, m, seed + 10 * k as u64 + j as u64);
             let (st, t) = go(&s, o)?;
             secs += t;
-            let (mu2, c2) = steady(&st, "mu2");
-            let mu4 = steady(&st, "mu4");
+            let (mu2, c2) = steady(&st, name::MU2);
+            let mu4 = steady(&st, name::MU4);
             // The indirect routes, with half-widths propagated to first order (the sum of
             // the terms' half-widths: an upper bound whatever their correlation).
             let ind = match route {
                 "(23)" => (5.0 * mu2, 5.0 * c2),
                 "(38)" => {
-                    let (a2, ca) = steady(&st, "a2");
+                    let (a2, ca) = steady(&st, name::A2);
                     (5.0 * (1.0 + a2) * mu2, 5.0 * (c2 * (1.0 + a2) + mu2 * ca))
                 }
                 _ => {
-                    let (c1, cc1) = steady(&st, "c1");
-                    let (c3, cc3) = steady(&st, "c3");
+                    let (c1, cc1) = steady(&st, name::C1);
+                    let (c3, cc3) = steady(&st, name::C3);
                     let v = 2.0 * mu2 * c3 / c1;
                     (v, v * (c2 / mu2 + cc3 / c3 + cc1 / c1))
                 }
@@ -111,7 +112,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
                 let (check, secs_hcs) =
                     cooling_state(o, alpha, n, m, pairs, seed + 100 + k as u64)?;
                 secs += secs_hcs;
-                let a2 = steady(&st, "a2");
+                let a2 = steady(&st, name::A2);
                 let routes = Routes {
                     direct: mu4,
                     indirect: ind,
@@ -217,8 +218,8 @@ fn cooling_state(
     let (st, secs) = go(&s, o)?;
     Ok((
         CoolingState {
-            mu4: steady(&st, "mu4"),
-            mu2: steady(&st, "mu2"),
+            mu4: steady(&st, name::MU4),
+            mu2: steady(&st, name::MU2),
         },
         secs,
     ))

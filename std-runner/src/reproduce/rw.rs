@@ -8,6 +8,7 @@ use super::{Entry, Options, Row, Table, ensembles, go, largest, relative, scene}
 use crate::Error;
 use crate::reference::curves::maxwell_temperature;
 use crate::reference::exact::MaxwellTemperature;
+use crate::run::columns::name;
 use crate::scene::Scene;
 use gdsmc_stats::LAMBDA_999;
 
@@ -86,7 +87,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         let s = scene("rw-transient", &[], n, m, seed + k as u64);
         let (st, secs) = go(&s, o)?;
         let mt = maxwell_temperature(&s).expect("a Maxwell scene");
-        let rel = relative(&st, "T", |t| mt.at(t));
+        let rel = relative(&st, name::T, |t| mt.at(t));
         let (end_err, end_sd) = *rel.last().expect("observation times");
         let t_end = *s.times.last().expect("observation times");
         let bias = |t: f64| ((mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t)).abs();
@@ -196,7 +197,7 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
             let (st, t) = go(&s, o)?;
             secs += t;
             let mt = maxwell_temperature(&s).expect("a Maxwell scene");
-            let rel = relative(&st, "T", |t| mt.at(t));
+            let rel = relative(&st, name::T, |t| mt.at(t));
             let (ours, sd_max) = largest(&rel);
             let exact = exact_split(&mt, &s, dt, j == 1, |t| mt.at(t));
             let label = if j == 0 {
@@ -302,7 +303,7 @@ fn steady_row(
     let cell = mean_exact(
         "T_inf",
         t_inf,
-        super::steady(&st, "T"),
+        super::steady(&st, name::T),
         dof,
         exact,
         &PaperInterval {
@@ -314,7 +315,7 @@ fn steady_row(
     // RW's Conf beside ours read the same way: the width of a 3.2-sigma interval from the
     // spread of the points taken as independent (RW Section 4.2: "big enough to assure almost
     // independent observations").
-    let col = st.col("T").expect("a known column");
+    let col = st.col(name::T).expect("a known column");
     let xs: Vec<f64> = (first..s.times.len()).map(|ti| st.mean(ti, col)).collect();
     let points = gdsmc_stats::Sample::of(&xs);
     Ok((

@@ -2,6 +2,57 @@
 
 use gdsmc_core::moments::Observables;
 
+/// Every base column's name, spelled once: code that reads a column by name uses these
+/// (`stats.col(name::T_BULK)`), so that a misspelt name fails to compile.
+pub mod name {
+    /// `T`: raw temperature (RW (23)).
+    pub const T: &str = "T";
+    /// `T_bulk`: temperature about the bulk velocity (GRW (11)).
+    pub const T_BULK: &str = "T_bulk";
+    /// `V_x`: bulk velocity, x.
+    pub const V_X: &str = "V_x";
+    /// `V_y`: bulk velocity, y.
+    pub const V_Y: &str = "V_y";
+    /// `V_z`: bulk velocity, z.
+    pub const V_Z: &str = "V_z";
+    /// `V_norm`: bulk speed.
+    pub const V_NORM: &str = "V_norm";
+    /// `p`: pressure.
+    pub const P: &str = "p";
+    /// `q_norm`: heat-flux magnitude.
+    pub const Q_NORM: &str = "q_norm";
+    /// `v4`: raw fourth moment.
+    pub const V4: &str = "v4";
+    /// `v6`: raw sixth moment.
+    pub const V6: &str = "v6";
+    /// `a2`: fourth cumulant (MS (3)).
+    pub const A2: &str = "a2";
+    /// `a3`: sixth cumulant (MS (70)).
+    pub const A3: &str = "a3";
+    /// `c1`: reduced first moment (MS (4)).
+    pub const C1: &str = "c1";
+    /// `c3`: reduced third moment (MS (4)).
+    pub const C3: &str = "c3";
+    /// `log10_T_bulk`: log10 of T_bulk.
+    pub const LOG10_T_BULK: &str = "log10_T_bulk";
+    /// `crit`: deviation-from-Maxwell criterion (RW (29)).
+    pub const CRIT: &str = "crit";
+    /// `mu2`: collisional moment mu_2 (MS (44)).
+    pub const MU2: &str = "mu2";
+    /// `mu4`: collisional moment mu_4 (MS (52)).
+    pub const MU4: &str = "mu4";
+    /// `T_rot`: rotational temperature of a rough gas (`ROUGH_COLUMNS`).
+    pub const T_ROT: &str = "T_rot";
+    /// `theta`: rotational-to-translational temperature ratio (`ROUGH_COLUMNS`).
+    pub const THETA: &str = "theta";
+    /// `T_total`: total temperature of a rough gas (`ROUGH_COLUMNS`).
+    pub const T_TOTAL: &str = "T_total";
+    /// `a2_rot`: fourth cumulant of the angular velocities (`ROUGH_COLUMNS`).
+    pub const A2_ROT: &str = "a2_rot";
+    /// `cw2`: translational-rotational correlation (`ROUGH_COLUMNS`).
+    pub const CW2: &str = "cw2";
+}
+
 /// One observable column of observables.csv.
 #[derive(Clone, Copy, Debug)]
 pub struct Column {
@@ -16,82 +67,82 @@ pub struct Column {
 /// Every observable column, in file order.
 pub const COLUMNS: &[Column] = &[
     Column {
-        name: "T",
+        name: name::T,
         doc: "temperature (1/3n) sum |v|^2 as GRW/RW use it (RW (23))",
         get: |o| o.t_raw,
     },
     Column {
-        name: "T_bulk",
+        name: name::T_BULK,
         doc: "temperature about the bulk velocity, GRW (11), BRS (8)",
         get: |o| o.t_bulk,
     },
     Column {
-        name: "V_x",
+        name: name::V_X,
         doc: "bulk velocity, x (GRW (10))",
         get: |o| o.bulk.x,
     },
     Column {
-        name: "V_y",
+        name: name::V_Y,
         doc: "bulk velocity, y",
         get: |o| o.bulk.y,
     },
     Column {
-        name: "V_z",
+        name: name::V_Z,
         doc: "bulk velocity, z",
         get: |o| o.bulk.z,
     },
     Column {
-        name: "V_norm",
+        name: name::V_NORM,
         doc: "|V|, the bulk speed (GRW Tables 1-2 report its maximum)",
         get: |o| o.bulk.norm(),
     },
     Column {
-        name: "p",
+        name: name::P,
         doc: "pressure rho T_bulk (GRW Section 1)",
         get: |o| o.pressure,
     },
     Column {
-        name: "q_norm",
+        name: name::Q_NORM,
         doc: "|q|, the heat flux (GRW Section 1)",
         get: |o| o.heat_flux.norm(),
     },
     Column {
-        name: "v4",
+        name: name::V4,
         doc: "<|v|^4>, raw",
         get: |o| o.v4,
     },
     Column {
-        name: "v6",
+        name: name::V6,
         doc: "<|v|^6>, raw",
         get: |o| o.v6,
     },
     Column {
-        name: "a2",
+        name: name::A2,
         doc: "fourth cumulant, MS (3)",
         get: |o| o.a2,
     },
     Column {
-        name: "a3",
+        name: name::A3,
         doc: "sixth cumulant, MS (70)",
         get: |o| o.a3,
     },
     Column {
-        name: "c1",
+        name: name::C1,
         doc: "<c> with c = |v - V| / v0, v0 = sqrt(2 T_bulk) (MS (4); enters MS (44) and (52))",
         get: |o| o.c1 / (2.0 * o.t_bulk).sqrt(),
     },
     Column {
-        name: "c3",
+        name: name::C3,
         doc: "<c^3> with c = |v - V| / v0 (MS (4); enters MS (44))",
         get: |o| o.c3 / (2.0 * o.t_bulk).powf(1.5),
     },
     Column {
-        name: "log10_T_bulk",
+        name: name::LOG10_T_BULK,
         doc: "log10 T_bulk, finite where a cooling gas's temperature underflows (HCS, Haff's law)",
         get: |o| o.log10_t_bulk,
     },
     Column {
-        name: "crit",
+        name: name::CRIT,
         doc: "deviation-from-Maxwell criterion, RW (29)",
         get: |o| o.crit,
     },
@@ -103,7 +154,7 @@ pub fn index(name: &str) -> Option<usize> {
 }
 
 /// The extra columns a scene can ask for, computed by the runner beside the core observables.
-pub const COLLISIONAL: [&str; 2] = ["mu2", "mu4"];
+pub const COLLISIONAL: [&str; 2] = [name::MU2, name::MU4];
 
 /// A mixture's columns: the mixture temperature `T_mix = sum_s x_s T_s`, then per species
 /// (labelled `s0`, `s1`, .. in file order) [`SPECIES_COLUMNS`].
@@ -145,7 +196,13 @@ pub const ROUGH_SPECIES_COLUMNS: [[&str; 3]; gdsmc_core::mixture::MAX_SPECIES] =
 /// temperature `T_tr`), the mean energy per degree of freedom `T_total = (T_bulk + T_rot)/2`,
 /// the rim velocities' fourth cumulant `a2_rot` and the translation-rotation correlation
 /// `cw2 = 3 <(c . w)^2> / (<c^2> <w^2>) - 1` (Brilliantov et al. 2007).
-pub const ROUGH_COLUMNS: [&str; 5] = ["T_rot", "theta", "T_total", "a2_rot", "cw2"];
+pub const ROUGH_COLUMNS: [&str; 5] = [
+    name::T_ROT,
+    name::THETA,
+    name::T_TOTAL,
+    name::A2_ROT,
+    name::CW2,
+];
 
 /// The rough columns' values of one observation, in [`ROUGH_COLUMNS`] order (for disks,
 /// `T_total = (2 T_bulk + T_rot)/3` and `cw2` as [`gdsmc_core::rough::RoughObservables`]

@@ -5,6 +5,7 @@ use super::frame::Chart;
 use super::profile::{Series, Style, profile};
 use crate::reference::exact::tail;
 use crate::run::RunStats;
+use crate::run::columns::name;
 use plotters::prelude::*;
 
 /// The distribution charts a run has, `(file stem, chart)`: histogram (speed density, log
@@ -38,7 +39,7 @@ pub fn distribution_charts(
         // The Maxwellian with the run's temperature at the last observation (GRW's T, about
         // zero velocity, as the shells are), averaged over each shell as the histogram is.
         let last = stats.times.len() - 1;
-        let temperature = stats.col("T").map_or(f64::NAN, |c| stats.mean(last, c));
+        let temperature = stats.col(name::T).map_or(f64::NAN, |c| stats.mean(last, c));
         let maxwellian = (0..k)
             .map(|i| {
                 let (lo, hi, vol) = shell(i);
