@@ -166,12 +166,27 @@ fn rough_refusals_name_their_parameter() {
             rough(
                 4,
                 0.9,
-                RotationChoice::spheres(0.0),
+                RotationChoice {
+                    noise: 0.5,
+                    ..RotationChoice::spheres(0.0)
+                },
                 DriveChoice::Gaussian(1.0),
             ),
-            "rotation takes only no drive or white noise (on translation, and `noise` on rotation)",
+            "rotation_noise takes only no drive or white noise on translation beside it (the \
+             thermostats and the host medium are not combined with rotational noise)",
         ),
     ];
+    // The thermostat alone acts on translation: a rough gas takes it.
+    assert!(
+        rough(
+            4,
+            0.9,
+            RotationChoice::spheres(0.0),
+            DriveChoice::Gaussian(1.0)
+        )
+        .validate()
+        .is_ok()
+    );
     for (ph, msg) in cases {
         assert_eq!(ph.validate().unwrap_err().to_string(), msg);
     }

@@ -141,13 +141,13 @@ fn the_same_bad_value_gets_the_same_words() {
         (
             "n = 64",
             "n = 64\ndimension = 2",
-            &["scheme.kind=euler", "scheme.dt=0.1"],
+            &["scheme.kind=time-stepped", "scheme.step_factor=0.01"],
             "scheme.kind",
             "scheme",
             |c| {
                 c.dimension = 2;
-                c.scheme = gdsmc::GDSMC_SCHEME_EULER;
-                c.dt = 0.1;
+                c.scheme = gdsmc::GDSMC_SCHEME_TIME_STEPPED;
+                c.step_factor = 0.01;
             },
         ),
         (

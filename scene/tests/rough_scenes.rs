@@ -73,12 +73,15 @@ fn bad_rotation_values_name_line_and_key() {
 
 #[test]
 fn what_a_rough_gas_cannot_take_is_refused_by_key() {
-    let e = err(&ROUGH.replace(
+    // The thermostat acts on translation; rotational noise beside it is refused by its key.
+    let thermostat = ROUGH.replace(
         "kind = \"white-noise\"\nbeta = 1.0",
         "kind = \"gaussian\"\nzeta = 0.5",
-    ));
+    );
+    assert!(parse(Path::new("ok.toml"), &thermostat).is_ok());
+    let e = err(&thermostat.replace("temperature = 2.0", "temperature = 2.0\nnoise = 0.5"));
     assert!(
-        e.contains("`rotation` takes only no drive or white noise"),
+        e.contains("`rotation.noise` takes only no drive or white noise on translation"),
         "{e}"
     );
     let e = err(&ROUGH.replace(

@@ -98,3 +98,56 @@ fn brs_examples_4_and_5_equilibrium_temperatures() {
         );
     }
 }
+
+/// Rough grains in the host medium (BRS Example 1 with `[rotation]`, beta = 0): the host's
+/// encounters are smooth (BRS (2)) and grain-grain collisions keep momentum whatever the
+/// tangential restitution, so `E V_n(t)` is still BRS (14) at every n, although the
+/// translation now gives energy to the rotation. Every component at every time jointly
+/// (Bonferroni); the same check refuses BRS (14) of a host twice as heavy wherever the two
+/// differ by more than two half-widths.
+#[test]
+fn rough_grains_keep_the_exact_bulk_velocity_of_brs_14() {
+    use gdsmc_core::physics::RotationChoice;
+    use gdsmc_stats::{dof, family};
+    let mut s = shipped("brs-example1", 4, 20_000, 820);
+    s.set_times((0..=8).map(|i| i as f64 / 8.0).collect())
+        .expect("valid observation times");
+    let smooth = host_medium_maxwell(&s).unwrap();
+    s.with_physics(|ph| ph.rotation = Some(RotationChoice::spheres(0.0)))
+        .expect("rough grains take a host medium");
+    assert!(
+        host_medium_maxwell(&s).is_none(),
+        "BRS (15) is the smooth gas's"
+    );
+    let st = run(&s);
+    let f = family(3 * st.times.len(), dof(st.ensembles));
+    let heavy = gdsmc_runner::reference::exact::HostMediumMaxwell {
+        alpha: 2.0 / 3.0,
+        ..smooth
+    };
+    let mut refused = 0;
+    for (ti, &t) in st.times.iter().enumerate() {
+        for (c, col) in [name::V_X, name::V_Y, name::V_Z].iter().enumerate() {
+            let (m, ci) = at(&st, ti, col);
+            let exact = smooth.bulk(t)[c];
+            assert!(
+                (m - exact).abs() <= f * ci,
+                "t={t}: {col} = {m} +- {}, BRS (14) {exact}",
+                f * ci
+            );
+            // Where the two laws lie more than two half-widths apart the check must refuse
+            // the wrong one (both relax to 0, so only the early times can tell them).
+            if (exact - heavy.bulk(t)[c]).abs() > 2.0 * f * ci {
+                assert!(
+                    (m - heavy.bulk(t)[c]).abs() > f * ci,
+                    "t={t}: {col} = {m} does not refuse a heavier host"
+                );
+                refused += 1;
+            }
+        }
+    }
+    assert!(refused >= 3, "the laws differ at only {refused} points");
+    // The rotation took energy: it started at 1 and the translation at 8/3.
+    let (t_rot, _) = at(&st, st.times.len() - 1, name::T_ROT);
+    assert!(t_rot != 1.0, "the rotation never moved");
+}

@@ -61,8 +61,11 @@ pub trait EventLoop {
 }
 
 /// Implements [`EventLoop`] for a loop type `$ty` (generics `[$g]`) by forwarding every method
-/// to the inherent one of the same name on `$t`; methods in a trailing `{ ... }` are added
-/// (a rough gas's `rough`).
+/// to the inherent one of the same name on `$t` (a mixture's return its per-species
+/// observables, of which the trait's are the whole gas's, `From`); methods in a trailing
+/// `{ ... }` are added (a rough gas's `rough`, a mixture's `species`). `advance_to` and
+/// `resync` stay out of line: a caller's `match` over every engine (the physics dispatch)
+/// would otherwise reserve a mixture's per-species observables in its frame for every physics.
 macro_rules! impl_event_loop {
     ($t:ident, [$($g:tt)*], $ty:ty) => {
         $crate::engine::impl_event_loop!($t, [$($g)*], $ty, {});
@@ -70,19 +73,21 @@ macro_rules! impl_event_loop {
     ($t:ident, [$($g:tt)*], $ty:ty, { $($extra:tt)* }) => {
         impl<$($g)*> $crate::engine::EventLoop for $ty {
             $($extra)*
+            #[inline(never)]
             fn advance_to<R: $crate::rng::Rng + ?Sized>(
                 &mut self,
                 p: &mut $crate::particles::Particles<'_>,
                 t_end: $crate::math::Real,
                 rng: &mut R,
             ) -> Result<$crate::moments::Observables, $crate::engine::EngineError> {
-                $t::advance_to(self, p, t_end, rng)
+                $t::advance_to(self, p, t_end, rng).map(Into::into)
             }
+            #[inline(never)]
             fn resync(
                 &mut self,
                 p: &mut $crate::particles::Particles<'_>,
             ) -> Result<$crate::moments::Observables, $crate::engine::EngineError> {
-                $t::resync(self, p)
+                $t::resync(self, p).map(Into::into)
             }
             fn time(&self) -> $crate::math::Real {
                 $t::time(self)
@@ -176,6 +181,16 @@ pub fn check_step(h: Real) -> Result<Real, EngineError> {
     } else {
         Err(EngineError::OffGrid)
     }
+}
+
+/// The step a splitting scheme at time `now` on the grid `t0 + k dt` must reach for `t_end`:
+/// [`EngineError::TimeBackwards`] for a non-finite `t_end` or one before `now`,
+/// [`EngineError::OffGrid`] off the grid ([`grid_index`]).
+pub fn grid_target(t0: Real, dt: Real, now: Real, t_end: Real) -> Result<u64, EngineError> {
+    if !t_end.is_finite() || t_end < now {
+        return Err(EngineError::TimeBackwards);
+    }
+    grid_index(t0, dt, t_end).ok_or(EngineError::OffGrid)
 }
 
 /// The step index `k` of the time `t` on a splitting scheme's grid `t0 + k dt` (RW Algorithms

@@ -125,10 +125,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Splitting<K, D, A, G> {
         t_end: Real,
         rng: &mut R,
     ) -> Result<Observables, EngineError> {
-        if !t_end.is_finite() || t_end < self.time() {
-            return Err(EngineError::TimeBackwards);
-        }
-        let target = super::grid_index(self.t0, self.dt, t_end).ok_or(EngineError::OffGrid)?;
+        let target = super::grid_target(self.t0, self.dt, self.time(), t_end)?;
         while self.steps < target {
             self.step(p, rng);
         }

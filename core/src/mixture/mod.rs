@@ -9,6 +9,8 @@
 //!   ([`MassMap`] for smooth particles, [`crate::rough::RoughPair`] for rough ones);
 //! - [`MixtureNoSplitting`]: the event loop, generic over the kernel, the drive (one per
 //!   species), the pair law (one per pair type) and the dimension;
+//! - [`MixtureSplitting`]: RW's Euler and Strang splittings on it (its collision process with
+//!   the drives off, then every species kicked);
 //! - [`MixtureObservables`]: each species' moments and temperature `T_s` about the flow
 //!   velocity (Garzó and Dufty 1999).
 //!
@@ -38,8 +40,10 @@ pub mod map;
 pub mod nosplit;
 pub mod observables;
 pub mod species;
+pub mod splitting;
 
 pub use map::{MassMap, MassRatio, PairLaw};
 pub use nosplit::{MixtureNoSplitting, PairPhysics, StartError};
 pub use observables::MixtureObservables;
 pub use species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
+pub use splitting::MixtureSplitting;

@@ -74,6 +74,9 @@ pub struct MixtureNoSplitting<K, D, L: PairLaw, G = Spheres> {
     t: Real,
     refresh: RefreshWindow,
     frame: Frame,
+    /// Whether a cooling mixture's velocities may be stored rescaled (not under a splitting,
+    /// whose kicks move physical velocities).
+    rescale: bool,
     dim: core::marker::PhantomData<G>,
 }
 
@@ -149,6 +152,7 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
             t: t0,
             refresh: RefreshWindow::new(p.len()),
             frame: Frame::IDENTITY,
+            rescale: true,
             dim: core::marker::PhantomData,
         };
         let obs = s.synchronized(p).map_err(StartError::Engine)?;
@@ -158,6 +162,12 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
     /// Current time.
     pub fn time(&self) -> Real {
         self.t
+    }
+
+    /// The loop that keeps physical velocities stored (for the splittings' collision steps).
+    pub(super) fn never_rescaled(mut self) -> Self {
+        self.rescale = false;
+        self
     }
 
     /// Event counts so far (all pair types).
@@ -187,6 +197,13 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
     /// The map `v_phys = offset + scale v` from stored to physical velocities.
     pub fn velocity_map(&self) -> Frame {
         self.frame
+    }
+
+    /// Each species' observables of the synchronized particles `p` (right after an advance or
+    /// a start), in physical units.
+    pub fn species_now(&self, p: &Particles<'_>) -> MixtureObservables {
+        let obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
+        self.physical(p, obs)
     }
 
     /// The majorant `U_st` of pair type `k` (stored units).
@@ -367,21 +384,17 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         self.maj[s].umax != before_s || self.maj[t].umax != before_t
     }
 
-    /// Brings every particle to `t`, species by species with its drive (a one-species mixture
-    /// with the drive's batch kernel, as the one-species loop).
+    /// Brings every particle to `t`, species by species with its drive.
     fn kick_all<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
-        if !D::ACTS {
-            return;
-        }
-        let background = &mut self.counts.background;
-        if self.sp.len() == 1 {
-            self.drives[0].kick_all_counting(p, t, rng, background);
-        } else {
-            for s in 0..self.sp.len() {
-                for i in self.sp.range(s) {
-                    self.drives[s].kick_counting(p, i, t, rng, background);
-                }
-            }
+        if D::ACTS {
+            kick_species(
+                &self.drives,
+                &self.sp,
+                p,
+                t,
+                rng,
+                &mut self.counts.background,
+            );
         }
     }
 
@@ -398,6 +411,7 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         let mut all = obs.all;
         let d = G::CHOICE.d();
         if !D::ACTS
+            && self.rescale
             && self
                 .frame
                 .rescale(p, &mut all, RESCALE_BELOW, d, L::Map::SPINS)
@@ -406,18 +420,8 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
             obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
         }
         self.counts.observations += 1;
-        // Drives that act about a centre (the Gaussian thermostat) get the mixture's flow
-        // velocity, which collisions keep (and such a drive too): so the lazy kicks between
-        // synchronizations stay exact. Each species' own moments otherwise.
-        let flow = if self.sp.len() == 1 {
-            obs.species[0].bulk // the same bits as the one-species loop
-        } else {
-            obs.flow_velocity()
-        };
+        tell_drives(&mut self.drives, &obs);
         for s in 0..self.sp.len() {
-            let mut seen = obs.species[s];
-            seen.bulk = flow;
-            self.drives[s].observe(&seen);
             if K::USES_UMAX {
                 self.maj[s] =
                     Majorant::new(2.0 * obs.species[s].max_peculiar_speed, obs.species[s].bulk);
@@ -467,44 +471,56 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
     }
 }
 
-// Each method out of line: a caller's `match` over every engine (the physics dispatch) would
-// otherwise reserve the per-species observables in its frame for every physics.
-impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> crate::engine::EventLoop
-    for MixtureNoSplitting<K, D, L, G>
-{
-    #[inline(never)]
-    fn advance_to<R: Rng + ?Sized>(
-        &mut self,
-        p: &mut Particles<'_>,
-        t_end: Real,
-        rng: &mut R,
-    ) -> Result<crate::moments::Observables, EngineError> {
-        MixtureNoSplitting::advance_to(self, p, t_end, rng).map(|o| o.all)
-    }
-    fn resync(
-        &mut self,
-        p: &mut Particles<'_>,
-    ) -> Result<crate::moments::Observables, EngineError> {
-        MixtureNoSplitting::resync(self, p).map(|o| o.all)
-    }
-    fn time(&self) -> Real {
-        self.t
-    }
-    fn counts(&self) -> Counts {
-        self.counts
-    }
-    fn work_rate(&self, n: usize) -> Real {
-        MixtureNoSplitting::work_rate(self, n)
-    }
-    fn velocity_map(&self) -> Frame {
-        self.frame
-    }
-    #[inline(never)]
-    fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
-        let obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
-        Some(self.physical(p, obs))
+/// Brings every particle of `p` to `t`, each species `s` with `drives[s]` (a one-species
+/// mixture with the drive's batch kernel, as the one-species loop), counting a host medium's
+/// events in `background`.
+pub(super) fn kick_species<D: Drive, R: Rng + ?Sized>(
+    drives: &[D; MAX_SPECIES],
+    sp: &Species,
+    p: &mut Particles<'_>,
+    t: Real,
+    rng: &mut R,
+    background: &mut u64,
+) {
+    if sp.len() == 1 {
+        drives[0].kick_all_counting(p, t, rng, background);
+    } else {
+        for (s, drive) in drives.iter().enumerate().take(sp.len()) {
+            for i in sp.range(s) {
+                drive.kick_counting(p, i, t, rng, background);
+            }
+        }
     }
 }
+
+/// Tells each species' drive the synchronized observables `obs`: drives that act about a
+/// centre (the Gaussian thermostat) get the mixture's flow velocity, which collisions keep
+/// (and such a drive too), so that kicks between synchronizations stay exact; each species'
+/// own moments otherwise.
+pub(super) fn tell_drives<D: Drive>(drives: &mut [D; MAX_SPECIES], obs: &MixtureObservables) {
+    let flow = if obs.len == 1 {
+        obs.species[0].bulk // the same bits as the one-species loop
+    } else {
+        obs.flow_velocity()
+    };
+    for (s, drive) in drives.iter_mut().enumerate().take(obs.len) {
+        let mut seen = obs.species[s];
+        seen.bulk = flow;
+        drive.observe(&seen);
+    }
+}
+
+crate::engine::impl_event_loop!(
+    MixtureNoSplitting,
+    [K: Kernel, D: Drive, L: PairLaw, G: Geometry],
+    MixtureNoSplitting<K, D, L, G>,
+    {
+        #[inline(never)]
+        fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
+            Some(MixtureNoSplitting::species_now(self, p))
+        }
+    }
+);
 
 /// Why a mixture loop could not start.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -144,3 +144,10 @@ impl MixtureObservables {
             .sum()
     }
 }
+
+impl From<MixtureObservables> for Observables {
+    /// The whole gas's moments.
+    fn from(m: MixtureObservables) -> Observables {
+        m.all
+    }
+}

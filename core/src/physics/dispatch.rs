@@ -10,9 +10,9 @@
 )]
 
 use super::engine::{
-    ByDiskDrive, ByDiskLaw, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByRoughDrive,
-    ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough, RoughMixture, Smooth,
-    SmoothDisks,
+    ByDiskDrive, ByDiskLaw, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByMixtureScheme,
+    ByRoughDrive, ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough,
+    RoughMixture, Smooth, SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
@@ -26,7 +26,7 @@ use crate::engine::{
 use crate::geometry::{DimensionChoice, Disks, Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
-use crate::mixture::{MixtureNoSplitting, PairLaw, PairPhysics, StartError};
+use crate::mixture::{MixtureNoSplitting, MixtureSplitting, PairLaw, PairPhysics, StartError};
 use crate::moments::Observables;
 use crate::particles::{Particle, Particles, Spin};
 use crate::restitution::Restitution;
@@ -142,7 +142,7 @@ impl Model {
                         wrap(
                             by_kernel(
                                 k,
-                                &MixtureBuild::<Spheres>(mx, self.drive, PhantomData),
+                                &MixtureBuild::<Spheres>(mx, self.drive, self.scheme, PhantomData),
                                 p,
                                 t0,
                             ),
@@ -157,7 +157,7 @@ impl Model {
                         wrap(
                             by_kernel(
                                 k,
-                                &MixtureBuild::<Disks>(mx, self.drive, PhantomData),
+                                &MixtureBuild::<Disks>(mx, self.drive, self.scheme, PhantomData),
                                 p,
                                 t0,
                             ),
@@ -170,7 +170,12 @@ impl Model {
                     self.mixture_features(),
                     {
                         wrap(
-                            by_kernel(k, &RoughMixtureBuild::<Spheres>(mx, r, PhantomData), p, t0),
+                            by_kernel(
+                                k,
+                                &RoughMixtureBuild::<Spheres>(mx, r, self.scheme, PhantomData),
+                                p,
+                                t0,
+                            ),
                             Engine::RoughMixture,
                         )
                     }
@@ -180,7 +185,12 @@ impl Model {
                     self.mixture_features(),
                     {
                         wrap(
-                            by_kernel(k, &RoughMixtureBuild::<Disks>(mx, r, PhantomData), p, t0),
+                            by_kernel(
+                                k,
+                                &RoughMixtureBuild::<Disks>(mx, r, self.scheme, PhantomData),
+                                p,
+                                t0,
+                            ),
                             Engine::RoughDiskMixture,
                         )
                     }
@@ -190,12 +200,7 @@ impl Model {
         match (&self.rough, self.dimension) {
             (Some(r), DimensionChoice::Three) => built!(feature = "rough", "rough", {
                 wrap(
-                    by_kernel(
-                        k,
-                        &RoughBuild::<Spheres>(r, self.scheme, PhantomData),
-                        p,
-                        t0,
-                    ),
+                    by_kernel(k, &RoughBuild::<Spheres>(r, self, PhantomData), p, t0),
                     Engine::Rough,
                 )
             }),
@@ -204,7 +209,7 @@ impl Model {
                 "rough` and `disks",
                 {
                     wrap(
-                        by_kernel(k, &RoughBuild::<Disks>(r, self.scheme, PhantomData), p, t0),
+                        by_kernel(k, &RoughBuild::<Disks>(r, self, PhantomData), p, t0),
                         Engine::RoughDisks,
                     )
                 }
@@ -388,26 +393,33 @@ fn pair_table<K: Kernel, L: Copy>(
     Ok(physics)
 }
 
-/// A mixture loop started, with the whole gas's observables.
-type Started<K, D, L, G> = Result<(MixtureNoSplitting<K, D, L, G>, Observables), EngineError>;
-
 /// Starts a mixture loop of dimension `G` with the pair table `physics` and one drive per
-/// species from `drives`.
+/// species from `drives`: the exact loop, or a splitting of it (validation leaves a mixture
+/// no other scheme).
 fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
     mx: &MixtureModel,
+    scheme: SchemeModel,
     physics: &[PairPhysics<K, L>; MAX_PAIRS],
     drives: &[D; MAX_SPECIES],
     p: &mut Particles<'_>,
     t0: Real,
-) -> Started<K, D, L, G> {
+) -> Begun<ByMixtureScheme<K, D, L, G>> {
     let sp = mx.species;
-    started(MixtureNoSplitting::start_in(
-        sp,
-        &physics[..sp.pair_types()],
-        &drives[..sp.len()],
-        p,
-        t0,
-    ))
+    let (physics, drives) = (&physics[..sp.pair_types()], &drives[..sp.len()]);
+    match scheme {
+        SchemeModel::Splitting(order, dt) => built!(feature = "splitting", "splitting", {
+            wrap(
+                started(MixtureSplitting::start(
+                    sp, physics, drives, order, dt, p, t0,
+                )),
+                ByMixtureScheme::Splitting,
+            )
+        }),
+        _ => wrap(
+            started(MixtureNoSplitting::start_in(sp, physics, drives, p, t0)),
+            ByMixtureScheme::NoSplitting,
+        ),
+    }
 }
 
 /// The mixture loop of kernel `k` (scaled per pair) in dimension `G` and the drive (none,
@@ -419,6 +431,7 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
     mx: &MixtureModel,
     k: K,
     drive: DriveModel,
+    scheme: SchemeModel,
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
@@ -426,7 +439,7 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
     match drive {
         DriveModel::WhiteNoise(_) => built!(feature = "white-noise", "white-noise", {
             wrap(
-                start_mixture::<K, _, _, G>(mx, &physics, &mx.noises.map(G::noise), p, t0),
+                start_mixture::<K, _, _, G>(mx, scheme, &physics, &mx.noises.map(G::noise), p, t0),
                 ByMixtureDrive::WhiteNoise,
             )
         }),
@@ -434,13 +447,13 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
             feature = "gaussian-thermostat",
             "gaussian-thermostat",
             wrap(
-                start_mixture::<K, _, _, G>(mx, &physics, &[g; MAX_SPECIES], p, t0),
+                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[g; MAX_SPECIES], p, t0),
                 ByMixtureDrive::Gaussian,
             )
         ),
         _ => built!(feature = "cooling", "cooling", {
             wrap(
-                start_mixture::<K, _, _, G>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[NoDrive; MAX_SPECIES], p, t0),
                 ByMixtureDrive::None,
             )
         }),
@@ -453,6 +466,7 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
 fn rough_mixture<K: Kernel, G: Geometry>(
     mx: &MixtureModel,
     rot: &MixtureRotation,
+    scheme: SchemeModel,
     k: K,
     p: &mut Particles<'_>,
     t0: Real,
@@ -462,13 +476,13 @@ fn rough_mixture<K: Kernel, G: Geometry>(
         Some(noises) => built!(feature = "white-noise", "white-noise", {
             let noises = noises.map(|w| w.in_dim::<G>());
             wrap(
-                start_mixture::<K, _, _, G>(mx, &physics, &noises, p, t0),
+                start_mixture::<K, _, _, G>(mx, scheme, &physics, &noises, p, t0),
                 ByRoughMixtureDrive::Noise,
             )
         }),
         None => built!(feature = "cooling", "cooling", {
             wrap(
-                start_mixture::<K, _, _, G>(mx, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[NoDrive; MAX_SPECIES], p, t0),
                 ByRoughMixtureDrive::None,
             )
         }),
@@ -479,22 +493,52 @@ fn rough_mixture<K: Kernel, G: Geometry>(
 #[inline(never)]
 fn rough<K: Kernel, G: Geometry>(
     r: &RoughModel,
-    scheme: SchemeModel,
+    m: &Model,
     k: K,
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
-    match r.noise {
-        None => built!(feature = "cooling", "cooling", {
-            wrap(
-                by_split(scheme, k, NoDrive, r.map, p, t0),
-                ByRoughDrive::None,
-            )
-        }),
-        Some(d) => built!(feature = "white-noise", "white-noise", {
+    let scheme = m.scheme;
+    // Validated: white noise (on translation or rotation) is `r.noise`; the other drives
+    // act on translation alone.
+    match (r.noise, m.drive) {
+        (Some(d), _) => built!(feature = "white-noise", "white-noise", {
             wrap(
                 by_split(scheme, k, d.in_dim::<G>(), r.map, p, t0),
                 ByRoughDrive::Noise,
+            )
+        }),
+        (None, DriveModel::Gaussian(g)) => built!(
+            feature = "gaussian-thermostat",
+            "gaussian-thermostat",
+            wrap(by_split(scheme, k, g, r.map, p, t0), ByRoughDrive::Gaussian)
+        ),
+        (None, DriveModel::ConstantForce(f)) => built!(
+            feature = "constant-force",
+            "constant-force",
+            wrap(
+                by_split(scheme, k, f, r.map, p, t0),
+                ByRoughDrive::ConstantForce
+            )
+        ),
+        (None, DriveModel::HostMaxwell(h)) => built!(feature = "host-medium", "host-medium", {
+            wrap(
+                by_split(scheme, k, h, r.map, p, t0),
+                ByRoughDrive::HostMaxwell,
+            )
+        }),
+        (None, DriveModel::HostHardSpheres(h)) => {
+            built!(feature = "host-medium", "host-medium", {
+                wrap(
+                    by_split(scheme, k, h, r.map, p, t0),
+                    ByRoughDrive::HostHardSpheres,
+                )
+            })
+        }
+        _ => built!(feature = "cooling", "cooling", {
+            wrap(
+                by_split(scheme, k, NoDrive, r.map, p, t0),
+                ByRoughDrive::None,
             )
         }),
     }
@@ -595,7 +639,7 @@ impl Build for DiskBuild<'_> {
 }
 
 /// Rough particles in dimension `G`: by drive.
-struct RoughBuild<'a, G>(&'a RoughModel, SchemeModel, PhantomData<G>);
+struct RoughBuild<'a, G>(&'a RoughModel, &'a Model, PhantomData<G>);
 impl<G: Geometry> Build for RoughBuild<'_, G> {
     type F = Rough<G>;
     fn build<K: Kernel>(
@@ -609,7 +653,12 @@ impl<G: Geometry> Build for RoughBuild<'_, G> {
 }
 
 /// A mixture of rough particles in dimension `G`.
-struct RoughMixtureBuild<'a, G>(&'a MixtureModel, &'a MixtureRotation, PhantomData<G>);
+struct RoughMixtureBuild<'a, G>(
+    &'a MixtureModel,
+    &'a MixtureRotation,
+    SchemeModel,
+    PhantomData<G>,
+);
 impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {
     type F = RoughMixture<G>;
     fn build<K: Kernel>(
@@ -618,12 +667,12 @@ impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
-        rough_mixture(self.0, self.1, k, p, t0)
+        rough_mixture(self.0, self.1, self.2, k, p, t0)
     }
 }
 
 /// A mixture of smooth particles in dimension `G`: the pair kernels scaled from `k`, by drive.
-struct MixtureBuild<'a, G>(&'a MixtureModel, DriveModel, PhantomData<G>);
+struct MixtureBuild<'a, G>(&'a MixtureModel, DriveModel, SchemeModel, PhantomData<G>);
 impl<G: WhiteNoiseIn> Build for MixtureBuild<'_, G> {
     type F = Mixture<G>;
     fn build<K: Kernel>(
@@ -632,7 +681,7 @@ impl<G: WhiteNoiseIn> Build for MixtureBuild<'_, G> {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
-        mixture(self.0, k, self.1, p, t0)
+        mixture(self.0, k, self.1, self.2, p, t0)
     }
 }
 

@@ -21,7 +21,7 @@ use crate::engine::{
 use crate::geometry::{Disks, Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use crate::math::Real;
-use crate::mixture::{MixtureNoSplitting, MixtureObservables};
+use crate::mixture::{MixtureNoSplitting, MixtureObservables, MixtureSplitting, PairLaw};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
@@ -192,10 +192,10 @@ impl<G: Geometry> Family for RoughMixture<G> {
 #[derive(Clone, Debug)]
 pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
     /// No drive: the mixture cools (feature `cooling`).
-    None(Built<MixtureNoSplitting<K, NoDrive, RoughPairLaw, G>, COOLING>),
+    None(Built<ByMixtureScheme<K, NoDrive, RoughPairLaw, G>, COOLING>),
     /// White noise on translation and rotation, each species its own strengths (feature
     /// `white-noise`).
-    Noise(Built<MixtureNoSplitting<K, RoughNoise<G>, RoughPairLaw, G>, WHITE_NOISE>),
+    Noise(Built<ByMixtureScheme<K, RoughNoise<G>, RoughPairLaw, G>, WHITE_NOISE>),
 }
 
 /// Smooth disks by drive, for kernel `K`.
@@ -225,6 +225,16 @@ pub enum ByRoughDrive<K: Kernel, G: Geometry = Spheres> {
     None(Built<BySplit<K, NoDrive, RoughMap, G>, COOLING>),
     /// White noise on translation and rotation (feature `white-noise`).
     Noise(Built<BySplit<K, RoughNoise<G>, RoughMap, G>, WHITE_NOISE>),
+    /// The Gaussian thermostat on translation (MS (12); feature `gaussian-thermostat`).
+    Gaussian(Built<BySplit<K, GaussianThermostat, RoughMap, G>, GAUSSIAN>),
+    /// The constant force on translation (MS (14); a splitting scheme; feature
+    /// `constant-force`).
+    ConstantForce(Built<BySplit<K, ConstantForce, RoughMap, G>, CONSTANT_FORCE>),
+    /// A host medium of Maxwell background kernel, its encounters smooth (BRS (2), (11);
+    /// spheres; feature `host-medium`).
+    HostMaxwell(Built<BySplit<K, HostMedium<MaxwellBackground>, RoughMap, G>, HOST_MEDIUM>),
+    /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
+    HostHardSpheres(Built<BySplit<K, HostMedium<HardSphereBackground>, RoughMap, G>, HOST_MEDIUM>),
 }
 
 /// By scheme, the exact loop or the splittings, for every family but the mixtures (smooth
@@ -242,12 +252,23 @@ pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
 #[derive(Clone, Debug)]
 pub enum ByMixtureDrive<K: Kernel, G: WhiteNoiseIn> {
     /// No drive: the mixture cools (feature `cooling`).
-    None(Built<MixtureNoSplitting<K, NoDrive, Constant, G>, COOLING>),
+    None(Built<ByMixtureScheme<K, NoDrive, Constant, G>, COOLING>),
     /// White noise in the dimension, each species its own strength (feature `white-noise`).
-    WhiteNoise(Built<MixtureNoSplitting<K, G::Noise, Constant, G>, WHITE_NOISE>),
+    WhiteNoise(Built<ByMixtureScheme<K, G::Noise, Constant, G>, WHITE_NOISE>),
     /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity (feature
     /// `gaussian-thermostat`).
-    Gaussian(Built<MixtureNoSplitting<K, GaussianThermostat, Constant, G>, GAUSSIAN>),
+    Gaussian(Built<ByMixtureScheme<K, GaussianThermostat, Constant, G>, GAUSSIAN>),
+}
+
+/// A mixture by scheme: the exact loop, or RW's splittings of it (the same collision
+/// process with the drives off, then every species kicked), for kernel `K`, drive `D`, pair
+/// law `L` and dimension `G`.
+#[derive(Clone, Debug)]
+pub enum ByMixtureScheme<K: Kernel, D: Drive, L: PairLaw, G: Geometry> {
+    /// The exact no-splitting scheme (GRW Section 3, one majorant per pair of species).
+    NoSplitting(MixtureNoSplitting<K, D, L, G>),
+    /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
+    Splitting(Built<MixtureSplitting<K, D, L, G>, SPLITTING>),
 }
 
 /// By drive, for kernel `K`.
@@ -343,10 +364,11 @@ forward!(
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
 forward!(ByDiskLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
-forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
+forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
+forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], Split, TimeStepped, SumForm);

@@ -86,10 +86,13 @@ pub(super) fn mixture_rotation(
     betas: Option<&[Real]>,
     scheme: SchemeModel,
 ) -> Result<MixtureRotation, PhysicsError> {
-    if !matches!(scheme, SchemeModel::NoSplitting) {
+    if matches!(scheme, SchemeModel::TimeStepped(..)) {
         return refuse(
             Param::Scheme,
-            Problem::DoesNotFit("must be no-splitting for rough particles"),
+            Problem::DoesNotFit(
+                "must be no-splitting, Euler or Strang for rough particles (MS's time-stepped \
+                 scheme is written for smooth spheres)",
+            ),
         );
     }
     let dim = physics.dimension;
@@ -252,17 +255,23 @@ pub(super) fn rotation(
         }
     })?;
     at_least_zero(Param::RotationNoise, r.noise)?;
+    // The drives act on translation alone (the rotation's own drive is `noise`): the
+    // Gaussian thermostat scales `v - V` (MS (12)), the constant force pushes along it (MS
+    // (14)), and the host medium's encounters are BRS (2)'s smooth ones, which leave a grain's
+    // spin as it is.
     let beta = match drive {
         DriveModel::None => None,
         DriveModel::WhiteNoise(w) => Some(w.beta()),
-        _ => {
+        _ if r.noise > 0.0 => {
             return refuse(
-                Param::Rotation,
+                Param::RotationNoise,
                 Problem::DoesNotFit(
-                    "takes only no drive or white noise (on translation, and `noise` on rotation)",
+                    "takes only no drive or white noise on translation beside it (the \
+                     thermostats and the host medium are not combined with rotational noise)",
                 ),
             );
         }
+        _ => None,
     };
     let noise = match (beta, r.noise > 0.0) {
         (None, false) => None,

@@ -170,10 +170,13 @@ pub(super) fn mixture(
                 problem: Problem::DoesNotFit("is not a valid list of species"),
             },
         })?;
-    if !matches!(scheme, SchemeModel::NoSplitting) {
+    if matches!(scheme, SchemeModel::TimeStepped(..)) {
         return refuse(
             Param::Scheme,
-            Problem::DoesNotFit("must be no-splitting for a mixture"),
+            Problem::DoesNotFit(
+                "must be no-splitting, Euler or Strang for a mixture (MS's time-stepped scheme \
+                 is written for one species)",
+            ),
         );
     }
     let mut noises = [WhiteNoise::new(0.0).expect("0 is a valid strength"); MAX_SPECIES];

@@ -65,7 +65,7 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
 pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
-    if !scene.physics().species.is_empty() {
+    if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
         return None; // a one-species solution
     }
     let alpha = scene.physics().restitution.constant()?;
@@ -99,7 +99,7 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
 
 /// The BRS (21), (22) closure models of a hard-sphere gas in a hard-sphere host medium.
 pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroModel; 2]> {
-    if !scene.physics().species.is_empty() {
+    if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
         return None; // a one-species solution
     }
     use crate::reference::hydro::{Closure, HydroModel};
@@ -333,11 +333,15 @@ pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::Rou
     let r = scene.physics().rotation?;
     let alpha = scene.physics().restitution.constant()?;
     let (strength, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
-    let beta = match scene.physics().drive {
-        DriveChoice::WhiteNoise(b) => b,
-        _ => 0.0,
+    // The constant force's work depends on `E|v - V|` (MS (14)), which the approximation
+    // does not follow: no curve.
+    let (beta, zeta) = match scene.physics().drive {
+        DriveChoice::WhiteNoise(b) => (b, 0.0),
+        DriveChoice::Gaussian(z) => (0.0, z),
+        DriveChoice::None => (0.0, 0.0),
+        DriveChoice::ConstantForce(_) | DriveChoice::HostMedium { .. } => return None,
     };
-    Some(crate::reference::rough::RoughApproximation::in_dimension(
+    let mut ma = crate::reference::rough::RoughApproximation::in_dimension(
         scene.dimension(),
         alpha,
         r.beta,
@@ -345,7 +349,9 @@ pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::Rou
         strength,
         lambda,
         [beta, r.noise],
-    ))
+    );
+    ma.thermostat = zeta;
+    Some(ma)
 }
 
 /// A rough gas's Maxwellian-approximation curves: `T_bulk_MA` (the translational temperature),

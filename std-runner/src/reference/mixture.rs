@@ -153,17 +153,57 @@ impl MaxwellMixture {
             row.push(0.0);
         }
         m.push(vec![0.0; d + 1]);
-        for (s, &beta) in self.beta.iter().enumerate() {
-            let rate = 6.0 * beta * self.counts[s] as f64;
-            m[s][d] += rate;
-            if !large_n {
-                let p = self.p(s, s);
-                m[p][d] += rate;
-            }
+        for (row, rate) in self.noise(large_n).into_iter().enumerate() {
+            m[row][d] += rate;
         }
         let mut x0 = self.initial();
         x0.push(1.0);
         let x = apply(&expm(&m, t), &x0);
+        self.temperatures_of(&x, large_n)
+    }
+
+    /// The expected species temperatures of RW's splittings (RW Algorithms 1, 2) with step `dt`
+    /// at the grid time `t = m dt`, at finite `N`: a collision step of length `h` multiplies
+    /// `E X` by `exp(M h)` (the collisions alone, as in [`Self::temperatures_at`]), and a kick
+    /// of `dt` adds `b dt` whatever the state (white noise adds `6 beta_s N_s dt` to `E A_s` and
+    /// `E |Q_s|^2`, nothing to the cross products). Euler: `X' = e^{M dt} X + b dt`; Strang:
+    /// `X' = e^{M dt/2} (e^{M dt/2} X + b dt)`.
+    pub fn splitting_temperatures_at(&self, t: f64, dt: f64, strang: bool) -> Vec<f64> {
+        let m = self.generator(false);
+        let steps = (t / dt).round() as usize;
+        let kick: Vec<f64> = self.noise(false).iter().map(|b| b * dt).collect();
+        let add = |x: Vec<f64>| -> Vec<f64> { x.iter().zip(&kick).map(|(a, b)| a + b).collect() };
+        let mut x = self.initial();
+        if strang {
+            let half = expm(&m, 0.5 * dt);
+            for _ in 0..steps {
+                x = apply(&half, &add(apply(&half, &x)));
+            }
+        } else {
+            let full = expm(&m, dt);
+            for _ in 0..steps {
+                x = add(apply(&full, &x));
+            }
+        }
+        self.temperatures_of(&x, false)
+    }
+
+    /// `b` of `dX/dt = M X + b`: the white noise's growth of each state entry per unit time.
+    fn noise(&self, large_n: bool) -> Vec<f64> {
+        let mut b = vec![0.0; self.dim()];
+        for (s, &beta) in self.beta.iter().enumerate() {
+            let rate = 6.0 * beta * self.counts[s] as f64;
+            b[s] += rate;
+            if !large_n {
+                b[self.p(s, s)] += rate;
+            }
+        }
+        b
+    }
+
+    /// The species temperatures about the flow velocity of the expected state `x` (module
+    /// docs; `large_n`: the flow velocity's terms dropped).
+    fn temperatures_of(&self, x: &[f64], large_n: bool) -> Vec<f64> {
         let ns = self.species();
         let total: f64 = (0..ns)
             .map(|r| self.masses[r] * self.counts[r] as f64)
@@ -286,6 +326,39 @@ mod tests {
     /// One heated species: GRW (13), `T(t) = T_inf + (T0 - T_inf) e^{-k t}` with
     /// `k = (1 - alpha^2)/4 kappa` and `T_inf = 2 beta / k`, for the temperature about the
     /// flow velocity at finite n: `E T = (n-1)/n` of it (the flow velocity's own share).
+    #[test]
+    /// One heated species split: the same recurrence as the one-species closed form
+    /// (`MaxwellTemperature::splitting_bulk_mean`, RW Tables 3-4), Euler and Strang, to
+    /// rounding; and with no noise the splitting is the exact solution (the collision steps
+    /// compose).
+    fn one_species_splitting_is_the_closed_form() {
+        let (n, alpha, kappa, beta) = (20usize, 0.5, 2.0, 0.7);
+        let mix = one_species(n, alpha, kappa, beta);
+        let mt = crate::reference::exact::MaxwellTemperature::new(
+            1.5,
+            alpha,
+            beta,
+            1.0,
+            kappa / (4.0 * std::f64::consts::PI),
+        );
+        for strang in [false, true] {
+            for &t in &[0.5, 2.0, 6.0] {
+                let got = mix.splitting_temperatures_at(t, 0.5, strang)[0];
+                let exact = mt.splitting_bulk_mean(n, 0.5, strang, t);
+                assert!(
+                    (got - exact).abs() < 1e-12 * exact,
+                    "strang {strang} t = {t}: {got} vs {exact}"
+                );
+            }
+        }
+        let cold = one_species(n, alpha, kappa, 0.0);
+        let (a, b) = (
+            cold.splitting_temperatures_at(3.0, 0.5, true)[0],
+            cold.temperatures_at(3.0, false)[0],
+        );
+        assert!((a - b).abs() < 1e-12 * b, "{a} vs {b}");
+    }
+
     #[test]
     fn one_heated_species_is_grw_13() {
         let (n, alpha, kappa, beta) = (20usize, 0.5, 2.0, 0.7);

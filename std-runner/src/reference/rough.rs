@@ -22,11 +22,13 @@
 //! `T_rot = (2/d_rot) E_rot/N` (`d_rot` = 3 for spheres, 1 for disks), so with
 //! `M_p = E|g|^p = (4 T_tr)^(p/2) Gamma((d + p)/2) / Gamma(d/2)`:
 //!
-//! `dT_tr/dt = (4 pi gamma C / d) (-L M_(lambda+2) + w B T_rot M_lambda) + 2 beta`,
+//! `dT_tr/dt = (4 pi gamma C / d) (-L M_(lambda+2) + w B T_rot M_lambda) + 2 beta (+ 2 zeta T_tr)`,
 //! `dT_rot/dt = (4 pi gamma C / d_rot) ((1 - p_n) B M_(lambda+2) - w C T_rot M_lambda) + 2 beta_rot`.
 //!
 //! For spheres: `(4 pi gamma C / 3) (-A M_(lambda+2) / 2 + 4 B T_rot M_lambda)` and
 //! `(4 pi gamma C / 3) (B M_(lambda+2) / 2 - 4 C T_rot M_lambda)` (Luding et al. 1998).
+//! A Gaussian thermostat on translation (MS (12), `dv/dt = zeta (v - V)` between collisions)
+//! adds `2 zeta T_tr` to `dT_tr/dt` and leaves the rotation alone.
 //! With `beta = -1` (`eta = 0`) and the Maxwell kernel this is GRW (13)'s
 //! `dT/dt = -pi gamma C (1 - alpha^2) T` in both dimensions. In the cooling state both parts
 //! cool at one rate; `M_(lambda+2) = 2 (d + lambda) T_tr M_lambda` turns that into a quadratic
@@ -52,6 +54,9 @@ pub struct RoughApproximation {
     pub lambda: f64,
     /// `2 beta`, `2 beta_rot`: the noise's heating of each part.
     pub heating: [f64; 2],
+    /// `zeta` of a Gaussian thermostat on translation (MS (12): it adds `2 zeta T_tr` to
+    /// `dT_tr/dt`); 0 without one.
+    pub thermostat: f64,
     /// The dimension `d` (3: spheres, 2: disks).
     pub d: usize,
 }
@@ -100,6 +105,7 @@ impl RoughApproximation {
             rate: 4.0 * std::f64::consts::PI * strength,
             lambda,
             heating: [2.0 * noise[0], 2.0 * noise[1]],
+            thermostat: 0.0,
             d,
         }
     }
@@ -134,7 +140,9 @@ impl RoughApproximation {
         let m_hi = moment(self.lambda + 2.0, t_tr, self.d);
         let m_lo = moment(self.lambda, t_tr, self.d);
         (
-            k_tr * (-self.loss * m_hi + w * b * t_rot * m_lo) + self.heating[0],
+            k_tr * (-self.loss * m_hi + w * b * t_rot * m_lo)
+                + self.heating[0]
+                + 2.0 * self.thermostat * t_tr,
             k_rot * (p_t * b * m_hi - w * c * t_rot * m_lo) + self.heating[1],
         )
     }

@@ -38,7 +38,9 @@ impl GaussianBalance {
     /// The balance for a scene of spheres with a Gaussian thermostat and a constant
     /// restitution coefficient below 1 (else none), from its initial temperature.
     pub fn of(scene: &Scene) -> Option<Self> {
-        if scene.dimension() != 3 {
+        // The balance is the smooth spheres' cooling rate (MS (12)); a rough gas's
+        // translation cools otherwise unless beta = -1.
+        if scene.dimension() != 3 || !scene.translation_is_smooth() {
             return None;
         }
         let t0 = crate::run::initial_temperature(scene);
