@@ -172,7 +172,7 @@ impl Model {
                         wrap(
                             by_kernel(
                                 k,
-                                &RoughMixtureBuild::<Spheres>(mx, r, self.scheme, PhantomData),
+                                &RoughMixtureBuild::<Spheres>(mx, r, self, PhantomData),
                                 p,
                                 t0,
                             ),
@@ -187,7 +187,7 @@ impl Model {
                         wrap(
                             by_kernel(
                                 k,
-                                &RoughMixtureBuild::<Disks>(mx, r, self.scheme, PhantomData),
+                                &RoughMixtureBuild::<Disks>(mx, r, self, PhantomData),
                                 p,
                                 t0,
                             ),
@@ -460,18 +460,30 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
     }
 }
 
-/// A rough mixture in dimension `G`: no drive, or white noise on translation and rotation per
-/// species.
+/// A rough mixture in dimension `G`: no drive, white noise on translation and rotation per
+/// species, or the Gaussian thermostat on translation.
 #[inline(never)]
 fn rough_mixture<K: Kernel, G: Geometry>(
     mx: &MixtureModel,
     rot: &MixtureRotation,
-    scheme: SchemeModel,
+    m: &Model,
     k: K,
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
+    let scheme = m.scheme;
     let physics = pair_table(mx, k, &rot.laws)?;
+    if let DriveModel::Gaussian(g) = m.drive {
+        // Validated: no rotational noise beside the thermostat.
+        return built!(
+            feature = "gaussian-thermostat",
+            "gaussian-thermostat",
+            wrap(
+                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[g; MAX_SPECIES], p, t0),
+                ByRoughMixtureDrive::Gaussian,
+            )
+        );
+    }
     match &rot.noises {
         Some(noises) => built!(feature = "white-noise", "white-noise", {
             let noises = noises.map(|w| w.in_dim::<G>());
@@ -656,7 +668,7 @@ impl<G: Geometry> Build for RoughBuild<'_, G> {
 struct RoughMixtureBuild<'a, G>(
     &'a MixtureModel,
     &'a MixtureRotation,
-    SchemeModel,
+    &'a Model,
     PhantomData<G>,
 );
 impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {

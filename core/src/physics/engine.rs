@@ -196,6 +196,9 @@ pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
     /// White noise on translation and rotation, each species its own strengths (feature
     /// `white-noise`).
     Noise(Built<ByMixtureScheme<K, RoughNoise<G>, RoughPairLaw, G>, WHITE_NOISE>),
+    /// The Gaussian thermostat (MS (12)) on every species' translation, about the flow
+    /// velocity (feature `gaussian-thermostat`).
+    Gaussian(Built<ByMixtureScheme<K, GaussianThermostat, RoughPairLaw, G>, GAUSSIAN>),
 }
 
 /// Smooth disks by drive, for kernel `K`.
@@ -367,7 +370,7 @@ forward!(ByDiskLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
-forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise);
+forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);

@@ -25,6 +25,11 @@ pub struct RoughModel {
     pub noise: Option<RoughNoise>,
 }
 
+/// What rotational noise takes beside it (one species or a mixture).
+const NOISE_BESIDE: &str = "takes only no drive or white noise on translation beside it (the \
+                            thermostats and the host medium are not combined with rotational \
+                            noise)";
+
 fn refuse<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
     Err(PhysicsError { param, problem })
 }
@@ -76,7 +81,9 @@ fn inertia(param: Param, kappa: Real, dimension: DimensionChoice) -> Result<Real
 
 /// Validates a rough mixture's rotation: `r` gives every species' and pair's value unless
 /// `physics` names its own; `alphas` are the pairs' validated normal restitutions, `betas`
-/// the species' translational noise (white noise; `None`: no drive).
+/// the species' translational noise (white noise; `None`: no white noise), `thermostat`
+/// whether the Gaussian thermostat acts on translation (then no species takes rotational
+/// noise).
 #[inline(never)]
 pub(super) fn mixture_rotation(
     physics: &Physics,
@@ -84,6 +91,7 @@ pub(super) fn mixture_rotation(
     species: &crate::mixture::Species,
     alphas: &[Real],
     betas: Option<&[Real]>,
+    thermostat: bool,
     scheme: SchemeModel,
 ) -> Result<MixtureRotation, PhysicsError> {
     if matches!(scheme, SchemeModel::TimeStepped(..)) {
@@ -126,6 +134,9 @@ pub(super) fn mixture_rotation(
             None => (r.noise, Param::RotationNoise),
         };
         at_least_zero(w_param, w)?;
+        if thermostat && w > 0.0 {
+            return refuse(w_param, Problem::DoesNotFit(NOISE_BESIDE));
+        }
         driven |= w > 0.0;
         let beta = betas.map(|b| b[k]);
         noises[k] = RoughNoise::new(beta, w, kappa[k]).ok_or(PhysicsError {
@@ -263,13 +274,7 @@ pub(super) fn rotation(
         DriveModel::None => None,
         DriveModel::WhiteNoise(w) => Some(w.beta()),
         _ if r.noise > 0.0 => {
-            return refuse(
-                Param::RotationNoise,
-                Problem::DoesNotFit(
-                    "takes only no drive or white noise on translation beside it (the \
-                     thermostats and the host medium are not combined with rotational noise)",
-                ),
-            );
+            return refuse(Param::RotationNoise, Problem::DoesNotFit(NOISE_BESIDE));
         }
         _ => None,
     };

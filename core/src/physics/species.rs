@@ -182,15 +182,8 @@ pub(super) fn mixture(
     let mut noises = [WhiteNoise::new(0.0).expect("0 is a valid strength"); MAX_SPECIES];
     match drive {
         // The Gaussian thermostat acts on every species about the mixture's flow velocity,
-        // which collisions and the thermostat keep: exact between synchronizations.
-        DriveModel::Gaussian(_) if physics.rotation.is_some() => {
-            return refuse(
-                Param::Rotation,
-                Problem::DoesNotFit(
-                    "takes only no drive or white noise (on translation, and `noise` on rotation)",
-                ),
-            );
-        }
+        // which collisions and the thermostat keep: exact between synchronizations (on
+        // translation alone for rough particles).
         DriveModel::None | DriveModel::Gaussian(_) => {}
         DriveModel::WhiteNoise(_) => {
             for (k, c) in list.iter().enumerate() {
@@ -293,6 +286,7 @@ pub(super) fn mixture(
                 &species,
                 &alphas[..types],
                 driven.then_some(&betas[..list.len()]),
+                matches!(drive, DriveModel::Gaussian(_)),
                 scheme,
             )?)
         }

@@ -181,6 +181,11 @@ const ROUGH_SPECIES_REFERENCES: [&str; gdsmc_core::mixture::MAX_SPECIES] =
 pub fn rough_mixture_approximation(
     scene: &Scene,
 ) -> Option<crate::reference::rough_mixture::RoughMixtureApproximation> {
+    // The thermostat on translation alone moves the cooling state's theta: the approximation
+    // (noise and collisions) does not follow it, so it draws nothing there.
+    if matches!(scene.physics().drive, DriveChoice::Gaussian(_)) {
+        return None;
+    }
     let model = scene.model();
     let (sp, laws, sections) = (
         model.species()?,
@@ -291,6 +296,16 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             temperatures: ph.species.iter().map(|s| s.temperature).collect(),
             beta: ma.beta.clone(),
         });
+        // The exact mean at this n of the scheme run: the splittings' own recursions.
+        let split = match ph.scheme {
+            SchemeChoice::Euler(dt) => Some((dt, false)),
+            SchemeChoice::Strang(dt) => Some((dt, true)),
+            _ => None,
+        };
+        let at_n = move |e: &MaxwellMixture, t: f64| match split {
+            Some((dt, strang)) => e.splitting_temperatures_at(t, dt, strang),
+            None => e.temperatures_at(t, false),
+        };
         for s in 0..species {
             let e = exact.clone();
             out.push(ReferenceCurve {
@@ -298,7 +313,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
                 of: cols[s][0],
                 source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
                 kind: Kind::MeanAtN,
-                curve: Box::new(move |t| e.temperatures_at(t, false)[s]),
+                curve: Box::new(move |t| at_n(&e, t)[s]),
             });
             let (e, x) = (exact.clone(), fractions.clone());
             out.push(ReferenceCurve {
@@ -320,7 +335,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
             source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
             kind: Kind::MeanAtN,
             curve: Box::new(move |t| {
-                let ts = e.temperatures_at(t, false);
+                let ts = at_n(&e, t);
                 ts.iter().zip(&x).map(|(a, b)| a * b).sum()
             }),
         });
