@@ -81,3 +81,27 @@ fn a_window_with_a_transient_is_flagged() {
     assert!(codes("observe.steady_from=2").contains(&"unsteady"));
     assert!(!codes("observe.steady_from=20").contains(&"unsteady"));
 }
+
+/// A cooling rough mixture's window is checked on each species' temperature ratio and theta
+/// (it once looked for a one-species `theta` column, found none, and passed any window): a
+/// window from t = 0.5 to 10 holds the relaxation of the light species' theta from its start
+/// (1) to about 0.47 and is flagged; the shipped scene's window (t >= 100) is steady. Fixed
+/// seeds; n = 400, 40 ensembles.
+#[test]
+fn a_rough_mixture_window_with_a_transient_is_flagged() {
+    let codes = |set: &[&str], seed: u64| {
+        let s = shipped_set("rough-mixture-hcs", set, 400, 40, seed);
+        let st = run(&s);
+        gdsmc_runner::analysis::warnings::check(&s, &st)
+            .into_iter()
+            .map(|w| w.code)
+            .collect::<Vec<_>>()
+    };
+    let early = [
+        "observe.t_end=10",
+        "observe.intervals=20",
+        "observe.steady_from=0.5",
+    ];
+    assert!(codes(&early, 78).contains(&"unsteady"));
+    assert!(!codes(&[], 79).contains(&"unsteady"));
+}

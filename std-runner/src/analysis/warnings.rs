@@ -89,18 +89,39 @@ fn non_finite(stats: &RunStats) -> Option<Warning> {
 const STEADY_CHECKED: [&str; 2] = [name::T, name::T_BULK];
 
 /// The columns a steady-state window must hold steady: the temperatures, for a cooling
-/// one-species gas a2, for a cooling rough gas theta, or for a mixture its species' temperature ratios (a cooling mixture's temperature keeps falling while its
+/// one-species gas a2, for a cooling rough gas theta (a rough mixture: each species' theta and
+/// temperature ratio), or for a mixture its species' temperature ratios (a cooling mixture's temperature keeps falling while its
 /// ratios settle: Garzó and Dufty 1999's cooling state).
 fn steady_checked(scene: &Scene) -> Vec<&'static str> {
     let species = scene.physics().species.len();
     if let Some(r) = scene.physics().rotation {
         // A cooling rough gas's temperatures keep falling while theta settles (Luding et al.
-        // 1998); a heated one's settle themselves.
-        let heated = !matches!(scene.physics().drive, DriveChoice::None) || r.noise > 0.0;
-        return if heated {
-            vec![name::T_BULK, name::T_ROT]
-        } else {
-            vec![name::THETA]
+        // 1998); a heated one's settle themselves. A rough mixture: each species' ratios
+        // (T_sk / T_mix and theta_sk) when cooling, its temperatures when heated.
+        let heated = !matches!(scene.physics().drive, DriveChoice::None)
+            || r.noise > 0.0
+            || scene
+                .physics()
+                .species
+                .iter()
+                .any(|s| s.rotation_noise.unwrap_or(0.0) > 0.0);
+        let (tr, rot) = (
+            &crate::run::columns::SPECIES_COLUMNS[..species],
+            &crate::run::columns::ROUGH_SPECIES_COLUMNS[..species],
+        );
+        return match (species > 0, heated) {
+            (false, true) => vec![name::T_BULK, name::T_ROT],
+            (false, false) => vec![name::THETA],
+            (true, true) => tr
+                .iter()
+                .map(|c| c[0])
+                .chain(rot.iter().map(|c| c[0]))
+                .collect(),
+            (true, false) => tr
+                .iter()
+                .map(|c| c[1])
+                .chain(rot.iter().map(|c| c[1]))
+                .collect(),
         };
     }
     if species == 0 {
