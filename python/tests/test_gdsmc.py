@@ -77,6 +77,10 @@ def strip_timing(v):
         ("rough-hcs", ["--n", "200", "--ensembles", "6", "--seed", "5"]),
         # Rough disks (d = 2): the same columns, the references for disks.
         ("rough-disks-hcs", ["--n", "200", "--ensembles", "6", "--seed", "5"]),
+        # Rough mixtures: each species' rotation (T_rot_s0, theta_s0, ...) and its references,
+        # spheres cooling and disks under white noise.
+        ("rough-mixture-hcs", ["--n", "200", "--ensembles", "6", "--seed", "9"]),
+        ("rough-disk-mixture-white-noise", ["--n", "200", "--ensembles", "6", "--seed", "9"]),
     ],
 )
 def test_same_numbers_as_the_command(tmp_path, name, args):
@@ -104,9 +108,13 @@ def test_same_numbers_as_the_command(tmp_path, name, args):
     assert np.array_equal(r.times, r.table["t"])
     assert np.array_equal(r.mean["T"], r.table["T"])
     assert np.array_equal(r.ci["T"], r.table["T_ci"])
-    if name.startswith("mixture"):
+    if "mixture" in name:
         assert np.array_equal(r.mean["T_s1_ratio"], r.table["T_s1_ratio"])
-    if name.startswith("rough"):
+    if name.startswith("rough") and "mixture" in name:
+        assert np.array_equal(r.mean["theta_s1"], r.table["theta_s1"])
+        assert np.array_equal(r.ci["T_rot_s0"], r.table["T_rot_s0_ci"])
+        assert "theta_s0_MA" in r.table
+    elif name.startswith("rough"):
         assert np.array_equal(r.mean["theta"], r.table["theta"])
         assert "theta_MA" in r.table
 
