@@ -71,6 +71,16 @@ pub trait Geometry: Copy + Default + core::fmt::Debug + PartialEq + 'static {
     /// A standard normal vector of velocity space (`z = 0` for disks): the white-noise kick's.
     fn normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3;
 
+    /// A direction uniform on the unit sphere of velocity space (the circle for disks): MS
+    /// Section 3's candidate direction `s`.
+    fn direction<R: Rng + ?Sized>(rng: &mut R) -> Vec3;
+
+    /// `w` of MS Section 3's acceptance rate `omega_ij = w pi gamma C (u . s)` for `s` uniform
+    /// ([`Geometry::direction`]), chosen so that averaged over `s` a pair collides at the
+    /// no-splitting rate `4 pi gamma C |u|`: `E[max(0, u_hat . s)]` is 1/4 on the sphere and
+    /// `1/pi` on the circle, so `w` = 16 for spheres (MS's `16 pi`) and `4 pi` for disks.
+    const OMEGA_FACTOR: Real;
+
     /// A standard normal vector of the rim velocity's degrees of freedom (along `z` only for
     /// disks).
     fn spin_normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3;
@@ -86,6 +96,12 @@ pub struct Disks;
 
 impl Geometry for Spheres {
     const CHOICE: DimensionChoice = DimensionChoice::Three;
+    const OMEGA_FACTOR: Real = 16.0;
+
+    #[inline(always)]
+    fn direction<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
+        unit_sphere(rng)
+    }
 
     #[inline(always)]
     fn scattering<K: Kernel, R: Rng + ?Sized>(_u: Vec3, rng: &mut R) -> Vec3 {
@@ -131,6 +147,12 @@ fn impact_parameter<R: Rng + ?Sized>(rng: &mut R) -> (Real, Real) {
 
 impl Geometry for Disks {
     const CHOICE: DimensionChoice = DimensionChoice::Two;
+    const OMEGA_FACTOR: Real = 4.0 * core::f64::consts::PI;
+
+    #[inline(always)]
+    fn direction<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
+        unit_circle(rng)
+    }
 
     #[inline(always)]
     fn scattering<K: Kernel, R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {

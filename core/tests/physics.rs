@@ -332,9 +332,9 @@ fn dispatch_builds_the_hand_composed_loop() {
         |q| {
             let k = HardSpheres::new(1.0, 0.1).unwrap();
             let d = GaussianThermostat::new(0.25).unwrap();
-            TimeStepped::start(k, d, Constant::new(0.5).unwrap(), 0.05, q, 0.0)
-                .unwrap()
-                .0
+            let (e, _): (TimeStepped<_, _>, _) =
+                TimeStepped::start(k, d, Constant::new(0.5).unwrap(), 0.05, q, 0.0).unwrap();
+            e
         },
         |e| matches!(e, Engine::Smooth(ByKernel::HardSpheres(_))),
     );

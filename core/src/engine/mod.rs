@@ -131,7 +131,9 @@ impl_event_loop!(
     SumNoSplitting<A>
 );
 
-impl<D: crate::drive::Drive, A: crate::restitution::Restitution> EventLoop for TimeStepped<D, A> {
+impl<D: crate::drive::Drive, A: crate::restitution::Restitution, G: crate::geometry::Geometry>
+    EventLoop for TimeStepped<D, A, G>
+{
     fn advance_to<R: Rng + ?Sized>(
         &mut self,
         p: &mut Particles<'_>,

@@ -1,5 +1,8 @@
 //! The time-stepped DSMC scheme of MS Section 3 for inelastic hard spheres (Bird's scheme with
-//! the Enskog factor folded into the kernel's rate constant).
+//! the Enskog factor folded into the kernel's rate constant), in dimension `G`: hard disks
+//! draw `s` on the circle and accept with `omega_ij = 4 pi^2 gamma C (u . s)`
+//! ([`Geometry::OMEGA_FACTOR`]), which keeps the pair rate `4 pi gamma C |u|` and gives the
+//! impact direction its hard-disk law (density `u_hat . s`).
 //!
 //! Each step of length `h`: a collision stage with `(1/2) (n - 1) omega_max h` candidate pairs
 //! (the fractional part carried to the next step), each with a direction `s` uniform on the
@@ -21,17 +24,19 @@
 use super::{Counts, EngineError};
 use crate::collision::{inelastic, scattering_direction_from_impact};
 use crate::drive::Drive;
+use crate::geometry::{Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel};
 use crate::math::{PI, Real, floor, max, min, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_pair, uniform01};
-use crate::sample::unit_sphere;
 
-/// MS's time-stepped scheme for hard spheres with drive `D` and restitution law `A`.
+/// MS's time-stepped scheme for hard spheres (hard disks for `G = Disks`) with drive `D` and
+/// restitution law `A`.
 #[derive(Clone, Debug)]
-pub struct TimeStepped<D, A> {
+pub struct TimeStepped<D, A, G = Spheres> {
+    dim: core::marker::PhantomData<G>,
     kernel: HardSpheres,
     drive: D,
     restitution: A,
@@ -44,7 +49,7 @@ pub struct TimeStepped<D, A> {
     counts: Counts,
 }
 
-impl<D: Drive, A: Restitution> TimeStepped<D, A> {
+impl<D: Drive, A: Restitution, G: Geometry> TimeStepped<D, A, G> {
     /// Starts at `t0` with step factor `f > 0` (`h = f lambda / v_0`; MS: 0.01) on particles
     /// holding the initial velocities. `omega_max` starts from `Umax = 2 max |v - V|`.
     // Out of line: called once per run, and the dispatch above it stays small.
@@ -63,6 +68,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
         }
         p.reset_kick_times(t0);
         let mut s = TimeStepped {
+            dim: core::marker::PhantomData,
             kernel,
             drive,
             restitution,
@@ -75,7 +81,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
             counts: Counts::default(),
         };
         let obs = s.synchronized(p)?;
-        s.omega_max = 16.0 * PI * kernel.strength() * 2.0 * obs.max_peculiar_speed;
+        s.omega_max = G::OMEGA_FACTOR * PI * kernel.strength() * 2.0 * obs.max_peculiar_speed;
         Ok((s, obs))
     }
 
@@ -138,7 +144,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
             self.drive
                 .kick_all_counting(p, self.t, rng, &mut self.counts.background);
             self.steps += 1;
-            let o = super::event::observables(p)?;
+            let o = super::event::observables_dim(p, G::CHOICE.d())?;
             self.temperature = o.t_bulk;
             self.drive.observe(&o);
             obs = Some(o);
@@ -156,10 +162,10 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
         let expected = 0.5 * (n - 1) as Real * self.omega_max * h + self.carry;
         let m = floor(expected);
         self.carry = expected - m;
-        let k16 = 16.0 * PI * self.kernel.strength();
+        let k16 = G::OMEGA_FACTOR * PI * self.kernel.strength();
         for _ in 0..m as u64 {
             let (i, j) = uniform_pair(rng, n);
-            let s = unit_sphere(rng);
+            let s = G::direction(rng);
             let (vi, vj) = (p.velocity(i), p.velocity(j));
             let u = vi - vj;
             let un = u.dot(s);
@@ -193,7 +199,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
     }
 
     fn synchronized(&mut self, p: &Particles<'_>) -> Result<Observables, EngineError> {
-        let obs = super::event::observables(p)?;
+        let obs = super::event::observables_dim(p, G::CHOICE.d())?;
         self.temperature = obs.t_bulk;
         self.drive.observe(&obs);
         Ok(obs)
@@ -205,7 +211,7 @@ impl<D: Drive, A: Restitution> TimeStepped<D, A> {
         let obs = self.synchronized(p)?;
         self.omega_max = max(
             self.omega_max,
-            16.0 * PI * self.kernel.strength() * 2.0 * obs.max_peculiar_speed,
+            G::OMEGA_FACTOR * PI * self.kernel.strength() * 2.0 * obs.max_peculiar_speed,
         );
         Ok(obs)
     }

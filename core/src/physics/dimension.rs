@@ -1,13 +1,13 @@
 //! The validated dimension of a [`super::Physics`]: disks (`d = 2`, [`crate::geometry`]) run
-//! the loops composed for them: the no-splitting scheme and the Euler and Strang splittings
-//! (RW Algorithms 1-2; a mixture only the first, as in three dimensions) with either
+//! the loops composed for them: the no-splitting scheme, the Euler and Strang splittings
+//! (RW Algorithms 1-2) and, for smooth hard disks of one species, MS's time-stepped scheme, with either
 //! restitution law (BRS (10)'s normal speed follows from the map GRW (3) in any dimension),
 //! and no drive, white noise in the plane or the Gaussian thermostat (one species or a
 //! mixture; rough particles take only no drive or white noise, as in three dimensions), and
 //! start drifts in the plane.
 
 use super::error::{Param, PhysicsError, Problem};
-use super::parts::{DriveModel, SchemeModel};
+use super::parts::DriveModel;
 use super::{DimensionChoice, Physics};
 
 fn refuse<T>(param: Param, why: &'static str) -> Result<T, PhysicsError> {
@@ -17,21 +17,15 @@ fn refuse<T>(param: Param, why: &'static str) -> Result<T, PhysicsError> {
     })
 }
 
-/// Validates the dimension of `physics` against the drive and scheme already validated.
+/// Validates the dimension of `physics` against the drive already validated (every scheme runs
+/// on disks: MS's time-stepped one on smooth hard disks, `TimeStepped<D, A, Disks>`; a rough
+/// gas or a mixture refuses it on its own account).
 pub(super) fn dimension(
     physics: &Physics,
     drive: DriveModel,
-    scheme: SchemeModel,
 ) -> Result<DimensionChoice, PhysicsError> {
     if physics.dimension == DimensionChoice::Three {
         return Ok(DimensionChoice::Three);
-    }
-    if matches!(scheme, SchemeModel::TimeStepped(..)) {
-        return refuse(
-            Param::Scheme,
-            "must be no-splitting, Euler or Strang for disks (MS's time-stepped scheme is \
-             written for spheres)",
-        );
     }
     // The Gaussian thermostat scales the peculiar velocity, `v - V` (MS (61)), which stays in
     // the plane; the host medium's partners and impact directions are drawn in three

@@ -10,9 +10,9 @@
 )]
 
 use super::engine::{
-    ByDiskDrive, ByDiskLaw, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByMixtureScheme,
-    ByRoughDrive, ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough,
-    RoughMixture, Smooth, SmoothDisks,
+    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByMixtureScheme, ByRoughDrive,
+    ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough, RoughMixture, Smooth,
+    SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
@@ -255,36 +255,22 @@ impl Model {
         match self.drive {
             DriveModel::WhiteNoise(w) => built!(feature = "white-noise", "white-noise", {
                 wrap(
-                    self.disk_law(k, Disks::noise(w), p, t0),
+                    self.by_law::<K, _, Disks>(k, Disks::noise(w), p, t0),
                     ByDiskDrive::WhiteNoise,
                 )
             }),
             DriveModel::Gaussian(g) => built!(
                 feature = "gaussian-thermostat",
                 "gaussian-thermostat",
-                wrap(self.disk_law(k, g, p, t0), ByDiskDrive::Gaussian)
+                wrap(
+                    self.by_law::<K, _, Disks>(k, g, p, t0),
+                    ByDiskDrive::Gaussian
+                )
             ),
             _ => built!(feature = "cooling", "cooling", {
-                wrap(self.disk_law(k, NoDrive, p, t0), ByDiskDrive::None)
-            }),
-        }
-    }
-
-    fn disk_law<K: Kernel, D: Drive>(
-        &self,
-        k: K,
-        d: D,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByDiskLaw<K, D>, Observables), EngineError> {
-        match self.law {
-            LawModel::Constant(a) => {
-                wrap(by_split(self.scheme, k, d, a, p, t0), ByDiskLaw::Constant)
-            }
-            LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
                 wrap(
-                    by_split(self.scheme, k, d, a, p, t0),
-                    ByDiskLaw::ImpactSpeed,
+                    self.by_law::<K, _, Disks>(k, NoDrive, p, t0),
+                    ByDiskDrive::None,
                 )
             }),
         }
@@ -322,13 +308,14 @@ impl Model {
         }
     }
 
-    fn by_law<K: Kernel, D: Drive>(
+    /// Smooth particles of one species in dimension `G`, by law.
+    fn by_law<K: Kernel, D: Drive, G: Geometry>(
         &self,
         k: K,
         d: D,
         p: &mut Particles<'_>,
         t0: Real,
-    ) -> Result<(ByLaw<K, D>, Observables), EngineError> {
+    ) -> Result<(ByLaw<K, D, G>, Observables), EngineError> {
         match self.law {
             LawModel::Constant(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::Constant),
             LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
@@ -337,17 +324,19 @@ impl Model {
         }
     }
 
-    fn by_scheme<K: Kernel, D: Drive, A: Restitution>(
+    fn by_scheme<K: Kernel, D: Drive, A: Restitution, G: Geometry>(
         &self,
         k: K,
         d: D,
         a: A,
         p: &mut Particles<'_>,
         t0: Real,
-    ) -> Result<(ByScheme<K, D, A>, Observables), EngineError> {
+    ) -> Begun<ByScheme<K, D, A, G>> {
         match self.scheme {
             // Hard spheres with no drive: the sum-form majorant.
-            SchemeModel::NoSplitting if !D::ACTS && K::HARD && self.sum_form => {
+            SchemeModel::NoSplitting
+                if !D::ACTS && K::HARD && self.sum_form && G::CHOICE == DimensionChoice::Three =>
+            {
                 built!(feature = "hard-spheres", "hard-spheres", {
                     let hs = k
                         .as_hard_spheres()

@@ -205,20 +205,11 @@ pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
 #[derive(Clone, Debug)]
 pub enum ByDiskDrive<K: Kernel> {
     /// No drive: the disks cool (feature `cooling`).
-    None(Built<ByDiskLaw<K, NoDrive>, COOLING>),
+    None(Built<ByLaw<K, NoDrive, Disks>, COOLING>),
     /// White noise in the plane (feature `white-noise`).
-    WhiteNoise(Built<ByDiskLaw<K, PlanarWhiteNoise>, WHITE_NOISE>),
+    WhiteNoise(Built<ByLaw<K, PlanarWhiteNoise, Disks>, WHITE_NOISE>),
     /// The Gaussian thermostat (MS (12); feature `gaussian-thermostat`).
-    Gaussian(Built<ByDiskLaw<K, GaussianThermostat>, GAUSSIAN>),
-}
-
-/// Smooth disks by restitution law, for kernel `K` and drive `D`.
-#[derive(Clone, Debug)]
-pub enum ByDiskLaw<K: Kernel, D: Drive> {
-    /// A constant coefficient.
-    Constant(BySplit<K, D, Constant, Disks>),
-    /// The impact-speed law BRS (9)-(10) (feature `impact-speed`).
-    ImpactSpeed(Built<BySplit<K, D, ImpactSpeed, Disks>, IMPACT_SPEED>),
+    Gaussian(Built<ByLaw<K, GaussianThermostat, Disks>, GAUSSIAN>),
 }
 
 /// A rough gas's engine by drive (the rough map), for kernel `K` and dimension `G`.
@@ -292,26 +283,27 @@ pub enum ByDrive<K: Kernel> {
     HostHardSpheres(Built<ByLaw<K, HostMedium<HardSphereBackground>>, HOST_MEDIUM>),
 }
 
-/// By restitution law, for kernel `K` and drive `D`.
+/// By restitution law, for kernel `K`, drive `D` and dimension `G` (smooth particles of one
+/// species).
 #[derive(Clone, Debug)]
-pub enum ByLaw<K: Kernel, D: Drive> {
+pub enum ByLaw<K: Kernel, D: Drive, G: Geometry = Spheres> {
     /// A constant coefficient.
-    Constant(ByScheme<K, D, Constant>),
+    Constant(ByScheme<K, D, Constant, G>),
     /// The impact-speed law BRS (9)-(10) (feature `impact-speed`).
-    ImpactSpeed(Built<ByScheme<K, D, ImpactSpeed>, IMPACT_SPEED>),
+    ImpactSpeed(Built<ByScheme<K, D, ImpactSpeed, G>, IMPACT_SPEED>),
 }
 
-/// By scheme: the event loops themselves.
+/// By scheme: the event loops themselves (smooth particles of one species in dimension `G`).
 #[derive(Clone, Debug)]
-pub enum ByScheme<K: Kernel, D: Drive, A: Restitution> {
+pub enum ByScheme<K: Kernel, D: Drive, A: Restitution, G: Geometry = Spheres> {
     /// The exact no-splitting scheme (GRW Section 3) or Euler or Strang splitting (RW
     /// Algorithms 1, 2): the scheme level every family shares.
-    Split(BySplit<K, D, A, Spheres>),
-    /// MS's time-stepped scheme (hard spheres only; built only under [`ByKernel::HardSpheres`];
-    /// features `time-stepped`, `hard-spheres`).
-    TimeStepped(Built<TimeStepped<D, A>, TIME_STEPPED>),
+    Split(BySplit<K, D, A, G>),
+    /// MS's time-stepped scheme (hard spheres or disks only; built only under
+    /// [`ByKernel::HardSpheres`]; features `time-stepped`, `hard-spheres`).
+    TimeStepped(Built<TimeStepped<D, A, G>, TIME_STEPPED>),
     /// The exact scheme of hard spheres with no drive on the sum-form majorant (built only under
-    /// [`ByKernel::HardSpheres`] with [`ByDrive::None`]; feature `hard-spheres`).
+    /// [`ByKernel::HardSpheres`] with [`ByDrive::None`], for spheres; feature `hard-spheres`).
     SumForm(Built<SumNoSplitting<A>, HARD_SPHERES>),
 }
 
@@ -366,12 +358,11 @@ forward!(
 );
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
-forward!(ByDiskLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
-forward!(ByLaw<K, D>, [K: Kernel, D: Drive], Constant, ImpactSpeed);
-forward!(ByScheme<K, D, A>, [K: Kernel, D: Drive, A: Restitution], Split, TimeStepped, SumForm);
+forward!(ByLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
+forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, TimeStepped, SumForm);

@@ -50,7 +50,7 @@ impl Model {
         } else {
             super::species::mixture(physics, kernel, law, drive, scheme)?
         };
-        let dimension = super::dimension::dimension(physics, drive, scheme)?;
+        let dimension = super::dimension::dimension(physics, drive)?;
         let rough = match physics.rotation {
             None => None,
             Some(_) => super::rotation::rotation(physics, law, drive, scheme)?,
