@@ -141,13 +141,16 @@ fn the_same_bad_value_gets_the_same_words() {
         (
             "n = 64",
             "n = 64\ndimension = 2",
-            &["scheme.kind=time-stepped", "scheme.step_factor=0.01"],
-            "scheme.kind",
-            "scheme",
+            &[
+                "drive.kind=host-medium",
+                "drive.kernel=maxwell",
+                "drive.beta=",
+            ],
+            "particles.dimension",
+            "dimension",
             |c| {
                 c.dimension = 2;
-                c.scheme = gdsmc::GDSMC_SCHEME_TIME_STEPPED;
-                c.step_factor = 0.01;
+                c.drive = gdsmc::GDSMC_DRIVE_HOST_MEDIUM;
             },
         ),
         (

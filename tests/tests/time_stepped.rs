@@ -74,11 +74,10 @@ fn time_stepped_hard_disks_converge_to_no_splitting() {
     let st_faster = run(&disks(1113, &["collisions.kernel=hard-spheres", &gamma]));
     let f = family(times.len() - 1, dof(3000));
     let mut apart = 0;
-    for ti in 1..times.len() {
+    for (ti, &t) in times.iter().enumerate().skip(1) {
         let (a, ca) = at(&st_exact, ti, name::T_BULK);
         let (b, cb) = at(&st_stepped, ti, name::T_BULK);
         let (c, cc) = at(&st_faster, ti, name::T_BULK);
-        let t = times[ti];
         let h = f * (ca * ca + cb * cb).sqrt();
         assert!(
             (a - b).abs() <= h,

@@ -10,9 +10,9 @@
 )]
 
 use super::engine::{
-    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByMixtureScheme, ByRoughDrive,
-    ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough, RoughMixture, Smooth,
-    SmoothDisks,
+    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByMixtureLaw, ByMixtureScheme,
+    ByRoughDrive, ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough,
+    RoughMixture, Smooth, SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
@@ -140,12 +140,7 @@ impl Model {
                 (None, DimensionChoice::Three) => {
                     built!(feature = "mixtures", self.mixture_features(), {
                         wrap(
-                            by_kernel(
-                                k,
-                                &MixtureBuild::<Spheres>(mx, self.drive, self.scheme, PhantomData),
-                                p,
-                                t0,
-                            ),
+                            by_kernel(k, &MixtureBuild::<Spheres>(mx, self, PhantomData), p, t0),
                             Engine::Mixture,
                         )
                     })
@@ -155,12 +150,7 @@ impl Model {
                     self.mixture_features(),
                     {
                         wrap(
-                            by_kernel(
-                                k,
-                                &MixtureBuild::<Disks>(mx, self.drive, self.scheme, PhantomData),
-                                p,
-                                t0,
-                            ),
+                            by_kernel(k, &MixtureBuild::<Disks>(mx, self, PhantomData), p, t0),
                             Engine::DiskMixture,
                         )
                     }
@@ -419,16 +409,14 @@ fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
 fn mixture<K: Kernel, G: WhiteNoiseIn>(
     mx: &MixtureModel,
     k: K,
-    drive: DriveModel,
-    scheme: SchemeModel,
+    m: &Model,
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
-    let physics = pair_table(mx, k, &mx.laws)?;
-    match drive {
+    match m.drive {
         DriveModel::WhiteNoise(_) => built!(feature = "white-noise", "white-noise", {
             wrap(
-                start_mixture::<K, _, _, G>(mx, scheme, &physics, &mx.noises.map(G::noise), p, t0),
+                mixture_law::<K, _, G>(mx, k, m, &mx.noises.map(G::noise), p, t0),
                 ByMixtureDrive::WhiteNoise,
             )
         }),
@@ -436,16 +424,44 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
             feature = "gaussian-thermostat",
             "gaussian-thermostat",
             wrap(
-                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[g; MAX_SPECIES], p, t0),
+                mixture_law::<K, _, G>(mx, k, m, &[g; MAX_SPECIES], p, t0),
                 ByMixtureDrive::Gaussian,
             )
         ),
         _ => built!(feature = "cooling", "cooling", {
             wrap(
-                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                mixture_law::<K, _, G>(mx, k, m, &[NoDrive; MAX_SPECIES], p, t0),
                 ByMixtureDrive::None,
             )
         }),
+    }
+}
+
+/// A smooth mixture's law level: each pair type's constant, or BRS's impact-speed law for
+/// every pair.
+fn mixture_law<K: Kernel, D: Drive, G: Geometry>(
+    mx: &MixtureModel,
+    k: K,
+    m: &Model,
+    drives: &[D; MAX_SPECIES],
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Begun<ByMixtureLaw<K, D, G>> {
+    match m.law {
+        LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
+            let physics = pair_table(mx, k, &[a; MAX_PAIRS])?;
+            wrap(
+                start_mixture::<K, _, _, G>(mx, m.scheme, &physics, drives, p, t0),
+                ByMixtureLaw::ImpactSpeed,
+            )
+        }),
+        LawModel::Constant(_) => {
+            let physics = pair_table(mx, k, &mx.laws)?;
+            wrap(
+                start_mixture::<K, _, _, G>(mx, m.scheme, &physics, drives, p, t0),
+                ByMixtureLaw::Constant,
+            )
+        }
     }
 }
 
@@ -673,7 +689,7 @@ impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {
 }
 
 /// A mixture of smooth particles in dimension `G`: the pair kernels scaled from `k`, by drive.
-struct MixtureBuild<'a, G>(&'a MixtureModel, DriveModel, SchemeModel, PhantomData<G>);
+struct MixtureBuild<'a, G>(&'a MixtureModel, &'a Model, PhantomData<G>);
 impl<G: WhiteNoiseIn> Build for MixtureBuild<'_, G> {
     type F = Mixture<G>;
     fn build<K: Kernel>(
@@ -682,7 +698,7 @@ impl<G: WhiteNoiseIn> Build for MixtureBuild<'_, G> {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
-        mixture(self.0, k, self.1, self.2, p, t0)
+        mixture(self.0, k, self.1, p, t0)
     }
 }
 

@@ -246,12 +246,21 @@ pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
 #[derive(Clone, Debug)]
 pub enum ByMixtureDrive<K: Kernel, G: WhiteNoiseIn> {
     /// No drive: the mixture cools (feature `cooling`).
-    None(Built<ByMixtureScheme<K, NoDrive, Constant, G>, COOLING>),
+    None(Built<ByMixtureLaw<K, NoDrive, G>, COOLING>),
     /// White noise in the dimension, each species its own strength (feature `white-noise`).
-    WhiteNoise(Built<ByMixtureScheme<K, G::Noise, Constant, G>, WHITE_NOISE>),
+    WhiteNoise(Built<ByMixtureLaw<K, G::Noise, G>, WHITE_NOISE>),
     /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity (feature
     /// `gaussian-thermostat`).
-    Gaussian(Built<ByMixtureScheme<K, GaussianThermostat, Constant, G>, GAUSSIAN>),
+    Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G>, GAUSSIAN>),
+}
+
+/// A smooth mixture by restitution law, for kernel `K`, drive `D` and dimension `G`.
+#[derive(Clone, Debug)]
+pub enum ByMixtureLaw<K: Kernel, D: Drive, G: Geometry> {
+    /// A constant coefficient per pair type.
+    Constant(ByMixtureScheme<K, D, Constant, G>),
+    /// BRS's impact-speed law (9)-(10) for every pair (feature `impact-speed`).
+    ImpactSpeed(Built<ByMixtureScheme<K, D, ImpactSpeed, G>, IMPACT_SPEED>),
 }
 
 /// A mixture by scheme: the exact loop, or RW's splittings of it (the same collision
@@ -362,6 +371,7 @@ forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, Co
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian);
+forward!(ByMixtureLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);

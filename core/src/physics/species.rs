@@ -77,7 +77,8 @@ pub struct MixtureModel {
     pub starts: [Maxwellian; MAX_SPECIES],
     /// The kernel factor `((d_s + d_t)/2)^2` of each pair type.
     pub factors: [Real; MAX_PAIRS],
-    /// The restitution of each pair type.
+    /// The restitution of each pair type (a constant law; under BRS's impact-speed law,
+    /// which the model's `law` holds for every pair, these are 1 and unused).
     pub laws: [Constant; MAX_PAIRS],
     /// The white-noise drive of each species (with the white-noise drive).
     pub noises: [WhiteNoise; MAX_SPECIES],
@@ -209,12 +210,23 @@ pub(super) fn mixture(
     let types = species.pair_types();
     let base = match law {
         LawModel::Constant(a) => a,
-        LawModel::ImpactSpeed(_) => {
+        // BRS (9)-(10) is one law of the normal impact speed for every pair (the model's
+        // `law`); the pairs' constants below are then 1 and unused.
+        LawModel::ImpactSpeed(_) if physics.rotation.is_some() => {
             return refuse(
                 Param::Restitution,
-                Problem::DoesNotFit("must be constant for a mixture (one per species pair)"),
+                Problem::DoesNotFit("must be constant for rough particles"),
             );
         }
+        LawModel::ImpactSpeed(_) if !physics.pair_restitution.is_empty() => {
+            return refuse(
+                Param::PairRestitution(0, 0),
+                Problem::DoesNotFit(
+                    "is not used with the impact-speed law, which is one law for every pair",
+                ),
+            );
+        }
+        LawModel::ImpactSpeed(_) => Constant::new(1.0).expect("1 is a valid coefficient"),
     };
     let given = &physics.pair_restitution;
     if !given.is_empty() && given.len() != types {

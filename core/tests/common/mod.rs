@@ -100,3 +100,31 @@ pub mod strategies {
         prop_oneof![Just(1.0), 1e-6f64..=1.0]
     }
 }
+
+/// A launched physics's trajectory as bits: `T_raw` at each of `times` and every final
+/// (physical) velocity, from stream `(seed, 0)`, with the collision count. Two physics that
+/// must be the same process to the last bit compare these.
+pub fn trajectory_bits(
+    ph: &gdsmc_core::physics::Physics,
+    seed: u64,
+    times: &[f64],
+) -> (Vec<u64>, u64) {
+    use gdsmc_core::engine::EventLoop;
+    use gdsmc_core::particles::{Particle, Particles};
+    let model = ph.validate().unwrap();
+    let mut buf = vec![Particle::default(); ph.n];
+    let mut p = Particles::new(&mut buf).unwrap();
+    let mut rng = gdsmc_core::rng::stream(seed, 0);
+    let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+    let mut bits = Vec::new();
+    for &t in times {
+        let o = e.advance_to(&mut p, t, &mut rng).unwrap();
+        bits.push(o.t_raw.to_bits());
+    }
+    let frame = e.velocity_map();
+    bits.extend(p.as_slice().iter().flat_map(|q| {
+        let v = frame.physical(q.velocity());
+        [v.x, v.y, v.z].map(f64::to_bits)
+    }));
+    (bits, e.counts().collisions)
+}
