@@ -67,10 +67,9 @@ static void config_errors(void) {
     c = base(); c.dimension = 4;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
            "config.dimension must be 2 (disks) or 3 (spheres), got 4");
-    c = base(); c.dimension = 2; c.kernel = GDSMC_KERNEL_HARD_SPHERES;
-    c.scheme = GDSMC_SCHEME_TIME_STEPPED; c.step_factor = 0.01;
+    c = base(); c.dimension = 2; c.drive = GDSMC_DRIVE_HOST_MEDIUM;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
-           "config.scheme must be no-splitting, Euler or Strang for disks");
+           "config.dimension of 2 (disks) takes only no drive, white noise or the Gaussian thermostat");
     c = base(); c.restitution = 1.5;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
     c = base(); c.restitution = 0.0;
@@ -297,8 +296,12 @@ static void rough_particles(void) {
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.inertia must lie in (0, 1] for disks");
     c.dimension = 3;
     c.inertia = 0.4;
+    /* The thermostat acts on translation; rotational noise beside it is refused. */
     c.drive = GDSMC_DRIVE_GAUSSIAN;
-    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.rough takes only no drive or white noise");
+    c.rotation_noise = 0.5;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.rotation_noise takes only no drive or white noise on translation beside it");
+    c.rotation_noise = 0.0;
     c.drive = GDSMC_DRIVE_WHITE_NOISE;
 
     size_t smooth = 0, bytes = 0, align = 0;

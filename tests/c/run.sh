@@ -18,6 +18,9 @@ else
 fi
 
 cargo build --release -p gdsmc-ffi
+# A fresh work directory each run: the command refuses to replace an output set that holds
+# files it did not write (the C results written beside it by a previous run).
+rm -rf target/c
 mkdir -p target/c
 LINK="target/release/libgdsmc.a -lm -lpthread -ldl"
 cc -std=c11 -Wall -Wextra -Werror examples/c/grw_example3.c -Iinclude $LINK -o target/c/grw_example3
