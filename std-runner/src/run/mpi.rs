@@ -67,8 +67,8 @@ impl World {
 /// Runs this rank's shard of `scene` (`header_of(shard, range)` gives its journal header) and,
 /// on rank 0, merges every rank's and hands the result to `write`; the journals are removed
 /// when `write` succeeds. Before any work rank 0 asks `check_place` whether the output place
-/// may be written (every rank hears the answer). Returns the merged run on rank 0, `None` on
-/// the others.
+/// may be written (every rank hears the answer: rank 0 returns the refusal, the others
+/// `None`). Returns the merged run on rank 0, `None` on the others.
 #[allow(clippy::too_many_arguments)]
 pub fn run(
     w: &World,
@@ -103,10 +103,10 @@ pub fn run(
     w.world.process_at_rank(0).broadcast_into(&mut place_ok);
     place?;
     if place_ok == 0 {
-        return Err(Error::Refused {
-            path: dir.to_path_buf(),
-            message: "refused by rank 0 (its message says why)".into(),
-        });
+        // Rank 0 reports the refusal and exits non-zero; the others leave quietly. Had they
+        // exited non-zero too, mpirun could abort the job (killing rank 0) before rank 0's
+        // message was out: a race seen in CI, where only "refused by rank 0" was printed.
+        return Ok(None);
     }
     let range = shard::range(r, p, scene.ensembles);
     let path = journal::beside(dir, Some((r, p)));
