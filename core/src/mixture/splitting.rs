@@ -7,7 +7,7 @@
 //! rough mixture and a mixture of disks split as a smooth mixture of spheres does.
 //!
 //! Observation times must lie on the grid `t0 + k dt`. Each step synchronizes the particles
-//! twice (after the collisions and after the kick, O(n) each, as the kick itself is).
+//! once after each collision stage and once after the kick (O(n) each, as the kick itself is).
 
 use super::map::PairLaw;
 use super::nosplit::{MixtureNoSplitting, PairPhysics, StartError, kick_species, tell_drives};
@@ -107,25 +107,30 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureSplitting<K, D, L, G> 
     ) -> Result<MixtureObservables, EngineError> {
         let target = grid_target(self.t0, self.dt, self.time(), t_end)?;
         self.observations += 1;
-        let mut obs = self.collide.resync(p)?;
+        if self.steps == target {
+            // No step to take: the particles are as the last call (or a resync) left them.
+            return self.collide.resync(p);
+        }
+        let mut obs = None;
         while self.steps < target {
-            obs = match self.order {
+            // Every collision stage ends synchronized: its observables serve the kick.
+            obs = Some(match self.order {
                 SplittingOrder::Euler => {
                     let t = self.collide.time() + self.dt;
-                    self.collide.advance_to(p, t, rng)?;
-                    self.kick(p, rng)?
+                    let synced = self.collide.advance_to(p, t, rng)?;
+                    self.kick(p, &synced, rng)?
                 }
                 SplittingOrder::Strang => {
                     let t = self.collide.time() + 0.5 * self.dt;
-                    self.collide.advance_to(p, t, rng)?;
-                    self.kick(p, rng)?;
+                    let synced = self.collide.advance_to(p, t, rng)?;
+                    self.kick(p, &synced, rng)?;
                     let t = self.collide.time() + 0.5 * self.dt;
                     self.collide.advance_to(p, t, rng)?
                 }
-            };
+            });
             self.steps += 1;
         }
-        Ok(obs)
+        obs.ok_or(EngineError::Invariant("a step was taken"))
     }
 
     /// Each species' observables of the synchronized particles `p`.
@@ -140,20 +145,21 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureSplitting<K, D, L, G> 
         Ok(obs)
     }
 
-    /// The kicking step: every particle moved by its species' drive over `dt` (the drives
-    /// told the flow velocity of the synchronized particles first), then the collision loop
-    /// synchronized on the new velocities.
+    /// The kicking step after a collision stage that left the particles synchronized with
+    /// observables `synced`: every particle moved by its species' drive over `dt` (the drives
+    /// told the flow velocity first), then the collision loop synchronized on the new
+    /// velocities.
     fn kick<R: Rng + ?Sized>(
         &mut self,
         p: &mut Particles<'_>,
+        synced: &MixtureObservables,
         rng: &mut R,
     ) -> Result<MixtureObservables, EngineError> {
         if !D::ACTS {
-            return self.collide.resync(p);
+            return Ok(*synced);
         }
         let now = self.collide.time();
-        let obs = self.collide.resync(p)?;
-        tell_drives(&mut self.drives, &obs);
+        tell_drives(&mut self.drives, synced);
         p.reset_kick_times(now - self.dt);
         let sp = *self.collide.species();
         let mut background = 0;
