@@ -16,6 +16,10 @@ pub trait Restitution: Copy + core::fmt::Debug {
     const CAN_LEAVE_UNIT_INTERVAL: bool;
     /// The coefficient (before clamping).
     fn coefficient(&self, u: Vec3, e: Vec3) -> Real;
+    /// The coefficient of a collision whose normal impact speed `|g . n|` is `speed` (before
+    /// clamping; BRS (9) itself): the rough particles' map, which draws the impact direction `n`
+    /// and so knows `g . n` without BRS (10).
+    fn at_normal_speed(&self, speed: Real) -> Real;
 }
 
 /// The impact-speed law BRS (9)-(10): `1 - e = 2 beta_0 |g . n|^delta`, with the normal impact
@@ -73,12 +77,18 @@ impl Restitution for ImpactSpeed {
     const CAN_LEAVE_UNIT_INTERVAL: bool = true;
     #[inline]
     fn coefficient(&self, u: Vec3, e: Vec3) -> Real {
+        self.at_normal_speed(Self::normal_speed(u, e))
+    }
+
+    /// BRS (9): `1 - 2 beta_0 speed^delta`.
+    #[inline]
+    fn at_normal_speed(&self, speed: Real) -> Real {
         // Found by fuzzing: beta0 = 0 with an impact speed whose power overflows gave
         // 0 * inf = NaN (then clamped to e = 0) where the law says e = 1.
         if self.beta0 == 0.0 {
             return 1.0;
         }
-        1.0 - 2.0 * self.beta0 * powf(Self::normal_speed(u, e), self.delta)
+        1.0 - 2.0 * self.beta0 * powf(speed, self.delta)
     }
 }
 
@@ -125,6 +135,10 @@ impl Restitution for Constant {
     const CAN_LEAVE_UNIT_INTERVAL: bool = false;
     #[inline(always)]
     fn coefficient(&self, _u: Vec3, _e: Vec3) -> Real {
+        self.0
+    }
+    #[inline(always)]
+    fn at_normal_speed(&self, _speed: Real) -> Real {
         self.0
     }
 }

@@ -98,11 +98,21 @@ fn what_a_rough_gas_cannot_take_is_refused_by_key() {
         e.contains("`observe.collisional_pairs`") && e.contains("[rotation]"),
         "{e}"
     );
-    let e = err(&ROUGH.replace(
-        "restitution = 0.9",
-        "impact_speed_law = { beta0 = 0.1, delta = 0.2 }",
-    ));
-    assert!(e.contains("must be constant for rough particles"), "{e}");
+}
+
+#[test]
+fn rough_particles_take_the_impact_speed_law() {
+    let s = parse_with(
+        Path::new("r.toml"),
+        &ROUGH.replace(
+            "restitution = 0.9",
+            "impact_speed_law = { beta0 = 0.1, delta = 0.2 }",
+        ),
+        &[],
+    )
+    .unwrap();
+    assert!(s.model().rotates());
+    assert!(s.physics().restitution.constant().is_none());
 }
 
 #[test]

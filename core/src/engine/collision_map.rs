@@ -79,7 +79,20 @@ impl<A: Restitution> CollisionMap for A {
 /// [`Counts::clamped`] when it had to be).
 #[inline(always)]
 pub fn clamped_coefficient<A: Restitution>(a: &A, u: Vec3, e: Vec3, counts: &mut Counts) -> Real {
-    let alpha = a.coefficient(u, e);
+    clamped::<A>(a.coefficient(u, e), counts)
+}
+
+/// The restitution coefficient of a law at the normal impact speed `|g . n| = speed`
+/// ([`Restitution::at_normal_speed`]), clamped to [0, 1] and counted as
+/// [`clamped_coefficient`] does.
+#[inline(always)]
+pub fn clamped_at_normal_speed<A: Restitution>(a: &A, speed: Real, counts: &mut Counts) -> Real {
+    clamped::<A>(a.at_normal_speed(speed), counts)
+}
+
+/// `alpha`, a coefficient of law `A`, clamped to [0, 1] and counted when it had to be.
+#[inline(always)]
+fn clamped<A: Restitution>(alpha: Real, counts: &mut Counts) -> Real {
     if A::CAN_LEAVE_UNIT_INTERVAL && !(0.0..=1.0).contains(&alpha) {
         counts.clamped += 1;
         return if alpha > 1.0 { 1.0 } else { 0.0 };

@@ -11,8 +11,8 @@
 
 use super::engine::{
     ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByMixtureLaw, ByMixtureScheme,
-    ByRoughDrive, ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture, Rough,
-    RoughMixture, Smooth, SmoothDisks,
+    ByRoughDrive, ByRoughLaw, ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture,
+    PairModel, Rough, RoughMixture, RoughPairs, Smooth, SmoothDisks,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
@@ -29,7 +29,7 @@ use crate::math::Real;
 use crate::mixture::{MixtureNoSplitting, MixtureSplitting, PairLaw, PairPhysics, StartError};
 use crate::moments::Observables;
 use crate::particles::{Particle, Particles, Spin};
-use crate::restitution::Restitution;
+use crate::restitution::{Constant, ImpactSpeed, Restitution};
 use crate::rng::Xoshiro256PlusPlus;
 use crate::vec3::Vec3;
 use core::marker::PhantomData;
@@ -447,16 +447,33 @@ fn mixture_law<K: Kernel, D: Drive, G: Geometry>(
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Begun<ByMixtureLaw<K, D, G>> {
+    by_pair_law::<K, D, G, _>(mx, k, m, &mx.laws, |_, a| a, drives, p, t0)
+}
+
+/// The law level of every mixture (particle model `P`): each pair type's constant law in
+/// `laws`, or BRS's impact-speed law for every pair, `with_law` putting it into a pair's law
+/// (whose constant, 1, is then unused).
+#[allow(clippy::too_many_arguments)]
+fn by_pair_law<K: Kernel, D: Drive, G: Geometry, P: PairModel>(
+    mx: &MixtureModel,
+    k: K,
+    m: &Model,
+    laws: &[P::Of<Constant>; MAX_PAIRS],
+    with_law: impl Fn(&P::Of<Constant>, ImpactSpeed) -> P::Of<ImpactSpeed>,
+    drives: &[D; MAX_SPECIES],
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Begun<ByMixtureLaw<K, D, G, P>> {
     match m.law {
         LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
-            let physics = pair_table(mx, k, &[a; MAX_PAIRS])?;
+            let physics = pair_table(mx, k, &laws.map(|l| with_law(&l, a)))?;
             wrap(
                 start_mixture::<K, _, _, G>(mx, m.scheme, &physics, drives, p, t0),
                 ByMixtureLaw::ImpactSpeed,
             )
         }),
         LawModel::Constant(_) => {
-            let physics = pair_table(mx, k, &mx.laws)?;
+            let physics = pair_table(mx, k, laws)?;
             wrap(
                 start_mixture::<K, _, _, G>(mx, m.scheme, &physics, drives, p, t0),
                 ByMixtureLaw::Constant,
@@ -476,16 +493,15 @@ fn rough_mixture<K: Kernel, G: Geometry>(
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
-    let scheme = m.scheme;
-    let physics = pair_table(mx, k, &rot.laws)?;
+    let laws = &rot.laws;
     if let DriveModel::Gaussian(g) = m.drive {
         // Validated: no rotational noise beside the thermostat.
         return built!(
             feature = "gaussian-thermostat",
             "gaussian-thermostat",
             wrap(
-                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[g; MAX_SPECIES], p, t0),
-                ByRoughMixtureDrive::Gaussian,
+                rough_pairs::<K, _, G>(mx, laws, m, k, &[g; MAX_SPECIES], p, t0),
+                ByRoughMixtureDrive::Gaussian
             )
         );
     }
@@ -493,17 +509,30 @@ fn rough_mixture<K: Kernel, G: Geometry>(
         Some(noises) => built!(feature = "white-noise", "white-noise", {
             let noises = noises.map(|w| w.in_dim::<G>());
             wrap(
-                start_mixture::<K, _, _, G>(mx, scheme, &physics, &noises, p, t0),
+                rough_pairs::<K, _, G>(mx, laws, m, k, &noises, p, t0),
                 ByRoughMixtureDrive::Noise,
             )
         }),
         None => built!(feature = "cooling", "cooling", {
             wrap(
-                start_mixture::<K, _, _, G>(mx, scheme, &physics, &[NoDrive; MAX_SPECIES], p, t0),
+                rough_pairs::<K, _, G>(mx, laws, m, k, &[NoDrive; MAX_SPECIES], p, t0),
                 ByRoughMixtureDrive::None,
             )
         }),
     }
+}
+
+/// A rough mixture's law level: [`by_pair_law`] over the pairs' rough laws `laws`.
+fn rough_pairs<K: Kernel, D: Drive, G: Geometry>(
+    mx: &MixtureModel,
+    laws: &[crate::rough::RoughPairLaw; MAX_PAIRS],
+    m: &Model,
+    k: K,
+    drives: &[D; MAX_SPECIES],
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Begun<ByMixtureLaw<K, D, G, RoughPairs>> {
+    by_pair_law::<K, D, G, RoughPairs>(mx, k, m, laws, |l, a| l.with_law(a), drives, p, t0)
 }
 
 /// The rough loop of kernel `k` in dimension `G`, by drive.
@@ -515,47 +544,70 @@ fn rough<K: Kernel, G: Geometry>(
     p: &mut Particles<'_>,
     t0: Real,
 ) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
-    let scheme = m.scheme;
     // Validated: white noise (on translation or rotation) is `r.noise`; the other drives
     // act on translation alone.
     match (r.noise, m.drive) {
         (Some(d), _) => built!(feature = "white-noise", "white-noise", {
             wrap(
-                by_split(scheme, k, d.in_dim::<G>(), r.map, p, t0),
+                rough_law::<K, _, G>(m, k, d.in_dim::<G>(), r, p, t0),
                 ByRoughDrive::Noise,
             )
         }),
         (None, DriveModel::Gaussian(g)) => built!(
             feature = "gaussian-thermostat",
             "gaussian-thermostat",
-            wrap(by_split(scheme, k, g, r.map, p, t0), ByRoughDrive::Gaussian)
+            wrap(
+                rough_law::<K, _, G>(m, k, g, r, p, t0),
+                ByRoughDrive::Gaussian
+            )
         ),
         (None, DriveModel::ConstantForce(f)) => built!(
             feature = "constant-force",
             "constant-force",
             wrap(
-                by_split(scheme, k, f, r.map, p, t0),
+                rough_law::<K, _, G>(m, k, f, r, p, t0),
                 ByRoughDrive::ConstantForce
             )
         ),
         (None, DriveModel::HostMaxwell(h)) => built!(feature = "host-medium", "host-medium", {
             wrap(
-                by_split(scheme, k, h, r.map, p, t0),
+                rough_law::<K, _, G>(m, k, h, r, p, t0),
                 ByRoughDrive::HostMaxwell,
             )
         }),
         (None, DriveModel::HostHardSpheres(h)) => {
             built!(feature = "host-medium", "host-medium", {
                 wrap(
-                    by_split(scheme, k, h, r.map, p, t0),
+                    rough_law::<K, _, G>(m, k, h, r, p, t0),
                     ByRoughDrive::HostHardSpheres,
                 )
             })
         }
         _ => built!(feature = "cooling", "cooling", {
             wrap(
-                by_split(scheme, k, NoDrive, r.map, p, t0),
+                rough_law::<K, _, G>(m, k, NoDrive, r, p, t0),
                 ByRoughDrive::None,
+            )
+        }),
+    }
+}
+
+/// A rough gas's law level: the rough map of a constant `alpha`, or of BRS's impact-speed law
+/// (the model's `law`; the map's own constant, 1, is then unused).
+fn rough_law<K: Kernel, D: Drive, G: Geometry>(
+    m: &Model,
+    k: K,
+    d: D,
+    r: &RoughModel,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Begun<ByRoughLaw<K, D, G>> {
+    match m.law {
+        LawModel::Constant(_) => wrap(by_split(m.scheme, k, d, r.map, p, t0), ByRoughLaw::Constant),
+        LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
+            wrap(
+                by_split(m.scheme, k, d, r.map.with_law(a), p, t0),
+                ByRoughLaw::ImpactSpeed,
             )
         }),
     }

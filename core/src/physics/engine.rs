@@ -192,13 +192,13 @@ impl<G: Geometry> Family for RoughMixture<G> {
 #[derive(Clone, Debug)]
 pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
     /// No drive: the mixture cools (feature `cooling`).
-    None(Built<ByMixtureScheme<K, NoDrive, RoughPairLaw, G>, COOLING>),
+    None(Built<ByMixtureLaw<K, NoDrive, G, RoughPairs>, COOLING>),
     /// White noise on translation and rotation, each species its own strengths (feature
     /// `white-noise`).
-    Noise(Built<ByMixtureScheme<K, RoughNoise<G>, RoughPairLaw, G>, WHITE_NOISE>),
+    Noise(Built<ByMixtureLaw<K, RoughNoise<G>, G, RoughPairs>, WHITE_NOISE>),
     /// The Gaussian thermostat (MS (12)) on every species' translation, about the flow
     /// velocity (feature `gaussian-thermostat`).
-    Gaussian(Built<ByMixtureScheme<K, GaussianThermostat, RoughPairLaw, G>, GAUSSIAN>),
+    Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G, RoughPairs>, GAUSSIAN>),
 }
 
 /// Smooth disks by drive, for kernel `K`.
@@ -212,23 +212,34 @@ pub enum ByDiskDrive<K: Kernel> {
     Gaussian(Built<ByLaw<K, GaussianThermostat, Disks>, GAUSSIAN>),
 }
 
-/// A rough gas's engine by drive (the rough map), for kernel `K` and dimension `G`.
+/// A rough gas's engine by drive, for kernel `K` and dimension `G`.
 #[derive(Clone, Debug)]
 pub enum ByRoughDrive<K: Kernel, G: Geometry = Spheres> {
     /// No drive: the gas cools (feature `cooling`).
-    None(Built<BySplit<K, NoDrive, RoughMap, G>, COOLING>),
+    None(Built<ByRoughLaw<K, NoDrive, G>, COOLING>),
     /// White noise on translation and rotation (feature `white-noise`).
-    Noise(Built<BySplit<K, RoughNoise<G>, RoughMap, G>, WHITE_NOISE>),
+    Noise(Built<ByRoughLaw<K, RoughNoise<G>, G>, WHITE_NOISE>),
     /// The Gaussian thermostat on translation (MS (12); feature `gaussian-thermostat`).
-    Gaussian(Built<BySplit<K, GaussianThermostat, RoughMap, G>, GAUSSIAN>),
+    Gaussian(Built<ByRoughLaw<K, GaussianThermostat, G>, GAUSSIAN>),
     /// The constant force on translation (MS (14); a splitting scheme; feature
     /// `constant-force`).
-    ConstantForce(Built<BySplit<K, ConstantForce, RoughMap, G>, CONSTANT_FORCE>),
+    ConstantForce(Built<ByRoughLaw<K, ConstantForce, G>, CONSTANT_FORCE>),
     /// A host medium of Maxwell background kernel, its encounters smooth (BRS (2), (11);
     /// spheres; feature `host-medium`).
-    HostMaxwell(Built<BySplit<K, HostMedium<MaxwellBackground>, RoughMap, G>, HOST_MEDIUM>),
+    HostMaxwell(Built<ByRoughLaw<K, HostMedium<MaxwellBackground>, G>, HOST_MEDIUM>),
     /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
-    HostHardSpheres(Built<BySplit<K, HostMedium<HardSphereBackground>, RoughMap, G>, HOST_MEDIUM>),
+    HostHardSpheres(Built<ByRoughLaw<K, HostMedium<HardSphereBackground>, G>, HOST_MEDIUM>),
+}
+
+/// A rough gas by normal restitution law (the rough map of it), for kernel `K`, drive `D`
+/// and dimension `G`.
+#[derive(Clone, Debug)]
+pub enum ByRoughLaw<K: Kernel, D: Drive, G: Geometry> {
+    /// A constant `alpha`.
+    Constant(BySplit<K, D, RoughMap<Constant>, G>),
+    /// BRS's impact-speed law (9) at the normal impact speed `|g . n|` (feature
+    /// `impact-speed`).
+    ImpactSpeed(Built<BySplit<K, D, RoughMap<ImpactSpeed>, G>, IMPACT_SPEED>),
 }
 
 /// By scheme, the exact loop or the splittings, for every family but the mixtures (smooth
@@ -254,13 +265,36 @@ pub enum ByMixtureDrive<K: Kernel, G: WhiteNoiseIn> {
     Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G>, GAUSSIAN>),
 }
 
-/// A smooth mixture by restitution law, for kernel `K`, drive `D` and dimension `G`.
+/// The particle model of a mixture's pair types over a restitution law `A`: smooth particles
+/// collide by the law itself ([`SmoothPairs`]), rough ones by [`RoughPairLaw`] of it
+/// ([`RoughPairs`]). The law level ([`ByMixtureLaw`]) is written once for both.
+pub trait PairModel: Clone + core::fmt::Debug {
+    /// The pair law of particles of this model with normal restitution law `A`.
+    type Of<A: Restitution>: PairLaw;
+}
+
+/// Smooth particles: the restitution law is the pair law.
+#[derive(Clone, Copy, Debug)]
+pub struct SmoothPairs;
+impl PairModel for SmoothPairs {
+    type Of<A: Restitution> = A;
+}
+
+/// Rough particles: the restitution law is the normal part of [`RoughPairLaw`].
+#[derive(Clone, Copy, Debug)]
+pub struct RoughPairs;
+impl PairModel for RoughPairs {
+    type Of<A: Restitution> = RoughPairLaw<A>;
+}
+
+/// A mixture by restitution law, for kernel `K`, drive `D`, dimension `G` and particle model
+/// `P` (smooth or rough pairs).
 #[derive(Clone, Debug)]
-pub enum ByMixtureLaw<K: Kernel, D: Drive, G: Geometry> {
+pub enum ByMixtureLaw<K: Kernel, D: Drive, G: Geometry, P: PairModel = SmoothPairs> {
     /// A constant coefficient per pair type.
-    Constant(ByMixtureScheme<K, D, Constant, G>),
+    Constant(ByMixtureScheme<K, D, P::Of<Constant>, G>),
     /// BRS's impact-speed law (9)-(10) for every pair (feature `impact-speed`).
-    ImpactSpeed(Built<ByMixtureScheme<K, D, ImpactSpeed, G>, IMPACT_SPEED>),
+    ImpactSpeed(Built<ByMixtureScheme<K, D, P::Of<ImpactSpeed>, G>, IMPACT_SPEED>),
 }
 
 /// A mixture by scheme: the exact loop, or RW's splittings of it (the same collision
@@ -371,7 +405,8 @@ forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, Co
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian);
-forward!(ByMixtureLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
+forward!(ByMixtureLaw<K, D, G, P>, [K: Kernel, D: Drive, G: Geometry, P: PairModel], Constant, ImpactSpeed);
+forward!(ByRoughLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);

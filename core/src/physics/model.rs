@@ -87,7 +87,8 @@ impl Model {
     }
 
     /// The collision map of a rough gas of one species (`None`: smooth particles or a mixture;
-    /// [`Model::rotates`] tells whether spins are needed).
+    /// [`Model::rotates`] tells whether spins are needed). Under the impact-speed law its
+    /// constant alpha is 1 and unused (the engine puts the law into the map).
     pub fn rough_map(&self) -> Option<&crate::rough::RoughMap> {
         self.rough.as_ref().map(|r| &r.map)
     }
@@ -122,7 +123,8 @@ impl Model {
     }
 
     /// A rough mixture's law of each pair type (alpha, beta, the partners' kappa), in
-    /// [`crate::mixture::pair_index`] order (`None`: not a rough mixture).
+    /// [`crate::mixture::pair_index`] order (`None`: not a rough mixture). Under the
+    /// impact-speed law each constant alpha is 1 and unused (the engine puts the law in).
     pub fn rough_pair_laws(&self) -> Option<&[crate::rough::RoughPairLaw]> {
         let m = self.mixture()?;
         Some(&m.rotation.as_ref()?.laws[..m.species.pair_types()])

@@ -15,7 +15,8 @@ use crate::vec3::Vec3;
 /// A rough gas whose every rule holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoughModel {
-    /// The collision map (alpha, beta, kappa).
+    /// The collision map (alpha, beta, kappa); with the impact-speed law (the model's law,
+    /// which the engine puts into this map) its constant alpha is 1 and unused.
     pub map: RoughMap,
     /// The start distribution of the rim velocities: a Maxwellian of temperature
     /// `T_rot / kappa` per unit mass, so that `kappa <|w|^2>/3 = T_rot` (disks keep its `z`
@@ -48,7 +49,8 @@ fn at_least_zero(param: Param, x: Real) -> Result<Real, PhysicsError> {
 /// noise.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MixtureRotation {
-    /// The law of each pair type (alpha, beta, the partners' kappa).
+    /// The law of each pair type (alpha, beta, the partners' kappa); with the impact-speed law
+    /// (the model's law, which the engine puts into these) each constant alpha is 1 and unused.
     pub laws: [RoughPairLaw; MAX_PAIRS],
     /// Each species' start distribution of the rim velocities: a Maxwellian of mass `m_s`
     /// and temperature `T_rot,s / kappa_s`, so that `m_s kappa_s <|w|^2>/d_rot = T_rot,s`.
@@ -209,14 +211,11 @@ pub(super) fn rotation(
             ),
         );
     }
+    // BRS's impact-speed law (9) gives alpha at each collision's normal impact speed (the
+    // dispatch puts the model's `law` into the map); the map's own constant is then 1, unused.
     let alpha = match law {
         LawModel::Constant(a) => a.coefficient(Vec3::ZERO, Vec3::ZERO),
-        LawModel::ImpactSpeed(_) => {
-            return refuse(
-                Param::Restitution,
-                Problem::DoesNotFit("must be constant for rough particles"),
-            );
-        }
+        LawModel::ImpactSpeed(_) => 1.0,
     };
     let outside = |param, value: Real, range| PhysicsError {
         param,

@@ -212,12 +212,6 @@ pub(super) fn mixture(
         LawModel::Constant(a) => a,
         // BRS (9)-(10) is one law of the normal impact speed for every pair (the model's
         // `law`); the pairs' constants below are then 1 and unused.
-        LawModel::ImpactSpeed(_) if physics.rotation.is_some() => {
-            return refuse(
-                Param::Restitution,
-                Problem::DoesNotFit("must be constant for rough particles"),
-            );
-        }
         LawModel::ImpactSpeed(_) if !physics.pair_restitution.is_empty() => {
             return refuse(
                 Param::PairRestitution(0, 0),

@@ -40,9 +40,12 @@
 //! ```
 
 use super::RoughObservables;
+use crate::engine::Counts;
+use crate::engine::collision_map::clamped_at_normal_speed;
 use crate::geometry::{DimensionChoice, Geometry};
-use crate::math::{Real, sqrt};
+use crate::math::{Real, abs, sqrt};
 use crate::particles::Particles;
+use crate::restitution::{Constant, Restitution};
 use crate::rng::Rng;
 use crate::sample::unit_sphere;
 use crate::vec3::Vec3;
@@ -81,20 +84,22 @@ impl core::fmt::Display for RoughError {
 
 impl core::error::Error for RoughError {}
 
-/// The collision map of rough spheres with coefficients `alpha`, `beta`, `kappa`.
+/// The collision map of rough spheres with normal restitution law `A` (a constant `alpha`, or
+/// BRS (9) at the normal impact speed `|g . n|`), tangential restitution `beta` and inertia
+/// `kappa`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RoughMap {
-    /// `alpha`, as the smooth law (the `beta = -1` collision's; one rule for its range).
-    smooth: crate::restitution::Constant,
+pub struct RoughMap<A = Constant> {
+    /// The normal restitution as the smooth law (the `beta = -1` collision's; one rule for its
+    /// range).
+    law: A,
     beta: Real,
     kappa: Real,
-    eta_n: Real,
     eta_t: Real,
     /// `eta_t / kappa = (1 + beta) / (2 (1 + kappa))`.
     eta_w: Real,
 }
 
-impl RoughMap {
+impl RoughMap<Constant> {
     /// The map for `0 < alpha <= 1`, `-1 <= beta <= 1`, `0 < kappa <= 2/3`.
     pub fn new(alpha: Real, beta: Real, kappa: Real) -> Result<Self, RoughError> {
         Self::checked(alpha, beta, kappa, 2.0 / 3.0, RoughError::Kappa)
@@ -114,7 +119,7 @@ impl RoughMap {
         bad_kappa: RoughError,
     ) -> Result<Self, RoughError> {
         // The restitution's one rule.
-        let smooth = crate::restitution::Constant::new(alpha).map_err(|_| RoughError::Alpha)?;
+        let law = Constant::new(alpha).map_err(|_| RoughError::Alpha)?;
         if !(-1.0..=1.0).contains(&beta) {
             return Err(RoughError::Beta);
         }
@@ -122,10 +127,9 @@ impl RoughMap {
             return Err(bad_kappa);
         }
         Ok(RoughMap {
-            smooth,
+            law,
             beta,
             kappa,
-            eta_n: 0.5 * (1.0 + alpha),
             eta_t: 0.5 * (1.0 + beta) * kappa / (1.0 + kappa),
             eta_w: 0.5 * (1.0 + beta) / (1.0 + kappa),
         })
@@ -133,12 +137,38 @@ impl RoughMap {
 
     /// The normal restitution `alpha`.
     pub fn alpha(&self) -> Real {
-        self.smooth.alpha()
+        self.law.alpha()
     }
 
     /// `alpha` as the smooth restitution law.
-    pub fn smooth(&self) -> crate::restitution::Constant {
-        self.smooth
+    pub fn smooth(&self) -> Constant {
+        self.law
+    }
+
+    /// The contact points' relative velocity `g = v1 - v2 + (w1 + w2) x n`.
+    #[inline(always)]
+    pub fn contact_velocity(v1: Vec3, w1: Vec3, v2: Vec3, w2: Vec3, n: Vec3) -> Vec3 {
+        v1 - v2 + (w1 + w2).cross(n)
+    }
+}
+
+impl<A: Restitution> RoughMap<A> {
+    /// The same map with the normal restitution law `law` in place of this one's (`beta` and
+    /// `kappa` kept, with their rules already checked; a law's own rules are its constructor's).
+    #[must_use]
+    pub fn with_law<B: Restitution>(&self, law: B) -> RoughMap<B> {
+        RoughMap {
+            law,
+            beta: self.beta,
+            kappa: self.kappa,
+            eta_t: self.eta_t,
+            eta_w: self.eta_w,
+        }
+    }
+
+    /// The normal restitution law.
+    pub fn law(&self) -> A {
+        self.law
     }
 
     /// The spin-transfer coefficients `(eta_t, eta_t / kappa)` (module docs).
@@ -156,14 +186,9 @@ impl RoughMap {
         self.kappa
     }
 
-    /// The contact points' relative velocity `g = v1 - v2 + (w1 + w2) x n`.
-    #[inline(always)]
-    pub fn contact_velocity(v1: Vec3, w1: Vec3, v2: Vec3, w2: Vec3, n: Vec3) -> Vec3 {
-        v1 - v2 + (w1 + w2).cross(n)
-    }
-
     /// Post-collisional `(v1', w1', v2', w2')` for the unit vector `n` from 1 to 2 (module
-    /// docs). With `beta = -1` the rim velocities are returned unchanged, bit for bit.
+    /// docs); `alpha` is the law's at `|g . n|`, clamped to [0, 1]. With `beta = -1` the rim
+    /// velocities are returned unchanged, bit for bit.
     #[inline(always)]
     pub fn collide(
         &self,
@@ -173,12 +198,30 @@ impl RoughMap {
         w2: Vec3,
         n: Vec3,
     ) -> (Vec3, Vec3, Vec3, Vec3) {
+        self.collide_counting(v1, w1, v2, w2, n, &mut Counts::default())
+    }
+
+    /// As [`RoughMap::collide`], counting a clamped coefficient in `counts`
+    /// ([`Counts::clamped`]).
+    #[inline(always)]
+    pub fn collide_counting(
+        &self,
+        v1: Vec3,
+        w1: Vec3,
+        v2: Vec3,
+        w2: Vec3,
+        n: Vec3,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3, Vec3, Vec3) {
         // Equal partners share one impulse: computed once (the general [`impulse`] gives the
         // same bits with two, 1.4% more instructions per collision on the Cortex-M4F).
-        let g = Self::contact_velocity(v1, w1, v2, w2, n);
-        let gn = g.dot(n) * n;
+        let g = RoughMap::contact_velocity(v1, w1, v2, w2, n);
+        let c = g.dot(n);
+        let gn = c * n;
         let gt = g - gn;
-        let dv = -(self.eta_n * gn) - self.eta_t * gt;
+        // The normal part of `g` is that of `v1 - v2`: the spins add only a tangential one.
+        let eta_n = 0.5 * (1.0 + clamped_at_normal_speed(&self.law, abs(c), counts));
+        let dv = -(eta_n * gn) - self.eta_t * gt;
         if self.eta_t == 0.0 {
             return (v1 + dv, w1, v2 - dv, w2);
         }
@@ -187,36 +230,37 @@ impl RoughMap {
     }
 
     /// The energy change `-(1/4) [(1 - alpha^2) |g_n|^2 + (1 - beta^2) kappa/(1 + kappa)
-    /// |g_t|^2]` of `sum (|v|^2 + kappa |w|^2)/2` per unit mass (module docs).
+    /// |g_t|^2]` of `sum (|v|^2 + kappa |w|^2)/2` per unit mass (module docs), `alpha` the
+    /// law's at `|g . n|`, clamped.
     pub fn energy_change(&self, g: Vec3, n: Vec3) -> Real {
-        let gn2 = {
-            let c = g.dot(n);
-            c * c
-        };
+        let c = g.dot(n);
+        let gn2 = c * c;
+        let alpha = clamped_at_normal_speed(&self.law, abs(c), &mut Counts::default());
         let gt2 = (g.norm2() - gn2).max(0.0);
         -0.25
-            * ((1.0 - self.alpha() * self.alpha()) * gn2
+            * ((1.0 - alpha * alpha) * gn2
                 + (1.0 - self.beta * self.beta) * self.kappa / (1.0 + self.kappa) * gt2)
     }
 }
 
-/// The collision of two rough particles with the coefficients `[(a_1, a_2), (t_1, t_2),
-/// (c_1, c_2)]` of each partner's normal, tangential and spin change: `dv1 = -a_1 g_n -
+/// The collision of two rough particles with the coefficients `(a_1, a_2)` of each partner's
+/// normal change, given by `normal` from `g . n` (the normal restitution may depend on it), and
+/// `[(t_1, t_2), (c_1, c_2)]` of each partner's tangential and spin change: `dv1 = -a_1 g_n -
 /// t_1 g_t`, `dv2 = a_2 g_n + t_2 g_t`, `dw_i = -c_i n x g_t` (equal partners: this module's
 /// `eta_n`, `eta_t`, `eta_t / kappa`; unequal: [`super::pair`]). No spin change when both
 /// `c_i` are 0 (`beta = -1`), bit for bit.
 #[inline(always)]
 pub(crate) fn impulse(
-    v1: Vec3,
-    w1: Vec3,
-    v2: Vec3,
-    w2: Vec3,
+    (v1, w1, v2, w2): (Vec3, Vec3, Vec3, Vec3),
     n: Vec3,
-    [normal, tangential, spin]: [(Real, Real); 3],
+    normal: impl FnOnce(Real) -> (Real, Real),
+    [tangential, spin]: [(Real, Real); 2],
 ) -> (Vec3, Vec3, Vec3, Vec3) {
     let g = RoughMap::contact_velocity(v1, w1, v2, w2, n);
-    let gn = g.dot(n) * n;
+    let c = g.dot(n);
+    let gn = c * n;
     let gt = g - gn;
+    let normal = normal(c);
     let dv1 = -(normal.0 * gn) - tangential.0 * gt;
     let dv2 = normal.1 * gn + tangential.1 * gt;
     if spin.0 == 0.0 && spin.1 == 0.0 {
@@ -268,7 +312,7 @@ pub fn impact_direction<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
     }
 }
 
-impl crate::engine::CollisionMap for RoughMap {
+impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
     const SPINS: bool = true;
 
     /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughMap::collide`] on the
@@ -285,11 +329,11 @@ impl crate::engine::CollisionMap for RoughMap {
     ) -> (Vec3, Vec3) {
         if smooth_limit::<K, G>(self.eta_t) {
             return self
-                .smooth
+                .law
                 .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
         }
         let nrm = G::impact(vi - vj, rng);
-        let (a, wa, b, wb) = self.collide(vi, p.spin(i), vj, p.spin(j), nrm);
+        let (a, wa, b, wb) = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
         p.set_velocity(i, a);
         p.set_spin(i, wa);
         p.set_velocity(j, b);

@@ -39,28 +39,29 @@
 //! ```
 
 use super::map::{RoughError, RoughMap, impulse, smooth_limit};
+use crate::engine::collision_map::clamped_at_normal_speed;
 use crate::engine::{CollisionMap, Counts};
 use crate::geometry::Geometry;
 use crate::kernel::Kernel;
-use crate::math::Real;
+use crate::math::{Real, abs};
 use crate::mixture::{MassMap, PairLaw};
 use crate::particles::Particles;
-use crate::restitution::Constant;
+use crate::restitution::{Constant, Restitution};
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
-/// The rough particles of one pair type of a mixture: `alpha`, `beta` and the partners'
-/// `kappa` (each by [`RoughMap`]'s rules); the masses come from the species
-/// ([`PairLaw::between`]).
+/// The rough particles of one pair type of a mixture: the normal restitution law `A` (a
+/// constant `alpha`, or BRS (9) at `|g . n|`), `beta` and the partners' `kappa` (each by
+/// [`RoughMap`]'s rules); the masses come from the species ([`PairLaw::between`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RoughPairLaw {
-    /// The map of the first partner's inertia (holds `alpha`, `beta`, `kappa_1`).
-    first: RoughMap,
+pub struct RoughPairLaw<A = Constant> {
+    /// The map of the first partner's inertia (holds the law, `beta`, `kappa_1`).
+    first: RoughMap<A>,
     /// The second partner's `kappa`.
     kappa_2: Real,
 }
 
-impl RoughPairLaw {
+impl RoughPairLaw<Constant> {
     /// Spheres: `0 < alpha <= 1`, `-1 <= beta <= 1`, each `kappa` in `(0, 2/3]`.
     pub fn new(alpha: Real, beta: Real, kappa_1: Real, kappa_2: Real) -> Result<Self, RoughError> {
         RoughMap::new(alpha, beta, kappa_2)?;
@@ -88,6 +89,22 @@ impl RoughPairLaw {
     pub fn alpha(&self) -> Real {
         self.first.alpha()
     }
+}
+
+impl<A: Restitution> RoughPairLaw<A> {
+    /// The same pair type with the normal restitution law `law` in place of this one's.
+    #[must_use]
+    pub fn with_law<B: Restitution>(&self, law: B) -> RoughPairLaw<B> {
+        RoughPairLaw {
+            first: self.first.with_law(law),
+            kappa_2: self.kappa_2,
+        }
+    }
+
+    /// The normal restitution law.
+    pub fn law(&self) -> A {
+        self.first.law()
+    }
 
     /// The tangential restitution `beta`.
     pub fn beta(&self) -> Real {
@@ -100,18 +117,18 @@ impl RoughPairLaw {
     }
 }
 
-impl PairLaw for RoughPairLaw {
-    type Map = RoughPair;
+impl<A: Restitution> PairLaw for RoughPairLaw<A> {
+    type Map = RoughPair<A>;
 
     fn inertia(&self) -> (Real, Real) {
         RoughPairLaw::inertia(self)
     }
 
-    fn between(&self, m_1: Real, m_2: Real) -> RoughPair {
+    fn between(&self, m_1: Real, m_2: Real) -> RoughPair<A> {
         let beta = self.first.beta();
         let (k1, k2) = self.inertia();
         // The restitution's one rule was checked by `first`.
-        let smooth = self.first.smooth().between(m_1, m_2);
+        let smooth = self.first.law().between(m_1, m_2);
         if m_1 == m_2 && k1 == k2 {
             // The one-species map's own coefficients: the same bits.
             let (t, w) = self.first.spin_transfer();
@@ -135,24 +152,25 @@ impl PairLaw for RoughPairLaw {
 }
 
 /// The collision map of a rough pair type between given masses (module docs). Compact (nine
-/// numbers): a mixture's loop holds one per pair type, and the firmware's memory holds the
-/// loop.
+/// numbers with a constant law): a mixture's loop holds one per pair type, and the firmware's
+/// memory holds the loop.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RoughPair {
-    /// The smooth pair of these masses: `alpha` and `mu_s`, `mu_t` (the normal part, and the
+pub struct RoughPair<A = Constant> {
+    /// The smooth pair of these masses: the law and `mu_s`, `mu_t` (the normal part, and the
     /// whole collision at `beta = -1`, [`super::map`]'s smooth limit).
-    smooth: MassMap<Constant>,
+    smooth: MassMap<A>,
     /// `(kappa_1 c_1, kappa_2 c_2)`; equal partners: [`RoughMap`]'s `eta_t`.
     tangential: (Real, Real),
     /// `(c_1, c_2)`; equal partners: [`RoughMap`]'s `eta_t / kappa`.
     spin: (Real, Real),
 }
 
-impl RoughPair {
+impl<A: Restitution> RoughPair<A> {
     /// Post-collisional `(v1', w1', v2', w2')` for the unit vector `n` from 1 to 2 (module
-    /// docs). With `beta = -1` the rim velocities are returned unchanged, bit for bit; equal
-    /// partners get [`RoughMap::collide`]'s bits (the same coefficients, and
-    /// `(1 + alpha) mu = (1 + alpha)/2` exactly).
+    /// docs); `alpha` is the law's at `|g . n|`, clamped to [0, 1]. With `beta = -1` the rim
+    /// velocities are returned unchanged, bit for bit; equal partners get
+    /// [`RoughMap::collide`]'s bits (the same coefficients, and `(1 + alpha) mu = (1 + alpha)/2`
+    /// exactly).
     #[inline(always)]
     pub fn collide(
         &self,
@@ -162,14 +180,31 @@ impl RoughPair {
         w2: Vec3,
         n: Vec3,
     ) -> (Vec3, Vec3, Vec3, Vec3) {
-        let a = 1.0 + self.smooth.law.alpha();
+        self.collide_counting(v1, w1, v2, w2, n, &mut Counts::default())
+    }
+
+    /// As [`RoughPair::collide`], counting a clamped coefficient in `counts`.
+    #[inline(always)]
+    pub fn collide_counting(
+        &self,
+        v1: Vec3,
+        w1: Vec3,
+        v2: Vec3,
+        w2: Vec3,
+        n: Vec3,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3, Vec3, Vec3) {
         let m = &self.smooth.masses;
-        let normal = (a * m.mu_t, a * m.mu_s);
-        impulse(v1, w1, v2, w2, n, [normal, self.tangential, self.spin])
+        let law = &self.smooth.law;
+        let normal = |c: Real| {
+            let a = 1.0 + clamped_at_normal_speed(law, abs(c), counts);
+            (a * m.mu_t, a * m.mu_s)
+        };
+        impulse((v1, w1, v2, w2), n, normal, [self.tangential, self.spin])
     }
 }
 
-impl CollisionMap for RoughPair {
+impl<A: Restitution> CollisionMap for RoughPair<A> {
     const SPINS: bool = true;
 
     /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughPair::collide`]; with
@@ -191,7 +226,7 @@ impl CollisionMap for RoughPair {
                 .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
         }
         let nrm = G::impact(vi - vj, rng);
-        let (a, wa, b, wb) = self.collide(vi, p.spin(i), vj, p.spin(j), nrm);
+        let (a, wa, b, wb) = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
         p.set_velocity(i, a);
         p.set_spin(i, wa);
         p.set_velocity(j, b);

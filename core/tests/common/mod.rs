@@ -102,18 +102,24 @@ pub mod strategies {
 }
 
 /// A launched physics's trajectory as bits: `T_raw` at each of `times` and every final
-/// (physical) velocity, from stream `(seed, 0)`, with the collision count. Two physics that
-/// must be the same process to the last bit compare these.
-pub fn trajectory_bits(
+/// (physical) velocity, and rim velocity when the particles are rough, from stream `(seed,
+/// 0)`, with the counts. Two physics that must be the same process to the last bit compare
+/// these.
+pub fn trajectory(
     ph: &gdsmc_core::physics::Physics,
     seed: u64,
     times: &[f64],
-) -> (Vec<u64>, u64) {
+) -> (Vec<u64>, gdsmc_core::engine::Counts) {
     use gdsmc_core::engine::EventLoop;
-    use gdsmc_core::particles::{Particle, Particles};
+    use gdsmc_core::particles::{Particle, Particles, Spin};
     let model = ph.validate().unwrap();
     let mut buf = vec![Particle::default(); ph.n];
-    let mut p = Particles::new(&mut buf).unwrap();
+    let mut spins = vec![Spin::default(); ph.n];
+    let mut p = if model.rotates() {
+        Particles::with_spins(&mut buf, &mut spins).unwrap()
+    } else {
+        Particles::new(&mut buf).unwrap()
+    };
     let mut rng = gdsmc_core::rng::stream(seed, 0);
     let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
     let mut bits = Vec::new();
@@ -122,9 +128,39 @@ pub fn trajectory_bits(
         bits.push(o.t_raw.to_bits());
     }
     let frame = e.velocity_map();
-    bits.extend(p.as_slice().iter().flat_map(|q| {
-        let v = frame.physical(q.velocity());
-        [v.x, v.y, v.z].map(f64::to_bits)
-    }));
-    (bits, e.counts().collisions)
+    for i in 0..p.len() {
+        let v = frame.physical(p.velocity(i));
+        bits.extend([v.x, v.y, v.z].map(f64::to_bits));
+        if p.has_spins() {
+            let w = p.spin(i);
+            bits.extend([w.x, w.y, w.z].map(f64::to_bits));
+        }
+    }
+    (bits, e.counts())
+}
+
+/// [`trajectory`] with the collision count alone.
+pub fn trajectory_bits(
+    ph: &gdsmc_core::physics::Physics,
+    seed: u64,
+    times: &[f64],
+) -> (Vec<u64>, u64) {
+    let (bits, counts) = trajectory(ph, seed, times);
+    (bits, counts.collisions)
+}
+
+/// The kernels the bit-identity tests run: hard spheres and Maxwell molecules of unit
+/// `gamma` and `C = 1/(4 pi)`.
+pub mod kernels {
+    use gdsmc_core::physics::KernelChoice;
+    /// Hard spheres.
+    pub const HARD: KernelChoice = KernelChoice::HardSpheres {
+        gamma: 1.0,
+        c: 0.25 / core::f64::consts::PI,
+    };
+    /// Maxwell molecules.
+    pub const MAXWELL: KernelChoice = KernelChoice::Maxwell {
+        gamma: 1.0,
+        c: 0.25 / core::f64::consts::PI,
+    };
 }

@@ -186,6 +186,9 @@ pub fn rough_mixture_approximation(
     if matches!(scene.physics().drive, DriveChoice::Gaussian(_)) {
         return None;
     }
+    // The approximation takes each pair's constant alpha; under the impact-speed law alpha
+    // follows each collision's impact speed, which it does not: no curve.
+    scene.physics().restitution.constant()?;
     let model = scene.model();
     let (sp, laws, sections) = (
         model.species()?,
