@@ -9,7 +9,7 @@ use common::{check_finite_equipartition, ks_critical_999, ks_statistic};
 use gdsmc_core::engine::EventLoop;
 use gdsmc_core::geometry::{DimensionChoice, Disks, Geometry};
 use gdsmc_core::kernel::{HardSpheres, Maxwell};
-use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::physics::{
     DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice, SchemeChoice, SpeciesChoice,
 };
@@ -105,6 +105,58 @@ fn disks_stay_in_the_plane() {
 /// the momentum fixed: `2(n - 1)` translational and `n` rotational degrees of freedom (one
 /// per disk) share it equally, so `E[T_tr] = (n - 1)/n E[T_rot]` with `T_tr = <|c|^2>/2`,
 /// `T_rot = kappa <w_z^2>`. At n = 8 the sample must also refuse `T_tr = T_rot`.
+/// The constant force (MS (14)) on disks, smooth and rough, split and time-stepped: the
+/// velocities stay in the plane, the bulk velocity is kept (MS (62)) to rounding, and with
+/// elastic collisions (smooth, or perfectly rough: energy kept) the force alone changes the
+/// energy, by `2 g h sum |c_i| + (g h)^2 sum |c_hat_i - k|^2 > 0` per step (`sum c_i = 0`), so
+/// `T_bulk` grows at every observation.
+#[test]
+fn disks_under_the_constant_force_stay_in_the_plane_keep_their_momentum_and_heat() {
+    let n = 64;
+    for (scheme, rough) in [
+        (SchemeChoice::Strang(0.05), false),
+        (SchemeChoice::TimeStepped(0.01), false),
+        (SchemeChoice::Euler(0.05), true),
+    ] {
+        let mut ph = disks(n, HARD, 1.0, DriveChoice::ConstantForce(0.5));
+        ph.scheme = scheme;
+        ph.initial[0].drift = [1.0, -2.0, 0.0];
+        if rough {
+            ph.rotation = Some(RotationChoice::disks(1.0));
+        }
+        let model = ph.validate().unwrap();
+        let (mut buf, mut spins) = (vec![Particle::default(); n], vec![Spin::default(); n]);
+        let mut p = if rough {
+            Particles::with_spins(&mut buf, &mut spins).unwrap()
+        } else {
+            Particles::new(&mut buf).unwrap()
+        };
+        let mut rng = seeded(5);
+        let (mut e, o0) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+        let mut last = o0.t_bulk;
+        for t in [0.5, 1.0, 2.0, 4.0] {
+            let o = e.advance_to(&mut p, t, &mut rng).unwrap();
+            assert!(
+                o.t_bulk > last,
+                "{scheme:?}, rough {rough}: T_bulk {last} -> {} at t = {t}",
+                o.t_bulk
+            );
+            last = o.t_bulk;
+            let dv = (o.bulk - o0.bulk).norm();
+            assert!(
+                dv <= 1e-12 * (1.0 + last.sqrt()),
+                "{scheme:?}, rough {rough}: bulk moved {dv}"
+            );
+        }
+        assert!(
+            e.counts().collisions > 2 * n as u64,
+            "{scheme:?}: {:?}",
+            e.counts()
+        );
+        assert!(p.as_slice().iter().all(|q| q.vz == 0.0), "{scheme:?}");
+    }
+}
+
 #[test]
 fn elastic_perfectly_rough_disks_relax_to_equipartition_of_their_finite_system() {
     let n = 8;
@@ -171,7 +223,7 @@ fn disks_refuse_what_they_do_not_have() {
                     drift: [0.0; 3],
                 },
             ),
-            "dimension of 2 (disks) takes only no drive, white noise or the Gaussian thermostat",
+            "dimension of 2 (disks) takes no host medium",
         ),
         (
             drift,

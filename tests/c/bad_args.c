@@ -69,7 +69,7 @@ static void config_errors(void) {
            "config.dimension must be 2 (disks) or 3 (spheres), got 4");
     c = base(); c.dimension = 2; c.drive = GDSMC_DRIVE_HOST_MEDIUM;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
-           "config.dimension of 2 (disks) takes only no drive, white noise or the Gaussian thermostat");
+           "config.dimension of 2 (disks) takes no host medium");
     c = base(); c.restitution = 1.5;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
     c = base(); c.restitution = 0.0;

@@ -15,7 +15,7 @@
 //! all particles ([`Drive::kick_all`], used by the splitting and time-stepped schemes at every
 //! step and by the no-splitting scheme at observations) applies that correction, generalized to
 //! per-particle time spans `h_i` (the mean of `g h_i v_hat_i` is subtracted). A particle at rest
-//! has no direction and is left at rest.
+//! moving with the bulk has no direction and is left as it is.
 
 use super::Drive;
 use crate::math::{Real, exp};
@@ -76,11 +76,15 @@ impl ConstantForce {
         self.g
     }
 
+    /// The change `g dt c_hat` of a velocity `v` in a time `dt`, along its peculiar velocity
+    /// `c = v - V` (MS (14) is written for a gas at rest; about the bulk velocity `V` the
+    /// force is the same in every frame). A particle moving with the bulk has no direction.
     #[inline(always)]
     fn increment(&self, v: Vec3, dt: Real) -> Vec3 {
-        let s = v.norm();
+        let c = v - self.center;
+        let s = c.norm();
         if s > 0.0 {
-            (self.g * dt / s) * v
+            (self.g * dt / s) * c
         } else {
             Vec3::ZERO
         }

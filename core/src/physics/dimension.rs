@@ -2,9 +2,9 @@
 //! the loops composed for them: the no-splitting scheme, the Euler and Strang splittings
 //! (RW Algorithms 1-2) and, for smooth hard disks of one species, MS's time-stepped scheme, with either
 //! restitution law (BRS (10)'s normal speed follows from the map GRW (3) in any dimension),
-//! and no drive, white noise in the plane or the Gaussian thermostat (one species or a
-//! mixture; rough particles take only no drive or white noise, as in three dimensions), and
-//! start drifts in the plane.
+//! and every drive but the host medium (white noise in the plane; the thermostats about the
+//! peculiar velocity, which stays in the plane), as in three dimensions, and start drifts in
+//! the plane.
 
 use super::error::{Param, PhysicsError, Problem};
 use super::parts::DriveModel;
@@ -27,17 +27,17 @@ pub(super) fn dimension(
     if physics.dimension == DimensionChoice::Three {
         return Ok(DimensionChoice::Three);
     }
-    // The Gaussian thermostat scales the peculiar velocity, `v - V` (MS (61)), which stays in
-    // the plane; the host medium's partners and impact directions are drawn in three
-    // dimensions (BRS (29)).
-    if !matches!(
+    // The Gaussian thermostat scales the peculiar velocity, `v - V` (MS (61)), and the
+    // constant force pushes along it (MS (14)): both stay in the plane. The host medium's
+    // partners and impact directions are drawn in three dimensions (BRS (29)).
+    if matches!(
         drive,
-        DriveModel::None | DriveModel::WhiteNoise(_) | DriveModel::Gaussian(_)
+        DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_)
     ) {
         return refuse(
             Param::Dimension,
-            "of 2 (disks) takes only no drive, white noise or the Gaussian thermostat (the host \
-             medium is written for spheres)",
+            "of 2 (disks) takes no host medium (BRS's background kernels, rates and partner \
+             density (28)-(29) are written for spheres)",
         );
     }
     for (k, c) in physics.initial.iter().enumerate() {

@@ -241,7 +241,7 @@ impl Model {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
-        // Validated: disks have no drive, white noise or the Gaussian thermostat.
+        // Validated: disks have no host medium.
         match self.drive {
             DriveModel::WhiteNoise(w) => built!(feature = "white-noise", "white-noise", {
                 wrap(
@@ -255,6 +255,14 @@ impl Model {
                 wrap(
                     self.by_law::<K, _, Disks>(k, g, p, t0),
                     ByDiskDrive::Gaussian
+                )
+            ),
+            DriveModel::ConstantForce(f) => built!(
+                feature = "constant-force",
+                "constant-force",
+                wrap(
+                    self.by_law::<K, _, Disks>(k, f, p, t0),
+                    ByDiskDrive::ConstantForce
                 )
             ),
             _ => built!(feature = "cooling", "cooling", {

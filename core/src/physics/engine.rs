@@ -210,6 +210,9 @@ pub enum ByDiskDrive<K: Kernel> {
     WhiteNoise(Built<ByLaw<K, PlanarWhiteNoise, Disks>, WHITE_NOISE>),
     /// The Gaussian thermostat (MS (12); feature `gaussian-thermostat`).
     Gaussian(Built<ByLaw<K, GaussianThermostat, Disks>, GAUSSIAN>),
+    /// The constant force along the peculiar velocity (MS (14); a stepping scheme; feature
+    /// `constant-force`).
+    ConstantForce(Built<ByLaw<K, ConstantForce, Disks>, CONSTANT_FORCE>),
 }
 
 /// A rough gas's engine by drive, for kernel `K` and dimension `G`.
@@ -400,7 +403,7 @@ forward!(
     RoughDiskMixture
 );
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
-forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian);
+forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);

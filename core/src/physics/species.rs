@@ -202,7 +202,9 @@ pub(super) fn mixture(
             return refuse(
                 Param::Species,
                 Problem::DoesNotFit(
-                    "take only no drive, white noise (per species) or the Gaussian thermostat",
+                    "take only no drive, white noise (per species) or the Gaussian thermostat \
+                     (the constant force's momentum correction, MS (62), and BRS's host medium \
+                     are written for one species of one mass)",
                 ),
             );
         }
