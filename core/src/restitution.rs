@@ -14,6 +14,9 @@ use crate::vec3::Vec3;
 pub trait Restitution: Copy + core::fmt::Debug {
     /// True when the law can leave [0, 1] (then the loops clamp and count).
     const CAN_LEAVE_UNIT_INTERVAL: bool;
+    /// True when the coefficient depends on the collision (a map may then not precompute
+    /// what it derives from it).
+    const VARIES: bool;
     /// The coefficient (before clamping).
     fn coefficient(&self, u: Vec3, e: Vec3) -> Real;
     /// The coefficient of a collision whose normal impact speed `|g . n|` is `speed` (before
@@ -75,6 +78,7 @@ impl ImpactSpeed {
 
 impl Restitution for ImpactSpeed {
     const CAN_LEAVE_UNIT_INTERVAL: bool = true;
+    const VARIES: bool = true;
     #[inline]
     fn coefficient(&self, u: Vec3, e: Vec3) -> Real {
         self.at_normal_speed(Self::normal_speed(u, e))
@@ -133,6 +137,7 @@ impl Constant {
 
 impl Restitution for Constant {
     const CAN_LEAVE_UNIT_INTERVAL: bool = false;
+    const VARIES: bool = false;
     #[inline(always)]
     fn coefficient(&self, _u: Vec3, _e: Vec3) -> Real {
         self.0

@@ -94,6 +94,8 @@ pub struct RoughMap<A = Constant> {
     law: A,
     beta: Real,
     kappa: Real,
+    /// `(1 + alpha)/2` of a constant law (unused when the law varies).
+    eta_n: Real,
     eta_t: Real,
     /// `eta_t / kappa = (1 + beta) / (2 (1 + kappa))`.
     eta_w: Real,
@@ -130,6 +132,7 @@ impl RoughMap<Constant> {
             law,
             beta,
             kappa,
+            eta_n: 0.5 * (1.0 + alpha),
             eta_t: 0.5 * (1.0 + beta) * kappa / (1.0 + kappa),
             eta_w: 0.5 * (1.0 + beta) / (1.0 + kappa),
         })
@@ -161,6 +164,8 @@ impl<A: Restitution> RoughMap<A> {
             law,
             beta: self.beta,
             kappa: self.kappa,
+            // A constant law's coefficient at any speed.
+            eta_n: 0.5 * (1.0 + law.at_normal_speed(0.0)),
             eta_t: self.eta_t,
             eta_w: self.eta_w,
         }
@@ -220,7 +225,11 @@ impl<A: Restitution> RoughMap<A> {
         let gn = c * n;
         let gt = g - gn;
         // The normal part of `g` is that of `v1 - v2`: the spins add only a tangential one.
-        let eta_n = 0.5 * (1.0 + clamped_at_normal_speed(&self.law, abs(c), counts));
+        let eta_n = if A::VARIES {
+            0.5 * (1.0 + clamped_at_normal_speed(&self.law, abs(c), counts))
+        } else {
+            self.eta_n
+        };
         let dv = -(eta_n * gn) - self.eta_t * gt;
         if self.eta_t == 0.0 {
             return (v1 + dv, w1, v2 - dv, w2);
