@@ -208,22 +208,27 @@ fn disks_refuse_what_they_do_not_have() {
         kappa: 1.2,
         ..RotationChoice::disks(0.0)
     });
+    let host = |drift| {
+        disks(
+            8,
+            HARD,
+            0.9,
+            DriveChoice::HostMedium {
+                kernel: gdsmc_core::physics::BackgroundKernel::Maxwell,
+                c1: 1.0,
+                density: 1.0,
+                mass: 1.0,
+                temperature: 1.0,
+                drift,
+            },
+        )
+    };
+    // Disks take a host medium (tests/tests/host_medium.rs), about a drift in the plane.
+    assert!(host([1.0, 2.0, 0.0]).validate().is_ok());
     let cases: [(Physics, &str); 3] = [
         (
-            disks(
-                8,
-                HARD,
-                0.9,
-                DriveChoice::HostMedium {
-                    kernel: gdsmc_core::physics::BackgroundKernel::Maxwell,
-                    c1: 1.0,
-                    density: 1.0,
-                    mass: 1.0,
-                    temperature: 1.0,
-                    drift: [0.0; 3],
-                },
-            ),
-            "dimension of 2 (disks) takes no host medium",
+            host([0.0, 0.0, 1.0]),
+            "background_drift must lie in the plane (z = 0) for disks",
         ),
         (
             drift,

@@ -165,8 +165,9 @@ pub struct gdsmc_config {
     pub pair_tangential_restitution: [f64; GDSMC_MAX_PAIRS],
     /// The dimension: 3 (spheres, the default) or 2 (disks: velocities in the (x, y) plane,
     /// `z` components zero; a rough disk's rim velocity along z, `inertia` in (0, 1], 1/2 for
-    /// uniform disks). Disks take the no-splitting scheme, a constant restitution, no drive or
-    /// white noise and a drift in the plane (one species or a mixture).
+    /// uniform disks). Disks take the schemes, laws and drives spheres take (MS's time-stepped
+    /// scheme: smooth hard disks of one species), one species or a mixture, with the start and
+    /// background drifts in the plane.
     pub dimension: u32,
 }
 

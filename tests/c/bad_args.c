@@ -67,9 +67,9 @@ static void config_errors(void) {
     c = base(); c.dimension = 4;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
            "config.dimension must be 2 (disks) or 3 (spheres), got 4");
-    c = base(); c.dimension = 2; c.drive = GDSMC_DRIVE_HOST_MEDIUM;
+    c = base(); c.dimension = 2; c.drive = GDSMC_DRIVE_HOST_MEDIUM; c.background_drift[2] = 1.0;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
-           "config.dimension of 2 (disks) takes no host medium");
+           "config.background_drift must lie in the plane (z = 0) for disks");
     c = base(); c.restitution = 1.5;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
     c = base(); c.restitution = 0.0;

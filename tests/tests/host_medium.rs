@@ -151,3 +151,97 @@ fn rough_grains_keep_the_exact_bulk_velocity_of_brs_14() {
     let (t_rot, _) = at(&st, st.times.len() - 1, name::T_ROT);
     assert!(t_rot != 1.0, "the rotation never moved");
 }
+
+/// A shipped BRS scene as disks (its marginal histogram, written for spheres, dropped).
+fn as_disks(mut s: gdsmc_runner::scene::Scene) -> gdsmc_runner::scene::Scene {
+    s.marginal_histogram = None;
+    s.with_physics(|ph| ph.dimension = gdsmc_core::physics::DimensionChoice::Two)
+        .expect("BRS's scenes have their drifts in the plane");
+    s
+}
+
+/// Maxwell disks in a Maxwell host (the plane's kernels, core `drive::host_medium`) follow BRS
+/// (14)-(17) per degree of freedom: the derivation uses only the isotropy of the scattering and
+/// the total rates, which disks keep. BRS Examples 1 (two components drifting in the plane;
+/// the start temperature counts their spread over d = 2 components) and 2 as disks: `V_x`,
+/// `V_y` at n = 4 and `T_bulk` at n = 2048 (bias about T/n, asserted below a quarter of the
+/// interval), every time and component of a scene jointly (Bonferroni).
+#[test]
+fn maxwell_disks_in_a_maxwell_host_follow_brs_14_to_17() {
+    use gdsmc_stats::{dof, family};
+    for (k, scene) in ["brs-example1", "brs-example2"].iter().enumerate() {
+        let times: Vec<f64> = (0..=8).map(|i| i as f64 / 8.0).collect();
+        let mut s = as_disks(shipped(scene, 4, 20_000, 840 + k as u64));
+        s.set_times(times.clone()).expect("valid observation times");
+        let h = host_medium_maxwell(&s).expect("BRS (15) holds for Maxwell disks");
+        let st = run(&s);
+        let f = family(2 * times.len(), dof(st.ensembles));
+        for (ti, &t) in st.times.iter().enumerate() {
+            for (c, col) in [name::V_X, name::V_Y].iter().enumerate() {
+                let (m, ci) = at(&st, ti, col);
+                let exact = h.bulk(t)[c];
+                assert!(
+                    (m - exact).abs() <= f * ci,
+                    "{scene} disks t={t}: {col} = {m} +- {}, BRS (14) {exact}",
+                    f * ci
+                );
+            }
+        }
+        let n = 2048;
+        let mut s = as_disks(shipped(scene, n, 200, 850 + k as u64));
+        s.set_times(times.clone()).expect("valid observation times");
+        let st = run(&s);
+        let f = family(times.len(), dof(st.ensembles));
+        for (ti, &t) in st.times.iter().enumerate() {
+            let (m, ci) = at(&st, ti, name::T_BULK);
+            let exact = h.temperature(t);
+            assert!(
+                exact / n as f64 <= 0.25 * ci,
+                "{scene} disks t={t}: interval too narrow for the O(1/n) bias"
+            );
+            assert!(
+                (m - exact).abs() <= f * ci,
+                "{scene} disks t={t}: T_bulk = {m} +- {}, BRS (15) {exact}",
+                f * ci
+            );
+        }
+    }
+}
+
+/// Elastic grains in an elastic host relax to the host's Maxwellian (detailed balance), so
+/// hard disks with `alpha = 1` in a host at `T^B = 2` (BRS Example 4's scene as disks, started
+/// at T = 1) have the steady `E T_bulk = (1 - 1/n) T^B` exactly (`T_bulk` is taken about the
+/// sample's own mean). Both background kernels; the hard-disk one draws its partners from the
+/// planar BRS (29) (a radius chi(3)) and thins them, and a wrong partner law moves the
+/// equilibrium: drawing chi(2) for both partners gave 1.58, the spheres' mean speed `2b/sqrt(pi)`
+/// in the majorant's mixture 2.043 (half-widths about 0.002). The two checks jointly
+/// (Bonferroni); the interval must stay below 0.005, a tenth of the second shift.
+#[test]
+fn elastic_hard_disks_reach_their_hosts_temperature() {
+    use gdsmc_stats::{dof, family};
+    let n = 1024;
+    for (k, kernel) in ["hard-spheres", "maxwell"].iter().enumerate() {
+        let drive_kernel = format!("drive.kernel=\"{kernel}\"");
+        let set = [
+            "particles.dimension=2",
+            "collisions.restitution=1.0",
+            "drive.temperature=2.0",
+            drive_kernel.as_str(),
+        ];
+        let s = shipped_set("brs-example4", &set, n, 256, 860 + k as u64);
+        let st = run(&s);
+        let steady = st
+            .steady
+            .as_ref()
+            .expect("the scene averages its steady state");
+        let (t, ci) = steady.mean_ci(&st, st.col(name::T_BULK).unwrap());
+        let want = 2.0 * (1.0 - 1.0 / n as f64);
+        let f = family(2, dof(st.ensembles));
+        assert!(
+            (t - want).abs() <= f * ci,
+            "{kernel} background: T_bulk = {t} +- {}, want {want}",
+            f * ci
+        );
+        assert!(ci < 5e-3, "{kernel}: interval {ci} too wide to tell");
+    }
+}

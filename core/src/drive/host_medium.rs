@@ -20,22 +20,32 @@
 //!   Algorithm 2). The majorant is recomputed after each background event, when `v` changes.
 //!
 //! Grains have unit mass; `T^B`, `m^B` are the background's temperature and mass.
+//!
+//! Disks (`d = 2`, [`crate::geometry`]): BRS writes spheres; in the plane the kernels keep
+//! their total rate (`int B_1 domega = 4 pi C_1 |g|^lambda`, the grains' own convention), the
+//! partners are the planar Maxwellian's, the directions the circle's (uniform for the Maxwell
+//! kernel; for hard disks the hard-disk scattering law, [`Geometry::scattering`]), and the
+//! majorant and partner density follow BRS (28)-(29) with the planar mean speed
+//! `E|w - u^B| = b sqrt(pi)/2`: the weighted partner `|x| M^B(x)` has the radius of a chi law
+//! with 3 degrees of freedom (`s^2 e^{-s^2/b^2}`) in a uniform direction of the plane, so the
+//! four normals of spheres become three. The same code for both dimensions (`G`), the
+//! spheres' draws unchanged.
 
 use super::Drive;
 use crate::collision::{MassRatio, elastic_background, grain_after_background};
+use crate::geometry::{DimensionChoice, Geometry, Spheres};
+use crate::kernel::{HardSpheres, Maxwell};
 use crate::math::{PI, Real, SQRT_PI, sqrt};
 use crate::rng::{Rng, uniform01};
-use crate::sample::{
-    BackgroundPartner, Maxwellian, standard_exponential, standard_normal, standard_normal3,
-    unit_sphere,
-};
+use crate::sample::{BackgroundPartner, Maxwellian, standard_exponential, standard_normal};
 use crate::vec3::Vec3;
 
 /// The grain-background collision kernel `B_1`.
 pub trait BackgroundKernel: Copy + core::fmt::Debug {
-    /// Draws the next real background collision of a grain at velocity `v` within `dt`:
-    /// the post-collisional velocity and the time used, or `None` if none happens in `dt`.
-    fn next<R: Rng + ?Sized>(
+    /// Draws the next real background collision of a grain at velocity `v` within `dt` in
+    /// dimension `G`: the post-collisional velocity and the time used, or `None` if none
+    /// happens in `dt`.
+    fn next<G: Geometry, R: Rng + ?Sized>(
         &self,
         m: &HostMediumParams,
         v: Vec3,
@@ -44,9 +54,9 @@ pub trait BackgroundKernel: Copy + core::fmt::Debug {
     ) -> Option<(Vec3, Real)>;
 
     /// The candidate rate of background events of a grain at distance `a` from the
-    /// background's drift velocity, `|v - u^B| = a` (the majorant [`BackgroundKernel::next`]
-    /// draws its waiting times from).
-    fn rate_bound(&self, m: &HostMediumParams, a: Real) -> Real;
+    /// background's drift velocity, `|v - u^B| = a`, in dimension `G` (the majorant
+    /// [`BackgroundKernel::next`] draws its waiting times from).
+    fn rate_bound<G: Geometry>(&self, m: &HostMediumParams, a: Real) -> Real;
 }
 
 /// The background Maxwellian and the constants derived from it.
@@ -103,25 +113,26 @@ pub struct MaxwellBackground;
 
 impl BackgroundKernel for MaxwellBackground {
     #[inline]
-    fn next<R: Rng + ?Sized>(
+    fn next<G: Geometry, R: Rng + ?Sized>(
         &self,
         m: &HostMediumParams,
         v: Vec3,
         dt: Real,
         rng: &mut R,
     ) -> Option<(Vec3, Real)> {
-        let tau = standard_exponential(rng) / self.rate_bound(m, 0.0);
+        let tau = standard_exponential(rng) / self.rate_bound::<G>(m, 0.0);
         if tau >= dt {
             return None;
         }
-        let w = m.background.sample(rng);
-        let omega = unit_sphere(rng);
+        // `M^B` in the dimension (spheres: `Maxwellian::sample`'s very draws).
+        let w = m.background.drift() + m.background.thermal_scale() * G::normal(rng);
+        let omega = G::scattering::<Maxwell, R>(v - w, rng);
         Some((elastic_background(v, w, omega, m.ratio).0, tau))
     }
 
-    /// `4 pi C_1 rho^B`, whatever the grain's speed.
+    /// `4 pi C_1 rho^B`, whatever the grain's speed (disks: the same total rate).
     #[inline]
-    fn rate_bound(&self, m: &HostMediumParams, _a: Real) -> Real {
+    fn rate_bound<G: Geometry>(&self, m: &HostMediumParams, _a: Real) -> Real {
         4.0 * PI * m.c1 * m.density
     }
 }
@@ -139,7 +150,7 @@ pub struct HardSphereBackground;
 
 impl BackgroundKernel for HardSphereBackground {
     #[inline]
-    fn next<R: Rng + ?Sized>(
+    fn next<G: Geometry, R: Rng + ?Sized>(
         &self,
         m: &HostMediumParams,
         v: Vec3,
@@ -152,7 +163,7 @@ impl BackgroundKernel for HardSphereBackground {
         // standard exponentials is below `dt (k0 a + k1)`. Every kick's last call ends at a
         // time test, mostly at its first draw; that one needs no root: `e - dt k1 >= dt k0 a`
         // as squares. (No time, or a time a rounding left below 0, has no candidate.)
-        let (k0, k1) = rate_terms(m);
+        let (k0, k1) = rate_terms::<G>(m);
         let mut e = standard_exponential(rng);
         let y = e - dt * k1;
         if dt.is_nan() || dt <= 0.0 || (y >= 0.0 && y * y >= (dt * k0) * (dt * k0) * c.norm2()) {
@@ -160,7 +171,7 @@ impl BackgroundKernel for HardSphereBackground {
         }
         let a = c.norm();
         let budget = dt * (k0 * a + k1);
-        let mixture = a + m.partner.mean_relative_speed();
+        let mixture = a + mean_speed::<G>(m);
         let sigma = m.background.thermal_scale();
         loop {
             // The partner from the mixture `a/(a + 2b/sqrt(pi))` of `M^B` and BRS (29), with
@@ -169,8 +180,9 @@ impl BackgroundKernel for HardSphereBackground {
             // length `sigma sqrt(|N|^2 + N_4^2)` it is BRS (29)'s, whose `s^2/b^2` is
             // Gamma(2) (`|N|^2 + N_4^2` is chi-squared with 4 degrees of freedom, halved: `b^2
             // = 2 sigma^2`) in the uniform direction of `N`.
+            // (Disks: `N` two normals in the plane and one more, `chi(2)` or `chi(3)`.)
             let pick_bg = uniform01(rng) * mixture < a;
-            let n = standard_normal3(rng);
+            let n = G::normal(rng);
             let n4 = standard_normal(rng);
             let q = n.norm2();
             let s = sigma * sqrt(if pick_bg { q } else { q + n4 * n4 });
@@ -182,7 +194,7 @@ impl BackgroundKernel for HardSphereBackground {
             // direction is drawn only for a real collision.
             let r = uniform01(rng) * (a + s);
             if r * r < g2 {
-                let omega = unit_sphere(rng);
+                let omega = G::scattering::<HardSpheres, R>(g, rng);
                 let used = e / (k0 * a + k1);
                 return Some((grain_after_background(v, g, sqrt(g2), omega, m.ratio), used));
             }
@@ -193,37 +205,70 @@ impl BackgroundKernel for HardSphereBackground {
         }
     }
 
-    /// BRS (28): `C_1 rho^B (4 pi a + 8 sqrt(pi) b)` with the partner scale `b`.
+    /// BRS (28): `C_1 rho^B (4 pi a + 8 sqrt(pi) b)` with the partner scale `b` (disks:
+    /// `4 pi C_1 rho^B (a + b sqrt(pi)/2)`).
     #[inline]
-    fn rate_bound(&self, m: &HostMediumParams, a: Real) -> Real {
-        let (k0, k1) = rate_terms(m);
+    fn rate_bound<G: Geometry>(&self, m: &HostMediumParams, a: Real) -> Real {
+        let (k0, k1) = rate_terms::<G>(m);
         k0 * a + k1
     }
 }
 
-/// BRS (28)'s majorant as `k0 a + k1`: `k0 = 4 pi C_1 rho^B`, `k1 = 8 sqrt(pi) C_1 rho^B b`.
+/// BRS (28)'s majorant as `k0 a + k1`: `k0 = 4 pi C_1 rho^B`, `k1 = k0 E|w - u^B|`, which is
+/// `8 sqrt(pi) C_1 rho^B b` for spheres and `2 pi^{3/2} C_1 rho^B b` for disks.
 #[inline(always)]
-fn rate_terms(m: &HostMediumParams) -> (Real, Real) {
+fn rate_terms<G: Geometry>(m: &HostMediumParams) -> (Real, Real) {
     let s = m.c1 * m.density;
-    (s * 4.0 * PI, s * 8.0 * SQRT_PI * m.partner.b())
+    let k1 = match G::CHOICE {
+        DimensionChoice::Three => s * 8.0 * SQRT_PI * m.partner.b(),
+        DimensionChoice::Two => s * 2.0 * PI * SQRT_PI * m.partner.b(),
+    };
+    (s * 4.0 * PI, k1)
 }
 
-/// The host-medium drive with background kernel `B`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HostMedium<B> {
-    /// Background parameters.
-    pub params: HostMediumParams,
-    kernel: B,
-}
-
-impl<B: BackgroundKernel> HostMedium<B> {
-    /// A host medium with these parameters and kernel.
-    pub fn new(params: HostMediumParams, kernel: B) -> Self {
-        HostMedium { params, kernel }
+/// The background's mean speed about its drift, `E|w - u^B|`: `2 b / sqrt(pi)` for spheres
+/// (BRS, before (29)), `b sqrt(pi) / 2` for disks.
+#[inline(always)]
+fn mean_speed<G: Geometry>(m: &HostMediumParams) -> Real {
+    match G::CHOICE {
+        DimensionChoice::Three => m.partner.mean_relative_speed(),
+        DimensionChoice::Two => 0.5 * SQRT_PI * m.partner.b(),
     }
 }
 
-impl<B: BackgroundKernel> Drive for HostMedium<B> {
+/// The host-medium drive with background kernel `B` in dimension `G` (spheres by default).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HostMedium<B, G = Spheres> {
+    /// Background parameters.
+    pub params: HostMediumParams,
+    kernel: B,
+    dimension: core::marker::PhantomData<G>,
+}
+
+impl<B: BackgroundKernel> HostMedium<B> {
+    /// A host medium of spheres with these parameters and kernel.
+    pub fn new(params: HostMediumParams, kernel: B) -> Self {
+        HostMedium {
+            params,
+            kernel,
+            dimension: core::marker::PhantomData,
+        }
+    }
+}
+
+impl<B: BackgroundKernel, G: Geometry> HostMedium<B, G> {
+    /// The same host medium in dimension `H` (disks: the background's drift must lie in the
+    /// plane, which the physics validation checks).
+    pub fn in_dim<H: Geometry>(self) -> HostMedium<B, H> {
+        HostMedium {
+            params: self.params,
+            kernel: self.kernel,
+            dimension: core::marker::PhantomData,
+        }
+    }
+}
+
+impl<B: BackgroundKernel, G: Geometry> Drive for HostMedium<B, G> {
     const ACTS: bool = true;
     const COUNTS_EVENTS: bool = true;
 
@@ -231,7 +276,7 @@ impl<B: BackgroundKernel> Drive for HostMedium<B> {
     #[inline]
     fn event_rate(&self, speed: Real) -> Real {
         let a = speed + self.params.background.drift().norm();
-        self.kernel.rate_bound(&self.params, a)
+        self.kernel.rate_bound::<G>(&self.params, a)
     }
 
     #[inline]
@@ -250,7 +295,7 @@ impl<B: BackgroundKernel> Drive for HostMedium<B> {
         events: &mut u64,
     ) -> Vec3 {
         let mut left = dt;
-        while let Some((v1, used)) = self.kernel.next(&self.params, v, left, rng) {
+        while let Some((v1, used)) = self.kernel.next::<G, R>(&self.params, v, left, rng) {
             v = v1;
             left -= used;
             *events += 1;

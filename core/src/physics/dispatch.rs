@@ -241,7 +241,6 @@ impl Model {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
-        // Validated: disks have no host medium.
         match self.drive {
             DriveModel::WhiteNoise(w) => built!(feature = "white-noise", "white-noise", {
                 wrap(
@@ -265,6 +264,18 @@ impl Model {
                     ByDiskDrive::ConstantForce
                 )
             ),
+            DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
+                wrap(
+                    self.by_law::<K, _, Disks>(k, h.in_dim::<Disks>(), p, t0),
+                    ByDiskDrive::HostMaxwell,
+                )
+            }),
+            DriveModel::HostHardSpheres(h) => built!(feature = "host-medium", "host-medium", {
+                wrap(
+                    self.by_law::<K, _, Disks>(k, h.in_dim::<Disks>(), p, t0),
+                    ByDiskDrive::HostHardSpheres,
+                )
+            }),
             _ => built!(feature = "cooling", "cooling", {
                 wrap(
                     self.by_law::<K, _, Disks>(k, NoDrive, p, t0),
@@ -579,14 +590,14 @@ fn rough<K: Kernel, G: Geometry>(
         ),
         (None, DriveModel::HostMaxwell(h)) => built!(feature = "host-medium", "host-medium", {
             wrap(
-                rough_law::<K, _, G>(m, k, h, r, p, t0),
+                rough_law::<K, _, G>(m, k, h.in_dim::<G>(), r, p, t0),
                 ByRoughDrive::HostMaxwell,
             )
         }),
         (None, DriveModel::HostHardSpheres(h)) => {
             built!(feature = "host-medium", "host-medium", {
                 wrap(
-                    rough_law::<K, _, G>(m, k, h, r, p, t0),
+                    rough_law::<K, _, G>(m, k, h.in_dim::<G>(), r, p, t0),
                     ByRoughDrive::HostHardSpheres,
                 )
             })

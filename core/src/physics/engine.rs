@@ -213,6 +213,10 @@ pub enum ByDiskDrive<K: Kernel> {
     /// The constant force along the peculiar velocity (MS (14); a stepping scheme; feature
     /// `constant-force`).
     ConstantForce(Built<ByLaw<K, ConstantForce, Disks>, CONSTANT_FORCE>),
+    /// A host medium of Maxwell background kernel in the plane (feature `host-medium`).
+    HostMaxwell(Built<ByLaw<K, HostMedium<MaxwellBackground, Disks>, Disks>, HOST_MEDIUM>),
+    /// A host medium of hard-disk background kernel (feature `host-medium`).
+    HostHardSpheres(Built<ByLaw<K, HostMedium<HardSphereBackground, Disks>, Disks>, HOST_MEDIUM>),
 }
 
 /// A rough gas's engine by drive, for kernel `K` and dimension `G`.
@@ -228,10 +232,10 @@ pub enum ByRoughDrive<K: Kernel, G: Geometry = Spheres> {
     /// `constant-force`).
     ConstantForce(Built<ByRoughLaw<K, ConstantForce, G>, CONSTANT_FORCE>),
     /// A host medium of Maxwell background kernel, its encounters smooth (BRS (2), (11);
-    /// spheres; feature `host-medium`).
-    HostMaxwell(Built<ByRoughLaw<K, HostMedium<MaxwellBackground>, G>, HOST_MEDIUM>),
+    /// feature `host-medium`).
+    HostMaxwell(Built<ByRoughLaw<K, HostMedium<MaxwellBackground, G>, G>, HOST_MEDIUM>),
     /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
-    HostHardSpheres(Built<ByRoughLaw<K, HostMedium<HardSphereBackground>, G>, HOST_MEDIUM>),
+    HostHardSpheres(Built<ByRoughLaw<K, HostMedium<HardSphereBackground, G>, G>, HOST_MEDIUM>),
 }
 
 /// A rough gas by normal restitution law (the rough map of it), for kernel `K`, drive `D`
@@ -403,7 +407,7 @@ forward!(
     RoughDiskMixture
 );
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
-forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce);
+forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);

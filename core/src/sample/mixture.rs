@@ -69,11 +69,17 @@ impl<const CAP: usize> MaxwellianMixture<CAP> {
     /// Temperature about the mean velocity (unit grain mass, BRS (8)):
     /// `(1/3) sum_k w_k (3 T_k/m_k + |u_k - u|^2) / sum w`.
     pub fn temperature(&self) -> Real {
+        self.temperature_in(3)
+    }
+
+    /// Temperature about the mean velocity in dimension `d` (disks: `d = 2`, the components'
+    /// drifts in the plane): `(1/d) sum_k w_k (d T_k/m_k + |u_k - u|^2) / sum w`.
+    pub fn temperature_in(&self, d: usize) -> Real {
         let u = self.mean();
+        let d = d as Real;
         let mut t = 0.0;
         for (w, c) in &self.components {
-            t += (*w / self.total) * (3.0 * c.temperature() / c.mass() + (c.drift() - u).norm2())
-                / 3.0;
+            t += (*w / self.total) * (d * c.temperature() / c.mass() + (c.drift() - u).norm2()) / d;
         }
         t
     }

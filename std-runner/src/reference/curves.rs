@@ -2,7 +2,7 @@
 
 use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
 use crate::run::columns::name;
-use crate::run::initial_sampler;
+use crate::run::{initial_sampler, initial_temperature};
 use crate::scene::{BackgroundKernel, DriveChoice, KernelChoice, Scene, SchemeChoice};
 
 /// A named reference curve `t -> value` for an observable column.
@@ -53,7 +53,7 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
     let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
         return None;
     };
-    let t0 = initial_sampler(scene).temperature();
+    let t0 = initial_temperature(scene);
     let m = |beta| MaxwellTemperature::new(t0, alpha, beta, gamma, c);
     match scene.physics().drive {
         DriveChoice::None => Some(m(0.0)),
@@ -88,12 +88,13 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
     Some(HostMediumMaxwell {
         u0: u0.to_array(),
         ub: drift,
-        t0: f0.temperature(),
+        t0: initial_temperature(scene),
         tb: temperature,
         alpha: mass / (1.0 + mass),
         s: density * c1,
         kn: gamma * c / (density * c1),
         e: alpha,
+        d: scene.dimension() as f64,
     })
 }
 
@@ -101,6 +102,9 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
 pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroModel; 2]> {
     if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
         return None; // a one-species solution
+    }
+    if scene.dimension() != 3 {
+        return None; // BRS (21)-(22)'s coefficients are the spheres' integrals
     }
     use crate::reference::hydro::{Closure, HydroModel};
     let KernelChoice::HardSpheres { gamma, c } = scene.physics().kernel else {
@@ -375,18 +379,14 @@ pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::Rou
 /// A rough gas's Maxwellian-approximation curves: `T_bulk_MA` (the translational temperature),
 /// `T_rot_MA` and `theta_MA`, solved from the scene's start.
 fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
-    let (Some(ma), f0, Some(r)) = (
-        rough_approximation(scene),
-        initial_sampler(scene),
-        scene.physics().rotation,
-    ) else {
+    let (Some(ma), Some(r)) = (rough_approximation(scene), scene.physics().rotation) else {
         return Vec::new();
     };
     let t_end = scene.times.last().copied().unwrap_or(1.0);
     let src = "Maxwellian approximation (Huthmann and Zippelius 1997)";
     match crate::reference::rough::RoughTrajectory::new(
         &ma,
-        [f0.temperature(), r.temperature],
+        [initial_temperature(scene), r.temperature],
         t_end,
     ) {
         Ok(tr) => {

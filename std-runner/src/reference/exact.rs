@@ -146,6 +146,9 @@ pub struct HostMediumMaxwell {
     pub kn: f64,
     /// Restitution coefficient `e`.
     pub e: f64,
+    /// The dimension `d` (3: BRS's spheres; 2: disks, whose kernels keep the total rates and
+    /// isotropic scattering, so only the flow energy `A` is shared over `d` components).
+    pub d: f64,
 }
 
 impl HostMediumMaxwell {
@@ -155,13 +158,15 @@ impl HostMediumMaxwell {
         std::array::from_fn(|k| self.ub[k] + (self.u0[k] - self.ub[k]) * f)
     }
 
-    /// `A, B, C, D` of BRS (17).
+    /// `A, B, C, D` of BRS (17) (`A = 8/3 pi alpha^2 |u_0 - u^B|^2` for spheres: the energy of
+    /// the relative flow, turned into heat and shared over the `d` components, so `8/d` in
+    /// general; B, C and D are per component and hold in any `d`).
     pub fn coefficients(&self) -> (f64, f64, f64, f64) {
         let pi = std::f64::consts::PI;
         let a = self.alpha;
         let du2: f64 = (0..3).map(|k| (self.u0[k] - self.ub[k]).powi(2)).sum();
         (
-            8.0 / 3.0 * pi * a * a * du2,
+            8.0 / self.d * pi * a * a * du2,
             8.0 * pi * a,
             8.0 * pi * a * (1.0 - a) + pi * self.kn * (1.0 - self.e * self.e),
             8.0 * pi * a * (1.0 - a) * self.tb,

@@ -20,9 +20,10 @@ pub fn initial_sampler(scene: &Scene) -> MaxwellianMixture<MAX_COMPONENTS> {
     scene.model().initial().clone()
 }
 
-/// The temperature of a scene's initial distribution.
+/// The temperature of a scene's initial distribution, per degree of freedom of its dimension
+/// (the drifts' spread counts over `d` components).
 pub fn initial_temperature(scene: &Scene) -> f64 {
-    initial_sampler(scene).temperature()
+    initial_sampler(scene).temperature_in(scene.dimension())
 }
 
 /// Why an ensemble stopped: the engine's error and the observation time it was advancing to.
