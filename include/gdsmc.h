@@ -11,7 +11,10 @@
  *    may run on distinct threads concurrently. The only global state is the per-thread error.
  *  - Link line: cc prog.c -Iinclude target/release/libgdsmc.a -lm -lpthread -ldl
  *  - Microcontrollers: the no_std build (cargo rustc -p gdsmc-ffi --no-default-features
- *    --target thumbv7em-none-eabihf --release --crate-type staticlib) has everything but
+ *    --features gdsmc-core/maxwell,gdsmc-core/white-noise --target thumbv7em-none-eabihf
+ *    --release --crate-type staticlib, naming the engines it runs as gdsmc-core's features,
+ *    or --features full for all; a physics left out returns GDSMC_INVALID_ARGUMENT naming the
+ *    feature) has everything but
  *    gdsmc_sim_create and gdsmc_config_from_toml: simulations live in caller memory
  *    (gdsmc_sim_footprint, gdsmc_sim_init_in) and gdsmc allocates nothing. It keeps one
  *    last-error message (call from one context only: not from interrupts) and has no
