@@ -8,9 +8,9 @@
 //! - With `delta = 0` the law is the constant `alpha = 1 - 2 beta0` (BRS (9)), so a rough gas
 //!   or a rough mixture under it follows the constant law's trajectory to the last bit
 //!   (velocities, spins, counts), through the front door, for both kernels, spheres and disks,
-//!   cooling, driven and split; with `delta > 0` it does not.
+//!   cooling, driven, split and time-stepped; with `delta > 0` it does not.
 //! - With `beta = -1` the rough gas under the law is the smooth gas under it, to the bit
-//!   (`rough::map::smooth_limit`).
+//!   (`rough::map::smooth_limit`), MS's time-stepped scheme included (its impact map).
 
 mod common;
 
@@ -167,6 +167,8 @@ fn rough_particles_under_the_law_of_delta_0_follow_the_constant_law_to_the_last_
         (&[][..], MAXWELL, (Three, hot, exact)),
         (&[][..], HARD, (Two, hot, strang)),
         (&[][..], HARD, (Three, DriveChoice::Gaussian(0.2), strang)),
+        (&[][..], HARD, (Three, hot, SchemeChoice::TimeStepped(0.05))),
+        (&[][..], HARD, (Two, none, SchemeChoice::TimeStepped(0.05))),
         (mix, HARD, (Three, none, exact)),
         (mix, MAXWELL, (Three, hot, exact)),
         (mix, HARD, (Two, hot, exact)),
@@ -225,6 +227,20 @@ fn rough_particles_with_beta_minus_one_under_the_law_are_smooth_to_the_last_bit(
             ),
         ),
         (&[][..], HARD, (Two, cooling, SchemeChoice::NoSplitting)),
+        (
+            &[][..],
+            HARD,
+            (Three, cooling, SchemeChoice::TimeStepped(0.05)),
+        ),
+        (
+            &[][..],
+            HARD,
+            (
+                Two,
+                DriveChoice::WhiteNoise(0.2),
+                SchemeChoice::TimeStepped(0.05),
+            ),
+        ),
         (mix, HARD, (Three, cooling, SchemeChoice::NoSplitting)),
         (
             mix,

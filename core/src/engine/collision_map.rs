@@ -12,7 +12,7 @@
 //! no spin check, rescale or observable.
 
 use super::Counts;
-use crate::collision::inelastic;
+use crate::collision::{inelastic, scattering_direction_from_impact};
 use crate::geometry::{DimensionChoice, Geometry};
 use crate::kernel::Kernel;
 use crate::math::Real;
@@ -37,6 +37,19 @@ pub trait CollisionMap: Copy + core::fmt::Debug {
         pair: (usize, usize),
         velocities: (Vec3, Vec3),
         rng: &mut R,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3);
+
+    /// Collides the `pair` `(i, j)` of `velocities` `(vi, vj)` at the impact direction `n`
+    /// (the unit vector from `i` to `j`, `(vi - vj) . n > 0`) that the caller drew: MS's
+    /// time-stepped scheme draws it itself (MS Section 3). Writes the new velocities (and
+    /// spins), counts a clamped coefficient, returns the new velocities.
+    fn collide_at_impact(
+        &self,
+        p: &mut Particles<'_>,
+        pair: (usize, usize),
+        velocities: (Vec3, Vec3),
+        n: Vec3,
         counts: &mut Counts,
     ) -> (Vec3, Vec3);
 
@@ -67,6 +80,27 @@ impl<A: Restitution> CollisionMap for A {
     ) -> (Vec3, Vec3) {
         let u = vi - vj;
         let e = G::scattering::<K, R>(u, rng);
+        let alpha = clamped_coefficient(self, u, e, counts);
+        let (a, b) = inelastic(vi, vj, e, alpha);
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        (a, b)
+    }
+
+    /// GRW (3) with the scattering direction of the impact `n`
+    /// ([`scattering_direction_from_impact`]: MS's impact map `v_{1,2} -/+ (1 + alpha)/2
+    /// (u . n) n`).
+    #[inline(always)]
+    fn collide_at_impact(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        n: Vec3,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3) {
+        let u = vi - vj;
+        let e = scattering_direction_from_impact(u, n);
         let alpha = clamped_coefficient(self, u, e, counts);
         let (a, b) = inelastic(vi, vj, e, alpha);
         p.set_velocity(i, a);

@@ -131,8 +131,8 @@ impl_event_loop!(
     SumNoSplitting<A>
 );
 
-impl<D: crate::drive::Drive, A: crate::restitution::Restitution, G: crate::geometry::Geometry>
-    EventLoop for TimeStepped<D, A, G>
+impl<D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry> EventLoop
+    for TimeStepped<D, A, G>
 {
     fn advance_to<R: Rng + ?Sized>(
         &mut self,
@@ -153,6 +153,9 @@ impl<D: crate::drive::Drive, A: crate::restitution::Restitution, G: crate::geome
     }
     fn work_rate(&self, n: usize) -> Real {
         TimeStepped::work_rate(self, n)
+    }
+    fn rough(&self, p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+        TimeStepped::rough(self, p)
     }
 }
 

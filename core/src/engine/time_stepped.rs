@@ -10,7 +10,9 @@
 //! `omega_ij = 16 pi gamma C |u . s|` (so that averaged over `s` a pair collides at the rate
 //! `4 pi gamma C |u|` of the no-splitting scheme), then the impact map
 //! `v_{1,2} -/+ (1 + alpha)/2 (u . s) s` (GRW (3) through
-//! [`crate::collision::scattering_direction_from_impact`]); a candidate with
+//! [`crate::collision::scattering_direction_from_impact`]; rough particles: the map of
+//! Huthmann and Zippelius at the impact `s`, [`crate::engine::CollisionMap::collide_at_impact`]);
+//! a candidate with
 //! `omega_ij > omega_max` raises `omega_max` and is counted. Then a free-streaming stage kicks
 //! every particle for `h` (MS (57)-(62), the drive's batch kick). MS take `N` where this takes
 //! `n - 1` candidates per unit: with `n - 1` the scheme converges, as `h -> 0`, to the same
@@ -22,18 +24,18 @@
 //! before an observation is shortened to land on it.
 
 use super::{Counts, EngineError};
-use crate::collision::{inelastic, scattering_direction_from_impact};
 use crate::drive::Drive;
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel};
 use crate::math::{PI, Real, floor, max, min, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
-use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_pair, uniform01};
+use crate::rough::RoughObservables;
 
 /// MS's time-stepped scheme for hard spheres (hard disks for `G = Disks`) with drive `D` and
-/// restitution law `A`.
+/// collision map `A` (a restitution law: smooth particles; [`crate::rough::RoughMap`]: rough
+/// ones, whose impact direction is the candidate's `s`).
 #[derive(Clone, Debug)]
 pub struct TimeStepped<D, A, G = Spheres> {
     dim: core::marker::PhantomData<G>,
@@ -49,9 +51,10 @@ pub struct TimeStepped<D, A, G = Spheres> {
     counts: Counts,
 }
 
-impl<D: Drive, A: Restitution, G: Geometry> TimeStepped<D, A, G> {
+impl<D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepped<D, A, G> {
     /// Starts at `t0` with step factor `f > 0` (`h = f lambda / v_0`; MS: 0.01) on particles
-    /// holding the initial velocities. `omega_max` starts from `Umax = 2 max |v - V|`.
+    /// holding the initial velocities (and, for a rough map, one spin each:
+    /// [`EngineError::Spins`] otherwise). `omega_max` starts from `Umax = 2 max |v - V|`.
     // Out of line: called once per run, and the dispatch above it stays small.
     #[inline(never)]
     pub fn start(
@@ -63,6 +66,9 @@ impl<D: Drive, A: Restitution, G: Geometry> TimeStepped<D, A, G> {
         t0: Real,
     ) -> Result<(Self, Observables), EngineError> {
         super::check_step(step_factor)?;
+        if A::SPINS && !p.has_spins() {
+            return Err(EngineError::Spins);
+        }
         if !t0.is_finite() {
             return Err(EngineError::TimeBackwards);
         }
@@ -184,16 +190,8 @@ impl<D: Drive, A: Restitution, G: Geometry> TimeStepped<D, A, G> {
                 self.counts.fictitious += 1;
                 continue;
             }
-            let e = scattering_direction_from_impact(u, s);
-            let alpha = super::collision_map::clamped_coefficient(
-                &self.restitution,
-                u,
-                e,
-                &mut self.counts,
-            );
-            let (a, b) = inelastic(vi, vj, e, alpha);
-            p.set_velocity(i, a);
-            p.set_velocity(j, b);
+            self.restitution
+                .collide_at_impact(p, (i, j), (vi, vj), s, &mut self.counts);
             self.counts.collisions += 1;
         }
     }
@@ -203,6 +201,11 @@ impl<D: Drive, A: Restitution, G: Geometry> TimeStepped<D, A, G> {
         self.temperature = obs.t_bulk;
         self.drive.observe(&obs);
         Ok(obs)
+    }
+
+    /// A rough gas's rotational observables now; `None` for smooth particles.
+    pub fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
+        self.restitution.rough(p, 1.0, G::CHOICE)
     }
 
     /// Re-synchronizes after the caller changed the velocities.

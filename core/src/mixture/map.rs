@@ -92,6 +92,25 @@ impl<A: Restitution> CollisionMap for MassMap<A> {
         p.set_velocity(j, b);
         (a, b)
     }
+
+    /// [`MassRatio::collide`] with the scattering direction of the impact `n`.
+    #[inline(always)]
+    fn collide_at_impact(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        n: Vec3,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3) {
+        let u = vi - vj;
+        let e = crate::collision::scattering_direction_from_impact(u, n);
+        let alpha = clamped_coefficient(&self.law, u, e, counts);
+        let (a, b) = self.masses.collide(vi, vj, e, alpha);
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        (a, b)
+    }
 }
 
 /// The mass fractions of one pair type: `mu_s = m_s / (m_s + m_t)` and `mu_t`.

@@ -353,19 +353,7 @@ impl Model {
                     wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
                 })
             }
-            SchemeModel::NoSplitting | SchemeModel::Splitting(..) => {
-                wrap(by_split(self.scheme, k, d, a, p, t0), ByScheme::Split)
-            }
-            SchemeModel::TimeStepped(hs, f) => built!(
-                all(feature = "time-stepped", feature = "hard-spheres"),
-                "time-stepped` and `hard-spheres",
-                {
-                    wrap(
-                        TimeStepped::start(hs, d, a, f, p, t0),
-                        ByScheme::TimeStepped,
-                    )
-                }
-            ),
+            _ => wrap(by_split(self.scheme, k, d, a, p, t0), ByScheme::Split),
         }
     }
 }
@@ -635,9 +623,8 @@ fn rough_law<K: Kernel, D: Drive, G: Geometry>(
 /// An engine started, with its observables at the start.
 type Begun<E> = Result<(E, Observables), EngineError>;
 
-/// The scheme level every family but the mixtures shares: the exact loop or a splitting
-/// (smooth spheres' other schemes are [`Model::by_scheme`]'s; validation leaves disks and
-/// rough particles no other).
+/// The scheme level every family but the mixtures shares: the exact loop, a splitting or MS's
+/// time-stepped scheme (smooth spheres' sum form is [`Model::by_scheme`]'s).
 fn by_split<K: Kernel, D: Drive, A: CollisionMap, G: Geometry>(
     scheme: SchemeModel,
     k: K,
@@ -656,9 +643,12 @@ fn by_split<K: Kernel, D: Drive, A: CollisionMap, G: Geometry>(
                 BySplit::Splitting,
             )
         }),
-        SchemeModel::TimeStepped(..) => Err(EngineError::Invariant(
-            "validation refuses the time-stepped scheme for disks and rough particles",
-        )),
+        // Validated: MS's scheme has the hard-sphere kernel.
+        SchemeModel::TimeStepped(hs, f) => built!(
+            all(feature = "time-stepped", feature = "hard-spheres"),
+            "time-stepped` and `hard-spheres",
+            { wrap(TimeStepped::start(hs, d, a, f, p, t0), BySplit::TimeStepped,) }
+        ),
     }
 }
 

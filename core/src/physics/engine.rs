@@ -249,15 +249,18 @@ pub enum ByRoughLaw<K: Kernel, D: Drive, G: Geometry> {
     ImpactSpeed(Built<BySplit<K, D, RoughMap<ImpactSpeed>, G>, IMPACT_SPEED>),
 }
 
-/// By scheme, the exact loop or the splittings, for every family but the mixtures (smooth
-/// spheres add MS's time-stepped scheme and the sum form in [`ByScheme`]): kernel `K`, drive
-/// `D`, collision map `A`, dimension `G`.
+/// By scheme, the exact loop, the splittings or MS's time-stepped scheme, for every family
+/// but the mixtures (smooth spheres add the sum form in [`ByScheme`]): kernel `K`, drive `D`,
+/// collision map `A`, dimension `G`.
 #[derive(Clone, Debug)]
 pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
     /// The exact no-splitting scheme (GRW Section 3).
     NoSplitting(NoSplitting<K, D, A, G>),
     /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
     Splitting(Built<Splitting<K, D, A, G>, SPLITTING>),
+    /// MS's time-stepped scheme (hard spheres or disks only; built only under
+    /// [`ByKernel::HardSpheres`]; features `time-stepped`, `hard-spheres`).
+    TimeStepped(Built<TimeStepped<D, A, G>, TIME_STEPPED>),
 }
 
 /// A mixture's engine by drive, for kernel `K` and dimension `G`.
@@ -346,12 +349,10 @@ pub enum ByLaw<K: Kernel, D: Drive, G: Geometry = Spheres> {
 /// By scheme: the event loops themselves (smooth particles of one species in dimension `G`).
 #[derive(Clone, Debug)]
 pub enum ByScheme<K: Kernel, D: Drive, A: Restitution, G: Geometry = Spheres> {
-    /// The exact no-splitting scheme (GRW Section 3) or Euler or Strang splitting (RW
-    /// Algorithms 1, 2): the scheme level every family shares.
+    /// The exact no-splitting scheme (GRW Section 3), Euler or Strang splitting (RW
+    /// Algorithms 1, 2) or MS's time-stepped scheme: the scheme level every one-species family
+    /// shares.
     Split(BySplit<K, D, A, G>),
-    /// MS's time-stepped scheme (hard spheres or disks only; built only under
-    /// [`ByKernel::HardSpheres`]; features `time-stepped`, `hard-spheres`).
-    TimeStepped(Built<TimeStepped<D, A, G>, TIME_STEPPED>),
     /// The exact scheme of hard spheres with no drive on the sum-form majorant (built only under
     /// [`ByKernel::HardSpheres`] with [`ByDrive::None`], for spheres; feature `hard-spheres`).
     SumForm(Built<SumNoSplitting<A>, HARD_SPHERES>),
@@ -409,7 +410,7 @@ forward!(
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
-forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting);
+forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian);
 forward!(ByMixtureLaw<K, D, G, P>, [K: Kernel, D: Drive, G: Geometry, P: PairModel], Constant, ImpactSpeed);
@@ -417,4 +418,4 @@ forward!(ByRoughLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, Impa
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
-forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, TimeStepped, SumForm);
+forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm);

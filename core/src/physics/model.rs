@@ -53,7 +53,7 @@ impl Model {
         let dimension = super::dimension::dimension(physics, drive)?;
         let rough = match physics.rotation {
             None => None,
-            Some(_) => super::rotation::rotation(physics, law, drive, scheme)?,
+            Some(_) => super::rotation::rotation(physics, law, drive)?,
         };
         Ok(Model {
             n: physics.n,

@@ -4,7 +4,7 @@
 //! rotation's parameters.
 
 use super::error::{Param, PhysicsError, Problem};
-use super::parts::{DriveModel, LawModel, SchemeModel};
+use super::parts::{DriveModel, LawModel};
 use super::{DimensionChoice, MAX_PAIRS, MAX_SPECIES, Physics, RotationChoice};
 use crate::math::Real;
 use crate::restitution::Restitution;
@@ -94,17 +94,7 @@ pub(super) fn mixture_rotation(
     alphas: &[Real],
     betas: Option<&[Real]>,
     thermostat: bool,
-    scheme: SchemeModel,
 ) -> Result<MixtureRotation, PhysicsError> {
-    if matches!(scheme, SchemeModel::TimeStepped(..)) {
-        return refuse(
-            Param::Scheme,
-            Problem::DoesNotFit(
-                "must be no-splitting, Euler or Strang for rough particles (MS's time-stepped \
-                 scheme is written for smooth spheres)",
-            ),
-        );
-    }
     let dim = physics.dimension;
     let list = &physics.species;
     let mut kappa = [0.4; MAX_SPECIES];
@@ -187,29 +177,20 @@ pub(super) fn mixture_rotation(
     })
 }
 
-/// Validates the rotation of `physics` against the law, drive and scheme already validated;
+/// Validates the rotation of `physics` against the law and drive already validated (every
+/// scheme takes rough particles);
 /// `None` when its particles are smooth or form a mixture ([`mixture_rotation`]).
 #[inline(never)]
 pub(super) fn rotation(
     physics: &Physics,
     law: LawModel,
     drive: DriveModel,
-    scheme: SchemeModel,
 ) -> Result<Option<RoughModel>, PhysicsError> {
     let Some(r): Option<RotationChoice> = physics.rotation else {
         return Ok(None);
     };
     if !physics.species.is_empty() {
         return Ok(None);
-    }
-    if matches!(scheme, SchemeModel::TimeStepped(..)) {
-        return refuse(
-            Param::Scheme,
-            Problem::DoesNotFit(
-                "must be no-splitting, Euler or Strang for rough particles (MS's time-stepped \
-                 scheme is written for smooth spheres)",
-            ),
-        );
     }
     // BRS's impact-speed law (9) gives alpha at each collision's normal impact speed (the
     // dispatch puts the model's `law` into the map); the map's own constant is then 1, unused.

@@ -295,7 +295,6 @@ pub(super) fn mixture(
                 &alphas[..types],
                 driven.then_some(&betas[..list.len()]),
                 matches!(drive, DriveModel::Gaussian(_)),
-                scheme,
             )?)
         }
     };

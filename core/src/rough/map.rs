@@ -350,6 +350,28 @@ impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
         (a, b)
     }
 
+    /// At the impact `n` drawn by the caller (MS's time-stepped scheme); with `beta = -1` the
+    /// smooth collision's own code at that impact, so the rough gas has the smooth gas's bits.
+    #[inline(always)]
+    fn collide_at_impact(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        n: Vec3,
+        counts: &mut crate::engine::Counts,
+    ) -> (Vec3, Vec3) {
+        if self.eta_t == 0.0 {
+            return self.law.collide_at_impact(p, (i, j), (vi, vj), n, counts);
+        }
+        let (a, wa, b, wb) = self.collide_counting(vi, p.spin(i), vj, p.spin(j), n, counts);
+        p.set_velocity(i, a);
+        p.set_spin(i, wa);
+        p.set_velocity(j, b);
+        p.set_spin(j, wb);
+        (a, b)
+    }
+
     fn rough(
         &self,
         p: &Particles<'_>,
