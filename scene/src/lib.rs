@@ -66,7 +66,8 @@ pub struct Scene {
     keys: Vec<(gdsmc_core::physics::Param, String)>,
     /// Observation times, increasing.
     pub times: Vec<f64>,
-    /// Index of the first observation time of the steady-state average, if any.
+    /// Index of the first observation time of the steady-state average, if any (it must leave
+    /// two observation times at or after it; [`Scene::set_times`] keeps its start time).
     pub steady_from: Option<usize>,
     /// Random pairs per observation for mu2, mu4 (0: off).
     pub collisional_pairs: u64,
@@ -207,7 +208,32 @@ impl Scene {
             ));
         }
         self.rules(&self.physics, &times)?;
+        // The steady window starts at the same time: its first new observation at or after
+        // the old start (an index into the old times means nothing in the new ones).
+        let steady_from = match self.steady_from {
+            None => None,
+            Some(k) => {
+                let start = self.times.get(k).copied().unwrap_or(f64::INFINITY);
+                let first = times
+                    .iter()
+                    .position(|&t| t >= start)
+                    .unwrap_or(times.len());
+                if first + 2 > times.len() {
+                    return Err(self.invalid(
+                        "observe.steady_from",
+                        format!(
+                            "(t = {start}) must leave at least two of the new observation times \
+                             at or after it (they end at t = {}); set steady_from to None for \
+                             no steady-state average",
+                            times[times.len() - 1]
+                        ),
+                    ));
+                }
+                Some(first)
+            }
+        };
         self.times = times;
+        self.steady_from = steady_from;
         Ok(())
     }
 

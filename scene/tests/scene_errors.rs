@@ -303,3 +303,33 @@ fn a_changed_physics_is_validated_again() {
     assert_eq!(s.model().n(), 100);
     assert_eq!(s.physics().scheme, SchemeChoice::Strang(1.0 / 32.0));
 }
+
+/// `Scene::set_times` keeps the steady-state window's start time (the index follows it into the
+/// new times) and refuses new times that leave fewer than two observations in the window,
+/// naming `observe.steady_from`; the scene is then unchanged.
+#[test]
+fn set_times_keeps_the_steady_windows_start_time() {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/brs-example4.toml"),
+    )
+    .unwrap();
+    let mut s = parse(Path::new("brs-example4.toml"), &text).unwrap();
+    let start = s.times[s.steady_from.unwrap()];
+    assert_eq!(start, 0.5);
+    s.set_times(vec![0.0, 0.25, 0.75, 1.0, 2.0]).unwrap();
+    assert_eq!(
+        s.steady_from,
+        Some(2),
+        "the first new time at or after t = 0.5"
+    );
+    let before = s.clone();
+    let e = s
+        .set_times(vec![0.0, 0.1, 0.2, 0.6])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("`observe.steady_from`") && e.contains("(t = 0.75)"),
+        "{e}"
+    );
+    assert_eq!(s, before);
+}

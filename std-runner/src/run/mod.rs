@@ -194,6 +194,19 @@ fn job<T>(
     stop: &AtomicBool,
     f: impl FnOnce(&EnsembleJob) -> Result<T, Error>,
 ) -> Result<T, Error> {
+    // `steady_from` is a public index: one set by hand past the times is refused, not run.
+    if let Some(k) = scene.steady_from
+        && k + 2 > scene.times.len()
+    {
+        return Err(Error::Argument {
+            flag: "steady_from".to_string(),
+            message: format!(
+                "observation {k} leaves fewer than two of the scene's {} observation times at or \
+                 after it",
+                scene.times.len()
+            ),
+        });
+    }
     f(&EnsembleJob {
         scene,
         model: scene.model(),
