@@ -145,12 +145,14 @@ fn the_same_bad_value_gets_the_same_words() {
                 "drive.kind=host-medium",
                 "drive.kernel=maxwell",
                 "drive.beta=",
+                "drive.drift=[0.0, 0.0, 1.0]",
             ],
-            "particles.dimension",
-            "dimension",
+            "drive.drift",
+            "background_drift",
             |c| {
                 c.dimension = 2;
                 c.drive = gdsmc::GDSMC_DRIVE_HOST_MEDIUM;
+                c.background_drift = [0.0, 0.0, 1.0];
             },
         ),
         (

@@ -197,7 +197,9 @@ impl Scene {
     }
 
     /// Sets the observation times (finite, from 0 on, increasing), validated against the
-    /// physics as [`Scene::with_physics`] does (a splitting scheme's grid). Set the times
+    /// physics as [`Scene::with_physics`] does (a splitting scheme's grid). The steady-state
+    /// window keeps its start time (`steady_from` becomes the first new time at or after it),
+    /// or is dropped (`None`) when fewer than two new times lie in it. Set the times
     /// first when both change. On error the scene is unchanged.
     pub fn set_times(&mut self, times: Vec<f64>) -> Result<(), Error> {
         let ordered = times.windows(2).all(|w| w[0] < w[1]);
@@ -209,29 +211,13 @@ impl Scene {
         }
         self.rules(&self.physics, &times)?;
         // The steady window starts at the same time: its first new observation at or after
-        // the old start (an index into the old times means nothing in the new ones).
-        let steady_from = match self.steady_from {
-            None => None,
-            Some(k) => {
-                let start = self.times.get(k).copied().unwrap_or(f64::INFINITY);
-                let first = times
-                    .iter()
-                    .position(|&t| t >= start)
-                    .unwrap_or(times.len());
-                if first + 2 > times.len() {
-                    return Err(self.invalid(
-                        "observe.steady_from",
-                        format!(
-                            "(t = {start}) must leave at least two of the new observation times \
-                             at or after it (they end at t = {}); set steady_from to None for \
-                             no steady-state average",
-                            times[times.len() - 1]
-                        ),
-                    ));
-                }
-                Some(first)
-            }
-        };
+        // the old start (an index into the old times means nothing in the new ones). Times that
+        // leave it fewer than two observations have no steady window.
+        let steady_from = self.steady_from.and_then(|k| {
+            let start = self.times.get(k).copied().unwrap_or(f64::INFINITY);
+            let first = times.iter().position(|&t| t >= start)?;
+            (first + 2 <= times.len()).then_some(first)
+        });
         self.times = times;
         self.steady_from = steady_from;
         Ok(())

@@ -109,7 +109,6 @@ fn time_stepped_rough_spheres_converge_to_no_splitting() {
     let times = vec![0.0, 0.125, 0.25, 0.5, 1.0];
     let rough = |seed: u64, set: &[&str]| {
         let mut s = shipped_set("rough-white-noise", set, n, m, seed);
-        s.steady_from = None; // the scene's window starts at t = 5, after these times
         s.set_times(times.clone()).expect("valid observation times");
         s
     };
