@@ -78,13 +78,8 @@ impl<A: Restitution> CollisionMap for A {
         rng: &mut R,
         counts: &mut Counts,
     ) -> (Vec3, Vec3) {
-        let u = vi - vj;
-        let e = G::scattering::<K, R>(u, rng);
-        let alpha = clamped_coefficient(self, u, e, counts);
-        let (a, b) = inelastic(vi, vj, e, alpha);
-        p.set_velocity(i, a);
-        p.set_velocity(j, b);
-        (a, b)
+        let e = G::scattering::<K, R>(vi - vj, rng);
+        collide_along(self, p, (i, j), (vi, vj), e, counts)
     }
 
     /// GRW (3) with the scattering direction of the impact `n`
@@ -99,14 +94,27 @@ impl<A: Restitution> CollisionMap for A {
         n: Vec3,
         counts: &mut Counts,
     ) -> (Vec3, Vec3) {
-        let u = vi - vj;
-        let e = scattering_direction_from_impact(u, n);
-        let alpha = clamped_coefficient(self, u, e, counts);
-        let (a, b) = inelastic(vi, vj, e, alpha);
-        p.set_velocity(i, a);
-        p.set_velocity(j, b);
-        (a, b)
+        let e = scattering_direction_from_impact(vi - vj, n);
+        collide_along(self, p, (i, j), (vi, vj), e, counts)
     }
+}
+
+/// GRW (3) for the pair `(i, j)` of velocities `(vi, vj)` with scattering direction `e` and the
+/// law's clamped coefficient: writes and returns the new velocities.
+#[inline(always)]
+fn collide_along<A: Restitution>(
+    law: &A,
+    p: &mut Particles<'_>,
+    (i, j): (usize, usize),
+    (vi, vj): (Vec3, Vec3),
+    e: Vec3,
+    counts: &mut Counts,
+) -> (Vec3, Vec3) {
+    let alpha = clamped_coefficient(law, vi - vj, e, counts);
+    let (a, b) = inelastic(vi, vj, e, alpha);
+    p.set_velocity(i, a);
+    p.set_velocity(j, b);
+    (a, b)
 }
 
 /// The restitution coefficient of a law, clamped to [0, 1] (counted in

@@ -70,6 +70,26 @@ pub struct MassMap<A> {
     pub masses: MassRatio,
 }
 
+impl<A: Restitution> MassMap<A> {
+    /// [`MassRatio::collide`] of the pair `(i, j)` with scattering direction `e` and the law's
+    /// clamped coefficient: writes and returns the new velocities.
+    #[inline(always)]
+    fn collide_along(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        (vi, vj): (Vec3, Vec3),
+        e: Vec3,
+        counts: &mut Counts,
+    ) -> (Vec3, Vec3) {
+        let alpha = clamped_coefficient(&self.law, vi - vj, e, counts);
+        let (a, b) = self.masses.collide(vi, vj, e, alpha);
+        p.set_velocity(i, a);
+        p.set_velocity(j, b);
+        (a, b)
+    }
+}
+
 impl<A: Restitution> CollisionMap for MassMap<A> {
     const SPINS: bool = false;
 
@@ -84,13 +104,8 @@ impl<A: Restitution> CollisionMap for MassMap<A> {
         rng: &mut R,
         counts: &mut Counts,
     ) -> (Vec3, Vec3) {
-        let u = vi - vj;
-        let e = G::scattering::<K, R>(u, rng);
-        let alpha = clamped_coefficient(&self.law, u, e, counts);
-        let (a, b) = self.masses.collide(vi, vj, e, alpha);
-        p.set_velocity(i, a);
-        p.set_velocity(j, b);
-        (a, b)
+        let e = G::scattering::<K, R>(vi - vj, rng);
+        self.collide_along(p, (i, j), (vi, vj), e, counts)
     }
 
     /// [`MassRatio::collide`] with the scattering direction of the impact `n`.
@@ -103,13 +118,8 @@ impl<A: Restitution> CollisionMap for MassMap<A> {
         n: Vec3,
         counts: &mut Counts,
     ) -> (Vec3, Vec3) {
-        let u = vi - vj;
-        let e = crate::collision::scattering_direction_from_impact(u, n);
-        let alpha = clamped_coefficient(&self.law, u, e, counts);
-        let (a, b) = self.masses.collide(vi, vj, e, alpha);
-        p.set_velocity(i, a);
-        p.set_velocity(j, b);
-        (a, b)
+        let e = crate::collision::scattering_direction_from_impact(vi - vj, n);
+        self.collide_along(p, (i, j), (vi, vj), e, counts)
     }
 }
 

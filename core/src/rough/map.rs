@@ -279,6 +279,21 @@ pub(crate) fn impulse(
     (v1 + dv1, w1 - spin.0 * nt, v2 + dv2, w2 - spin.1 * nt)
 }
 
+/// Writes a rough collision's `(v1', w1', v2', w2')` into particles `(i, j)` of `p` and returns
+/// the new velocities (what [`crate::engine::CollisionMap`]'s methods return).
+#[inline(always)]
+pub(crate) fn store(
+    p: &mut Particles<'_>,
+    (i, j): (usize, usize),
+    (a, wa, b, wb): (Vec3, Vec3, Vec3, Vec3),
+) -> (Vec3, Vec3) {
+    p.set_velocity(i, a);
+    p.set_spin(i, wa);
+    p.set_velocity(j, b);
+    p.set_spin(j, wb);
+    (a, b)
+}
+
 /// Whether a rough pair whose spin transfer is `eta_t` collides as smooth particles: `beta =
 /// -1` leaves the rotation alone (`eta_t = 0`), and the smooth collision of the scattering form
 /// (GRW (3)) is then the impact form's in distribution ([`impact_direction`] draws `n` through
@@ -342,12 +357,8 @@ impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
                 .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
         }
         let nrm = G::impact(vi - vj, rng);
-        let (a, wa, b, wb) = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
-        p.set_velocity(i, a);
-        p.set_spin(i, wa);
-        p.set_velocity(j, b);
-        p.set_spin(j, wb);
-        (a, b)
+        let after = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
+        store(p, (i, j), after)
     }
 
     /// At the impact `n` drawn by the caller (MS's time-stepped scheme); with `beta = -1` the
@@ -364,12 +375,8 @@ impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
         if self.eta_t == 0.0 {
             return self.law.collide_at_impact(p, (i, j), (vi, vj), n, counts);
         }
-        let (a, wa, b, wb) = self.collide_counting(vi, p.spin(i), vj, p.spin(j), n, counts);
-        p.set_velocity(i, a);
-        p.set_spin(i, wa);
-        p.set_velocity(j, b);
-        p.set_spin(j, wb);
-        (a, b)
+        let after = self.collide_counting(vi, p.spin(i), vj, p.spin(j), n, counts);
+        store(p, (i, j), after)
     }
 
     fn rough(

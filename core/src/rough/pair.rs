@@ -38,7 +38,7 @@
 //! assert!(((1.0 * a1 + 3.0 * a2) - (1.0 * v1 + 3.0 * v2)).norm() < 1e-15);
 //! ```
 
-use super::map::{RoughError, RoughMap, impulse, smooth_limit};
+use super::map::{RoughError, RoughMap, impulse, smooth_limit, store};
 use crate::engine::collision_map::clamped_at_normal_speed;
 use crate::engine::{CollisionMap, Counts};
 use crate::geometry::Geometry;
@@ -226,12 +226,8 @@ impl<A: Restitution> CollisionMap for RoughPair<A> {
                 .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
         }
         let nrm = G::impact(vi - vj, rng);
-        let (a, wa, b, wb) = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
-        p.set_velocity(i, a);
-        p.set_spin(i, wa);
-        p.set_velocity(j, b);
-        p.set_spin(j, wb);
-        (a, b)
+        let after = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
+        store(p, (i, j), after)
     }
 
     /// At the impact `n` drawn by the caller (MS's time-stepped scheme); with `beta = -1` the
@@ -250,11 +246,7 @@ impl<A: Restitution> CollisionMap for RoughPair<A> {
                 .smooth
                 .collide_at_impact(p, (i, j), (vi, vj), n, counts);
         }
-        let (a, wa, b, wb) = self.collide_counting(vi, p.spin(i), vj, p.spin(j), n, counts);
-        p.set_velocity(i, a);
-        p.set_spin(i, wa);
-        p.set_velocity(j, b);
-        p.set_spin(j, wb);
-        (a, b)
+        let after = self.collide_counting(vi, p.spin(i), vj, p.spin(j), n, counts);
+        store(p, (i, j), after)
     }
 }
