@@ -238,10 +238,21 @@ fn each_kernel_drive_law_and_scheme_starts_exactly_when_built() {
         &[
             (hard, "hard-spheres"),
             (cooling, "cooling"),
-            (
-                cfg!(feature = "time-stepped"),
-                "time-stepped` and `hard-spheres",
-            ),
+            (cfg!(feature = "time-stepped"), "time-stepped"),
+        ],
+    );
+    // Bird's form of it for the other kernels.
+    let stepped = Physics {
+        scheme: SchemeChoice::TimeStepped(0.1),
+        ..base(mx)
+    };
+    starts_exactly_when_built(
+        "time-stepped, Maxwell",
+        stepped,
+        &[
+            (maxwell, "maxwell"),
+            (cooling, "cooling"),
+            (cfg!(feature = "time-stepped"), "time-stepped"),
         ],
     );
 }

@@ -156,13 +156,6 @@ fn every_rule_names_its_parameter() {
         ),
         (
             Physics {
-                scheme: SchemeChoice::TimeStepped(0.01),
-                ..grw3()
-            },
-            Param::Scheme,
-        ),
-        (
-            Physics {
                 kernel: hs,
                 scheme: SchemeChoice::TimeStepped(-1.0),
                 ..grw3()
@@ -332,7 +325,7 @@ fn dispatch_builds_the_hand_composed_loop() {
         |q| {
             let k = HardSpheres::new(1.0, 0.1).unwrap();
             let d = GaussianThermostat::new(0.25).unwrap();
-            let (e, _): (TimeStepped<_, _>, _) =
+            let (e, _): (TimeStepped<_, _, _>, _) =
                 TimeStepped::start(k, d, Constant::new(0.5).unwrap(), 0.05, q, 0.0).unwrap();
             e
         },

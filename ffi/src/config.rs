@@ -32,8 +32,8 @@ pub const GDSMC_SCHEME_NO_SPLITTING: u32 = 0;
 pub const GDSMC_SCHEME_EULER: u32 = 1;
 /// Strang splitting with time step `dt` (RW Algorithm 2).
 pub const GDSMC_SCHEME_STRANG: u32 = 2;
-/// MS's time-stepped scheme (MS Section 3; hard spheres only) with step `step_factor` mean
-/// free paths over the thermal speed.
+/// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS
+/// kernels) with step `step_factor` mean free paths over the thermal speed.
 pub const GDSMC_SCHEME_TIME_STEPPED: u32 = 3;
 
 /// A constant restitution coefficient, field `restitution`.
@@ -166,7 +166,7 @@ pub struct gdsmc_config {
     /// The dimension: 3 (spheres, the default) or 2 (disks: velocities in the (x, y) plane,
     /// `z` components zero; a rough disk's rim velocity along z, `inertia` in (0, 1], 1/2 for
     /// uniform disks). Disks take the schemes, laws and drives spheres take (MS's time-stepped
-    /// scheme: smooth hard disks of one species), one species or a mixture, with the start and
+    /// scheme: one species), one species or a mixture, with the start and
     /// background drifts in the plane.
     pub dimension: u32,
 }

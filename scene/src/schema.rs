@@ -374,8 +374,8 @@ pub enum SchemeKind {
     Euler,
     /// Strang splitting with time step `dt` (RW Algorithm 2).
     Strang,
-    /// The time-stepped scheme of MS Section 3 (hard spheres), step `step_factor` mean free
-    /// paths over the thermal speed.
+    /// The time-stepped scheme of MS Section 3 (hard spheres; Bird's no-time-counter form for
+    /// the other kernels), step `step_factor` mean free paths over the thermal speed.
     TimeStepped,
 }
 

@@ -41,7 +41,7 @@ fn time_stepped_converges_to_no_splitting() {
     assert!(st_fine.counts.collisions > 0 && st_fine.counts.fictitious > 0);
 }
 
-/// MS's scheme on hard disks (`TimeStepped<D, A, Disks>`: `s` on the circle, acceptance
+/// MS's scheme on hard disks (`TimeStepped<K, D, A, Disks>`: `s` on the circle, acceptance
 /// `4 pi^2 gamma C (u . s)`): heated hard disks (scenes/disks-white-noise.toml with the
 /// hard-sphere kernel) at half MS's step agree with the exact scheme at every time jointly (two
 /// independent runs, Bonferroni). The scheme's bias is first order in the step: the steady
@@ -140,5 +140,108 @@ fn time_stepped_rough_spheres_converge_to_no_splitting() {
         }
     }
     assert!(apart >= 2, "beta = 0.3 differs at only {apart} points");
+    assert!(st_stepped.counts.collisions > 0 && st_stepped.counts.fictitious > 0);
+}
+
+/// Bird's no-time-counter form for the Maxwell kernel (every candidate collides, `e` uniform),
+/// on GRW Example 3 (heated Maxwell molecules, `T_bulk`'s exact finite-n mean known:
+/// `MaxwellTemperature::finite_n_bulk_mean`, the no-splitting scheme's process):
+/// - at n = 256 and a fine step (f = 0.01) the mean `T_bulk` equals the exact finite-n mean
+///   within the 99.9% interval at every time jointly (Bonferroni); at f = 2 the step's error is
+///   resolved at some time;
+/// - at n = 8 the scheme's own bias is resolved: its candidates come in whole numbers per step,
+///   so every ensemble collides the same number of times by `t` (here one candidate every
+///   `1/14` time units) where the jump process draws a Poisson number, and each collision
+///   of 8 particles moves `T` by several per cent. The bias is of order `1/n` (measured: 5% at
+///   n = 8 in the steady state, below the 0.7% interval at n = 256).
+#[test]
+fn time_stepped_maxwell_molecules_keep_the_exact_finite_n_mean() {
+    use gdsmc_runner::reference::curves::maxwell_temperature;
+    use gdsmc_stats::{dof, family};
+    let times = vec![0.0, 0.25, 0.5, 1.0, 1.5, 2.0];
+    let stepped = |n: usize, m: u64, f: f64, seed: u64| {
+        let mut s = shipped("grw-example3", n, m, seed);
+        s.set_times(times.clone()).expect("valid observation times");
+        s.with_physics(|ph| ph.scheme = SchemeChoice::TimeStepped(f))
+            .expect("Maxwell molecules take the time-stepped scheme");
+        s
+    };
+    let (n, m) = (256, 600);
+    let fine = stepped(n, m, 0.01, 1131);
+    let mt = maxwell_temperature(&fine).expect("a Maxwell scene's exact curve");
+    let st_fine = run(&fine);
+    let st_coarse = run(&stepped(n, m, 2.0, 1132));
+    let few = 20_000;
+    let st_few = run(&stepped(8, few, 0.01, 1133));
+    let f = family(times.len() - 1, dof(m));
+    let (mut resolved, mut biased) = (false, false);
+    for (ti, &t) in times.iter().enumerate().skip(1) {
+        let exact = mt.finite_n_bulk_mean(n, t);
+        let (a, ca) = at(&st_fine, ti, name::T_BULK);
+        assert!(
+            (a - exact).abs() <= f * ca,
+            "t={t}: time-stepped {a} +- {ca}, exact finite-n mean {exact}"
+        );
+        let (c, cc) = at(&st_coarse, ti, name::T_BULK);
+        resolved |= (c - exact).abs() > f * cc;
+        let (b, cb) = at(&st_few, ti, name::T_BULK);
+        biased |= (b - mt.finite_n_bulk_mean(8, t)).abs() > family(times.len() - 1, dof(few)) * cb;
+    }
+    assert!(resolved, "the coarse steps' error should be visible");
+    assert!(
+        biased,
+        "the whole-number candidate counts' bias should be visible at n = 8"
+    );
+    assert!(st_fine.counts.collisions > 0);
+    assert_eq!(
+        st_fine.counts.fictitious, 0,
+        "Maxwell molecules have no fictitious pair"
+    );
+}
+
+/// The same form for the VHS kernel (`lambda = 1/2`, accepted with `(|u| / Umax)^lambda`): GRW
+/// Example 8's strongly heated gas (alpha = 0.1, beta = 30) at a fine step agrees with the
+/// exact scheme in `T_bulk` and `a2` at every time jointly (two independent runs,
+/// Bonferroni over both columns and the times). The same comparison refuses the exact scheme
+/// of alpha = 0.3 wherever the two lie more than two half-widths apart (at two points at
+/// least).
+#[test]
+fn time_stepped_vhs_converges_to_no_splitting() {
+    use gdsmc_stats::{dof, family};
+    let (n, m) = (128, 2000);
+    let times = vec![0.0, 0.0625, 0.125, 0.25, 0.5];
+    let vhs = |seed: u64, set: &[&str]| {
+        let mut s = shipped_set("grw-example8", set, n, m, seed);
+        s.set_times(times.clone()).expect("valid observation times");
+        s
+    };
+    let st_exact = run(&vhs(1141, &[]));
+    let mut stepped = vhs(1142, &[]);
+    stepped
+        .with_physics(|ph| ph.scheme = SchemeChoice::TimeStepped(0.005))
+        .expect("the VHS kernel takes the time-stepped scheme");
+    let st_stepped = run(&stepped);
+    let st_other = run(&vhs(1143, &["collisions.restitution=0.3"]));
+    let f = family(2 * (times.len() - 1), dof(m));
+    let mut apart = 0;
+    for (ti, &t) in times.iter().enumerate().skip(1) {
+        for col in [name::T_BULK, name::A2] {
+            let (a, ca) = at(&st_exact, ti, col);
+            let (b, cb) = at(&st_stepped, ti, col);
+            let (c, cc) = at(&st_other, ti, col);
+            assert!(
+                (a - b).abs() <= f * (ca * ca + cb * cb).sqrt(),
+                "t={t}: {col} no-splitting {a} +- {ca}, time-stepped {b} +- {cb}"
+            );
+            if (a - c).abs() > 2.0 * f * (ca * ca + cc * cc).sqrt() {
+                apart += 1;
+                assert!(
+                    (b - c).abs() > f * (cb * cb + cc * cc).sqrt(),
+                    "t={t}: {col} time-stepped {b} does not refuse alpha = 0.3's {c}"
+                );
+            }
+        }
+    }
+    assert!(apart >= 2, "alpha = 0.3 differs at only {apart} points");
     assert!(st_stepped.counts.collisions > 0 && st_stepped.counts.fictitious > 0);
 }

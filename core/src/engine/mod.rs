@@ -131,8 +131,12 @@ impl_event_loop!(
     SumNoSplitting<A>
 );
 
-impl<D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry> EventLoop
-    for TimeStepped<D, A, G>
+impl<
+    K: crate::kernel::Kernel,
+    D: crate::drive::Drive,
+    A: CollisionMap,
+    G: crate::geometry::Geometry,
+> EventLoop for TimeStepped<K, D, A, G>
 {
     fn advance_to<R: Rng + ?Sized>(
         &mut self,

@@ -1,6 +1,6 @@
 //! The validated dimension of a [`super::Physics`]: disks (`d = 2`, [`crate::geometry`]) run
 //! the loops composed for them: the no-splitting scheme, the Euler and Strang splittings
-//! (RW Algorithms 1-2) and, for smooth hard disks of one species, MS's time-stepped scheme, with either
+//! (RW Algorithms 1-2) and MS's time-stepped scheme, with either
 //! restitution law (BRS (10)'s normal speed follows from the map GRW (3) in any dimension),
 //! and every drive (white noise in the plane; the thermostats about the peculiar velocity,
 //! which stays in the plane; the host medium of disks, [`crate::drive::host_medium`]), as in
@@ -29,8 +29,8 @@ fn in_plane(drift: crate::vec3::Vec3) -> Result<(), PhysicsError> {
 }
 
 /// Validates the dimension of `physics` against the drive already validated (every scheme runs
-/// on disks: MS's time-stepped one on smooth hard disks, `TimeStepped<D, A, Disks>`; a rough
-/// gas or a mixture refuses it on its own account).
+/// on disks: MS's time-stepped one as `TimeStepped<K, D, A, Disks>`; a mixture refuses it on
+/// its own account).
 pub(super) fn dimension(
     physics: &Physics,
     drive: DriveModel,

@@ -643,12 +643,9 @@ fn by_split<K: Kernel, D: Drive, A: CollisionMap, G: Geometry>(
                 BySplit::Splitting,
             )
         }),
-        // Validated: MS's scheme has the hard-sphere kernel.
-        SchemeModel::TimeStepped(hs, f) => built!(
-            all(feature = "time-stepped", feature = "hard-spheres"),
-            "time-stepped` and `hard-spheres",
-            { wrap(TimeStepped::start(hs, d, a, f, p, t0), BySplit::TimeStepped,) }
-        ),
+        SchemeModel::TimeStepped(f) => built!(feature = "time-stepped", "time-stepped", {
+            wrap(TimeStepped::start(k, d, a, f, p, t0), BySplit::TimeStepped)
+        }),
     }
 }
 

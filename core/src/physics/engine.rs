@@ -73,7 +73,7 @@ const CONSTANT_FORCE: bool = cfg!(feature = "constant-force");
 const HOST_MEDIUM: bool = cfg!(feature = "host-medium");
 const IMPACT_SPEED: bool = cfg!(feature = "impact-speed");
 const SPLITTING: bool = cfg!(feature = "splitting");
-const TIME_STEPPED: bool = cfg!(feature = "time-stepped") && HARD_SPHERES;
+const TIME_STEPPED: bool = cfg!(feature = "time-stepped");
 
 /// A variant's payload at any level (family, kernel, drive, law, scheme): the engine itself
 /// when the build holds it, else [`NotBuilt`] (uninhabited: the variant cannot be made, and
@@ -258,9 +258,9 @@ pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
     NoSplitting(NoSplitting<K, D, A, G>),
     /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
     Splitting(Built<Splitting<K, D, A, G>, SPLITTING>),
-    /// MS's time-stepped scheme (hard spheres or disks only; built only under
-    /// [`ByKernel::HardSpheres`]; features `time-stepped`, `hard-spheres`).
-    TimeStepped(Built<TimeStepped<D, A, G>, TIME_STEPPED>),
+    /// MS's time-stepped scheme (Bird's no-time-counter form for the Maxwell and VHS kernels;
+    /// feature `time-stepped`).
+    TimeStepped(Built<TimeStepped<K, D, A, G>, TIME_STEPPED>),
 }
 
 /// A mixture's engine by drive, for kernel `K` and dimension `G`.

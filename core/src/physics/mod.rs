@@ -164,8 +164,8 @@ pub enum SchemeChoice {
     Euler(Real),
     /// Strang splitting with this time step > 0 (RW Algorithm 2).
     Strang(Real),
-    /// MS's time-stepped scheme (MS Section 3; hard spheres) with this step factor > 0
-    /// (`h = factor lambda / v0`; MS: 0.01).
+    /// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and
+    /// VHS kernels) with this step factor > 0 (`h = factor lambda / v0`; MS: 0.01).
     TimeStepped(Real),
 }
 

@@ -42,7 +42,7 @@ impl Model {
         let kernel = kernel(physics.kernel)?;
         let law = law(physics.restitution)?;
         let drive = drive(physics.drive)?;
-        let scheme = scheme(physics.scheme, kernel, physics.drive)?;
+        let scheme = scheme(physics.scheme, physics.drive)?;
         // The mixture's and the rotation's validations run (and take their stack) only when
         // the physics has species or rotation.
         let mixture = if physics.species.is_empty() {

@@ -46,12 +46,12 @@ pub(super) enum DriveModel {
     HostHardSpheres(HostMedium<HardSphereBackground>),
 }
 
-/// The validated scheme; the time-stepped scheme carries its hard-sphere kernel.
+/// The validated scheme.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum SchemeModel {
     NoSplitting,
     Splitting(SplittingOrder, Real),
-    TimeStepped(HardSpheres, Real),
+    TimeStepped(Real),
 }
 
 fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -240,11 +240,7 @@ pub(super) fn drive(d: DriveChoice) -> Result<DriveModel, PhysicsError> {
     })
 }
 
-pub(super) fn scheme(
-    s: SchemeChoice,
-    k: KernelModel,
-    d: DriveChoice,
-) -> Result<SchemeModel, PhysicsError> {
+pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, PhysicsError> {
     Ok(match s {
         SchemeChoice::NoSplitting => {
             if let DriveChoice::ConstantForce(_) = d {
@@ -268,14 +264,7 @@ pub(super) fn scheme(
             check_step(dt).map_err(|_| not_positive(Param::Dt, dt))?,
         ),
         SchemeChoice::TimeStepped(f) => {
-            let f = check_step(f).map_err(|_| not_positive(Param::StepFactor, f))?;
-            let KernelModel::HardSpheres(hs) = k else {
-                return err(
-                    Param::Scheme,
-                    Problem::DoesNotFit("time-stepped (MS Section 3) needs the hard-sphere kernel"),
-                );
-            };
-            SchemeModel::TimeStepped(hs, f)
+            SchemeModel::TimeStepped(check_step(f).map_err(|_| not_positive(Param::StepFactor, f))?)
         }
     })
 }
