@@ -40,6 +40,7 @@
 //! molecules it is the constant `f / (sqrt(2) 4 pi gamma C)`. The last step before an
 //! observation is shortened to land on it.
 
+use super::collision_map::CollisionMap;
 use super::{Counts, EngineError};
 use crate::drive::Drive;
 use crate::geometry::{Geometry, Spheres};
@@ -50,28 +51,166 @@ use crate::particles::Particles;
 use crate::rng::{Rng, uniform_pair, uniform01};
 use crate::rough::RoughObservables;
 
+/// The collision stage of one pair type (module docs): its kernel, the candidates' bound (MS's
+/// `omega_max` for hard spheres, `Umax` for the VHS kernel, unused for Maxwell molecules) and
+/// the fraction of a candidate carried to the next step. One for a gas of one species
+/// ([`TimeStepped`]), one per pair of species for a mixture
+/// ([`crate::mixture::MixtureTimeStepped`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Stage<K, G> {
+    kernel: K,
+    bound: Real,
+    carry: Real,
+    dim: core::marker::PhantomData<G>,
+}
+
+impl<K: Kernel, G: Geometry> Stage<K, G> {
+    /// A stage of kernel `kernel` whose bound covers no relative speed yet.
+    pub(crate) fn new(kernel: K) -> Self {
+        Stage {
+            kernel,
+            bound: 0.0,
+            carry: 0.0,
+            dim: core::marker::PhantomData,
+        }
+    }
+
+    /// Raises the bound to cover relative speeds up to `umax` (`Umax = 2 max |v - V|` for one
+    /// species).
+    pub(crate) fn cover(&mut self, umax: Real) {
+        self.bound = max(self.bound, self.bound_for(umax));
+    }
+
+    /// MS's `w pi gamma C` of `omega_ij = w pi gamma C (u . s)` (hard spheres and disks).
+    fn omega_factor(&self) -> Real {
+        let strength = self.kernel.as_hard_spheres().map_or(0.0, |h| h.strength());
+        G::OMEGA_FACTOR * PI * strength
+    }
+
+    /// The bound for relative speeds up to `umax`: `omega_max = w pi gamma C Umax` for hard
+    /// spheres, `Umax` itself for the other kernels.
+    fn bound_for(&self, umax: Real) -> Real {
+        if K::HARD {
+            self.omega_factor() * umax
+        } else {
+            umax
+        }
+    }
+
+    /// Candidates per pair and unit time: `omega_max` (hard spheres) or `B_max` (GRW (19)).
+    pub(crate) fn candidate_rate(&self) -> Real {
+        if K::HARD {
+            self.bound
+        } else {
+            self.kernel.b_max(self.bound)
+        }
+    }
+
+    /// The step length `f / (sqrt(2) B(v_0))` for a relative thermal speed `v_0` (module docs;
+    /// hard spheres: MS's `f lambda / v_0`).
+    pub(crate) fn step_length(&self, f: Real, v0: Real) -> Real {
+        let lambda = 1.0 / (sqrt(2.0) * self.kernel.pair_rate(1.0));
+        let speed = if K::HARD {
+            v0
+        } else if K::USES_UMAX {
+            powf(v0, self.kernel.lambda())
+        } else {
+            1.0
+        };
+        f * lambda / speed
+    }
+
+    /// The whole number of candidates of a step of length `h` at `rate` candidates per unit
+    /// time, the fraction carried to the next step.
+    pub(crate) fn count(&mut self, rate: Real, h: Real) -> u64 {
+        let expected = rate * h + self.carry;
+        let m = floor(expected);
+        self.carry = expected - m;
+        m as u64
+    }
+
+    /// One candidate pair `(i, j)` (module docs): hard spheres draw `s` and accept with
+    /// `Theta(u . s) omega_ij / omega_max`, the other kernels accept with `(|u| / Umax)^lambda`;
+    /// a candidate above the bound raises it and is counted. An accepted pair collides by
+    /// `map`.
+    #[inline(always)]
+    pub(crate) fn candidate<A: CollisionMap, R: Rng + ?Sized>(
+        &mut self,
+        map: &A,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        rng: &mut R,
+        counts: &mut Counts,
+    ) {
+        counts.candidates += 1;
+        if K::HARD {
+            let s = G::direction(rng);
+            let (vi, vj) = (p.velocity(i), p.velocity(j));
+            let un = (vi - vj).dot(s);
+            if un <= 0.0 {
+                counts.fictitious += 1;
+                return;
+            }
+            let omega = self.omega_factor() * un;
+            let bound = self.bound;
+            if omega > bound {
+                counts.overshoots += 1;
+                self.bound = omega;
+            }
+            if uniform01(rng) * bound >= omega {
+                counts.fictitious += 1;
+                return;
+            }
+            map.collide_at_impact(p, (i, j), (vi, vj), s, counts);
+        } else {
+            let (vi, vj) = (p.velocity(i), p.velocity(j));
+            if K::USES_UMAX {
+                let u2 = (vi - vj).norm2();
+                let umax = self.bound;
+                if u2 > umax * umax {
+                    counts.overshoots += 1;
+                    self.bound = sqrt(u2);
+                }
+                if !self.kernel.accepts(u2, umax, uniform01(rng)) {
+                    counts.fictitious += 1;
+                    return;
+                }
+            }
+            map.collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
+        }
+        counts.collisions += 1;
+    }
+}
+
+/// The next step from `t` towards `t_end` of full length `full`: its length `h` (the last one
+/// shortened to land on `t_end`; all of it when `full` is not finite and positive) and the time
+/// it ends at.
+pub(crate) fn next_step(t: Real, t_end: Real, full: Real) -> (Real, Real) {
+    let h = if full.is_finite() && full > 0.0 {
+        min(full, t_end - t)
+    } else {
+        t_end - t
+    };
+    (h, if t_end - t <= h { t_end } else { t + h })
+}
+
 /// MS's time-stepped scheme (Bird's no-time-counter form for kernels other than hard spheres)
 /// with kernel `K`, drive `D` and collision map `A` (a restitution law: smooth particles;
 /// [`crate::rough::RoughMap`]: rough ones, whose impact direction is hard spheres' candidate
 /// `s`) in dimension `G` (module docs).
 #[derive(Clone, Debug)]
 pub struct TimeStepped<K, D, A, G = Spheres> {
-    dim: core::marker::PhantomData<G>,
-    kernel: K,
+    stage: Stage<K, G>,
     drive: D,
     restitution: A,
     step_factor: Real,
     t: Real,
     temperature: Real,
-    /// The candidates' bound: MS's `omega_max` for hard spheres, `Umax` for the VHS kernel
-    /// (unused for Maxwell molecules).
-    bound: Real,
-    carry: Real,
     steps: u64,
     counts: Counts,
 }
 
-impl<K: Kernel, D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepped<K, D, A, G> {
+impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> TimeStepped<K, D, A, G> {
     /// Starts at `t0` with step factor `f > 0` (`h = f lambda / v_0`; MS: 0.01) on particles
     /// holding the initial velocities (and, for a rough map, one spin each:
     /// [`EngineError::Spins`] otherwise). The bound starts from `Umax = 2 max |v - V|`.
@@ -94,20 +233,17 @@ impl<K: Kernel, D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepp
         }
         p.reset_kick_times(t0);
         let mut s = TimeStepped {
-            dim: core::marker::PhantomData,
-            kernel,
+            stage: Stage::new(kernel),
             drive,
             restitution,
             step_factor,
             t: t0,
             temperature: 0.0,
-            bound: 0.0,
-            carry: 0.0,
             steps: 0,
             counts: Counts::default(),
         };
         let obs = s.synchronized(p)?;
-        s.bound = s.bound_for(2.0 * obs.max_peculiar_speed);
+        s.stage.cover(2.0 * obs.max_peculiar_speed);
         Ok((s, obs))
     }
 
@@ -125,7 +261,7 @@ impl<K: Kernel, D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepp
     /// candidates `(1/2) (n - 1) omega_max` (`B_max` for other kernels) and `n` kicks per step
     /// of [`Self::step_length`].
     pub fn work_rate(&self, n: usize) -> Real {
-        let candidates = 0.5 * (n.max(1) - 1) as Real * self.candidate_rate();
+        let candidates = 0.5 * (n.max(1) - 1) as Real * self.stage.candidate_rate();
         candidates + n as Real / self.step_length(self.temperature)
     }
 
@@ -134,44 +270,11 @@ impl<K: Kernel, D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepp
         self.steps
     }
 
-    /// The step length at temperature `t`: `f / (sqrt(2) B(v_0))`, for hard spheres MS's
-    /// `f lambda / v_0` (module docs).
+    /// The step length at temperature `t`: `f / (sqrt(2) B(v_0))`, `v_0 = (2 T)^{1/2}`; for
+    /// hard spheres MS's `f lambda / v_0` (module docs).
     pub fn step_length(&self, temperature: Real) -> Real {
-        let lambda = 1.0 / (sqrt(2.0) * self.kernel.pair_rate(1.0));
-        let v0 = sqrt(2.0 * temperature);
-        let speed = if K::HARD {
-            v0
-        } else if K::USES_UMAX {
-            powf(v0, self.kernel.lambda())
-        } else {
-            1.0
-        };
-        self.step_factor * lambda / speed
-    }
-
-    /// MS's `w pi gamma C` of `omega_ij = w pi gamma C (u . s)` (hard spheres and disks).
-    fn omega_factor(&self) -> Real {
-        let strength = self.kernel.as_hard_spheres().map_or(0.0, |h| h.strength());
-        G::OMEGA_FACTOR * PI * strength
-    }
-
-    /// The bound for relative speeds up to `umax`: `omega_max = w pi gamma C Umax` for hard
-    /// spheres, `Umax` itself for the other kernels.
-    fn bound_for(&self, umax: Real) -> Real {
-        if K::HARD {
-            self.omega_factor() * umax
-        } else {
-            umax
-        }
-    }
-
-    /// Candidates per pair and unit time: `omega_max` (hard spheres) or `B_max` (GRW (19)).
-    fn candidate_rate(&self) -> Real {
-        if K::HARD {
-            self.bound
-        } else {
-            self.kernel.b_max(self.bound)
-        }
+        self.stage
+            .step_length(self.step_factor, sqrt(2.0 * temperature))
     }
 
     /// Runs steps up to `t_end` (the last one shortened to land on it) and returns the
@@ -190,18 +293,17 @@ impl<K: Kernel, D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepp
         }
         let mut obs = None;
         while self.t < t_end {
-            let full = self.step_length(self.temperature);
-            let h = if full.is_finite() && full > 0.0 {
-                min(full, t_end - self.t)
-            } else {
-                t_end - self.t
-            };
-            self.collide(p, h, rng);
-            self.t = if t_end - self.t <= h {
-                t_end
-            } else {
-                self.t + h
-            };
+            let (h, t_next) = next_step(self.t, t_end, self.step_length(self.temperature));
+            let n = p.len();
+            let m = self
+                .stage
+                .count(0.5 * (n - 1) as Real * self.stage.candidate_rate(), h);
+            for _ in 0..m {
+                let pair = uniform_pair(rng, n);
+                self.stage
+                    .candidate(&self.restitution, p, pair, rng, &mut self.counts);
+            }
+            self.t = t_next;
             self.drive
                 .kick_all_counting(p, self.t, rng, &mut self.counts.background);
             self.steps += 1;
@@ -214,78 +316,6 @@ impl<K: Kernel, D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepp
         match obs {
             Some(o) => Ok(o),
             None => self.synchronized(p),
-        }
-    }
-
-    /// The collision stage of one step (MS Section 3; module docs).
-    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, h: Real, rng: &mut R) {
-        let n = p.len();
-        let expected = 0.5 * (n - 1) as Real * self.candidate_rate() * h + self.carry;
-        let m = floor(expected);
-        self.carry = expected - m;
-        if K::HARD {
-            self.collide_hard(p, m as u64, rng);
-        } else {
-            self.collide_kernel(p, m as u64, rng);
-        }
-    }
-
-    /// `m` candidates of MS Section 3: a direction `s` each, accepted with
-    /// `Theta(u . s) omega_ij / omega_max`, collided at the impact `s`.
-    fn collide_hard<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, m: u64, rng: &mut R) {
-        let n = p.len();
-        let k16 = self.omega_factor();
-        for _ in 0..m {
-            let (i, j) = uniform_pair(rng, n);
-            let s = G::direction(rng);
-            let (vi, vj) = (p.velocity(i), p.velocity(j));
-            let u = vi - vj;
-            let un = u.dot(s);
-            self.counts.candidates += 1;
-            if un <= 0.0 {
-                self.counts.fictitious += 1;
-                continue;
-            }
-            let omega = k16 * un;
-            let bound = self.bound;
-            if omega > bound {
-                self.counts.overshoots += 1;
-                self.bound = omega;
-            }
-            if uniform01(rng) * bound >= omega {
-                self.counts.fictitious += 1;
-                continue;
-            }
-            self.restitution
-                .collide_at_impact(p, (i, j), (vi, vj), s, &mut self.counts);
-            self.counts.collisions += 1;
-        }
-    }
-
-    /// `m` candidates of Bird's scheme with the kernel's majorant: accepted with
-    /// `(|u| / Umax)^lambda` (GRW (20); Maxwell: always), collided by the map as the
-    /// no-splitting scheme does.
-    fn collide_kernel<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, m: u64, rng: &mut R) {
-        let n = p.len();
-        for _ in 0..m {
-            let (i, j) = uniform_pair(rng, n);
-            let (vi, vj) = (p.velocity(i), p.velocity(j));
-            self.counts.candidates += 1;
-            if K::USES_UMAX {
-                let u2 = (vi - vj).norm2();
-                let umax = self.bound;
-                if u2 > umax * umax {
-                    self.counts.overshoots += 1;
-                    self.bound = sqrt(u2);
-                }
-                if !self.kernel.accepts(u2, umax, uniform01(rng)) {
-                    self.counts.fictitious += 1;
-                    continue;
-                }
-            }
-            self.restitution
-                .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, &mut self.counts);
-            self.counts.collisions += 1;
         }
     }
 
@@ -305,7 +335,7 @@ impl<K: Kernel, D: Drive, A: crate::engine::CollisionMap, G: Geometry> TimeStepp
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
         p.reset_kick_times(self.t);
         let obs = self.synchronized(p)?;
-        self.bound = max(self.bound, self.bound_for(2.0 * obs.max_peculiar_speed));
+        self.stage.cover(2.0 * obs.max_peculiar_speed);
         Ok(obs)
     }
 }

@@ -1,6 +1,7 @@
 //! Granular mixtures: several species of different masses, kernels and restitution
 //! coefficients in one homogeneous gas, simulated exactly (no time step) by the no-splitting
-//! scheme with one majorant per pair of species.
+//! scheme with one majorant per pair of species, by RW's splittings of it, or by MS's
+//! time-stepped scheme with one collision stage per pair of species.
 //!
 //! - [`Species`]: counts and masses, the particles of each species a contiguous range of the
 //!   caller's buffer, the pair types `(s, t)`;
@@ -11,6 +12,7 @@
 //!   species), the pair law (one per pair type) and the dimension;
 //! - [`MixtureSplitting`]: RW's Euler and Strang splittings on it (its collision process with
 //!   the drives off, then every species kicked);
+//! - [`MixtureTimeStepped`]: MS's time-stepped scheme, one collision stage per pair type;
 //! - [`MixtureObservables`]: each species' moments and temperature `T_s` about the flow
 //!   velocity (Garzó and Dufty 1999).
 //!
@@ -41,9 +43,11 @@ pub mod nosplit;
 pub mod observables;
 pub mod species;
 pub mod splitting;
+pub mod time_stepped;
 
 pub use map::{MassMap, MassRatio, PairLaw};
 pub use nosplit::{MixtureNoSplitting, PairPhysics, StartError};
 pub use observables::MixtureObservables;
 pub use species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 pub use splitting::MixtureSplitting;
+pub use time_stepped::MixtureTimeStepped;

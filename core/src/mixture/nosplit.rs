@@ -206,6 +206,17 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         self.physical(p, obs)
     }
 
+    /// The collision map of pair type `k` (the time-stepped scheme's table).
+    pub(super) fn pair_map(&self, k: usize) -> L::Map {
+        self.maps[k]
+    }
+
+    /// The majorant `U_st` of pair type `k` in physical units (the time-stepped scheme's
+    /// start; 0 for the Maxwell kernel, which keeps none).
+    pub(super) fn pair_bound(&self, k: usize) -> Real {
+        self.frame.scale * self.pair_umax(k)
+    }
+
     /// The majorant `U_st` of pair type `k` (stored units).
     #[inline(always)]
     fn pair_umax(&self, k: usize) -> Real {

@@ -26,7 +26,9 @@ use crate::engine::{
 use crate::geometry::{DimensionChoice, Disks, Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
-use crate::mixture::{MixtureNoSplitting, MixtureSplitting, PairLaw, PairPhysics, StartError};
+use crate::mixture::{
+    MixtureNoSplitting, MixtureSplitting, MixtureTimeStepped, PairLaw, PairPhysics, StartError,
+};
 use crate::moments::Observables;
 use crate::particles::{Particle, Particles, Spin};
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
@@ -380,8 +382,7 @@ fn pair_table<K: Kernel, L: Copy>(
 }
 
 /// Starts a mixture loop of dimension `G` with the pair table `physics` and one drive per
-/// species from `drives`: the exact loop, or a splitting of it (validation leaves a mixture
-/// no other scheme).
+/// species from `drives`: the exact loop, a splitting of it, or the time-stepped scheme.
 fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
     mx: &MixtureModel,
     scheme: SchemeModel,
@@ -401,7 +402,13 @@ fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
                 ByMixtureScheme::Splitting,
             )
         }),
-        _ => wrap(
+        SchemeModel::TimeStepped(f) => built!(feature = "time-stepped", "time-stepped", {
+            wrap(
+                started(MixtureTimeStepped::start(sp, physics, drives, f, p, t0)),
+                ByMixtureScheme::TimeStepped,
+            )
+        }),
+        SchemeModel::NoSplitting => wrap(
             started(MixtureNoSplitting::start_in(sp, physics, drives, p, t0)),
             ByMixtureScheme::NoSplitting,
         ),

@@ -21,7 +21,9 @@ use crate::engine::{
 use crate::geometry::{Disks, Geometry, Spheres};
 use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
 use crate::math::Real;
-use crate::mixture::{MixtureNoSplitting, MixtureObservables, MixtureSplitting, PairLaw};
+use crate::mixture::{
+    MixtureNoSplitting, MixtureObservables, MixtureSplitting, MixtureTimeStepped, PairLaw,
+};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
@@ -316,6 +318,8 @@ pub enum ByMixtureScheme<K: Kernel, D: Drive, L: PairLaw, G: Geometry> {
     NoSplitting(MixtureNoSplitting<K, D, L, G>),
     /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
     Splitting(Built<MixtureSplitting<K, D, L, G>, SPLITTING>),
+    /// MS's time-stepped scheme, one collision stage per pair type (feature `time-stepped`).
+    TimeStepped(Built<MixtureTimeStepped<K, D, L, G>, TIME_STEPPED>),
 }
 
 /// By drive, for kernel `K`.
@@ -415,7 +419,7 @@ forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, G
 forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian);
 forward!(ByMixtureLaw<K, D, G, P>, [K: Kernel, D: Drive, G: Geometry, P: PairModel], Constant, ImpactSpeed);
 forward!(ByRoughLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
-forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting);
+forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
 forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm);

@@ -48,7 +48,7 @@ impl Model {
         let mixture = if physics.species.is_empty() {
             None
         } else {
-            super::species::mixture(physics, kernel, law, drive, scheme)?
+            super::species::mixture(physics, kernel, law, drive)?
         };
         let dimension = super::dimension::dimension(physics, drive)?;
         let rough = match physics.rotation {

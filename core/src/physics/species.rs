@@ -3,7 +3,7 @@
 //! [`Constant::new`], [`WhiteNoise::new`]), refusals named by species or pair.
 
 use super::error::{Param, PhysicsError, Problem};
-use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
+use super::parts::{DriveModel, KernelModel, LawModel};
 use super::rotation::{MixtureRotation, mixture_rotation};
 use super::{DimensionChoice, MAX_PAIRS, MAX_SPECIES, Physics, SpeciesChoice};
 use crate::drive::WhiteNoise;
@@ -122,15 +122,14 @@ fn start(k: usize, c: &SpeciesChoice) -> Result<Maxwellian, PhysicsError> {
     })
 }
 
-/// Validates the species of `physics` against the kernel, law, drive and scheme already
-/// validated; `None` when it has no species.
+/// Validates the species of `physics` against the kernel, law and drive already validated
+/// (every scheme takes a mixture); `None` when it has no species.
 #[inline(never)]
 pub(super) fn mixture(
     physics: &Physics,
     kernel: KernelModel,
     law: LawModel,
     drive: DriveModel,
-    scheme: SchemeModel,
 ) -> Result<Option<Kept>, PhysicsError> {
     let list = &physics.species;
     if list.is_empty() {
@@ -171,15 +170,6 @@ pub(super) fn mixture(
                 problem: Problem::DoesNotFit("is not a valid list of species"),
             },
         })?;
-    if matches!(scheme, SchemeModel::TimeStepped(..)) {
-        return refuse(
-            Param::Scheme,
-            Problem::DoesNotFit(
-                "must be no-splitting, Euler or Strang for a mixture (MS's time-stepped scheme \
-                 is written for one species)",
-            ),
-        );
-    }
     let mut noises = [WhiteNoise::new(0.0).expect("0 is a valid strength"); MAX_SPECIES];
     match drive {
         // The Gaussian thermostat acts on every species about the mixture's flow velocity,
