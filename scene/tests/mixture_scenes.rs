@@ -88,14 +88,21 @@ fn bad_species_values_name_line_and_key() {
     assert!(e.contains("`drive.beta` must be >= 0"), "{e}");
     let e = err(&MIX.replace(
         "kind = \"white-noise\"\nbeta = 1.0",
-        "kind = \"host-medium\"\nkernel = \"maxwell\"",
+        "kind = \"constant-force\"\ng = 1.0\n[scheme]\nkind = \"euler\"\ndt = 0.1",
     ));
     assert!(
-        e.contains(
-            "`species` take only no drive, white noise (per species) or the Gaussian thermostat"
-        ),
+        e.contains("`species` take no drive, white noise (per species), the Gaussian thermostat or a host medium, not the constant force"),
         "{e}"
     );
+    // A host medium: every species meets the background with its own mass.
+    parse(
+        Path::new("mix.toml"),
+        &MIX.replace(
+            "kind = \"white-noise\"\nbeta = 1.0",
+            "kind = \"host-medium\"\nkernel = \"maxwell\"",
+        ),
+    )
+    .expect("mixtures take a host medium");
     // The Gaussian thermostat acts on every species (about the flow velocity).
     let s = parse(
         Path::new("mix.toml"),

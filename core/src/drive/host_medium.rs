@@ -19,7 +19,8 @@
 //!   probability `1 - |v - w| / (|v - u^B| + |w - u^B|)` (BRS
 //!   Algorithm 2). The majorant is recomputed after each background event, when `v` changes.
 //!
-//! Grains have unit mass; `T^B`, `m^B` are the background's temperature and mass.
+//! Grains have unit mass (a mixture's species their own: [`HostMediumParams::for_grain`]);
+//! `T^B`, `m^B` are the background's temperature and mass.
 //!
 //! Disks (`d = 2`, [`crate::geometry`]): BRS writes spheres; in the plane the kernels keep
 //! their total rate (`int B_1 domega = 4 pi C_1 |g|^lambda`, the grains' own convention), the
@@ -101,9 +102,18 @@ impl HostMediumParams {
         })
     }
 
-    /// The mass ratio `alpha = m^B / (m + m^B)` of BRS (3) (unit grain mass).
+    /// The mass ratio `alpha = m^B / (m + m^B)` of BRS (3) (unit grain mass unless
+    /// [`HostMediumParams::for_grain`] set it).
     pub fn mass_ratio(&self) -> Real {
         self.ratio.get()
+    }
+
+    /// The same background met by grains of mass `m` (a mixture's species): the mass ratio of
+    /// BRS (3) becomes `m^B / (m + m^B)`, the rest (density, `C_1`, partners) is the
+    /// background's. `None` unless `m` is finite and positive.
+    pub fn for_grain(self, m: Real) -> Option<Self> {
+        let ratio = MassRatio::new(m, self.background.mass())?;
+        Some(HostMediumParams { ratio, ..self })
     }
 }
 

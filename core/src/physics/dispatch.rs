@@ -19,7 +19,8 @@ use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
 use super::rotation::{MixtureRotation, RoughModel};
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
-use crate::drive::{Drive, NoDrive, WhiteNoiseIn};
+use crate::drive::host_medium::BackgroundKernel;
+use crate::drive::{Drive, HostMedium, NoDrive, WhiteNoiseIn};
 use crate::engine::{
     CollisionMap, EngineError, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
 };
@@ -442,6 +443,18 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
                 ByMixtureDrive::Gaussian,
             )
         ),
+        DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
+            wrap(
+                mixture_law::<K, _, G>(mx, k, m, &species_hosts(mx, h)?, p, t0),
+                ByMixtureDrive::HostMaxwell,
+            )
+        }),
+        DriveModel::HostHardSpheres(h) => built!(feature = "host-medium", "host-medium", {
+            wrap(
+                mixture_law::<K, _, G>(mx, k, m, &species_hosts(mx, h)?, p, t0),
+                ByMixtureDrive::HostHardSpheres,
+            )
+        }),
         _ => built!(feature = "cooling", "cooling", {
             wrap(
                 mixture_law::<K, _, G>(mx, k, m, &[NoDrive; MAX_SPECIES], p, t0),
@@ -449,6 +462,24 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
             )
         }),
     }
+}
+
+/// The host medium `h` in dimension `G` as each species of `mx` meets it, with its own mass
+/// ([`HostMediumParams::for_grain`](crate::drive::HostMediumParams::for_grain)).
+fn species_hosts<B: BackgroundKernel, G: Geometry>(
+    mx: &MixtureModel,
+    h: HostMedium<B>,
+) -> Result<[HostMedium<B, G>; MAX_SPECIES], EngineError> {
+    let sp = &mx.species;
+    let mut hosts = [h.in_dim::<G>(); MAX_SPECIES];
+    for (s, host) in hosts.iter_mut().enumerate().take(sp.len()) {
+        // Validated: every species' mass is finite and positive.
+        host.params = h
+            .params
+            .for_grain(sp.mass(s))
+            .ok_or(EngineError::Invariant("a species' mass is positive"))?;
+    }
+    Ok(hosts)
 }
 
 /// A smooth mixture's law level: each pair type's constant, or BRS's impact-speed law for
@@ -518,6 +549,23 @@ fn rough_mixture<K: Kernel, G: Geometry>(
                 ByRoughMixtureDrive::Gaussian
             )
         );
+    }
+    // Validated: a host medium has no rotational noise beside it.
+    if let DriveModel::HostMaxwell(h) = m.drive {
+        return built!(feature = "host-medium", "host-medium", {
+            wrap(
+                rough_pairs::<K, _, G>(mx, laws, m, k, &species_hosts(mx, h)?, p, t0),
+                ByRoughMixtureDrive::HostMaxwell,
+            )
+        });
+    }
+    if let DriveModel::HostHardSpheres(h) = m.drive {
+        return built!(feature = "host-medium", "host-medium", {
+            wrap(
+                rough_pairs::<K, _, G>(mx, laws, m, k, &species_hosts(mx, h)?, p, t0),
+                ByRoughMixtureDrive::HostHardSpheres,
+            )
+        });
     }
     match &rot.noises {
         Some(noises) => built!(feature = "white-noise", "white-noise", {

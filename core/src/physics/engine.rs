@@ -201,6 +201,15 @@ pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
     /// The Gaussian thermostat (MS (12)) on every species' translation, about the flow
     /// velocity (feature `gaussian-thermostat`).
     Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G, RoughPairs>, GAUSSIAN>),
+    /// A host medium of Maxwell background kernel met by each species with its own mass, the
+    /// encounters smooth (BRS (2), (11); feature `host-medium`).
+    HostMaxwell(
+        Built<ByMixtureLaw<K, HostMedium<MaxwellBackground, G>, G, RoughPairs>, HOST_MEDIUM>,
+    ),
+    /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
+    HostHardSpheres(
+        Built<ByMixtureLaw<K, HostMedium<HardSphereBackground, G>, G, RoughPairs>, HOST_MEDIUM>,
+    ),
 }
 
 /// Smooth disks by drive, for kernel `K`.
@@ -275,6 +284,11 @@ pub enum ByMixtureDrive<K: Kernel, G: WhiteNoiseIn> {
     /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity (feature
     /// `gaussian-thermostat`).
     Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G>, GAUSSIAN>),
+    /// A host medium of Maxwell background kernel met by each species with its own mass
+    /// (BRS (2), (11); feature `host-medium`).
+    HostMaxwell(Built<ByMixtureLaw<K, HostMedium<MaxwellBackground, G>, G>, HOST_MEDIUM>),
+    /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
+    HostHardSpheres(Built<ByMixtureLaw<K, HostMedium<HardSphereBackground, G>, G>, HOST_MEDIUM>),
 }
 
 /// The particle model of a mixture's pair types over a restitution law `A`: smooth particles
@@ -415,8 +429,8 @@ forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting, TimeStepped);
-forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian);
-forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian);
+forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian, HostMaxwell, HostHardSpheres);
+forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, HostMaxwell, HostHardSpheres);
 forward!(ByMixtureLaw<K, D, G, P>, [K: Kernel, D: Drive, G: Geometry, P: PairModel], Constant, ImpactSpeed);
 forward!(ByRoughLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);

@@ -176,6 +176,9 @@ pub(super) fn mixture(
         // which collisions and the thermostat keep: exact between synchronizations (on
         // translation alone for rough particles).
         DriveModel::None | DriveModel::Gaussian(_) => {}
+        // Every species meets the one background (its density, temperature, drift and
+        // kernel constant `C_1`) with its own mass in BRS (3)'s ratio.
+        DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => {}
         DriveModel::WhiteNoise(_) => {
             for (k, c) in list.iter().enumerate() {
                 noises[k] = WhiteNoise::new(c.beta).ok_or(PhysicsError {
@@ -192,9 +195,9 @@ pub(super) fn mixture(
             return refuse(
                 Param::Species,
                 Problem::DoesNotFit(
-                    "take only no drive, white noise (per species) or the Gaussian thermostat \
-                     (the constant force's momentum correction, MS (62), and BRS's host medium \
-                     are written for one species of one mass)",
+                    "take no drive, white noise (per species), the Gaussian thermostat or a host \
+                     medium, not the constant force (its momentum-keeping correction, MS (62), \
+                     is written for one species of one mass)",
                 ),
             );
         }

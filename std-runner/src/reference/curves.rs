@@ -154,6 +154,10 @@ fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianA
     if ph.rotation.is_some() || ph.dimension != gdsmc_core::physics::DimensionChoice::Three {
         return None;
     }
+    // Nor does it know a host medium, whose encounters move each species' temperature.
+    if matches!(ph.drive, DriveChoice::HostMedium { .. }) {
+        return None;
+    }
     let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
     let sp = scene.model().species()?;
     let (kappa, alpha) = crate::run::cooling::pair_kernels(ph, sp)?
@@ -185,9 +189,13 @@ const ROUGH_SPECIES_REFERENCES: [&str; gdsmc_core::mixture::MAX_SPECIES] =
 pub fn rough_mixture_approximation(
     scene: &Scene,
 ) -> Option<crate::reference::rough_mixture::RoughMixtureApproximation> {
-    // The thermostat on translation alone moves the cooling state's theta: the approximation
-    // (noise and collisions) does not follow it, so it draws nothing there.
-    if matches!(scene.physics().drive, DriveChoice::Gaussian(_)) {
+    // The thermostat on translation alone moves the cooling state's theta, and a host medium
+    // every temperature: the approximation (noise and collisions) follows neither, so it
+    // draws nothing there.
+    if matches!(
+        scene.physics().drive,
+        DriveChoice::Gaussian(_) | DriveChoice::HostMedium { .. }
+    ) {
         return None;
     }
     // The approximation takes each pair's constant alpha; under the impact-speed law alpha

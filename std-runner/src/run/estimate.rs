@@ -142,7 +142,12 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         }
         DriveChoice::HostMedium {
             temperature, mass, ..
-        } => t0.max(temperature / mass),
+        } => {
+            // Grains of mass m settle at the velocity variance T^B/m (with T^B/m^B the
+            // background's own): a mixture's lightest species moves fastest.
+            let lightest = p.species.iter().map(|s| s.mass).fold(1.0, f64::min);
+            t0.max(temperature / mass).max(temperature / lightest)
+        }
         DriveChoice::ConstantForce(g) => {
             // (2/3) g <|c|> = zeta_0 (T/T0)^s T with <|c|> = sqrt(8 T/pi): the balance, and
             // the speed g t the force adds with no collision at all.
