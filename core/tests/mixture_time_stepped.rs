@@ -9,7 +9,9 @@
 
 mod common;
 
-use gdsmc_core::drive::{Drive, GaussianThermostat, NoDrive, PlanarWhiteNoise, WhiteNoise};
+use gdsmc_core::drive::{
+    ConstantForce, Drive, GaussianThermostat, NoDrive, PlanarWhiteNoise, WhiteNoise,
+};
 use gdsmc_core::engine::{CollisionMap, EventLoop, TimeStepped};
 use gdsmc_core::geometry::{Disks, Geometry, Spheres};
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
@@ -101,6 +103,8 @@ fn a_one_species_mixture_is_the_time_stepped_loop_bit_for_bit() {
     let noise = WhiteNoise::new(1.0).unwrap();
     same_as_one_species::<_, _, _, _, Spheres>(hs, noise, a, a, 200, 0.02, &times);
     same_as_one_species::<_, _, _, _, Spheres>(mx, NoDrive, a, a, 200, 0.02, &times);
+    let force = ConstantForce::new(0.5).unwrap();
+    same_as_one_species::<_, _, _, _, Spheres>(hs, force, a, a, 200, 0.02, &times);
     let gauss = GaussianThermostat::new(0.25).unwrap();
     same_as_one_species::<_, _, _, _, Spheres>(vhs, gauss, a, a, 200, 0.02, &times);
     let planar = PlanarWhiteNoise::new(1.0).unwrap();
@@ -114,4 +118,77 @@ fn a_one_species_mixture_is_the_time_stepped_loop_bit_for_bit() {
     let disks = RoughPairLaw::for_disks(0.8, 0.5, 0.5, 0.5).unwrap();
     let disk_map = RoughMap::for_disks(0.8, 0.5, 0.5).unwrap();
     same_as_one_species::<_, _, _, _, Disks>(hs, NoDrive, disk_map, disks, 200, 0.02, &times);
+}
+
+/// The constant force on a mixture (masses 1 and 4, smooth and rough, by the time-stepped
+/// scheme and Strang's splitting): its correction is weighted by mass, so the total momentum
+/// `sum m v` is kept to rounding (collisions keep it too), while the unweighted mean velocity
+/// moves (the force is not a no-op).
+#[test]
+fn the_constant_force_keeps_a_mixtures_momentum() {
+    use gdsmc_core::physics::{
+        DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice, SchemeChoice,
+        SpeciesChoice,
+    };
+    let masses = [1.0, 4.0];
+    for scheme in [SchemeChoice::TimeStepped(0.05), SchemeChoice::Strang(0.05)] {
+        for rough in [false, true] {
+            let mut ph = Physics::new(
+                64,
+                KernelChoice::HardSpheres {
+                    gamma: 1.0,
+                    c: 0.25 / PI,
+                },
+                RestitutionLaw::Constant(0.8),
+                DriveChoice::ConstantForce(1.0),
+                scheme,
+            );
+            ph.species.extend([
+                SpeciesChoice::new(32, masses[0], 1.0),
+                SpeciesChoice::new(32, masses[1], 1.0),
+            ]);
+            if rough {
+                ph.rotation = Some(RotationChoice {
+                    beta: 0.5,
+                    kappa: 0.4,
+                    temperature: 1.0,
+                    noise: 0.0,
+                });
+            }
+            let model = ph.validate().unwrap();
+            let mut buf = vec![Particle::default(); 64];
+            let mut spins = vec![Spin::default(); 64];
+            let mut p = if rough {
+                Particles::with_spins(&mut buf, &mut spins).unwrap()
+            } else {
+                Particles::new(&mut buf).unwrap()
+            };
+            let mut rng = stream(21, 0);
+            let momentum = |p: &Particles<'_>| {
+                (0..64).fold(Vec3::ZERO, |m, i| m + masses[i / 32] * p.velocity(i))
+            };
+            let scale = |p: &Particles<'_>| {
+                (0..64)
+                    .map(|i| masses[i / 32] * p.velocity(i).norm())
+                    .sum::<f64>()
+            };
+            let (mut e, _) = model.launch(&mut p, 0.0, &mut rng).unwrap();
+            let m0 = momentum(&p);
+            let mean0 = (0..64).fold(Vec3::ZERO, |m, i| m + p.velocity(i));
+            for t in [0.5, 1.0, 2.0] {
+                e.advance_to(&mut p, t, &mut rng).unwrap();
+                let drift = (momentum(&p) - m0).norm();
+                assert!(
+                    drift <= 1e-12 * scale(&p),
+                    "{scheme:?} rough {rough} t = {t}: momentum moved by {drift}"
+                );
+            }
+            let mean1 = (0..64).fold(Vec3::ZERO, |m, i| m + p.velocity(i));
+            assert!(
+                (mean1 - mean0).norm() > 1e-6,
+                "the unweighted mean did not move"
+            );
+            assert!(e.counts().collisions > 64);
+        }
+    }
 }

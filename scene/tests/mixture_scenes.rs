@@ -86,14 +86,15 @@ fn bad_species_values_name_line_and_key() {
     );
     let e = err(&MIX.replace("beta = 1.0", "beta = -1.0"));
     assert!(e.contains("`drive.beta` must be >= 0"), "{e}");
-    let e = err(&MIX.replace(
-        "kind = \"white-noise\"\nbeta = 1.0",
-        "kind = \"constant-force\"\ng = 1.0\n[scheme]\nkind = \"euler\"\ndt = 0.1",
-    ));
-    assert!(
-        e.contains("`species` take no drive, white noise (per species), the Gaussian thermostat or a host medium, not the constant force"),
-        "{e}"
-    );
+    // The constant force (with a stepping scheme): one force per unit mass on every species.
+    parse(
+        Path::new("mix.toml"),
+        &MIX.replace(
+            "kind = \"white-noise\"\nbeta = 1.0",
+            "kind = \"constant-force\"\ng = 1.0\n[scheme]\nkind = \"time-stepped\"",
+        ),
+    )
+    .expect("mixtures take the constant force");
     // A host medium: every species meets the background with its own mass.
     parse(
         Path::new("mix.toml"),

@@ -34,6 +34,28 @@ pub trait Drive: Copy + core::fmt::Debug {
     /// host medium's background collisions); false: every kick counts nothing.
     const COUNTS_EVENTS: bool = false;
 
+    /// True for a drive whose batch kick couples the particles (the constant force's
+    /// momentum-keeping correction, MS (62)): a mixture then kicks every species in one pass,
+    /// [`Drive::kick_weighted`], not species by species.
+    const COUPLES: bool = false;
+
+    /// All particles to `t`, those of `groups[k].0` having mass `groups[k].1` (a mixture's
+    /// species, one drive for all). Default: each particle alone, as [`Drive::kick`]; a
+    /// coupling drive keeps what its correction keeps, weighted by mass.
+    fn kick_weighted<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        groups: &[(core::ops::Range<usize>, Real)],
+        t: Real,
+        rng: &mut R,
+    ) {
+        for (range, _) in groups {
+            for i in range.clone() {
+                self.kick(p, i, t, rng);
+            }
+        }
+    }
+
     /// Events per unit time the drive costs one grain whose speed is at most `speed`: a host
     /// medium's background majorant (BRS (28)); 0 (the default) for a drive in closed form. For
     /// [`crate::engine::EventLoop::work_rate`].

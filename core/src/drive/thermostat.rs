@@ -93,6 +93,7 @@ impl ConstantForce {
 
 impl Drive for ConstantForce {
     const ACTS: bool = true;
+    const COUPLES: bool = true;
     fn observe(&mut self, obs: &Observables) {
         self.center = obs.bulk;
     }
@@ -113,6 +114,36 @@ impl Drive for ConstantForce {
             let v = q.velocity();
             q.set_velocity(v + self.increment(v, t - q.t_kick) - mean);
             q.t_kick = t;
+        }
+    }
+
+    /// All particles of a mixture to `t`: every grain gains `g dt c_hat` (the force `m g c_hat`
+    /// on a grain of mass `m`, MS (14), about the flow velocity the loop tells
+    /// [`Drive::observe`]), less the mass-weighted mean gain, so that the total momentum
+    /// `sum m v` is kept (MS (62) for several masses; one mass: MS (62) itself).
+    fn kick_weighted<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        groups: &[(core::ops::Range<usize>, Real)],
+        t: Real,
+        _rng: &mut R,
+    ) {
+        let (mut total, mut mass) = (Vec3::ZERO, 0.0);
+        for (range, m) in groups {
+            let mut sum = Vec3::ZERO;
+            for q in &p.as_slice()[range.clone()] {
+                sum += self.increment(q.velocity(), t - q.t_kick);
+            }
+            total += *m * sum;
+            mass += *m * range.len() as Real;
+        }
+        let mean = (1.0 / mass) * total;
+        for (range, _) in groups {
+            for q in &mut p.as_mut_slice()[range.clone()] {
+                let v = q.velocity();
+                q.set_velocity(v + self.increment(v, t - q.t_kick) - mean);
+                q.t_kick = t;
+            }
         }
     }
 }

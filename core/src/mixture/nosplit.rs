@@ -495,6 +495,13 @@ pub(super) fn kick_species<D: Drive, R: Rng + ?Sized>(
 ) {
     if sp.len() == 1 {
         drives[0].kick_all_counting(p, t, rng, background);
+    } else if D::COUPLES {
+        // One drive for every species (validated), its correction over all of them.
+        let groups: [(core::ops::Range<usize>, Real); MAX_SPECIES] = core::array::from_fn(|s| {
+            let s = s.min(sp.len() - 1);
+            (sp.range(s), sp.mass(s))
+        });
+        drives[0].kick_weighted(p, &groups[..sp.len()], t, rng);
     } else {
         for (s, drive) in drives.iter().enumerate().take(sp.len()) {
             for i in sp.range(s) {

@@ -443,6 +443,12 @@ fn mixture<K: Kernel, G: WhiteNoiseIn>(
                 ByMixtureDrive::Gaussian,
             )
         ),
+        DriveModel::ConstantForce(f) => built!(feature = "constant-force", "constant-force", {
+            wrap(
+                mixture_law::<K, _, G>(mx, k, m, &[f; MAX_SPECIES], p, t0),
+                ByMixtureDrive::ConstantForce,
+            )
+        }),
         DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
             wrap(
                 mixture_law::<K, _, G>(mx, k, m, &species_hosts(mx, h)?, p, t0),
@@ -550,7 +556,15 @@ fn rough_mixture<K: Kernel, G: Geometry>(
             )
         );
     }
-    // Validated: a host medium has no rotational noise beside it.
+    // Validated: the constant force and a host medium have no rotational noise beside them.
+    if let DriveModel::ConstantForce(f) = m.drive {
+        return built!(feature = "constant-force", "constant-force", {
+            wrap(
+                rough_pairs::<K, _, G>(mx, laws, m, k, &[f; MAX_SPECIES], p, t0),
+                ByRoughMixtureDrive::ConstantForce,
+            )
+        });
+    }
     if let DriveModel::HostMaxwell(h) = m.drive {
         return built!(feature = "host-medium", "host-medium", {
             wrap(

@@ -201,6 +201,9 @@ pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
     /// The Gaussian thermostat (MS (12)) on every species' translation, about the flow
     /// velocity (feature `gaussian-thermostat`).
     Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G, RoughPairs>, GAUSSIAN>),
+    /// The constant force on every species' translation, its correction weighted by mass
+    /// (MS (14), (62); a stepping scheme; feature `constant-force`).
+    ConstantForce(Built<ByMixtureLaw<K, ConstantForce, G, RoughPairs>, CONSTANT_FORCE>),
     /// A host medium of Maxwell background kernel met by each species with its own mass, the
     /// encounters smooth (BRS (2), (11); feature `host-medium`).
     HostMaxwell(
@@ -284,6 +287,9 @@ pub enum ByMixtureDrive<K: Kernel, G: WhiteNoiseIn> {
     /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity (feature
     /// `gaussian-thermostat`).
     Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G>, GAUSSIAN>),
+    /// The constant force on every species, its correction weighted by mass (MS (14), (62);
+    /// a stepping scheme; feature `constant-force`).
+    ConstantForce(Built<ByMixtureLaw<K, ConstantForce, G>, CONSTANT_FORCE>),
     /// A host medium of Maxwell background kernel met by each species with its own mass
     /// (BRS (2), (11); feature `host-medium`).
     HostMaxwell(Built<ByMixtureLaw<K, HostMedium<MaxwellBackground, G>, G>, HOST_MEDIUM>),
@@ -429,8 +435,8 @@ forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting, TimeStepped);
-forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian, HostMaxwell, HostHardSpheres);
-forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, HostMaxwell, HostHardSpheres);
+forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
+forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByMixtureLaw<K, D, G, P>, [K: Kernel, D: Drive, G: Geometry, P: PairModel], Constant, ImpactSpeed);
 forward!(ByRoughLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);

@@ -179,6 +179,10 @@ pub(super) fn mixture(
         // Every species meets the one background (its density, temperature, drift and
         // kernel constant `C_1`) with its own mass in BRS (3)'s ratio.
         DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => {}
+        // One force per unit mass `g` on every grain (the force `m g c_hat` on a grain of
+        // mass `m`, MS (14), about the flow velocity), with the momentum-keeping correction
+        // weighted by mass (MS (62) for several masses); a stepping scheme (validated above).
+        DriveModel::ConstantForce(_) => {}
         DriveModel::WhiteNoise(_) => {
             for (k, c) in list.iter().enumerate() {
                 noises[k] = WhiteNoise::new(c.beta).ok_or(PhysicsError {
@@ -190,16 +194,6 @@ pub(super) fn mixture(
                     },
                 })?;
             }
-        }
-        _ => {
-            return refuse(
-                Param::Species,
-                Problem::DoesNotFit(
-                    "take no drive, white noise (per species), the Gaussian thermostat or a host \
-                     medium, not the constant force (its momentum-keeping correction, MS (62), \
-                     is written for one species of one mass)",
-                ),
-            );
         }
     }
     let types = species.pair_types();

@@ -154,8 +154,12 @@ fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianA
     if ph.rotation.is_some() || ph.dimension != gdsmc_core::physics::DimensionChoice::Three {
         return None;
     }
-    // Nor does it know a host medium, whose encounters move each species' temperature.
-    if matches!(ph.drive, DriveChoice::HostMedium { .. }) {
+    // Nor does it know a host medium or the constant force, which move each species'
+    // temperature.
+    if matches!(
+        ph.drive,
+        DriveChoice::HostMedium { .. } | DriveChoice::ConstantForce(_)
+    ) {
         return None;
     }
     let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
@@ -190,11 +194,11 @@ pub fn rough_mixture_approximation(
     scene: &Scene,
 ) -> Option<crate::reference::rough_mixture::RoughMixtureApproximation> {
     // The thermostat on translation alone moves the cooling state's theta, and a host medium
-    // every temperature: the approximation (noise and collisions) follows neither, so it
+    // or the constant force every temperature: the approximation (noise and collisions) follows neither, so it
     // draws nothing there.
     if matches!(
         scene.physics().drive,
-        DriveChoice::Gaussian(_) | DriveChoice::HostMedium { .. }
+        DriveChoice::Gaussian(_) | DriveChoice::HostMedium { .. } | DriveChoice::ConstantForce(_)
     ) {
         return None;
     }
