@@ -28,7 +28,7 @@
 use super::map::PairLaw;
 use super::observables::MixtureObservables;
 use super::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
-use crate::drive::Drive;
+use crate::drive::{Drive, NoDrive};
 use crate::engine::collision_map::CollisionMap;
 use crate::engine::event::{Majorant, RefreshWindow};
 use crate::engine::frame::{Frame, RESCALE_BELOW};
@@ -480,6 +480,30 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         }
         obs
     }
+}
+
+/// The exact loop with the drives off ([`drives_off`]).
+pub(super) type Undriven<K, L, G> = MixtureNoSplitting<K, NoDrive, L, G>;
+
+/// The exact loop with the drives off and velocities never stored rescaled (a kick moves
+/// physical velocities), started at `t0`: the collision process of RW's splittings and the
+/// pair table of the time-stepped scheme, which kick every species with `drives` themselves
+/// (one per species: [`MixtureError::SpeciesCount`] otherwise).
+pub(super) fn drives_off<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
+    sp: Species,
+    physics: &[PairPhysics<K, L>],
+    drives: &[D],
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Result<(Undriven<K, L, G>, MixtureObservables), StartError> {
+    if drives.len() != sp.len() {
+        return Err(StartError::Mixture(MixtureError::SpeciesCount(
+            drives.len(),
+        )));
+    }
+    let off = [NoDrive; MAX_SPECIES];
+    let (table, obs) = MixtureNoSplitting::start_in(sp, physics, &off[..sp.len()], p, t0)?;
+    Ok((table.never_rescaled(), obs))
 }
 
 /// Brings every particle of `p` to `t`, each species `s` with `drives[s]` (a one-species

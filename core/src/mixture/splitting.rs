@@ -10,9 +10,11 @@
 //! once after each collision stage and once after the kick (O(n) each, as the kick itself is).
 
 use super::map::PairLaw;
-use super::nosplit::{MixtureNoSplitting, PairPhysics, StartError, kick_species, tell_drives};
+use super::nosplit::{
+    MixtureNoSplitting, PairPhysics, StartError, drives_off, kick_species, tell_drives,
+};
 use super::observables::MixtureObservables;
-use super::species::{MAX_SPECIES, MixtureError, Species};
+use super::species::{MAX_SPECIES, Species};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::frame::Frame;
 use crate::engine::{Counts, EngineError, SplittingOrder, check_step, grid_target};
@@ -50,16 +52,9 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureSplitting<K, D, L, G> 
         t0: Real,
     ) -> Result<(Self, MixtureObservables), StartError> {
         check_step(dt).map_err(StartError::Engine)?;
-        if drives.len() != sp.len() {
-            return Err(StartError::Mixture(MixtureError::SpeciesCount(
-                drives.len(),
-            )));
-        }
-        let off = [NoDrive; MAX_SPECIES];
-        let (collide, obs) = MixtureNoSplitting::start_in(sp, physics, &off[..sp.len()], p, t0)?;
+        let (collide, obs) = drives_off(sp, physics, drives, p, t0)?;
         let mut s = MixtureSplitting {
-            // A kick moves physical velocities: the collision loop never stores them rescaled.
-            collide: collide.never_rescaled(),
+            collide,
             drives: core::array::from_fn(|k| drives[k.min(sp.len() - 1)]),
             order,
             dt,

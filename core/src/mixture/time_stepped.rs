@@ -20,9 +20,11 @@
 //! (`|v_i - v_j| <= S_s + S_t + |V_s - V_t|`) and rises at each overshoot.
 
 use super::map::PairLaw;
-use super::nosplit::{MixtureNoSplitting, PairPhysics, StartError, kick_species, tell_drives};
+use super::nosplit::{
+    MixtureNoSplitting, PairPhysics, StartError, drives_off, kick_species, tell_drives,
+};
 use super::observables::MixtureObservables;
-use super::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species};
+use super::species::{MAX_PAIRS, MAX_SPECIES, Species};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::collision_map::CollisionMap;
 use crate::engine::frame::Frame;
@@ -65,16 +67,9 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureTimeStepped<K, D, L, G
         t0: Real,
     ) -> Result<(Self, MixtureObservables), StartError> {
         check_step(step_factor).map_err(StartError::Engine)?;
-        if drives.len() != sp.len() {
-            return Err(StartError::Mixture(MixtureError::SpeciesCount(
-                drives.len(),
-            )));
-        }
-        let off = [NoDrive; MAX_SPECIES];
-        let (table, obs) = MixtureNoSplitting::start_in(sp, physics, &off[..sp.len()], p, t0)?;
+        let (table, obs) = drives_off(sp, physics, drives, p, t0)?;
         let mut s = MixtureTimeStepped {
-            // A kick moves physical velocities: the table never stores them rescaled.
-            table: table.never_rescaled(),
+            table,
             stages: core::array::from_fn(|k| {
                 Stage::new(physics[k.min(sp.pair_types() - 1)].kernel)
             }),
