@@ -3,6 +3,7 @@
 //! with the no-splitting scheme's within the combined 99.9% half-width of the difference,
 //! sqrt(ci_a^2 + ci_b^2); with steps 50 times longer the time-step error is resolved.
 
+use gdsmc_runner::run::RunStats;
 use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene::SchemeChoice;
 use gdsmc_validation::*;
@@ -52,7 +53,6 @@ fn time_stepped_converges_to_no_splitting() {
 /// on the circle) wherever the two lie more than two half-widths apart.
 #[test]
 fn time_stepped_hard_disks_converge_to_no_splitting() {
-    use gdsmc_stats::{dof, family};
     let n = 256;
     let times = vec![0.0, 0.25, 0.5, 1.0, 2.0];
     let disks = |seed: u64, set: &[&str]| {
@@ -72,26 +72,13 @@ fn time_stepped_hard_disks_converge_to_no_splitting() {
         4.0 * 16.0 / (4.0 * std::f64::consts::PI)
     );
     let st_faster = run(&disks(1113, &["collisions.kernel=hard-spheres", &gamma]));
-    let f = family(times.len() - 1, dof(3000));
-    let mut apart = 0;
-    for (ti, &t) in times.iter().enumerate().skip(1) {
-        let (a, ca) = at(&st_exact, ti, name::T_BULK);
-        let (b, cb) = at(&st_stepped, ti, name::T_BULK);
-        let (c, cc) = at(&st_faster, ti, name::T_BULK);
-        let h = f * (ca * ca + cb * cb).sqrt();
-        assert!(
-            (a - b).abs() <= h,
-            "t={t}: no-splitting {a} +- {ca}, time-stepped {b} +- {cb}"
-        );
-        if (a - c).abs() > 2.0 * f * (ca * ca + cc * cc).sqrt() {
-            apart += 1;
-            assert!(
-                (b - c).abs() > f * (cb * cb + cc * cc).sqrt(),
-                "t={t}: time-stepped {b} does not refuse the faster gas's {c}"
-            );
-        }
-    }
-    assert!(apart >= 2, "the faster gas differs at only {apart} times");
+    agrees_and_refuses(
+        (&st_exact, &st_stepped, &st_faster),
+        &times,
+        &[name::T_BULK],
+        3000,
+        "the faster gas",
+    );
     assert!(st_stepped.counts.collisions > 0 && st_stepped.counts.fictitious > 0);
 }
 
@@ -104,7 +91,6 @@ fn time_stepped_hard_disks_converge_to_no_splitting() {
 /// times at least).
 #[test]
 fn time_stepped_rough_spheres_converge_to_no_splitting() {
-    use gdsmc_stats::{dof, family};
     let (n, m) = (128, 2000);
     let times = vec![0.0, 0.125, 0.25, 0.5, 1.0];
     let rough = |seed: u64, set: &[&str]| {
@@ -119,27 +105,13 @@ fn time_stepped_rough_spheres_converge_to_no_splitting() {
         .expect("rough hard spheres take the time-stepped scheme");
     let st_stepped = run(&stepped);
     let st_other = run(&rough(1123, &["rotation.tangential_restitution=0.3"]));
-    let f = family(2 * (times.len() - 1), dof(m));
-    let mut apart = 0;
-    for (ti, &t) in times.iter().enumerate().skip(1) {
-        for col in [name::T_BULK, name::T_ROT] {
-            let (a, ca) = at(&st_exact, ti, col);
-            let (b, cb) = at(&st_stepped, ti, col);
-            let (c, cc) = at(&st_other, ti, col);
-            assert!(
-                (a - b).abs() <= f * (ca * ca + cb * cb).sqrt(),
-                "t={t}: {col} no-splitting {a} +- {ca}, time-stepped {b} +- {cb}"
-            );
-            if (a - c).abs() > 2.0 * f * (ca * ca + cc * cc).sqrt() {
-                apart += 1;
-                assert!(
-                    (b - c).abs() > f * (cb * cb + cc * cc).sqrt(),
-                    "t={t}: {col} time-stepped {b} does not refuse beta = 0.3's {c}"
-                );
-            }
-        }
-    }
-    assert!(apart >= 2, "beta = 0.3 differs at only {apart} points");
+    agrees_and_refuses(
+        (&st_exact, &st_stepped, &st_other),
+        &times,
+        &[name::T_BULK, name::T_ROT],
+        m,
+        "beta = 0.3",
+    );
     assert!(st_stepped.counts.collisions > 0 && st_stepped.counts.fictitious > 0);
 }
 
@@ -207,7 +179,6 @@ fn time_stepped_maxwell_molecules_keep_the_exact_finite_n_mean() {
 /// least).
 #[test]
 fn time_stepped_vhs_converges_to_no_splitting() {
-    use gdsmc_stats::{dof, family};
     let (n, m) = (128, 2000);
     let times = vec![0.0, 0.0625, 0.125, 0.25, 0.5];
     let vhs = |seed: u64, set: &[&str]| {
@@ -222,27 +193,13 @@ fn time_stepped_vhs_converges_to_no_splitting() {
         .expect("the VHS kernel takes the time-stepped scheme");
     let st_stepped = run(&stepped);
     let st_other = run(&vhs(1143, &["collisions.restitution=0.3"]));
-    let f = family(2 * (times.len() - 1), dof(m));
-    let mut apart = 0;
-    for (ti, &t) in times.iter().enumerate().skip(1) {
-        for col in [name::T_BULK, name::A2] {
-            let (a, ca) = at(&st_exact, ti, col);
-            let (b, cb) = at(&st_stepped, ti, col);
-            let (c, cc) = at(&st_other, ti, col);
-            assert!(
-                (a - b).abs() <= f * (ca * ca + cb * cb).sqrt(),
-                "t={t}: {col} no-splitting {a} +- {ca}, time-stepped {b} +- {cb}"
-            );
-            if (a - c).abs() > 2.0 * f * (ca * ca + cc * cc).sqrt() {
-                apart += 1;
-                assert!(
-                    (b - c).abs() > f * (cb * cb + cc * cc).sqrt(),
-                    "t={t}: {col} time-stepped {b} does not refuse alpha = 0.3's {c}"
-                );
-            }
-        }
-    }
-    assert!(apart >= 2, "alpha = 0.3 differs at only {apart} points");
+    agrees_and_refuses(
+        (&st_exact, &st_stepped, &st_other),
+        &times,
+        &[name::T_BULK, name::A2],
+        m,
+        "alpha = 0.3",
+    );
     assert!(st_stepped.counts.collisions > 0 && st_stepped.counts.fictitious > 0);
 }
 
@@ -256,7 +213,6 @@ fn time_stepped_vhs_converges_to_no_splitting() {
 /// points at least).
 #[test]
 fn time_stepped_rough_mixture_converges_to_no_splitting() {
-    use gdsmc_stats::{dof, family};
     let (n, m) = (128, 1000);
     let times = vec![0.0, 0.5, 1.0, 2.0, 4.0];
     let mixture = |seed: u64, set: &[&str]| {
@@ -272,13 +228,36 @@ fn time_stepped_rough_mixture_converges_to_no_splitting() {
     let st_stepped = run(&stepped);
     let st_other = run(&mixture(1153, &["rotation.tangential_restitution=0.5"]));
     let cols = ["T_s0_ratio", "theta_s0", "theta_s1"];
+    agrees_and_refuses(
+        (&st_exact, &st_stepped, &st_other),
+        &times,
+        &cols,
+        m,
+        "beta = 0.5",
+    );
+    assert!(st_stepped.counts.collisions > 0 && st_stepped.counts.fictitious > 0);
+}
+
+/// The exact scheme's run `exact`, the time-stepped run `stepped` and `other`'s exact run
+/// (another physics, named `what`), each of `m` ensembles, over `cols` at every time but the
+/// first, jointly (Bonferroni, Student-t): the stepped means agree with the exact ones within
+/// the combined half-width; wherever `other` lies more than two such half-widths from `exact`,
+/// the stepped means must refuse it too, and that must happen at two points at least.
+fn agrees_and_refuses(
+    (exact, stepped, other): (&RunStats, &RunStats, &RunStats),
+    times: &[f64],
+    cols: &[&str],
+    m: u64,
+    what: &str,
+) {
+    use gdsmc_stats::{dof, family};
     let f = family(cols.len() * (times.len() - 1), dof(m));
     let mut apart = 0;
     for (ti, &t) in times.iter().enumerate().skip(1) {
-        for col in cols {
-            let (a, ca) = at(&st_exact, ti, col);
-            let (b, cb) = at(&st_stepped, ti, col);
-            let (c, cc) = at(&st_other, ti, col);
+        for &col in cols {
+            let (a, ca) = at(exact, ti, col);
+            let (b, cb) = at(stepped, ti, col);
+            let (c, cc) = at(other, ti, col);
             assert!(
                 (a - b).abs() <= f * (ca * ca + cb * cb).sqrt(),
                 "t={t}: {col} no-splitting {a} +- {ca}, time-stepped {b} +- {cb}"
@@ -287,11 +266,10 @@ fn time_stepped_rough_mixture_converges_to_no_splitting() {
                 apart += 1;
                 assert!(
                     (b - c).abs() > f * (cb * cb + cc * cc).sqrt(),
-                    "t={t}: {col} time-stepped {b} does not refuse beta = 0.5's {c}"
+                    "t={t}: {col} time-stepped {b} does not refuse {what}'s {c}"
                 );
             }
         }
     }
-    assert!(apart >= 2, "beta = 0.5 differs at only {apart} points");
-    assert!(st_stepped.counts.collisions > 0 && st_stepped.counts.fictitious > 0);
+    assert!(apart >= 2, "{what} differs at only {apart} points");
 }
