@@ -1,10 +1,13 @@
 //! # gdsmc-demo: what the firmware runs
 //!
-//! Three runs over caller-owned particle buffers, each reaching the engine through the core's
+//! Four runs over caller-owned particle buffers, each reaching the engine through the core's
 //! physics description (`Physics::validate`, `Model::launch`): GRW Example 3 (the heated
 //! Maxwell gas, GRW (13): `T -> 8/3`), the homogeneous cooling of hard spheres (Haff's law),
-//! and the cooling of rough hard spheres (Huthmann and Zippelius 1997: theta = T_rot/T_tr
-//! settles) with its spins in a second caller buffer.
+//! the cooling of rough hard spheres (Huthmann and Zippelius 1997: theta = T_rot/T_tr
+//! settles) with its spins in a second caller buffer, and a binary mixture of rough hard disks
+//! heated by white noise (the driven state of Megías and Santos 2019; the shipped scene
+//! `scenes/rough-disk-mixture-white-noise.toml` at 256 particles), each species' translational
+//! and rotational temperature printed.
 //! Each run prints one line per observation time with the observables in round-trip digits and
 //! a last line with a checksum of every particle velocity's bits, so that two machines that
 //! print the same lines have followed the same trajectory bit for bit.
@@ -18,7 +21,8 @@ use core::fmt::Write;
 use gdsmc_core::engine::{Counts, EventLoop};
 use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::physics::{
-    DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice, SchemeChoice,
+    DimensionChoice, DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice,
+    SchemeChoice, SpeciesChoice,
 };
 use gdsmc_core::rng::stream;
 
@@ -61,6 +65,49 @@ pub fn hcs_hard_spheres(n: usize) -> Physics {
 pub fn rough_hcs(n: usize) -> Physics {
     let mut p = hcs_hard_spheres(n);
     p.rotation = Some(RotationChoice::spheres(0.0));
+    p
+}
+
+/// A binary mixture of rough hard disks heated by white noise on translation with `n`
+/// particles (Megías and Santos 2019's driven state; `scenes/rough-disk-mixture-white-noise.toml`):
+/// a heavy species (mass 2, diameter 1, uniform disks kappa = 1/2) and a light one (mass 1,
+/// diameter 0.8, rings kappa = 1), `n/2` each; hard-sphere kernel gamma = 4, C_1 = 1/(4 pi),
+/// alpha = 0.8 for every pair, tangential restitution 0.5 between like particles and 0 between
+/// unlike, white noise beta = 1 on each species, every temperature starting at 1.
+pub fn rough_disk_mixture(n: usize) -> Physics {
+    let mut p = Physics::new(
+        n,
+        KernelChoice::HardSpheres {
+            gamma: 4.0,
+            c: C_QUARTER_PI,
+        },
+        RestitutionLaw::Constant(0.8),
+        DriveChoice::WhiteNoise(1.0),
+        SchemeChoice::NoSplitting,
+    );
+    let heavy = SpeciesChoice {
+        beta: 1.0,
+        ..SpeciesChoice::new(n / 2, 2.0, 1.0)
+    };
+    let light = SpeciesChoice {
+        beta: 1.0,
+        diameter: 0.8,
+        inertia: Some(1.0),
+        ..SpeciesChoice::new(n - n / 2, 1.0, 1.0)
+    };
+    // Two species and three pairs: within the core's MAX_SPECIES and MAX_PAIRS.
+    let _ = p.species.push(heavy);
+    let _ = p.species.push(light);
+    for beta in [0.5, 0.0, 0.5] {
+        let _ = p.pair_tangential_restitution.push(beta);
+    }
+    p.rotation = Some(RotationChoice {
+        beta: 0.5,
+        kappa: 0.5,
+        temperature: 1.0,
+        noise: 0.0,
+    });
+    p.dimension = DimensionChoice::Two;
     p
 }
 
@@ -144,9 +191,10 @@ fn checksum(p: &Particles<'_>) -> u64 {
 }
 
 /// Runs `physics` on the buffers `(buf, spins)` (`buf` must hold `physics.n` particles; a
-/// rough gas's spins in `spins`, else empty) from stream 0 of `seed`, observing at `times`, and writes to `out`:
-/// `NAME t=T T=.. T_bulk=.. log10_T_bulk=.. a2=.. collisions=..` per observation (a rough gas
-/// adds `T_rot=.. theta=..`) and `NAME checksum=..` at the end. `clock` is read before the start and after the last
+/// rough gas's spins in `spins`, else empty) from stream 0 of `seed`, observing at `times`, and
+/// writes to `out`: `NAME t=T T=.. T_bulk=.. log10_T_bulk=.. a2=.. collisions=..` per
+/// observation (a rough gas adds `T_rot=.. theta=..`; a mixture each species' `T_S=..`, and if
+/// rough `T_rot_S=..`, `S` its index) and `NAME checksum=..` at the end. `clock` is read before the start and after the last
 /// observation (the firmware counts instructions; the host may return 0).
 pub fn run(
     name: &str,
@@ -185,7 +233,14 @@ pub fn run(
             Digits(obs.a2),
             engine.counts().collisions
         )?;
-        if let Some(r) = engine.rough(&p) {
+        if let Some(m) = engine.species(&p) {
+            for s in 0..m.len {
+                write!(out, " T_{s}={}", Digits(m.temperature(s)))?;
+                if let Some(t_rot) = m.rotational_temperature(s) {
+                    write!(out, " T_rot_{s}={}", Digits(t_rot))?;
+                }
+            }
+        } else if let Some(r) = engine.rough(&p) {
             write!(
                 out,
                 " T_rot={} theta={}",
@@ -226,6 +281,9 @@ pub const N_M0: usize = 64;
 /// Observation times of GRW Example 3 (GRW Table 1's interval [0, 8]).
 pub const GRW3_TIMES: [f64; 9] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0];
 
+/// Observation times of the heated rough disk mixture (its scene's steady state from t = 5).
+pub const MIXTURE_TIMES: [f64; 6] = [0.0, 1.0, 2.0, 5.0, 7.5, 10.0];
+
 /// Observation times of the cooling runs (Haff's law: `T ~ t^-2` for `t >> 1/nu0`).
 pub const HCS_TIMES: [f64; 6] = [0.0, 10.0, 20.0, 50.0, 100.0, 200.0];
 
@@ -259,16 +317,16 @@ pub fn grw3(
     Ok(s)
 }
 
-/// The three runs with seed `seed` on the caller's buffers: GRW Example 3 ([`grw3`]), the
-/// cooling hard spheres, then the cooling rough hard spheres on the first [`N_ROUGH`]
-/// particles and `spins`; one summary each.
+/// The four runs with seed `seed` on the caller's buffers: GRW Example 3 ([`grw3`]), the
+/// cooling hard spheres, then the cooling rough hard spheres and the heated rough disk mixture
+/// on the first [`N_ROUGH`] particles and `spins`; one summary each.
 pub fn all(
     buf: &mut [Particle; N],
     spins: &mut [Spin; N_ROUGH],
     seed: u64,
     out: &mut impl Write,
     mut clock: impl FnMut() -> u64,
-) -> Result<[Summary; 3], DemoError> {
+) -> Result<[Summary; 4], DemoError> {
     let a = grw3(buf, seed, out, &mut clock)?;
     let b = run(
         "hcs",
@@ -288,5 +346,14 @@ pub fn all(
         out,
         &mut clock,
     )?;
-    Ok([a, b, c])
+    let d = run(
+        "rough-mix",
+        || rough_disk_mixture(N_ROUGH),
+        (&mut buf[..N_ROUGH], spins),
+        seed,
+        &MIXTURE_TIMES,
+        out,
+        &mut clock,
+    )?;
+    Ok([a, b, c, d])
 }

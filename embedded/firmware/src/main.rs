@@ -1,8 +1,9 @@
 //! gdsmc on a Cortex-M. On the MPS2 boards (feature `full`, the default) runs GRW Example 3
-//! (heated Maxwell gas), the homogeneous cooling of hard spheres and of rough hard spheres
-//! (`gdsmc_demo::all`) on a static buffer of 512 particles (the rough run on 256 of them, with
-//! 256 static spins); on the micro:bit (Cortex-M0, without `full`: the core holds only the
-//! Maxwell kernel and white noise) GRW Example 3 alone on 256 particles (`gdsmc_demo::grw3`).
+//! (heated Maxwell gas), the homogeneous cooling of hard spheres and of rough hard spheres, and
+//! a binary mixture of rough hard disks heated by white noise (`gdsmc_demo::all`) on a static
+//! buffer of 512 particles (the rough runs on 256 of them, with 256 static spins); on the
+//! micro:bit (Cortex-M0, without `full`: the core holds only the Maxwell kernel and white
+//! noise) GRW Example 3 alone on 64 particles (`gdsmc_demo::grw3`).
 //! Prints every observation over semihosting with round-trip digits, then the figures
 //! `embedded/run.sh` tabulates: instructions per collision (SysTick under QEMU's `-icount
 //! shift=0`, where one instruction is one nanosecond of virtual time: the MPS2 SysTick counts
@@ -34,7 +35,7 @@ const N: usize = gdsmc_demo::N_M0;
 /// The particles: caller-owned static memory, as the core expects (no allocator here).
 static mut PARTICLES: [Particle; N] = [Particle::new(Vec3::ZERO, 0.0); N];
 
-/// The rough run's spins: caller-owned static memory too.
+/// The rough runs' spins: caller-owned static memory too.
 #[cfg(feature = "full")]
 static mut SPINS: [Spin; gdsmc_demo::N_ROUGH] = [Spin::new(Vec3::ZERO); gdsmc_demo::N_ROUGH];
 
@@ -129,12 +130,12 @@ fn stack_low_water(bottom: usize, top: usize) -> usize {
     a
 }
 
-/// The demo's three runs on the static buffers, one summary each with its name.
+/// The demo's four runs on the static buffers, one summary each with its name.
 #[cfg(feature = "full")]
 fn runs(
     out: &mut Out,
     clock: impl FnMut() -> u64,
-) -> Result<[(&'static str, gdsmc_demo::Summary); 3], gdsmc_demo::DemoError> {
+) -> Result<[(&'static str, gdsmc_demo::Summary); 4], gdsmc_demo::DemoError> {
     // SAFETY: the only references to PARTICLES and SPINS, taken once here.
     let (buf, spins) = unsafe {
         (
@@ -142,8 +143,8 @@ fn runs(
             &mut *core::ptr::addr_of_mut!(SPINS),
         )
     };
-    let [a, b, c] = gdsmc_demo::all(buf, spins, 1, out, clock)?;
-    Ok([("grw3", a), ("hcs", b), ("rough", c)])
+    let [a, b, c, d] = gdsmc_demo::all(buf, spins, 1, out, clock)?;
+    Ok([("grw3", a), ("hcs", b), ("rough", c), ("rough-mix", d)])
 }
 
 /// GRW Example 3 on the static particles (the micro:bit build).
