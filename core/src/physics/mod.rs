@@ -136,7 +136,8 @@ pub enum DriveChoice {
     /// The Gaussian thermostat `F = m zeta v` with a finite rate zeta (MS (12)).
     Gaussian(Real),
     /// The constant force along the velocity, `F = m g v_hat`, g >= 0 (MS (14)); needs a
-    /// stepped scheme (MS (62) couples all particles).
+    /// stepped scheme: its momentum-keeping correction (MS (62)) couples every particle's free
+    /// motion to all the others', which no exact (no-splitting) scheme can follow.
     ConstantForce(Real),
     /// Elastic collisions of unit-mass grains with a Maxwellian host medium (BRS Section 2).
     HostMedium {
@@ -333,14 +334,14 @@ pub struct Physics {
     /// Rough mixtures: the tangential restitution of each species pair, in the order of
     /// `pair_restitution` (empty: the rotation's `beta` for every pair).
     pub pair_tangential_restitution: heapless::Vec<Real, MAX_PAIRS>,
-    /// Rough particles: their rotation (`None`: smooth particles). A rough gas needs a constant
-    /// restitution (alpha), no drive or white noise, the no-splitting scheme and one spin per
+    /// Rough particles: their rotation (`None`: smooth particles). A rough gas takes every
+    /// kernel, drive, restitution law and scheme (docs/combinations.md) and needs one spin per
     /// particle beside the particle buffer ([`crate::particles::Particles::with_spins`]). With
     /// species, its values are every species' and pair's unless they name their own.
     pub rotation: Option<RotationChoice>,
     /// The dimension: spheres (`d = 3`, the default) or disks (`d = 2`,
-    /// [`crate::geometry`]). Disks take the no-splitting scheme, a constant restitution, no
-    /// drive or white noise and start drifts in the plane; a rough disk has one rotational
+    /// [`crate::geometry`]). Disks take every kernel, drive, law and scheme spheres take and
+    /// start drifts in the plane; a rough disk has one rotational
     /// degree of freedom and `kappa` in (0, 1]; a mixture of disks has the pair cross section
     /// `(d_s + d_t)/2` (a length) where spheres have its square.
     pub dimension: DimensionChoice,

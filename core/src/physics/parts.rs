@@ -247,9 +247,11 @@ pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, Phy
                 return err(
                     Param::Scheme,
                     Problem::DoesNotFit(
-                        "must be time-stepped, Euler or Strang with the constant-force drive: its \
-                         momentum-keeping correction (MS (62)) couples all particles at every \
-                         step, which the lazy no-splitting scheme cannot do",
+                        "must be time-stepped, Euler or Strang with the constant-force drive: the \
+                         no-splitting scheme is exact because it moves each particle alone \
+                         between its collisions, and the force's momentum-keeping correction \
+                         (MS (62)) makes every particle's free motion depend on all the others' \
+                         (coupled equations with no closed form), so no exact scheme exists for it",
                     ),
                 );
             }
