@@ -105,8 +105,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let chart = profile(
         "Binary hard-sphere mixture, cooling state: T_0/T_1",
-        "log10 m_0/m_1",
-        "T_0 / T_1",
+        "mass ratio log10 m_0/m_1",
+        "temperature ratio T_0 / T_1",
         false,
         &series,
     )?;

@@ -200,14 +200,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let theta = profile(
         &format!("{}, cooling state: theta = T_rot / T_tr", shape.title),
         "tangential restitution beta",
-        name::THETA,
+        "temperature ratio theta = T_rot / T_tr",
         false,
         &theta_series,
     )?;
     let zeta = profile(
         &format!("{}, cooling state: zeta / sqrt(T_tr)", shape.title),
         "tangential restitution beta",
-        "zeta*",
+        "reduced cooling rate zeta* = zeta / sqrt(T_tr)",
         false,
         &zeta_series,
     )?;

@@ -138,8 +138,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let chart = profile(
         "Binary rough hard-sphere mixture, cooling state (alpha = 0.9, kappa = 2/5): theta_s",
-        "log10 m_0/m_1",
-        "theta_s = T_rot,s / T_s",
+        "mass ratio log10 m_0/m_1",
+        "temperature ratio theta_s = T_rot,s / T_s",
         false,
         &series,
     )?;

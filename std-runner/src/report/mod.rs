@@ -251,7 +251,7 @@ pub fn write_all(
     }
     let reduced = crate::analysis::distribution::reduced(scene, stats);
     let marginal = crate::analysis::distribution::marginal(stats);
-    let title = charts::title(&scene.name, scene.n(), stats.ensembles);
+    let title = charts::title(scene, stats.ensembles);
     let all = charts::all(&title, stats, refs, reduced.as_ref(), marginal.as_ref());
     charts::write(dir, &all, formats)?;
     Ok(())

@@ -266,3 +266,98 @@ pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     }
     v
 }
+
+/// The time axis' label: name, symbol and unit.
+pub const TIME_LABEL: &str = "time t (scene units)";
+
+/// The axis label of column `name`: the quantity in words, its symbol and its unit, for a
+/// reader who has not seen this file. Quantities with a dimension are in the scene's units
+/// (particle mass 1, or the species' masses as given; the kernel's `gamma` and `C` fix the
+/// time unit); ratios and cumulants are dimensionless. A column this table does not know keeps
+/// its name.
+pub fn axis_label(name: &str) -> String {
+    const DIM: &str = "(scene units)";
+    const NONE: &str = "(dimensionless)";
+    let (words, unit) = match name {
+        name::T => ("temperature T", DIM),
+        name::T_BULK => ("temperature about the flow T_bulk", DIM),
+        name::V_X => ("bulk velocity V_x", DIM),
+        name::V_Y => ("bulk velocity V_y", DIM),
+        name::V_Z => ("bulk velocity V_z", DIM),
+        name::V_NORM => ("bulk speed V_norm = |V|", DIM),
+        name::P => ("pressure p", DIM),
+        name::Q_NORM => ("heat flux q_norm = |q|", DIM),
+        name::V4 => ("fourth moment v4 = <|v|^4>", DIM),
+        name::V6 => ("sixth moment v6 = <|v|^6>", DIM),
+        name::A2 => ("fourth cumulant a2", NONE),
+        name::A3 => ("sixth cumulant a3", NONE),
+        name::C1 => ("reduced mean speed c1 = <c>", NONE),
+        name::C3 => ("reduced third moment c3 = <c^3>", NONE),
+        name::LOG10_T_BULK => (
+            "log10_T_bulk, the temperature's decimal logarithm",
+            "(of scene units)",
+        ),
+        name::CRIT => ("distance from the Maxwellian, crit (RW (29))", NONE),
+        name::MU2 => ("collisional moment mu2 (MS (44))", NONE),
+        name::MU4 => ("collisional moment mu4 (MS (52))", NONE),
+        name::T_ROT => ("rotational temperature T_rot", DIM),
+        name::THETA => ("temperature ratio theta = T_rot/T_bulk", NONE),
+        name::T_TOTAL => ("mean energy per degree of freedom T_total", DIM),
+        name::A2_ROT => ("fourth cumulant of the rim velocities a2_rot", NONE),
+        name::CW2 => ("translation-rotation correlation cw2", NONE),
+        MIXTURE_TEMPERATURE => ("mixture temperature T_mix", DIM),
+        ROUGH_MIXTURE_TEMPERATURE => ("mixture rotational temperature T_rot_mix", DIM),
+        "zeta_mix" => ("mixture cooling rate zeta_mix", "(1/scene time unit)"),
+        _ => return species_label(name).unwrap_or_else(|| name.to_string()),
+    };
+    format!("{words} {unit}")
+}
+
+/// The label of a per-species column (`T_s0`, `theta_s1`, ..), or `None`.
+fn species_label(name: &str) -> Option<String> {
+    let (stem, k) = name.rsplit_once("_s")?;
+    let (k, ratio) = match k.split_once('_') {
+        Some((k, "ratio")) => (k, true),
+        None => (k, false),
+        Some(_) => return None,
+    };
+    let k: usize = k.parse().ok()?;
+    let (words, unit) = match (stem, ratio) {
+        ("T", false) => ("temperature", "(scene units)"),
+        ("T", true) => ("temperature ratio to T_mix", "(dimensionless)"),
+        ("a2", false) => ("fourth cumulant", "(dimensionless)"),
+        ("dV", false) => ("drift |V_s - U| relative to the flow", "(scene units)"),
+        ("zeta", false) => ("cooling rate", "(1/scene time unit)"),
+        ("T_rot", false) => ("rotational temperature", "(scene units)"),
+        ("theta", false) => ("temperature ratio T_rot/T", "(dimensionless)"),
+        ("a2_rot", false) => ("rim velocities' fourth cumulant", "(dimensionless)"),
+        _ => return None,
+    };
+    Some(format!("species {k}'s {words} {name} {unit}"))
+}
+
+#[cfg(test)]
+mod label_tests {
+    use super::*;
+
+    /// Every column a scene can write has a label naming the quantity in words beside its
+    /// symbol.
+    #[test]
+    fn every_column_has_a_label_in_words() {
+        let mut all: Vec<&str> = COLUMNS.iter().map(|c| c.name).collect();
+        all.extend(COLLISIONAL);
+        all.extend(ROUGH_COLUMNS);
+        all.extend([MIXTURE_TEMPERATURE, ROUGH_MIXTURE_TEMPERATURE]);
+        all.extend(SPECIES_COLUMNS.iter().flatten());
+        all.extend(ROUGH_SPECIES_COLUMNS.iter().flatten());
+        all.extend(COOLING_COLUMNS);
+        for name in all {
+            let label = axis_label(name);
+            assert!(
+                label.contains(name) && label.len() > name.len() + 10 && label.ends_with(')'),
+                "{name}: {label}"
+            );
+        }
+        assert_eq!(axis_label("unknown_s9"), "unknown_s9");
+    }
+}

@@ -12,7 +12,8 @@ use plotters::prelude::*;
 /// scale, GRW (31)-(33), with the Maxwellian of the run's temperature), reduced (f~(c) beside
 /// phi, log scale), delta (Delta(c) beside S_2(c^2), MS Figures 2, 5, 9), G (G(c) of MS
 /// Figures 3, 7, 10 as its ratio to the Maxwellian's, f/phi, log scale) and marginal (BRS
-/// Figure 4, log scale). `scene` heads each title.
+/// Figure 4, log scale). Each title names the chart, `scene` (the run's physics, size and
+/// ensembles) below it.
 pub fn distribution_charts(
     scene: &str,
     stats: &RunStats,
@@ -54,9 +55,9 @@ pub fn distribution_charts(
         charts.push((
             "histogram",
             profile(
-                &format!("{scene}: speed density (GRW (31)-(33)), last observation"),
-                "|v|",
-                "f(|v|) per unit volume",
+                &format!("speed density (GRW (31)-(33)), last observation\n{scene}"),
+                "speed |v| (scene units)",
+                "density f(|v|) per unit velocity volume",
                 true,
                 &[
                     Series {
@@ -111,9 +112,9 @@ pub fn distribution_charts(
         charts.push((
             "reduced",
             profile(
-                &format!("{scene}: reduced distribution f(c), c = |v - V| / v0"),
-                "c",
-                "f(c)",
+                &format!("reduced distribution f(c), c = |v - V| / v0\n{scene}"),
+                "reduced speed c = |v - V| / v0 (dimensionless)",
+                "reduced density f(c)",
                 true,
                 &[
                     Series {
@@ -135,11 +136,11 @@ pub fn distribution_charts(
             "delta",
             profile(
                 &format!(
-                    "{scene}: Delta(c) = (f/phi - 1)/a2 (MS (45)), a2 = {:.4}",
+                    "Delta(c) = (f/phi - 1)/a2 (MS (45)), a2 = {:.4}\n{scene}",
                     r.a2.0
                 ),
-                "c",
-                "Delta(c)",
+                "reduced speed c = |v - V| / v0 (dimensionless)",
+                "deviation from the Maxwellian Delta(c)",
                 false,
                 &[
                     Series {
@@ -165,11 +166,11 @@ pub fn distribution_charts(
                 "G",
                 profile(
                     &format!(
-                        "{scene}: G(c) / G of the Maxwellian = f/phi, G = exp(A c^{}) f, A = {:.3} ({})",
+                        "G(c) / G of the Maxwellian = f/phi, G = exp(A c^{}) f, A = {:.3} ({})\n{scene}",
                         t.power, t.amplitude, t.equation
                     ),
-                    "c",
-                    "G(c) / G_Maxwell(c)",
+                    "reduced speed c = |v - V| / v0 (dimensionless)",
+                    "tail ratio G(c) / G_Maxwell(c)",
                     true,
                     &[
                         Series {
@@ -203,8 +204,8 @@ pub fn distribution_charts(
         charts.push((
             "marginal",
             profile(
-                &format!("{scene}: marginal f_1 of v_{} (BRS Figure 4)", m.axis + 1),
-                &format!("v_{}", m.axis + 1),
+                &format!("marginal f_1 of v_{} (BRS Figure 4)\n{scene}", m.axis + 1),
+                &format!("velocity component v_{} (scene units)", m.axis + 1),
                 "density",
                 true,
                 &[

@@ -44,9 +44,45 @@ pub fn all(
     out
 }
 
-/// The title every chart of a run starts with: scene, particles, ensembles.
-pub fn title(scene: &str, n: usize, ensembles: u64) -> String {
-    format!("{scene}, n = {n}, {ensembles} ensembles")
+/// The title every chart of a run carries: the physics in words (particles, kernel,
+/// restitution, drive; not the file's name), particles and ensembles, e.g. "Smooth spheres,
+/// Maxwell kernel, alpha = 0.5, white noise (beta = 1), n = 1024, 1000 ensembles".
+pub fn title(scene: &crate::scene::Scene, ensembles: u64) -> String {
+    use gdsmc_core::physics::{DriveChoice, KernelChoice, RestitutionLaw};
+    let ph = scene.physics();
+    let shape = if scene.is_disks() { "disks" } else { "spheres" };
+    let (surface, capital) = if ph.rotation.is_some() {
+        ("rough", "Rough")
+    } else {
+        ("smooth", "Smooth")
+    };
+    let particles = match ph.species.len() {
+        0 | 1 => format!("{capital} {shape}"),
+        2 => format!("Binary mixture of {surface} {shape}"),
+        k => format!("Mixture of {k} species of {surface} {shape}"),
+    };
+    let kernel = match ph.kernel {
+        KernelChoice::Maxwell { .. } => "Maxwell kernel".to_string(),
+        KernelChoice::HardSpheres { .. } => "hard-sphere kernel".to_string(),
+        KernelChoice::Vhs { lambda, .. } => format!("VHS kernel (lambda = {lambda})"),
+    };
+    let law = match (ph.restitution, ph.pair_restitution.is_empty()) {
+        (RestitutionLaw::Constant(a), true) => format!("alpha = {a}"),
+        (RestitutionLaw::Constant(_), false) => "alpha per pair".to_string(),
+        (RestitutionLaw::ImpactSpeed { .. }, _) => "impact-speed alpha (BRS (9))".to_string(),
+    };
+    let drive = match ph.drive {
+        DriveChoice::None => "cooling freely".to_string(),
+        DriveChoice::WhiteNoise(b) if ph.species.is_empty() => format!("white noise (beta = {b})"),
+        DriveChoice::WhiteNoise(_) => "white noise".to_string(),
+        DriveChoice::Gaussian(z) => format!("Gaussian thermostat (zeta = {z})"),
+        DriveChoice::ConstantForce(g) => format!("constant force (g = {g})"),
+        DriveChoice::HostMedium { .. } => "in a host medium".to_string(),
+    };
+    format!(
+        "{particles}, {kernel}, {law}, {drive}, n = {}, {ensembles} ensembles",
+        scene.n()
+    )
 }
 
 /// Writes every chart of a run into `dir` in the chosen formats; returns the files written.

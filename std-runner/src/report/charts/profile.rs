@@ -1,7 +1,7 @@
 //! Profile charts: series of points with error bars, lines and dashed references against a
 //! variable other than time (speed, reduced speed, a velocity component).
 
-use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Swatch, plot_rect};
+use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Layer, Swatch, plot_rect};
 use plotters::prelude::*;
 
 /// How a series of a profile chart is drawn.
@@ -11,8 +11,27 @@ pub enum Style {
     Points,
     /// A solid line.
     Line,
-    /// A dashed line (a reference).
+    /// A dashed line (a reference; the k-th dashed series of a chart takes the k-th of
+    /// [`DASHES`]).
     Dashed,
+}
+
+/// Dash and gap of a chart's dashed series, in order: each its own, so that grey scale tells
+/// them apart.
+pub const DASHES: [(u32, u32); 4] = [(6, 4), (2, 3), (12, 5), (18, 6)];
+
+/// Each series' dash (`None` for points and solid lines), in order.
+fn dashes(series: &[Series]) -> Vec<Option<(u32, u32)>> {
+    let mut k = 0;
+    series
+        .iter()
+        .map(|s| {
+            (s.style == Style::Dashed).then(|| {
+                k += 1;
+                DASHES[(k - 1) % DASHES.len()]
+            })
+        })
+        .collect()
 }
 
 /// One series of a profile chart: `(x, y, half-width)` points.
@@ -74,19 +93,22 @@ pub fn profile(
     };
     let mut svg = String::new();
     let mut geometry = Geometry::new(title);
+    let dash = dashes(series);
     let entries: Vec<Entry> = series
         .iter()
-        .map(|s| {
-            let sw = match s.style {
-                Style::Points => Swatch::Point(s.color),
-                Style::Line => Swatch::Line(s.color),
-                Style::Dashed => Swatch::Dashed(s.color, 6, 4),
+        .zip(&dash)
+        .map(|(s, d)| {
+            let sw = match (s.style, d) {
+                (Style::Points, _) => Swatch::Point(s.color),
+                (Style::Dashed, Some((a, b))) => Swatch::Dashed(s.color, *a, *b),
+                _ => Swatch::Line(s.color),
             };
             Entry::new(sw, s.label.clone())
         })
         .collect();
     {
-        let frame = Frame::new(&mut svg, title)?;
+        let frame = Frame::new(&mut svg, title, &entries)?;
+        geometry.axes.push((x_desc.to_string(), y_desc.to_string()));
         let mut builder = ChartBuilder::on(&frame.plot);
         builder
             .margin(10)
@@ -107,7 +129,7 @@ pub fn profile(
                     .map_err(|e| e.to_string())?;
                 let (xr, yr) = chart.plotting_area().get_pixel_range();
                 geometry.plots.push(plot_rect(xr, yr));
-                for s in series {
+                for (s, dash) in series.iter().zip(&dash) {
                     let pts: Vec<(f64, f64, f64)> = s.points.iter().filter(keep).copied().collect();
                     let color = s.color;
                     match s.style {
@@ -144,11 +166,16 @@ pub fn profile(
                             geometry
                                 .data
                                 .extend(xy.iter().map(|p| chart.backend_coord(p)));
-                            if s.style == Style::Dashed {
+                            geometry.layers.push(Layer::Line {
+                                color,
+                                dash: *dash,
+                                label: s.label.clone(),
+                            });
+                            if let Some((a, b)) = *dash {
                                 chart.draw_series(DashedLineSeries::new(
                                     xy,
-                                    6,
-                                    4,
+                                    a as i32,
+                                    b as i32,
                                     color.stroke_width(LINE_WIDTH),
                                 ))
                             } else {

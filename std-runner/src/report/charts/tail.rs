@@ -1,7 +1,11 @@
 //! The tail chart of GRW Figures 7-9: shell points, the fitted line and reference slopes.
 
-use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Swatch, plot_rect};
+use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Layer, Swatch, plot_rect};
 use plotters::prelude::*;
+
+/// The axes of GRW (31)-(33): shell radius and density on double-logarithmic scales.
+const X_LABEL: &str = "shell distance x = ln(r_k - r_1)";
+const Y_LABEL: &str = "density decay y = ln(ln f_1 - ln f_k)";
 
 /// The tail plot of GRW Section 4.3 (GRW Figures 7-9): the points `(x_k, y_k)`, the fitted
 /// line, and the lines of slope 1, 5/4 and 3/2 (GRW (16): Maxwell, VHS 1/2, hard spheres)
@@ -25,7 +29,7 @@ pub fn tail(
     let mut geometry = Geometry::new(title);
     let slopes = [
         (1.0, BLACK, 2, 3),
-        (1.25, GREEN, 6, 4),
+        (1.25, RGBColor(0, 120, 0), 6, 4),
         (1.5, MAGENTA, 14, 5),
     ];
     let mut entries = vec![
@@ -38,8 +42,14 @@ pub fn tail(
             ),
         ),
     ];
+    for (b, c, dash, gap) in slopes {
+        entries.push(Entry::new(
+            Swatch::Dashed(c, dash as u32, gap as u32),
+            format!("slope {b} (GRW (16))"),
+        ));
+    }
     {
-        let frame = Frame::new(&mut svg, title)?;
+        let frame = Frame::new(&mut svg, title, &entries)?;
         let mut chart = ChartBuilder::on(&frame.plot)
             .margin(10)
             .x_label_area_size(40)
@@ -48,10 +58,11 @@ pub fn tail(
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
-            .x_desc("x = ln(r_k - r_1)")
-            .y_desc("y = ln(ln f_1 - ln f_k)")
+            .x_desc(X_LABEL)
+            .y_desc(Y_LABEL)
             .draw()
             .map_err(|e| e.to_string())?;
+        geometry.axes.push((X_LABEL.into(), Y_LABEL.into()));
         let (xr, yr) = chart.plotting_area().get_pixel_range();
         geometry.plots.push(plot_rect(xr, yr));
         chart
@@ -82,6 +93,11 @@ pub fn tail(
                 RED.stroke_width(LINE_WIDTH),
             ))
             .map_err(|e| e.to_string())?;
+        geometry.layers.push(Layer::Line {
+            color: RED,
+            dash: None,
+            label: entries[1].text.clone(),
+        });
         for (b, c, dash, gap) in slopes {
             chart
                 .draw_series(DashedLineSeries::new(
@@ -91,10 +107,11 @@ pub fn tail(
                     c.stroke_width(LINE_WIDTH),
                 ))
                 .map_err(|e| e.to_string())?;
-            entries.push(Entry::new(
-                Swatch::Dashed(c, dash as u32, gap as u32),
-                format!("slope {b} (GRW (16))"),
-            ));
+            geometry.layers.push(Layer::Line {
+                color: c,
+                dash: Some((dash as u32, gap as u32)),
+                label: format!("slope {b}"),
+            });
         }
         geometry.legend = frame.legend(&entries)?;
         frame.present()?;

@@ -1,16 +1,29 @@
-//! Each observable against time: the ensemble mean, its 99.9% confidence band shaded where it
-//! is wider than the line, the reference curves dashed (each its own dash), and, when a
-//! reference applies, a residual panel below: `(mean - reference) / half-width`, where the
-//! 99.9% interval is the strip between -1 and 1 whatever the band's size on the upper panel.
+//! Each observable against time: the reference curves dashed (each its own dash and a
+//! colour dark enough for grey scale), the ensemble mean, and its 99.9% confidence band drawn
+//! last, translucent, where it is wider than the line (so no line hides it); when a reference
+//! applies, a residual panel below: `(mean - reference) / half-width`, where the 99.9%
+//! interval is the strip between -1 and 1 whatever the band's size on the upper panel.
 
-use super::frame::{Chart, Entry, Frame, Geometry, LINE_WIDTH, Swatch, plot_rect};
+use super::frame::{
+    BAND_ALPHA, Chart, Entry, Frame, Geometry, LINE_WIDTH, Layer, Swatch, plot_rect,
+};
 use crate::reference::curves::ReferenceCurve;
 use crate::run::RunStats;
+use crate::run::columns::{TIME_LABEL, axis_label};
 use plotters::prelude::*;
 
-/// Colours and dashes of the reference curves, in order.
-const REF_STYLES: [(RGBColor, u32, u32); 4] =
-    [(RED, 12, 5), (GREEN, 4, 4), (MAGENTA, 18, 6), (BLACK, 2, 4)];
+/// Colours and dashes of the reference curves, in order: each dash its own, each colour's
+/// luminance at most 0.42 (readable in grey scale and in print).
+const REF_STYLES: [(RGBColor, u32, u32); 4] = [
+    (RGBColor(190, 30, 30), 12, 5),
+    (BLACK, 3, 3),
+    (RGBColor(120, 40, 160), 18, 6),
+    (RGBColor(90, 90, 90), 6, 3),
+];
+
+/// The legend's words for the band, drawn or too thin to draw.
+const BAND_TEXT: &str = "99.9% confidence band of the mean";
+const THIN_BAND_TEXT: &str = "99.9% band: thinner than the line (see the residuals)";
 
 /// The reference the residual panel measures against: the exact ensemble mean at this n when
 /// there is one (it is what the mean estimates), else the first.
@@ -71,14 +84,42 @@ pub fn chart(
         (!rs.is_empty()).then_some((r, rs))
     });
 
+    let mean_text = format!("mean of {} ensembles", stats.ensembles);
+    let residual_text = residual.as_ref().map(|(r, _)| {
+        format!(
+            "residual (lower panel): (mean - {}) / 99.9% half-width; within +-1: inside the interval",
+            r.name
+        )
+    });
+    let ref_texts: Vec<String> = refs
+        .iter()
+        .map(|r| format!("{} ({})", r.name, r.source))
+        .collect();
+    // The legend band is sized for the longer of the band's two texts.
+    let mut sizing = vec![
+        Entry::new(Swatch::None, mean_text.clone()),
+        Entry::new(Swatch::None, THIN_BAND_TEXT),
+    ];
+    sizing.extend(
+        ref_texts
+            .iter()
+            .map(|t| Entry::new(Swatch::None, t.clone())),
+    );
+    sizing.extend(
+        residual_text
+            .iter()
+            .map(|t| Entry::new(Swatch::None, t.clone())),
+    );
+
     let mut svg = String::new();
     let mut geometry = Geometry::new(title);
-    let mut entries = Vec::new();
+    let mut entries = vec![Entry::new(Swatch::Line(BLUE), mean_text.clone())];
+    let y_label = axis_label(name);
     {
-        let frame = Frame::new(&mut svg, title)?;
+        let frame = Frame::new(&mut svg, title, &sizing)?;
         let (upper, lower) = if residual.is_some() {
             let h = frame.plot.dim_in_pixel().1;
-            let (a, b) = frame.plot.split_vertically((h as f64 * 0.66) as u32);
+            let (a, b) = frame.plot.split_vertically((h as f64 * 0.68) as u32);
             (a, Some(b))
         } else {
             (frame.plot.clone(), None)
@@ -90,13 +131,54 @@ pub fn chart(
             .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
             .map_err(|e| e.to_string())?;
         let mut mesh = c.configure_mesh();
-        mesh.y_desc(name);
-        if lower.is_none() {
-            mesh.x_desc("t");
-        }
+        mesh.y_desc(y_label.as_str());
+        let x_label = if lower.is_none() { TIME_LABEL } else { "" };
+        mesh.x_desc(x_label);
         mesh.draw().map_err(|e| e.to_string())?;
+        geometry.axes.push((x_label.to_string(), y_label.clone()));
         let (xr, yr) = c.plotting_area().get_pixel_range();
         geometry.plots.push(plot_rect(xr, yr.clone()));
+        // The references first, then the mean, then the band over both: translucent, it
+        // shows the lines through it and no line hides it.
+        let mut ref_entries = Vec::new();
+        for (k, r) in refs.iter().enumerate() {
+            let (color, dash, gap) = REF_STYLES[k % REF_STYLES.len()];
+            let n = 400;
+            let line: Vec<(f64, f64)> = (0..=n)
+                .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
+                .map(|x| (x, (r.curve)(x)))
+                .filter(|p| p.1.is_finite())
+                .collect();
+            c.draw_series(DashedLineSeries::new(
+                line,
+                dash as i32,
+                gap as i32,
+                color.stroke_width(LINE_WIDTH),
+            ))
+            .map_err(|e| e.to_string())?;
+            geometry.layers.push(Layer::Line {
+                color,
+                dash: Some((dash, gap)),
+                label: ref_texts[k].clone(),
+            });
+            ref_entries.push(Entry::new(
+                Swatch::Dashed(color, dash, gap),
+                ref_texts[k].clone(),
+            ));
+        }
+        c.draw_series(LineSeries::new(
+            pts.iter().map(|p| (p.0, p.1)),
+            BLUE.stroke_width(LINE_WIDTH),
+        ))
+        .map_err(|e| e.to_string())?;
+        geometry.layers.push(Layer::Line {
+            color: BLUE,
+            dash: None,
+            label: mean_text,
+        });
+        geometry
+            .data
+            .extend(pts.iter().map(|p| c.backend_coord(&(p.0, p.1))));
         // The band is drawn where it can be seen: its tallest extent in pixels above the
         // line's width.
         let px_per_unit = (yr.end - yr.start) as f64 / (hi + pad - (lo - pad));
@@ -113,56 +195,18 @@ pub fn chart(
             geometry
                 .data
                 .extend(band.iter().map(|p| c.backend_coord(p)));
-            c.draw_series(std::iter::once(Polygon::new(band, BLUE.mix(0.25).filled())))
-                .map_err(|e| e.to_string())?;
-            geometry.band_px = Some(band_px);
-            entries.push(Entry::new(Swatch::Band(BLUE), "99.9% confidence band"));
-        } else {
-            entries.push(Entry::new(
-                Swatch::None,
-                format!(
-                    "99.9% band: thinner than the line ({:.1} px at most){}",
-                    band_px,
-                    if residual.is_some() {
-                        "; see the residuals below"
-                    } else {
-                        ""
-                    }
-                ),
-            ));
-        }
-        c.draw_series(LineSeries::new(
-            pts.iter().map(|p| (p.0, p.1)),
-            BLUE.stroke_width(LINE_WIDTH),
-        ))
-        .map_err(|e| e.to_string())?;
-        geometry
-            .data
-            .extend(pts.iter().map(|p| c.backend_coord(&(p.0, p.1))));
-        entries.push(Entry::new(
-            Swatch::Line(BLUE),
-            format!("{name}: mean of {} ensembles", stats.ensembles),
-        ));
-        for (k, r) in refs.iter().enumerate() {
-            let (color, dash, gap) = REF_STYLES[k % REF_STYLES.len()];
-            let n = 400;
-            let line: Vec<(f64, f64)> = (0..=n)
-                .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
-                .map(|x| (x, (r.curve)(x)))
-                .filter(|p| p.1.is_finite())
-                .collect();
-            c.draw_series(DashedLineSeries::new(
-                line,
-                dash as i32,
-                gap as i32,
-                color.stroke_width(LINE_WIDTH),
-            ))
+            c.draw_series(std::iter::once(Polygon::new(
+                band,
+                BLUE.mix(BAND_ALPHA).filled(),
+            )))
             .map_err(|e| e.to_string())?;
-            entries.push(Entry::new(
-                Swatch::Dashed(color, dash, gap),
-                format!("{} ({})", r.name, r.source),
-            ));
+            geometry.band_px = Some(band_px);
+            geometry.layers.push(Layer::Band);
+            entries.push(Entry::new(Swatch::Band(BLUE), BAND_TEXT));
+        } else {
+            entries.push(Entry::new(Swatch::None, THIN_BAND_TEXT));
         }
+        entries.extend(ref_entries);
         if let (Some(lower), Some((r, rs))) = (lower, &residual) {
             let top = rs.iter().map(|p| p.1.abs()).fold(1.5, f64::max) * 1.1;
             let mut d = ChartBuilder::on(&lower)
@@ -171,12 +215,14 @@ pub fn chart(
                 .y_label_area_size(80)
                 .build_cartesian_2d(t0..t1, -top..top)
                 .map_err(|e| e.to_string())?;
+            let y_label = format!("({name} - {}) / half-width", r.name);
             d.configure_mesh()
-                .x_desc("t")
-                .y_desc("residual")
+                .x_desc(TIME_LABEL)
+                .y_desc(y_label.as_str())
                 .y_labels(5)
                 .draw()
                 .map_err(|e| e.to_string())?;
+            geometry.axes.push((TIME_LABEL.to_string(), y_label));
             let (xr, yr) = d.plotting_area().get_pixel_range();
             geometry.plots.push(plot_rect(xr, yr));
             for y in [-1.0, 1.0] {
@@ -196,13 +242,9 @@ pub fn chart(
             d.draw_series(rs.iter().map(|p| Circle::new(*p, 3, BLUE.filled())))
                 .map_err(|e| e.to_string())?;
             geometry.data.extend(rs.iter().map(|p| d.backend_coord(p)));
-            entries.push(Entry::new(
-                Swatch::Marker(BLUE),
-                format!(
-                    "residual (lower panel): (mean - {}) / 99.9% half-width; inside the dashed lines at +-1 = inside the interval",
-                    r.name
-                ),
-            ));
+            if let Some(t) = residual_text {
+                entries.push(Entry::new(Swatch::Marker(BLUE), t));
+            }
         }
         geometry.legend = frame.legend(&entries)?;
         frame.present()?;
@@ -211,7 +253,7 @@ pub fn chart(
 }
 
 /// Every observable's chart, `(file stem, chart)`, in the order of the columns; `title`
-/// heads each (scene, size, ensembles) before the observable's name.
+/// (the physics, size, ensembles) heads each, the observable names its y axis.
 pub fn charts(
     title: &str,
     stats: &RunStats,
@@ -220,10 +262,7 @@ pub fn charts(
     let mut out = Vec::new();
     for (col, &name) in stats.names.iter().enumerate() {
         let these: Vec<&ReferenceCurve> = refs.iter().filter(|r| r.of == name).collect();
-        out.push((
-            name.to_string(),
-            chart(stats, col, &format!("{title}: {name}"), &these),
-        ));
+        out.push((name.to_string(), chart(stats, col, title, &these)));
     }
     out
 }
