@@ -66,3 +66,59 @@ fn shipped_scenes_are_valid() {
     }
     assert!(k >= 19, "{k} scenes");
 }
+
+/// The first number a description states after `alpha = ` (a decimal or a fraction `p/q`),
+/// unless a list follows it (`alpha = 0.2, 0.4, ...` names a table's rows, not the file's).
+fn stated_alpha(description: &str) -> Option<f64> {
+    let rest = &description[description.find("alpha = ")? + "alpha = ".len()..];
+    let end = rest
+        .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '/'))
+        .unwrap_or(rest.len());
+    let (num, after) = rest.split_at(end);
+    let num = num.trim_end_matches('.');
+    // A list: ", " then another number ending in "," or ")".
+    if let Some(next) = after.strip_prefix(", ") {
+        let k = next
+            .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '/'))
+            .unwrap_or(next.len());
+        if k > 0 && next[k..].starts_with([',', ')']) {
+            return None;
+        }
+    }
+    match num.split_once('/') {
+        Some((p, q)) => Some(p.parse::<f64>().ok()? / q.parse::<f64>().ok()?),
+        None => num.parse().ok(),
+    }
+}
+
+/// A shipped scene whose description states its restitution states the one the file sets (a
+/// reader compares the run with the description's figures). disks-hcs said alpha = 0.9 and
+/// set 0.5.
+#[test]
+fn shipped_descriptions_state_the_restitution_the_file_sets() {
+    assert_eq!(stated_alpha("GRW Example 3: alpha = 1/2, beta = 1"), Some(0.5));
+    assert_eq!(stated_alpha("Table 1 (alpha = 0.2, 0.4, 0.6)"), None);
+    assert_eq!(stated_alpha("disks, alpha = 0.9, 4 pi"), Some(0.9));
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let mut checked = 0;
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let s = gdsmc_scene::load(&p).unwrap_or_else(|e| panic!("{e}"));
+        let (Some(stated), Some(set)) = (
+            stated_alpha(&s.description),
+            s.physics().restitution.constant(),
+        ) else {
+            continue;
+        };
+        assert!(
+            (stated - set).abs() < 1e-12,
+            "{}: the description says alpha = {stated}, the file sets {set}",
+            p.display()
+        );
+        checked += 1;
+    }
+    assert!(checked >= 15, "only {checked} descriptions state alpha");
+}
