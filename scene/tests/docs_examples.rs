@@ -96,7 +96,10 @@ fn stated_alpha(description: &str) -> Option<f64> {
 /// set 0.5.
 #[test]
 fn shipped_descriptions_state_the_restitution_the_file_sets() {
-    assert_eq!(stated_alpha("GRW Example 3: alpha = 1/2, beta = 1"), Some(0.5));
+    assert_eq!(
+        stated_alpha("GRW Example 3: alpha = 1/2, beta = 1"),
+        Some(0.5)
+    );
     assert_eq!(stated_alpha("Table 1 (alpha = 0.2, 0.4, 0.6)"), None);
     assert_eq!(stated_alpha("disks, alpha = 0.9, 4 pi"), Some(0.9));
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");

@@ -179,34 +179,80 @@ impl System<f64, Vector2<f64>> for RoughApproximation {
     }
 }
 
+/// The approximation in scale-free variables against log time: `u = ln T_tr`,
+/// `theta = T_rot / T_tr` as functions of `s = ln(1 + t)`, so that a cooling gas's decades
+/// (Haff's law: `T ~ t^-2`) are as many steps as its first unit of time and no tolerance is
+/// absolute in `T`: `du/ds = (1 + t) T_tr'/T_tr`, `dtheta/ds = (1 + t)(T_rot' - theta
+/// T_tr')/T_tr`.
+#[derive(Clone, Copy)]
+struct ScaleFree(RoughApproximation);
+
+impl System<f64, Vector2<f64>> for ScaleFree {
+    fn system(&self, s: f64, y: &Vector2<f64>, dy: &mut Vector2<f64>) {
+        let t_tr = y[0].exp();
+        let (a, b) = self.0.rates(t_tr, y[1] * t_tr);
+        let dt_ds = s.exp();
+        dy[0] = dt_ds * a / t_tr;
+        dy[1] = dt_ds * (b - y[1] * a) / t_tr;
+    }
+}
+
 /// The approximation solved in time from `(T_tr, T_rot)` at 0 (Dopri5, tolerances 1e-10 and
-/// 1e-12), with linear interpolation between 4000 output steps.
+/// 1e-12): in the scale-free variables of `ScaleFree` when `T_tr > 0` at the start (4000
+/// output steps even in log time, `ln T_tr` and `theta` interpolated linearly in it), else
+/// in `(T_tr, T_rot)` themselves (4000 even steps in time).
 pub struct RoughTrajectory {
+    /// `(s, u, theta)` points (scale-free), or `(t, T_tr, T_rot)`.
     points: Vec<(f64, f64, f64)>,
+    scale_free: bool,
 }
 
 impl RoughTrajectory {
     /// Solves `model` from `t0 = (T_tr, T_rot)` on `[0, t_end]`.
     pub fn new(model: &RoughApproximation, t0: [f64; 2], t_end: f64) -> Result<Self, String> {
         let t_end = t_end.max(1e-12);
+        let collect = |x: &[f64], y: &[Vector2<f64>]| -> Vec<(f64, f64, f64)> {
+            x.iter().zip(y).map(|(&x, y)| (x, y[0], y[1])).collect()
+        };
+        if t0[0] > 0.0 {
+            let y0 = Vector2::new(t0[0].ln(), t0[1] / t0[0]);
+            let s_end = t_end.ln_1p();
+            let mut stepper = Dopri5::new(
+                ScaleFree(*model),
+                0.0,
+                s_end,
+                s_end / 4000.0,
+                y0,
+                1e-10,
+                1e-12,
+            );
+            stepper.integrate().map_err(|e| format!("{e:?}"))?;
+            return Ok(RoughTrajectory {
+                points: collect(stepper.x_out(), stepper.y_out()),
+                scale_free: true,
+            });
+        }
         let y0 = Vector2::new(t0[0], t0[1]);
         let mut stepper = Dopri5::new(*model, 0.0, t_end, t_end / 4000.0, y0, 1e-10, 1e-12);
         stepper.integrate().map_err(|e| format!("{e:?}"))?;
         Ok(RoughTrajectory {
-            points: stepper
-                .x_out()
-                .iter()
-                .zip(stepper.y_out())
-                .map(|(&x, y)| (x, y[0], y[1]))
-                .collect(),
+            points: collect(stepper.x_out(), stepper.y_out()),
+            scale_free: false,
         })
     }
 
     /// `(T_tr, T_rot)` at `t`.
     pub fn at(&self, t: f64) -> (f64, f64) {
-        let (i, f) = crate::reference::hydro::bracket(&self.points, |q| q.0, t);
+        let x = if self.scale_free { t.ln_1p() } else { t };
+        let (i, f) = crate::reference::hydro::bracket(&self.points, |q| q.0, x);
         let (a, b) = (&self.points[i - 1], &self.points[i]);
-        (a.1 + f * (b.1 - a.1), a.2 + f * (b.2 - a.2))
+        let (p, q) = (a.1 + f * (b.1 - a.1), a.2 + f * (b.2 - a.2));
+        if self.scale_free {
+            let t_tr = p.exp();
+            (t_tr, q * t_tr)
+        } else {
+            (p, q)
+        }
     }
 }
 
@@ -282,6 +328,31 @@ mod tests {
 
     /// The cooling-state theta is where both parts cool at one rate, for each dimension and
     /// kernel exponent (the quadratic against the rates themselves).
+    /// A cooling gas solved over nine decades of time keeps its temperatures positive and
+    /// theta at the closed-form cooling value (relative 1e-6) once it has settled, and Haff's
+    /// law `T ~ t^-2` (issue 35: the solution in `(T_tr, T_rot)` with an absolute tolerance
+    /// and even steps gave theta = -2.2 at t = 4e9 for the elastic perfectly rough spheres).
+    #[test]
+    fn a_cooling_trajectory_keeps_the_cooling_theta_over_nine_decades() {
+        for beta in [1.0, 0.0, -0.5] {
+            let m =
+                RoughApproximation::new(0.9, beta, 0.4, 1.0 / std::f64::consts::PI, 1.0, [0.0; 2]);
+            let theta = m.cooling_theta().unwrap();
+            let tr = RoughTrajectory::new(&m, [1.0, 1.0], 4e9).unwrap();
+            for t in [2e9, 3e9, 4e9] {
+                let (a, b) = tr.at(t);
+                assert!(a > 0.0 && b > 0.0, "beta {beta}, t {t}: ({a}, {b})");
+                assert!(
+                    ((b / a) / theta - 1.0).abs() < 1e-6,
+                    "beta {beta}, t {t}: theta {} against {theta}",
+                    b / a
+                );
+            }
+            let (t1, t2) = (tr.at(2e9).0, tr.at(4e9).0);
+            assert!(((t1 / t2).log2() - 2.0).abs() < 1e-4, "Haff: {t1} -> {t2}");
+        }
+    }
+
     #[test]
     fn the_cooling_theta_equalizes_the_rates() {
         for d in [2, 3] {
