@@ -214,6 +214,15 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             "\nsteady state: averages over the {} observation times t >= {} (RW Section 4.2)",
             st.points, stats.times[st.first]
         );
+        // A freely cooling gas's temperatures (and cooling rates, which scale with them) keep
+        // falling: a window mean of them is no state; only the scale-free quantities settle.
+        let cooling = matches!(scene.physics().drive, DriveChoice::None)
+            && scene.physics().rotation.is_none_or(|r| r.noise == 0.0)
+            && scene
+                .physics()
+                .species
+                .iter()
+                .all(|s| s.rotation_noise.is_none_or(|w| w == 0.0));
         let mut names = vec![
             name::T,
             name::T_BULK,
@@ -235,10 +244,8 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             for c in &crate::run::columns::ROUGH_SPECIES_COLUMNS[..scene.physics().species.len()] {
                 names.extend([c[1], c[2]]);
             }
-        } else if let Some(r) = scene.physics().rotation {
-            // A cooling rough gas's temperatures keep falling: only its ratios settle.
-            let heated = !matches!(scene.physics().drive, DriveChoice::None) || r.noise > 0.0;
-            names = if heated {
+        } else if scene.physics().rotation.is_some() {
+            names = if !cooling {
                 vec![
                     name::T_BULK,
                     name::T_ROT,
@@ -252,14 +259,29 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
                 vec![name::THETA, name::A2, name::A2_ROT, name::CW2]
             };
         }
+        if cooling {
+            let scaled = [
+                name::T,
+                name::T_BULK,
+                crate::run::columns::MIXTURE_TEMPERATURE,
+            ];
+            names.retain(|n| !scaled.contains(n) && !n.starts_with("zeta_"));
+        }
+        let names: Vec<&str> = names
+            .into_iter()
+            .filter(|n| stats.col(n).is_some())
+            .collect();
+        let width = names.iter().map(|n| n.len()).max().unwrap_or(0).max(8);
+        let window = &stats.times[st.first..];
         for name in names {
             let Some(col) = stats.col(name) else { continue };
             let (m, ci) = st.mean_ci(stats, col);
-            let _ = write!(s, "  {name:<8} {:>13} +- {ci:.2e}", num(m));
-            // References beside it, at the last observation time.
-            let t_last = stats.times[stats.times.len() - 1];
+            let _ = write!(s, "  {name:<width$} {:>13} +- {ci:.2e}", num(m));
+            // References beside it: their mean over the same observation times (what the
+            // window mean estimates, whether or not the reference has settled).
             for r in refs.iter().filter(|r| r.of == name) {
-                let _ = write!(s, "   {} {}", r.name, num((r.curve)(t_last)));
+                let mean = window.iter().map(|&t| (r.curve)(t)).sum::<f64>() / window.len() as f64;
+                let _ = write!(s, "   {} {}", r.name, num(mean));
             }
             let _ = writeln!(s);
         }
