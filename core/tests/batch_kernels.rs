@@ -1,6 +1,6 @@
 //! Every SIMD batch kernel against its plain scalar twin with a fixed seed (RustFFT style).
 
-mod common;
+use crate::common;
 use common::*;
 use gdsmc_core::batch::kick::*;
 use gdsmc_core::batch::sums::*;

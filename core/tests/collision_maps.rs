@@ -5,7 +5,7 @@ use gdsmc_core::collision::*;
 use gdsmc_core::vec3::Vec3;
 use proptest::prelude::*;
 
-mod common;
+use crate::common;
 
 use common::strategies::{alpha, unit, vec3};
 

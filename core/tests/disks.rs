@@ -3,7 +3,7 @@
 //! disks' equipartition of their finite system, and the refusals. Statistical checks use fixed
 //! seeds and 99.9% levels.
 
-mod common;
+use crate::common;
 
 use common::{check_finite_equipartition, ks_critical_999, ks_statistic};
 use gdsmc_core::engine::EventLoop;

@@ -10,8 +10,6 @@
 //! unit masses, which collisions never increase), so the totals are bounded by
 //! `32 C eps sqrt(2 E)` and `64 C eps E`.
 
-mod common;
-
 use gdsmc_core::drive::{ConstantForce, Drive, GaussianThermostat, NoDrive, WhiteNoise};
 use gdsmc_core::engine::NoSplitting;
 use gdsmc_core::kernel::{HardSpheres, Kernel, Maxwell, Vhs};

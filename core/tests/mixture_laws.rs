@@ -4,7 +4,7 @@
 //! kernels, spheres and disks, cooling, heated and split; with `delta > 0` it does not. The
 //! rules of the combination are refused by their keys.
 
-mod common;
+use crate::common;
 
 use common::kernels::{HARD, MAXWELL};
 

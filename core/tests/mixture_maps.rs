@@ -13,7 +13,7 @@ use gdsmc_core::sample::Maxwellian;
 use gdsmc_core::vec3::Vec3;
 use proptest::prelude::*;
 
-mod common;
+use crate::common;
 
 use common::strategies::{alpha, unit, vec3};
 

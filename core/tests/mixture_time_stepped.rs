@@ -7,8 +7,6 @@
 //! - The elastic perfectly rough mixture keeps its energy to rounding under the scheme (each
 //!   collision does) and relaxes to the equipartition of its finite system.
 
-mod common;
-
 use gdsmc_core::drive::{
     ConstantForce, Drive, GaussianThermostat, NoDrive, PlanarWhiteNoise, WhiteNoise,
 };

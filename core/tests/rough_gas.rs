@@ -3,7 +3,7 @@
 //! the smooth limit leaves every spin alone, and the spin buffer is required. Statistical
 //! checks use fixed seeds and 99.9% intervals (3.2 standard errors).
 
-mod common;
+use crate::common;
 
 use common::check_finite_equipartition;
 use gdsmc_core::engine::{EngineError, EventLoop};

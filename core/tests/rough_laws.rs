@@ -12,7 +12,7 @@
 //! - With `beta = -1` the rough gas under the law is the smooth gas under it, to the bit
 //!   (`rough::map::smooth_limit`), MS's time-stepped scheme included (its impact map).
 
-mod common;
+use crate::common;
 
 use common::kernels::{HARD, MAXWELL};
 use common::strategies::{unit, vec3};

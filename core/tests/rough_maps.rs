@@ -4,7 +4,7 @@
 //! form, the elastic perfectly rough and the smooth limits; and the impact direction's law.
 //! Tolerances are rounding bounds: a few hundred ulps of the magnitudes involved.
 
-mod common;
+use crate::common;
 
 use common::strategies::{unit, vec3};
 use gdsmc_core::rng::seeded;

@@ -11,7 +11,7 @@
 //!   degrees of freedom, under the exact and the time-stepped scheme (99.9% intervals, 3.2 standard errors; the same sample must refuse the
 //!   naive equipartition, so the check can fail).
 
-mod common;
+use crate::common;
 
 use common::mean_ci;
 use gdsmc_core::drive::{Drive, NoDrive};

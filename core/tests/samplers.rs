@@ -2,7 +2,7 @@
 //! 1.9495/sqrt(N)) where the CDF is known, moments within their 99.9% confidence interval
 //! (lambda = 3.2 standard errors) otherwise. Fixed seeds.
 
-mod common;
+use crate::common;
 use common::*;
 use gdsmc_core::math::PI;
 use gdsmc_core::rng::{seeded, uniform_open01, uniform01};

@@ -5,6 +5,7 @@
 
 use gdsmc_runner::reference::curves::for_scene;
 use gdsmc_runner::report::summary::text;
+use gdsmc_runner::run::columns::{MIXTURE_TEMPERATURE, name};
 use gdsmc_runner::scene;
 use std::path::PathBuf;
 
@@ -33,11 +34,11 @@ fn lists(block: &str, name: &str) -> bool {
 fn a_cooling_gas_lists_no_temperature_in_its_steady_block() {
     for file in ["disks-hcs.toml", "mixture-hcs-hard-spheres.toml"] {
         let (_, _, block) = steady_block(file);
-        for t in ["T", "T_bulk", "T_mix", "zeta_mix"] {
+        for t in [name::T, name::T_BULK, MIXTURE_TEMPERATURE, "zeta_mix"] {
             assert!(!lists(&block, t), "{file}: {t} in\n{block}");
         }
         assert!(
-            lists(&block, "a2") || lists(&block, "a2_s0"),
+            lists(&block, name::A2) || lists(&block, "a2_s0"),
             "{file}: no cumulant in\n{block}"
         );
     }
@@ -46,10 +47,10 @@ fn a_cooling_gas_lists_no_temperature_in_its_steady_block() {
 #[test]
 fn a_heated_gas_lists_its_temperature_beside_the_reference_window_mean() {
     let (_, st, block) = steady_block("rw-steady.toml");
-    assert!(lists(&block, "T_bulk"), "{block}");
+    assert!(lists(&block, name::T_BULK), "{block}");
     let line = block
         .lines()
-        .find(|l| l.trim_start().starts_with("T_bulk "))
+        .find(|l| l.trim_start().starts_with(&format!("{} ", name::T_BULK)))
         .unwrap();
     let shown: f64 = line
         .split("T_bulk_exact ")

@@ -443,7 +443,7 @@ mod tests {
         Geometry {
             title: "grw-example3, n = 1024, 1000 ensembles: T".into(),
             plots: vec![plot],
-            axes: vec![("t".into(), "T".into())],
+            axes: vec![("t".into(), crate::run::columns::name::T.into())],
             layers: vec![
                 Layer::Band,
                 line(BLUE, None, "mean"),

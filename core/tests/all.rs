@@ -1,0 +1,28 @@
+//! Core integration tests, one test binary: each file of this directory is a module here (one link of
+//! the engine instead of one per file: the test build is faster and its binaries a fraction
+//! of the disk). Run one file's tests with `cargo test -p gdsmc-core --test all FILE::`.
+
+mod background_rate;
+mod batch_kernels;
+mod collision_maps;
+mod collisional;
+mod common;
+mod disks;
+mod engine_invariants;
+mod histograms;
+mod host_medium_choice;
+mod kernel_acceptance;
+mod mixture_host_medium;
+mod mixture_laws;
+mod mixture_maps;
+mod mixture_time_stepped;
+mod physics;
+mod rescaling;
+mod restitution_law;
+mod rough_gas;
+mod rough_laws;
+mod rough_maps;
+mod rough_mixture;
+mod samplers;
+mod sum_majorant;
+mod work_rate;

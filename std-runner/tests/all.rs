@@ -1,0 +1,15 @@
+//! The runner's integration tests, one test binary: each file of this directory is a module here (one link of
+//! the engine instead of one per file: the test build is faster and its binaries a fraction
+//! of the disk). Run one file's tests with `cargo test -p gdsmc --test all FILE::`.
+
+mod charts;
+mod cluster;
+mod column_names;
+mod data_safety;
+mod distribution;
+mod histogram;
+mod hydro;
+mod output_set;
+mod reproduce_verdicts;
+mod steady_summary;
+mod verdict;

@@ -1,0 +1,24 @@
+//! Cross-crate validation, one test binary: each file of this directory is a module here (one link of
+//! the engine instead of one per file: the test build is faster and its binaries a fraction
+//! of the disk). Run one file's tests with `cargo test -p gdsmc-validation --test all FILE::`.
+
+mod combinations;
+mod convergence_in_n;
+mod cooling_and_thermostats;
+mod determinism;
+mod disks;
+mod docs_links;
+mod finite_outputs;
+mod hard_spheres;
+mod host_medium;
+mod maxwell_relaxation;
+mod mixture;
+mod mutated_scenes;
+mod rough;
+mod splitting;
+mod stability;
+mod steady_state;
+mod tail_warning;
+mod thermostats_ms;
+mod time_stepped;
+mod work_limits;
