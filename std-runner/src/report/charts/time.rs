@@ -13,7 +13,7 @@ use crate::run::columns::{TIME_LABEL, axis_label};
 use plotters::prelude::*;
 
 /// Colours and dashes of the reference curves, in order: each dash its own, each colour's
-/// luminance at most 0.42 (readable in grey scale and in print).
+/// luminance at most 0.36 (readable in grey scale and in print).
 const REF_STYLES: [(RGBColor, u32, u32); 4] = [
     (RGBColor(190, 30, 30), 12, 5),
     (BLACK, 3, 3),
