@@ -1,5 +1,5 @@
 //! Charts: each observable against time (its 99.9% band, the references dashed, a residual
-//! panel), the distribution and tail charts, all with the legend in a column beside the data
+//! panel), the distribution and tail charts, all with the legend in a band below the data
 //! (`frame.rs`), written as SVG, PNG or PDF (`export.rs`) next to observables.csv, atomically.
 
 pub mod distribution;
@@ -22,7 +22,7 @@ use crate::run::RunStats;
 use std::path::Path;
 
 /// Every chart of a run, `(file stem, chart)`: one per observable, the tail plot when there is
-/// a histogram, the distribution charts. `title` (scene, n, ensembles) heads each.
+/// a histogram, the distribution charts. `title` (the physics, n, ensembles: [`title`]) heads each.
 pub fn all(
     title: &str,
     stats: &RunStats,
