@@ -374,6 +374,20 @@ impl Physics {
         }
     }
 
+    /// Whether nothing heats the gas: no drive and no white noise on any rotation (the
+    /// rotation's or a species' own). Such a gas cools freely (the homogeneous cooling state):
+    /// its temperatures keep falling while its scale-free quantities (cumulants, temperature
+    /// ratios) settle.
+    #[must_use]
+    pub fn cools_freely(&self) -> bool {
+        matches!(self.drive, DriveChoice::None)
+            && self.rotation.is_none_or(|r| r.noise == 0.0)
+            && self
+                .species
+                .iter()
+                .all(|s| s.rotation_noise.is_none_or(|w| w == 0.0))
+    }
+
     /// Checks the particle count alone (`n >= 2`, addressable): for front ends that size
     /// memory before they have a whole description.
     pub fn check_n(n: usize) -> Result<(), PhysicsError> {

@@ -94,17 +94,11 @@ const STEADY_CHECKED: [&str; 2] = [name::T, name::T_BULK];
 /// ratios settle: Garzó and Dufty 1999's cooling state).
 fn steady_checked(scene: &Scene) -> Vec<&'static str> {
     let species = scene.physics().species.len();
-    if let Some(r) = scene.physics().rotation {
+    if scene.physics().rotation.is_some() {
         // A cooling rough gas's temperatures keep falling while theta settles (Luding et al.
         // 1998); a heated one's settle themselves. A rough mixture: each species' ratios
         // (T_sk / T_mix and theta_sk) when cooling, its temperatures when heated.
-        let heated = !matches!(scene.physics().drive, DriveChoice::None)
-            || r.noise > 0.0
-            || scene
-                .physics()
-                .species
-                .iter()
-                .any(|s| s.rotation_noise.unwrap_or(0.0) > 0.0);
+        let heated = !scene.physics().cools_freely();
         let (tr, rot) = (
             &crate::run::columns::SPECIES_COLUMNS[..species],
             &crate::run::columns::ROUGH_SPECIES_COLUMNS[..species],

@@ -3,7 +3,7 @@
 use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
 use crate::run::columns::name;
-use crate::scene::{DriveChoice, Scene};
+use crate::scene::Scene;
 use gdsmc_stats::{joint, multiplier};
 use std::fmt::Write;
 
@@ -216,13 +216,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         );
         // A freely cooling gas's temperatures (and cooling rates, which scale with them) keep
         // falling: a window mean of them is no state; only the scale-free quantities settle.
-        let cooling = matches!(scene.physics().drive, DriveChoice::None)
-            && scene.physics().rotation.is_none_or(|r| r.noise == 0.0)
-            && scene
-                .physics()
-                .species
-                .iter()
-                .all(|s| s.rotation_noise.is_none_or(|w| w == 0.0));
+        let cooling = scene.physics().cools_freely();
         let mut names = vec![
             name::T,
             name::T_BULK,

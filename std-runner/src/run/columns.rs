@@ -313,27 +313,34 @@ pub fn axis_label(name: &str) -> String {
     format!("{words} {unit}")
 }
 
-/// The label of a per-species column (`T_s0`, `theta_s1`, ..), or `None`.
+/// The words and unit of each per-species column, in the order of [`SPECIES_COLUMNS`],
+/// [`ROUGH_SPECIES_COLUMNS`] and (after `zeta_mix`) [`COOLING_COLUMNS`].
+const SPECIES_WORDS: [(&str, &str); 4] = [
+    ("temperature", "(scene units)"),
+    ("temperature ratio to T_mix", "(dimensionless)"),
+    ("fourth cumulant", "(dimensionless)"),
+    ("drift |V_s - U| relative to the flow", "(scene units)"),
+];
+const ROUGH_SPECIES_WORDS: [(&str, &str); 3] = [
+    ("rotational temperature", "(scene units)"),
+    ("temperature ratio T_rot/T", "(dimensionless)"),
+    ("rim velocities' fourth cumulant", "(dimensionless)"),
+];
+const COOLING_WORDS: (&str, &str) = ("cooling rate", "(1/scene time unit)");
+
+/// The label of a per-species column (`T_s0`, `theta_s1`, ..), found in the column tables, or
+/// `None`.
 fn species_label(name: &str) -> Option<String> {
-    let (stem, k) = name.rsplit_once("_s")?;
-    let (k, ratio) = match k.split_once('_') {
-        Some((k, "ratio")) => (k, true),
-        None => (k, false),
-        Some(_) => return None,
-    };
-    let k: usize = k.parse().ok()?;
-    let (words, unit) = match (stem, ratio) {
-        ("T", false) => ("temperature", "(scene units)"),
-        ("T", true) => ("temperature ratio to T_mix", "(dimensionless)"),
-        ("a2", false) => ("fourth cumulant", "(dimensionless)"),
-        ("dV", false) => ("drift |V_s - U| relative to the flow", "(scene units)"),
-        ("zeta", false) => ("cooling rate", "(1/scene time unit)"),
-        ("T_rot", false) => ("rotational temperature", "(scene units)"),
-        ("theta", false) => ("temperature ratio T_rot/T", "(dimensionless)"),
-        ("a2_rot", false) => ("rim velocities' fourth cumulant", "(dimensionless)"),
-        _ => return None,
-    };
-    Some(format!("species {k}'s {words} {name} {unit}"))
+    (0..gdsmc_core::mixture::MAX_SPECIES).find_map(|k| {
+        let words = SPECIES_COLUMNS[k]
+            .iter()
+            .zip(SPECIES_WORDS)
+            .chain(ROUGH_SPECIES_COLUMNS[k].iter().zip(ROUGH_SPECIES_WORDS))
+            .chain(std::iter::once((&COOLING_COLUMNS[k + 1], COOLING_WORDS)))
+            .find(|(col, _)| **col == name)?
+            .1;
+        Some(format!("species {k}'s {} {name} {}", words.0, words.1))
+    })
 }
 
 #[cfg(test)]
