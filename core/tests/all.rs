@@ -1,6 +1,6 @@
 //! Core integration tests, one test binary: each file of this directory is a module here (one link of
 //! the engine instead of one per file: the test build is faster and its binaries a fraction
-//! of the disk). Run one file's tests with `cargo test -p gdsmc-core --test all FILE::`.
+//! of the disk). Run one file's tests with `cargo test --release -p gdsmc-core --test all FILE::`.
 
 mod background_rate;
 mod batch_kernels;

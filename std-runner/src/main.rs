@@ -119,8 +119,9 @@ enum Command {
     /// when a figure of ours misses an exact value, or the paper's where nothing is exact,
     /// beyond the report-wide range (Bonferroni over every check).
     ///
-    /// --quick runs every table at reduced size (about 4 minutes on 2 cores; the costliest
-    /// rows are skipped and listed); without it, the papers' sizes (see README for the time).
+    /// --quick runs every table at reduced size (the costliest rows are skipped and listed);
+    /// without it, the papers' sizes. Their durations on a 2-core machine: docs/timings.md and
+    /// docs/reproduce-full.md.
     ///
     /// Examples:
     ///   gdsmc reproduce --quick

@@ -1,6 +1,6 @@
 //! Cross-crate validation, one test binary: each file of this directory is a module here (one link of
 //! the engine instead of one per file: the test build is faster and its binaries a fraction
-//! of the disk). Run one file's tests with `cargo test -p gdsmc-validation --test all FILE::`.
+//! of the disk). Run one file's tests with `cargo test --release -p gdsmc-validation --test all FILE::`.
 
 mod combinations;
 mod convergence_in_n;
@@ -21,4 +21,5 @@ mod steady_state;
 mod tail_warning;
 mod thermostats_ms;
 mod time_stepped;
+mod timings;
 mod work_limits;

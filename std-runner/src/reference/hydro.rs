@@ -1,13 +1,13 @@
 //! The hydrodynamic closures of BRS for hard spheres in a hard-sphere host medium (constant
-//! restitution), integrated by the adaptive, error-controlled Dormand-Prince 5(4) method of the
-//! `ode_solvers` crate: the local-equilibrium closure BRS (21) and the Grad-type closure
+//! restitution), integrated by the adaptive, error-controlled Dormand-Prince 5(4) method
+//! ([`super::ode`]): the local-equilibrium closure BRS (21) and the Grad-type closure
 //! BRS (22), for the bulk velocity `u` and temperature `T` of unit-mass grains.
 //!
 //! BRS writes them in the time `(rho^B / rho) rho^B C_1 t` with `rho = 1` here, so every right
 //! side carries the factor `s = (rho^B)^2 C_1`; `K = (rho / rho^B)^2 C_2 / C_1` (BRS (23)) and
 //! `beta = (1 - e)/2` (BRS (5)).
 
-use ode_solvers::{Dopri5, System, Vector4};
+use super::ode;
 
 /// Which closure.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,8 +36,6 @@ pub struct HydroModel {
     /// The closure.
     pub closure: Closure,
 }
-
-type State = Vector4<f64>;
 
 impl HydroModel {
     /// `(du/dt, dT/dt)` at `u`, `T` (grain mass m = 1).
@@ -86,26 +84,16 @@ impl HydroModel {
         t_end: f64,
         steps: usize,
     ) -> Result<Vec<(f64, [f64; 3], f64)>, String> {
-        let dx = t_end / steps as f64;
-        let y0 = State::new(u0[0], u0[1], u0[2], t0);
-        let mut stepper = Dopri5::new(*self, 0.0, t_end, dx, y0, 1e-10, 1e-12);
-        stepper.integrate().map_err(|e| format!("{e:?}"))?;
-        Ok(stepper
-            .x_out()
-            .iter()
-            .zip(stepper.y_out())
-            .map(|(&x, y)| (x, [y[0], y[1], y[2]], y[3]))
+        let rhs = |_: f64, y: &[f64; 4]| {
+            let (du, dt) = self.rates([y[0], y[1], y[2]], y[3]);
+            [du[0], du[1], du[2], dt]
+        };
+        let y0 = [u0[0], u0[1], u0[2], t0];
+        Ok(ode::solve(rhs, 0.0, t_end, y0, ode::TOLERANCES, steps)
+            .map_err(|e| e.to_string())?
+            .into_iter()
+            .map(|(x, y)| (x, [y[0], y[1], y[2]], y[3]))
             .collect())
-    }
-}
-
-impl System<f64, State> for HydroModel {
-    fn system(&self, _x: f64, y: &State, dy: &mut State) {
-        let (du, dt) = self.rates([y[0], y[1], y[2]], y[3]);
-        dy[0] = du[0];
-        dy[1] = du[1];
-        dy[2] = du[2];
-        dy[3] = dt;
     }
 }
 

@@ -39,7 +39,7 @@
 //! between translation and rotation, so detailed balance and equipartition fail and the
 //! approximation's elastic ratio for spheres is 3/4.
 
-use ode_solvers::{Dopri5, System, Vector2};
+use super::ode;
 
 /// The Maxwellian approximation of one rough gas.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -171,14 +171,6 @@ impl RoughApproximation {
     }
 }
 
-impl System<f64, Vector2<f64>> for RoughApproximation {
-    fn system(&self, _x: f64, y: &Vector2<f64>, dy: &mut Vector2<f64>) {
-        let (a, b) = self.rates(y[0], y[1]);
-        dy[0] = a;
-        dy[1] = b;
-    }
-}
-
 /// The approximation in scale-free variables against log time: `u = ln T_tr`,
 /// `theta = T_rot / T_tr` as functions of `s = ln(1 + t)`, so that a cooling gas's decades
 /// (Haff's law: `T ~ t^-2`) are as many steps as its first unit of time and no tolerance is
@@ -187,18 +179,18 @@ impl System<f64, Vector2<f64>> for RoughApproximation {
 #[derive(Clone, Copy)]
 struct ScaleFree(RoughApproximation);
 
-impl System<f64, Vector2<f64>> for ScaleFree {
-    fn system(&self, s: f64, y: &Vector2<f64>, dy: &mut Vector2<f64>) {
+impl ScaleFree {
+    /// `(du/ds, dtheta/ds)` at `s`, `y = (u, theta)`.
+    fn rates(&self, s: f64, y: &[f64; 2]) -> [f64; 2] {
         let t_tr = y[0].exp();
         let (a, b) = self.0.rates(t_tr, y[1] * t_tr);
         let dt_ds = s.exp();
-        dy[0] = dt_ds * a / t_tr;
-        dy[1] = dt_ds * (b - y[1] * a) / t_tr;
+        [dt_ds * a / t_tr, dt_ds * (b - y[1] * a) / t_tr]
     }
 }
 
-/// The approximation solved in time from `(T_tr, T_rot)` at 0 (Dopri5, tolerances 1e-10 and
-/// 1e-12): in the scale-free variables of `ScaleFree` when `T_tr > 0` at the start (4000
+/// The approximation solved in time from `(T_tr, T_rot)` at 0 ([`ode::solve`], tolerances
+/// [`ode::TOLERANCES`]): in the scale-free variables of `ScaleFree` when `T_tr > 0` at the start (4000
 /// output steps even in log time, `ln T_tr` and `theta` interpolated linearly in it), else
 /// in `(T_tr, T_rot)` themselves (4000 even steps in time).
 pub struct RoughTrajectory {
@@ -211,32 +203,28 @@ impl RoughTrajectory {
     /// Solves `model` from `t0 = (T_tr, T_rot)` on `[0, t_end]`.
     pub fn new(model: &RoughApproximation, t0: [f64; 2], t_end: f64) -> Result<Self, String> {
         let t_end = t_end.max(1e-12);
-        let collect = |x: &[f64], y: &[Vector2<f64>]| -> Vec<(f64, f64, f64)> {
-            x.iter().zip(y).map(|(&x, y)| (x, y[0], y[1])).collect()
+        let collect = |p: Vec<(f64, [f64; 2])>| -> Vec<(f64, f64, f64)> {
+            p.into_iter().map(|(x, y)| (x, y[0], y[1])).collect()
         };
         if t0[0] > 0.0 {
-            let y0 = Vector2::new(t0[0].ln(), t0[1] / t0[0]);
-            let s_end = t_end.ln_1p();
-            let mut stepper = Dopri5::new(
-                ScaleFree(*model),
-                0.0,
-                s_end,
-                s_end / 4000.0,
-                y0,
-                1e-10,
-                1e-12,
-            );
-            stepper.integrate().map_err(|e| format!("{e:?}"))?;
+            let y0 = [t0[0].ln(), t0[1] / t0[0]];
+            let scale_free = ScaleFree(*model);
+            let rhs = |s: f64, y: &[f64; 2]| scale_free.rates(s, y);
+            let p = ode::solve(rhs, 0.0, t_end.ln_1p(), y0, ode::TOLERANCES, 4000)
+                .map_err(|e| e.to_string())?;
             return Ok(RoughTrajectory {
-                points: collect(stepper.x_out(), stepper.y_out()),
+                points: collect(p),
                 scale_free: true,
             });
         }
-        let y0 = Vector2::new(t0[0], t0[1]);
-        let mut stepper = Dopri5::new(*model, 0.0, t_end, t_end / 4000.0, y0, 1e-10, 1e-12);
-        stepper.integrate().map_err(|e| format!("{e:?}"))?;
+        let rhs = |_: f64, y: &[f64; 2]| {
+            let (a, b) = model.rates(y[0], y[1]);
+            [a, b]
+        };
+        let p =
+            ode::solve(rhs, 0.0, t_end, t0, ode::TOLERANCES, 4000).map_err(|e| e.to_string())?;
         Ok(RoughTrajectory {
-            points: collect(stepper.x_out(), stepper.y_out()),
+            points: collect(p),
             scale_free: false,
         })
     }

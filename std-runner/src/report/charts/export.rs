@@ -1,9 +1,13 @@
 //! Charts written as SVG, PNG or PDF: the SVG is drawn once and rendered by resvg (PNG, twice
 //! the SVG's pixel size) or converted by svg2pdf (PDF, vector), with the system's fonts
 //! (`sans-serif` resolved to the first of DejaVu Sans, Liberation Sans, Noto Sans, Arial
-//! found).
+//! found). The renderers are the `render` feature (on by default): without it gdsmc writes
+//! SVG only and refuses `png` and `pdf` where the formats are parsed ([`NO_RENDER`]).
 
-use std::sync::OnceLock;
+/// Why PNG and PDF are refused by a build without the `render` feature.
+pub const NO_RENDER: &str = "PNG and PDF charts need the `render` feature, which this gdsmc \
+was built without (build it with `--features render`, or leave out --no-default-features); \
+SVG needs nothing";
 
 /// The formats a chart is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -39,6 +43,9 @@ impl std::str::FromStr for Formats {
         for part in s.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             match part {
                 "svg" => f.svg = true,
+                "png" | "pdf" if !cfg!(feature = "render") => {
+                    return Err(format!("chart format `{part}`: {NO_RENDER}"));
+                }
                 "png" => f.png = true,
                 "pdf" => f.pdf = true,
                 other => {
@@ -57,59 +64,92 @@ impl std::str::FromStr for Formats {
     }
 }
 
-/// The parse options with the system's fonts, loaded once.
-fn options() -> &'static resvg::usvg::Options<'static> {
-    static OPTIONS: OnceLock<resvg::usvg::Options<'static>> = OnceLock::new();
-    OPTIONS.get_or_init(|| {
-        let mut o = resvg::usvg::Options::default();
-        let db = o.fontdb_mut();
-        db.load_system_fonts();
-        let families: Vec<String> = db
-            .faces()
-            .flat_map(|f| f.families.iter().map(|(name, _)| name.clone()))
-            .collect();
-        for want in ["DejaVu Sans", "Liberation Sans", "Noto Sans", "Arial"] {
-            if families.iter().any(|f| f == want) {
-                db.set_sans_serif_family(want);
-                break;
+#[cfg(feature = "render")]
+pub use render::{have_fonts, pdf, png};
+
+#[cfg(not(feature = "render"))]
+pub use unrendered::{have_fonts, pdf, png};
+
+/// PNG and PDF by resvg and svg2pdf.
+#[cfg(feature = "render")]
+mod render {
+    use std::sync::OnceLock;
+
+    /// The parse options with the system's fonts, loaded once.
+    fn options() -> &'static resvg::usvg::Options<'static> {
+        static OPTIONS: OnceLock<resvg::usvg::Options<'static>> = OnceLock::new();
+        OPTIONS.get_or_init(|| {
+            let mut o = resvg::usvg::Options::default();
+            let db = o.fontdb_mut();
+            db.load_system_fonts();
+            let families: Vec<String> = db
+                .faces()
+                .flat_map(|f| f.families.iter().map(|(name, _)| name.clone()))
+                .collect();
+            for want in ["DejaVu Sans", "Liberation Sans", "Noto Sans", "Arial"] {
+                if families.iter().any(|f| f == want) {
+                    db.set_sans_serif_family(want);
+                    break;
+                }
             }
-        }
-        o
-    })
+            o
+        })
+    }
+
+    /// Whether any font was found (without one, text is left out of PNG and PDF).
+    pub fn have_fonts() -> bool {
+        !options().fontdb.is_empty()
+    }
+
+    fn tree(svg: &str) -> Result<resvg::usvg::Tree, String> {
+        resvg::usvg::Tree::from_str(svg, options()).map_err(|e| e.to_string())
+    }
+
+    /// The chart as a PNG at twice the SVG's pixel size.
+    pub fn png(svg: &str) -> Result<Vec<u8>, String> {
+        let t = tree(svg)?;
+        let size = t.size().to_int_size();
+        let (w, h) = (size.width() * 2, size.height() * 2);
+        let mut pix = resvg::tiny_skia::Pixmap::new(w, h).ok_or("empty chart")?;
+        resvg::render(
+            &t,
+            resvg::tiny_skia::Transform::from_scale(2.0, 2.0),
+            &mut pix.as_mut(),
+        );
+        pix.encode_png().map_err(|e| e.to_string())
+    }
+
+    /// The chart as a one-page PDF.
+    pub fn pdf(svg: &str) -> Result<Vec<u8>, String> {
+        let t = tree(svg)?;
+        svg2pdf::to_pdf(
+            &t,
+            svg2pdf::ConversionOptions::default(),
+            svg2pdf::PageOptions::default(),
+        )
+        .map_err(|e| e.to_string())
+    }
 }
 
-/// Whether any font was found (without one, text is left out of PNG and PDF).
-pub fn have_fonts() -> bool {
-    !options().fontdb.is_empty()
-}
+/// A build without the renderers: PNG and PDF are errors ([`super::NO_RENDER`]).
+#[cfg(not(feature = "render"))]
+mod unrendered {
+    use super::NO_RENDER;
 
-fn tree(svg: &str) -> Result<resvg::usvg::Tree, String> {
-    resvg::usvg::Tree::from_str(svg, options()).map_err(|e| e.to_string())
-}
+    /// True: nothing is rendered, so no font is missing.
+    pub fn have_fonts() -> bool {
+        true
+    }
 
-/// The chart as a PNG at twice the SVG's pixel size.
-pub fn png(svg: &str) -> Result<Vec<u8>, String> {
-    let t = tree(svg)?;
-    let size = t.size().to_int_size();
-    let (w, h) = (size.width() * 2, size.height() * 2);
-    let mut pix = resvg::tiny_skia::Pixmap::new(w, h).ok_or("empty chart")?;
-    resvg::render(
-        &t,
-        resvg::tiny_skia::Transform::from_scale(2.0, 2.0),
-        &mut pix.as_mut(),
-    );
-    pix.encode_png().map_err(|e| e.to_string())
-}
+    /// An error: this build has no PNG renderer.
+    pub fn png(_svg: &str) -> Result<Vec<u8>, String> {
+        Err(NO_RENDER.into())
+    }
 
-/// The chart as a one-page PDF.
-pub fn pdf(svg: &str) -> Result<Vec<u8>, String> {
-    let t = tree(svg)?;
-    svg2pdf::to_pdf(
-        &t,
-        svg2pdf::ConversionOptions::default(),
-        svg2pdf::PageOptions::default(),
-    )
-    .map_err(|e| e.to_string())
+    /// An error: this build has no PDF converter.
+    pub fn pdf(_svg: &str) -> Result<Vec<u8>, String> {
+        Err(NO_RENDER.into())
+    }
 }
 
 #[cfg(test)]
@@ -118,10 +158,16 @@ mod tests {
 
     #[test]
     fn formats_parse_and_refuse() {
-        let f: Formats = "svg,png".parse().unwrap();
-        assert!(f.svg && f.png && !f.pdf);
-        assert!("pdf".parse::<Formats>().unwrap().pdf);
         assert!("jpg".parse::<Formats>().unwrap_err().contains("jpg"));
+        if cfg!(feature = "render") {
+            let f: Formats = "svg,png".parse().unwrap();
+            assert!(f.svg && f.png && !f.pdf);
+            assert!("pdf".parse::<Formats>().unwrap().pdf);
+        } else {
+            let e = "svg,png".parse::<Formats>().unwrap_err();
+            assert!(e.contains("`png`") && e.contains("render"), "{e}");
+            assert!("svg".parse::<Formats>().unwrap().svg);
+        }
         assert!("".parse::<Formats>().is_err());
     }
 }

@@ -1,0 +1,173 @@
+#!/usr/bin/env python3
+"""Measures every duration the README states, from nothing, on this machine, and writes them.
+
+    python3 tools/timings.py [--skip-reproduce]
+
+On a fresh clone of HEAD (in a temporary directory, with ../shared beside it as CI has it) and
+an empty target directory, it runs the README's two commands literally, then the pieces a
+reader asks about: the test build alone, the quick-start run alone, the release build without
+the PNG/PDF renderers (`--no-default-features`, its own target directory) and `gdsmc reproduce
+--quick`. For each: wall time, CPU time (user + system of the children), the crates compiled
+and the load average before and after, with the machine (CPU model, cores, memory), rustc and
+the commit. It writes docs/timings.md, and the block between the README's `<!-- timings -->`
+markers; tests/tests/timings.rs checks in CI that the block is the one docs/timings.md holds
+and that no other duration is written by hand in the README, the docs or `gdsmc --help`.
+
+Run it on an idle machine: it states the load it saw, and a loaded machine's figures are
+longer by about the load over the cores.
+"""
+
+import datetime
+import os
+import platform
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BEGIN, END = "<!-- timings -->", "<!-- /timings -->"
+
+
+def load():
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
+
+
+def machine():
+    model = "unknown CPU"
+    with open("/proc/cpuinfo") as f:
+        for line in f:
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    with open("/proc/meminfo") as f:
+        mem_kb = int(f.readline().split()[1])
+    return f"{model}, {os.cpu_count()} cores, {mem_kb / 2**20:.0f} GiB, {platform.system()} {platform.release()}"
+
+
+def run(cmd, cwd, env=None):
+    """Runs `cmd`; returns (wall s, CPU s, crates compiled, load before, load after)."""
+    l0 = load()
+    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.monotonic()
+    p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    wall = time.monotonic() - t0
+    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if p.returncode != 0:
+        sys.stderr.write(p.stdout[-4000:])
+        raise SystemExit(f"failed: {' '.join(cmd)} (exit {p.returncode})")
+    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+    compiled = len(re.findall(r"^\s*Compiling ", p.stdout, re.M))
+    return wall, cpu, compiled, l0, load()
+
+
+def minutes(s):
+    s = round(s)
+    return f"{s // 60} min {s % 60:02d} s" if s >= 60 else f"{s} s"
+
+
+def main():
+    skip_reproduce = "--skip-reproduce" in sys.argv
+    commit = subprocess.check_output(["git", "rev-parse", "--short", "HEAD"], cwd=REPO, text=True).strip()
+    rustc = subprocess.check_output(["rustc", "-V"], text=True).strip()
+    work = tempfile.mkdtemp(prefix="gdsmc-timings-")
+    clone = os.path.join(work, "gdsmc")
+    subprocess.run(["git", "clone", "-q", REPO, clone], check=True)
+    shared = os.path.join(os.path.dirname(REPO), "shared")
+    if os.path.isdir(shared):
+        os.symlink(shared, os.path.join(work, "shared"))
+    env = dict(os.environ)
+    env.pop("CARGO_TARGET_DIR", None)
+    rows = []
+
+    def step(key, what, cmd, e=env):
+        print(f"timings: {what} ...", flush=True)
+        w, c, n, l0, l1 = run(cmd, clone, e)
+        rows.append((key, what, " ".join(cmd), w, c, n, l0, l1))
+        print(f"timings: {what}: {minutes(w)} wall, {minutes(c)} CPU, {n} crates compiled", flush=True)
+        return w, n
+
+    try:
+        first, first_n = step(
+            "first-command",
+            "the README's first command, from nothing",
+            ["cargo", "run", "--release", "-p", "gdsmc", "--", "run", "scenes/grw-example3.toml"],
+        )
+        run_alone, _ = step(
+            "quick-start-run",
+            "its run alone (GRW Example 3, built)",
+            ["target/release/gdsmc", "run", "scenes/grw-example3.toml", "--out", "target/timings-out"],
+        )
+        test_build, test_n = step(
+            "test-build",
+            "the test build after it (`--no-run`)",
+            ["cargo", "test", "--workspace", "--release", "--no-run"],
+        )
+        tests, _ = step(
+            "tests",
+            "the README's second command after the test build",
+            ["cargo", "test", "--workspace", "--release"],
+        )
+        bare_env = dict(env, CARGO_TARGET_DIR=os.path.join(work, "target-bare"))
+        bare, bare_n = step(
+            "build-without-renderers",
+            "the release build without the renderers, from nothing",
+            ["cargo", "build", "--release", "-p", "gdsmc", "--no-default-features"],
+            bare_env,
+        )
+        if not skip_reproduce:
+            step(
+                "reproduce-quick",
+                "`gdsmc reproduce --quick`",
+                ["target/release/gdsmc", "reproduce", "--quick", "--out", "target/timings-reproduce"],
+            )
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+    today = datetime.date.today().isoformat()
+    loads = [r[6] for r in rows] + [r[7] for r in rows]
+    cores = os.cpu_count()
+    block = (
+        f"Measured by `tools/timings.py` on {today} (commit {commit}; {cores} cores, load "
+        f"{min(loads):.1f}-{max(loads):.1f}; docs/timings.md): the first command took "
+        f"{minutes(first)} from nothing ({first_n} crates compiled; the run itself "
+        f"{minutes(run_alone)}), the second {minutes(test_build + tests)} after it (it compiled "
+        f"{test_n} crates, the test harnesses and the test-only dependencies, in "
+        f"{minutes(test_build)}, and reused the rest; the tests ran {minutes(tests)}). Without "
+        f"the PNG/PDF renderers (`--no-default-features`) the release build compiles "
+        f"{bare_n} crates instead of {first_n} and took {minutes(bare)}."
+    )
+    md = [
+        "# Timings",
+        "",
+        "Generated by `python3 tools/timings.py` on a fresh clone with an empty target directory;",
+        "do not edit by hand. Every duration the README states comes from here (checked by",
+        "`tests/tests/timings.rs`). Wall and CPU time (user + system of every process); the load",
+        "average (one minute) before and after each step: figures taken under a load above zero",
+        "are longer by about the load over the cores.",
+        "",
+        f"- Date: {today}; commit {commit}; {rustc}",
+        f"- Machine: {machine()}",
+        "",
+        "| step | command | wall | CPU | crates compiled | load before | load after |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for key, what, cmd, w, c, n, l0, l1 in rows:
+        md.append(f"| {what} (`{key}`) | `{cmd}` | {minutes(w)} | {minutes(c)} | {n} | {l0:.2f} | {l1:.2f} |")
+    md += ["", "The README's block:", "", BEGIN, block, END, ""]
+    with open(os.path.join(REPO, "docs", "timings.md"), "w") as f:
+        f.write("\n".join(md))
+    readme = os.path.join(REPO, "README.md")
+    text = open(readme).read()
+    i, j = text.index(BEGIN), text.index(END)
+    with open(readme, "w") as f:
+        f.write(text[:i] + BEGIN + "\n" + block + "\n" + text[j:])
+    print("timings: wrote docs/timings.md and the README's block")
+
+
+if __name__ == "__main__":
+    main()
