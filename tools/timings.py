@@ -66,6 +66,8 @@ def run(cmd, cwd, env=None):
 
 
 def minutes(s):
+    if s < 10:
+        return f"{s:.2f} s"
     s = round(s)
     return f"{s // 60} min {s % 60:02d} s" if s >= 60 else f"{s} s"
 
