@@ -112,7 +112,8 @@ enum Command {
     /// 1-6), brs-table1, brs-table2, brs-equilibria (BRS Tables 1-2, Examples 4-5), ms-table1
     /// (MS Table 1). Each figure is printed with our 99.9% half-width, the exact expected value
     /// of the paper's estimator where known, the ranges the paper's figure and ours must lie
-    /// in, and a verdict: agree, disagree (paper) when the published figure misses an exact
+    /// in, and a verdict: agree (each check would catch a 10% error), weak (one would not; the
+    /// error it catches is printed), disagree (paper) when the published figure misses an exact
     /// value, DISAGREE, disputed (by a consistency check run alongside), uninformative (the
     /// check could not have failed), shown. DIR/report.md (rewritten after every table, so an
     /// interrupted run keeps the finished ones) says what each range is made of. Exits with 1

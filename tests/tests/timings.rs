@@ -65,10 +65,9 @@ fn durations(text: &str) -> Vec<(usize, String)> {
             .collect();
         for (i, w) in words.iter().enumerate() {
             let next = words.get(i + 1).copied().unwrap_or("");
-            let glued = UNITS.iter().any(|u| {
-                w.strip_suffix(u)
-                    .is_some_and(is_number)
-            });
+            let glued = UNITS
+                .iter()
+                .any(|u| w.strip_suffix(u).is_some_and(is_number));
             let counted = (is_number(w) || WORDS.contains(&w.to_lowercase().as_str()))
                 && UNITS.contains(&next);
             let about_a = w.eq_ignore_ascii_case("about")
@@ -103,6 +102,12 @@ fn the_scanner_finds_hand_written_durations() {
 
 #[test]
 fn the_readme_block_is_the_measured_one() {
+    // The measuring run itself (tools/timings.py runs the test command on a clone whose block
+    // is the previous one, or none) cannot hold its own result yet.
+    if std::env::var_os("GDSMC_TIMINGS_RUN").is_some() {
+        eprintln!("timings block not checked: tools/timings.py is measuring");
+        return;
+    }
     let r = root();
     let readme = fs::read_to_string(r.join("README.md")).expect("README.md");
     let timings = fs::read_to_string(r.join("docs/timings.md"))

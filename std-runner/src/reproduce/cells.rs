@@ -5,7 +5,18 @@
 //! in, the value the range is built around, and what the range is made of with the source of
 //! each part. A check is informative only when a computed 0, or a value ten times the expected
 //! one, would fall outside its range; a cell with an uninformative check is reported as such,
-//! never as agreeing.
+//! never as agreeing. An informative check has a power too: the relative error of the judged
+//! figure it catches ([`Check::detectable`]); a cell agrees only if each of its checks would
+//! catch an error of [`POWER`], else it is [`Verdict::Weak`].
+
+/// The relative error a check must catch for its cell to count as agreement: a tenth of the
+/// quantity the row is about. The tables' quantities are the effects the papers study (a
+/// temperature at a time, an error E_end or E_max made of the finite-n bias and the time-step
+/// term, a tail amplitude): a check that lets the figure be off by more than a tenth of the
+/// quantity itself cannot tell the paper's effect from a neighbouring one (Euler's first-order
+/// term from Strang's at the tables' time steps differs by more than that), so it confirms
+/// little. Checks wider than this are reported, with their power, as *weak*.
+pub const POWER: f64 = 0.10;
 
 use std::fmt::Write;
 
@@ -103,6 +114,19 @@ impl Check {
         let inside = |x: f64| self.lo <= x && x <= self.hi;
         self.lo.is_finite() && self.hi.is_finite() && !inside(0.0) && !inside(10.0 * self.expected)
     }
+
+    /// The check's power: the smallest relative error `r` such that the figure
+    /// `expected (1 + r)` and the figure `expected (1 - r)` both fall outside the range,
+    /// `max(hi - expected, expected - lo) / |expected|` (infinite for an expected 0 or an
+    /// unbounded range).
+    pub fn detectable(&self) -> f64 {
+        let reach = (self.hi - self.expected).max(self.expected - self.lo);
+        if self.expected == 0.0 || !reach.is_finite() {
+            f64::INFINITY
+        } else {
+            reach / self.expected.abs()
+        }
+    }
 }
 
 /// Who is off when a check fails.
@@ -127,6 +151,9 @@ pub enum Verdict {
     /// A check failed, and a consistency check computed in the same run says the paper's
     /// figure is the one off (see [`Cell::dispute`]).
     Disputed,
+    /// Every check passed and could have failed, but one would let an error of more than
+    /// [`POWER`] of the quantity through (its power is printed beside it).
+    Weak,
     /// Every check passed, but one could not have failed (its range holds 0 or ten times the
     /// expected value).
     Uninformative,
@@ -143,6 +170,7 @@ impl Verdict {
             Verdict::Disagree(Blame::Unresolved) => "DISAGREE",
             Verdict::Disagree(Blame::Ours) => "DISAGREE (ours)",
             Verdict::Disputed => "disputed",
+            Verdict::Weak => "weak",
             Verdict::Uninformative => "uninformative",
             Verdict::Shown => "shown",
         }
@@ -221,6 +249,7 @@ impl Cell {
         }
         let mut blame: Option<Blame> = None;
         let mut informative = true;
+        let mut powerful = true;
         for c in &self.checks {
             let x = match c.side {
                 Side::Paper => self.paper,
@@ -231,12 +260,14 @@ impl Cell {
                 blame = Some(blame.map_or(b, |a| a.max(b)));
             }
             informative &= c.informative();
+            powerful &= c.detectable() <= POWER;
         }
         match (blame, &self.dispute) {
             (Some(_), Some(_)) => Verdict::Disputed,
             (Some(b), None) => Verdict::Disagree(b),
-            (None, _) if informative => Verdict::Agree,
-            (None, _) => Verdict::Uninformative,
+            (None, _) if !informative => Verdict::Uninformative,
+            (None, _) if !powerful => Verdict::Weak,
+            (None, _) => Verdict::Agree,
         }
     }
 
@@ -255,7 +286,13 @@ impl Cell {
             })
     }
 
-    /// The checks as one line: `paper in [lo, hi] (basis); ours in [...] (...)`.
+    /// The least power of the cell's checks (the largest relative error one of them lets
+    /// through; [`Check::detectable`]), `None` for a cell only shown.
+    pub fn detectable(&self) -> Option<f64> {
+        self.checks.iter().map(Check::detectable).reduce(f64::max)
+    }
+
+    /// The checks as one line: `paper in [lo, hi], detects 4.1% (basis); ours in [...]`.
     pub fn basis(&self) -> String {
         let mut s = String::new();
         for (i, c) in self.checks.iter().enumerate() {
@@ -270,15 +307,31 @@ impl Cell {
                 super::figure::fmt(c.lo),
                 super::figure::fmt(c.hi),
                 if c.informative() {
-                    ""
+                    format!(", detects {}", percent(c.detectable()))
                 } else {
-                    " (cannot fail)"
+                    " (cannot fail)".into()
                 },
                 c.basis
             );
         }
         s
     }
+}
+
+/// A relative error as a percentage with two significant digits (`4.1%`, `0.52%`, `130%`).
+pub fn percent(r: f64) -> String {
+    if !r.is_finite() {
+        return "no error".into();
+    }
+    let p = 100.0 * r;
+    let decimals = if p >= 10.0 {
+        0
+    } else if p >= 1.0 {
+        1
+    } else {
+        (1.0 - p.log10().floor()).clamp(1.0, 6.0) as usize
+    };
+    format!("{p:.decimals$}%")
 }
 
 /// Half a unit of the last of three significant digits (the papers print three or four; three
@@ -333,6 +386,8 @@ pub struct Counts {
     pub fails_run: usize,
     /// [`Verdict::Disputed`].
     pub disputed: usize,
+    /// [`Verdict::Weak`].
+    pub weak: usize,
     /// [`Verdict::Uninformative`].
     pub uninformative: usize,
     /// [`Verdict::Shown`].
@@ -354,6 +409,7 @@ impl Counts {
                 Verdict::Disagree(Blame::Paper) => k.paper_off += 1,
                 Verdict::Disagree(_) => k.failing += 1,
                 Verdict::Disputed => k.disputed += 1,
+                Verdict::Weak => k.weak += 1,
                 Verdict::Uninformative => k.uninformative += 1,
                 Verdict::Shown => k.shown += 1,
             }
@@ -361,18 +417,21 @@ impl Counts {
         k
     }
 
-    /// One line: `12 agree, 1 disagree (paper), 0 disagree, 2 disputed, 3 uninformative, 4
-    /// shown`, with how many fail the run.
+    /// One line: `12 agree, 1 disagree (paper), 0 disagree, 2 disputed, 5 weak, 3
+    /// uninformative, 4 shown`, with how many fail the run.
     pub fn line(&self) -> String {
         format!(
             "{} agree, {} disagree (the paper's figure off an exact value), {} disagree \
              (ours off, or unresolved; {} of them beyond the report-wide range, failing the run), \
-             {} disputed, {} uninformative, {} shown",
+             {} disputed, {} weak (agree, but would let an error of more than {} through), \
+             {} uninformative, {} shown",
             self.agree,
             self.paper_off,
             self.failing,
             self.fails_run,
             self.disputed,
+            self.weak,
+            percent(POWER),
             self.uninformative,
             self.shown
         )

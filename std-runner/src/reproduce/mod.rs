@@ -25,7 +25,9 @@ mod report;
 mod runs;
 mod rw;
 
-pub use cells::{Against, Blame, Cell, Check, Counts, Row, Side, Table, Verdict, rounding};
+pub use cells::{
+    Against, Blame, Cell, Check, Counts, POWER, Row, Side, Table, Verdict, percent, rounding,
+};
 pub use figure::fmt;
 pub use report::{epilogue, markdown, text};
 pub(crate) use runs::{at, ensembles, go, largest, relative, scene, steady};
@@ -178,9 +180,26 @@ mod tests {
                 Side::Paper,
                 Against::Exact,
                 1.0,
-                0.1,
+                0.08,
                 "paper",
             ))
+    }
+
+    /// Table `t` of one row `r` holding `cells`.
+    fn one_row_table(cells: Vec<Cell>) -> Table {
+        Table {
+            name: "t",
+            title: "t",
+            notes: String::new(),
+            rows: vec![Row {
+                label: "r".into(),
+                n: 2,
+                ensembles: 2,
+                seconds: 0.0,
+                cells,
+            }],
+            skipped: vec![],
+        }
     }
 
     #[test]
@@ -205,11 +224,11 @@ mod tests {
         let mut c = exact_cell(1.2, 1.02);
         c.dispute = Some("evidence".into());
         assert_eq!(c.verdict(), Verdict::Disputed);
-        let c = Cell::new("x", 1.0, (1.1, 0.0)).check(Check::around(
+        let c = Cell::new("x", 1.0, (1.05, 0.0)).check(Check::around(
             Side::Ours,
             Against::Other,
             1.0,
-            0.2,
+            0.08,
             "both",
         ));
         assert_eq!(c.verdict(), Verdict::Agree);
@@ -249,6 +268,54 @@ mod tests {
         assert_eq!(Cell::shown("x", 1.0, 2.0).verdict(), Verdict::Shown);
     }
 
+    /// A check that can fail but lets through more than `POWER` of the quantity (here 1 +- 0.2:
+    /// it catches 20%) is weak, not agreement; at 1 +- 0.09 it catches 9% and agrees. Its power
+    /// is printed in the basis.
+    #[test]
+    fn a_check_wider_than_the_power_is_weak() {
+        let cell = |tol: f64| {
+            Cell::new("E", 1.0, (1.05, 0.0)).check(Check::around(
+                Side::Ours,
+                Against::Exact,
+                1.0,
+                tol,
+                "range",
+            ))
+        };
+        let weak = cell(0.2);
+        assert!((weak.detectable().unwrap() - 0.2).abs() < 1e-12);
+        assert_eq!(weak.verdict(), Verdict::Weak);
+        assert_eq!(weak.verdict_with(1.3), Verdict::Disagree(Blame::Ours));
+        assert!(weak.basis().contains("detects 20%"), "{}", weak.basis());
+        assert_eq!(cell(0.9 * POWER).verdict(), Verdict::Agree);
+        // Asymmetric: the wider side decides; a negative expectation counts by its size.
+        let c = Check {
+            lo: 0.95,
+            hi: 1.3,
+            ..Check::around(Side::Ours, Against::Exact, 1.0, 0.0, "")
+        };
+        assert!((c.detectable() - 0.3).abs() < 1e-12);
+        let c = Check::around(Side::Ours, Against::Exact, -2.0, 0.1, "");
+        assert!((c.detectable() - 0.05).abs() < 1e-12);
+        assert_eq!(
+            Check::around(Side::Ours, Against::Exact, 0.0, 0.1, "").detectable(),
+            f64::INFINITY
+        );
+        let t = one_row_table(vec![weak, cell(0.05)]);
+        let k = Counts::of([&t]);
+        assert_eq!((k.agree, k.weak), (1, 1));
+        assert!(epilogue(&[t]).contains("t r: E (detects 20%)"));
+    }
+
+    #[test]
+    fn percents_have_two_significant_digits() {
+        assert_eq!(percent(0.041), "4.1%");
+        assert_eq!(percent(0.0052), "0.52%");
+        assert_eq!(percent(1.3), "130%");
+        assert_eq!(percent(0.1), "10%");
+        assert_eq!(percent(f64::INFINITY), "no error");
+    }
+
     /// A range as wide as the value (here 1 +- 1) passes a computed 0: uninformative, and the
     /// self-check accepts the table because such a cell never says "agree".
     #[test]
@@ -263,19 +330,7 @@ mod tests {
         assert_eq!(c.verdict(), Verdict::Uninformative);
         assert_eq!(c.verdict_with(0.0), Verdict::Uninformative);
         assert_eq!(c.verdict_with(10.0), Verdict::Disagree(Blame::Ours));
-        let t = Table {
-            name: "t",
-            title: "t",
-            notes: String::new(),
-            rows: vec![Row {
-                label: "r".into(),
-                n: 2,
-                ensembles: 2,
-                seconds: 0.0,
-                cells: vec![c, exact_cell(1.05, 1.02)],
-            }],
-            skipped: vec![],
-        };
+        let t = one_row_table(vec![c, exact_cell(1.05, 1.02)]);
         assert!(self_check(&t).is_ok());
         assert_eq!(
             Counts::of([&t]),

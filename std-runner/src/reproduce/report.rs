@@ -70,12 +70,14 @@ pub fn text(t: &Table) -> String {
 /// The lines that end a `reproduce` run on the terminal, one per unusual class of cell, each
 /// saying why the cell is what it is: a disagreement of ours that stays within the report-wide
 /// range (expected now and then from sound code, so it does not fail the run), a disputed cell
-/// with the evidence against the paper's figure, and the published figures off an exact value.
+/// with the evidence against the paper's figure, the published figures off an exact value, and
+/// the weak cells with the error their checks let through.
 pub fn epilogue(tables: &[Table]) -> String {
     let mut s = String::new();
     let mut within = Vec::new();
     let mut disputed = Vec::new();
     let mut paper_off = Vec::new();
+    let mut weak = Vec::new();
     for t in tables {
         for r in &t.rows {
             for c in &r.cells {
@@ -91,6 +93,10 @@ pub fn epilogue(tables: &[Table]) -> String {
                         "{at} (paper {}, ours {})",
                         fmt(c.paper),
                         fmt(c.ours)
+                    )),
+                    Verdict::Weak => weak.push(format!(
+                        "{at} (detects {})",
+                        super::percent(c.detectable().unwrap_or(f64::INFINITY))
                     )),
                     _ => {}
                 }
@@ -129,6 +135,17 @@ pub fn epilogue(tables: &[Table]) -> String {
             let _ = writeln!(s, "  {p}");
         }
     }
+    if !weak.is_empty() {
+        let _ = writeln!(
+            s,
+            "weak (every check passed, but one would let an error of more than {} of the quantity \
+             through: the relative error it catches is beside each):",
+            super::percent(super::POWER)
+        );
+        for w in &weak {
+            let _ = writeln!(s, "  {w}");
+        }
+    }
     s
 }
 
@@ -155,23 +172,27 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
          as it defines it, or ours rescaled to its ensembles when it states none) and ours with \
          ours; elsewhere ours is judged against the paper's figure. A check whose range holds 0, \
          or ten times the expected value, could not fail: its cell is *uninformative*, never \
-         *agree*. *disagree (paper)*: the published figure lies outside the range of an exact \
+         *agree*. Each check that can fail states its power, the relative error of the judged \
+         figure it catches (`detects`); a cell whose checks all pass is *agree* only if each \
+         would catch an error of {} of the quantity (a tenth of the effect the row measures), \
+         else *weak*. *disagree (paper)*: the published figure lies outside the range of an exact \
          value (a finding; it does not fail the run). *DISAGREE* or *disagree (ours)*: fails \
          the run. *disputed*: a disagreement that a consistency check computed in the same run \
          puts on the paper (the table's notes give the evidence). Intervals use Student-t \
-         quantiles for the ensembles run.\n"
+         quantiles for the ensembles run.\n",
+        super::percent(super::POWER)
     );
     let _ = writeln!(
         s,
-        "| table | agree | disagree (paper) | disagree | disputed | uninformative | shown |"
+        "| table | agree | disagree (paper) | disagree | disputed | weak | uninformative | shown |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
     for t in tables {
         let k = Counts::of([t]);
         let _ = writeln!(
             s,
-            "| `{}` | {} | {} | {} | {} | {} | {} |",
-            t.name, k.agree, k.paper_off, k.failing, k.disputed, k.uninformative, k.shown
+            "| `{}` | {} | {} | {} | {} | {} | {} | {} |",
+            t.name, k.agree, k.paper_off, k.failing, k.disputed, k.weak, k.uninformative, k.shown
         );
     }
     let _ = writeln!(s);
