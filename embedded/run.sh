@@ -55,15 +55,17 @@ echo "firmware on microbit (Cortex-M0, GRW Example 3 alone): $(wc -l < target/ho
 # The C firmware: the no_std libgdsmc (caller memory, panic = abort) with the engines of GRW
 # Example 3 alone (gdsmc-core's `maxwell` and `white-noise`: a firmware names what it runs)
 # linked into a C main with newlib's semihosting, on the Cortex-M4F; the same main.c on the host
-# against the std build, which holds every engine.
+# against the std build, which holds every engine. The firmware's library is built in the
+# workspace's `dist` profile (thin LTO, one codegen unit: the smallest code; `release` is
+# cargo's default for the sake of one shared build of the command and the tests).
 (cd .. && RUSTFLAGS="$REMAP" cargo rustc --quiet -p gdsmc-ffi --no-default-features \
     --features gdsmc-core/maxwell,gdsmc-core/white-noise \
-    --target $TARGET --release --crate-type staticlib && cargo build --quiet --release -p gdsmc-ffi)
+    --target $TARGET --profile dist --crate-type staticlib && cargo build --quiet --release -p gdsmc-ffi)
 CFW=target/c-firmware.elf
 arm-none-eabi-gcc -std=c11 -Wall -Wextra -Werror -O2 -mcpu=cortex-m4 -mthumb -mfloat-abi=hard \
     -mfpu=fpv4-sp-d16 -ffunction-sections -fdata-sections -I../include c/main.c c/startup.c \
     -T c/link.ld -nostartfiles --specs=rdimon.specs -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
-    ../target/$TARGET/release/libgdsmc.a -lrdimon -lc -lm -o $CFW 2> target/c-firmware.log \
+    ../target/$TARGET/dist/libgdsmc.a -lrdimon -lc -lm -o $CFW 2> target/c-firmware.log \
     || { cat target/c-firmware.log >&2; exit 1; }
 cc -std=c11 -Wall -Wextra -Werror c/main.c -I../include ../target/release/libgdsmc.a -lm -lpthread \
     -ldl -o target/c-host
