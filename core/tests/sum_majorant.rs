@@ -12,6 +12,7 @@ use gdsmc_core::physics::{
     DriveChoice, KernelChoice, Model, Physics, RestitutionLaw, SchemeChoice,
 };
 use gdsmc_core::rng::Streams;
+use gdsmc_stats::Sample;
 
 const TIMES: [f64; 4] = [0.5, 1.0, 2.0, 4.0];
 
@@ -52,20 +53,13 @@ fn sample(m: &Model, seed: u64) -> (Vec<[Vec<f64>; 3]>, f64) {
     (out, coll as f64 / cand as f64)
 }
 
-/// Mean and variance of one sample.
-fn mean_var(x: &[f64]) -> (f64, f64) {
-    let s = gdsmc_stats::Sample::of(x);
-    (s.mean, s.sd * s.sd)
-}
-
 /// The largest two-sample z over every time and observable.
 fn largest_z(a: &[[Vec<f64>; 3]], b: &[[Vec<f64>; 3]]) -> f64 {
     let mut z: f64 = 0.0;
     for (x, y) in a.iter().zip(b) {
         for q in 0..3 {
-            let ((ma, va), (mb, vb)) = (mean_var(&x[q]), mean_var(&y[q]));
-            let se = (va / x[q].len() as f64 + vb / y[q].len() as f64).sqrt();
-            z = z.max((ma - mb).abs() / se);
+            let (sa, sb) = (Sample::of(&x[q]), Sample::of(&y[q]));
+            z = z.max(sa.z_from(&sb).abs());
         }
     }
     z

@@ -13,4 +13,4 @@ pub mod sample;
 
 pub use accumulator::Accumulator;
 pub use level::{KNOWN, LAMBDA_999, dof, family, joint, level_999, miss, multiplier, quantile_t};
-pub use sample::{Sample, mean_ci};
+pub use sample::{Sample, mean_ci, ratio_of_means};

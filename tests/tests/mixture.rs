@@ -232,15 +232,7 @@ fn compare_with(
             z * s1,
             exact[1]
         );
-        let r = m0 / m1;
-        let cov = t0
-            .iter()
-            .zip(&t1)
-            .map(|(a, b)| (a - m0) * (b - m1))
-            .sum::<f64>()
-            / (t0.len() as f64 - 1.0)
-            / t0.len() as f64;
-        let se = ((s0 * s0 - 2.0 * r * cov + r * r * s1 * s1) / (m1 * m1)).sqrt();
+        let (r, se) = gdsmc_stats::ratio_of_means(&t0, &t1);
         let exact_ratio = exact[0] / exact[1];
         assert!(
             (r - exact_ratio).abs() <= z * se,
