@@ -166,14 +166,15 @@ pub fn solve<const N: usize>(
         }
         let mut k = [[0.0; N]; 7];
         k[0] = k1;
-        for s in 1..7 {
-            let ys: [f64; N] =
-                std::array::from_fn(|i| y[i] + h * (0..s).map(|j| A[s][j] * k[j][i]).sum::<f64>());
-            k[s] = f(x + C[s] * h, &ys);
+        let stage = |s: usize, k: &[[f64; N]; 7]| -> [f64; N] {
+            std::array::from_fn(|i| y[i] + h * (0..s).map(|j| A[s][j] * k[j][i]).sum::<f64>())
+        };
+        for s in 1..6 {
+            k[s] = f(x + C[s] * h, &stage(s, &k));
         }
         // The seventh stage is evaluated at the fifth-order solution (first same as last).
-        let y1: [f64; N] =
-            std::array::from_fn(|i| y[i] + h * (0..6).map(|j| A[6][j] * k[j][i]).sum::<f64>());
+        let y1 = stage(6, &k);
+        k[6] = f(x + h, &y1);
         let err_v: [f64; N] =
             std::array::from_fn(|i| h * (0..7).map(|j| E[j] * k[j][i]).sum::<f64>());
         let err = norm(&err_v, &y, &y1, tol);
@@ -196,7 +197,7 @@ pub fn solve<const N: usize>(
         let bspl: [f64; N] = std::array::from_fn(|i| h * k[0][i] - ydiff[i]);
         let r4: [f64; N] = std::array::from_fn(|i| ydiff[i] - h * k[6][i] - bspl[i]);
         let r5: [f64; N] = std::array::from_fn(|i| h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>());
-        while next <= outputs && (grid(next) <= x1 || (last && next == outputs)) {
+        while next <= outputs && grid(next) <= x1 {
             let xo = grid(next);
             let yo = if next == outputs && last {
                 y1
