@@ -41,17 +41,10 @@ pub fn run(
     allow_long: bool,
 ) -> PyResult<(RunResult, bool)> {
     let mut s = scene.clone();
-    for o in [
-        n.map(|n| sc::Override::flag("n", "particles.n", n)),
-        ensembles.map(|m| sc::Override::flag("ensembles", "run.ensembles", m)),
-        seed.map(|x| sc::Override::flag("seed", "run.seed", x)),
-    ]
-    .into_iter()
-    .flatten()
-    {
+    for o in sc::Override::run_flags(n, ensembles, seed) {
         s = s.with(o)?;
     }
-    runner::estimate::check(&s.scene, threads, allow_long).map_err(to_py)?;
+    runner::estimate::check(s.scene(), threads, allow_long).map_err(to_py)?;
     let stop = AtomicBool::new(false);
     let done = AtomicU64::new(0);
     let mut reported = 0;
@@ -60,7 +53,7 @@ pub fn run(
     let stats = std::thread::scope(|scope| -> PyResult<_> {
         let job = scope.spawn(|| {
             runner::run_interruptible(
-                &s.scene,
+                s.scene(),
                 threads,
                 &|k| {
                     done.fetch_add(k, Ordering::Relaxed);
@@ -138,8 +131,8 @@ impl RunResult {
     /// The files `gdsmc run` writes besides the charts, as text: observables.csv,
     /// summary.json, and histograms.csv, reduced.csv, marginal.csv when the scene has them.
     fn tables(&self) -> PyResult<Vec<(String, String)>> {
-        let refs = for_scene(&self.scene.scene);
-        let files = report::tables(&self.scene.scene, &self.stats, &refs).map_err(to_py)?;
+        let refs = for_scene(self.scene.scene());
+        let files = report::tables(self.scene.scene(), &self.stats, &refs).map_err(to_py)?;
         Ok(files
             .into_iter()
             .map(|(name, bytes)| (name, String::from_utf8_lossy(&bytes).into_owned()))
@@ -148,8 +141,8 @@ impl RunResult {
 
     /// The summary the command prints.
     fn summary_text(&self) -> String {
-        let refs = for_scene(&self.scene.scene);
-        report::summary::text(&self.scene.scene, &self.stats, &refs)
+        let refs = for_scene(self.scene.scene());
+        report::summary::text(self.scene.scene(), &self.stats, &refs)
     }
 
     /// Writes the command's whole output set (tables, summary.json, charts in `formats`:
@@ -167,8 +160,7 @@ impl RunResult {
             .map_err(|e: String| pyo3::exceptions::PyValueError::new_err(e))?;
         py.detach(|| {
             let set = report::set::OutputSet::prepare(&dir)?;
-            let refs = for_scene(&self.scene.scene);
-            report::commit_run(set, &self.scene.scene, &self.stats, &refs, formats)
+            gdsmc_runner::job::commit(set, self.scene.scene(), &self.stats, formats)
         })
         .map_err(to_py)
     }
@@ -176,8 +168,8 @@ impl RunResult {
     fn __repr__(&self) -> String {
         format!(
             "RunResult({:?}: n={}, {} ensembles, {:.2} s)",
-            self.scene.scene.name,
-            self.scene.scene.n(),
+            self.scene.scene().name,
+            self.scene.scene().n(),
             self.stats.ensembles,
             self.stats.wall.as_secs_f64()
         )

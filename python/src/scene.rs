@@ -5,43 +5,33 @@ use crate::SceneError;
 use gdsmc_runner::scene as sc;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyString, PyTuple};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// A validated scene: the text of a scene file (docs/scenes.md) and the overrides applied to it.
 #[pyclass(frozen, module = "gdsmc._gdsmc")]
 #[derive(Clone)]
 pub struct Scene {
-    pub(crate) path: PathBuf,
-    pub(crate) text: String,
-    pub(crate) overrides: Vec<sc::Override>,
-    pub(crate) scene: sc::Scene,
+    pub(crate) source: sc::Sourced,
+}
+
+/// A scene error as the Python exception.
+fn scene_error(e: sc::Error) -> PyErr {
+    SceneError::new_err(e.to_string())
 }
 
 impl Scene {
-    /// Validates `text` (named `path` in messages) with `overrides`.
-    pub(crate) fn build(
-        path: PathBuf,
-        text: String,
-        overrides: Vec<sc::Override>,
-    ) -> PyResult<Self> {
-        let scene = sc::parse_with(&path, &text, &overrides)
-            .map_err(|e| SceneError::new_err(e.to_string()))?;
-        Ok(Scene {
-            path,
-            text,
-            overrides,
-            scene,
-        })
+    /// The validated scene.
+    pub(crate) fn scene(&self) -> &sc::Scene {
+        &self.source.scene
     }
 
     /// This scene with one more override (validated). An earlier override of the same key
     /// was validated when it was made and is replaced (a scene's `set` of a key set before
     /// changes it), so no key is ever given twice.
     pub(crate) fn with(&self, o: sc::Override) -> PyResult<Self> {
-        let mut overrides = self.overrides.clone();
-        overrides.retain(|e| !e.overlaps(&o));
-        overrides.push(o);
-        Scene::build(self.path.clone(), self.text.clone(), overrides)
+        Ok(Scene {
+            source: self.source.with(o).map_err(scene_error)?,
+        })
     }
 }
 
@@ -82,14 +72,18 @@ impl Scene {
     fn from_file(path: PathBuf) -> PyResult<Self> {
         let text = std::fs::read_to_string(&path)
             .map_err(|e| SceneError::new_err(format!("{}: cannot read: {e}", path.display())))?;
-        Scene::build(path, text, Vec::new())
+        Ok(Scene {
+            source: sc::Sourced::parse(&path, text, Vec::new()).map_err(scene_error)?,
+        })
     }
 
     /// Validates scene text; `name` stands for the file in error messages.
     #[staticmethod]
     #[pyo3(signature = (text, name = "<string>"))]
     fn from_toml(text: String, name: &str) -> PyResult<Self> {
-        Scene::build(PathBuf::from(name), text, Vec::new())
+        Ok(Scene {
+            source: sc::Sourced::parse(Path::new(name), text, Vec::new()).map_err(scene_error)?,
+        })
     }
 
     /// A copy with `key` (a dotted path, e.g. "collisions.restitution") set to `value`, or
@@ -110,49 +104,50 @@ impl Scene {
     /// The scene's name.
     #[getter]
     fn name(&self) -> String {
-        self.scene.name.clone()
+        self.scene().name.clone()
     }
 
     /// Its description.
     #[getter]
     fn description(&self) -> String {
-        self.scene.description.clone()
+        self.scene().description.clone()
     }
 
     /// Particles per ensemble.
     #[getter]
     fn n(&self) -> usize {
-        self.scene.n()
+        self.scene().n()
     }
 
     /// Ensembles.
     #[getter]
     fn ensembles(&self) -> u64 {
-        self.scene.ensembles
+        self.scene().ensembles
     }
 
     /// Seed.
     #[getter]
     fn seed(&self) -> u64 {
-        self.scene.seed
+        self.scene().seed
     }
 
     /// Observation times.
     #[getter]
     fn times(&self) -> Vec<f64> {
-        self.scene.times.clone()
+        self.scene().times.clone()
     }
 
     /// The scene file's text (without the overrides).
     #[getter]
     fn text(&self) -> String {
-        self.text.clone()
+        self.source.text.clone()
     }
 
     /// The overrides applied, as `key.path=value` strings in order.
     #[getter]
     fn overrides(&self) -> Vec<String> {
-        self.overrides
+        self.source
+            .overrides
             .iter()
             .map(|o| o.assignment.clone())
             .collect()
@@ -161,12 +156,12 @@ impl Scene {
     fn __repr__(&self) -> String {
         format!(
             "Scene({:?}: n={}, ensembles={}, seed={}, {} observation times{})",
-            self.scene.name,
-            self.scene.n(),
-            self.scene.ensembles,
-            self.scene.seed,
-            self.scene.times.len(),
-            if self.overrides.is_empty() {
+            self.scene().name,
+            self.scene().n(),
+            self.scene().ensembles,
+            self.scene().seed,
+            self.scene().times.len(),
+            if self.source.overrides.is_empty() {
                 String::new()
             } else {
                 format!(", overrides [{}]", self.overrides().join(", "))

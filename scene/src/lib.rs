@@ -44,7 +44,9 @@ pub use gdsmc_core::physics::{
     BackgroundKernel, Component, DriveChoice, KernelChoice, Model, Physics, RestitutionLaw,
     SchemeChoice,
 };
-pub use overrides::{Override, load_with, load_with_overrides, parse_with, parse_with_overrides};
+pub use overrides::{
+    Override, Sourced, load_with, load_with_overrides, parse_with, parse_with_overrides,
+};
 pub use schema::SceneFile;
 pub use validate::DEFAULT_STEP_FACTOR;
 

@@ -35,6 +35,17 @@ impl Override {
         }
     }
 
+    /// The overrides of the flags `--n`, `--ensembles` and `--seed` (and the Python keywords
+    /// of the same names), in that order: the keys `particles.n`, `run.ensembles`, `run.seed`,
+    /// validated as the file's, errors naming the flag.
+    pub fn run_flags(n: Option<i64>, ensembles: Option<i64>, seed: Option<u64>) -> Vec<Self> {
+        let mut flags = Vec::new();
+        flags.extend(n.map(|n| Override::flag("n", "particles.n", n)));
+        flags.extend(ensembles.map(|m| Override::flag("ensembles", "run.ensembles", m)));
+        flags.extend(seed.map(|s| Override::flag("seed", "run.seed", s)));
+        flags
+    }
+
     /// Whether this override and `other` set the same value: the same key, or one a table
     /// holding the other's key.
     pub fn overlaps(&self, other: &Override) -> bool {
@@ -210,4 +221,46 @@ pub fn load_with(path: &Path, overrides: &[Override]) -> Result<Scene, Error> {
 /// Reads a scene file and applies `--set` assignments.
 pub fn load_with_overrides(path: &Path, sets: &[String]) -> Result<Scene, Error> {
     load_with(path, &sets.iter().map(Override::set).collect::<Vec<_>>())
+}
+
+/// A validated scene with what it was made from: the file's path and text (read once) and the
+/// overrides applied to it. A run's journal records these, so that a continued run or a merge
+/// rebuilds the same scene; the command and the Python package both start from one.
+#[derive(Clone, Debug)]
+pub struct Sourced {
+    /// The scene file (or the name standing for it in messages).
+    pub path: PathBuf,
+    /// The file's text, without the overrides.
+    pub text: String,
+    /// The overrides, in the order given.
+    pub overrides: Vec<Override>,
+    /// The validated scene: `text` with `overrides`.
+    pub scene: Scene,
+}
+
+impl Sourced {
+    /// Validates `text` (named `path` in messages) with `overrides`.
+    pub fn parse(path: &Path, text: String, overrides: Vec<Override>) -> Result<Self, Error> {
+        let scene = parse_with(path, &text, &overrides)?;
+        Ok(Sourced {
+            path: path.to_path_buf(),
+            text,
+            overrides,
+            scene,
+        })
+    }
+
+    /// Reads the scene file at `path` once and validates it with `overrides`.
+    pub fn read(path: &Path, overrides: Vec<Override>) -> Result<Self, Error> {
+        Sourced::parse(path, read(path)?, overrides)
+    }
+
+    /// This scene with one more override, validated. An earlier override of the same key (or
+    /// of a table holding it) is replaced, so no key is ever given twice.
+    pub fn with(&self, o: Override) -> Result<Self, Error> {
+        let mut overrides = self.overrides.clone();
+        overrides.retain(|e| !e.overlaps(&o));
+        overrides.push(o);
+        Sourced::parse(&self.path, self.text.clone(), overrides)
+    }
 }

@@ -7,8 +7,9 @@
 //! The modules depend on each other in one direction:
 //! [`run`] (ensembles, statistics) <- [`reference`] (exact and hydrodynamic curves) <-
 //! [`analysis`] (tails, distributions, warnings) <- [`report`] (output sets, charts, summary)
-//! <- [`bench`] (speed); [`reproduce`] (the papers' tables) needs [`run`] and [`reference`]
-//! only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
+//! <- [`bench`] (speed), [`job`] (a run from the loaded scene to the written outputs: journal,
+//! shards, MPI, output set; the command's `run` and `merge` and the Python package call it);
+//! [`reproduce`] (the papers' tables) needs [`run`] and [`reference`] only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
 //! never over what gdsmc did not write).
 
 #![deny(unsafe_code)]
@@ -17,6 +18,7 @@ pub mod analysis;
 pub mod bench;
 pub mod error;
 pub mod files;
+pub mod job;
 pub mod reference;
 pub mod report;
 pub mod reproduce;

@@ -1,7 +1,7 @@
 //! The `gdsmc` command.
 
 use clap::{Parser, Subcommand};
-use gdsmc_runner::{run, scene};
+use gdsmc_runner::scene;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -235,132 +235,30 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             // validation as the file's, errors naming the flag.
             let mut overrides: Vec<scene::Override> =
                 set.into_iter().map(scene::Override::set).collect();
-            overrides.extend(n.map(|n| scene::Override::flag("n", "particles.n", n)));
-            overrides
-                .extend(ensembles.map(|m| scene::Override::flag("ensembles", "run.ensembles", m)));
-            overrides.extend(seed.map(|s| scene::Override::flag("seed", "run.seed", s)));
-            let sc = scene::load_with(&path, &overrides)?;
-            let text = std::fs::read_to_string(&path).map_err(|source| {
-                gdsmc_runner::Error::Scene(scene::Error::Read {
-                    path: path.clone(),
-                    source,
-                })
-            })?;
-            let shard = shard
-                .as_deref()
-                .map(|spec| run::shard::parse_spec(spec, sc.ensembles))
-                .transpose()?;
-            // Absurd work is refused before anything is allocated or run.
-            let work = run::estimate::check(&sc, threads, allow_long)?;
-            let range = shard.map_or(0..sc.ensembles, |(k, s)| {
-                run::shard::range(k, s, sc.ensembles)
-            });
-            #[cfg(feature = "mpi")]
-            if let Some(w) = run::mpi::World::init() {
-                return mpi_run(
-                    &w, &sc, &path, &text, &overrides, shard, out, threads, format,
-                );
-            }
-            let header =
-                run::journal::Header::new(&sc, &path, &text, &overrides, shard, range.clone());
-            if let Some((k, s)) = shard {
-                let dir =
-                    out.unwrap_or_else(|| PathBuf::from("out").join(format!("{}-shards", sc.name)));
-                std::fs::create_dir_all(&dir).map_err(|source| gdsmc_runner::Error::Write {
-                    path: dir.clone(),
-                    source,
-                })?;
-                let file = dir.join(run::shard::file_name(&sc.name, k, s));
-                let job = run::Journaled {
-                    scene: &sc,
-                    header,
-                    path: &file,
-                    threads,
-                    fresh,
-                };
-                let r = journaled(&job, range.end - range.start)?;
-                let done = r.stats.ensembles;
-                println!(
-                    "shard {k}/{s} of {}: ensembles {}..{} ({} run now, {} continued from the file), wall = {:.2} s\n{} {}",
-                    sc.name,
-                    range.start,
-                    range.start + done,
-                    done - r.resumed,
-                    r.resumed,
-                    r.stats.wall.as_secs_f64(),
-                    if done == range.end - range.start {
-                        "wrote"
-                    } else {
-                        "kept so far in"
-                    },
-                    file.display()
-                );
-                if done < range.end - range.start {
-                    eprintln!("run the same command again to finish the shard");
-                    return Err(gdsmc_runner::Error::Interrupted);
-                }
-                return Ok(());
-            }
-            // The output place is prepared (and shown writable) before any simulation.
-            let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
-            let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
-            let file = run::journal::beside(&dir, None);
-            let job = run::Journaled {
-                scene: &sc,
-                header,
-                path: &file,
+            overrides.extend(scene::Override::run_flags(n, ensembles, seed));
+            let job = gdsmc_runner::job::Job {
+                source: scene::Sourced::read(&path, overrides)?,
                 threads,
+                allow_long,
+                shard,
+                out,
                 fresh,
+                format,
             };
-            let r = journaled(&job, sc.ensembles)?;
-            let stats = r.stats;
-            let interrupted = stats.ensembles < sc.ensembles;
-            if interrupted {
-                eprintln!(
-                    "kept {} of {} ensembles in {}: run the same command again to continue",
-                    stats.ensembles,
-                    sc.ensembles,
-                    file.display()
-                );
-                if stats.ensembles == 0 {
-                    return Err(gdsmc_runner::Error::Interrupted);
-                }
+            let outcome = job.run(&Terminal::new())?;
+            print!("{}", outcome.text);
+            if outcome.complete {
+                Ok(())
+            } else {
+                Err(gdsmc_runner::Error::Interrupted)
             }
-            write_outputs(&sc, &stats, set, &dir, format)?;
-            println!(
-                "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)",
-                work.total(),
-                stats.counts.candidates as f64 + stats.counts.kicks(sc.n()) as f64
-            );
-            if interrupted {
-                return Err(gdsmc_runner::Error::Interrupted);
-            }
-            // The outputs hold everything now; the journal is no longer needed.
-            let _ = std::fs::remove_file(&file);
-            Ok(())
         }
         Command::Merge {
             inputs,
             out,
             format,
         } => {
-            let files = run::shard::files(&inputs)?;
-            // A given output place is checked before the shards are read.
-            if let Some(o) = &out {
-                run::shard::check_output(o, &files)?;
-                gdsmc_runner::report::set::check_replaceable(o)?;
-            }
-            let started = std::time::Instant::now();
-            let m = run::shard::merge_files(&files)?;
-            let merge_s = started.elapsed().as_secs_f64();
-            let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&m.scene.name));
-            run::shard::check_output(&dir, &files)?;
-            let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
-            write_outputs(&m.scene, &m.stats, set, &dir, format)?;
-            println!(
-                "merged {} shards ({} ensembles) in {merge_s:.3} s; wall and cpu above: the slowest shard's wall, all shards' cpu",
-                m.shards, m.stats.ensembles
-            );
+            print!("{}", gdsmc_runner::job::merge(&inputs, out, format)?);
             Ok(())
         }
         Command::Reproduce {
@@ -374,119 +272,59 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
     }
 }
 
-/// `mpirun -n P gdsmc run SCENE`: rank r runs shard r of P, rank 0 merges and writes.
-#[cfg(feature = "mpi")]
-#[allow(clippy::too_many_arguments)]
-fn mpi_run(
-    w: &run::mpi::World,
-    sc: &scene::Scene,
-    path: &std::path::Path,
-    text: &str,
-    overrides: &[scene::Override],
-    shard: Option<(u64, u64)>,
-    out: Option<PathBuf>,
-    threads: usize,
-    format: gdsmc_runner::report::charts::Formats,
-) -> Result<(), gdsmc_runner::Error> {
-    if shard.is_some() {
-        return Err(gdsmc_runner::Error::Argument {
-            flag: "--shard".into(),
-            message: "not under mpirun: the ranks are the shards".into(),
-        });
-    }
-    let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&sc.name));
-    let started = std::time::Instant::now();
-    run::mpi::run(
-        w,
-        sc,
-        |sh, range| run::journal::Header::new(sc, path, text, overrides, Some(sh), range),
-        &dir,
-        threads,
-        || gdsmc_runner::report::set::check_replaceable(&dir),
-        |m| {
-            let set = gdsmc_runner::report::set::OutputSet::prepare(&dir)?;
-            write_outputs(&m.scene, &m.stats, set, &dir, format)?;
-            println!(
-                "{} MPI ranks, {} ensembles, {:.2} s from start to merged outputs",
-                m.shards,
-                m.stats.ensembles,
-                started.elapsed().as_secs_f64()
-            );
-            Ok(())
-        },
-    )?;
-    Ok(())
+/// The terminal's view of a run: a progress bar on standard error (when it is a terminal)
+/// and Ctrl-C: the first lets the running ensembles finish and keeps what is done, a second
+/// ends the process at once.
+struct Terminal {
+    bar: indicatif::ProgressBar,
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
 }
 
-/// Runs a journaled job with a progress bar and Ctrl-C handling: the first Ctrl-C lets the
-/// running ensembles finish and keeps what is done, a second ends the process at once.
-fn journaled(job: &run::Journaled, total: u64) -> Result<run::JournalRun, gdsmc_runner::Error> {
-    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-    {
-        let stop = stop.clone();
-        let _ = ctrlc::set_handler(move || {
-            if stop.swap(true, std::sync::atomic::Ordering::SeqCst) {
-                std::process::exit(130);
-            }
-            eprintln!(
-                "\ninterrupted: finishing the running ensembles and keeping what is done (Ctrl-C again to quit)"
-            );
-        });
-    }
-    let bar = indicatif::ProgressBar::with_draw_target(
-        Some(total),
-        indicatif::ProgressDrawTarget::stderr(),
-    );
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} ensembles, {per_sec}, ETA {eta}",
-        )
-        .expect("template"),
-    );
-    if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
-        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
-    }
-    let r = job.run(&|k| bar.inc(k), &stop)?;
-    bar.finish_and_clear();
-    if let Some(why) = &r.discarded {
-        eprintln!(
-            "note: {} was not continued ({why}); started anew",
-            job.path.display()
+impl Terminal {
+    fn new() -> Self {
+        let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+        {
+            let stop = stop.clone();
+            let _ = ctrlc::set_handler(move || {
+                if stop.swap(true, std::sync::atomic::Ordering::SeqCst) {
+                    std::process::exit(130);
+                }
+                eprintln!(
+                    "\ninterrupted: finishing the running ensembles and keeping what is done (Ctrl-C again to quit)"
+                );
+            });
+        }
+        let bar = indicatif::ProgressBar::hidden();
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} ensembles, {per_sec}, ETA {eta}",
+            )
+            .expect("template"),
         );
-    } else if r.resumed > 0 {
-        eprintln!(
-            "continued {}: {} ensembles were already done",
-            job.path.display(),
-            r.resumed
-        );
+        Terminal { bar, stop }
     }
-    if let Some(why) = &r.damage {
-        eprintln!(
-            "note: {} was cut after its last good record ({why}); the ensembles after it were run again",
-            job.path.display()
-        );
-    }
-    Ok(r)
 }
 
-/// Writes a run's outputs into the prepared set and prints the summary.
-fn write_outputs(
-    sc: &scene::Scene,
-    stats: &run::RunStats,
-    set: gdsmc_runner::report::set::OutputSet,
-    dir: &std::path::Path,
-    format: gdsmc_runner::report::charts::Formats,
-) -> Result<(), gdsmc_runner::Error> {
-    let refs = gdsmc_runner::reference::curves::for_scene(sc);
-    let written = gdsmc_runner::report::commit_run(set, sc, stats, &refs, format)?;
-    print!("{}", gdsmc_runner::report::summary::text(sc, stats, &refs));
-    println!(
-        "\nwrote {} files into {}: {}",
-        written.len(),
-        dir.display(),
-        written.join(", ")
-    );
-    Ok(())
+impl gdsmc_runner::job::Watch for Terminal {
+    fn begin(&self, total: u64) {
+        self.bar.set_length(total);
+        if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+            self.bar
+                .set_draw_target(indicatif::ProgressDrawTarget::stderr());
+        }
+    }
+    fn advance(&self, k: u64) {
+        self.bar.inc(k);
+    }
+    fn end(&self) {
+        self.bar.finish_and_clear();
+    }
+    fn stop(&self) -> &std::sync::atomic::AtomicBool {
+        &self.stop
+    }
+    fn note(&self, line: &str) {
+        eprintln!("{line}");
+    }
 }
 
 fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {

@@ -292,18 +292,12 @@ fn records_of_another_run_are_refused() {
 #[test]
 fn a_spliced_journal_is_not_continued() {
     use gdsmc_runner::run::journal::{Header, ensemble_record, header_bytes};
-    use gdsmc_runner::scene::{Override, load_with};
+    use gdsmc_runner::scene::{Override, Sourced};
     let r = root("spliced-journal");
     let path = scene("grw-example3");
-    let text = std::fs::read_to_string(&path).unwrap();
     let header = |seed: u64| {
-        let o = [
-            Override::flag("n", "particles.n", 64),
-            Override::flag("ensembles", "run.ensembles", 2),
-            Override::flag("seed", "run.seed", seed),
-        ];
-        let sc = load_with(&path, &o).unwrap();
-        Header::new(&sc, &path, &text, &o, None, 0..2)
+        let o = Override::run_flags(Some(64), Some(2), Some(seed));
+        Header::new(&Sourced::read(&path, o).unwrap(), None, 0..2)
     };
     let (mine, theirs) = (header(1), header(2));
     let mut b = header_bytes(&mine);

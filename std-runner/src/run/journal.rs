@@ -77,21 +77,20 @@ pub struct Header {
 }
 
 impl Header {
-    /// The header of a run of `scene` (read from `path` as `text`, with `overrides`) that
-    /// holds `range`, as shard `shard` = (K, S) or the whole run.
+    /// The header of a run of `source` that holds `range`, as shard `shard` = (K, S) or the
+    /// whole run.
     pub fn new(
-        scene: &Scene,
-        path: &Path,
-        text: &str,
-        overrides: &[crate::scene::Override],
+        source: &crate::scene::Sourced,
         shard: Option<(u64, u64)>,
         range: std::ops::Range<u64>,
     ) -> Self {
+        let scene = &source.scene;
         Header {
             gdsmc_version: env!("CARGO_PKG_VERSION").into(),
-            scene_path: path.display().to_string(),
-            scene_text: text.into(),
-            overrides: overrides
+            scene_path: source.path.display().to_string(),
+            scene_text: source.text.clone(),
+            overrides: source
+                .overrides
                 .iter()
                 .map(|o| (o.source.clone(), o.assignment.clone()))
                 .collect(),

@@ -1,0 +1,310 @@
+//! A run of a scene as `gdsmc run` makes it, from the loaded scene to the written outputs: the
+//! work check, the journal (continued when the same run left one), a shard, the MPI ranks, the
+//! output set and the summary; and `gdsmc merge`. The command and the Python package both call
+//! it. What the user sees of a run (a progress bar, Ctrl-C, where text goes) is the caller's,
+//! through [`Watch`]; the job returns the text to show.
+
+use crate::error::Error;
+use crate::reference::curves::for_scene;
+use crate::report::{self, charts::Formats, set::OutputSet};
+use crate::run::{self, Journaled, RunStats, shard};
+use crate::scene::{Scene, Sourced};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+
+/// What the caller sees of a running job and how it stops one.
+pub trait Watch: Sync {
+    /// The job is about to run towards `total` ensembles (those a journal already holds
+    /// included).
+    fn begin(&self, total: u64);
+    /// `k` more ensembles finished.
+    fn advance(&self, k: u64);
+    /// The ensembles are done or stopped; notes and the outcome follow.
+    fn end(&self);
+    /// Set when the user asks the job to stop: the running ensembles finish, the rest are
+    /// skipped, and what is done is kept.
+    fn stop(&self) -> &AtomicBool;
+    /// A line for the user beside the results (the command's standard error).
+    fn note(&self, line: &str);
+}
+
+/// A [`Watch`] that shows nothing and never stops (tests, scripts).
+#[derive(Debug, Default)]
+pub struct Quiet(AtomicBool);
+
+impl Watch for Quiet {
+    fn begin(&self, _: u64) {}
+    fn advance(&self, _: u64) {}
+    fn end(&self) {}
+    fn stop(&self) -> &AtomicBool {
+        &self.0
+    }
+    fn note(&self, _: &str) {}
+}
+
+/// A run as `gdsmc run` takes it.
+#[derive(Clone, Debug)]
+pub struct Job {
+    /// The scene, with its file's text and overrides (the journal records them).
+    pub source: Sourced,
+    /// Worker threads (0: all cores).
+    pub threads: usize,
+    /// Run even when the work estimate is above the limit.
+    pub allow_long: bool,
+    /// Run only shard K of S (`--shard K/S`), into a shard file for `gdsmc merge`.
+    pub shard: Option<String>,
+    /// The output directory (default: out/NAME, or out/NAME-shards for a shard).
+    pub out: Option<PathBuf>,
+    /// Start anew instead of continuing a journal of the same run.
+    pub fresh: bool,
+    /// Chart formats.
+    pub format: Formats,
+}
+
+/// What a job did, for the caller to show.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    /// The summary and the files written (the command's standard output).
+    pub text: String,
+    /// Whether every ensemble asked for is done; an interrupted job keeps what it finished
+    /// (the same command continues it).
+    pub complete: bool,
+}
+
+impl Job {
+    /// The shard asked for, checked against the scene's ensembles.
+    fn shard(&self) -> Result<Option<(u64, u64)>, Error> {
+        let ensembles = self.source.scene.ensembles;
+        self.shard
+            .as_deref()
+            .map(|spec| shard::parse_spec(spec, ensembles))
+            .transpose()
+    }
+
+    /// Runs the job: the arguments and the work estimate are checked before anything is
+    /// allocated or run, the output place before any simulation; finished ensembles are
+    /// journaled as they finish (so a rerun of the same job continues), and the outputs are
+    /// written when the run is complete or stopped. Under mpirun (the `mpi` feature) the
+    /// ranks share the ensembles and rank 0 writes.
+    pub fn run(&self, watch: &dyn Watch) -> Result<Outcome, Error> {
+        let sc = &self.source.scene;
+        let shard = self.shard()?;
+        // Absurd work is refused before anything is allocated or run.
+        let work = run::estimate::check(sc, self.threads, self.allow_long)?;
+        #[cfg(feature = "mpi")]
+        if let Some(w) = run::mpi::World::init() {
+            return self.mpi(&w, shard);
+        }
+        if let Some((k, s)) = shard {
+            return self.run_shard(k, s, watch);
+        }
+        // The output place is prepared (and shown writable) before any simulation.
+        let dir = self.dir(&sc.name);
+        let set = OutputSet::prepare(&dir)?;
+        let file = run::journal::beside(&dir, None);
+        let r = self.journaled(&file, None, 0..sc.ensembles, watch)?;
+        let stats = r.stats;
+        let complete = stats.ensembles == sc.ensembles;
+        if !complete {
+            watch.note(&format!(
+                "kept {} of {} ensembles in {}: run the same command again to continue",
+                stats.ensembles,
+                sc.ensembles,
+                file.display()
+            ));
+            if stats.ensembles == 0 {
+                return Err(Error::Interrupted);
+            }
+        }
+        let mut text = write(set, sc, &stats, &dir, self.format)?;
+        let _ = writeln!(
+            text,
+            "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)",
+            work.total(),
+            stats.counts.candidates as f64 + stats.counts.kicks(sc.n()) as f64
+        );
+        if complete {
+            // The outputs hold everything now; the journal is no longer needed.
+            let _ = std::fs::remove_file(&file);
+        }
+        Ok(Outcome { text, complete })
+    }
+
+    /// The output directory: `--out`, or out/NAME.
+    fn dir(&self, name: &str) -> PathBuf {
+        self.out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("out").join(name))
+    }
+
+    /// Runs ensembles `range` (shard `shard`, or the whole run) journaled in `file`, and
+    /// tells the watcher what the journal held.
+    fn journaled(
+        &self,
+        file: &Path,
+        shard: Option<(u64, u64)>,
+        range: std::ops::Range<u64>,
+        watch: &dyn Watch,
+    ) -> Result<run::JournalRun, Error> {
+        let job = Journaled {
+            scene: &self.source.scene,
+            header: run::journal::Header::new(&self.source, shard, range.clone()),
+            path: file,
+            threads: self.threads,
+            fresh: self.fresh,
+        };
+        watch.begin(range.end - range.start);
+        let r = job.run(&|k| watch.advance(k), watch.stop());
+        watch.end();
+        let r = r?;
+        if let Some(why) = &r.discarded {
+            watch.note(&format!(
+                "note: {} was not continued ({why}); started anew",
+                file.display()
+            ));
+        } else if r.resumed > 0 {
+            watch.note(&format!(
+                "continued {}: {} ensembles were already done",
+                file.display(),
+                r.resumed
+            ));
+        }
+        if let Some(why) = &r.damage {
+            watch.note(&format!(
+                "note: {} was cut after its last good record ({why}); the ensembles after it were run again",
+                file.display()
+            ));
+        }
+        Ok(r)
+    }
+
+    /// Runs shard `k` of `s` into its shard file.
+    fn run_shard(&self, k: u64, s: u64, watch: &dyn Watch) -> Result<Outcome, Error> {
+        let sc = &self.source.scene;
+        let range = shard::range(k, s, sc.ensembles);
+        let dir = self.dir(&format!("{}-shards", sc.name));
+        std::fs::create_dir_all(&dir).map_err(|source| Error::Write {
+            path: dir.clone(),
+            source,
+        })?;
+        let file = dir.join(shard::file_name(&sc.name, k, s));
+        let r = self.journaled(&file, Some((k, s)), range.clone(), watch)?;
+        let done = r.stats.ensembles;
+        let complete = done == range.end - range.start;
+        if !complete {
+            watch.note("run the same command again to finish the shard");
+        }
+        let text = format!(
+            "shard {k}/{s} of {}: ensembles {}..{} ({} run now, {} continued from the file), wall = {:.2} s\n{} {}\n",
+            sc.name,
+            range.start,
+            range.start + done,
+            done - r.resumed,
+            r.resumed,
+            r.stats.wall.as_secs_f64(),
+            if complete { "wrote" } else { "kept so far in" },
+            file.display()
+        );
+        Ok(Outcome { text, complete })
+    }
+
+    /// `mpirun -n P gdsmc run SCENE`: rank r runs shard r of P, rank 0 merges and writes.
+    /// The other ranks return an empty outcome.
+    #[cfg(feature = "mpi")]
+    fn mpi(&self, w: &run::mpi::World, shard: Option<(u64, u64)>) -> Result<Outcome, Error> {
+        if shard.is_some() {
+            return Err(Error::Argument {
+                flag: "--shard".into(),
+                message: "not under mpirun: the ranks are the shards".into(),
+            });
+        }
+        let sc = &self.source.scene;
+        let dir = self.dir(&sc.name);
+        let started = std::time::Instant::now();
+        let mut text = String::new();
+        run::mpi::run(
+            w,
+            sc,
+            |sh, range| run::journal::Header::new(&self.source, Some(sh), range),
+            &dir,
+            self.threads,
+            || report::set::check_replaceable(&dir),
+            |m| {
+                let set = OutputSet::prepare(&dir)?;
+                text = write(set, &m.scene, &m.stats, &dir, self.format)?;
+                let _ = writeln!(
+                    text,
+                    "{} MPI ranks, {} ensembles, {:.2} s from start to merged outputs",
+                    m.shards,
+                    m.stats.ensembles,
+                    started.elapsed().as_secs_f64()
+                );
+                Ok(())
+            },
+        )?;
+        Ok(Outcome {
+            text,
+            complete: true,
+        })
+    }
+}
+
+/// `gdsmc merge`: the shard files in `inputs` (files, or directories holding them) merged into
+/// the outputs of the whole run, written into `out` (default out/NAME). Returns the text to
+/// show.
+pub fn merge(inputs: &[PathBuf], out: Option<PathBuf>, format: Formats) -> Result<String, Error> {
+    let files = shard::files(inputs)?;
+    // A given output place is checked before the shards are read.
+    if let Some(o) = &out {
+        shard::check_output(o, &files)?;
+        report::set::check_replaceable(o)?;
+    }
+    let started = std::time::Instant::now();
+    let m = shard::merge_files(&files)?;
+    let merge_s = started.elapsed().as_secs_f64();
+    let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&m.scene.name));
+    shard::check_output(&dir, &files)?;
+    let set = OutputSet::prepare(&dir)?;
+    let mut text = write(set, &m.scene, &m.stats, &dir, format)?;
+    let _ = writeln!(
+        text,
+        "merged {} shards ({} ensembles) in {merge_s:.3} s; wall and cpu above: the slowest shard's wall, all shards' cpu",
+        m.shards, m.stats.ensembles
+    );
+    Ok(text)
+}
+
+/// Writes a run's outputs into the prepared set `set` (at `dir`): the tables, summary.json
+/// and the charts in `format`, with every reference that applies. Returns the summary and the
+/// list of files written, as the command prints them.
+pub fn write(
+    set: OutputSet,
+    scene: &Scene,
+    stats: &RunStats,
+    dir: &Path,
+    format: Formats,
+) -> Result<String, Error> {
+    let refs = for_scene(scene);
+    let files = report::commit_run(set, scene, stats, &refs, format)?;
+    let mut text = report::summary::text(scene, stats, &refs);
+    let _ = writeln!(
+        text,
+        "\nwrote {} files into {}: {}",
+        files.len(),
+        dir.display(),
+        files.join(", ")
+    );
+    Ok(text)
+}
+
+/// Writes a run's outputs into the prepared set, with every reference that applies; returns
+/// the files written.
+pub fn commit(
+    set: OutputSet,
+    scene: &Scene,
+    stats: &RunStats,
+    format: Formats,
+) -> Result<Vec<String>, Error> {
+    report::commit_run(set, scene, stats, &for_scene(scene), format)
+}
