@@ -5,6 +5,7 @@
 pub mod charts;
 pub mod set;
 pub mod summary;
+pub mod summary_file;
 
 use crate::error::Error;
 use crate::files::write_atomic;
@@ -78,128 +79,6 @@ pub fn histograms_csv(
     w.into_inner().map_err(|e| e.into_error().into())
 }
 
-/// summary.json: scene, seed, version, timing, counts and the errors against references.
-pub fn summary_json(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> serde_json::Value {
-    let last = stats.times.len() - 1;
-    let mut errors = Vec::new();
-    for r in refs {
-        let col = stats.col(r.of).expect("reference of a known column");
-        let (mut e_max, mut t_at) = (0.0f64, 0.0);
-        for (ti, &t) in stats.times.iter().enumerate() {
-            let exact = (r.curve)(t);
-            // Relative where the reference is non-zero, absolute where it vanishes (V components).
-            let d = (stats.mean(ti, col) - exact).abs();
-            let e = if exact != 0.0 { d / exact.abs() } else { d };
-            if e > e_max {
-                e_max = e;
-                t_at = t;
-            }
-        }
-        let exact_end = (r.curve)(stats.times[last]);
-        errors.push(serde_json::json!({
-            "observable": r.of,
-            "reference": r.name,
-            "source": r.source,
-            "E_end": (stats.mean(last, col) - exact_end).abs() / if exact_end != 0.0 { exact_end.abs() } else { 1.0 },
-            "Conf_end": stats.ci(last, col) / if exact_end != 0.0 { exact_end.abs() } else { 1.0 },
-            "E_max": e_max,
-            "t_of_E_max": t_at,
-        }));
-    }
-    let c = stats.counts;
-    let steady = stats.steady.as_ref().map(|st| {
-        let cols: serde_json::Map<String, serde_json::Value> = stats
-            .names
-            .iter()
-            .enumerate()
-            .map(|(i, col)| {
-                let (m, ci) = st.mean_ci(stats, i);
-                (col.to_string(), serde_json::json!({ "mean": m, "ci": ci }))
-            })
-            .collect();
-        serde_json::json!({ "from": stats.times[st.first], "points": st.points, "observables": cols })
-    });
-    let tail = stats
-        .histogram
-        .as_ref()
-        .and_then(|(radius, h)| crate::analysis::tails::fit(*radius, h, stats.dimension))
-        .map(|f| {
-            serde_json::json!({
-                "k0": 1,
-                "slope": f.slope,
-                "slope_ci": f.slope_ci,
-                "shells_used": f.points.len(),
-                "reference_exponent_grw_16": crate::analysis::tails::reference_exponent(scene),
-                "halves": stats.histogram.as_ref().and_then(|(radius, h)| {
-                    crate::analysis::tails::halves(*radius, h, stats.dimension)
-                }).map(|(a, b)| serde_json::json!({
-                    "inner": { "slope": a.slope, "slope_ci": a.slope_ci,
-                        "shells": [a.points[0].0, a.points[a.points.len() - 1].0] },
-                    "outer": { "slope": b.slope, "slope_ci": b.slope_ci,
-                        "shells": [b.points[0].0, b.points[b.points.len() - 1].0] },
-                })),
-            })
-        });
-    let reduced = crate::analysis::distribution::reduced(scene, stats).map(|r| {
-        serde_json::json!({
-            "a2": r.a2.0,
-            "a2_ci": r.a2.1,
-            "tail_law": r.tail.map(|t| serde_json::json!({
-                "equation": t.equation,
-                "amplitude": t.amplitude,
-                "power": t.power,
-                "mu2_from": t.mu2_source,
-            })),
-            "file": "reduced.csv",
-        })
-    });
-    let warnings: Vec<serde_json::Value> = crate::analysis::warnings::check(scene, stats)
-        .into_iter()
-        .map(|w| serde_json::json!({ "code": w.code, "message": w.message }))
-        .collect();
-    let thermostat = crate::reference::thermostat::GaussianBalance::of(scene).map(|b| {
-        serde_json::json!({
-            "zeta": b.zeta,
-            "cooling_constant": b.kappa,
-            "steady_temperature": b.steady_temperature(),
-            "holding_zeta": b.holding_zeta(),
-            "note": b.describe(),
-        })
-    });
-    serde_json::json!({
-        "warnings": warnings,
-        "no_intervals": crate::analysis::warnings::no_intervals(stats),
-        "thermostat": thermostat,
-        "reduced_distribution": reduced,
-        "tail": tail,
-        "steady_state": steady,
-        "gdsmc_version": env!("CARGO_PKG_VERSION"),
-        "scene": scene.name,
-        "description": scene.description,
-        "n": scene.n(),
-        "ensembles": stats.ensembles,
-        "ensembles_requested": scene.ensembles,
-        "interrupted": stats.ensembles < scene.ensembles,
-        "seed": scene.seed,
-        "threads": stats.threads,
-        "wall_seconds": stats.wall.as_secs_f64(),
-        "cpu_seconds": stats.cpu.as_secs_f64(),
-        "counts": {
-            "candidates": c.candidates,
-            "collisions": c.collisions,
-            "fictitious": c.fictitious,
-            "majorant_overshoots": c.overshoots,
-            "restitution_clamped": c.clamped,
-            "majorant_refreshes": c.refreshes,
-            "rescales": c.rescales,
-            "background_collisions": c.background,
-            "observations": c.observations,
-            "kicks": c.kicks(scene.n()),
-        },
-        "errors": errors,
-    })
-}
-
 /// The files of a run besides the charts, by name, as bytes: observables.csv, summary.json,
 /// and histograms.csv, reduced.csv, marginal.csv when the scene asks for them. The command
 /// writes them ([`write_all`]); the Python package hands them over as they are.
@@ -216,7 +95,8 @@ pub fn tables(
         "observables.csv".to_string(),
         observables_csv(stats, refs).map_err(|e| csv_err("observables.csv", e))?,
     )];
-    let json = serde_json::to_vec_pretty(&summary_json(scene, stats, refs)).expect("json");
+    let json = serde_json::to_vec_pretty(&summary_file::Summary::of(scene, stats, refs).to_json())
+        .expect("json");
     out.push(("summary.json".into(), json));
     if let Some((radius, h)) = &stats.histogram {
         let bytes = histograms_csv(*radius, h, stats.dimension)

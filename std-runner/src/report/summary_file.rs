@@ -1,0 +1,358 @@
+//! summary.json as types: what a run records beside its tables (scene, seed, version, timing,
+//! collision counts, errors against the references, steady-state averages, tail fit, reduced
+//! distribution, thermostat balance, warnings). Written with its keys in alphabetical order at
+//! every level (serde_json's map order), so the file's bytes do not depend on field order here.
+
+use crate::reference::curves::ReferenceCurve;
+use crate::run::RunStats;
+use crate::scene::Scene;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// The whole of summary.json.
+#[derive(Clone, Debug, Serialize)]
+pub struct Summary {
+    /// The gdsmc version that wrote it.
+    pub gdsmc_version: &'static str,
+    /// The scene's name.
+    pub scene: String,
+    /// The scene's description.
+    pub description: String,
+    /// Particles per ensemble.
+    pub n: usize,
+    /// Ensembles in the statistics.
+    pub ensembles: u64,
+    /// Ensembles the scene asks for (more than `ensembles` when interrupted).
+    pub ensembles_requested: u64,
+    /// Whether the run was stopped before every ensemble finished.
+    pub interrupted: bool,
+    /// The run's seed.
+    pub seed: u64,
+    /// Worker threads.
+    pub threads: usize,
+    /// Wall-clock seconds.
+    pub wall_seconds: f64,
+    /// CPU seconds, all threads.
+    pub cpu_seconds: f64,
+    /// Event counts summed over the ensembles.
+    pub counts: Counts,
+    /// The run's errors against each reference curve.
+    pub errors: Vec<ReferenceError>,
+    /// Steady-state averages, when the scene asks for them.
+    pub steady_state: Option<Steady>,
+    /// The fitted tail exponent, when the scene has a histogram to fit.
+    pub tail: Option<Tail>,
+    /// MS's reduced distribution, when the scene asks for it.
+    pub reduced_distribution: Option<Reduced>,
+    /// The Gaussian thermostat's balance, for a thermostatted scene.
+    pub thermostat: Option<Thermostat>,
+    /// Warnings: what fired, how large the error is expected to be, what to do.
+    pub warnings: Vec<Warning>,
+    /// Why no interval is given (one ensemble), when none is.
+    pub no_intervals: Option<String>,
+}
+
+/// The event counts of summary.json (the core's `Counts` under the file's names).
+#[derive(Clone, Debug, Serialize)]
+pub struct Counts {
+    /// Candidate pairs drawn (events of the majorant process).
+    pub candidates: u64,
+    /// Real collisions (candidates accepted).
+    pub collisions: u64,
+    /// Fictitious collisions (candidates rejected, GRW (20)).
+    pub fictitious: u64,
+    /// Candidates faster than the majorant that generated their waiting time (RW (19)).
+    pub majorant_overshoots: u64,
+    /// Collisions whose restitution law gave a value outside [0, 1], clamped to it.
+    pub restitution_clamped: u64,
+    /// Majorant refreshes between observations.
+    pub majorant_refreshes: u64,
+    /// Rescalings of a cooling gas's stored velocities.
+    pub rescales: u64,
+    /// Real collisions with the host medium's background (BRS (26) events).
+    pub background_collisions: u64,
+    /// Observations (synchronizing kicks of all particles).
+    pub observations: u64,
+    /// Single-particle kicks: two per candidate and n per observation (RW Section 4.2).
+    pub kicks: u64,
+}
+
+/// A run's error against one reference curve: relative where the reference is non-zero,
+/// absolute where it vanishes (the components of V).
+#[derive(Clone, Debug, Serialize)]
+pub struct ReferenceError {
+    /// The observable's column.
+    pub observable: &'static str,
+    /// The reference's column.
+    pub reference: &'static str,
+    /// Where the reference comes from (paper and equation).
+    pub source: &'static str,
+    /// The error at the last observation time.
+    #[serde(rename = "E_end")]
+    pub e_end: f64,
+    /// The 99.9% half-width there, on the same scale.
+    #[serde(rename = "Conf_end")]
+    pub conf_end: f64,
+    /// The largest error over the observation times.
+    #[serde(rename = "E_max")]
+    pub e_max: f64,
+    /// The time of the largest error.
+    #[serde(rename = "t_of_E_max")]
+    pub t_of_e_max: f64,
+}
+
+/// Steady-state averages: every observable's mean over the window with its interval.
+#[derive(Clone, Debug, Serialize)]
+pub struct Steady {
+    /// The window's first observation time.
+    pub from: f64,
+    /// Observation times in the window.
+    pub points: usize,
+    /// Each observable's window mean and interval, by column name.
+    pub observables: BTreeMap<String, MeanCi>,
+}
+
+/// A mean with the half-width of its 99.9% interval.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct MeanCi {
+    /// The mean.
+    pub mean: f64,
+    /// The half-width of its 99.9% interval.
+    pub ci: f64,
+}
+
+/// The tail fit of the radial histogram (GRW (16)).
+#[derive(Clone, Debug, Serialize)]
+pub struct Tail {
+    /// The first shell of the fit.
+    pub k0: usize,
+    /// The fitted exponent.
+    pub slope: f64,
+    /// Its 99.9% half-width.
+    pub slope_ci: f64,
+    /// Shells in the fit.
+    pub shells_used: usize,
+    /// The exponent GRW (16) predicts for the scene's kernel.
+    pub reference_exponent_grw_16: f64,
+    /// The fit of the inner and outer halves (whether the tail is asymptotic).
+    pub halves: Option<Halves>,
+}
+
+/// The tail fit's two halves.
+#[derive(Clone, Debug, Serialize)]
+pub struct Halves {
+    /// The inner half.
+    pub inner: HalfFit,
+    /// The outer half.
+    pub outer: HalfFit,
+}
+
+/// One half of the tail fit.
+#[derive(Clone, Debug, Serialize)]
+pub struct HalfFit {
+    /// Its exponent.
+    pub slope: f64,
+    /// Its 99.9% half-width.
+    pub slope_ci: f64,
+    /// Its first and last shell.
+    pub shells: [usize; 2],
+}
+
+/// MS's reduced distribution: a2 and the tail law, the shells in reduced.csv.
+#[derive(Clone, Debug, Serialize)]
+pub struct Reduced {
+    /// The second Sonine coefficient.
+    pub a2: f64,
+    /// Its 99.9% half-width.
+    pub a2_ci: f64,
+    /// The tail law compared with, when one applies.
+    pub tail_law: Option<TailLaw>,
+    /// The file holding the shells.
+    pub file: &'static str,
+}
+
+/// A tail law of MS (69), (71) or (77).
+#[derive(Clone, Debug, Serialize)]
+pub struct TailLaw {
+    /// The equation.
+    pub equation: &'static str,
+    /// Its amplitude.
+    pub amplitude: f64,
+    /// Its power.
+    pub power: f64,
+    /// Where its mu2 comes from.
+    pub mu2_from: &'static str,
+}
+
+/// The Gaussian thermostat's balance (MS Section 2).
+#[derive(Clone, Debug, Serialize)]
+pub struct Thermostat {
+    /// The thermostat's strength.
+    pub zeta: f64,
+    /// The cooling constant.
+    pub cooling_constant: f64,
+    /// The temperature at which heating and cooling balance, when they do.
+    pub steady_temperature: Option<f64>,
+    /// The strength that holds the initial temperature.
+    pub holding_zeta: f64,
+    /// The balance in words.
+    pub note: String,
+}
+
+/// A warning.
+#[derive(Clone, Debug, Serialize)]
+pub struct Warning {
+    /// Its short code.
+    pub code: &'static str,
+    /// What fired, how large the error is expected to be, and what to do.
+    pub message: String,
+}
+
+impl Summary {
+    /// The summary of `stats` (a run of `scene`) against the reference curves `refs`.
+    pub fn of(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> Self {
+        let c = stats.counts;
+        Summary {
+            gdsmc_version: env!("CARGO_PKG_VERSION"),
+            scene: scene.name.clone(),
+            description: scene.description.clone(),
+            n: scene.n(),
+            ensembles: stats.ensembles,
+            ensembles_requested: scene.ensembles,
+            interrupted: stats.ensembles < scene.ensembles,
+            seed: scene.seed,
+            threads: stats.threads,
+            wall_seconds: stats.wall.as_secs_f64(),
+            cpu_seconds: stats.cpu.as_secs_f64(),
+            counts: Counts {
+                candidates: c.candidates,
+                collisions: c.collisions,
+                fictitious: c.fictitious,
+                majorant_overshoots: c.overshoots,
+                restitution_clamped: c.clamped,
+                majorant_refreshes: c.refreshes,
+                rescales: c.rescales,
+                background_collisions: c.background,
+                observations: c.observations,
+                kicks: c.kicks(scene.n()),
+            },
+            errors: refs.iter().map(|r| ReferenceError::of(stats, r)).collect(),
+            steady_state: Steady::of(stats),
+            tail: Tail::of(scene, stats),
+            reduced_distribution: crate::analysis::distribution::reduced(scene, stats).map(|r| {
+                Reduced {
+                    a2: r.a2.0,
+                    a2_ci: r.a2.1,
+                    tail_law: r.tail.map(|t| TailLaw {
+                        equation: t.equation,
+                        amplitude: t.amplitude,
+                        power: t.power,
+                        mu2_from: t.mu2_source,
+                    }),
+                    file: "reduced.csv",
+                }
+            }),
+            thermostat: crate::reference::thermostat::GaussianBalance::of(scene).map(|b| {
+                Thermostat {
+                    zeta: b.zeta,
+                    cooling_constant: b.kappa,
+                    steady_temperature: b.steady_temperature(),
+                    holding_zeta: b.holding_zeta(),
+                    note: b.describe(),
+                }
+            }),
+            warnings: crate::analysis::warnings::check(scene, stats)
+                .into_iter()
+                .map(|w| Warning {
+                    code: w.code,
+                    message: w.message,
+                })
+                .collect(),
+            no_intervals: crate::analysis::warnings::no_intervals(stats),
+        }
+    }
+
+    /// As JSON, keys sorted at every level.
+    #[must_use]
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::to_value(self).expect("a summary serializes")
+    }
+}
+
+impl ReferenceError {
+    /// The error of `stats`'s column against the reference `r`, at the end and at its worst.
+    fn of(stats: &RunStats, r: &ReferenceCurve) -> Self {
+        let last = stats.times.len() - 1;
+        let col = stats.col(r.of).expect("reference of a known column");
+        let (mut e_max, mut t_at) = (0.0f64, 0.0);
+        for (ti, &t) in stats.times.iter().enumerate() {
+            let exact = (r.curve)(t);
+            let d = (stats.mean(ti, col) - exact).abs();
+            let e = if exact != 0.0 { d / exact.abs() } else { d };
+            if e > e_max {
+                e_max = e;
+                t_at = t;
+            }
+        }
+        let exact_end = (r.curve)(stats.times[last]);
+        let scale = if exact_end != 0.0 {
+            exact_end.abs()
+        } else {
+            1.0
+        };
+        ReferenceError {
+            observable: r.of,
+            reference: r.name,
+            source: r.source,
+            e_end: (stats.mean(last, col) - exact_end).abs() / scale,
+            conf_end: stats.ci(last, col) / scale,
+            e_max,
+            t_of_e_max: t_at,
+        }
+    }
+}
+
+impl Steady {
+    /// The steady-state window's averages, when the run has one.
+    fn of(stats: &RunStats) -> Option<Self> {
+        let st = stats.steady.as_ref()?;
+        Some(Steady {
+            from: stats.times[st.first],
+            points: st.points,
+            observables: stats
+                .names
+                .iter()
+                .enumerate()
+                .map(|(i, col)| {
+                    let (mean, ci) = st.mean_ci(stats, i);
+                    (col.to_string(), MeanCi { mean, ci })
+                })
+                .collect(),
+        })
+    }
+}
+
+impl Tail {
+    /// The tail fit of the run's radial histogram, when it has one that can be fitted.
+    fn of(scene: &Scene, stats: &RunStats) -> Option<Self> {
+        use crate::analysis::tails;
+        let (radius, h) = stats.histogram.as_ref()?;
+        let f = tails::fit(*radius, h, stats.dimension)?;
+        let half = |a: tails::TailFit| HalfFit {
+            slope: a.slope,
+            slope_ci: a.slope_ci,
+            shells: [a.points[0].0, a.points[a.points.len() - 1].0],
+        };
+        Some(Tail {
+            k0: 1,
+            slope: f.slope,
+            slope_ci: f.slope_ci,
+            shells_used: f.points.len(),
+            reference_exponent_grw_16: tails::reference_exponent(scene),
+            halves: tails::halves(*radius, h, stats.dimension).map(|(a, b)| Halves {
+                inner: half(a),
+                outer: half(b),
+            }),
+        })
+    }
+}
