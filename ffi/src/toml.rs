@@ -45,6 +45,6 @@ fn from_scene_text(text: &str) -> Result<gdsmc_config, Failure> {
         Failure(status, msg!("{e}"))
     })?;
     let mut cfg = gdsmc_config::from_physics(scene.physics())?;
-    cfg.seed = scene.seed;
+    cfg.seed = scene.seed();
     Ok(cfg)
 }

@@ -168,7 +168,7 @@ impl RunResult {
     fn __repr__(&self) -> String {
         format!(
             "RunResult({:?}: n={}, {} ensembles, {:.2} s)",
-            self.scene.scene().name,
+            self.scene.scene().name(),
             self.scene.scene().n(),
             self.stats.ensembles,
             self.stats.wall.as_secs_f64()

@@ -104,13 +104,13 @@ impl Scene {
     /// The scene's name.
     #[getter]
     fn name(&self) -> String {
-        self.scene().name.clone()
+        self.scene().name().to_string()
     }
 
     /// Its description.
     #[getter]
     fn description(&self) -> String {
-        self.scene().description.clone()
+        self.scene().description().to_string()
     }
 
     /// Particles per ensemble.
@@ -122,19 +122,19 @@ impl Scene {
     /// Ensembles.
     #[getter]
     fn ensembles(&self) -> u64 {
-        self.scene().ensembles
+        self.scene().ensembles()
     }
 
     /// Seed.
     #[getter]
     fn seed(&self) -> u64 {
-        self.scene().seed
+        self.scene().seed()
     }
 
     /// Observation times.
     #[getter]
     fn times(&self) -> Vec<f64> {
-        self.scene().times.clone()
+        self.scene().times().to_vec()
     }
 
     /// The scene file's text (without the overrides).
@@ -156,11 +156,11 @@ impl Scene {
     fn __repr__(&self) -> String {
         format!(
             "Scene({:?}: n={}, ensembles={}, seed={}, {} observation times{})",
-            self.scene().name,
+            self.scene().name(),
             self.scene().n(),
-            self.scene().ensembles,
-            self.scene().seed,
-            self.scene().times.len(),
+            self.scene().ensembles(),
+            self.scene().seed(),
+            self.scene().times().len(),
             if self.source.overrides.is_empty() {
                 String::new()
             } else {

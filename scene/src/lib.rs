@@ -52,13 +52,51 @@ pub use validate::DEFAULT_STEP_FACTOR;
 
 use std::path::{Path, PathBuf};
 
+/// A histogram of a speed in equal shells: `shells` shells on [0, `radius`) and one beyond
+/// (the keys `shells` and `radius` of `[histogram]` and `[reduced_histogram]`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shells {
+    /// Shells inside the radius (K).
+    pub shells: usize,
+    /// Their outer radius (R; `c_max` for the reduced speed).
+    pub radius: f64,
+}
+
+impl Shells {
+    /// Weights the histogram holds: the K shells and the one beyond.
+    #[must_use]
+    pub fn weights(&self) -> usize {
+        self.shells + 1
+    }
+}
+
+/// A histogram of one velocity component (`[marginal_histogram]`): `bins` equal bins on
+/// [-`radius`, `radius`) and one beyond each end.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Marginal {
+    /// The component, 0..=2 (the file's 1..=3).
+    pub axis: usize,
+    /// Bins inside [-R, R).
+    pub bins: usize,
+    /// R.
+    pub radius: f64,
+}
+
+impl Marginal {
+    /// Weights one observation's histogram holds: the bins and one beyond each end.
+    #[must_use]
+    pub fn weights(&self) -> usize {
+        self.bins + 2
+    }
+}
+
 /// A validated scene, ready to run.
 #[derive(Debug, Clone)]
 pub struct Scene {
     /// Name (file stem when the file names none).
-    pub name: String,
+    name: String,
     /// Description.
-    pub description: String,
+    description: String,
     /// The physics: particles, initial distribution, kernel, restitution, drive, scheme
     /// (read with [`Scene::physics`], changed only through [`Scene::with_physics`]).
     physics: Physics,
@@ -67,27 +105,28 @@ pub struct Scene {
     /// The key that held each physics parameter in the file (to name a later change's error).
     keys: Vec<(gdsmc_core::physics::Param, String)>,
     /// Observation times, increasing.
-    pub times: Vec<f64>,
+    times: Vec<f64>,
     /// Index of the first observation time of the steady-state average, if any (it must leave
     /// two observation times at or after it; [`Scene::set_times`] keeps its start time).
-    pub steady_from: Option<usize>,
+    steady_from: Option<usize>,
     /// Random pairs per observation for mu2, mu4 (0: off).
-    pub collisional_pairs: u64,
-    /// Radial-shell histogram `(K, R)` at the last observation, if asked.
-    pub histogram: Option<(usize, f64)>,
-    /// Reduced-speed histogram `(K, c_max)`: shells of `c = |v - V| / sqrt(2 T_bulk)`,
-    /// averaged over the steady-state observations (or the last one), if asked.
-    pub reduced_histogram: Option<(usize, f64)>,
-    /// Marginal histogram `(axis 0..=2, bins, R)` at the first and last observation, if asked.
-    pub marginal_histogram: Option<(usize, usize, f64)>,
+    collisional_pairs: u64,
+    /// Radial-shell histogram of `|v - V|` at the last observation, if asked.
+    histogram: Option<Shells>,
+    /// Reduced-speed histogram: shells of `c = |v - V| / sqrt(2 T_bulk)` up to `c_max` (its
+    /// `radius`), averaged over the steady-state observations (or the last one), if asked.
+    reduced_histogram: Option<Shells>,
+    /// Marginal histogram of one velocity component at the first and last observation, if
+    /// asked.
+    marginal_histogram: Option<Marginal>,
     /// Ensembles.
-    pub ensembles: u64,
+    ensembles: u64,
     /// Seed.
-    pub seed: u64,
+    seed: u64,
     /// The labels of a mixture's species (empty: one species).
-    pub species_names: Vec<String>,
+    species_names: Vec<String>,
     /// The mole fractions of a mixture's species, as written (normalized when counted).
-    pub species_fractions: Vec<f64>,
+    species_fractions: Vec<f64>,
 }
 
 impl PartialEq for Scene {
@@ -155,6 +194,151 @@ impl Scene {
     /// again.
     pub fn model(&self) -> &Model {
         &self.model
+    }
+
+    /// Name (file stem when the file names none).
+    #[must_use]
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Description.
+    #[must_use]
+    pub fn description(&self) -> &str {
+        &self.description
+    }
+
+    /// Observation times, increasing, from 0 on.
+    #[must_use]
+    pub fn times(&self) -> &[f64] {
+        &self.times
+    }
+
+    /// Index of the first observation time of the steady-state average, if any (at least
+    /// two observation times lie at or after it).
+    #[must_use]
+    pub fn steady_from(&self) -> Option<usize> {
+        self.steady_from
+    }
+
+    /// Random pairs per observation for mu2, mu4 (0: off).
+    #[must_use]
+    pub fn collisional_pairs(&self) -> u64 {
+        self.collisional_pairs
+    }
+
+    /// Radial-shell histogram of `|v - V|` at the last observation, if asked.
+    #[must_use]
+    pub fn histogram(&self) -> Option<Shells> {
+        self.histogram
+    }
+
+    /// Reduced-speed histogram: shells of `c = |v - V| / sqrt(2 T_bulk)` up to `c_max` (its
+    /// `radius`), averaged over the steady-state observations (or the last one), if asked.
+    #[must_use]
+    pub fn reduced_histogram(&self) -> Option<Shells> {
+        self.reduced_histogram
+    }
+
+    /// Marginal histogram of one velocity component at the first and last observation, if
+    /// asked.
+    #[must_use]
+    pub fn marginal_histogram(&self) -> Option<Marginal> {
+        self.marginal_histogram
+    }
+
+    /// Ensembles (at least 1).
+    #[must_use]
+    pub fn ensembles(&self) -> u64 {
+        self.ensembles
+    }
+
+    /// Seed: ensemble k uses its generator jumped k times.
+    #[must_use]
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// The labels of a mixture's species (empty: one species).
+    #[must_use]
+    pub fn species_names(&self) -> &[String] {
+        &self.species_names
+    }
+
+    /// The mole fractions of a mixture's species, as written (normalized when counted).
+    #[must_use]
+    pub fn species_fractions(&self) -> &[f64] {
+        &self.species_fractions
+    }
+
+    /// Sets the number of ensembles, validated as `run.ensembles` is (at least 1).
+    pub fn set_ensembles(&mut self, m: u64) -> Result<(), Error> {
+        let as_file = i64::try_from(m).unwrap_or(i64::MAX);
+        if let Some(why) = validate::observe::ensembles_problem(as_file) {
+            return Err(self.invalid("run.ensembles", why));
+        }
+        self.ensembles = m;
+        Ok(())
+    }
+
+    /// Sets the seed (any value).
+    pub fn set_seed(&mut self, seed: u64) {
+        self.seed = seed;
+    }
+
+    /// Sets the start time of the steady-state average (`None`: no average), validated as
+    /// `observe.steady_from` is: the window begins at the first observation time at or after
+    /// it and must hold at least two.
+    pub fn set_steady_from(&mut self, from: Option<f64>) -> Result<(), Error> {
+        self.steady_from = match from {
+            None => None,
+            Some(x) => Some(
+                validate::observe::steady_index(&self.times, x)
+                    .map_err(|why| self.invalid("observe.steady_from", why))?,
+            ),
+        };
+        Ok(())
+    }
+
+    /// Sets the random pairs per observation for mu2, mu4 (0: off), validated against the
+    /// physics as the file's `observe.collisional_pairs` is.
+    pub fn set_collisional_pairs(&mut self, pairs: u64) -> Result<(), Error> {
+        let before = std::mem::replace(&mut self.collisional_pairs, pairs);
+        if let Err(e) = self.rules(&self.physics, &self.times) {
+            self.collisional_pairs = before;
+            return Err(e);
+        }
+        Ok(())
+    }
+
+    /// Sets the radial-shell histogram (`None`: none), validated as `[histogram]` is.
+    pub fn set_histogram(&mut self, h: Option<Shells>) -> Result<(), Error> {
+        if let Some(h) = h {
+            let shells = i64::try_from(h.shells).unwrap_or(i64::MAX);
+            if let Some(why) = validate::observe::count_problem(shells) {
+                return Err(self.invalid("histogram.shells", why));
+            }
+            if let Some(why) = validate::observe::positive_problem(h.radius) {
+                return Err(self.invalid("histogram.radius", why));
+            }
+        }
+        self.histogram = h;
+        Ok(())
+    }
+
+    /// Removes the marginal histogram (a scene without one is always valid).
+    pub fn clear_marginal_histogram(&mut self) {
+        self.marginal_histogram = None;
+    }
+
+    /// The `Debug` text of the scene with its seed and ensemble count cleared: what makes two
+    /// runs' ensembles the same process (a journal's fingerprint).
+    #[must_use]
+    pub fn fingerprint(&self) -> String {
+        let mut s = self.clone();
+        s.seed = 0;
+        s.ensembles = 0;
+        format!("{s:?}")
     }
 
     /// Changes the physics through `f` and validates the result as a scene file's would be:
@@ -262,9 +446,9 @@ impl Scene {
     /// Values each ensemble appends after its observables: the speed histogram, the reduced
     /// histogram and the marginal histograms (first and last observation).
     pub fn extra_len(&self) -> usize {
-        self.histogram.map_or(0, |(k, _)| k + 1)
-            + self.reduced_histogram.map_or(0, |(k, _)| k + 1)
-            + self.marginal_histogram.map_or(0, |(_, k, _)| 2 * (k + 2))
+        self.histogram.map_or(0, |h| h.weights())
+            + self.reduced_histogram.map_or(0, |h| h.weights())
+            + self.marginal_histogram.map_or(0, |h| 2 * h.weights())
     }
 }
 

@@ -111,7 +111,7 @@ fn shipped_descriptions_state_the_restitution_the_file_sets() {
         }
         let s = gdsmc_scene::load(&p).unwrap_or_else(|e| panic!("{e}"));
         let (Some(stated), Some(set)) = (
-            stated_alpha(&s.description),
+            stated_alpha(s.description()),
             s.physics().restitution.constant(),
         ) else {
             continue;

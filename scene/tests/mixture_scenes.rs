@@ -39,7 +39,7 @@ fn a_mixture_scene_gives_its_species_and_pairs() {
     assert_eq!((sp[0].mass, sp[1].mass, sp[1].diameter), (4.0, 1.0, 2.0));
     assert_eq!((sp[0].beta, sp[1].beta), (1.0, 1.0));
     assert_eq!(s.physics().pair_restitution.as_slice(), &[0.9, 0.8, 0.7]);
-    assert_eq!(s.species_names, vec!["heavy", "s1"]);
+    assert_eq!(s.species_names(), vec!["heavy", "s1"]);
     let model = s.physics().validate().unwrap();
     assert_eq!(model.species().unwrap().total(), 10);
     let mut s2 = s.clone();

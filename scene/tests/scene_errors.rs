@@ -24,9 +24,9 @@ fn err(text: &str) -> String {
 fn good_scene_parses_with_defaults() {
     let s = parse(Path::new("good.toml"), GOOD).unwrap();
     assert_eq!(s.n(), 64);
-    assert_eq!(s.times.len(), 33);
-    assert_eq!(s.ensembles, 100);
-    assert_eq!(s.name, "good");
+    assert_eq!(s.times().len(), 33);
+    assert_eq!(s.ensembles(), 100);
+    assert_eq!(s.name(), "good");
 }
 
 #[test]
@@ -261,7 +261,7 @@ fn flags_are_validated_like_the_file() {
         "{e}"
     );
     let s = with(Override::flag("seed", "run.seed", 42)).unwrap();
-    assert_eq!((s.seed, s.n()), (42, 64));
+    assert_eq!((s.seed(), s.n()), (42, 64));
 }
 
 /// A physics changed in code after the file was read is validated again, by the same rules as
@@ -313,14 +313,14 @@ fn set_times_keeps_the_steady_windows_start_time() {
     )
     .unwrap();
     let mut s = parse(Path::new("brs-example4.toml"), &text).unwrap();
-    let start = s.times[s.steady_from.unwrap()];
+    let start = s.times()[s.steady_from().unwrap()];
     assert_eq!(start, 0.5);
     s.set_times(vec![0.0, 0.25, 0.75, 1.0, 2.0]).unwrap();
     assert_eq!(
-        s.steady_from,
+        s.steady_from(),
         Some(2),
         "the first new time at or after t = 0.5"
     );
     s.set_times(vec![0.0, 0.1, 0.2, 0.8]).unwrap();
-    assert_eq!(s.steady_from, None, "one time in the window is no window");
+    assert_eq!(s.steady_from(), None, "one time in the window is no window");
 }

@@ -109,10 +109,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 Override::flag("seed", "run.seed", 300 + k),
             ];
             let mut s = scene::load_with(&path, &set)?;
-            s.times = (0..=POINTS)
+            let times: Vec<f64> = (0..=POINTS)
                 .map(|i| t0 * ((span * i as f64 / POINTS as f64).exp() - 1.0))
                 .collect();
-            s.steady_from = Some(POINTS / 2);
+            let from = times[POINTS / 2];
+            s.set_times(times)?;
+            s.set_steady_from(Some(from))?;
             let stats = gdsmc_runner::run::run(&s, 0, &|_| {})?;
             let st = stats.steady.as_ref().ok_or("no steady window")?;
             let col = |name| stats.col(name).ok_or(format!("no column {name}"));

@@ -75,7 +75,7 @@ pub struct Outcome {
 impl Job {
     /// The shard asked for, checked against the scene's ensembles.
     fn shard(&self) -> Result<Option<(u64, u64)>, Error> {
-        let ensembles = self.source.scene.ensembles;
+        let ensembles = self.source.scene.ensembles();
         self.shard
             .as_deref()
             .map(|spec| shard::parse_spec(spec, ensembles))
@@ -100,17 +100,17 @@ impl Job {
             return self.run_shard(k, s, watch);
         }
         // The output place is prepared (and shown writable) before any simulation.
-        let dir = self.dir(&sc.name);
+        let dir = self.dir(sc.name());
         let set = OutputSet::prepare(&dir)?;
         let file = run::journal::beside(&dir, None);
-        let r = self.journaled(&file, None, 0..sc.ensembles, watch)?;
+        let r = self.journaled(&file, None, 0..sc.ensembles(), watch)?;
         let stats = r.stats;
-        let complete = stats.ensembles == sc.ensembles;
+        let complete = stats.ensembles == sc.ensembles();
         if !complete {
             watch.note(&format!(
                 "kept {} of {} ensembles in {}: run the same command again to continue",
                 stats.ensembles,
-                sc.ensembles,
+                sc.ensembles(),
                 file.display()
             ));
             if stats.ensembles == 0 {
@@ -182,13 +182,13 @@ impl Job {
     /// Runs shard `k` of `s` into its shard file.
     fn run_shard(&self, k: u64, s: u64, watch: &dyn Watch) -> Result<Outcome, Error> {
         let sc = &self.source.scene;
-        let range = shard::range(k, s, sc.ensembles);
-        let dir = self.dir(&format!("{}-shards", sc.name));
+        let range = shard::range(k, s, sc.ensembles());
+        let dir = self.dir(&format!("{}-shards", sc.name()));
         std::fs::create_dir_all(&dir).map_err(|source| Error::Write {
             path: dir.clone(),
             source,
         })?;
-        let file = dir.join(shard::file_name(&sc.name, k, s));
+        let file = dir.join(shard::file_name(sc.name(), k, s));
         let r = self.journaled(&file, Some((k, s)), range.clone(), watch)?;
         let done = r.stats.ensembles;
         let complete = done == range.end - range.start;
@@ -197,7 +197,7 @@ impl Job {
         }
         let text = format!(
             "shard {k}/{s} of {}: ensembles {}..{} ({} run now, {} continued from the file), wall = {:.2} s\n{} {}\n",
-            sc.name,
+            sc.name(),
             range.start,
             range.start + done,
             done - r.resumed,
@@ -220,7 +220,7 @@ impl Job {
             });
         }
         let sc = &self.source.scene;
-        let dir = self.dir(&sc.name);
+        let dir = self.dir(sc.name());
         let started = std::time::Instant::now();
         let mut text = String::new();
         run::mpi::run(
@@ -263,7 +263,7 @@ pub fn merge(inputs: &[PathBuf], out: Option<PathBuf>, format: Formats) -> Resul
     let started = std::time::Instant::now();
     let m = shard::merge_files(&files)?;
     let merge_s = started.elapsed().as_secs_f64();
-    let dir = out.unwrap_or_else(|| PathBuf::from("out").join(&m.scene.name));
+    let dir = out.unwrap_or_else(|| PathBuf::from("out").join(m.scene.name()));
     shard::check_output(&dir, &files)?;
     let set = OutputSet::prepare(&dir)?;
     let mut text = write(set, &m.scene, &m.stats, &dir, format)?;

@@ -384,7 +384,7 @@ fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
                     t
                 }
             };
-            let text = bench::work_precision::write(&dir, &sc.name, &points, target)?;
+            let text = bench::work_precision::write(&dir, sc.name(), &points, target)?;
             print!("\n{text}");
             println!("wrote {}", dir.join("work_precision.svg").display());
             Ok(())
@@ -402,8 +402,8 @@ fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
             let (one, many, same) = bench::scaling::measure(&sc, k)?;
             println!(
                 "case=ensemble-scaling scene={} ensembles={} threads=1 wall_s={one:.3} threads={k} wall_s={many:.3} speedup={:.2} bit_identical={same}",
-                sc.name,
-                sc.ensembles,
+                sc.name(),
+                sc.ensembles(),
                 one / many
             );
             Ok(())

@@ -8,7 +8,7 @@ fn a_run_writes_csv_json_and_svg() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
     let mut s = scene::load(&path).unwrap();
     s.set_n(32).expect("a valid particle count");
-    s.ensembles = 10;
+    s.set_ensembles(10).unwrap();
     let st = gdsmc_runner::run::run(&s, 1, &|_| {}).unwrap();
     let refs = gdsmc_runner::reference::curves::for_scene(&s);
     let dir = std::env::temp_dir().join(format!("gdsmc-charts-{}", std::process::id()));
@@ -60,7 +60,7 @@ fn every_chart_of_every_shipped_scene_is_readable() {
     for path in names {
         let mut s = scene::load(&path).unwrap();
         s.set_n(256).expect("a valid particle count");
-        s.ensembles = 4;
+        s.set_ensembles(4).unwrap();
         let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
         let refs = gdsmc_runner::reference::curves::for_scene(&s);
         let reduced = gdsmc_runner::analysis::distribution::reduced(&s, &st);
@@ -71,17 +71,17 @@ fn every_chart_of_every_shipped_scene_is_readable() {
             assert!(
                 all.iter().any(|(stem, c)| stem == col && c.is_ok()),
                 "{}: no chart of {col}",
-                s.name
+                s.name()
             );
         }
         for (stem, chart) in &all {
             let Ok(c) = chart else { continue };
             let g = &c.geometry;
-            let at = format!("{}: {stem}", s.name);
+            let at = format!("{}: {stem}", s.name());
             assert!(
                 g.title.contains("n = 256")
                     && g.title.contains("4 ensembles")
-                    && !g.title.contains(&s.name)
+                    && !g.title.contains(s.name())
                     && (g.title.contains("spheres") || g.title.contains("disks")),
                 "{at}: title {}",
                 g.title

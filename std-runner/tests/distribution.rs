@@ -16,8 +16,8 @@ fn shipped(name: &str, set: &[&str], n: usize, m: u64, seed: u64) -> scene::Scen
     let set: Vec<String> = set.iter().map(|s| s.to_string()).collect();
     let mut s = scene::load_with_overrides(&p, &set).unwrap();
     s.set_n(n).expect("a valid particle count");
-    s.ensembles = m;
-    s.seed = seed;
+    s.set_ensembles(m).unwrap();
+    s.set_seed(seed);
     s
 }
 

@@ -20,16 +20,20 @@ fn initial_shells(scene_name: &str) -> gdsmc_runner::run::RunStats {
         .join(format!("{scene_name}.toml"));
     let mut s = scene::load(&p).unwrap();
     s.set_n(5000).expect("a valid particle count");
-    s.ensembles = 40;
+    s.set_ensembles(40).unwrap();
     s.set_times(vec![0.0]).expect("valid observation times");
-    s.histogram = Some((16, 4.0));
+    s.set_histogram(Some(gdsmc_runner::scene::Shells {
+        shells: 16,
+        radius: 4.0,
+    }))
+    .expect("a valid histogram");
     gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap()
 }
 
 #[test]
 fn initial_shells_are_maxwellian() {
     let st = initial_shells("grw-example3");
-    let (radius, h) = st.histogram.as_ref().unwrap();
+    let gdsmc_runner::run::ShellHistogram { radius, weights: h } = st.histogram.as_ref().unwrap();
     assert_eq!(h.len(), 17);
     let mut total = 0.0;
     let mut exact_hist = gdsmc_stats::Accumulator::new(17);
@@ -80,7 +84,7 @@ fn initial_shells_of_disks_are_the_planar_maxwellian() {
     use gdsmc_runner::reference::exact::tail::{phi_shell_in, shell_volume_in};
     let st = initial_shells("disks-white-noise");
     assert_eq!(st.dimension, 2);
-    let (radius, h) = st.histogram.as_ref().unwrap();
+    let gdsmc_runner::run::ShellHistogram { radius, weights: h } = st.histogram.as_ref().unwrap();
     let chi2 = |r: f64| 1.0 - (-0.5 * r * r).exp();
     for k in 0..=16 {
         let lo = radius * k as f64 / 16.0;

@@ -16,7 +16,7 @@ fn steady_block(file: &str) -> (scene::Scene, gdsmc_runner::run::RunStats, Strin
         .join(file);
     let mut s = scene::load(&path).unwrap();
     s.set_n(32).expect("a valid particle count");
-    s.ensembles = 4;
+    s.set_ensembles(4).unwrap();
     let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let out = text(&s, &st, &for_scene(&s));
     let from = out.find("\nsteady state").expect("a steady block");

@@ -12,8 +12,8 @@ fn grw3() -> (scene::Scene, gdsmc_runner::run::RunStats) {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml");
     let mut s = scene::load(&path).unwrap();
     s.set_n(64).expect("a valid particle count");
-    s.ensembles = 400;
-    s.seed = 12;
+    s.set_ensembles(400).unwrap();
+    s.set_seed(12);
     let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     (s, st)
 }

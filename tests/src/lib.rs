@@ -16,8 +16,8 @@ pub fn scene_path(name: &str) -> PathBuf {
 pub fn shipped(name: &str, n: usize, m: u64, seed: u64) -> Scene {
     let mut s = scene::load(&scene_path(name)).expect("shipped scene loads");
     s.set_n(n).expect("a valid particle count");
-    s.ensembles = m;
-    s.seed = seed;
+    s.set_ensembles(m).expect("at least one ensemble");
+    s.set_seed(seed);
     s
 }
 
@@ -26,8 +26,8 @@ pub fn shipped_set(name: &str, set: &[&str], n: usize, m: u64, seed: u64) -> Sce
     let set: Vec<String> = set.iter().map(|s| s.to_string()).collect();
     let mut s = scene::load_with_overrides(&scene_path(name), &set).expect("valid overrides");
     s.set_n(n).expect("a valid particle count");
-    s.ensembles = m;
-    s.seed = seed;
+    s.set_ensembles(m).expect("at least one ensemble");
+    s.set_seed(seed);
     s
 }
 

@@ -88,7 +88,7 @@ fn an_interrupted_run_keeps_a_prefix_equal_to_a_shorter_run() {
         st.ensembles
     );
     let mut shorter = s.clone();
-    shorter.ensembles = st.ensembles;
+    shorter.set_ensembles(st.ensembles).unwrap();
     let full = gdsmc_runner::run::run(&shorter, 1, &|_| {}).unwrap();
     let refs = gdsmc_runner::reference::curves::for_scene(&s);
     assert_eq!(

@@ -32,7 +32,7 @@ fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
         20_000,
         2202,
     );
-    h.set_times(s.times.clone())
+    h.set_times(s.times().to_vec())
         .expect("valid observation times");
     assert!(maxwell_temperature(&h).is_none());
     let st = run(&h);

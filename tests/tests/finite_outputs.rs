@@ -21,13 +21,13 @@ fn every_shipped_scene_writes_only_finite_values() {
     let mut bad = Vec::new();
     for path in &scenes {
         let mut s = scene::load(path).unwrap();
-        s.ensembles = 2;
+        s.set_ensembles(2).unwrap();
         let st = run(&s);
         for (ti, t) in st.times.iter().enumerate() {
             for (c, name) in st.names.iter().enumerate() {
                 let (m, ci) = (st.mean(ti, c), st.ci(ti, c));
                 if !m.is_finite() || !ci.is_finite() {
-                    bad.push(format!("{}: {name} = {m} +- {ci} at t = {t}", s.name));
+                    bad.push(format!("{}: {name} = {m} +- {ci} at t = {t}", s.name()));
                     break;
                 }
             }

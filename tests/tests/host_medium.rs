@@ -154,7 +154,7 @@ fn rough_grains_keep_the_exact_bulk_velocity_of_brs_14() {
 
 /// A shipped BRS scene as disks (its marginal histogram, written for spheres, dropped).
 fn as_disks(mut s: gdsmc_runner::scene::Scene) -> gdsmc_runner::scene::Scene {
-    s.marginal_histogram = None;
+    s.clear_marginal_histogram();
     s.with_physics(|ph| ph.dimension = gdsmc_core::physics::DimensionChoice::Two)
         .expect("BRS's scenes have their drifts in the plane");
     s

@@ -101,7 +101,7 @@ fn one(path: &Path, text: &str, sets: &[String], t: &mut Tally) {
     }
     s.set_n(s.physics().n.min(32))
         .expect("a valid particle count");
-    s.ensembles = s.ensembles.min(2);
+    s.set_ensembles(s.ensembles().min(2)).unwrap();
     if estimate(&s).total() > 2e6 {
         t.too_long_for_ci += 1;
         return;

@@ -25,7 +25,7 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     let mut s = shipped_set("rough-hcs", &MAXWELL_SMOOTH, n, 20_000, 1601);
     s.set_times((0..=8).map(|k| 0.5 * k as f64).collect())
         .expect("valid observation times");
-    s.steady_from = None;
+    s.set_steady_from(None).unwrap();
     let mt = maxwell_temperature(&s).expect("beta = -1: GRW (13) applies");
     let st = run(&s);
     let f = family(st.times.len(), dof(st.ensembles));
@@ -46,9 +46,9 @@ fn the_smooth_limit_of_the_rough_maxwell_gas_is_grw_13_at_every_time() {
     let mut set = MAXWELL_SMOOTH;
     set[2] = "rotation.tangential_restitution=0";
     let mut r = shipped_set("rough-hcs", &set, n, 20_000, 1602);
-    r.set_times(s.times.clone())
+    r.set_times(s.times().to_vec())
         .expect("valid observation times");
-    r.steady_from = None;
+    r.set_steady_from(None).unwrap();
     assert!(maxwell_temperature(&r).is_none());
     let st = run(&r);
     let outside = times_outside(&st, name::T_BULK, f, |t| mt.finite_n_bulk_mean(n, t));
@@ -69,12 +69,12 @@ fn the_smooth_limit_of_rough_hard_spheres_is_the_smooth_gas() {
     rough
         .set_times((0..=6).map(|k| 0.5 * k as f64).collect())
         .expect("valid observation times");
-    rough.steady_from = None;
+    rough.set_steady_from(None).unwrap();
     let mut smooth = rough.clone();
     smooth
         .with_physics(|ph| ph.rotation = None)
         .expect("a valid physics");
-    smooth.seed = 1604;
+    smooth.set_seed(1604);
     let (a, b) = (run(&rough), run(&smooth));
     let f = family(a.times.len() - 1, dof(a.ensembles.min(b.ensembles)));
     let mut moved = 0.0;
@@ -107,7 +107,7 @@ fn the_thermostatted_smooth_limit_of_the_rough_maxwell_gas_is_exact() {
     let mut s = shipped_set("rough-hcs", &set, n, 20_000, 1605);
     s.set_times((0..=8).map(|k| 0.5 * k as f64).collect())
         .expect("valid observation times");
-    s.steady_from = None;
+    s.set_steady_from(None).unwrap();
     let mt = maxwell_temperature(&s).expect("beta = -1: GRW (13) with the thermostat applies");
     let st = run(&s);
     let f = family(2 * st.times.len(), dof(st.ensembles));
@@ -130,9 +130,9 @@ fn the_thermostatted_smooth_limit_of_the_rough_maxwell_gas_is_exact() {
     let mut rough_set = set;
     rough_set[2] = "rotation.tangential_restitution=0";
     let mut r = shipped_set("rough-hcs", &rough_set, n, 20_000, 1606);
-    r.set_times(s.times.clone())
+    r.set_times(s.times().to_vec())
         .expect("valid observation times");
-    r.steady_from = None;
+    r.set_steady_from(None).unwrap();
     let st = run(&r);
     let outside = times_outside(&st, name::T_BULK, f, |t| mt.finite_n_bulk_mean(n, t));
     assert!(
@@ -160,7 +160,7 @@ fn the_forced_smooth_limit_of_rough_hard_spheres_is_the_smooth_gas() {
     let runs = |set: &[&str], seed: u64, smooth: bool| {
         let mut s = shipped_set("rough-hcs", set, n, 3000, seed);
         s.set_times(times.clone()).expect("valid observation times");
-        s.steady_from = None;
+        s.set_steady_from(None).unwrap();
         if smooth {
             s.with_physics(|ph| ph.rotation = None)
                 .expect("a valid physics");

@@ -139,7 +139,7 @@ fn splitting_on_disks_and_rough_particles_follows_its_exact_finite_n_mean() {
             let mut sc = shipped_set(name_, set, n, 20_000, 900 + 2 * k as u64 + j as u64);
             sc.set_times((0..=6).map(f64::from).collect())
                 .expect("valid observation times");
-            sc.steady_from = None;
+            sc.set_steady_from(None).unwrap();
             sc.with_physics(|ph| ph.scheme = s)
                 .expect("a valid physics");
             let mt = maxwell_temperature(&sc).expect("a Maxwell gas: GRW (13) applies");

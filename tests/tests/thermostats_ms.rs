@@ -27,7 +27,7 @@ fn steady(name: &str, seed: u64, alpha: f64) -> (gdsmc_runner::run::RunStats, f6
     let mut s = shipped(name, n, m, seed);
     s.with_physics(|ph| ph.restitution = gdsmc_runner::scene::RestitutionLaw::Constant(alpha))
         .expect("a valid physics");
-    s.collisional_pairs = 20_000;
+    s.set_collisional_pairs(20_000).unwrap();
     (run(&s), alpha)
 }
 
@@ -115,7 +115,7 @@ fn white_noise_alpha_08_time_stepped() {
     let mut s = shipped("ms-white-noise", 2048, 16, 1400);
     s.with_physics(|ph| ph.scheme = gdsmc_runner::scene::SchemeChoice::TimeStepped(0.01))
         .expect("a valid physics");
-    s.collisional_pairs = 20_000;
+    s.set_collisional_pairs(20_000).unwrap();
     let st = run(&s);
     let (mu4, c4) = get(&st, name::MU4);
     assert!(

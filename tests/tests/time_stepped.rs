@@ -17,7 +17,7 @@ fn time_stepped_converges_to_no_splitting() {
         .expect("valid observation times");
     let st_exact = run(&exact);
     let mut fine = exact.clone();
-    fine.seed = 1102;
+    fine.set_seed(1102);
     fine.with_physics(|ph| ph.scheme = SchemeChoice::TimeStepped(0.01))
         .expect("a valid physics");
     let st_fine = run(&fine);
@@ -27,11 +27,11 @@ fn time_stepped_converges_to_no_splitting() {
         .expect("a valid physics");
     let st_coarse = run(&coarse);
     let mut resolved = false;
-    for ti in 1..exact.times.len() {
+    for ti in 1..exact.times().len() {
         let (a, ca) = at(&st_exact, ti, name::T_BULK);
         let (b, cb) = at(&st_fine, ti, name::T_BULK);
         let (c, cc) = at(&st_coarse, ti, name::T_BULK);
-        let t = exact.times[ti];
+        let t = exact.times()[ti];
         assert!(
             (a - b).abs() <= (ca * ca + cb * cb).sqrt(),
             "t={t}: no-splitting {a} +- {ca}, time-stepped {b} +- {cb}"

@@ -22,7 +22,7 @@ fn shipped_scenes_are_within_the_limit() {
             assert!(
                 w.total() > 0.0 && w.total() < MAX_WORK / 100.0,
                 "{}: {w:?}",
-                s.name
+                s.name()
             );
         }
     }

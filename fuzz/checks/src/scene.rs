@@ -23,7 +23,7 @@ fn check(text: &str, overrides: &[String]) {
                 panic!("the scene reader accepted physics the core refuses: {e}\n{text}");
             }
             assert!(
-                scene.times.len() >= 2,
+                scene.times().len() >= 2,
                 "a scene needs two observation times"
             );
         }

@@ -6,7 +6,7 @@
 
 mod collisions;
 mod drive;
-mod observe;
+pub(crate) mod observe;
 mod particles;
 mod rotation;
 pub(crate) mod scheme;

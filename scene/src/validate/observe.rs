@@ -4,34 +4,71 @@
 use super::Ctx;
 use crate::error::Error;
 use crate::schema::{HistogramSpec, ObserveSpec, RunSpec, SceneFile};
+use crate::{Marginal, Shells};
 use gdsmc_core::physics::Physics;
 use toml::Spanned;
 
+// The rules of observing, each once: the file's validation (with its spans) and the scene's
+// setters ([`crate::Scene::set_ensembles`] and the others) both call them.
+
+/// A finite number: what is wrong with `x`, or `None`.
+fn finite_problem(x: f64) -> Option<String> {
+    (!x.is_finite()).then(|| format!("must be a finite number, got {x}"))
+}
+
+/// A finite number > 0 (a histogram's radius): what is wrong with `x`, or `None`.
+pub(crate) fn positive_problem(x: f64) -> Option<String> {
+    finite_problem(x).or_else(|| (x <= 0.0).then(|| format!("must be > 0, got {x}")))
+}
+
+/// A bin or shell count in 1..=100000: what is wrong with `k`, or `None`.
+pub(crate) fn count_problem(k: i64) -> Option<String> {
+    (!(1..=100_000).contains(&k)).then(|| format!("must lie in 1..=100000, got {k}"))
+}
+
+/// The ensembles of a run (>= 1): what is wrong with `m`, or `None`.
+pub(crate) fn ensembles_problem(m: i64) -> Option<String> {
+    (m < 1).then(|| format!("must be >= 1, got {m}"))
+}
+
+/// The first observation of the steady-state window starting at time `x`: the first of
+/// `times` at or after it, which must leave at least two observation times.
+pub(crate) fn steady_index(times: &[f64], x: f64) -> Result<usize, String> {
+    if let Some(why) = finite_problem(x) {
+        return Err(why);
+    }
+    match times.iter().position(|&t| t >= x - 1e-12 * (1.0 + x.abs())) {
+        Some(i) if i + 1 < times.len() => Ok(i),
+        _ => Err(format!(
+            "must leave at least two observation times at or after it (t_end = {}), got {x}",
+            times[times.len() - 1]
+        )),
+    }
+}
+
 fn finite(ctx: &Ctx<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
     let x = *v.get_ref();
-    if x.is_finite() {
-        Ok(x)
-    } else {
-        ctx.invalid(v.span(), key, format!("must be a finite number, got {x}"))
+    match finite_problem(x) {
+        None => Ok(x),
+        Some(why) => ctx.invalid(v.span(), key, why),
     }
 }
 
 fn positive(ctx: &Ctx<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
-    let x = finite(ctx, v, key)?;
-    if x > 0.0 {
-        Ok(x)
-    } else {
-        ctx.invalid(v.span(), key, format!("must be > 0, got {x}"))
+    let x = *v.get_ref();
+    match positive_problem(x) {
+        None => Ok(x),
+        Some(why) => ctx.invalid(v.span(), key, why),
     }
 }
 
 /// A bin or shell count in 1..=100000.
 fn count(ctx: &Ctx<'_>, v: &Spanned<i64>, key: &str) -> Result<usize, Error> {
     let k = *v.get_ref();
-    if !(1..=100_000).contains(&k) {
-        return ctx.invalid(v.span(), key, format!("must lie in 1..=100000, got {k}"));
+    match count_problem(k) {
+        None => Ok(k as usize),
+        Some(why) => ctx.invalid(v.span(), key, why),
     }
-    Ok(k as usize)
 }
 
 /// The observation times `t_start + (t_end - t_start) k / intervals`, `k = 0..=intervals`.
@@ -86,23 +123,10 @@ pub(super) fn observe(
 ) -> Result<(Option<usize>, u64), Error> {
     let steady_from = match &o.steady_from {
         None => None,
-        Some(sf) => {
-            let x = finite(ctx, sf, "observe.steady_from")?;
-            match times.iter().position(|&t| t >= x - 1e-12 * (1.0 + x.abs())) {
-                Some(i) if i + 1 < times.len() => Some(i),
-                _ => {
-                    let t1 = times[times.len() - 1];
-                    return ctx.invalid(
-                        sf.span(),
-                        "observe.steady_from",
-                        format!(
-                            "must leave at least two observation times at or after it \
-                             (t_end = {t1}), got {x}"
-                        ),
-                    );
-                }
-            }
-        }
+        Some(sf) => match steady_index(times, *sf.get_ref()) {
+            Ok(i) => Some(i),
+            Err(why) => return ctx.invalid(sf.span(), "observe.steady_from", why),
+        },
     };
     let pairs = match &o.collisional_pairs {
         None => 0,
@@ -142,23 +166,19 @@ pub(crate) fn pairs_problem(pairs: u64, physics: &Physics) -> Option<&'static st
     None
 }
 
-/// What the histogram tables ask for: the radial shells `(K, R)`, the reduced shells
-/// `(K, c_max)` and the marginal bins `(axis 0..=2, bins, R)`.
-pub(super) type Histograms = (
-    Option<(usize, f64)>,
-    Option<(usize, f64)>,
-    Option<(usize, usize, f64)>,
-);
+/// What the histogram tables ask for: the radial shells, the reduced shells and the marginal
+/// bins.
+pub(super) type Histograms = (Option<Shells>, Option<Shells>, Option<Marginal>);
 
 /// The histogram tables.
 pub(super) fn histograms(ctx: &Ctx<'_>, f: &SceneFile) -> Result<Histograms, Error> {
     let shells = |h: &Option<HistogramSpec>, table: &str| -> Result<_, Error> {
         let Some(h) = h else { return Ok(None) };
         let k = count(ctx, &h.shells, &format!("{table}.shells"))?;
-        Ok(Some((
-            k,
-            positive(ctx, &h.radius, &format!("{table}.radius"))?,
-        )))
+        Ok(Some(Shells {
+            shells: k,
+            radius: positive(ctx, &h.radius, &format!("{table}.radius"))?,
+        }))
     };
     let histogram = shells(&f.histogram, "histogram")?;
     let reduced = shells(&f.reduced_histogram, "reduced_histogram")?;
@@ -175,7 +195,11 @@ pub(super) fn histograms(ctx: &Ctx<'_>, f: &SceneFile) -> Result<Histograms, Err
             }
             let k = count(ctx, &h.bins, "marginal_histogram.bins")?;
             let r = positive(ctx, &h.radius, "marginal_histogram.radius")?;
-            Some((axis as usize - 1, k, r))
+            Some(Marginal {
+                axis: axis as usize - 1,
+                bins: k,
+                radius: r,
+            })
         }
     };
     Ok((histogram, reduced, marginal))
@@ -184,12 +208,8 @@ pub(super) fn histograms(ctx: &Ctx<'_>, f: &SceneFile) -> Result<Histograms, Err
 /// `[run]`: the number of ensembles (>= 1) and the seed (>= 0).
 pub(super) fn run(ctx: &Ctx<'_>, r: &RunSpec) -> Result<(u64, u64), Error> {
     let m = *r.ensembles.get_ref();
-    if m < 1 {
-        return ctx.invalid(
-            r.ensembles.span(),
-            "run.ensembles",
-            format!("must be >= 1, got {m}"),
-        );
+    if let Some(why) = ensembles_problem(m) {
+        return ctx.invalid(r.ensembles.span(), "run.ensembles", why);
     }
     let seed = *r.seed.get_ref();
     if seed < 0 {

@@ -107,7 +107,10 @@ pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
 
 /// The reduced distribution, when the scene asks for `[reduced_histogram]`.
 pub fn reduced(scene: &Scene, stats: &RunStats) -> Option<Reduced> {
-    let (c_max, h) = stats.reduced.as_ref()?;
+    let crate::run::ShellHistogram {
+        radius: c_max,
+        weights: h,
+    } = stats.reduced.as_ref()?;
     let a2 = settled(stats, name::A2)?;
     let tail = tail_law(scene, stats, a2.0);
     let k = h.len() - 1;
@@ -183,7 +186,12 @@ pub struct Marginal {
 
 /// The marginal distribution, when the scene asks for `[marginal_histogram]`.
 pub fn marginal(stats: &RunStats) -> Option<Marginal> {
-    let (axis, radius, first, last) = stats.marginal.as_ref()?;
+    let crate::run::MarginalHistogram {
+        axis,
+        radius,
+        first,
+        last,
+    } = stats.marginal.as_ref()?;
     let k = first.len() - 2;
     let width = 2.0 * radius / k as f64;
     let comp = [name::V_X, name::V_Y, name::V_Z][*axis];

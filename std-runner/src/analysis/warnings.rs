@@ -185,7 +185,7 @@ fn unsteady(scene: &Scene, stats: &RunStats) -> Option<Warning> {
 /// distance from the asymptote).
 fn tail_not_asymptotic(scene: &Scene, stats: &RunStats) -> Option<Warning> {
     use crate::analysis::tails::{TailFit, fit, halves};
-    let (radius, h) = stats.histogram.as_ref()?;
+    let crate::run::ShellHistogram { radius, weights: h } = stats.histogram.as_ref()?;
     let all = fit(*radius, h, stats.dimension)?;
     let (inner, outer) = halves(*radius, h, stats.dimension)?;
     let drifts = (outer.slope - inner.slope).abs() > inner.slope_ci + outer.slope_ci;

@@ -121,13 +121,13 @@ pub fn measure(
     mut done: impl FnMut(&Point),
 ) -> Result<Vec<Point>, Error> {
     let mt = maxwell_temperature(base).ok_or_else(|| Error::Argument {
-        flag: format!("work-precision {}", base.name),
+        flag: format!("work-precision {}", base.name()),
         message: "needs a Maxwell-kernel scene with an exact stationary temperature (white noise)"
             .into(),
     })?;
-    let Some(first) = base.steady_from else {
+    let Some(first) = base.steady_from() else {
         return Err(Error::Argument {
-            flag: format!("work-precision {}: observe.steady_from", base.name),
+            flag: format!("work-precision {}: observe.steady_from", base.name()),
             message: "must be set: the error is that of the steady-state average".into(),
         });
     };
@@ -136,8 +136,8 @@ pub fn measure(
     for (k, c) in ladder.iter().enumerate() {
         let mut s = base.clone();
         s.set_n(c.n)?;
-        s.ensembles = runs;
-        s.seed = base.seed.wrapping_add(k as u64);
+        s.set_ensembles(runs)?;
+        s.set_seed(base.seed().wrapping_add(k as u64));
         let scheme = match c.scheme {
             "strang" => SchemeChoice::Strang(c.dt),
             "euler" => SchemeChoice::Euler(c.dt),
@@ -149,7 +149,7 @@ pub fn measure(
         let col = st.col(name::T_BULK).expect("the temperature column");
         let mean = (steady.acc.mean(col), steady.acc.ci(col));
         let sd = steady.acc.variance(col).sqrt();
-        let pts = &s.times[first..];
+        let pts = &s.times()[first..];
         let exact_mean = pts
             .iter()
             .map(|&t| match s.physics().scheme {

@@ -394,7 +394,7 @@ fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     let (Some(ma), Some(r)) = (rough_approximation(scene), scene.physics().rotation) else {
         return Vec::new();
     };
-    let t_end = scene.times.last().copied().unwrap_or(1.0);
+    let t_end = scene.times().last().copied().unwrap_or(1.0);
     let src = "Maxwellian approximation (Huthmann and Zippelius 1997)";
     match crate::reference::rough::RoughTrajectory::new(
         &ma,
@@ -466,7 +466,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
         });
     }
     if let (Some(models), f0) = (hydro_models(scene), initial_sampler(scene)) {
-        let t_end = scene.times.last().copied().unwrap_or(1.0);
+        let t_end = scene.times().last().copied().unwrap_or(1.0);
         for (model, (tn, vn, src)) in models.iter().zip([
             (
                 "T_bulk_hydro21",

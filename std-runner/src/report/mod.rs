@@ -98,7 +98,7 @@ pub fn tables(
     let json = serde_json::to_vec_pretty(&summary_file::Summary::of(scene, stats, refs).to_json())
         .expect("json");
     out.push(("summary.json".into(), json));
-    if let Some((radius, h)) = &stats.histogram {
+    if let Some(crate::run::ShellHistogram { radius, weights: h }) = &stats.histogram {
         let bytes = histograms_csv(*radius, h, stats.dimension)
             .map_err(|e| csv_err("histograms.csv", e))?;
         out.push(("histograms.csv".into(), bytes));
@@ -148,8 +148,8 @@ pub fn commit_run(
 ) -> Result<Vec<String>, Error> {
     write_all(set.dir(), scene, stats, refs, formats)?;
     set.commit(serde_json::json!({
-        "scene": scene.name,
-        "seed": scene.seed,
+        "scene": scene.name(),
+        "seed": scene.seed(),
         "n": scene.n(),
         "ensembles": stats.ensembles,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),

@@ -12,16 +12,16 @@ use std::fmt::Write;
 pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String {
     let mut s = String::new();
     let c = stats.counts;
-    let _ = writeln!(s, "scene      {}", scene.name);
-    if !scene.description.is_empty() {
-        let _ = writeln!(s, "           {}", scene.description);
+    let _ = writeln!(s, "scene      {}", scene.name());
+    if !scene.description().is_empty() {
+        let _ = writeln!(s, "           {}", scene.description());
     }
     let _ = writeln!(
         s,
         "run        n = {}, ensembles = {}, seed = {}, threads = {}, wall = {:.2} s, cpu = {:.2} s",
         scene.n(),
         stats.ensembles,
-        scene.seed,
+        scene.seed(),
         stats.threads,
         stats.wall.as_secs_f64(),
         stats.cpu.as_secs_f64()
@@ -58,7 +58,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             let _ = write!(
                 s,
                 " s{k} = {} ({} particles, mass {}){}",
-                scene.species_names[k],
+                scene.species_names()[k],
                 sp.count,
                 sp.mass,
                 if k + 1 < scene.physics().species.len() {
@@ -132,7 +132,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         }
         let _ = writeln!(s);
     }
-    if let Some((radius, h)) = &stats.histogram {
+    if let Some(crate::run::ShellHistogram { radius, weights: h }) = &stats.histogram {
         match crate::analysis::tails::fit(*radius, h, stats.dimension) {
             Some(f) => {
                 let _ = writeln!(

@@ -214,13 +214,13 @@ impl Summary {
         let c = stats.counts;
         Summary {
             gdsmc_version: env!("CARGO_PKG_VERSION"),
-            scene: scene.name.clone(),
-            description: scene.description.clone(),
+            scene: scene.name().to_string(),
+            description: scene.description().to_string(),
             n: scene.n(),
             ensembles: stats.ensembles,
-            ensembles_requested: scene.ensembles,
-            interrupted: stats.ensembles < scene.ensembles,
-            seed: scene.seed,
+            ensembles_requested: scene.ensembles(),
+            interrupted: stats.ensembles < scene.ensembles(),
+            seed: scene.seed(),
             threads: stats.threads,
             wall_seconds: stats.wall.as_secs_f64(),
             cpu_seconds: stats.cpu.as_secs_f64(),
@@ -336,7 +336,7 @@ impl Tail {
     /// The tail fit of the run's radial histogram, when it has one that can be fitted.
     fn of(scene: &Scene, stats: &RunStats) -> Option<Self> {
         use crate::analysis::tails;
-        let (radius, h) = stats.histogram.as_ref()?;
+        let crate::run::ShellHistogram { radius, weights: h } = stats.histogram.as_ref()?;
         let f = tails::fit(*radius, h, stats.dimension)?;
         let half = |a: tails::TailFit| HalfFit {
             slope: a.slope,

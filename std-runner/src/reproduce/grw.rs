@@ -78,7 +78,7 @@ fn table(
         let rel = relative(&st, name::T, |t| mt.at(t));
         let (ours, sd) = largest(&rel);
         let bmax = s
-            .times
+            .times()
             .iter()
             .map(|&t| ((mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t)).abs())
             .fold(0.0, f64::max);
@@ -105,7 +105,7 @@ fn table(
         // ||V||_inf = max_t |V(t)|: pure noise (E V = 0), a Gaussian martingale whose
         // components have variance (T0 + 2 beta t)/(n N) (collisions keep momentum, kicks make
         // it a random walk); its range is exact (bounds.rs).
-        let t_end = *s.times.last().expect("observation times");
+        let t_end = *s.times().last().expect("observation times");
         let var1 = mt.bulk_to_raw(n, t_end);
         let v = (0..st.times.len())
             .map(|ti| {

@@ -72,8 +72,9 @@ pub(crate) fn scene(name: &str, set: &[String], n: usize, m: u64, seed: u64) -> 
         .expect("shipped scenes and reproduce's overrides are valid");
     s.set_n(n)
         .expect("reproduce's particle counts are valid for its scenes");
-    s.ensembles = m;
-    s.seed = seed;
+    s.set_ensembles(m)
+        .expect("reproduce runs at least one ensemble");
+    s.set_seed(seed);
     s
 }
 

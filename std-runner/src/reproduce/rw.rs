@@ -89,10 +89,10 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         let mt = maxwell_temperature(&s).expect("a Maxwell scene");
         let rel = relative(&st, name::T, |t| mt.at(t));
         let (end_err, end_sd) = *rel.last().expect("observation times");
-        let t_end = *s.times.last().expect("observation times");
+        let t_end = *s.times().last().expect("observation times");
         let bias = |t: f64| ((mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t)).abs();
         let (ours_max, sd_max) = largest(&rel);
-        let exact_max = s.times.iter().map(|&t| bias(t)).fold(0.0, f64::max);
+        let exact_max = s.times().iter().map(|&t| bias(t)).fold(0.0, f64::max);
         // RW's standard error at t_K from their Conf_end, carried to the other times by our
         // profile of the spread (RW state Conf at t_K only).
         let se_end = 0.5 * conf_end / LAMBDA_999;
@@ -257,7 +257,7 @@ fn exact_split(
     strang: bool,
     truth: impl Fn(f64) -> f64,
 ) -> f64 {
-    s.times
+    s.times()
         .iter()
         .map(|&t| {
             let e = mt.splitting_bulk_mean(s.n(), dt, strang, t) + mt.bulk_to_raw(s.n(), t);
@@ -284,8 +284,8 @@ fn steady_row(
     let s = scene(scene_name, &set, n, 1, seed);
     let (st, secs) = go(&s, o)?;
     let mt = maxwell_temperature(&s).expect("a Maxwell scene");
-    let first = s.steady_from.expect("a steady-state scene");
-    let pts = &s.times[first..];
+    let first = s.steady_from().expect("a steady-state scene");
+    let pts = &s.times()[first..];
     let exact = pts
         .iter()
         .map(|&t| {
@@ -316,7 +316,9 @@ fn steady_row(
     // spread of the points taken as independent (RW Section 4.2: "big enough to assure almost
     // independent observations").
     let col = st.col(name::T).expect("a known column");
-    let xs: Vec<f64> = (first..s.times.len()).map(|ti| st.mean(ti, col)).collect();
+    let xs: Vec<f64> = (first..s.times().len())
+        .map(|ti| st.mean(ti, col))
+        .collect();
     let points = gdsmc_stats::Sample::of(&xs);
     Ok((
         [

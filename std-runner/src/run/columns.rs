@@ -242,7 +242,7 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
     let species = scene.physics().species.len();
-    if scene.collisional_pairs > 0 && species == 0 {
+    if scene.collisional_pairs() > 0 && species == 0 {
         v.extend(COLLISIONAL);
     }
     let rough = scene.physics().rotation.is_some();
@@ -260,7 +260,7 @@ pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
                 v.extend(cols);
             }
         }
-        if scene.collisional_pairs > 0 {
+        if scene.collisional_pairs() > 0 {
             v.extend(&COOLING_COLUMNS[..species + 1]);
         }
     }

@@ -108,21 +108,21 @@ fn observe<E: EventLoop>(
     p: &mut Particles<'_>,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Result<(Vec<f64>, Counts), EnsembleError> {
-    let mut out = Vec::with_capacity(scene.times.len() * (COLUMNS.len() + 2) + 1);
+    let mut out = Vec::with_capacity(scene.times().len() * (COLUMNS.len() + 2) + 1);
     // Diagnostics draw from their own stream, so they never change the trajectory.
     let mut diag = rng.clone();
     diag.long_jump();
-    let nt = scene.times.len();
-    let mut reduced = vec![0.0; scene.reduced_histogram.map_or(0, |(k, _)| k + 1)];
+    let nt = scene.times().len();
+    let mut reduced = vec![0.0; scene.reduced_histogram().map_or(0, |h| h.weights())];
     let mut reduced_points = 0u32;
-    let reduced_from = scene.steady_from.unwrap_or(nt - 1);
-    let marginal_len = scene.marginal_histogram.map_or(0, |(_, k, _)| k + 2);
+    let reduced_from = scene.steady_from().unwrap_or(nt - 1);
+    let marginal_len = scene.marginal_histogram().map_or(0, |h| h.weights());
     let (mut marginal_first, mut marginal_last) =
         (vec![0.0; marginal_len], vec![0.0; marginal_len]);
-    let cooling = (scene.collisional_pairs > 0)
+    let cooling = (scene.collisional_pairs() > 0)
         .then(|| CoolingRates::new(scene))
         .flatten();
-    for (ti, &t) in scene.times.iter().enumerate() {
+    for (ti, &t) in scene.times().iter().enumerate() {
         let obs = if t == 0.0 {
             obs0
         } else {
@@ -133,17 +133,17 @@ fn observe<E: EventLoop>(
         // Bulk velocity and temperature in the stored units, once per observation, for the
         // diagnostics reduced by v0 (exact for a gas stored rescaled, whose physical
         // temperature may have underflowed).
-        let wants_reduced = scene.reduced_histogram.is_some() && ti >= reduced_from;
+        let wants_reduced = scene.reduced_histogram().is_some() && ti >= reduced_from;
         let stored =
-            (wants_reduced || scene.collisional_pairs > 0).then(|| stored_bulk_temperature(p));
-        if let (Some((_, c_max)), true, Some((bulk, t_bulk))) =
-            (scene.reduced_histogram, wants_reduced, stored)
+            (wants_reduced || scene.collisional_pairs() > 0).then(|| stored_bulk_temperature(p));
+        if let (Some(shells), true, Some((bulk, t_bulk))) =
+            (scene.reduced_histogram(), wants_reduced, stored)
         {
             // c = (v - V) / v0.
             let inv = 1.0 / (2.0 * t_bulk).sqrt();
             radial_shells_mapped(
                 p,
-                c_max,
+                shells.radius,
                 Frame {
                     scale: inv,
                     offset: -inv * bulk,
@@ -152,26 +152,26 @@ fn observe<E: EventLoop>(
             );
             reduced_points += 1;
         }
-        if let Some((axis, _, radius)) = scene.marginal_histogram {
+        if let Some(m) = scene.marginal_histogram() {
             let frame = engine.velocity_map();
             if ti == 0 {
-                component_bins(p, axis, radius, frame, &mut marginal_first);
+                component_bins(p, m.axis, m.radius, frame, &mut marginal_first);
             }
             if ti == nt - 1 {
-                component_bins(p, axis, radius, frame, &mut marginal_last);
+                component_bins(p, m.axis, m.radius, frame, &mut marginal_last);
             }
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
         // The scene allows collisional pairs with a constant restitution law only.
         if let (true, Some((bulk, t_bulk)), Some(alpha), true) = (
-            scene.collisional_pairs > 0,
+            scene.collisional_pairs() > 0,
             stored,
             scene.physics().restitution.constant(),
             cooling.is_none(),
         ) {
             // mu2, mu4 are reduced by v0, so the stored units do.
             let (mu2, mu4) =
-                collisional_moments(p, bulk, t_bulk, alpha, scene.collisional_pairs, &mut diag);
+                collisional_moments(p, bulk, t_bulk, alpha, scene.collisional_pairs(), &mut diag);
             out.extend([mu2, mu4]);
         }
         if let Some(r) = engine.rough(p) {
@@ -194,9 +194,9 @@ fn observe<E: EventLoop>(
         }
     }
     // The histogram of the last observation rides at the end of the row (split off in the job).
-    if let Some((k, radius)) = scene.histogram {
-        let mut h = vec![0.0; k + 1];
-        radial_shells_mapped(p, radius, engine.velocity_map(), &mut h);
+    if let Some(shells) = scene.histogram() {
+        let mut h = vec![0.0; shells.weights()];
+        radial_shells_mapped(p, shells.radius, engine.velocity_map(), &mut h);
         out.extend(h);
     }
     if reduced_points > 0 {
@@ -219,7 +219,7 @@ fn cooling_rates(
 ) -> Vec<f64> {
     let (_, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
     let unit = scale.powf(lambda);
-    let rates = c.rates(p, scene.collisional_pairs, rng);
+    let rates = c.rates(p, scene.collisional_pairs(), rng);
     let n: usize = scene.physics().species.iter().map(|s| s.count).sum();
     let (mut t, mut dt) = (0.0, 0.0);
     for (s, &(ts, dts)) in rates.iter().enumerate() {

@@ -105,8 +105,8 @@ pub fn kernel_constants(kernel: &KernelChoice) -> (f64, f64) {
 pub fn estimate(scene: &Scene) -> WorkEstimate {
     let p = &scene.physics();
     let n = p.n as f64;
-    let t_end = scene.times.last().copied().unwrap_or(0.0);
-    let m = scene.ensembles as f64;
+    let t_end = scene.times().last().copied().unwrap_or(0.0);
+    let m = scene.ensembles() as f64;
     let t0 = crate::run::initial_temperature(scene);
     let (gc, lambda) = kernel_constants(&p.kernel);
     let alpha = typical_alpha(scene);
@@ -199,8 +199,8 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         output: row_values as f64 * (m + OUTPUT_UNITS),
         events: rate * effective_time * m,
         background,
-        updates: (n * (scene.times.len() as f64 + steps)
-            + scene.collisional_pairs as f64 * scene.times.len() as f64)
+        updates: (n * (scene.times().len() as f64 + steps)
+            + scene.collisional_pairs() as f64 * scene.times().len() as f64)
             * m,
         particle_bytes: 32.0 * n,
     }
@@ -242,8 +242,8 @@ pub fn check(scene: &Scene, threads: usize, allow_long: bool) -> Result<WorkEsti
                 "= {} gives {} observation times and {} values per ensemble ({:.1} GiB a row, \
                  held by every worker, and about {:.0} GB of observables.csv), above the limit \
                  {MAX_ROW_VALUES}: observe fewer times",
-                scene.times.len() - 1,
-                scene.times.len(),
+                scene.times().len() - 1,
+                scene.times().len(),
                 e.row_values,
                 e.row_values as f64 * 8.0 / (1u64 << 30) as f64,
                 e.row_values as f64 * 2.0 * 22.0 / 1e9,

@@ -95,8 +95,8 @@ impl Header {
                 .map(|o| (o.source.clone(), o.assignment.clone()))
                 .collect(),
             fingerprint: fingerprint(scene),
-            seed: scene.seed,
-            ensembles: scene.ensembles,
+            seed: scene.seed(),
+            ensembles: scene.ensembles(),
             shard,
             start: range.start,
             end: range.end,
@@ -117,8 +117,8 @@ impl Header {
         let scene =
             crate::scene::parse_with(Path::new(&self.scene_path), &self.scene_text, &overrides)?;
         if fingerprint(&scene) != self.fingerprint
-            || scene.seed != self.seed
-            || scene.ensembles != self.ensembles
+            || scene.seed() != self.seed
+            || scene.ensembles() != self.ensembles
             || crate::run::totals::Totals::row_len_of(&scene) != self.row_len
         {
             return Err(Error::Journal {
@@ -296,12 +296,10 @@ pub fn beside(dir: &Path, shard: Option<(u64, u64)>) -> std::path::PathBuf {
     })
 }
 
-/// The `Debug` text of `scene` with its seed and ensemble count cleared.
+/// The `Debug` text of `scene` with its seed and ensemble count cleared
+/// ([`Scene::fingerprint`]).
 pub fn fingerprint(scene: &Scene) -> String {
-    let mut s = scene.clone();
-    s.seed = 0;
-    s.ensembles = 0;
-    format!("{s:?}")
+    scene.fingerprint()
 }
 
 fn counts_words(c: &Counts) -> [u64; COUNT_WORDS] {

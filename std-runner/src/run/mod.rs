@@ -24,7 +24,7 @@ pub use ensemble::{
     SystemBuffer, initial_sampler, initial_temperature, particle_buffer, run_ensemble,
     system_buffer,
 };
-pub use results::{RunStats, SteadyStats};
+pub use results::{MarginalHistogram, RunStats, ShellHistogram, SteadyStats};
 
 use crate::error::Error;
 use crate::scene::Scene;
@@ -71,7 +71,7 @@ impl EnsembleJob<'_> {
         totals: &mut Totals,
         on_row: &mut OnRow,
     ) -> Result<(), Error> {
-        let mut streams = Streams::new(self.scene.seed);
+        let mut streams = Streams::new(self.scene.seed());
         for _ in 0..range.start {
             streams.next();
         }
@@ -181,7 +181,7 @@ pub fn run_interruptible(
     let clock = Clock::start(threads);
     let mut totals = Totals::new(scene);
     job(scene, clock.threads, progress, stop, |job| {
-        job.fold(0..scene.ensembles, &mut totals, &mut |_, _, _| Ok(()))
+        job.fold(0..scene.ensembles(), &mut totals, &mut |_, _, _| Ok(()))
     })?;
     Ok(stats_of(scene, totals, clock.timing()))
 }
@@ -195,15 +195,15 @@ fn job<T>(
     f: impl FnOnce(&EnsembleJob) -> Result<T, Error>,
 ) -> Result<T, Error> {
     // `steady_from` is a public index: one set by hand past the times is refused, not run.
-    if let Some(k) = scene.steady_from
-        && k + 2 > scene.times.len()
+    if let Some(k) = scene.steady_from()
+        && k + 2 > scene.times().len()
     {
         return Err(Error::Argument {
             flag: "steady_from".to_string(),
             message: format!(
                 "observation {k} leaves fewer than two of the scene's {} observation times at or \
                  after it",
-                scene.times.len()
+                scene.times().len()
             ),
         });
     }
@@ -361,19 +361,26 @@ pub fn stats_of(scene: &Scene, totals: Totals, timing: Timing) -> RunStats {
         at += len;
         a
     };
-    let histogram = scene.histogram.map(|(k, radius)| (radius, take(k + 1)));
-    let reduced = scene.reduced_histogram.map(|(k, c)| (c, take(k + 1)));
-    let marginal = scene
-        .marginal_histogram
-        .map(|(axis, k, r)| (axis, r, take(k + 2), take(k + 2)));
-    let steady = scene.steady_from.map(|first| SteadyStats {
+    let mut shells = |h: crate::scene::Shells| ShellHistogram {
+        radius: h.radius,
+        weights: take(h.weights()),
+    };
+    let histogram = scene.histogram().map(&mut shells);
+    let reduced = scene.reduced_histogram().map(&mut shells);
+    let marginal = scene.marginal_histogram().map(|h| MarginalHistogram {
+        axis: h.axis,
+        radius: h.radius,
+        first: take(h.weights()),
+        last: take(h.weights()),
+    });
+    let steady = scene.steady_from().map(|first| SteadyStats {
         first,
-        points: scene.times.len() - first,
+        points: scene.times().len() - first,
         acc: st,
     });
     RunStats {
         dimension: scene.dimension(),
-        times: scene.times.clone(),
+        times: scene.times().to_vec(),
         names: names(scene),
         acc,
         counts,

@@ -81,13 +81,14 @@ pub fn run(
 ) -> Result<Option<Merged>, Error> {
     let (r, p) = (w.rank(), w.size());
     // Every rank decides this alike, before any message: no rank waits for another.
-    if p > scene.ensembles {
+    if p > scene.ensembles() {
         return Err(Error::Argument {
             flag: "mpirun -n".into(),
             message: format!(
                 "{p} ranks for {} ensembles (run.ensembles) would leave ranks without an \
                  ensemble; use at most {} ranks",
-                scene.ensembles, scene.ensembles
+                scene.ensembles(),
+                scene.ensembles()
             ),
         });
     }
@@ -108,7 +109,7 @@ pub fn run(
         // message was out: a race seen in CI, where only "refused by rank 0" was printed.
         return Ok(None);
     }
-    let range = shard::range(r, p, scene.ensembles);
+    let range = shard::range(r, p, scene.ensembles());
     let path = journal::beside(dir, Some((r, p)));
     let job = Journaled {
         scene,

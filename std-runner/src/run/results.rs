@@ -69,17 +69,39 @@ pub struct RunStats {
     pub threads: usize,
     /// Steady-state averages, when the scene asks for them.
     pub steady: Option<SteadyStats>,
-    /// The radial-shell histogram at the last observation (radius R, statistics of the K + 1
-    /// shell weights over ensembles), when the scene asks for it.
-    pub histogram: Option<(f64, Accumulator)>,
+    /// The radial-shell histogram at the last observation, when the scene asks for it.
+    pub histogram: Option<ShellHistogram>,
     /// The dimension of velocity space (3: spheres, 2: disks): the shells' volumes.
     pub dimension: usize,
-    /// The reduced-speed histogram (`c_max`, statistics of the K + 1 shell weights of
-    /// `c = |v - V| / v0`, each ensemble's averaged over the steady observations).
-    pub reduced: Option<(f64, Accumulator)>,
-    /// The marginal histogram (axis 0..=2, R, statistics of the K + 2 weights at the first
-    /// and at the last observation).
-    pub marginal: Option<(usize, f64, Accumulator, Accumulator)>,
+    /// The reduced-speed histogram of `c = |v - V| / v0` (its radius `c_max`), each
+    /// ensemble's averaged over the steady observations.
+    pub reduced: Option<ShellHistogram>,
+    /// The marginal histogram at the first and at the last observation.
+    pub marginal: Option<MarginalHistogram>,
+}
+
+/// A histogram of a speed in equal shells: the statistics over ensembles of the weights of
+/// the K shells on [0, `radius`) and of the one beyond.
+#[derive(Clone, Debug)]
+pub struct ShellHistogram {
+    /// The shells' outer radius (R, or `c_max` for the reduced speed).
+    pub radius: f64,
+    /// The K + 1 shell weights' statistics.
+    pub weights: Accumulator,
+}
+
+/// A histogram of one velocity component at the first and the last observation: the
+/// statistics over ensembles of the weights of the bins on [-R, R) and of one beyond each end.
+#[derive(Clone, Debug)]
+pub struct MarginalHistogram {
+    /// The component, 0..=2.
+    pub axis: usize,
+    /// R.
+    pub radius: f64,
+    /// The K + 2 weights' statistics at the first observation.
+    pub first: Accumulator,
+    /// The same at the last observation.
+    pub last: Accumulator,
 }
 
 impl RunStats {

@@ -31,7 +31,7 @@ impl Totals {
     /// No ensemble yet, shaped for `scene`.
     pub fn new(scene: &Scene) -> Self {
         let ncol = names(scene).len();
-        let times = scene.times.len();
+        let times = scene.times().len();
         Totals {
             acc: Accumulator::new(times * ncol),
             steady: Accumulator::new(ncol),
@@ -40,14 +40,14 @@ impl Totals {
             ensembles: 0,
             ncol,
             times,
-            first: scene.steady_from.unwrap_or(0),
+            first: scene.steady_from().unwrap_or(0),
         }
     }
 
     /// Values in one ensemble's row of `scene`, without allocating the fold: the observables
     /// (`times x columns`), then the histograms.
     pub fn row_len_of(scene: &Scene) -> usize {
-        scene.times.len() * names(scene).len() + scene.extra_len()
+        scene.times().len() * names(scene).len() + scene.extra_len()
     }
 
     /// Values in one ensemble's row: the observables (`times x columns`), then the histograms.

@@ -21,7 +21,7 @@ pub fn distribution_charts(
     marginal: Option<&crate::analysis::distribution::Marginal>,
 ) -> Vec<(String, Result<Chart, String>)> {
     let mut charts: Vec<(&str, Result<Chart, String>)> = Vec::new();
-    if let Some((radius, h)) = &stats.histogram {
+    if let Some(crate::run::ShellHistogram { radius, weights: h }) = &stats.histogram {
         let k = h.len() - 1;
         // Shell i: [lo, hi) and its volume.
         let shell = |i: usize| {

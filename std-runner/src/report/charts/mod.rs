@@ -31,7 +31,7 @@ pub fn all(
     marginal: Option<&crate::analysis::distribution::Marginal>,
 ) -> Vec<(String, Result<Chart, String>)> {
     let mut out = time::charts(title, stats, refs);
-    if let Some((radius, h)) = &stats.histogram
+    if let Some(crate::run::ShellHistogram { radius, weights: h }) = &stats.histogram
         && let Some(fit) = crate::analysis::tails::fit(*radius, h, stats.dimension)
     {
         let points = crate::analysis::tails::tail_points(*radius, h, stats.dimension);
