@@ -1,5 +1,7 @@
 //! Exact reference solutions, each with its paper and equation.
 
+use crate::reference::mutation::{Reference, mutated};
+
 /// GRW (13)-(14) / RW (24)-(25): the temperature of the heated Maxwell gas, `B = gamma C_0`,
 /// `T(t) = T_inf + (T_0 - T_inf) exp(-k t)`, `k = gamma pi C_0 (1 - alpha^2)`,
 /// `T_inf = 2 beta / k` (for `beta = 0` the pure exponential cooling). For a gas with a bulk
@@ -45,11 +47,13 @@ impl MaxwellTemperature {
     /// `T(t)`; for `alpha = 1` (`k = 0`) the limit `T_0 + 2 beta t` (RW, after (25)).
     pub fn at(&self, t: f64) -> f64 {
         let r = self.rate();
-        if r == 0.0 {
-            return self.t0 + 2.0 * self.beta * t;
-        }
-        let e = (-r * t).exp();
-        self.t0 * e + 2.0 * self.beta / r * (1.0 - e)
+        let x = if r == 0.0 {
+            self.t0 + 2.0 * self.beta * t
+        } else {
+            let e = (-r * t).exp();
+            self.t0 * e + 2.0 * self.beta / r * (1.0 - e)
+        };
+        mutated(Reference::MaxwellTemperature, x)
     }
 
     /// `T_inf = 2 beta / k` (GRW (14), RW (25)).
@@ -69,7 +73,7 @@ impl MaxwellTemperature {
     /// `d E[S - |P|^2/n] / dt = 6 (n - 1) beta - k E[S - |P|^2/n]`, and `3 n T_bulk = S - |P|^2/n`
     /// starts at `E = 3 (n - 1) T_0`: the ODE of `T(t)` scaled by `(n - 1)/n`.
     pub fn finite_n_bulk_mean(&self, n: usize, t: f64) -> f64 {
-        (1.0 - 1.0 / n as f64) * self.at(t)
+        mutated(Reference::FiniteNBulk, (1.0 - 1.0 / n as f64) * self.at(t))
     }
 
     /// The exact ensemble mean of GRW's raw temperature `(1/3n) sum |v|^2` of an `n`-particle
@@ -86,7 +90,10 @@ impl MaxwellTemperature {
     /// which scales the peculiar velocity `v - V` (MS (61)); kicks make it a random walk).
     /// The same in any dimension: `E |P|^2 = d n T_0 + 2 d n beta t` over `d n^2`.
     pub fn bulk_to_raw(&self, n: usize, t: f64) -> f64 {
-        (self.t0 + 2.0 * self.beta * t) / n as f64
+        mutated(
+            Reference::BulkToRaw,
+            (self.t0 + 2.0 * self.beta * t) / n as f64,
+        )
     }
 
     /// The exact ensemble mean of `T_bulk` of the splitting schemes (RW Algorithms 1 and 2)
@@ -120,7 +127,10 @@ impl MaxwellTemperature {
         } else {
             (1.0 - am) / (1.0 - a)
         };
-        (am * x0 + b * geometric) / (3.0 * nf)
+        mutated(
+            Reference::SplittingBulk,
+            (am * x0 + b * geometric) / (3.0 * nf),
+        )
     }
 }
 
@@ -177,14 +187,14 @@ impl HostMediumMaxwell {
     pub fn temperature(&self, t: f64) -> f64 {
         let (a, b, c, d) = self.coefficients();
         let x = self.s * t;
-        if (b - c).abs() < 1e-12 * b.abs().max(c.abs()) {
-            return self.t0 * (-b * x).exp()
-                + d / b * (1.0 - (-b * x).exp())
-                + a * x * (-b * x).exp();
-        }
-        self.t0 * (-c * x).exp()
-            + d / c * (1.0 - (-c * x).exp())
-            + a / (c - b) * ((-b * x).exp() - (-c * x).exp())
+        let temperature = if (b - c).abs() < 1e-12 * b.abs().max(c.abs()) {
+            self.t0 * (-b * x).exp() + d / b * (1.0 - (-b * x).exp()) + a * x * (-b * x).exp()
+        } else {
+            self.t0 * (-c * x).exp()
+                + d / c * (1.0 - (-c * x).exp())
+                + a / (c - b) * ((-b * x).exp() - (-c * x).exp())
+        };
+        mutated(Reference::HostMediumTemperature, temperature)
     }
 
     /// The equilibrium temperature BRS (18), `T* = D / C`.
@@ -237,7 +247,11 @@ pub mod sonine {
     /// `mu_2^(0) = pi^{(d-1)/2} / (sqrt(2) Gamma(d/2)) (1 - alpha^2) = sqrt(2 pi)(1 - alpha^2)`,
     /// MS (27).
     pub fn mu2_maxwellian(a: f64) -> f64 {
-        (2.0 * std::f64::consts::PI).sqrt() * (1.0 - a * a)
+        use crate::reference::mutation::{Reference, mutated};
+        mutated(
+            Reference::MaxwellianMoments,
+            (2.0 * std::f64::consts::PI).sqrt() * (1.0 - a * a),
+        )
     }
     /// `mu_4^(0) = (d + 3/2 + alpha^2) mu_2^(0)`, MS (29).
     pub fn mu4_maxwellian(a: f64) -> f64 {

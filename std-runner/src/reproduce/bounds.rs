@@ -55,7 +55,11 @@ pub fn sup_norm_range(s: f64, miss: f64) -> (f64, f64) {
             ((ln_moment - half.ln()) / p).exp()
         })
         .fold(f64::INFINITY, f64::min);
-    (s * lo, s * hi)
+    use crate::reference::mutation::{Reference, mutated};
+    (
+        mutated(Reference::SupNormRange, s * lo),
+        mutated(Reference::SupNormRange, s * hi),
+    )
 }
 
 #[cfg(test)]

@@ -244,6 +244,18 @@ impl Cell {
 
     /// The verdict had our figure been `ours` (the tests feed 0 and values ten times off).
     pub fn verdict_with(&self, ours: f64) -> Verdict {
+        self.judge(ours, POWER)
+    }
+
+    /// The verdict under a power rule of `power` instead of [`POWER`] (`f64::INFINITY`: the
+    /// rule before it, every informative check agreeing): for the mutation check's test,
+    /// which shows that without the rule it would find cells that miss a wrong reference.
+    pub fn verdict_at_power(&self, power: f64) -> Verdict {
+        self.judge(self.ours, power)
+    }
+
+    /// The verdict with our figure `ours` under a power rule of `power`.
+    fn judge(&self, ours: f64, power: f64) -> Verdict {
         if self.checks.is_empty() {
             return Verdict::Shown;
         }
@@ -260,7 +272,7 @@ impl Cell {
                 blame = Some(blame.map_or(b, |a| a.max(b)));
             }
             informative &= c.informative();
-            powerful &= c.detectable() <= POWER;
+            powerful &= c.detectable() <= power;
         }
         match (blame, &self.dispute) {
             (Some(_), Some(_)) => Verdict::Disputed,

@@ -30,6 +30,7 @@ pub use cells::{
 };
 pub use figure::fmt;
 pub use report::{epilogue, markdown, text};
+pub use runs::with_cached_runs;
 pub(crate) use runs::{at, ensembles, go, largest, relative, scene, steady};
 
 use crate::Error;
