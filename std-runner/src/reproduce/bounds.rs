@@ -62,9 +62,129 @@ pub fn sup_norm_range(s: f64, miss: f64) -> (f64, f64) {
     )
 }
 
+/// Paths of the Monte Carlo laws below: enough that 0.07% tails hold about 140 paths each.
+const PATHS: usize = 200_000;
+
+/// Steps of a path standing for the continuous supremum ([`sup_norm_upper`]).
+const FINE_STEPS: usize = 512;
+
+/// Paths of [`sup_norm_upper`] (each of [`FINE_STEPS`] steps): about 34 in its tail.
+const FINE_PATHS: usize = 50_000;
+
+/// How far into the tail (binomial standard deviations) the order statistic taken for a
+/// quantile lies, so that the Monte Carlo error widens the range, never narrows it.
+const ORDER_MARGIN: f64 = 3.1;
+
+/// The range of `max_m |W(t_m)|` over a grid, `W` a centred Gaussian martingale in three
+/// dimensions whose components have variance `profile[m]` at the grid's `m`-th time
+/// (increasing, the last 1): in units of `s`, the standard deviation per component at the end,
+/// missed with probability at most `miss` (half below, half above). Exact up to the Monte Carlo
+/// error of [`PATHS`] paths of the grid (fixed seed), which the order statistics taken
+/// [`ORDER_MARGIN`] binomial standard deviations into each tail turn into a wider range.
+/// The law of GRW's `||V||_inf` on our grid: the chi(3) and Doob range of [`sup_norm_range`]
+/// holds for any grid and is several times wider (issue 35).
+/// Returns `(lo, median, hi)`.
+pub fn grid_max_range(profile: &[f64], miss: f64) -> (f64, f64, f64) {
+    let mut max = simulate_max(profile, PATHS, 1);
+    max.sort_by(f64::total_cmp);
+    let (lo, hi) = tail_order_statistics(&max, 0.5 * miss);
+    use crate::reference::mutation::{Reference, mutated};
+    (
+        mutated(Reference::SupNormRange, lo),
+        mutated(Reference::SupNormRange, max[max.len() / 2]),
+        mutated(Reference::SupNormRange, hi),
+    )
+}
+
+/// The upper end of the range of the supremum of `|W(t)|` over `[0, t_end]`, `W` as in
+/// [`grid_max_range`] with variance `v0 + (1 - v0) t / t_end` per component (a Brownian motion
+/// from a Gaussian start): the largest value the maximum over any grid can take, missed with
+/// probability at most `miss / 2`. The supremum is simulated on [`FINE_STEPS`] steps; a
+/// discrete maximum falls short of the supremum by about `0.5826 sqrt(step variance)` (Broadie,
+/// Glasserman and Kou 1997, for one component), which is added twice over ([`FINE_PATHS`]
+/// paths, the order statistic as in [`grid_max_range`]).
+pub fn sup_norm_upper(v0: f64, miss: f64) -> f64 {
+    let profile: Vec<f64> = (0..=FINE_STEPS)
+        .map(|i| v0 + (1.0 - v0) * i as f64 / FINE_STEPS as f64)
+        .collect();
+    let mut max = simulate_max(&profile, FINE_PATHS, 2);
+    max.sort_by(f64::total_cmp);
+    let (_, hi) = tail_order_statistics(&max, 0.5 * miss);
+    let overshoot = 2.0 * 0.5826 * ((1.0 - v0) / FINE_STEPS as f64).sqrt();
+    use crate::reference::mutation::{Reference, mutated};
+    mutated(Reference::SupNormRange, hi + overshoot)
+}
+
+/// `max_m |W(t_m)|` of `paths` paths with variance `profile[m]` per component at step `m`
+/// (the core's ziggurat normal, a generator of fixed seed `seed`).
+fn simulate_max(profile: &[f64], paths: usize, seed: u64) -> Vec<f64> {
+    use gdsmc_core::sample::normal::standard_normal3;
+    use rand_core::SeedableRng;
+    let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(seed);
+    let steps: Vec<f64> = profile
+        .iter()
+        .scan(0.0, |before, &v| {
+            let dv = (v - *before).max(0.0).sqrt();
+            *before = v;
+            Some(dv)
+        })
+        .collect();
+    (0..paths)
+        .map(|_| {
+            let mut w = gdsmc_core::vec3::Vec3::ZERO;
+            let mut max: f64 = 0.0;
+            for &sd in &steps {
+                w += sd * standard_normal3(&mut rng);
+                max = max.max(w.norm2().sqrt());
+            }
+            max
+        })
+        .collect()
+}
+
+/// The order statistics of the sorted sample `x` that lie below its `p` quantile and above
+/// its `1 - p` quantile with probability about 99.9% each: `ORDER_MARGIN` binomial standard
+/// deviations into each tail.
+fn tail_order_statistics(x: &[f64], p: f64) -> (f64, f64) {
+    let m = x.len() as f64;
+    let j = (m * p - ORDER_MARGIN * (m * p * (1.0 - p)).sqrt()).floor();
+    let j = (j.max(1.0) as usize).min(x.len()) - 1;
+    (x[j], x[x.len() - 1 - j])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// On a one-point grid the law is chi(3): the simulated range lies outside the exact
+    /// quantiles (the order statistics are taken into the tails) and within 10% of them.
+    #[test]
+    fn grid_law_on_one_point_is_chi3() {
+        let chi = Chi::new(3).unwrap();
+        let half = 0.5 * miss();
+        let (q_lo, q_hi) = (chi.inverse_cdf(half), chi.inverse_cdf(1.0 - half));
+        let (lo, median, hi) = grid_max_range(&[1.0], miss());
+        assert!(lo <= q_lo && lo > 0.9 * q_lo, "{lo} against {q_lo}");
+        assert!(hi >= q_hi && hi < 1.1 * q_hi, "{hi} against {q_hi}");
+        let q_median = chi.inverse_cdf(0.5);
+        assert!(
+            (median - q_median).abs() < 0.01 * q_median,
+            "{median} against {q_median}"
+        );
+    }
+
+    /// GRW Example 3's walk (start variance 1/17 of the end's, 33 times on [0, 8]): the grid
+    /// law lies inside the range for any grid, its lower end many times above chi(3)'s, and the
+    /// simulated supremum's upper end above the grid's and below Doob's bound.
+    #[test]
+    fn grid_law_inside_the_any_grid_range() {
+        let profile: Vec<f64> = (0..=32).map(|i| (1.0 + 0.5 * i as f64) / 17.0).collect();
+        let (lo, _, hi) = grid_max_range(&profile, miss());
+        let (chi_lo, doob) = sup_norm_range(1.0, miss());
+        let sup = sup_norm_upper(profile[0], miss());
+        assert!(lo > 4.0 * chi_lo, "{lo} against {chi_lo}");
+        assert!(hi < sup && sup < doob, "{hi} < {sup} < {doob}");
+    }
 
     #[test]
     fn joint_multipliers() {
