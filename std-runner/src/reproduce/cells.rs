@@ -60,6 +60,10 @@ pub struct Check {
     pub expected: f64,
     /// What the range is made of, with the source of each part.
     pub basis: String,
+    /// The judged figure's standard score against the law of its estimator, where that law is
+    /// known to be (near) Gaussian with a known spread: what the table-wide test
+    /// ([`Table::joint`]) sums. `None` for checks without one.
+    pub z: Option<f64>,
 }
 
 impl Check {
@@ -80,7 +84,15 @@ impl Check {
             family_hi: expected + tol,
             expected,
             basis: basis.into(),
+            z: None,
         }
+    }
+
+    /// Sets the judged figure's standard score ([`Check::z`]).
+    #[must_use]
+    pub fn with_z(mut self, z: f64) -> Self {
+        self.z = z.is_finite().then_some(z);
+        self
     }
 
     /// Sets the report-level range to `expected +- tol`.
@@ -383,6 +395,87 @@ pub struct Table {
     pub rows: Vec<Row>,
     /// Rows of the paper left out in this mode.
     pub skipped: Vec<String>,
+}
+
+/// A table-wide test of one side's figures against their exact laws: the standard scores of
+/// every check of that side that has one ([`Check::z`]), taken together.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Joint {
+    /// Whose figures.
+    pub side: Side,
+    /// How many scores.
+    pub k: usize,
+    /// `sum z^2`, chi-squared with `k` degrees of freedom if every figure follows its law.
+    pub chi2: f64,
+    /// Its upper tail probability.
+    pub p_chi2: f64,
+    /// The mean score, `sum z / k`: a shared offset shows here (one-sided alternatives).
+    pub mean_z: f64,
+    /// The largest `|z|`.
+    pub max_z: f64,
+    /// The probability that the largest of `k` independent `|z|` is at least `max_z`
+    /// (Sidak).
+    pub p_max: f64,
+}
+
+impl Joint {
+    /// Whether the side's figures, taken together, are off their laws at the report's 99.9%
+    /// level (either statistic, Bonferroni over the two).
+    pub fn off(&self) -> bool {
+        self.p_chi2.min(self.p_max) < 0.5 * gdsmc_stats::miss()
+    }
+
+    /// One line: `paper, 10 figures: chi^2 = 31.2 on 10 (p = 5e-4), mean z = +1.2, largest |z| = 3.5 (p = 5e-3)`.
+    pub fn line(&self) -> String {
+        format!(
+            "{}, {} figures against their exact laws: chi^2 = {:.1} on {} (p = {:.1e}), mean z = \
+             {:+.2}, largest |z| = {:.2} (p = {:.1e}){}",
+            match self.side {
+                Side::Paper => "the paper's",
+                Side::Ours => "ours",
+            },
+            self.k,
+            self.chi2,
+            self.k,
+            self.p_chi2,
+            self.mean_z,
+            self.max_z,
+            self.p_max,
+            if self.off() { ": jointly off" } else { "" }
+        )
+    }
+}
+
+impl Table {
+    /// The table-wide test of `side`'s figures ([`Joint`]), when at least two have scores.
+    pub fn joint(&self, side: Side) -> Option<Joint> {
+        use statrs::distribution::{ChiSquared, ContinuousCDF, Normal};
+        let z: Vec<f64> = self
+            .rows
+            .iter()
+            .flat_map(|r| &r.cells)
+            .flat_map(|c| &c.checks)
+            .filter(|k| k.side == side && k.against == Against::Exact)
+            .filter_map(|k| k.z)
+            .collect();
+        if z.len() < 2 {
+            return None;
+        }
+        let k = z.len();
+        let chi2: f64 = z.iter().map(|x| x * x).sum();
+        let max_z = z.iter().map(|x| x.abs()).fold(0.0, f64::max);
+        let normal = Normal::standard();
+        let one = 2.0 * normal.sf(max_z);
+        Some(Joint {
+            side,
+            k,
+            chi2,
+            p_chi2: ChiSquared::new(k as f64).map_or(f64::NAN, |c| c.sf(chi2)),
+            mean_z: z.iter().sum::<f64>() / k as f64,
+            max_z,
+            p_max: -f64::exp_m1(k as f64 * f64::ln_1p(-one)),
+        })
+    }
 }
 
 /// How many cells of each verdict a table (or a report) has.

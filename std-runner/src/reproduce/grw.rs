@@ -3,7 +3,7 @@
 use super::bounds::{FAMILY, grid_max_range, miss, sup_norm_range, sup_norm_upper};
 use super::cells::{Against, Cell, Check, Side, rounding};
 use super::figure::fmt;
-use super::judged::{OurLargest, PaperNoise, max_error_exact};
+use super::judged::{MaxLaw, OurLargest, PaperNoise, max_error_exact};
 use super::{Entry, Options, Row, Table, at, ensembles, go, largest, relative, scene};
 use crate::Error;
 use crate::reference::curves::maxwell_temperature;
@@ -79,11 +79,15 @@ fn table(
         let (st, secs) = go(&s, o)?;
         let rel = relative(&st, name::T, |t| mt.at(t));
         let (ours, sd) = largest(&rel);
-        let bmax = s
-            .times()
-            .iter()
-            .map(|&t| ((mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t)).abs())
-            .fold(0.0, f64::max);
+        let law = MaxLaw {
+            bias: s
+                .times()
+                .iter()
+                .map(|&t| (mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t))
+                .collect(),
+            sd: rel.iter().map(|r| r.1).collect(),
+        };
+        let bmax = law.bias.iter().map(|b| b.abs()).fold(0.0, f64::max);
         let noise = PaperNoise {
             se: sd / (PAPER_ENSEMBLES as f64).sqrt(),
             dof: m - 1,
@@ -96,7 +100,7 @@ fn table(
             "E_max",
             e_paper,
             bmax,
-            rel.len(),
+            &law,
             OurLargest {
                 value: ours,
                 se: sd / (m as f64).sqrt(),
@@ -149,6 +153,7 @@ fn table(
                 family_lo: family_lo - round,
                 family_hi: family_hi + round,
                 expected,
+                z: None,
                 basis: format!(
                     "the 99.9% range of max_t |V(t)| of a {big_n}-ensemble mean, {}, s = \
                      sqrt((T0 + 2 beta t_end)/(n N)) = {}{}",

@@ -186,6 +186,44 @@ mod tests {
             ))
     }
 
+    /// A cell whose paper check has score `zp` and our check `zo`.
+    fn scored(zp: f64, zo: f64) -> Cell {
+        Cell::new("x", 1.0, (1.0, 0.1))
+            .check(Check::around(Side::Ours, Against::Exact, 1.0, 0.1, "").with_z(zo))
+            .check(Check::around(Side::Paper, Against::Exact, 1.0, 0.1, "").with_z(zp))
+    }
+
+    /// The table-wide test: chi^2 and the largest score against their laws, computed by hand,
+    /// and a shared offset of 3 sigma over four figures found while a scatter of +-0.5 is not.
+    #[test]
+    fn table_wide_test_finds_a_shared_offset() {
+        let t = one_row_table((0..4).map(|_| scored(3.0, 0.5)).collect());
+        let j = t.joint(Side::Paper).expect("four scores");
+        assert_eq!(j.k, 4);
+        assert!((j.chi2 - 36.0).abs() < 1e-12);
+        // P(chi^2_4 > 36) = e^(-18) (1 + 18), the closed form for 4 degrees of freedom.
+        let p = (-18f64).exp() * 19.0;
+        assert!(
+            (j.p_chi2 / p - 1.0).abs() < 1e-9,
+            "{} against {p}",
+            j.p_chi2
+        );
+        assert!((j.mean_z - 3.0).abs() < 1e-12);
+        // Sidak: 1 - (1 - 0.0026998)^4.
+        assert!((j.p_max - (1.0 - (1.0f64 - 0.002_699_796).powi(4))).abs() < 1e-7);
+        assert!(j.off(), "{}", j.line());
+        let ours = t.joint(Side::Ours).expect("four scores");
+        assert!(!ours.off(), "{}", ours.line());
+        assert!(
+            one_row_table(vec![scored(9.0, 0.0)])
+                .joint(Side::Paper)
+                .is_none()
+        );
+        // A score that is not finite is no score.
+        let nan = Check::around(Side::Ours, Against::Exact, 1.0, 0.1, "").with_z(f64::NAN);
+        assert_eq!(nan.z, None);
+    }
+
     /// Table `t` of one row `r` holding `cells`.
     fn one_row_table(cells: Vec<Cell>) -> Table {
         Table {

@@ -61,10 +61,22 @@ pub fn text(t: &Table) -> String {
         }
     }
     let _ = writeln!(s, "{}", Counts::of([t]).line());
+    for j in joints(t) {
+        let _ = writeln!(s, "table-wide: {}", j.line());
+    }
     if !t.skipped.is_empty() {
         let _ = writeln!(s, "not run in this mode: {}", t.skipped.join(", "));
     }
     s
+}
+
+/// The table-wide tests of a table, the paper's first (those that exist: a side needs two
+/// scored figures).
+fn joints(t: &Table) -> Vec<super::cells::Joint> {
+    [super::Side::Paper, super::Side::Ours]
+        .into_iter()
+        .filter_map(|side| t.joint(side))
+        .collect()
 }
 
 /// The lines that end a `reproduce` run on the terminal, one per unusual class of cell, each
@@ -78,7 +90,13 @@ pub fn epilogue(tables: &[Table]) -> String {
     let mut disputed = Vec::new();
     let mut paper_off = Vec::new();
     let mut weak = Vec::new();
+    let mut jointly = Vec::new();
     for t in tables {
+        for j in joints(t) {
+            if j.off() {
+                jointly.push(format!("{}: {}", t.name, j.line()));
+            }
+        }
         for r in &t.rows {
             for c in &r.cells {
                 let at = format!("{} {}: {}", t.name, r.label, c.quantity);
@@ -133,6 +151,17 @@ pub fn epilogue(tables: &[Table]) -> String {
         );
         for p in &paper_off {
             let _ = writeln!(s, "  {p}");
+        }
+    }
+    if !jointly.is_empty() {
+        let _ = writeln!(
+            s,
+            "figures jointly off their exact laws (table-wide: each figure's score against the \
+             law of its estimator, chi^2 over the table and its largest |z|; findings, not \
+             failures, when the paper's):"
+        );
+        for j in &jointly {
+            let _ = writeln!(s, "  {j}");
         }
     }
     if !weak.is_empty() {
@@ -261,6 +290,13 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
                     }
                 );
             }
+        }
+        let js = joints(t);
+        if !js.is_empty() {
+            let _ = writeln!(s);
+        }
+        for j in js {
+            let _ = writeln!(s, "Table-wide: {}.", j.line());
         }
         if !t.skipped.is_empty() {
             let _ = writeln!(
