@@ -149,6 +149,7 @@ fn table(
         ),
         rows,
         skipped: vec![],
+        findings: vec![],
     })
 }
 
@@ -221,5 +222,6 @@ fn equilibria(o: &Options, seed: u64) -> Result<Table, Error> {
             .into(),
         rows,
         skipped: vec![],
+        findings: vec![],
     })
 }

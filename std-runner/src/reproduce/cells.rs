@@ -395,6 +395,9 @@ pub struct Table {
     pub rows: Vec<Row>,
     /// Rows of the paper left out in this mode.
     pub skipped: Vec<String>,
+    /// What the table's figures show together beyond the cells (e.g. which reading of the
+    /// paper's estimator its figures fit), as sentences.
+    pub findings: Vec<String>,
 }
 
 /// A table-wide test of one side's figures against their exact laws: the standard scores of

@@ -209,5 +209,6 @@ fn table(
         ),
         rows: out,
         skipped: vec![],
+        findings: vec![],
     })
 }

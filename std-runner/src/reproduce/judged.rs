@@ -108,7 +108,7 @@ impl MaxLaw {
 /// The standard normal score with the same tail probability as Student's `t` with `dof`
 /// degrees of freedom (the identity for [`KNOWN`]): so that scores of means with few degrees
 /// of freedom can be summed in a chi-squared test.
-fn t_to_z(t: f64, dof: u64) -> f64 {
+pub fn t_to_z(t: f64, dof: u64) -> f64 {
     use statrs::distribution::{ContinuousCDF, Normal, StudentsT};
     if dof == KNOWN || !t.is_finite() {
         return t;

@@ -238,6 +238,7 @@ mod tests {
                 cells,
             }],
             skipped: vec![],
+            findings: vec![],
         }
     }
 

@@ -157,6 +157,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         ),
         rows,
         skipped: vec![],
+        findings: vec![],
     })
 }
 

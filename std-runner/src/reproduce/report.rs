@@ -64,6 +64,9 @@ pub fn text(t: &Table) -> String {
     for j in joints(t) {
         let _ = writeln!(s, "table-wide: {}", j.line());
     }
+    for f in &t.findings {
+        let _ = writeln!(s, "{f}");
+    }
     if !t.skipped.is_empty() {
         let _ = writeln!(s, "not run in this mode: {}", t.skipped.join(", "));
     }
@@ -91,12 +94,14 @@ pub fn epilogue(tables: &[Table]) -> String {
     let mut paper_off = Vec::new();
     let mut weak = Vec::new();
     let mut jointly = Vec::new();
+    let mut findings = Vec::new();
     for t in tables {
         for j in joints(t) {
             if j.off() {
                 jointly.push(format!("{}: {}", t.name, j.line()));
             }
         }
+        findings.extend(t.findings.iter().map(|f| format!("{}: {f}", t.name)));
         for r in &t.rows {
             for c in &r.cells {
                 let at = format!("{} {}: {}", t.name, r.label, c.quantity);
@@ -162,6 +167,12 @@ pub fn epilogue(tables: &[Table]) -> String {
         );
         for j in &jointly {
             let _ = writeln!(s, "  {j}");
+        }
+    }
+    if !findings.is_empty() {
+        let _ = writeln!(s, "what tables show together:");
+        for f in &findings {
+            let _ = writeln!(s, "  {f}");
         }
     }
     if !weak.is_empty() {
@@ -297,6 +308,9 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
         }
         for j in js {
             let _ = writeln!(s, "Table-wide: {}.", j.line());
+        }
+        for f in &t.findings {
+            let _ = writeln!(s, "\n{f}");
         }
         if !t.skipped.is_empty() {
             let _ = writeln!(

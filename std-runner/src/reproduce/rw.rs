@@ -22,6 +22,11 @@ const PAPER_ENSEMBLES: u64 = 10_000;
 /// [RW05, Section 3.1.4] for the interval, the 3.2-sigma interval of GRW (25) (`LAMBDA_999`).
 const CONF_IS_A_WIDTH: &str = "RW's Conf is \"the width of the confidence interval\": half of it";
 
+/// How RW's steady-state figures are judged: with the scatter of the estimator itself.
+const ESTIMATOR_SCATTER: &str = "the estimator's own scatter: our half-width of the same \
+    estimator (one ensemble, the same n, scheme and points); RW's Conf, read as RW define it, \
+    is about half of it (the Conf cells)";
+
 /// RW Table 1.
 pub const TABLE1: Entry = Entry {
     name: "rw-table1",
@@ -173,6 +178,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         ),
         rows,
         skipped,
+        findings: vec![],
     })
 }
 
@@ -257,6 +263,7 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
         ),
         rows,
         skipped: vec![],
+        findings: vec![],
     })
 }
 
@@ -283,16 +290,73 @@ fn largest_bias(b: &[f64]) -> f64 {
     b.iter().map(|x| x.abs()).fold(0.0, f64::max)
 }
 
+/// One steady-state figure of RW under the two readings of what RW average: the exact mean
+/// of RW (23)'s raw temperature and of the temperature about the bulk velocity, with the
+/// estimator's own scatter (ours: the same estimator, one ensemble, the same n and points).
+#[derive(Clone, Copy, Debug)]
+struct Reading {
+    /// RW's figure.
+    paper: f64,
+    /// Half a unit of its last digit.
+    round: f64,
+    /// The exact mean of the raw temperature's average (RW (23)).
+    raw: f64,
+    /// The exact mean of the bulk temperature's average.
+    bulk: f64,
+    /// The estimator's standard error (our half-width over the Student-t multiplier).
+    se: f64,
+    /// Its degrees of freedom.
+    dof: u64,
+}
+
+impl Reading {
+    /// RW's figure's score against `exact`, with the rounding (uniform) in its variance.
+    fn z(&self, exact: f64) -> f64 {
+        let sd = (self.se * self.se + self.round * self.round / 3.0).sqrt();
+        super::judged::t_to_z((self.paper - exact) / sd, self.dof)
+    }
+}
+
+/// The two readings over a table's rows, as a sentence: chi^2 of RW's figures against each
+/// exact mean with the estimator's scatter, and which one they fit.
+fn readings(rs: &[Reading]) -> String {
+    use statrs::distribution::{ChiSquared, ContinuousCDF};
+    let k = rs.len() as f64;
+    let test = |exact: &dyn Fn(&Reading) -> f64| {
+        let z: Vec<f64> = rs.iter().map(|r| r.z(exact(r))).collect();
+        let chi2: f64 = z.iter().map(|x| x * x).sum();
+        let p = ChiSquared::new(k).map_or(f64::NAN, |c| c.sf(chi2));
+        let mean = z.iter().sum::<f64>() / k;
+        (chi2, p, mean)
+    };
+    let (raw, p_raw, m_raw) = test(&|r| r.raw);
+    let (bulk, p_bulk, m_bulk) = test(&|r| r.bulk);
+    format!(
+        "Readings (RW's figures against the exact mean with the estimator's own scatter, ours \
+         of the same estimator, not RW's Conf): the raw temperature of RW (23), chi^2 = {raw:.1} \
+         on {k} (p = {p_raw:.1e}, mean z = {m_raw:+.2}); the temperature about the bulk \
+         velocity, chi^2 = {bulk:.1} on {k} (p = {p_bulk:.1e}, mean z = {m_bulk:+.2}): RW's \
+         figures fit {}.",
+        if p_bulk > 10.0 * p_raw && p_bulk > 0.01 {
+            "the temperature about the bulk velocity better than RW (23)'s raw temperature"
+        } else if p_raw > 10.0 * p_bulk && p_raw > 0.01 {
+            "RW (23)'s raw temperature better than the temperature about the bulk velocity"
+        } else {
+            "neither reading decisively better"
+        }
+    )
+}
+
 /// A steady-state row of RW Section 4.2: one ensemble of `n = 65536`, the raw temperature
-/// averaged over the 65 observation points `s = 8, 10, ..., 136`; returns the cell, the wall
-/// seconds and the CPU seconds.
+/// averaged over the 65 observation points `s = 8, 10, ..., 136`; returns the cells, the wall
+/// seconds, the CPU seconds and the figure's two readings.
 fn steady_row(
     o: &Options,
     scene_name: &str,
     scheme: Option<(&str, f64)>,
     seed: u64,
     paper: (f64, f64, f64),
-) -> Result<([Cell; 2], f64, f64), Error> {
+) -> Result<([Cell; 2], f64, f64, Reading), Error> {
     let set: Vec<String> = match scheme {
         Some((kind, dt)) => vec![format!("scheme.kind={kind}"), format!("scheme.dt={dt}")],
         None => vec![],
@@ -303,32 +367,41 @@ fn steady_row(
     let mt = maxwell_temperature(&s).expect("a Maxwell scene");
     let first = s.steady_from().expect("a steady-state scene");
     let pts = &s.times()[first..];
-    let exact = pts
-        .iter()
-        .map(|&t| {
-            let bulk = match scheme {
-                Some((kind, dt)) => mt.splitting_bulk_mean(n, dt, kind == "strang", t),
-                None => mt.finite_n_bulk_mean(n, t),
-            };
-            bulk + mt.bulk_to_raw(n, t)
-        })
-        .sum::<f64>()
-        / pts.len() as f64;
+    let bulk_at = |t: f64| match scheme {
+        Some((kind, dt)) => mt.splitting_bulk_mean(n, dt, kind == "strang", t),
+        None => mt.finite_n_bulk_mean(n, t),
+    };
+    let average =
+        |f: &dyn Fn(f64) -> f64| pts.iter().map(|&t| f(t)).sum::<f64>() / pts.len() as f64;
+    let bulk = average(&bulk_at);
+    let exact = average(&|t| bulk_at(t) + mt.bulk_to_raw(n, t));
     let (t_inf, conf, round) = paper;
     // One ensemble: our interval comes from the spread of the steady points (results.rs).
     let dof = pts.len() as u64 - 1;
+    let ours = super::steady(&st, name::T);
+    // RW's figure is the same estimator as ours (one ensemble, the same n, scheme and
+    // points): its scatter is ours. RW's own Conf is shown beside it (read as RW define it,
+    // a width, it is about half of ours: not the estimator's scatter).
     let cell = mean_exact(
         "T_inf",
         t_inf,
-        super::steady(&st, name::T),
+        ours,
         dof,
         exact,
         &PaperInterval {
-            half: 0.5 * conf,
+            half: ours.1,
             round,
-            source: CONF_IS_A_WIDTH,
+            source: ESTIMATOR_SCATTER,
         },
     );
+    let reading = Reading {
+        paper: t_inf,
+        round,
+        raw: exact,
+        bulk,
+        se: ours.1 / gdsmc_stats::multiplier(dof + 1),
+        dof,
+    };
     // RW's Conf beside ours read the same way: the width of a 3.2-sigma interval from the
     // spread of the points taken as independent (RW Section 4.2: "big enough to assure almost
     // independent observations").
@@ -344,6 +417,7 @@ fn steady_row(
         ],
         secs,
         st.cpu.as_secs_f64(),
+        reading,
     ))
 }
 
@@ -367,14 +441,17 @@ fn steady_notes(extra: &str) -> String {
         "One ensemble of n = 65536 as RW; the raw temperature averaged over s = 8, 10, ..., 136 \
          with its 99.9% half-width from the spread of those points (widened for their lag-1 \
          autocorrelation, Student t over the points). Both figures are judged against the exact \
-         mean of the estimator (finite n, time step; reference/exact.rs): ours with our \
-         interval, RW's with RW's own: Conf is \"the width of the confidence interval\" (RW \
-         Section 4.2), so RW's half-width is Conf / 2. Conf is shown beside ours read the \
-         same way, the width of a 3.2-sigma interval from our spread of the same points taken \
-         as independent (RW's Conf / ours, row by row, below: near 1/2 means RW's Conf is a \
-         half-width in fact, so that read as RW define it their interval is narrower than \
-         their scatter). CPU: CPU time relative to our \
-         no-splitting run (shown, not judged; see `gdsmc bench`). {extra}"
+         mean of RW (23)'s raw temperature average (finite n, time step; reference/exact.rs) \
+         with the estimator's own scatter: ours is the same estimator (one ensemble, the same \
+         n, scheme and points), so our half-width is the range of both figures. RW's Conf is \
+         shown beside ours read as RW define it, \"the width of the confidence interval\" (RW \
+         Section 4.2): the width of a 3.2-sigma interval from our spread of the same points \
+         taken as independent (RW's Conf / ours, row by row, below: near 1/2 means RW's Conf \
+         is a half-width in fact, or their interval, read as they define it, is narrower \
+         than their scatter). RW's figures are also tested together under both readings of \
+         what they average, RW (23)'s raw temperature and the temperature about the bulk \
+         velocity (whose exact mean lacks the raw term (T0 + 2 beta t)/n), below. CPU: CPU \
+         time relative to our no-splitting run (shown, not judged; see `gdsmc bench`). {extra}"
     )
 }
 
@@ -410,16 +487,17 @@ fn steady_table(
     name: &'static str,
     quick_max_k: usize,
 ) -> Result<Table, Error> {
-    let (_, _, base) = steady_row(o, "rw-steady", None, seed, (8.0 / 3.0, 0.0, 0.0))?;
+    let (_, _, base, _) = steady_row(o, "rw-steady", None, seed, (8.0 / 3.0, 0.0, 0.0))?;
     let mut rows = Vec::new();
     let mut skipped = Vec::new();
+    let mut read = Vec::new();
     for (k, &(kk, t_inf, conf, cpu)) in paper.iter().enumerate() {
         if o.quick && kk > quick_max_k {
             skipped.push(format!("K = {kk}"));
             continue;
         }
         let dt = 8.0 / kk as f64;
-        let ([cell, conf_cell], secs, cpu_s) = steady_row(
+        let ([cell, conf_cell], secs, cpu_s, reading) = steady_row(
             o,
             "rw-steady",
             Some((kind, dt)),
@@ -427,6 +505,7 @@ fn steady_table(
             // RW print T_inf with four decimals: half a unit of the last is 5e-5.
             (t_inf, conf, 5e-5),
         )?;
+        read.push(reading);
         rows.push(Row {
             label: format!("K = {kk}"),
             n: 65_536,
@@ -441,12 +520,13 @@ fn steady_table(
         notes: steady_notes(&format!("dt = 8/K. {}", conf_ratios(&rows))),
         rows,
         skipped,
+        findings: vec![readings(&read)],
     })
 }
 
 fn table5(o: &Options, seed: u64) -> Result<Table, Error> {
     // RW Table 5 prints four decimals: half a unit of the last is 5e-5.
-    let (cells, secs, _) = steady_row(o, "rw-steady", None, seed, (2.6684, 0.0040, 5e-5))?;
+    let (cells, secs, _, reading) = steady_row(o, "rw-steady", None, seed, (2.6684, 0.0040, 5e-5))?;
     Ok(Table {
         name: "rw-table5",
         title: TABLE5.title,
@@ -463,6 +543,7 @@ fn table5(o: &Options, seed: u64) -> Result<Table, Error> {
             cells: cells.into(),
         }],
         skipped: vec![],
+        findings: vec![readings(&[reading])],
     })
 }
 
@@ -473,8 +554,9 @@ fn table6(o: &Options, seed: u64) -> Result<Table, Error> {
         ("no-split", None, 99.981, 0.1877),
     ];
     let mut rows = Vec::new();
+    let mut read = Vec::new();
     for (k, &(label, scheme, t_inf, conf)) in paper.iter().enumerate() {
-        let (cells, secs, _) = steady_row(
+        let (cells, secs, _, reading) = steady_row(
             o,
             "rw-steady-30",
             scheme,
@@ -482,6 +564,7 @@ fn table6(o: &Options, seed: u64) -> Result<Table, Error> {
             // RW Table 6 prints three decimals: half a unit of the last is 5e-4.
             (t_inf, conf, 5e-4),
         )?;
+        read.push(reading);
         rows.push(Row {
             label: label.into(),
             n: 65_536,
@@ -499,5 +582,6 @@ fn table6(o: &Options, seed: u64) -> Result<Table, Error> {
         )),
         rows,
         skipped: vec![],
+        findings: vec![readings(&read)],
     })
 }
