@@ -202,6 +202,74 @@ impl HostMediumMaxwell {
         let (_, _, c, d) = self.coefficients();
         d / c
     }
+
+    /// The exact mean over ensembles of the bulk temperature `T_bulk,n = Q / (d n)`,
+    /// `Q = sum |v_i - V|^2`, of an `n`-grain system started from `n` independent draws of
+    /// `f_0` (mean `u_0`, temperature `T_0`): BRS (15) at finite `n`. At `t = 0` it is
+    /// `(1 - 1/n) T_0`; as `n -> infinity` it tends to [`Self::temperature`].
+    ///
+    /// Derivation (Maxwell kernels: every collision rate is independent of the velocities, so
+    /// second moments close). With `w_i = v_i - u^B`, `R = sum |w_i|^2`, `W = sum w_i`,
+    /// `Q = R - |W|^2 / n`, and `x = s t`:
+    /// - a grain's background collisions (BRS (2)-(4)) move its mean `E w_i` at rate
+    ///   `4 pi alpha` towards 0 (BRS (14)) and its `E |w_i|^2` at rate `b = 8 pi alpha
+    ///   (1 - alpha)` towards `d T^B` (the single-grain form of BRS (15)-(17): the flow term
+    ///   `A` is the part of `|w|^2` carried by the mean); they act on each grain alone, so a
+    ///   product `E w_i . w_j` (`i != j`) decays at `2 x 4 pi alpha`. Summed:
+    ///   `dE R/dx = -b (E R - n d T^B)` and
+    ///   `dE|W|^2/dx = -b (E R - n d T^B) - 8 pi alpha (E|W|^2 - E R)`;
+    /// - grain-grain collisions keep `W` and, per unit time, take `k E Q` from `E R`,
+    ///   `k = pi C_2 (1 - e^2) = s pi Kn (1 - e^2)` (as for the heated gas,
+    ///   [`MaxwellTemperature::finite_n_bulk_mean`]).
+    ///
+    /// So `X = E R`, `Y = E |W|^2` obey the linear system
+    /// `dX/dt = -(s b + k) X + (k / n) Y + s b n d T^B`,
+    /// `dY/dt = 8 pi alpha^2 s X - 8 pi alpha s Y + s b n d T^B`,
+    /// from `X_0 = n (d T_0 + |u_0 - u^B|^2)`, `Y_0 = n d T_0 + n^2 |u_0 - u^B|^2`, solved here
+    /// in closed form (two real eigenvalues: the off-diagonal terms are positive), and
+    /// `E T_bulk,n = (X - Y / n) / (d n)`. Letting `n -> infinity` with `Y / n^2 -> |u - u^B|^2`
+    /// gives BRS (15) back, `A`, `B`, `C`, `D` of BRS (17) included.
+    pub fn finite_n_bulk_mean(&self, n: usize, t: f64) -> f64 {
+        let pi = std::f64::consts::PI;
+        let (a, s, d, nf) = (self.alpha, self.s, self.d, n as f64);
+        let b = 8.0 * pi * a * (1.0 - a);
+        let k = s * pi * self.kn * (1.0 - self.e * self.e);
+        let flow: f64 = (0..3).map(|c| (self.u0[c] - self.ub[c]).powi(2)).sum();
+        // d/dt (X, Y) = M (X, Y) + f.
+        let m = [
+            [-(s * b + k), k / nf],
+            [8.0 * pi * a * a * s, -8.0 * pi * a * s],
+        ];
+        let f = s * b * nf * d * self.tb;
+        let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        // The fixed point M u* = -(f, f).
+        let star = [
+            (-f * m[1][1] + f * m[0][1]) / det,
+            (-f * m[0][0] + f * m[1][0]) / det,
+        ];
+        let start = [nf * (d * self.t0 + flow), nf * d * self.t0 + nf * nf * flow];
+        let dev = [start[0] - star[0], start[1] - star[1]];
+        // exp(M t) by its eigenvalues l1 > l2: (e^{l1 t} (M - l2) - e^{l2 t} (M - l1)) / (l1 - l2).
+        let half_trace = 0.5 * (m[0][0] + m[1][1]);
+        let root = (half_trace * half_trace - det).max(0.0).sqrt();
+        let (l1, l2) = (half_trace + root, half_trace - root);
+        let (e1, e2) = ((l1 * t).exp(), (l2 * t).exp());
+        let apply = |row: usize| -> f64 {
+            let mut out = 0.0;
+            for (col, dv) in dev.iter().enumerate() {
+                let id = if row == col { 1.0 } else { 0.0 };
+                let entry = if root > 1e-12 * half_trace.abs() {
+                    (e1 * (m[row][col] - l2 * id) - e2 * (m[row][col] - l1 * id)) / (l1 - l2)
+                } else {
+                    e1 * (id + (m[row][col] - l1 * id) * t)
+                };
+                out += entry * dv;
+            }
+            out
+        };
+        let (x, y) = (star[0] + apply(0), star[1] + apply(1));
+        mutated(Reference::HostMediumFiniteN, (x - y / nf) / (d * nf))
+    }
 }
 
 /// The Sonine estimates of the fourth cumulant `a2(alpha)` of MS, for `d = 3`.
@@ -339,5 +407,50 @@ pub mod tail {
     pub fn normal_bin(u: f64, t: f64, a: f64, b: f64) -> f64 {
         let s = (2.0 * t).sqrt();
         0.5 * (libm::erf((b - u) / s) - libm::erf((a - u) / s))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// BRS Example 1's parameters (u_0 = (1, 0, 0) about a resting host medium).
+    fn example1() -> HostMediumMaxwell {
+        HostMediumMaxwell {
+            u0: [1.0, 0.0, 0.0],
+            ub: [0.0; 3],
+            t0: 1.0,
+            tb: 0.5,
+            alpha: 0.5,
+            s: 0.1,
+            kn: 2.0,
+            e: 0.5,
+            d: 3.0,
+        }
+    }
+
+    /// The finite-n mean starts at (1 - 1/n) T_0 and tends to BRS (15) as n grows: at n = 1e9
+    /// within 1e-8 relative at every time (the O(1/n) terms are 1e-9).
+    #[test]
+    fn finite_n_mean_starts_low_and_tends_to_brs_15() {
+        let h = example1();
+        for n in [4usize, 16, 1024] {
+            let t0 = h.finite_n_bulk_mean(n, 0.0);
+            assert!((t0 - (1.0 - 1.0 / n as f64) * h.t0).abs() < 1e-12, "{t0}");
+        }
+        for i in 0..=40 {
+            let t = 0.5 * i as f64;
+            let (big, limit) = (h.finite_n_bulk_mean(1_000_000_000, t), h.temperature(t));
+            assert!(
+                (big / limit - 1.0).abs() < 1e-8,
+                "t = {t}: {big} against {limit}"
+            );
+        }
+        // The equilibrium at finite n lies below BRS (18)'s, by O(1/n).
+        let eq4 = h.finite_n_bulk_mean(4, 1e4);
+        assert!(
+            eq4 < h.equilibrium() && eq4 > 0.5 * h.equilibrium(),
+            "{eq4}"
+        );
     }
 }

@@ -23,11 +23,13 @@ pub enum Reference {
     MaxwellianMoments,
     /// BRS (14)-(17): the temperature of a Maxwell gas in a Maxwellian host medium.
     HostMediumTemperature,
+    /// Its exact finite-n mean of `T_bulk` (the closed second-moment system).
+    HostMediumFiniteN,
 }
 
 impl Reference {
     /// Every reference, in the order above.
-    pub const ALL: [Reference; 7] = [
+    pub const ALL: [Reference; 8] = [
         Reference::MaxwellTemperature,
         Reference::FiniteNBulk,
         Reference::BulkToRaw,
@@ -35,6 +37,7 @@ impl Reference {
         Reference::SupNormRange,
         Reference::MaxwellianMoments,
         Reference::HostMediumTemperature,
+        Reference::HostMediumFiniteN,
     ];
 }
 

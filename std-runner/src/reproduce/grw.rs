@@ -88,14 +88,13 @@ fn table(
             sd: rel.iter().map(|r| r.1).collect(),
         };
         let bmax = law.bias.iter().map(|b| b.abs()).fold(0.0, f64::max);
-        let noise = PaperNoise {
-            se: sd / (PAPER_ENSEMBLES as f64).sqrt(),
-            dof: m - 1,
-            source: format!(
-                "our spread of one ensemble over GRW's {PAPER_ENSEMBLES} ensembles; GRW's tables \
-                 give no interval"
-            ),
-        };
+        let noise = PaperNoise::ours_rescaled(
+            sd,
+            PAPER_ENSEMBLES,
+            m,
+            "GRW",
+            "GRW's tables give no interval",
+        );
         let e = max_error_exact(
             "E_max",
             e_paper,

@@ -19,6 +19,21 @@ pub struct PaperNoise {
     pub source: String,
 }
 
+impl PaperNoise {
+    /// The paper's noise as our spread of one ensemble `sd` (the largest over the times)
+    /// over the paper's `ensembles`, estimated from our `ours` ensembles; `paper` names it and
+    /// `why` says why it is used (the paper states no interval, or one that fits no reading).
+    pub fn ours_rescaled(sd: f64, ensembles: u64, ours: u64, paper: &str, why: &str) -> Self {
+        PaperNoise {
+            se: sd / (ensembles as f64).sqrt(),
+            dof: ours.saturating_sub(1),
+            source: format!(
+                "our spread of one ensemble over {paper}'s {ensembles} ensembles; {why}"
+            ),
+        }
+    }
+}
+
 /// Our largest error: its value, our largest standard error over the times, our ensembles.
 #[derive(Clone, Copy, Debug)]
 pub struct OurLargest {
@@ -83,10 +98,15 @@ impl MaxLaw {
     /// conservatively: 0 between the means of the comonotone and the independent law, else
     /// the distance to the nearer of them in units of that law's spread. Its square is
     /// stochastically no larger than a true score's, so a chi-squared test of such scores
-    /// errs towards finding nothing.
+    /// errs towards finding nothing. No score (NaN) when the two means lie more than a spread
+    /// apart: the bracket is then too wide for a score to say anything (a noise-dominated
+    /// maximum over many times), and a run of zeros would only dilute the table-wide test.
     fn z(&self, x: f64, s: f64, round: f64) -> f64 {
         let (co_mean, co_sd) = self.moments(s, true);
         let (in_mean, in_sd) = self.moments(s, false);
+        if (in_mean - co_mean).abs() > co_sd.max(in_sd) {
+            return f64::NAN;
+        }
         let r2 = round * round / 3.0;
         if x > in_mean.max(co_mean) {
             let sd = if in_mean >= co_mean { in_sd } else { co_sd };
@@ -331,5 +351,11 @@ mod tests {
         let (ind, _) = two.moments(0.01, false);
         assert!(ind > co + 0.004, "{ind} against {co}");
         assert_eq!(two.z(0.5 * (co + ind), 0.01, 0.0), 0.0);
+        // Noise over many times of equal bias: the bracket is wider than a spread, no score.
+        let many = MaxLaw {
+            bias: vec![0.1; 500],
+            sd: vec![1.0; 500],
+        };
+        assert!(many.z(0.1, 0.01, 0.0).is_nan());
     }
 }

@@ -232,14 +232,13 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
                     se: sd_max / (m as f64).sqrt(),
                     ensembles: m,
                 },
-                &PaperNoise {
-                    se: sd_max / (PAPER_ENSEMBLES as f64).sqrt(),
-                    dof: m - 1,
-                    source: format!(
-                        "our spread of one ensemble over RW's {PAPER_ENSEMBLES} ensembles; RW \
-                         give no interval in Table 2"
-                    ),
-                },
+                &PaperNoise::ours_rescaled(
+                    sd_max,
+                    PAPER_ENSEMBLES,
+                    m,
+                    "RW",
+                    "RW give no interval in Table 2",
+                ),
             ));
         }
         rows.push(Row {
