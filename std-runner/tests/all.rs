@@ -9,6 +9,7 @@ mod data_safety;
 mod distribution;
 mod histogram;
 mod hydro;
+mod job;
 mod mutation;
 mod output_set;
 mod reproduce_verdicts;
