@@ -98,15 +98,10 @@ fn table(
         let our_conf = width(sd_abs, n_rep as f64);
         // The exact relative bias of the ensemble mean at each time (the closed moment
         // system of reference/exact.rs) and our spread of one ensemble.
-        let law = MaxLaw {
-            bias: s
-                .times()
-                .iter()
-                .map(|&t| (h.finite_n_bulk_mean(n, t) - h.temperature(t)) / h.temperature(t))
-                .collect(),
-            sd: rel.iter().map(|r| r.1).collect(),
-        };
-        let bmax = law.bias.iter().map(|b| b.abs()).fold(0.0, f64::max);
+        let law = MaxLaw::over(s.times(), &rel, |t| {
+            (h.finite_n_bulk_mean(n, t) - h.temperature(t)) / h.temperature(t)
+        });
+        let bmax = law.largest_bias();
         rows.push(Row {
             label: format!("n = {n}, N_rep = {n_rep}"),
             n,

@@ -79,15 +79,10 @@ fn table(
         let (st, secs) = go(&s, o)?;
         let rel = relative(&st, name::T, |t| mt.at(t));
         let (ours, sd) = largest(&rel);
-        let law = MaxLaw {
-            bias: s
-                .times()
-                .iter()
-                .map(|&t| (mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t))
-                .collect(),
-            sd: rel.iter().map(|r| r.1).collect(),
-        };
-        let bmax = law.bias.iter().map(|b| b.abs()).fold(0.0, f64::max);
+        let law = MaxLaw::over(s.times(), &rel, |t| {
+            (mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t)
+        });
+        let bmax = law.largest_bias();
         let noise = PaperNoise::ours_rescaled(
             sd,
             PAPER_ENSEMBLES,

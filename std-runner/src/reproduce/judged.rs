@@ -119,6 +119,21 @@ impl MaxLaw {
         }
     }
 
+    /// The law over observation times `times` of a relative-error profile `rel` (each time's
+    /// mean error and relative spread of one ensemble, as `reproduce::relative` gives them)
+    /// whose exact relative bias at time `t` is `bias(t)`.
+    pub fn over(times: &[f64], rel: &[(f64, f64)], bias: impl Fn(f64) -> f64) -> Self {
+        MaxLaw {
+            bias: times.iter().map(|&t| bias(t)).collect(),
+            sd: rel.iter().map(|r| r.1).collect(),
+        }
+    }
+
+    /// The largest `|b_k|`: the exact expectation of the largest error without noise.
+    pub fn largest_bias(&self) -> f64 {
+        self.bias.iter().map(|b| b.abs()).fold(0.0, f64::max)
+    }
+
     /// The largest `sd_k`.
     fn sd_max(&self) -> f64 {
         self.sd.iter().copied().fold(0.0, f64::max)

@@ -97,10 +97,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         let t_end = *s.times().last().expect("observation times");
         let bias = |t: f64| (mt.finite_n_raw_mean(n, t) - mt.at(t)) / mt.at(t);
         let (ours_max, sd_max) = largest(&rel);
-        let law = MaxLaw {
-            bias: s.times().iter().map(|&t| bias(t)).collect(),
-            sd: rel.iter().map(|r| r.1).collect(),
-        };
+        let law = MaxLaw::over(s.times(), &rel, bias);
         let end_law = MaxLaw {
             bias: vec![bias(t_end)],
             sd: vec![end_sd],
@@ -144,7 +141,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
                 max_error_exact(
                     "E_max",
                     e_max,
-                    largest_bias(&law.bias),
+                    law.largest_bias(),
                     &law,
                     OurLargest {
                         value: ours_max,
@@ -225,7 +222,7 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
             cells.push(max_error_exact(
                 label,
                 p,
-                largest_bias(&law.bias),
+                law.largest_bias(),
                 &law,
                 OurLargest {
                     value: ours,
@@ -282,11 +279,6 @@ fn exact_split(
             (e - truth(t)) / truth(t)
         })
         .collect()
-}
-
-/// The largest `|b|` of a bias profile.
-fn largest_bias(b: &[f64]) -> f64 {
-    b.iter().map(|x| x.abs()).fold(0.0, f64::max)
 }
 
 /// One steady-state figure of RW under the two readings of what RW average: the exact mean
