@@ -7,6 +7,8 @@
 //! the test behind each "runs". A refused one shows the core's own refusal (the parameter and
 //! its rule, one place for each rule). The checked-in table must equal the generated one;
 //! `GDSMC_UPDATE_DOCS=1 cargo test --release -p gdsmc-validation --test all combinations` rewrites it.
+//! With `GDSMC_COMBO_DUMP=FILE` it also appends every run's observables and counts to `FILE`:
+//! the bits of all 912 combinations before and after a change of the engine's composition.
 
 use gdsmc_core::engine::EventLoop;
 use gdsmc_core::particles::{Particle, Particles, Spin};
@@ -17,6 +19,7 @@ use gdsmc_core::physics::{
 use gdsmc_core::rng::stream;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
+use std::io::Write as _;
 use std::path::PathBuf;
 
 const N: usize = 16;
@@ -148,6 +151,16 @@ fn outcome(ph: &Physics, what: &str) -> Result<(), String> {
         obs.non_finite().is_none() && obs.t_bulk > 0.0,
         "{what}: {obs:?}"
     );
+    if let Some(path) = std::env::var_os("GDSMC_COMBO_DUMP") {
+        // Every combination's observables and counts, for a refactor's before/after
+        // comparison of the bits (the file is appended to).
+        let mut f = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)
+            .expect("the dump file opens");
+        writeln!(f, "{what}: {obs:?} {:?}", e.counts()).expect("the dump is written");
+    }
     Ok(())
 }
 

@@ -10,9 +10,8 @@
 )]
 
 use super::engine::{
-    ByDiskDrive, ByDrive, ByKernel, ByLaw, ByMixtureDrive, ByMixtureLaw, ByMixtureScheme,
-    ByRoughDrive, ByRoughLaw, ByRoughMixtureDrive, ByScheme, BySplit, Engine, Family, Mixture,
-    PairModel, Rough, RoughMixture, RoughPairs, Smooth, SmoothDisks,
+    ByDrive, ByKernel, ByLaw, ByMixtureScheme, ByScheme, BySplit, Engine, Family, HostIn, Mixture,
+    PairModel, Rough, RoughPairs, Smooth, SmoothPairs,
 };
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
@@ -34,6 +33,7 @@ use crate::moments::Observables;
 use crate::particles::{Particle, Particles, Spin};
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
 use crate::rng::Xoshiro256PlusPlus;
+use crate::rough::{RoughMap, RoughNoise};
 use crate::vec3::Vec3;
 use core::marker::PhantomData;
 
@@ -142,76 +142,56 @@ impl Model {
             return match (&mx.rotation, self.dimension) {
                 (None, DimensionChoice::Three) => {
                     built!(feature = "mixtures", self.mixture_features(), {
-                        wrap(
-                            by_kernel(k, &MixtureBuild::<Spheres>(mx, self, PhantomData), p, t0),
-                            Engine::Mixture,
-                        )
+                        let b = MixtureBuild::<Spheres, SmoothPairs>::smooth(mx, self);
+                        wrap(by_kernel(k, &b, p, t0), Engine::Mixture)
                     })
                 }
                 (None, DimensionChoice::Two) => built!(
                     all(feature = "mixtures", feature = "disks"),
                     self.mixture_features(),
                     {
-                        wrap(
-                            by_kernel(k, &MixtureBuild::<Disks>(mx, self, PhantomData), p, t0),
-                            Engine::DiskMixture,
-                        )
+                        let b = MixtureBuild::<Disks, SmoothPairs>::smooth(mx, self);
+                        wrap(by_kernel(k, &b, p, t0), Engine::DiskMixture)
                     }
                 ),
                 (Some(r), DimensionChoice::Three) => built!(
                     all(feature = "mixtures", feature = "rough"),
                     self.mixture_features(),
                     {
-                        wrap(
-                            by_kernel(
-                                k,
-                                &RoughMixtureBuild::<Spheres>(mx, r, self, PhantomData),
-                                p,
-                                t0,
-                            ),
-                            Engine::RoughMixture,
-                        )
+                        let b = MixtureBuild::<Spheres, RoughPairs>::rough(mx, r, self);
+                        wrap(by_kernel(k, &b, p, t0), Engine::RoughMixture)
                     }
                 ),
                 (Some(r), DimensionChoice::Two) => built!(
                     all(feature = "mixtures", feature = "rough", feature = "disks"),
                     self.mixture_features(),
                     {
-                        wrap(
-                            by_kernel(
-                                k,
-                                &RoughMixtureBuild::<Disks>(mx, r, self, PhantomData),
-                                p,
-                                t0,
-                            ),
-                            Engine::RoughDiskMixture,
-                        )
+                        let b = MixtureBuild::<Disks, RoughPairs>::rough(mx, r, self);
+                        wrap(by_kernel(k, &b, p, t0), Engine::RoughDiskMixture)
                     }
                 ),
             };
         }
         match (&self.rough, self.dimension) {
             (Some(r), DimensionChoice::Three) => built!(feature = "rough", "rough", {
-                wrap(
-                    by_kernel(k, &RoughBuild::<Spheres>(r, self, PhantomData), p, t0),
-                    Engine::Rough,
-                )
+                let b = RoughBuild::<Spheres>(r, self, PhantomData);
+                wrap(by_kernel(k, &b, p, t0), Engine::Rough)
             }),
             (Some(r), DimensionChoice::Two) => built!(
                 all(feature = "rough", feature = "disks"),
                 "rough` and `disks",
                 {
-                    wrap(
-                        by_kernel(k, &RoughBuild::<Disks>(r, self, PhantomData), p, t0),
-                        Engine::RoughDisks,
-                    )
+                    let b = RoughBuild::<Disks>(r, self, PhantomData);
+                    wrap(by_kernel(k, &b, p, t0), Engine::RoughDisks)
                 }
             ),
             (None, DimensionChoice::Two) => built!(feature = "disks", "disks", {
-                wrap(by_kernel(k, &DiskBuild(self), p, t0), Engine::Disks)
+                let b = SmoothBuild::<Disks>(self, PhantomData);
+                wrap(by_kernel(k, &b, p, t0), Engine::Disks)
             }),
             (None, DimensionChoice::Three) => {
-                wrap(by_kernel(k, &SmoothBuild(self), p, t0), Engine::Smooth)
+                let b = SmoothBuild::<Spheres>(self, PhantomData);
+                wrap(by_kernel(k, &b, p, t0), Engine::Smooth)
             }
         }
     }
@@ -235,104 +215,6 @@ impl Model {
             (false, DimensionChoice::Two) => "mixtures` and `disks",
             (true, DimensionChoice::Three) => "mixtures` and `rough",
             (true, DimensionChoice::Two) => "mixtures`, `rough` and `disks",
-        }
-    }
-
-    fn disk_drive<K: Kernel>(
-        &self,
-        k: K,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
-        match self.drive {
-            DriveModel::WhiteNoise(w) => built!(feature = "white-noise", "white-noise", {
-                wrap(
-                    self.by_law::<K, _, Disks>(k, Disks::noise(w), p, t0),
-                    ByDiskDrive::WhiteNoise,
-                )
-            }),
-            DriveModel::Gaussian(g) => built!(
-                feature = "gaussian-thermostat",
-                "gaussian-thermostat",
-                wrap(
-                    self.by_law::<K, _, Disks>(k, g, p, t0),
-                    ByDiskDrive::Gaussian
-                )
-            ),
-            DriveModel::ConstantForce(f) => built!(
-                feature = "constant-force",
-                "constant-force",
-                wrap(
-                    self.by_law::<K, _, Disks>(k, f, p, t0),
-                    ByDiskDrive::ConstantForce
-                )
-            ),
-            DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
-                wrap(
-                    self.by_law::<K, _, Disks>(k, h.in_dim::<Disks>(), p, t0),
-                    ByDiskDrive::HostMaxwell,
-                )
-            }),
-            DriveModel::HostHardSpheres(h) => built!(feature = "host-medium", "host-medium", {
-                wrap(
-                    self.by_law::<K, _, Disks>(k, h.in_dim::<Disks>(), p, t0),
-                    ByDiskDrive::HostHardSpheres,
-                )
-            }),
-            _ => built!(feature = "cooling", "cooling", {
-                wrap(
-                    self.by_law::<K, _, Disks>(k, NoDrive, p, t0),
-                    ByDiskDrive::None,
-                )
-            }),
-        }
-    }
-
-    fn by_drive<K: Kernel>(
-        &self,
-        k: K,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByDrive<K>, Observables), EngineError> {
-        match self.drive {
-            DriveModel::None => built!(feature = "cooling", "cooling", {
-                wrap(self.by_law(k, NoDrive, p, t0), ByDrive::None)
-            }),
-            DriveModel::WhiteNoise(d) => built!(feature = "white-noise", "white-noise", {
-                wrap(self.by_law(k, d, p, t0), ByDrive::WhiteNoise)
-            }),
-            DriveModel::Gaussian(d) => built!(
-                feature = "gaussian-thermostat",
-                "gaussian-thermostat",
-                wrap(self.by_law(k, d, p, t0), ByDrive::Gaussian)
-            ),
-            DriveModel::ConstantForce(d) => built!(
-                feature = "constant-force",
-                "constant-force",
-                wrap(self.by_law(k, d, p, t0), ByDrive::ConstantForce)
-            ),
-            DriveModel::HostMaxwell(d) => built!(feature = "host-medium", "host-medium", {
-                wrap(self.by_law(k, d, p, t0), ByDrive::HostMaxwell)
-            }),
-            DriveModel::HostHardSpheres(d) => built!(feature = "host-medium", "host-medium", {
-                wrap(self.by_law(k, d, p, t0), ByDrive::HostHardSpheres)
-            }),
-        }
-    }
-
-    /// Smooth particles of one species in dimension `G`, by law.
-    fn by_law<K: Kernel, D: Drive, G: Geometry>(
-        &self,
-        k: K,
-        d: D,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByLaw<K, D, G>, Observables), EngineError> {
-        match self.law {
-            LawModel::Constant(a) => wrap(self.by_scheme(k, d, a, p, t0), ByLaw::Constant),
-            LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
-                wrap(self.by_scheme(k, d, a, p, t0), ByLaw::ImpactSpeed)
-            }),
         }
     }
 
@@ -416,60 +298,6 @@ fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
     }
 }
 
-/// The mixture loop of kernel `k` (scaled per pair) in dimension `G` and the drive (none,
-/// white noise per species, or the Gaussian thermostat). Never inlined: its large locals (the
-/// pair table, the per-species observables) would otherwise sit in [`Model::start`]'s frame for
-/// every physics (the firmware's peak stack went from 11.6 to 29.0 KiB when they did).
-#[inline(never)]
-fn mixture<K: Kernel, G: WhiteNoiseIn>(
-    mx: &MixtureModel,
-    k: K,
-    m: &Model,
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
-    match m.drive {
-        DriveModel::WhiteNoise(_) => built!(feature = "white-noise", "white-noise", {
-            wrap(
-                mixture_law::<K, _, G>(mx, k, m, &mx.noises.map(G::noise), p, t0),
-                ByMixtureDrive::WhiteNoise,
-            )
-        }),
-        DriveModel::Gaussian(g) => built!(
-            feature = "gaussian-thermostat",
-            "gaussian-thermostat",
-            wrap(
-                mixture_law::<K, _, G>(mx, k, m, &[g; MAX_SPECIES], p, t0),
-                ByMixtureDrive::Gaussian,
-            )
-        ),
-        DriveModel::ConstantForce(f) => built!(feature = "constant-force", "constant-force", {
-            wrap(
-                mixture_law::<K, _, G>(mx, k, m, &[f; MAX_SPECIES], p, t0),
-                ByMixtureDrive::ConstantForce,
-            )
-        }),
-        DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
-            wrap(
-                mixture_law::<K, _, G>(mx, k, m, &species_hosts(mx, h)?, p, t0),
-                ByMixtureDrive::HostMaxwell,
-            )
-        }),
-        DriveModel::HostHardSpheres(h) => built!(feature = "host-medium", "host-medium", {
-            wrap(
-                mixture_law::<K, _, G>(mx, k, m, &species_hosts(mx, h)?, p, t0),
-                ByMixtureDrive::HostHardSpheres,
-            )
-        }),
-        _ => built!(feature = "cooling", "cooling", {
-            wrap(
-                mixture_law::<K, _, G>(mx, k, m, &[NoDrive; MAX_SPECIES], p, t0),
-                ByMixtureDrive::None,
-            )
-        }),
-    }
-}
-
 /// The host medium `h` in dimension `G` as each species of `mx` meets it, with its own mass
 /// ([`HostMediumParams::for_grain`](crate::drive::HostMediumParams::for_grain)).
 fn species_hosts<B: BackgroundKernel, G: Geometry>(
@@ -486,207 +314,6 @@ fn species_hosts<B: BackgroundKernel, G: Geometry>(
             .ok_or(EngineError::Invariant("a species' mass is positive"))?;
     }
     Ok(hosts)
-}
-
-/// A smooth mixture's law level: each pair type's constant, or BRS's impact-speed law for
-/// every pair.
-fn mixture_law<K: Kernel, D: Drive, G: Geometry>(
-    mx: &MixtureModel,
-    k: K,
-    m: &Model,
-    drives: &[D; MAX_SPECIES],
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Begun<ByMixtureLaw<K, D, G>> {
-    by_pair_law::<K, D, G, _>(mx, k, m, &mx.laws, |_, a| a, drives, p, t0)
-}
-
-/// The law level of every mixture (particle model `P`): each pair type's constant law in
-/// `laws`, or BRS's impact-speed law for every pair, `with_law` putting it into a pair's law
-/// (whose constant, 1, is then unused).
-#[allow(clippy::too_many_arguments)]
-fn by_pair_law<K: Kernel, D: Drive, G: Geometry, P: PairModel>(
-    mx: &MixtureModel,
-    k: K,
-    m: &Model,
-    laws: &[P::Of<Constant>; MAX_PAIRS],
-    with_law: impl Fn(&P::Of<Constant>, ImpactSpeed) -> P::Of<ImpactSpeed>,
-    drives: &[D; MAX_SPECIES],
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Begun<ByMixtureLaw<K, D, G, P>> {
-    match m.law {
-        LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
-            let physics = pair_table(mx, k, &laws.map(|l| with_law(&l, a)))?;
-            wrap(
-                start_mixture::<K, _, _, G>(mx, m.scheme, &physics, drives, p, t0),
-                ByMixtureLaw::ImpactSpeed,
-            )
-        }),
-        LawModel::Constant(_) => {
-            let physics = pair_table(mx, k, laws)?;
-            wrap(
-                start_mixture::<K, _, _, G>(mx, m.scheme, &physics, drives, p, t0),
-                ByMixtureLaw::Constant,
-            )
-        }
-    }
-}
-
-/// A rough mixture in dimension `G`: no drive, white noise on translation and rotation per
-/// species, or the Gaussian thermostat on translation.
-#[inline(never)]
-fn rough_mixture<K: Kernel, G: Geometry>(
-    mx: &MixtureModel,
-    rot: &MixtureRotation,
-    m: &Model,
-    k: K,
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
-    let laws = &rot.laws;
-    if let DriveModel::Gaussian(g) = m.drive {
-        // Validated: no rotational noise beside the thermostat.
-        return built!(
-            feature = "gaussian-thermostat",
-            "gaussian-thermostat",
-            wrap(
-                rough_pairs::<K, _, G>(mx, laws, m, k, &[g; MAX_SPECIES], p, t0),
-                ByRoughMixtureDrive::Gaussian
-            )
-        );
-    }
-    // Validated: the constant force and a host medium have no rotational noise beside them.
-    if let DriveModel::ConstantForce(f) = m.drive {
-        return built!(feature = "constant-force", "constant-force", {
-            wrap(
-                rough_pairs::<K, _, G>(mx, laws, m, k, &[f; MAX_SPECIES], p, t0),
-                ByRoughMixtureDrive::ConstantForce,
-            )
-        });
-    }
-    if let DriveModel::HostMaxwell(h) = m.drive {
-        return built!(feature = "host-medium", "host-medium", {
-            wrap(
-                rough_pairs::<K, _, G>(mx, laws, m, k, &species_hosts(mx, h)?, p, t0),
-                ByRoughMixtureDrive::HostMaxwell,
-            )
-        });
-    }
-    if let DriveModel::HostHardSpheres(h) = m.drive {
-        return built!(feature = "host-medium", "host-medium", {
-            wrap(
-                rough_pairs::<K, _, G>(mx, laws, m, k, &species_hosts(mx, h)?, p, t0),
-                ByRoughMixtureDrive::HostHardSpheres,
-            )
-        });
-    }
-    match &rot.noises {
-        Some(noises) => built!(feature = "white-noise", "white-noise", {
-            let noises = noises.map(|w| w.in_dim::<G>());
-            wrap(
-                rough_pairs::<K, _, G>(mx, laws, m, k, &noises, p, t0),
-                ByRoughMixtureDrive::Noise,
-            )
-        }),
-        None => built!(feature = "cooling", "cooling", {
-            wrap(
-                rough_pairs::<K, _, G>(mx, laws, m, k, &[NoDrive; MAX_SPECIES], p, t0),
-                ByRoughMixtureDrive::None,
-            )
-        }),
-    }
-}
-
-/// A rough mixture's law level: [`by_pair_law`] over the pairs' rough laws `laws`.
-fn rough_pairs<K: Kernel, D: Drive, G: Geometry>(
-    mx: &MixtureModel,
-    laws: &[crate::rough::RoughPairLaw; MAX_PAIRS],
-    m: &Model,
-    k: K,
-    drives: &[D; MAX_SPECIES],
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Begun<ByMixtureLaw<K, D, G, RoughPairs>> {
-    by_pair_law::<K, D, G, RoughPairs>(mx, k, m, laws, |l, a| l.with_law(a), drives, p, t0)
-}
-
-/// The rough loop of kernel `k` in dimension `G`, by drive.
-#[inline(never)]
-fn rough<K: Kernel, G: Geometry>(
-    r: &RoughModel,
-    m: &Model,
-    k: K,
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
-    // Validated: white noise (on translation or rotation) is `r.noise`; the other drives
-    // act on translation alone.
-    match (r.noise, m.drive) {
-        (Some(d), _) => built!(feature = "white-noise", "white-noise", {
-            wrap(
-                rough_law::<K, _, G>(m, k, d.in_dim::<G>(), r, p, t0),
-                ByRoughDrive::Noise,
-            )
-        }),
-        (None, DriveModel::Gaussian(g)) => built!(
-            feature = "gaussian-thermostat",
-            "gaussian-thermostat",
-            wrap(
-                rough_law::<K, _, G>(m, k, g, r, p, t0),
-                ByRoughDrive::Gaussian
-            )
-        ),
-        (None, DriveModel::ConstantForce(f)) => built!(
-            feature = "constant-force",
-            "constant-force",
-            wrap(
-                rough_law::<K, _, G>(m, k, f, r, p, t0),
-                ByRoughDrive::ConstantForce
-            )
-        ),
-        (None, DriveModel::HostMaxwell(h)) => built!(feature = "host-medium", "host-medium", {
-            wrap(
-                rough_law::<K, _, G>(m, k, h.in_dim::<G>(), r, p, t0),
-                ByRoughDrive::HostMaxwell,
-            )
-        }),
-        (None, DriveModel::HostHardSpheres(h)) => {
-            built!(feature = "host-medium", "host-medium", {
-                wrap(
-                    rough_law::<K, _, G>(m, k, h.in_dim::<G>(), r, p, t0),
-                    ByRoughDrive::HostHardSpheres,
-                )
-            })
-        }
-        _ => built!(feature = "cooling", "cooling", {
-            wrap(
-                rough_law::<K, _, G>(m, k, NoDrive, r, p, t0),
-                ByRoughDrive::None,
-            )
-        }),
-    }
-}
-
-/// A rough gas's law level: the rough map of a constant `alpha`, or of BRS's impact-speed law
-/// (the model's `law`; the map's own constant, 1, is then unused).
-fn rough_law<K: Kernel, D: Drive, G: Geometry>(
-    m: &Model,
-    k: K,
-    d: D,
-    r: &RoughModel,
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Begun<ByRoughLaw<K, D, G>> {
-    match m.law {
-        LawModel::Constant(_) => wrap(by_split(m.scheme, k, d, r.map, p, t0), ByRoughLaw::Constant),
-        LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
-            wrap(
-                by_split(m.scheme, k, d, r.map.with_law(a), p, t0),
-                ByRoughLaw::ImpactSpeed,
-            )
-        }),
-    }
 }
 
 /// An engine started, with its observables at the start.
@@ -718,17 +345,68 @@ fn by_split<K: Kernel, D: Drive, A: CollisionMap, G: Geometry>(
     }
 }
 
-/// What builds one family's engine for any kernel: the level below [`by_kernel`].
+/// What builds one family's engine: the family's part of each level below the kernel (its
+/// drives as its loops take them, its scheme level); [`by_kernel`], [`by_drive`] and
+/// [`by_law`] are written once over it.
 trait Build {
     /// The family built.
     type F: Family;
-    /// The family's engine for kernel `k`, started at `t0` on `p`.
-    fn build<K: Kernel>(
+    /// What the family's loops take for a drive `D`: `D` itself (one species) or one per
+    /// species (a mixture).
+    type Drives<D: Drive>;
+    /// The validated physics.
+    fn model(&self) -> &Model;
+    /// The drive `d` as the family's loops take it (every species the same).
+    fn each<D: Drive>(&self, d: D) -> Self::Drives<D>;
+    /// The family's white noise, when the physics has it (a rough gas's on translation or
+    /// rotation, a mixture's per species).
+    fn noise(&self) -> Option<Self::Drives<<Self::F as Family>::Noise>>;
+    /// The host medium `h` in the family's dimension, as each species meets it.
+    fn host<B: BackgroundKernel>(
+        &self,
+        h: HostMedium<B>,
+    ) -> Result<Self::Drives<HostIn<B, Self::F>>, EngineError>;
+    /// The family's scheme level for kernel `k`, drives `d` and restitution law `a`, started
+    /// at `t0` on `p`.
+    fn scheme<K: Kernel, D: Drive, A: Law>(
         &self,
         k: K,
+        d: &Self::Drives<D>,
+        a: A,
         p: &mut Particles<'_>,
         t0: Real,
-    ) -> Result<(<Self::F as Family>::Of<K>, Observables), EngineError>;
+    ) -> Begun<<Self::F as Family>::Scheme<K, D, A>>;
+}
+
+/// A restitution law as every family takes it: the law itself (smooth particles), the rough
+/// map of it, or a mixture's pair laws of it.
+trait Law: Restitution {
+    /// The rough map `map` (of the model's constant law) with this law.
+    fn rough(self, map: &RoughMap) -> RoughMap<Self>;
+    /// A mixture's pair laws with this law, from the pair types' constant laws `laws`.
+    fn pairs<P: PairModel>(self, laws: &[P::Of<Constant>; MAX_PAIRS]) -> [P::Of<Self>; MAX_PAIRS];
+}
+
+/// A constant law: the rough map and the pair types' laws as validated (a mixture's constant
+/// is per pair type).
+impl Law for Constant {
+    fn rough(self, map: &RoughMap) -> RoughMap {
+        *map
+    }
+    fn pairs<P: PairModel>(self, laws: &[P::Of<Constant>; MAX_PAIRS]) -> [P::Of<Self>; MAX_PAIRS] {
+        *laws
+    }
+}
+
+/// BRS's impact-speed law, put into the rough map and into every pair (whose constants, 1,
+/// are then unused).
+impl Law for ImpactSpeed {
+    fn rough(self, map: &RoughMap) -> RoughMap<Self> {
+        map.with_law(self)
+    }
+    fn pairs<P: PairModel>(self, laws: &[P::Of<Constant>; MAX_PAIRS]) -> [P::Of<Self>; MAX_PAIRS] {
+        laws.map(|l| P::with_law(&l, self))
+    }
 }
 
 /// The one kernel level of the dispatch, for every family. Out of line: each family's start
@@ -740,92 +418,202 @@ fn by_kernel<B: Build>(
     b: &B,
     p: &mut Particles<'_>,
     t0: Real,
-) -> Result<(ByKernel<B::F>, Observables), EngineError> {
+) -> Begun<ByKernel<B::F>> {
     match kernel {
         KernelModel::Maxwell(k) => built!(feature = "maxwell", "maxwell", {
-            wrap(b.build(k, p, t0), ByKernel::Maxwell)
+            wrap(by_drive(b, k, p, t0), ByKernel::Maxwell)
         }),
         KernelModel::HardSpheres(k) => built!(feature = "hard-spheres", "hard-spheres", {
-            wrap(b.build(k, p, t0), ByKernel::HardSpheres)
+            wrap(by_drive(b, k, p, t0), ByKernel::HardSpheres)
         }),
         KernelModel::Vhs(k) => built!(feature = "vhs", "vhs", {
-            wrap(b.build(k, p, t0), ByKernel::Vhs)
+            wrap(by_drive(b, k, p, t0), ByKernel::Vhs)
         }),
     }
 }
 
-/// Smooth spheres of one species: by drive, law and scheme.
-struct SmoothBuild<'a>(&'a Model);
-impl Build for SmoothBuild<'_> {
-    type F = Smooth;
-    fn build<K: Kernel>(
-        &self,
-        k: K,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByDrive<K>, Observables), EngineError> {
-        self.0.by_drive(k, p, t0)
+/// The one drive level of the dispatch, for every family and kernel. Out of line for the
+/// reason of [`by_kernel`] (a mixture's drives are one per species).
+#[inline(never)]
+fn by_drive<B: Build, K: Kernel>(
+    b: &B,
+    k: K,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Begun<ByDrive<B::F, K>> {
+    // White noise first: a rough gas's noise on rotation alone has no drive on translation.
+    if let Some(n) = b.noise() {
+        return built!(feature = "white-noise", "white-noise", {
+            wrap(by_law(b, k, &n, p, t0), ByDrive::WhiteNoise)
+        });
+    }
+    // Validated: rotational noise takes no drive but white noise beside it.
+    match b.model().drive {
+        DriveModel::None => built!(feature = "cooling", "cooling", {
+            wrap(by_law(b, k, &b.each(NoDrive), p, t0), ByDrive::None)
+        }),
+        DriveModel::Gaussian(g) => built!(
+            feature = "gaussian-thermostat",
+            "gaussian-thermostat",
+            wrap(by_law(b, k, &b.each(g), p, t0), ByDrive::Gaussian)
+        ),
+        DriveModel::ConstantForce(f) => built!(feature = "constant-force", "constant-force", {
+            wrap(by_law(b, k, &b.each(f), p, t0), ByDrive::ConstantForce)
+        }),
+        DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
+            wrap(by_law(b, k, &b.host(h)?, p, t0), ByDrive::HostMaxwell)
+        }),
+        DriveModel::HostHardSpheres(h) => built!(feature = "host-medium", "host-medium", {
+            wrap(by_law(b, k, &b.host(h)?, p, t0), ByDrive::HostHardSpheres)
+        }),
+        DriveModel::WhiteNoise(_) => {
+            Err(EngineError::Invariant("white noise is its family's noise"))
+        }
     }
 }
 
-/// Smooth disks: by drive.
-struct DiskBuild<'a>(&'a Model);
-impl Build for DiskBuild<'_> {
-    type F = SmoothDisks;
-    fn build<K: Kernel>(
-        &self,
-        k: K,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByDiskDrive<K>, Observables), EngineError> {
-        self.0.disk_drive(k, p, t0)
+/// The one restitution-law level of the dispatch, for every family, kernel and drive.
+fn by_law<B: Build, K: Kernel, D: Drive>(
+    b: &B,
+    k: K,
+    d: &B::Drives<D>,
+    p: &mut Particles<'_>,
+    t0: Real,
+) -> Begun<ByLaw<B::F, K, D>> {
+    match b.model().law {
+        LawModel::Constant(a) => wrap(b.scheme(k, d, a, p, t0), ByLaw::Constant),
+        LawModel::ImpactSpeed(a) => built!(feature = "impact-speed", "impact-speed", {
+            wrap(b.scheme(k, d, a, p, t0), ByLaw::ImpactSpeed)
+        }),
     }
 }
 
-/// Rough particles in dimension `G`: by drive.
+/// Smooth particles of one species in dimension `G`.
+struct SmoothBuild<'a, G>(&'a Model, PhantomData<G>);
+impl<G: WhiteNoiseIn> Build for SmoothBuild<'_, G> {
+    type F = Smooth<G>;
+    type Drives<D: Drive> = D;
+    fn model(&self) -> &Model {
+        self.0
+    }
+    fn each<D: Drive>(&self, d: D) -> D {
+        d
+    }
+    fn noise(&self) -> Option<G::Noise> {
+        match self.0.drive {
+            DriveModel::WhiteNoise(w) => Some(G::noise(w)),
+            _ => None,
+        }
+    }
+    fn host<B: BackgroundKernel>(&self, h: HostMedium<B>) -> Result<HostMedium<B, G>, EngineError> {
+        Ok(h.in_dim::<G>())
+    }
+    fn scheme<K: Kernel, D: Drive, A: Law>(
+        &self,
+        k: K,
+        d: &D,
+        a: A,
+        p: &mut Particles<'_>,
+        t0: Real,
+    ) -> Begun<ByScheme<K, D, A, G>> {
+        self.0.by_scheme(k, *d, a, p, t0)
+    }
+}
+
+/// Rough particles of one species in dimension `G`: the rough map of the law.
 struct RoughBuild<'a, G>(&'a RoughModel, &'a Model, PhantomData<G>);
 impl<G: Geometry> Build for RoughBuild<'_, G> {
     type F = Rough<G>;
-    fn build<K: Kernel>(
+    type Drives<D: Drive> = D;
+    fn model(&self) -> &Model {
+        self.1
+    }
+    fn each<D: Drive>(&self, d: D) -> D {
+        d
+    }
+    fn noise(&self) -> Option<RoughNoise<G>> {
+        self.0.noise.map(|w| w.in_dim::<G>())
+    }
+    fn host<B: BackgroundKernel>(&self, h: HostMedium<B>) -> Result<HostMedium<B, G>, EngineError> {
+        Ok(h.in_dim::<G>())
+    }
+    fn scheme<K: Kernel, D: Drive, A: Law>(
         &self,
         k: K,
+        d: &D,
+        a: A,
         p: &mut Particles<'_>,
         t0: Real,
-    ) -> Result<(ByRoughDrive<K, G>, Observables), EngineError> {
-        rough(self.0, self.1, k, p, t0)
+    ) -> Begun<BySplit<K, D, RoughMap<A>, G>> {
+        by_split(self.1.scheme, k, *d, a.rough(&self.0.map), p, t0)
     }
 }
 
-/// A mixture of rough particles in dimension `G`.
-struct RoughMixtureBuild<'a, G>(
-    &'a MixtureModel,
-    &'a MixtureRotation,
-    &'a Model,
-    PhantomData<G>,
-);
-impl<G: Geometry> Build for RoughMixtureBuild<'_, G> {
-    type F = RoughMixture<G>;
-    fn build<K: Kernel>(
-        &self,
-        k: K,
-        p: &mut Particles<'_>,
-        t0: Real,
-    ) -> Result<(ByRoughMixtureDrive<K, G>, Observables), EngineError> {
-        rough_mixture(self.0, self.1, self.2, k, p, t0)
+/// A mixture of particle model `P` in dimension `G`: the pair kernels scaled from the
+/// kernel, the pair laws from the law, one drive per species.
+struct MixtureBuild<'a, G: WhiteNoiseIn, P: PairModel> {
+    mx: &'a MixtureModel,
+    m: &'a Model,
+    /// The pair types' constant laws.
+    laws: &'a [P::Of<Constant>; MAX_PAIRS],
+    /// Each species' white noise, when the physics has it.
+    noises: Option<[P::Noise<G>; MAX_SPECIES]>,
+}
+
+impl<'a, G: WhiteNoiseIn> MixtureBuild<'a, G, SmoothPairs> {
+    /// A mixture of smooth particles.
+    fn smooth(mx: &'a MixtureModel, m: &'a Model) -> Self {
+        let noises = matches!(m.drive, DriveModel::WhiteNoise(_)).then(|| mx.noises.map(G::noise));
+        Self {
+            mx,
+            m,
+            laws: &mx.laws,
+            noises,
+        }
     }
 }
 
-/// A mixture of smooth particles in dimension `G`: the pair kernels scaled from `k`, by drive.
-struct MixtureBuild<'a, G>(&'a MixtureModel, &'a Model, PhantomData<G>);
-impl<G: WhiteNoiseIn> Build for MixtureBuild<'_, G> {
-    type F = Mixture<G>;
-    fn build<K: Kernel>(
+impl<'a, G: WhiteNoiseIn> MixtureBuild<'a, G, RoughPairs> {
+    /// A mixture of rough particles (their pair laws and noises on translation and rotation
+    /// in `r`).
+    fn rough(mx: &'a MixtureModel, r: &'a MixtureRotation, m: &'a Model) -> Self {
+        Self {
+            mx,
+            m,
+            laws: &r.laws,
+            noises: r.noises.map(|ns| ns.map(|w| w.in_dim::<G>())),
+        }
+    }
+}
+
+impl<G: WhiteNoiseIn, P: PairModel> Build for MixtureBuild<'_, G, P> {
+    type F = Mixture<G, P>;
+    type Drives<D: Drive> = [D; MAX_SPECIES];
+    fn model(&self) -> &Model {
+        self.m
+    }
+    fn each<D: Drive>(&self, d: D) -> [D; MAX_SPECIES] {
+        [d; MAX_SPECIES]
+    }
+    fn noise(&self) -> Option<[P::Noise<G>; MAX_SPECIES]> {
+        self.noises
+    }
+    fn host<B: BackgroundKernel>(
+        &self,
+        h: HostMedium<B>,
+    ) -> Result<[HostMedium<B, G>; MAX_SPECIES], EngineError> {
+        species_hosts(self.mx, h)
+    }
+    fn scheme<K: Kernel, D: Drive, A: Law>(
         &self,
         k: K,
+        d: &[D; MAX_SPECIES],
+        a: A,
         p: &mut Particles<'_>,
         t0: Real,
-    ) -> Result<(ByMixtureDrive<K, G>, Observables), EngineError> {
-        mixture(self.0, k, self.1, p, t0)
+    ) -> Begun<ByMixtureScheme<K, D, P::Of<A>, G>> {
+        let physics = pair_table(self.mx, k, &a.pairs::<P>(self.laws))?;
+        start_mixture::<K, D, _, G>(self.mx, self.m.scheme, &physics, d, p, t0)
     }
 }
 

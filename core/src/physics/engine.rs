@@ -1,7 +1,7 @@
 //! The statically composed engine behind a [`super::Model`]: a nest of small enums, one level
-//! per choice (particle model, species and dimension; kernel, written once for every family;
-//! drive, restitution law or collision map, scheme), whose leaves are the monomorphized event
-//! loops. No box and no allocation (a C caller or a firmware keeps it in its own memory);
+//! per choice (particle model, species and dimension; then kernel, drive and restitution law,
+//! each level written once for every family; then the family's scheme level), whose leaves are
+//! the monomorphized event loops. No box and no allocation (a C caller or a firmware keeps it in its own memory);
 //! each call goes down the nest once (four `match`es per call, i.e. per observation) and then
 //! runs a loop that holds only the physics it names.
 
@@ -12,7 +12,7 @@
 
 use crate::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, MaxwellBackground,
-    NoDrive, PlanarWhiteNoise, WhiteNoise, WhiteNoiseIn,
+    NoDrive, WhiteNoiseIn,
 };
 use crate::engine::{
     CollisionMap, Counts, EngineError, EventLoop, Frame, NoSplitting, Splitting, SumNoSplitting,
@@ -45,15 +45,15 @@ pub enum Engine {
     /// Rough spheres (translation and rotation; feature `rough`).
     Rough(Built<ByKernel<Rough<Spheres>>, ROUGH>),
     /// Smooth disks (`d = 2`; feature `disks`).
-    Disks(Built<ByKernel<SmoothDisks>, DISKS>),
+    Disks(Built<ByKernel<Smooth<Disks>>, DISKS>),
     /// Rough disks (features `rough`, `disks`).
     RoughDisks(Built<ByKernel<Rough<Disks>>, ROUGH_DISKS>),
     /// A mixture of smooth disks (features `mixtures`, `disks`).
     DiskMixture(Built<ByKernel<Mixture<Disks>>, DISK_MIXTURES>),
     /// A mixture of rough spheres (features `mixtures`, `rough`).
-    RoughMixture(Built<ByKernel<RoughMixture<Spheres>>, ROUGH_MIXTURES>),
+    RoughMixture(Built<ByKernel<Mixture<Spheres, RoughPairs>>, ROUGH_MIXTURES>),
     /// A mixture of rough disks (features `mixtures`, `rough`, `disks`).
-    RoughDiskMixture(Built<ByKernel<RoughMixture<Disks>>, ROUGH_DISK_MIXTURES>),
+    RoughDiskMixture(Built<ByKernel<Mixture<Disks, RoughPairs>>, ROUGH_DISK_MIXTURES>),
 }
 
 /// Whether this build holds each engine family (the cargo features of gdsmc-core).
@@ -136,131 +136,96 @@ impl<T> EventLoop for NotBuilt<T> {
     }
 }
 
-/// A family of loops that takes every kernel: what it is for kernel `K` ([`ByKernel`] holds
-/// one of them).
-pub trait Family {
-    /// The family's engine for kernel `K`.
-    type Of<K: Kernel>: EventLoop + Clone + core::fmt::Debug;
+/// A family of loops (particle model, species, dimension): what the levels below the kernel
+/// hold for it. Every level ([`ByKernel`], [`ByDrive`], [`ByLaw`]) is written once for all
+/// families; a family names only what differs: its white noise, its dimension and its scheme
+/// level.
+pub trait Family: Clone + core::fmt::Debug {
+    /// White noise as this family takes it (in its dimension; on translation and rotation for
+    /// rough particles).
+    type Noise: Drive;
+    /// The dimension (a host medium's encounters are drawn in it).
+    type G: Geometry;
+    /// The family's scheme level, whose leaves are the event loops: kernel `K`, drive `D`,
+    /// restitution law `A`.
+    type Scheme<K: Kernel, D: Drive, A: Restitution>: EventLoop + Clone + core::fmt::Debug;
 }
 
-/// The one kernel level, for every family: the kernel chosen at run time, the family's nest
-/// below it generic over the kernel.
+/// The one kernel level, for every family: the kernel chosen at run time, the levels below it
+/// generic over the kernel.
 #[derive(Clone, Debug)]
 pub enum ByKernel<F: Family> {
     /// Maxwell pseudo-molecules (feature `maxwell`).
-    Maxwell(Built<F::Of<Maxwell>, MAXWELL>),
+    Maxwell(Built<ByDrive<F, Maxwell>, MAXWELL>),
     /// Hard spheres (hard disks in `d = 2`; feature `hard-spheres`).
-    HardSpheres(Built<F::Of<HardSpheres>, HARD_SPHERES>),
+    HardSpheres(Built<ByDrive<F, HardSpheres>, HARD_SPHERES>),
     /// Variable hard spheres (feature `vhs`).
-    Vhs(Built<F::Of<Vhs>, VHS>),
+    Vhs(Built<ByDrive<F, Vhs>, VHS>),
 }
 
-/// Smooth spheres of one species ([`ByDrive`]).
+/// The one drive level, for every family `F` and kernel `K`.
+#[derive(Clone, Debug)]
+pub enum ByDrive<F: Family, K: Kernel> {
+    /// No drive: the gas cools (feature `cooling`).
+    None(Built<ByLaw<F, K, NoDrive>, COOLING>),
+    /// White noise (GRW (18); rough particles: on translation and rotation; a mixture: each
+    /// species its own strengths; feature `white-noise`).
+    WhiteNoise(Built<ByLaw<F, K, F::Noise>, WHITE_NOISE>),
+    /// The Gaussian thermostat (MS (12)) on translation, about the flow velocity (feature
+    /// `gaussian-thermostat`).
+    Gaussian(Built<ByLaw<F, K, GaussianThermostat>, GAUSSIAN>),
+    /// The constant force (MS (14), (62); a mixture's correction weighted by mass; a stepping
+    /// scheme; feature `constant-force`).
+    ConstantForce(Built<ByLaw<F, K, ConstantForce>, CONSTANT_FORCE>),
+    /// A host medium with the Maxwell background kernel (BRS (2), (11); a mixture's species
+    /// each meets it with its own mass; feature `host-medium`).
+    HostMaxwell(Built<ByLaw<F, K, HostIn<MaxwellBackground, F>>, HOST_MEDIUM>),
+    /// A host medium with the hard-sphere background kernel (BRS (19); feature
+    /// `host-medium`).
+    HostHardSpheres(Built<ByLaw<F, K, HostIn<HardSphereBackground, F>>, HOST_MEDIUM>),
+}
+
+/// A host medium of background kernel `B` in family `F`'s dimension.
+pub type HostIn<B, F> = HostMedium<B, <F as Family>::G>;
+
+/// The one restitution-law level, for every family `F`, kernel `K` and drive `D`.
+#[derive(Clone, Debug)]
+pub enum ByLaw<F: Family, K: Kernel, D: Drive> {
+    /// A constant coefficient (a mixture: one per pair type).
+    Constant(F::Scheme<K, D, Constant>),
+    /// BRS's impact-speed law (9)-(10) (rough particles: at the normal impact speed; a mixture:
+    /// for every pair; feature `impact-speed`).
+    ImpactSpeed(Built<F::Scheme<K, D, ImpactSpeed>, IMPACT_SPEED>),
+}
+
+/// Smooth particles of one species in dimension `G`: [`ByScheme`], whose exact loop for hard
+/// spheres with no drive is the sum form.
 #[derive(Clone, Copy, Debug)]
-pub struct Smooth;
-impl Family for Smooth {
-    type Of<K: Kernel> = ByDrive<K>;
+pub struct Smooth<G = Spheres>(core::marker::PhantomData<G>);
+impl<G: WhiteNoiseIn> Family for Smooth<G> {
+    type Noise = G::Noise;
+    type G = G;
+    type Scheme<K: Kernel, D: Drive, A: Restitution> = ByScheme<K, D, A, G>;
 }
 
-/// Smooth disks ([`ByDiskDrive`]).
-#[derive(Clone, Copy, Debug)]
-pub struct SmoothDisks;
-impl Family for SmoothDisks {
-    type Of<K: Kernel> = ByDiskDrive<K>;
-}
-
-/// Rough particles in dimension `G` ([`ByRoughDrive`]).
+/// Rough particles of one species in dimension `G`: [`BySplit`] over the rough map of the
+/// restitution law.
 #[derive(Clone, Copy, Debug)]
 pub struct Rough<G>(core::marker::PhantomData<G>);
 impl<G: Geometry> Family for Rough<G> {
-    type Of<K: Kernel> = ByRoughDrive<K, G>;
+    type Noise = RoughNoise<G>;
+    type G = G;
+    type Scheme<K: Kernel, D: Drive, A: Restitution> = BySplit<K, D, RoughMap<A>, G>;
 }
 
-/// Mixtures of smooth particles in dimension `G` ([`ByMixtureDrive`]).
+/// A mixture of particle model `P` (smooth or rough pairs) in dimension `G`:
+/// [`ByMixtureScheme`] over the pair law of the restitution law.
 #[derive(Clone, Copy, Debug)]
-pub struct Mixture<G>(core::marker::PhantomData<G>);
-impl<G: WhiteNoiseIn> Family for Mixture<G> {
-    type Of<K: Kernel> = ByMixtureDrive<K, G>;
-}
-
-/// Mixtures of rough particles in dimension `G` ([`ByRoughMixtureDrive`]).
-#[derive(Clone, Copy, Debug)]
-pub struct RoughMixture<G>(core::marker::PhantomData<G>);
-impl<G: Geometry> Family for RoughMixture<G> {
-    type Of<K: Kernel> = ByRoughMixtureDrive<K, G>;
-}
-
-/// A rough mixture by drive, for kernel `K` and dimension `G`.
-#[derive(Clone, Debug)]
-pub enum ByRoughMixtureDrive<K: Kernel, G: Geometry> {
-    /// No drive: the mixture cools (feature `cooling`).
-    None(Built<ByMixtureLaw<K, NoDrive, G, RoughPairs>, COOLING>),
-    /// White noise on translation and rotation, each species its own strengths (feature
-    /// `white-noise`).
-    Noise(Built<ByMixtureLaw<K, RoughNoise<G>, G, RoughPairs>, WHITE_NOISE>),
-    /// The Gaussian thermostat (MS (12)) on every species' translation, about the flow
-    /// velocity (feature `gaussian-thermostat`).
-    Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G, RoughPairs>, GAUSSIAN>),
-    /// The constant force on every species' translation, its correction weighted by mass
-    /// (MS (14), (62); a stepping scheme; feature `constant-force`).
-    ConstantForce(Built<ByMixtureLaw<K, ConstantForce, G, RoughPairs>, CONSTANT_FORCE>),
-    /// A host medium of Maxwell background kernel met by each species with its own mass, the
-    /// encounters smooth (BRS (2), (11); feature `host-medium`).
-    HostMaxwell(
-        Built<ByMixtureLaw<K, HostMedium<MaxwellBackground, G>, G, RoughPairs>, HOST_MEDIUM>,
-    ),
-    /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
-    HostHardSpheres(
-        Built<ByMixtureLaw<K, HostMedium<HardSphereBackground, G>, G, RoughPairs>, HOST_MEDIUM>,
-    ),
-}
-
-/// Smooth disks by drive, for kernel `K`.
-#[derive(Clone, Debug)]
-pub enum ByDiskDrive<K: Kernel> {
-    /// No drive: the disks cool (feature `cooling`).
-    None(Built<ByLaw<K, NoDrive, Disks>, COOLING>),
-    /// White noise in the plane (feature `white-noise`).
-    WhiteNoise(Built<ByLaw<K, PlanarWhiteNoise, Disks>, WHITE_NOISE>),
-    /// The Gaussian thermostat (MS (12); feature `gaussian-thermostat`).
-    Gaussian(Built<ByLaw<K, GaussianThermostat, Disks>, GAUSSIAN>),
-    /// The constant force along the peculiar velocity (MS (14); a stepping scheme; feature
-    /// `constant-force`).
-    ConstantForce(Built<ByLaw<K, ConstantForce, Disks>, CONSTANT_FORCE>),
-    /// A host medium of Maxwell background kernel in the plane (feature `host-medium`).
-    HostMaxwell(Built<ByLaw<K, HostMedium<MaxwellBackground, Disks>, Disks>, HOST_MEDIUM>),
-    /// A host medium of hard-disk background kernel (feature `host-medium`).
-    HostHardSpheres(Built<ByLaw<K, HostMedium<HardSphereBackground, Disks>, Disks>, HOST_MEDIUM>),
-}
-
-/// A rough gas's engine by drive, for kernel `K` and dimension `G`.
-#[derive(Clone, Debug)]
-pub enum ByRoughDrive<K: Kernel, G: Geometry = Spheres> {
-    /// No drive: the gas cools (feature `cooling`).
-    None(Built<ByRoughLaw<K, NoDrive, G>, COOLING>),
-    /// White noise on translation and rotation (feature `white-noise`).
-    Noise(Built<ByRoughLaw<K, RoughNoise<G>, G>, WHITE_NOISE>),
-    /// The Gaussian thermostat on translation (MS (12); feature `gaussian-thermostat`).
-    Gaussian(Built<ByRoughLaw<K, GaussianThermostat, G>, GAUSSIAN>),
-    /// The constant force on translation (MS (14); a splitting scheme; feature
-    /// `constant-force`).
-    ConstantForce(Built<ByRoughLaw<K, ConstantForce, G>, CONSTANT_FORCE>),
-    /// A host medium of Maxwell background kernel, its encounters smooth (BRS (2), (11);
-    /// feature `host-medium`).
-    HostMaxwell(Built<ByRoughLaw<K, HostMedium<MaxwellBackground, G>, G>, HOST_MEDIUM>),
-    /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
-    HostHardSpheres(Built<ByRoughLaw<K, HostMedium<HardSphereBackground, G>, G>, HOST_MEDIUM>),
-}
-
-/// A rough gas by normal restitution law (the rough map of it), for kernel `K`, drive `D`
-/// and dimension `G`.
-#[derive(Clone, Debug)]
-pub enum ByRoughLaw<K: Kernel, D: Drive, G: Geometry> {
-    /// A constant `alpha`.
-    Constant(BySplit<K, D, RoughMap<Constant>, G>),
-    /// BRS's impact-speed law (9) at the normal impact speed `|g . n|` (feature
-    /// `impact-speed`).
-    ImpactSpeed(Built<BySplit<K, D, RoughMap<ImpactSpeed>, G>, IMPACT_SPEED>),
+pub struct Mixture<G, P = SmoothPairs>(core::marker::PhantomData<(G, P)>);
+impl<G: WhiteNoiseIn, P: PairModel> Family for Mixture<G, P> {
+    type Noise = P::Noise<G>;
+    type G = G;
+    type Scheme<K: Kernel, D: Drive, A: Restitution> = ByMixtureScheme<K, D, P::Of<A>, G>;
 }
 
 /// By scheme, the exact loop, the splittings or MS's time-stepped scheme, for every family
@@ -277,32 +242,16 @@ pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
     TimeStepped(Built<TimeStepped<K, D, A, G>, TIME_STEPPED>),
 }
 
-/// A mixture's engine by drive, for kernel `K` and dimension `G`.
-#[derive(Clone, Debug)]
-pub enum ByMixtureDrive<K: Kernel, G: WhiteNoiseIn> {
-    /// No drive: the mixture cools (feature `cooling`).
-    None(Built<ByMixtureLaw<K, NoDrive, G>, COOLING>),
-    /// White noise in the dimension, each species its own strength (feature `white-noise`).
-    WhiteNoise(Built<ByMixtureLaw<K, G::Noise, G>, WHITE_NOISE>),
-    /// The Gaussian thermostat (MS (12)) on every species, about the flow velocity (feature
-    /// `gaussian-thermostat`).
-    Gaussian(Built<ByMixtureLaw<K, GaussianThermostat, G>, GAUSSIAN>),
-    /// The constant force on every species, its correction weighted by mass (MS (14), (62);
-    /// a stepping scheme; feature `constant-force`).
-    ConstantForce(Built<ByMixtureLaw<K, ConstantForce, G>, CONSTANT_FORCE>),
-    /// A host medium of Maxwell background kernel met by each species with its own mass
-    /// (BRS (2), (11); feature `host-medium`).
-    HostMaxwell(Built<ByMixtureLaw<K, HostMedium<MaxwellBackground, G>, G>, HOST_MEDIUM>),
-    /// A host medium of hard-sphere background kernel (BRS (19); feature `host-medium`).
-    HostHardSpheres(Built<ByMixtureLaw<K, HostMedium<HardSphereBackground, G>, G>, HOST_MEDIUM>),
-}
-
 /// The particle model of a mixture's pair types over a restitution law `A`: smooth particles
 /// collide by the law itself ([`SmoothPairs`]), rough ones by [`RoughPairLaw`] of it
-/// ([`RoughPairs`]). The law level ([`ByMixtureLaw`]) is written once for both.
+/// ([`RoughPairs`]). The mixture family ([`Mixture`]) is written once for both.
 pub trait PairModel: Clone + core::fmt::Debug {
     /// The pair law of particles of this model with normal restitution law `A`.
     type Of<A: Restitution>: PairLaw;
+    /// White noise on particles of this model in dimension `G`.
+    type Noise<G: WhiteNoiseIn>: Drive;
+    /// The pair law `l` (of a constant law) with normal restitution law `a` instead.
+    fn with_law<A: Restitution>(l: &Self::Of<Constant>, a: A) -> Self::Of<A>;
 }
 
 /// Smooth particles: the restitution law is the pair law.
@@ -310,6 +259,10 @@ pub trait PairModel: Clone + core::fmt::Debug {
 pub struct SmoothPairs;
 impl PairModel for SmoothPairs {
     type Of<A: Restitution> = A;
+    type Noise<G: WhiteNoiseIn> = G::Noise;
+    fn with_law<A: Restitution>(_: &Constant, a: A) -> A {
+        a
+    }
 }
 
 /// Rough particles: the restitution law is the normal part of [`RoughPairLaw`].
@@ -317,16 +270,10 @@ impl PairModel for SmoothPairs {
 pub struct RoughPairs;
 impl PairModel for RoughPairs {
     type Of<A: Restitution> = RoughPairLaw<A>;
-}
-
-/// A mixture by restitution law, for kernel `K`, drive `D`, dimension `G` and particle model
-/// `P` (smooth or rough pairs).
-#[derive(Clone, Debug)]
-pub enum ByMixtureLaw<K: Kernel, D: Drive, G: Geometry, P: PairModel = SmoothPairs> {
-    /// A constant coefficient per pair type.
-    Constant(ByMixtureScheme<K, D, P::Of<Constant>, G>),
-    /// BRS's impact-speed law (9)-(10) for every pair (feature `impact-speed`).
-    ImpactSpeed(Built<ByMixtureScheme<K, D, P::Of<ImpactSpeed>, G>, IMPACT_SPEED>),
+    type Noise<G: WhiteNoiseIn> = RoughNoise<G>;
+    fn with_law<A: Restitution>(l: &RoughPairLaw, a: A) -> RoughPairLaw<A> {
+        l.with_law(a)
+    }
 }
 
 /// A mixture by scheme: the exact loop, or RW's splittings of it (the same collision
@@ -340,34 +287,6 @@ pub enum ByMixtureScheme<K: Kernel, D: Drive, L: PairLaw, G: Geometry> {
     Splitting(Built<MixtureSplitting<K, D, L, G>, SPLITTING>),
     /// MS's time-stepped scheme, one collision stage per pair type (feature `time-stepped`).
     TimeStepped(Built<MixtureTimeStepped<K, D, L, G>, TIME_STEPPED>),
-}
-
-/// By drive, for kernel `K`.
-#[derive(Clone, Debug)]
-pub enum ByDrive<K: Kernel> {
-    /// No drive: the gas cools (feature `cooling`).
-    None(Built<ByLaw<K, NoDrive>, COOLING>),
-    /// White noise (GRW (18); feature `white-noise`).
-    WhiteNoise(Built<ByLaw<K, WhiteNoise>, WHITE_NOISE>),
-    /// The Gaussian thermostat (MS (12); feature `gaussian-thermostat`).
-    Gaussian(Built<ByLaw<K, GaussianThermostat>, GAUSSIAN>),
-    /// The constant force (MS (14); feature `constant-force`).
-    ConstantForce(Built<ByLaw<K, ConstantForce>, CONSTANT_FORCE>),
-    /// A host medium with the Maxwell background kernel (BRS (11); feature `host-medium`).
-    HostMaxwell(Built<ByLaw<K, HostMedium<MaxwellBackground>>, HOST_MEDIUM>),
-    /// A host medium with the hard-sphere background kernel (BRS (19); feature
-    /// `host-medium`).
-    HostHardSpheres(Built<ByLaw<K, HostMedium<HardSphereBackground>>, HOST_MEDIUM>),
-}
-
-/// By restitution law, for kernel `K`, drive `D` and dimension `G` (smooth particles of one
-/// species).
-#[derive(Clone, Debug)]
-pub enum ByLaw<K: Kernel, D: Drive, G: Geometry = Spheres> {
-    /// A constant coefficient.
-    Constant(ByScheme<K, D, Constant, G>),
-    /// The impact-speed law BRS (9)-(10) (feature `impact-speed`).
-    ImpactSpeed(Built<ByScheme<K, D, ImpactSpeed, G>, IMPACT_SPEED>),
 }
 
 /// By scheme: the event loops themselves (smooth particles of one species in dimension `G`).
@@ -432,14 +351,8 @@ forward!(
     RoughDiskMixture
 );
 forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
-forward!(ByDiskDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
-forward!(ByRoughDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
+forward!(ByDrive<F, K>, [F: Family, K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
+forward!(ByLaw<F, K, D>, [F: Family, K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting, TimeStepped);
-forward!(ByMixtureDrive<K, G>, [K: Kernel, G: WhiteNoiseIn], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
-forward!(ByRoughMixtureDrive<K, G>, [K: Kernel, G: Geometry], None, Noise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
-forward!(ByMixtureLaw<K, D, G, P>, [K: Kernel, D: Drive, G: Geometry, P: PairModel], Constant, ImpactSpeed);
-forward!(ByRoughLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);
-forward!(ByDrive<K>, [K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
-forward!(ByLaw<K, D, G>, [K: Kernel, D: Drive, G: Geometry], Constant, ImpactSpeed);
 forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm);
