@@ -9,6 +9,7 @@
     allow(dead_code, unused_imports, unused_variables)
 )]
 
+use super::axes::kernel_table;
 use super::engine::{
     ByDrive, ByKernel, ByLaw, ByMixtureScheme, ByScheme, BySplit, Engine, Family, HostIn, Mixture,
     PairModel, Rough, RoughPairs, Smooth, SmoothPairs,
@@ -409,28 +410,29 @@ impl Law for ImpactSpeed {
     }
 }
 
-/// The one kernel level of the dispatch, for every family. Out of line: each family's start
-/// keeps its locals (a mixture's pair table, its per-species observables) in its own frame,
-/// not in [`Model::start`]'s for every physics.
-#[inline(never)]
-fn by_kernel<B: Build>(
-    kernel: KernelModel,
-    b: &B,
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Begun<ByKernel<B::F>> {
-    match kernel {
-        KernelModel::Maxwell(k) => built!(feature = "maxwell", "maxwell", {
-            wrap(by_drive(b, k, p, t0), ByKernel::Maxwell)
-        }),
-        KernelModel::HardSpheres(k) => built!(feature = "hard-spheres", "hard-spheres", {
-            wrap(by_drive(b, k, p, t0), ByKernel::HardSpheres)
-        }),
-        KernelModel::Vhs(k) => built!(feature = "vhs", "vhs", {
-            wrap(by_drive(b, k, p, t0), ByKernel::Vhs)
-        }),
-    }
+/// Generates [`by_kernel`] from the kernel table ([`kernel_table`]).
+macro_rules! by_kernel {
+    ($($v:ident($t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+        /// The one kernel level of the dispatch, for every family (generated from the kernel
+        /// table, [`super::axes`]). Out of line: each family's start keeps its locals (a
+        /// mixture's pair table, its per-species observables) in its own frame, not in
+        /// [`Model::start`]'s for every physics.
+        #[inline(never)]
+        fn by_kernel<B: Build>(
+            kernel: KernelModel,
+            b: &B,
+            p: &mut Particles<'_>,
+            t0: Real,
+        ) -> Begun<ByKernel<B::F>> {
+            match kernel {
+                $(KernelModel::$v(k) => built!(feature = $feature, $feature, {
+                    wrap(by_drive(b, k, p, t0), ByKernel::$v)
+                }),)*
+            }
+        }
+    };
 }
+kernel_table!(by_kernel);
 
 /// The one drive level of the dispatch, for every family and kernel. Out of line for the
 /// reason of [`by_kernel`] (a mixture's drives are one per species).

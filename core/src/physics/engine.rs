@@ -10,6 +10,7 @@
 // is explained at [`Engine`]).
 #![allow(clippy::large_enum_variant)]
 
+use super::axes::kernel_table;
 use crate::drive::{
     ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, MaxwellBackground,
     NoDrive, WhiteNoiseIn,
@@ -19,7 +20,7 @@ use crate::engine::{
     TimeStepped,
 };
 use crate::geometry::{Disks, Geometry, Spheres};
-use crate::kernel::{HardSpheres, Kernel, Maxwell, Vhs};
+use crate::kernel::Kernel;
 use crate::math::Real;
 use crate::mixture::{
     MixtureNoSplitting, MixtureObservables, MixtureSplitting, MixtureTimeStepped, PairLaw,
@@ -65,9 +66,6 @@ const DISK_MIXTURES: bool = MIXTURES && DISKS;
 const ROUGH_MIXTURES: bool = MIXTURES && ROUGH;
 const ROUGH_DISK_MIXTURES: bool = MIXTURES && ROUGH && DISKS;
 /// Whether this build holds each kernel, drive, law and scheme (the same features).
-const MAXWELL: bool = cfg!(feature = "maxwell");
-const HARD_SPHERES: bool = cfg!(feature = "hard-spheres");
-const VHS: bool = cfg!(feature = "vhs");
 const COOLING: bool = cfg!(feature = "cooling");
 const WHITE_NOISE: bool = cfg!(feature = "white-noise");
 const GAUSSIAN: bool = cfg!(feature = "gaussian-thermostat");
@@ -76,6 +74,8 @@ const HOST_MEDIUM: bool = cfg!(feature = "host-medium");
 const IMPACT_SPEED: bool = cfg!(feature = "impact-speed");
 const SPLITTING: bool = cfg!(feature = "splitting");
 const TIME_STEPPED: bool = cfg!(feature = "time-stepped");
+/// Whether this build holds the sum form of hard spheres (their kernel's feature).
+const HARD_SPHERES: bool = cfg!(feature = "hard-spheres");
 
 /// A variant's payload at any level (family, kernel, drive, law, scheme): the engine itself
 /// when the build holds it, else [`NotBuilt`] (uninhabited: the variant cannot be made, and
@@ -151,16 +151,25 @@ pub trait Family: Clone + core::fmt::Debug {
     type Scheme<K: Kernel, D: Drive, A: Restitution>: EventLoop + Clone + core::fmt::Debug;
 }
 
-/// The one kernel level, for every family: the kernel chosen at run time, the levels below it
-/// generic over the kernel.
-#[derive(Clone, Debug)]
-pub enum ByKernel<F: Family> {
-    /// Maxwell pseudo-molecules (feature `maxwell`).
-    Maxwell(Built<ByDrive<F, Maxwell>, MAXWELL>),
-    /// Hard spheres (hard disks in `d = 2`; feature `hard-spheres`).
-    HardSpheres(Built<ByDrive<F, HardSpheres>, HARD_SPHERES>),
-    /// Variable hard spheres (feature `vhs`).
-    Vhs(Built<ByDrive<F, Vhs>, VHS>),
+/// Generates [`ByKernel`] and its [`EventLoop`] from the kernel table (`kernel_table!`).
+macro_rules! by_kernel {
+    ($($v:ident($t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+        /// The one kernel level, for every family: the kernel chosen at run time, the levels
+        /// below it generic over the kernel (generated from the kernel table in
+        /// `physics/axes.rs`; each variant behind its kernel's cargo feature).
+        #[derive(Clone, Debug)]
+        pub enum ByKernel<F: Family> {
+            $(#[doc = $doc] $v(Built<ByDrive<F, $t>, { kernel_built::$v }>),)*
+        }
+
+        /// Whether this build holds each kernel (its cargo feature).
+        #[allow(non_upper_case_globals)]
+        mod kernel_built {
+            $(pub(super) const $v: bool = cfg!(feature = $feature);)*
+        }
+
+        forward!(ByKernel<F>, [F: Family], $($v),*);
+    };
 }
 
 /// The one drive level, for every family `F` and kernel `K`.
@@ -350,9 +359,9 @@ forward!(
     RoughMixture,
     RoughDiskMixture
 );
-forward!(ByKernel<F>, [F: Family], Maxwell, HardSpheres, Vhs);
 forward!(ByDrive<F, K>, [F: Family, K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<F, K, D>, [F: Family, K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm);
+kernel_table!(by_kernel);

@@ -40,6 +40,7 @@
 //! assert_eq!(bad.validate().unwrap_err().to_string(), "restitution must lie in (0, 1], got 1.5");
 //! ```
 
+mod axes;
 mod dimension;
 mod dispatch;
 pub mod engine;
@@ -104,6 +105,31 @@ pub enum RestitutionLaw {
         /// `delta >= 0` (1/5: viscoelastic spheres).
         delta: Real,
     },
+}
+
+impl KernelChoice {
+    /// `(gamma C, lambda)` of the kernel `B = gamma C |u|^lambda` (GRW (1), (2), (4), (5)):
+    /// its rate constant and its exponent (0 for Maxwell molecules, 1 for hard spheres).
+    #[must_use]
+    pub fn rate_constants(&self) -> (Real, Real) {
+        match *self {
+            KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
+            KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
+            KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
+        }
+    }
+}
+
+/// The kernel as a title names it: "Maxwell kernel", "hard-sphere kernel", "VHS kernel
+/// (lambda = 0.5)".
+impl core::fmt::Display for KernelChoice {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            KernelChoice::Maxwell { .. } => f.write_str("Maxwell kernel"),
+            KernelChoice::HardSpheres { .. } => f.write_str("hard-sphere kernel"),
+            KernelChoice::Vhs { lambda, .. } => write!(f, "VHS kernel (lambda = {lambda})"),
+        }
+    }
 }
 
 impl RestitutionLaw {

@@ -2,6 +2,7 @@
 //! blocks (`parts.rs`) and the axes that combine them (`species.rs`, `rotation.rs`,
 //! `dimension.rs`), each of which imports the blocks and none this module.
 
+use super::axes::WithKernel;
 use super::error::PhysicsError;
 use super::parts::{
     DriveModel, KernelModel, LawModel, SchemeModel, drive, initial, kernel, law, particle_count,
@@ -147,11 +148,15 @@ impl Model {
     /// `umax`, `2 pi gamma C_lambda (n - 1) Umax^lambda` (GRW Section 3, RW (20)): the
     /// kernel's [`Kernel::majorant_rate`], for estimates made before any engine exists.
     pub fn majorant_rate(&self, n: usize, umax: Real) -> Real {
-        match self.kernel {
-            KernelModel::Maxwell(k) => k.majorant_rate(n, umax),
-            KernelModel::HardSpheres(k) => k.majorant_rate(n, umax),
-            KernelModel::Vhs(k) => k.majorant_rate(n, umax),
+        /// [`Kernel::majorant_rate`] of `n` particles below `umax`.
+        struct Rate(usize, Real);
+        impl WithKernel for Rate {
+            type Out = Real;
+            fn with<K: Kernel>(self, k: K) -> Real {
+                k.majorant_rate(self.0, self.1)
+            }
         }
+        self.kernel.with(Rate(n, umax))
     }
 
     /// The candidate rate of one grain's background events, a grain of speed `speed` taken

@@ -4,6 +4,7 @@
 //! [`super::rotation`], [`super::dimension`]) and the [`super::Model`] that composes them all
 //! build on these.
 
+use super::axes::{WithKernel, kernel_table};
 use super::error::{Param, PhysicsError, Problem};
 use super::{BackgroundKernel, DriveChoice, KernelChoice, RestitutionLaw, SchemeChoice};
 use super::{Component, MAX_COMPONENTS};
@@ -20,13 +21,26 @@ use crate::restitution::{ALPHA_RANGE, Constant, ImpactSpeed, ImpactSpeedError};
 use crate::sample::{Maxwellian, MaxwellianMixture, ParamError};
 use crate::vec3::Vec3;
 
-/// The validated kernel.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum KernelModel {
-    Maxwell(Maxwell),
-    HardSpheres(HardSpheres),
-    Vhs(Vhs),
+/// Generates [`KernelModel`] from the kernel table ([`kernel_table`]).
+macro_rules! kernel_model {
+    ($($v:ident($t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+        /// The validated kernel (generated from the kernel table, [`super::axes`]).
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub(super) enum KernelModel {
+            $(#[doc = $doc] $v($t),)*
+        }
+
+        impl KernelModel {
+            /// Does `w` with the kernel this holds.
+            pub(super) fn with<W: WithKernel>(self, w: W) -> W::Out {
+                match self {
+                    $(Self::$v(k) => w.with(k),)*
+                }
+            }
+        }
+    };
 }
+kernel_table!(kernel_model);
 
 /// The validated restitution law.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -2,6 +2,7 @@
 //! constructor ([`Species::new`], [`Maxwellian::new`], the kernel's [`Kernel::scaled`],
 //! [`Constant::new`], [`WhiteNoise::new`]), refusals named by species or pair.
 
+use super::axes::WithKernel;
 use super::error::{Param, PhysicsError, Problem};
 use super::parts::{DriveModel, KernelModel, LawModel};
 use super::rotation::{MixtureRotation, mixture_rotation};
@@ -84,6 +85,15 @@ pub struct MixtureModel {
     pub noises: [WhiteNoise; MAX_SPECIES],
     /// Rough particles: the pairs' laws and the species' spins; `None`: smooth particles.
     pub rotation: Option<MixtureRotation>,
+}
+
+/// Whether the kernel scaled by a pair's cross section ([`Kernel::scaled`]) exists.
+struct Scaled(Real);
+impl WithKernel for Scaled {
+    type Out = Result<(), KernelError>;
+    fn with<K: Kernel>(self, k: K) -> Result<(), KernelError> {
+        k.scaled(self.0).map(|_| ())
+    }
 }
 
 fn refuse<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -238,12 +248,7 @@ pub(super) fn mixture(
             DimensionChoice::Three => d * d,
             DimensionChoice::Two => d,
         };
-        let scaled = |f| match kernel {
-            KernelModel::Maxwell(k) => k.scaled(f).map(|_| ()),
-            KernelModel::HardSpheres(k) => k.scaled(f).map(|_| ()),
-            KernelModel::Vhs(k) => k.scaled(f).map(|_| ()),
-        };
-        if let Err(KernelError::C | KernelError::Strength) = scaled(factors[k]) {
+        if let Err(KernelError::C | KernelError::Strength) = kernel.with(Scaled(factors[k])) {
             return refuse(Param::SpeciesDiameter(t), Problem::Strength(factors[k]));
         }
     }

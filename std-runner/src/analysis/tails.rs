@@ -25,7 +25,7 @@ pub struct TailFit {
 /// GRW (16)'s asymptotic tail exponent of the heated gas, `1 + lambda/2`, for the scene's
 /// kernel.
 pub fn reference_exponent(scene: &crate::scene::Scene) -> f64 {
-    let (_, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
+    let (_, lambda) = scene.physics().kernel.rate_constants();
     1.0 + lambda / 2.0
 }
 

@@ -162,7 +162,7 @@ fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianA
     ) {
         return None;
     }
-    let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
+    let (_, lambda) = ph.kernel.rate_constants();
     let sp = scene.model().species()?;
     let (kappa, alpha) = crate::run::cooling::pair_kernels(ph, sp)?
         .into_iter()
@@ -211,7 +211,7 @@ pub fn rough_mixture_approximation(
         model.rough_pair_laws()?,
         model.pair_cross_sections()?,
     );
-    let (strength, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
+    let (strength, lambda) = scene.physics().kernel.rate_constants();
     let ns = sp.len();
     let masses: Vec<f64> = (0..ns).map(|s| sp.mass(s)).collect();
     let inertia: Vec<f64> = (0..ns)
@@ -366,7 +366,7 @@ fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
 pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::RoughApproximation> {
     let r = scene.physics().rotation?;
     let alpha = scene.physics().restitution.constant()?;
-    let (strength, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
+    let (strength, lambda) = scene.physics().kernel.rate_constants();
     // The constant force's work depends on `E|v - V|` (MS (14)), which the approximation
     // does not follow: no curve.
     let (beta, zeta) = match scene.physics().drive {

@@ -50,7 +50,7 @@ impl GaussianBalance {
         let RestitutionLaw::Constant(alpha) = scene.physics().restitution else {
             return None;
         };
-        let (gc, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
+        let (gc, lambda) = scene.physics().kernel.rate_constants();
         let p = 2.0 + lambda;
         let moment = 2f64.powf(p) * gamma((3.0 + p) / 2.0) / gamma(1.5);
         let kappa = PI / 6.0 * gc * (1.0 - alpha * alpha) * moment;

@@ -28,7 +28,7 @@ use gdsmc_core::vec3::Vec3;
 /// runner turns the scene's diameters and coefficients into pair kernels (the references and
 /// the cooling-rate estimate use it). `None` when a coefficient is not constant.
 pub fn pair_kernels(ph: &Physics, species: &Species) -> Option<Vec<(f64, f64)>> {
-    let (strength, _) = crate::run::estimate::kernel_constants(&ph.kernel);
+    let (strength, _) = ph.kernel.rate_constants();
     (0..species.pair_types())
         .map(|k| {
             let (s, t) = species.pair(k);
@@ -64,7 +64,7 @@ impl CoolingRates {
     pub fn new(scene: &crate::scene::Scene) -> Option<Self> {
         let ph = scene.physics();
         let species = *scene.model().species()?;
-        let (_, lambda) = crate::run::estimate::kernel_constants(&ph.kernel);
+        let (_, lambda) = ph.kernel.rate_constants();
         let pairs = pair_kernels(ph, &species)?
             .into_iter()
             .map(|(strength, alpha)| Pair {

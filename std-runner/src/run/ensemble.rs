@@ -217,7 +217,7 @@ fn cooling_rates(
     scale: f64,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Vec<f64> {
-    let (_, lambda) = crate::run::estimate::kernel_constants(&scene.physics().kernel);
+    let (_, lambda) = scene.physics().kernel.rate_constants();
     let unit = scale.powf(lambda);
     let rates = c.rates(p, scene.collisional_pairs(), rng);
     let n: usize = scene.physics().species.iter().map(|s| s.count).sum();

@@ -16,7 +16,7 @@
 //! shown in the summary; the limit is far above any useful run.
 
 use crate::error::Error;
-use crate::scene::{DriveChoice, KernelChoice, RestitutionLaw, Scene, SchemeChoice};
+use crate::scene::{DriveChoice, RestitutionLaw, Scene, SchemeChoice};
 use std::f64::consts::PI;
 
 /// Work units (events and particle updates) a run may need without `--allow-long`: the core's
@@ -91,16 +91,6 @@ pub fn typical_alpha(scene: &Scene) -> f64 {
     }
 }
 
-/// A kernel's rate constant `gamma C` and exponent `lambda` of `B = gamma C |u|^lambda`
-/// (GRW (1), (5)).
-pub fn kernel_constants(kernel: &KernelChoice) -> (f64, f64) {
-    match *kernel {
-        KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
-        KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
-        KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
-    }
-}
-
 /// The estimate for `scene`.
 pub fn estimate(scene: &Scene) -> WorkEstimate {
     let p = &scene.physics();
@@ -108,7 +98,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     let t_end = scene.times().last().copied().unwrap_or(0.0);
     let m = scene.ensembles() as f64;
     let t0 = crate::run::initial_temperature(scene);
-    let (gc, lambda) = kernel_constants(&p.kernel);
+    let (gc, lambda) = p.kernel.rate_constants();
     let alpha = typical_alpha(scene);
     // A rough gas: its noise on rotation heats it too (through the collisions), its start
     // rotational temperature is energy the translation can take, and the tangential

@@ -48,7 +48,7 @@ pub fn all(
 /// restitution, drive; not the file's name), particles and ensembles, e.g. "Smooth spheres,
 /// Maxwell kernel, alpha = 0.5, white noise (beta = 1), n = 1024, 1000 ensembles".
 pub fn title(scene: &crate::scene::Scene, ensembles: u64) -> String {
-    use gdsmc_core::physics::{DriveChoice, KernelChoice, RestitutionLaw};
+    use gdsmc_core::physics::{DriveChoice, RestitutionLaw};
     let ph = scene.physics();
     let shape = if scene.is_disks() { "disks" } else { "spheres" };
     let (surface, capital) = if ph.rotation.is_some() {
@@ -61,11 +61,7 @@ pub fn title(scene: &crate::scene::Scene, ensembles: u64) -> String {
         2 => format!("Binary mixture of {surface} {shape}"),
         k => format!("Mixture of {k} species of {surface} {shape}"),
     };
-    let kernel = match ph.kernel {
-        KernelChoice::Maxwell { .. } => "Maxwell kernel".to_string(),
-        KernelChoice::HardSpheres { .. } => "hard-sphere kernel".to_string(),
-        KernelChoice::Vhs { lambda, .. } => format!("VHS kernel (lambda = {lambda})"),
-    };
+    let kernel = ph.kernel.to_string();
     let law = match (ph.restitution, ph.pair_restitution.is_empty()) {
         (RestitutionLaw::Constant(a), true) => format!("alpha = {a}"),
         (RestitutionLaw::Constant(_), false) => "alpha per pair".to_string(),
