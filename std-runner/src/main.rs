@@ -399,13 +399,7 @@ fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
             } else {
                 threads
             };
-            let (one, many, same) = bench::scaling::measure(&sc, k)?;
-            println!(
-                "case=ensemble-scaling scene={} ensembles={} threads=1 wall_s={one:.3} threads={k} wall_s={many:.3} speedup={:.2} bit_identical={same}",
-                sc.name(),
-                sc.ensembles(),
-                one / many
-            );
+            println!("{}", bench::scaling::measure(&sc, k)?);
             Ok(())
         }
     }

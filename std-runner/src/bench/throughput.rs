@@ -12,6 +12,7 @@
 //! generator's raw rate (`case=limit-xoshiro256pp`); the host medium's line adds
 //! `background_per_s`, its grain-background collisions (BRS (26)), which are most of its work.
 
+use super::line::{Limits, Line, LoopLine, RateLine, Unit};
 use gdsmc_core::batch::{kick, sums};
 use gdsmc_core::drive::{
     Drive, HardSphereBackground, HostMedium, HostMediumParams, NoDrive, WhiteNoise,
@@ -186,26 +187,36 @@ fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
     (k as f64 * per as f64) / start.elapsed().as_secs_f64()
 }
 
-/// The machine's limits a loop line is set against.
-#[derive(Clone, Copy, Debug)]
-struct Limits {
-    /// Random pairs read and written per second at this n ([`pair_limit`]).
-    pairs: f64,
-    /// Raw xoshiro256++ numbers per second ([`rng_limit`]).
-    numbers: f64,
+/// One event-loop line: its collisions and candidates per second against the limits `lim`
+/// ([`pair_limit`], [`rng_limit`]).
+fn loop_line(
+    case: &'static str,
+    kernel: &'static str,
+    n: usize,
+    coll: f64,
+    att: f64,
+    lim: Limits,
+) -> Line {
+    Line::Loop(LoopLine {
+        case,
+        kernel,
+        n,
+        collisions_per_s: coll,
+        attempts_per_s: att,
+        limits: lim,
+        background_per_s: None,
+    })
 }
 
-/// One event-loop line: its collisions and candidates per second, the fraction of candidates
-/// that collide, and the candidates as a fraction of the pair-update limit and of the
-/// generator's raw rate (a candidate needs several numbers: the pair, the waiting time, the
-/// direction, the acceptance draw).
-fn loop_line(case: &str, kernel: &str, n: usize, coll: f64, att: f64, lim: Limits) -> String {
-    format!(
-        "case={case} kernel={kernel} n={n} collisions_per_s={coll:.4e} attempts_per_s={att:.4e} acceptance={:.3} of_pair_limit={:.3} of_rng={:.4}",
-        coll / att,
-        att / lim.pairs,
-        att / lim.numbers
-    )
+/// A rate line.
+fn rate_line(case: &'static str, n: Option<usize>, unit: Unit, per_s: f64) -> Line {
+    Line::Rate(RateLine {
+        case,
+        n,
+        unit,
+        per_s,
+        lookahead: None,
+    })
 }
 
 /// Raw xoshiro256++ numbers per second, one core.
@@ -224,18 +235,25 @@ fn rng_limit(budget: Duration) -> f64 {
 type LoopCase<'a> = dyn Fn(f64, bool) -> (f64, f64) + 'a;
 
 /// Every case, as output lines, handed to `line` as they are measured.
-pub fn run(o: &Options, mut line: impl FnMut(String)) {
+pub fn run(o: &Options, mut line: impl FnMut(Line)) {
     let g = 4.0;
     let c = 1.0 / (4.0 * PI);
     let numbers = rng_limit(o.budget);
-    line(format!(
-        "case=limit-xoshiro256pp numbers_per_s={numbers:.4e}"
+    line(rate_line(
+        "limit-xoshiro256pp",
+        None,
+        Unit::Numbers,
+        numbers,
     ));
     for &n in &o.sizes {
         let (pairs, lookahead) = pair_limit(n, o.budget);
-        line(format!(
-            "case=limit-pair-update n={n} pairs_per_s={pairs:.4e} lookahead={lookahead}"
-        ));
+        line(Line::Rate(RateLine {
+            case: "limit-pair-update",
+            n: Some(n),
+            unit: Unit::Pairs,
+            per_s: pairs,
+            lookahead: Some(lookahead),
+        }));
         let limit = Limits { pairs, numbers };
         let kernels: [(&str, &LoopCase); 3] = [
             ("maxwell", &|a, heated| {
@@ -279,17 +297,15 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             let (mut e, _) = NoSplitting::start(k, hm, law, &mut p, 0.0).expect("finite start");
             timed_with_background(&mut e, &mut p, o.budget)
         };
-        line(format!(
-            "{} background_per_s={bg:.4e}",
-            loop_line(
-                "nosplit-host-medium-alpha0.5",
-                "hard-spheres",
-                n,
-                coll,
-                att,
-                limit,
-            )
-        ));
+        line(Line::Loop(LoopLine {
+            case: "nosplit-host-medium-alpha0.5",
+            kernel: "hard-spheres",
+            n,
+            collisions_per_s: coll,
+            attempts_per_s: att,
+            limits: limit,
+            background_per_s: Some(bg),
+        }));
         // Hard spheres with no drive on the Umax majorant (GRW step 1.4), the loop before the
         // sum form: the comparison for the elastic hard-sphere line below.
         let (coll, att) = event_loop(
@@ -347,14 +363,12 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             t += 1e-3;
             kick::white_noise_kick_all(2.0, &mut p, t, &mut rng);
         });
-        line(format!(
-            "case=kick-white-noise n={n} particles_per_s={r:.4e}"
-        ));
+        line(rate_line("kick-white-noise", Some(n), Unit::Particles, r));
         let buf = system(n, 5);
         let r = rate(o.budget, n, || {
             black_box(sums::accumulate(&buf));
         });
-        line(format!("case=moment-sums n={n} particles_per_s={r:.4e}"));
+        line(rate_line("moment-sums", Some(n), Unit::Particles, r));
     }
     // The machine's other limits for the loops above.
     let mut rng = seeded(6);
@@ -365,7 +379,7 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
         }
         black_box(x);
     });
-    line(format!("case=limit-normal-ziggurat numbers_per_s={r:.4e}"));
+    line(rate_line("limit-normal-ziggurat", None, Unit::Numbers, r));
     for n in [1_000usize, 10_000_000] {
         let buf = system(n, 7);
         // Independent random reads (the addresses do not depend on earlier loads), as the
@@ -377,7 +391,7 @@ pub fn run(o: &Options, mut line: impl FnMut(String)) {
             }
             black_box(x);
         });
-        line(format!("case=limit-random-read n={n} reads_per_s={r:.4e}"));
+        line(rate_line("limit-random-read", Some(n), Unit::Reads, r));
     }
 }
 
@@ -393,13 +407,17 @@ mod tests {
         };
         let mut lines = Vec::new();
         run(&o, |l| lines.push(l));
-        let loops: Vec<_> = lines
+        let loops: Vec<&LoopLine> = lines
             .iter()
-            .filter(|l| l.starts_with("case=nosplit"))
+            .filter_map(|l| match l {
+                Line::Loop(l) => Some(l),
+                Line::Rate(_) => None,
+            })
             .collect();
         assert_eq!(loops.len(), 10);
         for l in &loops {
-            let keys: Vec<&str> = l
+            let text = Line::Loop((*l).clone()).to_string();
+            let keys: Vec<&str> = text
                 .split(' ')
                 .map(|kv| kv.split('=').next().unwrap())
                 .collect();
@@ -416,29 +434,27 @@ mod tests {
                     "of_rng",
                     "background_per_s"
                 ][..keys.len()],
-                "{l}"
+                "{text}"
             );
+            assert!(l.case.starts_with("nosplit"), "{text}");
             // Only the host medium's line counts background events.
-            assert_eq!(keys.len() == 9, l.contains("host-medium"), "{l}");
-            let num = |k: &str| -> f64 {
-                l.split(' ')
-                    .find_map(|kv| kv.strip_prefix(&format!("{k}=")))
-                    .unwrap()
-                    .parse()
-                    .unwrap()
-            };
-            assert!(num("attempts_per_s") >= num("collisions_per_s"));
-            assert!(num("collisions_per_s") > 0.0);
-            assert!(num("of_rng") > 0.0);
-            if l.contains("host-medium") {
+            assert_eq!(
+                l.background_per_s.is_some(),
+                l.case.contains("host-medium"),
+                "{text}"
+            );
+            assert!(l.attempts_per_s >= l.collisions_per_s, "{text}");
+            assert!(l.collisions_per_s > 0.0, "{text}");
+            assert!(l.of_rng() > 0.0, "{text}");
+            if let Some(bg) = l.background_per_s {
                 // BRS Example 4: about 16 background collisions per grain-grain one.
-                assert!(num("background_per_s") > num("collisions_per_s"), "{l}");
+                assert!(bg > l.collisions_per_s, "{text}");
             }
         }
         assert!(
-            lines
+            loops
                 .iter()
-                .any(|l| l.contains("kernel=maxwell n=64 ") && l.contains("elastic-alpha1"))
+                .any(|l| l.kernel == "maxwell" && l.n == 64 && l.case.contains("elastic-alpha1"))
         );
         for k in [
             "kick-white-noise",
@@ -448,7 +464,9 @@ mod tests {
             "limit-pair-update",
         ] {
             assert!(
-                lines.iter().any(|l| l.starts_with(&format!("case={k}"))),
+                lines
+                    .iter()
+                    .any(|l| matches!(l, Line::Rate(r) if r.case == k && r.per_s > 0.0)),
                 "{k}"
             );
         }
