@@ -288,14 +288,18 @@ pub fn write(
     let refs = for_scene(scene);
     let files = report::commit_run(set, scene, stats, &refs, format)?;
     let mut text = report::summary::text(scene, stats, &refs);
-    let _ = writeln!(
-        text,
-        "\nwrote {} files into {}: {}",
+    text.push_str(&wrote(&files, dir));
+    Ok(text)
+}
+
+/// The line that ends a command's output: the files written into `dir`.
+pub fn wrote(files: &[String], dir: &Path) -> String {
+    format!(
+        "\nwrote {} files into {}: {}\n",
         files.len(),
         dir.display(),
         files.join(", ")
-    );
-    Ok(text)
+    )
 }
 
 /// Writes a run's outputs into the prepared set, with every reference that applies; returns

@@ -8,7 +8,8 @@
 //! [`run`] (ensembles, statistics) <- [`reference`] (exact and hydrodynamic curves) <-
 //! [`analysis`] (tails, distributions, warnings) <- [`report`] (output sets, charts, summary)
 //! <- [`bench`] (speed), [`job`] (a run from the loaded scene to the written outputs: journal,
-//! shards, MPI, output set; the command's `run` and `merge` and the Python package call it);
+//! shards, MPI, output set; the command's `run` and `merge` and the Python package call it)
+//! <- [`sweep`] (a parameter study: many journaled runs into one table);
 //! [`reproduce`] (the papers' tables) needs [`run`] and [`reference`] only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
 //! never over what gdsmc did not write).
 
@@ -23,6 +24,7 @@ pub mod reference;
 pub mod report;
 pub mod reproduce;
 pub mod run;
+pub mod sweep;
 pub use gdsmc_scene as scene;
 
 pub use error::Error;

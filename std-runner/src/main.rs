@@ -44,31 +44,12 @@ enum Command {
     Run {
         /// The scene file (TOML), e.g. scenes/grw-example3.toml.
         scene: PathBuf,
-        /// Particles per ensemble (overrides particles.n).
-        #[arg(long)]
-        n: Option<i64>,
-        /// Number of independent ensembles (overrides run.ensembles).
-        #[arg(long)]
-        ensembles: Option<i64>,
-        /// Seed of the run (overrides run.seed); ensemble k uses its generator jumped k times.
-        #[arg(long)]
-        seed: Option<u64>,
-        /// Worker threads (default: all cores). Results are identical for any value.
-        #[arg(long, default_value_t = 0, hide_default_value = true)]
-        threads: usize,
+        #[command(flatten)]
+        flags: SceneFlags,
         /// Output directory (default: out/SCENE-NAME). Replaced only when it is empty or a
         /// whole gdsmc output set; a directory with other files, a file or a link is refused.
         #[arg(long)]
         out: Option<PathBuf>,
-        /// Override any scene value, e.g. --set collisions.restitution=0.4 (repeatable; the
-        /// value is TOML, a bare word is a string). Validated like the file; a key given twice
-        /// (here or by --n, --ensembles, --seed) is refused.
-        #[arg(long = "set", value_name = "KEY.PATH=VALUE")]
-        set: Vec<String>,
-        /// Run even when the work estimate is above the limit (1e12 events and particle
-        /// updates, about a day of one core).
-        #[arg(long)]
-        allow_long: bool,
         /// Chart formats, comma-separated: svg, png (twice the pixel size, for slides), pdf
         /// (vector, for a paper).
         #[arg(long, value_name = "svg,png,pdf", default_value = "svg")]
@@ -80,6 +61,44 @@ enum Command {
         shard: Option<String>,
         /// Start anew: do not continue the journal an interrupted run of the same scene and
         /// seed left (by default it is continued; the result is the same either way).
+        #[arg(long)]
+        fresh: bool,
+    },
+    /// Run a parameter study: the scene at every value of one or more keys, one table.
+    ///
+    /// Every point is validated before anything runs (a bad point is named), then the points
+    /// run one after another on all cores, each journaled beside DIR (default out/NAME-sweep),
+    /// so Ctrl-C keeps what is done and the same command continues. DIR gets sweep.csv (one
+    /// row per point: the varied values, seed, ensembles, the window, each observable's
+    /// mean and 99.9% half-width over the steady window, or at the last observation without
+    /// one, and each reference that applies, averaged over the same times) and sweep.json.
+    /// Point k runs with seed run.seed + k: it is `gdsmc run SCENE --set KEY=VALUE ...
+    /// --seed SEED+k` to the last bit.
+    ///
+    /// Examples:
+    ///   gdsmc sweep scenes/hcs-hard-spheres.toml --vary collisions.restitution=0.3:0.9:7
+    ///   gdsmc sweep scenes/grw-example3.toml --vary drive.beta=log:0.1:10:5 --ensembles 50
+    ///   gdsmc sweep SCENE --vary collisions.restitution=0.5,0.9 --vary particles.n=64,256
+    ///   gdsmc sweep SCENE --vary a.b=1,2,3 --vary c.d=x,y,z --zip
+    #[command(verbatim_doc_comment)]
+    Sweep {
+        /// The base scene file (TOML).
+        scene: PathBuf,
+        /// KEY=VALUES: a list (0.5,0.7,0.9; any scene value, a bare word is a string), a
+        /// range start:stop:count (both ends included) or log:start:stop:count. Repeatable:
+        /// several make a grid (the last key varies fastest), or pairs with --zip.
+        #[arg(long, value_name = "KEY=VALUES", required = true)]
+        vary: Vec<String>,
+        /// Pair the k-th values of every --vary instead of making a grid.
+        #[arg(long)]
+        zip: bool,
+        #[command(flatten)]
+        flags: SceneFlags,
+        /// Output directory (default: out/SCENE-NAME-sweep), replaced only when it is empty or
+        /// a whole gdsmc output set.
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Start every point anew instead of continuing the journals a stopped sweep left.
         #[arg(long)]
         fresh: bool,
     },
@@ -220,32 +239,55 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
     match cli.command {
         Command::Run {
             scene: path,
-            n,
-            ensembles,
-            seed,
-            threads,
+            flags,
             out,
-            set,
-            allow_long,
             format,
             shard,
             fresh,
         } => {
-            // --n, --ensembles and --seed are overrides of their scene keys: the same
-            // validation as the file's, errors naming the flag.
-            let mut overrides: Vec<scene::Override> =
-                set.into_iter().map(scene::Override::set).collect();
-            overrides.extend(scene::Override::run_flags(n, ensembles, seed));
             let job = gdsmc_runner::job::Job {
-                source: scene::Sourced::read(&path, overrides)?,
-                threads,
-                allow_long,
+                source: flags.source(&path)?,
+                threads: flags.threads,
+                allow_long: flags.allow_long,
                 shard,
                 out,
                 fresh,
                 format,
             };
             let outcome = job.run(&Terminal::new())?;
+            print!("{}", outcome.text);
+            if outcome.complete {
+                Ok(())
+            } else {
+                Err(gdsmc_runner::Error::Interrupted)
+            }
+        }
+        Command::Sweep {
+            scene: path,
+            vary,
+            zip,
+            flags,
+            out,
+            fresh,
+        } => {
+            use gdsmc_runner::sweep;
+            let s = sweep::Sweep {
+                source: flags.source(&path)?,
+                vary: vary
+                    .iter()
+                    .map(|v| sweep::vary::Vary::parse(v))
+                    .collect::<Result<_, _>>()?,
+                combine: if zip {
+                    sweep::vary::Combine::Zip
+                } else {
+                    sweep::vary::Combine::Grid
+                },
+                threads: flags.threads,
+                allow_long: flags.allow_long,
+                out,
+                fresh,
+            };
+            let outcome = s.run(&Terminal::new())?;
             print!("{}", outcome.text);
             if outcome.complete {
                 Ok(())
@@ -324,6 +366,48 @@ impl gdsmc_runner::job::Watch for Terminal {
     }
     fn note(&self, line: &str) {
         eprintln!("{line}");
+    }
+}
+
+/// The flags `run` and `sweep` share: the scene's overrides, the threads, the work limit.
+#[derive(clap::Args, Debug)]
+struct SceneFlags {
+    /// Particles per ensemble (overrides particles.n).
+    #[arg(long)]
+    n: Option<i64>,
+    /// Number of independent ensembles (overrides run.ensembles; a sweep's, per point).
+    #[arg(long)]
+    ensembles: Option<i64>,
+    /// Seed (overrides run.seed); ensemble k uses its generator jumped k times, a sweep's
+    /// point k the seed SEED + k.
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Worker threads (default: all cores). Results are identical for any value.
+    #[arg(long, default_value_t = 0, hide_default_value = true)]
+    threads: usize,
+    /// Override any scene value, e.g. --set collisions.restitution=0.4 (repeatable; the
+    /// value is TOML, a bare word is a string). Validated like the file; a key given twice
+    /// (here, by --n, --ensembles, --seed, or by a sweep's --vary) is refused.
+    #[arg(long = "set", value_name = "KEY.PATH=VALUE")]
+    set: Vec<String>,
+    /// Run even when the work estimate is above the limit (1e12 events and particle
+    /// updates, about a day of one core; a sweep's summed over its points).
+    #[arg(long)]
+    allow_long: bool,
+}
+
+impl SceneFlags {
+    /// The scene read once with the overrides: --set, then --n, --ensembles and --seed as
+    /// overrides of their keys (the same validation as the file's, errors naming the flag).
+    fn source(&self, path: &std::path::Path) -> Result<scene::Sourced, gdsmc_runner::Error> {
+        let mut overrides: Vec<scene::Override> =
+            self.set.iter().map(scene::Override::set).collect();
+        overrides.extend(scene::Override::run_flags(
+            self.n,
+            self.ensembles,
+            self.seed,
+        ));
+        Ok(scene::Sourced::read(path, overrides)?)
     }
 }
 

@@ -14,4 +14,5 @@ mod mutation;
 mod output_set;
 mod reproduce_verdicts;
 mod steady_summary;
+mod sweep;
 mod verdict;

@@ -1,0 +1,247 @@
+//! `gdsmc sweep`: a parameter study in one command. The base scene with one or several keys
+//! varied ([`vary`]: lists, linear and logarithmic ranges, a grid or zipped), every point
+//! validated as a file is before anything runs ([`point`]), then run one after another, each
+//! on all threads and journaled beside the output directory as `gdsmc run` journals a run
+//! (`.NAME.point-K.gdsmc-ensembles`), so an interrupted sweep continues where it stopped and
+//! gives the same bytes. Each point's window averages (the steady window, or the last
+//! observation) with their 99.9% intervals and every reference that applies there go into
+//! sweep.csv and sweep.json ([`table`]), written as one output set.
+//!
+//! Point `k` runs with the seed `run.seed + k` (unless `run.seed` is varied): the points are
+//! independent samples, and point `k` is the run `gdsmc run SCENE --set KEY=VALUE ...
+//! --seed SEED+k` to the last bit.
+
+pub mod point;
+pub mod table;
+pub mod vary;
+
+use crate::error::Error;
+use crate::job::{Outcome, Watch};
+use crate::report::set::OutputSet;
+use crate::run::{self, Journaled, estimate};
+use crate::scene::Sourced;
+use point::{PointResult, PointScene};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use vary::{Combine, Vary};
+
+/// A sweep as `gdsmc sweep` takes it.
+#[derive(Clone, Debug)]
+pub struct Sweep {
+    /// The base scene (with the command's `--set`, `--n`, `--ensembles`, `--seed`).
+    pub source: Sourced,
+    /// The varied keys.
+    pub vary: Vec<Vary>,
+    /// How several keys make points.
+    pub combine: Combine,
+    /// Worker threads per point (0: all cores).
+    pub threads: usize,
+    /// Run even when the summed work estimate is above the limit.
+    pub allow_long: bool,
+    /// The output directory (default out/NAME-sweep).
+    pub out: Option<PathBuf>,
+    /// Start every point anew instead of continuing its journal.
+    pub fresh: bool,
+}
+
+/// The journal of point `k` of the sweep written to `dir`: beside it, as a run's.
+fn point_journal(dir: &Path, k: usize) -> PathBuf {
+    let name = dir
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    run::journal::beside(&dir.with_file_name(format!("{name}.point-{k}")), None)
+}
+
+impl Sweep {
+    /// Every point's validated scene, in order. A key both set (`--set`, `--n`, ...) and
+    /// varied is refused, as is a point whose values break a rule (naming the point).
+    pub fn points(&self) -> Result<Vec<PointScene>, Error> {
+        let points = vary::points(&self.vary, self.combine)?;
+        for v in &self.vary {
+            let probe = crate::scene::Override::set(format!("{}=0", v.key));
+            if let Some(o) = self.source.overrides.iter().find(|o| o.overlaps(&probe)) {
+                return Err(Error::Argument {
+                    flag: "--vary".into(),
+                    message: format!(
+                        "varies {} which {} also sets ({}): give it once",
+                        v.key, o.source, o.assignment
+                    ),
+                });
+            }
+        }
+        points
+            .into_iter()
+            .enumerate()
+            .map(|(k, values)| PointScene::new(&self.source, k, values))
+            .collect()
+    }
+
+    /// The output directory: `--out`, or out/NAME-sweep.
+    pub fn dir(&self) -> PathBuf {
+        self.out.clone().unwrap_or_else(|| {
+            PathBuf::from("out").join(format!("{}-sweep", self.source.scene.name()))
+        })
+    }
+
+    /// Runs the sweep: every point validated and the summed work checked before anything
+    /// runs, the output place before any simulation; the points in order, each journaled as
+    /// it runs; sweep.csv and sweep.json written at the end (or, when stopped, of the points
+    /// finished, which a rerun keeps).
+    pub fn run(&self, watch: &dyn Watch) -> Result<Outcome, Error> {
+        let points = self.points()?;
+        let mut work = 0.0;
+        for p in &points {
+            // Each point's sizes against their limits; the work summed below.
+            work += estimate::check(&p.source.scene, self.threads, true)?.total();
+        }
+        if !self.allow_long && (work.is_nan() || work > estimate::MAX_WORK) {
+            return Err(Error::Argument {
+                flag: "--vary".into(),
+                message: format!(
+                    "gives {} points asking for about {work:.1e} events and particle updates in all, above the limit {:.0e} (about a day of one core); fewer points, smaller runs, or pass --allow-long",
+                    points.len(),
+                    estimate::MAX_WORK
+                ),
+            });
+        }
+        let dir = self.dir();
+        let set = OutputSet::prepare(&dir)?;
+        let total: u64 = points.iter().map(|p| p.source.scene.ensembles()).sum();
+        watch.begin(total);
+        let mut results = Vec::new();
+        let mut notes = Vec::new();
+        for p in &points {
+            let sc = &p.source.scene;
+            let file = point_journal(&dir, p.index);
+            let job = Journaled {
+                scene: sc,
+                header: run::journal::Header::new(&p.source, None, 0..sc.ensembles()),
+                path: &file,
+                threads: self.threads,
+                fresh: self.fresh,
+            };
+            let r = match job.run(&|k| watch.advance(k), watch.stop()) {
+                Ok(r) => r,
+                Err(e) => {
+                    watch.end();
+                    return Err(e);
+                }
+            };
+            if let Some(why) = &r.discarded {
+                notes.push(format!(
+                    "note: {} was not continued ({why}); started anew",
+                    file.display()
+                ));
+            }
+            if let Some(why) = &r.damage {
+                notes.push(format!(
+                    "note: {} was cut after its last good record ({why}); the ensembles after it were run again",
+                    file.display()
+                ));
+            }
+            if r.stats.ensembles < sc.ensembles() {
+                break; // stopped: this point's finished ensembles stay in its journal
+            }
+            results.push(PointResult::of(p, &r.stats));
+        }
+        watch.end();
+        for n in &notes {
+            watch.note(n);
+        }
+        let complete = results.len() == points.len();
+        if !complete {
+            watch.note(&format!(
+                "kept {} of {} points (and the running point's finished ensembles) beside {}: run the same command again to continue",
+                results.len(),
+                points.len(),
+                dir.display()
+            ));
+            if results.is_empty() {
+                return Err(Error::Interrupted);
+            }
+        }
+        let files = write(
+            set,
+            &self.source,
+            &self.vary,
+            self.combine,
+            complete,
+            &results,
+        )?;
+        if complete {
+            // The outputs hold everything now; the journals are no longer needed.
+            for p in &points {
+                let _ = std::fs::remove_file(point_journal(&dir, p.index));
+            }
+        }
+        let mut text = String::new();
+        let _ = writeln!(
+            text,
+            "sweep      {} points of {} ({}), {} ensembles each",
+            points.len(),
+            self.source.scene.name(),
+            self.vary
+                .iter()
+                .map(|v| v.key.as_str())
+                .collect::<Vec<_>>()
+                .join(", "),
+            self.source.scene.ensembles()
+        );
+        text.push_str(&summary(&results));
+        text.push_str(&crate::job::wrote(&files, &dir));
+        Ok(Outcome { text, complete })
+    }
+}
+
+/// Writes sweep.csv and sweep.json into the prepared set and puts it in place.
+fn write(
+    set: OutputSet,
+    base: &Sourced,
+    vary: &[Vary],
+    combine: Combine,
+    complete: bool,
+    results: &[PointResult],
+) -> Result<Vec<String>, Error> {
+    let path = set.dir().join("sweep.csv");
+    let bytes = table::csv(vary, results).map_err(|e| Error::Write {
+        path: path.clone(),
+        source: std::io::Error::other(e),
+    })?;
+    crate::files::write_atomic(&path, &bytes)?;
+    let path = set.dir().join("sweep.json");
+    let j = table::json(base.scene.name(), vary, combine, complete, results);
+    let mut text = serde_json::to_vec_pretty(&j).map_err(|e| Error::Write {
+        path: path.clone(),
+        source: std::io::Error::other(e),
+    })?;
+    text.push(b'\n');
+    crate::files::write_atomic(&path, &text)?;
+    set.commit(serde_json::json!({
+        "sweep": base.scene.name(),
+        "points": results.len(),
+        "gdsmc_version": env!("CARGO_PKG_VERSION"),
+    }))
+}
+
+/// The terminal's table: per point the varied values and the main observables' window means
+/// with their intervals (T, a2 where the run has them).
+fn summary(results: &[PointResult]) -> String {
+    let mut out = String::new();
+    for p in results {
+        let values: Vec<String> = p.values.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+        let shown: Vec<String> = p
+            .observables
+            .iter()
+            .filter(|o| matches!(o.0, "T" | "a2"))
+            .map(|(name, mean, ci)| format!("{name} = {mean:.5} ± {ci:.2e}"))
+            .collect();
+        let _ = writeln!(
+            out,
+            "point {:>3}  {}  {}",
+            p.index,
+            values.join(", "),
+            shown.join(", ")
+        );
+    }
+    out
+}

@@ -1,0 +1,139 @@
+//! A sweep's tables: sweep.csv (one row per point) and sweep.json (the same, with the varied
+//! keys, the windows and what each reference is). Neither holds a timing, so an interrupted
+//! and continued sweep writes the same bytes as an uninterrupted one.
+
+use super::point::{PointResult, Window};
+use super::vary::{Combine, Vary};
+use crate::reference::curves::Kind;
+use serde_json::{Value, json};
+
+/// The names of `items` of every point, in the order first met.
+fn union<'a>(
+    points: &'a [PointResult],
+    items: impl Fn(&'a PointResult) -> Vec<&'static str>,
+) -> Vec<&'static str> {
+    let mut out: Vec<&'static str> = Vec::new();
+    for p in points {
+        for name in items(p) {
+            if !out.contains(&name) {
+                out.push(name);
+            }
+        }
+    }
+    out
+}
+
+/// A number as observables.csv writes it (shortest round-trip text); a missing value empty.
+fn num(x: Option<f64>) -> String {
+    x.map_or(String::new(), |x| format!("{x:?}"))
+}
+
+/// sweep.csv: `point`, each varied key, `seed`, `ensembles`, `window_from`, `window_points`
+/// (the steady window; the end time and 1 without one), then each observable's window mean
+/// and `_ci` (the half-width of its 99.9% interval), then each reference's window mean; a
+/// cell is empty where a point has no such column.
+pub fn csv(vary: &[Vary], points: &[PointResult]) -> Result<Vec<u8>, csv::Error> {
+    let observables = union(points, |p| p.observables.iter().map(|o| o.0).collect());
+    let references = union(points, |p| p.references.iter().map(|r| r.name).collect());
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut header: Vec<String> = vec!["point".into()];
+    header.extend(vary.iter().map(|v| v.key.clone()));
+    header.extend(["seed", "ensembles", "window_from", "window_points"].map(String::from));
+    for o in &observables {
+        header.push(o.to_string());
+        header.push(format!("{o}_ci"));
+    }
+    header.extend(references.iter().map(|r| r.to_string()));
+    w.write_record(&header)?;
+    for p in points {
+        let mut rec = vec![p.index.to_string()];
+        rec.extend(p.values.iter().map(|(_, v)| v.clone()));
+        let (from, count) = match p.window {
+            Window::Steady { from, points } => (from, points),
+            Window::End { t } => (t, 1),
+        };
+        rec.extend([
+            p.seed.to_string(),
+            p.ensembles.to_string(),
+            format!("{from:?}"),
+            count.to_string(),
+        ]);
+        for o in &observables {
+            let found = p.observables.iter().find(|x| x.0 == *o);
+            rec.push(num(found.map(|x| x.1)));
+            rec.push(num(found.map(|x| x.2)));
+        }
+        for r in &references {
+            rec.push(num(p
+                .references
+                .iter()
+                .find(|x| x.name == *r)
+                .map(|x| x.value)));
+        }
+        w.write_record(&rec)?;
+    }
+    w.into_inner().map_err(|e| e.into_error().into())
+}
+
+/// The words sweep.json gives a reference's kind.
+fn kind(k: Kind) -> &'static str {
+    match k {
+        Kind::MeanAtN => "exact mean at n",
+        Kind::Limit => "n -> infinity limit",
+        Kind::Approximation => "approximation",
+    }
+}
+
+/// A JSON number, or null for a value that is not finite.
+fn jnum(x: f64) -> Value {
+    if x.is_finite() { json!(x) } else { Value::Null }
+}
+
+/// sweep.json: the scene, the varied keys and how they combine, and each point's values,
+/// seed, window, observables (mean and ci) and references (value, what it is of, kind and
+/// source).
+pub fn json(
+    scene: &str,
+    vary: &[Vary],
+    combine: Combine,
+    complete: bool,
+    points: &[PointResult],
+) -> Value {
+    json!({
+        "scene": scene,
+        "vary": vary.iter().map(|v| json!({ "key": v.key, "values": v.values })).collect::<Vec<_>>(),
+        "combine": match combine { Combine::Grid => "grid", Combine::Zip => "zip" },
+        "complete": complete,
+        "gdsmc_version": env!("CARGO_PKG_VERSION"),
+        "points": points.iter().map(|p| {
+            let window = match p.window {
+                Window::Steady { from, points } => json!({ "steady_from": from, "points": points }),
+                Window::End { t } => json!({ "end": t }),
+            };
+            let observables: serde_json::Map<String, Value> = p
+                .observables
+                .iter()
+                .map(|(name, mean, ci)| (name.to_string(), json!({ "mean": jnum(*mean), "ci": jnum(*ci) })))
+                .collect();
+            let references: serde_json::Map<String, Value> = p
+                .references
+                .iter()
+                .map(|r| {
+                    (
+                        r.name.to_string(),
+                        json!({ "value": jnum(r.value), "of": r.of, "kind": kind(r.kind), "source": r.source }),
+                    )
+                })
+                .collect();
+            json!({
+                "point": p.index,
+                "values": p.values.iter().map(|(k, v)| (k.clone(), Value::String(v.clone()))).collect::<serde_json::Map<_, _>>(),
+                "seed": p.seed,
+                "ensembles": p.ensembles,
+                "window": window,
+                "observables": observables,
+                "references": references,
+            })
+        }).collect::<Vec<_>>(),
+    })
+}
