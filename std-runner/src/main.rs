@@ -101,6 +101,9 @@ enum Command {
         /// Start every point anew instead of continuing the journals a stopped sweep left.
         #[arg(long)]
         fresh: bool,
+        /// Chart formats, comma-separated: svg, png, pdf.
+        #[arg(long, value_name = "svg,png,pdf", default_value = "svg")]
+        format: gdsmc_runner::report::charts::Formats,
     },
     /// Merge shards into the outputs of the whole run (byte-identical to `gdsmc run`).
     ///
@@ -269,6 +272,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             flags,
             out,
             fresh,
+            format,
         } => {
             use gdsmc_runner::sweep;
             let s = sweep::Sweep {
@@ -286,6 +290,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 allow_long: flags.allow_long,
                 out,
                 fresh,
+                format,
             };
             let outcome = s.run(&Terminal::new())?;
             print!("{}", outcome.text);

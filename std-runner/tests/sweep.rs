@@ -36,6 +36,7 @@ fn sweep(vary: &[&str], sets: &[&str], out: &Path, threads: usize) -> Sweep {
         allow_long: false,
         out: Some(out.to_path_buf()),
         fresh: false,
+        format: "svg".parse().unwrap(),
     }
 }
 
@@ -255,4 +256,77 @@ fn a_users_directory_is_never_replaced() {
         "mine"
     );
     assert_eq!(std::fs::read_dir(&mine).unwrap().count(), 1);
+}
+
+/// Every chart of three small sweeps (a cooling state's a2 against alpha beside its Sonine
+/// approximation; a grid of the heated Maxwell gas over beta on a logarithmic range and alpha,
+/// each alpha a series with its exact temperature; a rough gas over the tangential
+/// restitution) passes the run charts' review (`Geometry::objections`: legend off the data,
+/// every point and bar end inside a plot, lines told apart) and its title names the physics
+/// (not the file), n and the ensembles per point, and not the varied values.
+#[test]
+fn the_charts_of_a_sweep_are_readable() {
+    let r = root("charts");
+    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let cases: [(&str, &[&str], &[&str]); 3] = [
+        (
+            "hcs-hard-spheres.toml",
+            &["collisions.restitution=0.5,0.7,0.9"],
+            &["observe.steady_from=20"],
+        ),
+        (
+            "grw-example3.toml",
+            &["drive.beta=log:0.5:2:3", "collisions.restitution=0.5,1"],
+            &[],
+        ),
+        (
+            "rough-hcs.toml",
+            &["rotation.tangential_restitution=-0.5,0,0.5"],
+            &[],
+        ),
+    ];
+    let mut checked = 0;
+    for (k, (file, vary, sets)) in cases.into_iter().enumerate() {
+        let mut overrides: Vec<Override> = sets.iter().map(|s| Override::set(*s)).collect();
+        overrides.extend(Override::run_flags(Some(256), Some(3), None));
+        let s = Sweep {
+            source: Sourced::read(&scenes.join(file), overrides).unwrap(),
+            vary: vary.iter().map(|v| Vary::parse(v).unwrap()).collect(),
+            combine: Combine::Grid,
+            threads: 0,
+            allow_long: true,
+            out: Some(r.join(k.to_string())),
+            fresh: false,
+            format: "svg".parse().unwrap(),
+        };
+        let points = s.points().unwrap();
+        let results: Vec<_> = points
+            .iter()
+            .map(|p| {
+                let st = gdsmc_runner::run::run(&p.source.scene, 0, &|_| {}).unwrap();
+                gdsmc_runner::sweep::point::PointResult::of(p, &st)
+            })
+            .collect();
+        let charts = gdsmc_runner::sweep::chart::charts(&s.source, &s.vary, &points, &results);
+        assert!(charts.iter().any(|(stem, _)| stem == "T"), "{file}");
+        for (stem, chart) in &charts {
+            let c = chart
+                .as_ref()
+                .unwrap_or_else(|e| panic!("{file}: {stem}: {e}"));
+            let g = &c.geometry;
+            let at = format!("{file}: {stem}");
+            assert!(
+                g.title.contains("n = 256")
+                    && g.title.contains("3 ensembles per point")
+                    && (g.title.contains("spheres") || g.title.contains("disks"))
+                    && !g.title.contains(".toml")
+                    && !g.title.contains("alpha = 0.5"),
+                "{at}: title {}",
+                g.title
+            );
+            assert_eq!(g.objections(), Vec::<String>::new(), "{at}");
+            checked += 1;
+        }
+    }
+    assert!(checked > 30, "only {checked} charts checked");
 }

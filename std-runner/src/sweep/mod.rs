@@ -11,12 +11,14 @@
 //! independent samples, and point `k` is the run `gdsmc run SCENE --set KEY=VALUE ...
 //! --seed SEED+k` to the last bit.
 
+pub mod chart;
 pub mod point;
 pub mod table;
 pub mod vary;
 
 use crate::error::Error;
 use crate::job::{Outcome, Watch};
+use crate::report::charts::Formats;
 use crate::report::set::OutputSet;
 use crate::run::{self, Journaled, estimate};
 use crate::scene::Sourced;
@@ -42,6 +44,8 @@ pub struct Sweep {
     pub out: Option<PathBuf>,
     /// Start every point anew instead of continuing its journal.
     pub fresh: bool,
+    /// Chart formats.
+    pub format: Formats,
 }
 
 /// The journal of point `k` of the sweep written to `dir`: beside it, as a run's.
@@ -160,14 +164,8 @@ impl Sweep {
                 return Err(Error::Interrupted);
             }
         }
-        let files = write(
-            set,
-            &self.source,
-            &self.vary,
-            self.combine,
-            complete,
-            &results,
-        )?;
+        let charts = chart::charts(&self.source, &self.vary, &points, &results);
+        let files = write(set, self, complete, &results, &charts)?;
         if complete {
             // The outputs hold everything now; the journals are no longer needed.
             for p in &points {
@@ -193,15 +191,16 @@ impl Sweep {
     }
 }
 
-/// Writes sweep.csv and sweep.json into the prepared set and puts it in place.
+/// Writes sweep.csv, sweep.json and the charts into the prepared set and puts it in place.
 fn write(
     set: OutputSet,
-    base: &Sourced,
-    vary: &[Vary],
-    combine: Combine,
+    sweep: &Sweep,
     complete: bool,
     results: &[PointResult],
+    charts: &[(String, Result<crate::report::charts::Chart, String>)],
 ) -> Result<Vec<String>, Error> {
+    let (base, vary) = (&sweep.source, &sweep.vary);
+    crate::report::charts::write(set.dir(), charts, sweep.format)?;
     let path = set.dir().join("sweep.csv");
     let bytes = table::csv(vary, results).map_err(|e| Error::Write {
         path: path.clone(),
@@ -209,7 +208,7 @@ fn write(
     })?;
     crate::files::write_atomic(&path, &bytes)?;
     let path = set.dir().join("sweep.json");
-    let j = table::json(base.scene.name(), vary, combine, complete, results);
+    let j = table::json(base.scene.name(), vary, sweep.combine, complete, results);
     let mut text = serde_json::to_vec_pretty(&j).map_err(|e| Error::Write {
         path: path.clone(),
         source: std::io::Error::other(e),

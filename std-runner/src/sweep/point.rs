@@ -107,24 +107,47 @@ pub struct PointResult {
     pub references: Vec<ReferenceValue>,
 }
 
+/// The observation window of `scene`'s averages: its steady window, or its last observation
+/// time; and the indices of the observation times in it.
+pub fn window(scene: &crate::scene::Scene) -> (Window, std::ops::Range<usize>) {
+    let times = scene.times();
+    let last = times.len() - 1;
+    match scene.steady_from() {
+        Some(first) => (
+            Window::Steady {
+                from: times[first],
+                points: times.len() - first,
+            },
+            first..times.len(),
+        ),
+        None => (Window::End { t: times[last] }, last..last + 1),
+    }
+}
+
+/// Each reference that applies to `scene`, averaged over its window ([`window`]).
+pub fn references(scene: &crate::scene::Scene) -> Vec<ReferenceValue> {
+    let (_, span) = window(scene);
+    let times = &scene.times()[span];
+    for_scene(scene)
+        .into_iter()
+        .map(|r| ReferenceValue {
+            name: r.name,
+            of: r.of,
+            kind: r.kind,
+            source: r.source,
+            value: times.iter().map(|&t| (r.curve)(t)).sum::<f64>() / times.len() as f64,
+        })
+        .collect()
+}
+
 impl PointResult {
     /// The window averages of a finished point's statistics: the steady-state window when
     /// the scene has one (each ensemble's average over it, then the mean over ensembles with
     /// its interval, as summary.json's `steady_state`), else the last observation; and each
     /// reference averaged over the same observation times.
     pub fn of(p: &PointScene, stats: &RunStats) -> Self {
-        let times = &stats.times;
-        let last = times.len() - 1;
-        let (window, span) = match &stats.steady {
-            Some(st) => (
-                Window::Steady {
-                    from: times[st.first],
-                    points: st.points,
-                },
-                st.first..st.first + st.points,
-            ),
-            None => (Window::End { t: times[last] }, last..last + 1),
-        };
+        let last = stats.times.len() - 1;
+        let (window, _) = window(&p.source.scene);
         let observables = stats
             .names
             .iter()
@@ -137,19 +160,7 @@ impl PointResult {
                 (name, mean, ci)
             })
             .collect();
-        let references = for_scene(&p.source.scene)
-            .into_iter()
-            .map(|r| {
-                let sum: f64 = times[span.clone()].iter().map(|&t| (r.curve)(t)).sum();
-                ReferenceValue {
-                    name: r.name,
-                    of: r.of,
-                    kind: r.kind,
-                    source: r.source,
-                    value: sum / span.len() as f64,
-                }
-            })
-            .collect();
+        let references = references(&p.source.scene);
         PointResult {
             index: p.index,
             values: p.values.clone(),

@@ -28,12 +28,17 @@ fn num(x: Option<f64>) -> String {
     x.map_or(String::new(), |x| format!("{x:?}"))
 }
 
+/// Every observable of the points, in the order first met.
+pub fn observable_names(points: &[PointResult]) -> Vec<&'static str> {
+    union(points, |p| p.observables.iter().map(|o| o.0).collect())
+}
+
 /// sweep.csv: `point`, each varied key, `seed`, `ensembles`, `window_from`, `window_points`
 /// (the steady window; the end time and 1 without one), then each observable's window mean
 /// and `_ci` (the half-width of its 99.9% interval), then each reference's window mean; a
 /// cell is empty where a point has no such column.
 pub fn csv(vary: &[Vary], points: &[PointResult]) -> Result<Vec<u8>, csv::Error> {
-    let observables = union(points, |p| p.observables.iter().map(|o| o.0).collect());
+    let observables = observable_names(points);
     let references = union(points, |p| p.references.iter().map(|r| r.name).collect());
     let mut w = csv::Writer::from_writer(Vec::new());
     let mut header: Vec<String> = vec!["point".into()];

@@ -10,6 +10,9 @@ pub struct Vary {
     pub key: String,
     /// Its values in order.
     pub values: Vec<String>,
+    /// Whether the values were given as a logarithmic range (the charts then draw the
+    /// references on a logarithmic grid).
+    pub log: bool,
 }
 
 /// Most points a sweep may have (a typo in a range's count should not start a week of runs;
@@ -139,6 +142,7 @@ impl Vary {
         Ok(Vary {
             key: key.to_string(),
             values,
+            log: parts.first() == Some(&"log"),
         })
     }
 }

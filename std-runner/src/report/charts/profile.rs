@@ -46,6 +46,13 @@ pub struct Series {
     pub color: RGBColor,
 }
 
+/// A tick label: the value to 12 significant digits, printed shortest (a tick at
+/// `0.12000000000000001` reads `0.12`).
+fn tick(y: f64) -> String {
+    let rounded: f64 = format!("{y:.11e}").parse().unwrap_or(y);
+    format!("{rounded}")
+}
+
 /// A chart of several series against one variable, on a linear or logarithmic y axis.
 pub fn profile(
     title: &str,
@@ -80,6 +87,11 @@ pub fn profile(
     }
     if !(x0 < x1 && y0 <= y1) {
         return Err("no finite values to draw".into());
+    }
+    if has_points {
+        // Points at the ends of the range keep their error bars off the axes.
+        let pad = 0.02 * (x1 - x0);
+        (x0, x1) = (x0 - pad, x1 + pad);
     }
     let (y_lo, y_hi) = if log_y {
         (y0 / 2.0, y1 * 2.0)
@@ -118,7 +130,7 @@ pub fn profile(
             ($chart:expr) => {{
                 let mut chart = $chart;
                 let fmt_log = |y: &f64| format!("{y:.0e}");
-                let fmt_lin = |y: &f64| format!("{y}");
+                let fmt_lin = |y: &f64| tick(*y);
                 let fmt: &dyn Fn(&f64) -> String = if log_y { &fmt_log } else { &fmt_lin };
                 chart
                     .configure_mesh()
