@@ -38,6 +38,7 @@ mod error;
 mod overrides;
 pub mod schema;
 mod validate;
+pub mod vary;
 
 pub use error::Error;
 pub use gdsmc_core::physics::{
@@ -459,6 +460,16 @@ pub fn parse(path: &Path, text: &str) -> Result<Scene, Error> {
         message: e.to_string().trim_end().to_string(),
     })?;
     file.validate(path, text)
+}
+
+/// The `[sweep]` plan of a scene file's text (`None` without the table), checked as the file
+/// is: a bad value is named by its key and line.
+pub fn sweep_plan(path: &Path, text: &str) -> Result<Option<vary::Plan>, Error> {
+    let file: SceneFile = toml::from_str(text).map_err(|e| Error::Parse {
+        path: PathBuf::from(path),
+        message: e.to_string().trim_end().to_string(),
+    })?;
+    file.sweep_plan(path, text)
 }
 
 /// Reads a scene file.

@@ -45,6 +45,21 @@ pub struct SceneFile {
     /// `[rotation]`: rough particles (none: smooth particles).
     #[serde(default)]
     pub rotation: Option<RotationSpec>,
+    /// `[sweep]`: the keys `gdsmc sweep` varies when it is given no `--vary` (`gdsmc run`
+    /// runs the scene as written).
+    #[serde(default)]
+    pub sweep: Option<SweepSpec>,
+}
+
+/// `[sweep]`: what `gdsmc sweep` varies, in the syntax of its `--vary`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepSpec {
+    /// `KEY=VALUES` strings, e.g. `["collisions.restitution=0.3:0.9:7"]`.
+    pub vary: Spanned<Vec<String>>,
+    /// Pair the k-th values of every key instead of making a grid (default false).
+    #[serde(default)]
+    pub zip: bool,
 }
 
 /// `[rotation]`: rough particles with tangential restitution (Huthmann and Zippelius 1997);

@@ -6,3 +6,4 @@ mod docs_examples;
 mod mixture_scenes;
 mod rough_scenes;
 mod scene_errors;
+mod sweep_table;

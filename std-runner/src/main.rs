@@ -87,7 +87,8 @@ enum Command {
         /// KEY=VALUES: a list (0.5,0.7,0.9; any scene value, a bare word is a string), a
         /// range start:stop:count (both ends included) or log:start:stop:count. Repeatable:
         /// several make a grid (the last key varies fastest), or pairs with --zip.
-        #[arg(long, value_name = "KEY=VALUES", required = true)]
+        /// Without --vary, the scene's [sweep] table says what varies.
+        #[arg(long, value_name = "KEY=VALUES")]
         vary: Vec<String>,
         /// Pair the k-th values of every --vary instead of making a grid.
         #[arg(long)]
@@ -274,18 +275,39 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             fresh,
             format,
         } => {
-            use gdsmc_runner::sweep;
+            use gdsmc_runner::sweep::{self, vary};
+            let source = flags.source(&path)?;
+            let plan = if vary.is_empty() {
+                scene::sweep_plan(&path, &source.text)?.ok_or_else(|| {
+                    gdsmc_runner::Error::Argument {
+                        flag: "--vary".into(),
+                        message: format!(
+                            "is required: {} has no [sweep] table saying what varies",
+                            path.display()
+                        ),
+                    }
+                })?
+            } else {
+                vary::Plan {
+                    vary: vary
+                        .iter()
+                        .map(|v| vary::Vary::parse(v))
+                        .collect::<Result<_, _>>()
+                        .map_err(|message| gdsmc_runner::Error::Argument {
+                            flag: "--vary".into(),
+                            message,
+                        })?,
+                    combine: if zip {
+                        vary::Combine::Zip
+                    } else {
+                        vary::Combine::Grid
+                    },
+                }
+            };
             let s = sweep::Sweep {
-                source: flags.source(&path)?,
-                vary: vary
-                    .iter()
-                    .map(|v| sweep::vary::Vary::parse(v))
-                    .collect::<Result<_, _>>()?,
-                combine: if zip {
-                    sweep::vary::Combine::Zip
-                } else {
-                    sweep::vary::Combine::Grid
-                },
+                source,
+                vary: plan.vary,
+                combine: plan.combine,
                 threads: flags.threads,
                 allow_long: flags.allow_long,
                 out,

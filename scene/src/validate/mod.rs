@@ -11,6 +11,7 @@ mod particles;
 mod rotation;
 pub(crate) mod scheme;
 pub mod species;
+pub(crate) mod sweep;
 
 use crate::Scene;
 use crate::error::Error;
@@ -116,6 +117,11 @@ pub(crate) fn physics_rules(
 }
 
 impl SceneFile {
+    /// The file's `[sweep]` plan, checked (`path` and `text` name a bad value's line).
+    pub fn sweep_plan(&self, path: &Path, text: &str) -> Result<Option<crate::vary::Plan>, Error> {
+        sweep::sweep(&Ctx::new(path, text), &self.sweep)
+    }
+
     /// Disks (`particles.dimension = 2`) run, observe their moments and speed shells (ring
     /// areas) and compare with the references written for any dimension; MS's reduced
     /// distribution with its tail laws, BRS's marginal distribution and the collisional moments
@@ -169,6 +175,9 @@ impl SceneFile {
         let observe = observe::observe(&ctx, &self.observe, &times, &physics)?;
         let histograms = observe::histograms(&ctx, self)?;
         let (ensembles, seed) = observe::run(&ctx, &self.run)?;
+        // Checked with the file (a bad table is refused by `gdsmc run` too), read by the sweep
+        // through `crate::sweep_plan`.
+        sweep::sweep(&ctx, &self.sweep)?;
         let name = self.name.clone().unwrap_or_else(|| {
             path.file_stem()
                 .map(|s| s.to_string_lossy().into_owned())

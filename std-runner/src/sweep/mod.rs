@@ -14,7 +14,8 @@
 pub mod chart;
 pub mod point;
 pub mod table;
-pub mod vary;
+
+pub use crate::scene::vary;
 
 use crate::error::Error;
 use crate::job::{Outcome, Watch};
@@ -60,7 +61,10 @@ impl Sweep {
     /// Every point's validated scene, in order. A key both set (`--set`, `--n`, ...) and
     /// varied is refused, as is a point whose values break a rule (naming the point).
     pub fn points(&self) -> Result<Vec<PointScene>, Error> {
-        let points = vary::points(&self.vary, self.combine)?;
+        let points = vary::points(&self.vary, self.combine).map_err(|message| Error::Argument {
+            flag: "--vary".into(),
+            message,
+        })?;
         for v in &self.vary {
             let probe = crate::scene::Override::set(format!("{}=0", v.key));
             if let Some(o) = self.source.overrides.iter().find(|o| o.overlaps(&probe)) {

@@ -1,7 +1,7 @@
 //! What a sweep varies: `KEY=VALUES` (a list `0.5,0.7,0.9`, a linear range `0.3:0.9:7` or a
-//! logarithmic one `log:0.01:1:5`), and the points several of them make (a grid, or zipped).
-
-use crate::error::Error;
+//! logarithmic one `log:0.01:1:5`), and the points several of them make (a grid, or zipped):
+//! the one syntax of `gdsmc sweep --vary` and of a scene file's `[sweep]` table. Errors are the
+//! rule's words; the caller names where the text came from (the flag, or the file's line).
 
 /// One varied key and its values, each as the text of a scene value (TOML, or a bare word).
 #[derive(Clone, Debug, PartialEq)]
@@ -23,11 +23,8 @@ pub const MAX_POINTS: usize = 10_000;
 /// `0.39999999999999997`.
 const RANGE_DIGITS: usize = 12;
 
-fn bad(spec: &str, message: String) -> Error {
-    Error::Argument {
-        flag: "--vary".into(),
-        message: format!("{spec}: {message}"),
-    }
+fn bad(spec: &str, message: String) -> String {
+    format!("{spec}: {message}")
 }
 
 /// A range's value `x` rounded to [`RANGE_DIGITS`] significant digits, as scene text: an
@@ -45,7 +42,7 @@ fn range_value(x: f64) -> String {
 }
 
 /// A range's number (`start`, `stop`): finite.
-fn number(spec: &str, what: &str, text: &str) -> Result<f64, Error> {
+fn number(spec: &str, what: &str, text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
         Ok(x) if x.is_finite() => Ok(x),
         _ => Err(bad(
@@ -56,7 +53,7 @@ fn number(spec: &str, what: &str, text: &str) -> Result<f64, Error> {
 }
 
 /// A range's count: an integer >= 2 and at most [`MAX_POINTS`].
-fn count(spec: &str, text: &str) -> Result<usize, Error> {
+fn count(spec: &str, text: &str) -> Result<usize, String> {
     match text.trim().parse::<usize>() {
         Ok(k) if (2..=MAX_POINTS).contains(&k) => Ok(k),
         _ => Err(bad(
@@ -71,7 +68,7 @@ impl Vary {
     /// word), `KEY=start:stop:count` (`count` values evenly spaced from `start` to `stop`,
     /// both included) or `KEY=log:start:stop:count` (evenly spaced in `log`, `start` and
     /// `stop` > 0). Range values are rounded to 12 significant digits.
-    pub fn parse(spec: &str) -> Result<Self, Error> {
+    pub fn parse(spec: &str) -> Result<Self, String> {
         let Some((key, values)) = spec.split_once('=') else {
             return Err(bad(
                 spec,
@@ -156,40 +153,41 @@ pub enum Combine {
     Zip,
 }
 
+/// What a sweep varies and how its keys combine (a scene file's `[sweep]`, or the command's
+/// `--vary` and `--zip`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Plan {
+    /// The varied keys.
+    pub vary: Vec<Vary>,
+    /// How several keys make points.
+    pub combine: Combine,
+}
+
 /// One point of a sweep: a value for each varied key, in the order of the keys.
 pub type Point = Vec<(String, String)>;
 
 /// The points of `vary` combined by `how`. Refuses no key, a key given twice, zipped lists of
 /// different lengths and more than [`MAX_POINTS`] points.
-pub fn points(vary: &[Vary], how: Combine) -> Result<Vec<Point>, Error> {
+pub fn points(vary: &[Vary], how: Combine) -> Result<Vec<Point>, String> {
     if vary.is_empty() {
-        return Err(Error::Argument {
-            flag: "--vary".into(),
-            message: "is required: at least one KEY=VALUES".into(),
-        });
+        return Err("needs at least one KEY=VALUES".into());
     }
     for (i, a) in vary.iter().enumerate() {
         if vary[..i].iter().any(|b| b.key == a.key) {
-            return Err(Error::Argument {
-                flag: "--vary".into(),
-                message: format!("varies {} twice: give each key once", a.key),
-            });
+            return Err(format!("varies {} twice: give each key once", a.key));
         }
     }
     match how {
         Combine::Zip => {
             let len = vary[0].values.len();
             if let Some(v) = vary.iter().find(|v| v.values.len() != len) {
-                return Err(Error::Argument {
-                    flag: "--zip".into(),
-                    message: format!(
-                        "needs lists of one length: {} has {} values, {} has {}",
-                        vary[0].key,
-                        len,
-                        v.key,
-                        v.values.len()
-                    ),
-                });
+                return Err(format!(
+                    "zips lists of different lengths: {} has {} values, {} has {}; zipped lists must be of one length",
+                    vary[0].key,
+                    len,
+                    v.key,
+                    v.values.len()
+                ));
             }
             Ok((0..len)
                 .map(|k| {
@@ -204,10 +202,7 @@ pub fn points(vary: &[Vary], how: Combine) -> Result<Vec<Point>, Error> {
                 .iter()
                 .try_fold(1usize, |acc, v| acc.checked_mul(v.values.len()))
                 .filter(|&t| t <= MAX_POINTS)
-                .ok_or_else(|| Error::Argument {
-                    flag: "--vary".into(),
-                    message: format!("makes a grid of more than {MAX_POINTS} points"),
-                })?;
+                .ok_or_else(|| format!("makes a grid of more than {MAX_POINTS} points"))?;
             Ok((0..total)
                 .map(|mut k| {
                     // The last key varies fastest.
@@ -257,8 +252,8 @@ mod tests {
             ("a.b=1:2", "VALUES must be a list"),
             ("a.b=1,,2", "a value is empty"),
         ] {
-            let e = Vary::parse(spec).unwrap_err().to_string();
-            assert!(e.contains(words) && e.contains("--vary"), "{spec}: {e}");
+            let e = Vary::parse(spec).unwrap_err();
+            assert!(e.contains(words) && e.starts_with(spec), "{spec}: {e}");
         }
     }
 
