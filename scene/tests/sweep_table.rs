@@ -33,7 +33,10 @@ fn a_sweep_table_gives_its_plan() {
 #[test]
 fn a_bad_sweep_table_is_refused_at_its_line() {
     for (table, words) in [
-        ("vary = [\"collisions.restitution=0.5:0.9\"]", "sweep.vary[0]"),
+        (
+            "vary = [\"collisions.restitution=0.5:0.9\"]",
+            "sweep.vary[0]",
+        ),
         ("vary = [\"a=1,2\", \"b=1,2,3\"]\nzip = true", "one length"),
         ("vary = [\"a=1\", \"a=2\"]", "twice"),
         ("vary = []", "at least one"),

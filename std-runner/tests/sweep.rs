@@ -330,3 +330,38 @@ fn the_charts_of_a_sweep_are_readable() {
     }
     assert!(checked > 30, "only {checked} charts checked");
 }
+
+/// `gdsmc sweep` with no `--vary` takes the scene's `[sweep]` table: the shipped cooling-state
+/// sweep (9 values of alpha, spheres and disks) gives 18 rows, each with its Sonine value.
+#[test]
+fn the_command_takes_the_scenes_sweep_table() {
+    let r = root("table");
+    let scene = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/sweep-hcs-a2.toml");
+    let o = Command::new(env!("CARGO_BIN_EXE_gdsmc"))
+        .arg("sweep")
+        .arg(&scene)
+        .args([
+            "--n",
+            "64",
+            "--ensembles",
+            "2",
+            "--set",
+            "observe.t_end=20",
+            "--set",
+        ])
+        .arg("observe.steady_from=10")
+        .arg("--out")
+        .arg(r.join("o"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (header, rows) = csv_cells(&r.join("o").join("sweep.csv"));
+    assert_eq!(rows.len(), 18);
+    assert_eq!(
+        header[1..3],
+        ["collisions.restitution", "particles.dimension"]
+    );
+    let sonine = header.iter().position(|h| h == "a2_sonine").unwrap();
+    assert!(rows.iter().all(|row| row[sonine].parse::<f64>().is_ok()));
+    assert_eq!(rows[17][1..3], ["0.9", "2"]);
+}

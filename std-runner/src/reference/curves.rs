@@ -460,7 +460,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
         out.push(ReferenceCurve {
             name: "a2_sonine",
             of: name::A2,
-            source: "van Noije and Ernst 1998, first Sonine approximation of the cooling state (MS (5) for d = 3); an approximation, reached once the gas has relaxed",
+            source: "van Noije and Ernst 1998, first Sonine approximation of the cooling state in d dimensions (MS (5) for d = 3); an approximation, reached once the gas has relaxed",
             kind: Kind::Approximation,
             curve: Box::new(move |_| a2),
         });

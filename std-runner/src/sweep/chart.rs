@@ -58,6 +58,17 @@ fn common_title(points: &[PointScene]) -> String {
         .filter(|part| titles.iter().all(|t| t.split(", ").any(|q| q == **part)))
         .map(|part| part.to_string())
         .collect();
+    // The particles (the first words) are named even when the points differ in them.
+    if kept.first().map(String::as_str) != Some(parts[0]) {
+        let mut kinds: Vec<&str> = Vec::new();
+        for t in &titles {
+            let k = t.split(", ").next().unwrap_or_default();
+            if !kinds.contains(&k) {
+                kinds.push(k);
+            }
+        }
+        kept.insert(0, kinds.join(" or "));
+    }
     if !kept.iter().any(|p| p.starts_with("n = ")) {
         kept.push("n varied".into());
     }
@@ -175,7 +186,8 @@ pub fn charts(
                     });
                 }
             }
-            let title = format!("{common}; {name} against {xkey}");
+            // The axes name the observable and the key; the title is the physics.
+            let title = common.clone();
             let y = crate::run::columns::axis_label(name);
             (name.to_string(), profile(&title, xkey, &y, false, &series))
         })

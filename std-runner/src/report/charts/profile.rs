@@ -137,6 +137,7 @@ pub fn profile(
                     .x_desc(x_desc)
                     .y_desc(y_desc)
                     .y_label_formatter(fmt)
+                    .x_label_formatter(&|x: &f64| tick(*x))
                     .draw()
                     .map_err(|e| e.to_string())?;
                 let (xr, yr) = chart.plotting_area().get_pixel_range();
