@@ -39,6 +39,8 @@ __all__ = [
     "Result",
     "Reproduced",
     "run",
+    "sweep",
+    "Swept",
     "reproduce",
     "__version__",
 ]
@@ -145,11 +147,15 @@ class Result:
 class _TextBar:
     """A progress bar on stderr when tqdm is not installed."""
 
-    def __init__(self, total: int):
+    def __init__(self, total: Optional[int]):
         self.total, self.n = total, 0
 
     def update(self, k: int) -> None:
         self.n += k
+        if not self.total:
+            sys.stderr.write(f"\r{self.n} ensembles")
+            sys.stderr.flush()
+            return
         width = 40
         full = int(width * self.n / max(self.total, 1))
         sys.stderr.write(f"\r[{'#' * full}{'.' * (width - full)}] {self.n}/{self.total} ensembles")
@@ -159,7 +165,7 @@ class _TextBar:
         sys.stderr.write("\n")
 
 
-def _bar(total: int):
+def _bar(total: Optional[int]):
     try:
         from tqdm.auto import tqdm
 
@@ -210,6 +216,142 @@ def run(
             raise KeyboardInterrupt("interrupted before any ensemble finished")
         raise Interrupted(Result(raw), asked)
     return Result(raw)
+
+
+def _vary_specs(vary) -> List[str]:
+    """``vary`` as the command's ``KEY=VALUES`` strings: a string or a list of them as they
+    are, a dict ``{key: values}`` with each value list written as scene values (a string
+    value such as ``"0.3:0.9:7"`` is taken as the command's range syntax)."""
+    if vary is None:
+        return []
+    if isinstance(vary, str):
+        return [vary]
+    if isinstance(vary, dict):
+        specs = []
+        for key, values in vary.items():
+            if isinstance(values, str):
+                specs.append(f"{key}={values}")
+                continue
+            texts = []
+            for v in values:
+                if isinstance(v, bool):
+                    texts.append("true" if v else "false")
+                elif isinstance(v, (int, np.integer)):
+                    texts.append(str(int(v)))
+                elif isinstance(v, (float, np.floating)):
+                    texts.append(repr(float(v)))
+                else:
+                    texts.append(str(v))
+            specs.append(f"{key}={','.join(texts)}")
+        return specs
+    return [str(v) for v in vary]
+
+
+class Swept:
+    """A sweep's results, as ``gdsmc sweep`` writes them.
+
+    Attributes:
+        table: every column of sweep.csv (``point``, the varied keys, ``seed``,
+            ``ensembles``, ``window_from``, ``window_points``, ``NAME`` and ``NAME_ci`` for every
+            observable, the references), numbers as float arrays (empty cells NaN), a varied
+            key whose values are not numbers as a list of strings.
+        keys: the varied keys.
+        columns: the observables.
+        mean, ci: per observable, each point's window mean and the half-width of its 99.9%
+            interval.
+        references: per reference, its value at each point (averaged over the same window).
+        json: sweep.json as a dict (what each reference is, each point's window).
+        complete: whether every point asked for ran.
+    """
+
+    def __init__(self, csv_text: str, json_text: str):
+        rows = list(csv.reader(io.StringIO(csv_text)))
+        header, body = rows[0], rows[1:]
+        self.json: dict = json.loads(json_text)
+        self.keys: List[str] = [v["key"] for v in self.json["vary"]]
+        self.complete: bool = self.json["complete"]
+        self.table: Dict[str, Union[np.ndarray, List[str]]] = {}
+        for j, name in enumerate(header):
+            cells = [r[j] for r in body]
+            try:
+                self.table[name] = np.array(
+                    [float(c) if c != "" else np.nan for c in cells], dtype=np.float64
+                )
+            except ValueError:
+                self.table[name] = cells
+        fixed = {"point", "seed", "ensembles", "window_from", "window_points", *self.keys}
+        names = [c for c in header if c not in fixed]
+        self.columns: List[str] = [c for c in names if c + "_ci" in self.table]
+        self.mean = {c: self.table[c] for c in self.columns}
+        self.ci = {c: self.table[c + "_ci"] for c in self.columns}
+        observed = set(self.columns) | {c + "_ci" for c in self.columns}
+        self.references = {c: self.table[c] for c in names if c not in observed}
+
+    def to_pandas(self):
+        """sweep.csv as a pandas DataFrame (needs pandas)."""
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("to_pandas() needs pandas: pip install pandas") from e
+        return pd.DataFrame(self.table)
+
+    def __repr__(self) -> str:
+        n = len(self.table.get("point", []))
+        return f"Swept({self.json['scene']!r} over {', '.join(self.keys)}: {n} points)"
+
+
+def sweep(
+    scene: Union[Scene, str, os.PathLike],
+    vary=None,
+    *,
+    zip: bool = False,
+    n: Optional[int] = None,
+    ensembles: Optional[int] = None,
+    seed: Optional[int] = None,
+    threads: int = 0,
+    progress: Union[bool, Callable[[int], None]] = False,
+    allow_long: bool = False,
+) -> Swept:
+    """A parameter study (``gdsmc sweep``): the scene at every value of the varied keys.
+
+    ``vary`` is a dict ``{key: values}`` (a list of values, or the command's range text such
+    as ``"0.3:0.9:7"`` or ``"log:0.1:10:5"``), a ``"KEY=VALUES"`` string or a list of them;
+    None takes the scene's ``[sweep]`` table. Several keys make a grid (the last varies
+    fastest), or are paired with ``zip=True``. Every point is validated before anything runs;
+    point ``k`` runs with seed ``run.seed + k`` and gives the numbers of ``gdsmc run`` of its
+    scene and seed. ``n``, ``ensembles``, ``seed``, ``threads``, ``progress``, ``allow_long``
+    as for :func:`run` (the bar counts the ensembles of every point).
+
+    Raises :class:`SceneError`, ``ValueError`` (a bad ``vary``), :class:`RunError`, and
+    :class:`Interrupted` on Ctrl-C, whose ``result`` holds the points that finished.
+    """
+    if not isinstance(scene, Scene):
+        scene = Scene.from_file(os.fspath(scene))
+    specs = _vary_specs(vary)
+    bar = None
+    callback = None
+    if callable(progress):
+        callback = progress
+    elif progress:
+        bar = _bar(None)
+        callback = bar.update
+    try:
+        csv_text, json_text, asked, interrupted = _gdsmc.sweep(
+            scene, specs, zip, n, ensembles, seed, threads, callback, allow_long
+        )
+    finally:
+        if bar is not None:
+            bar.close()
+    result = Swept(csv_text, json_text)
+    if interrupted:
+        done = len(result.table.get("point", []))
+        if done == 0:
+            raise KeyboardInterrupt("interrupted before any point finished")
+        err = Interrupted.__new__(Interrupted)
+        KeyboardInterrupt.__init__(err, f"interrupted: kept {done} of {asked} points")
+        err.result = result
+        raise err
+    return result
 
 
 class Reproduced:

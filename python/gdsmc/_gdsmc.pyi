@@ -62,6 +62,17 @@ def run(
     progress: Optional[Callable[[int], Any]] = None,
     allow_long: bool = False,
 ) -> Tuple[RunResult, bool]: ...
+def sweep(
+    scene: Scene,
+    vary: List[str],
+    zip: bool = False,
+    n: Optional[int] = None,
+    ensembles: Optional[int] = None,
+    seed: Optional[int] = None,
+    threads: int = 0,
+    progress: Optional[Callable[[int], Any]] = None,
+    allow_long: bool = False,
+) -> Tuple[str, str, int, bool]: ...
 def reproduce(
     names: List[str], quick: bool = True, threads: int = 0, seed: int = 1
 ) -> Tuple[str, List[str], List[str]]: ...

@@ -6,6 +6,7 @@
 
 mod result;
 mod scene;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -43,5 +44,6 @@ fn _gdsmc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<result::RunResult>()?;
     m.add_function(wrap_pyfunction!(result::run, m)?)?;
     m.add_function(wrap_pyfunction!(result::reproduce, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     Ok(())
 }

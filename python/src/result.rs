@@ -22,6 +22,64 @@ pub struct RunResult {
 /// How often the waiting thread looks for Ctrl-C and reports progress.
 const POLL: Duration = Duration::from_millis(50);
 
+/// Runs `body` on its own thread with the GIL released, polling for Ctrl-C (a
+/// KeyboardInterrupt sets the stop flag `body` is given: the running ensembles finish, the rest
+/// are skipped) and calling `progress` with the ensembles finished since its last call (the
+/// `advance` `body` is given counts them; a raising callback stops the body and its error is
+/// raised once the body has returned). Returns the body's value and whether Ctrl-C stopped it.
+pub(crate) fn polled<T: Send>(
+    py: Python<'_>,
+    progress: Option<&Bound<'_, PyAny>>,
+    body: impl FnOnce(&AtomicBool, &(dyn Fn(u64) + Sync)) -> T + Send,
+) -> PyResult<(T, bool)> {
+    let stop = AtomicBool::new(false);
+    let done = AtomicU64::new(0);
+    let mut reported = 0;
+    let mut interrupted = false;
+    let mut failed: Option<PyErr> = None;
+    let value = std::thread::scope(|scope| {
+        let job = scope.spawn(|| {
+            body(&stop, &|k| {
+                done.fetch_add(k, Ordering::Relaxed);
+            })
+        });
+        while !job.is_finished() {
+            py.detach(|| std::thread::sleep(POLL));
+            if !interrupted && py.check_signals().is_err() {
+                interrupted = true;
+                stop.store(true, Ordering::SeqCst);
+            }
+            let now = done.load(Ordering::Relaxed);
+            if let Some(p) = progress
+                && now > reported
+                && !interrupted
+                && failed.is_none()
+            {
+                match p.call1((now - reported,)) {
+                    Ok(_) => reported = now,
+                    Err(e) => {
+                        failed = Some(e);
+                        stop.store(true, Ordering::SeqCst);
+                    }
+                }
+            }
+        }
+        py.detach(|| job.join())
+            .expect("the run thread does not panic")
+    });
+    if let Some(e) = failed {
+        return Err(e);
+    }
+    let now = done.load(Ordering::Relaxed);
+    if let Some(p) = progress
+        && !interrupted
+        && now > reported
+    {
+        p.call1((now - reported,))?;
+    }
+    Ok((value, interrupted))
+}
+
 /// Runs `scene` (with `n`, `ensembles`, `seed` overriding its keys, validated as the command's
 /// flags are) on `threads` threads (0: all cores). Returns the result and whether a
 /// KeyboardInterrupt stopped it early (the result then covers the ensembles finished, exactly
@@ -45,60 +103,10 @@ pub fn run(
         s = s.with(o)?;
     }
     runner::estimate::check(s.scene(), threads, allow_long).map_err(to_py)?;
-    let stop = AtomicBool::new(false);
-    let done = AtomicU64::new(0);
-    let mut reported = 0;
-    let mut interrupted = false;
-    let mut failed: Option<PyErr> = None;
-    let stats = std::thread::scope(|scope| -> PyResult<_> {
-        let job = scope.spawn(|| {
-            runner::run_interruptible(
-                s.scene(),
-                threads,
-                &|k| {
-                    done.fetch_add(k, Ordering::Relaxed);
-                },
-                &stop,
-            )
-        });
-        while !job.is_finished() {
-            py.detach(|| std::thread::sleep(POLL));
-            if !interrupted && py.check_signals().is_err() {
-                // KeyboardInterrupt: the running ensembles finish, the rest are skipped.
-                interrupted = true;
-                stop.store(true, Ordering::SeqCst);
-            }
-            let now = done.load(Ordering::Relaxed);
-            if let Some(p) = &progress
-                && now > reported
-                && !interrupted
-                && failed.is_none()
-            {
-                match p.call1((now - reported,)) {
-                    Ok(_) => reported = now,
-                    Err(e) => {
-                        // The callback raised: stop the run and raise that once it has.
-                        failed = Some(e);
-                        stop.store(true, Ordering::SeqCst);
-                    }
-                }
-            }
-        }
-        let stats = py
-            .detach(|| job.join())
-            .expect("the run thread does not panic");
-        Ok(stats)
+    let (stats, interrupted) = polled(py, progress.as_ref(), |stop, advance| {
+        runner::run_interruptible(s.scene(), threads, advance, stop)
     })?;
-    if let Some(e) = failed {
-        return Err(e);
-    }
     let stats = stats.map_err(to_py)?;
-    if let Some(p) = &progress
-        && !interrupted
-        && stats.ensembles > reported
-    {
-        p.call1((stats.ensembles - reported,))?;
-    }
     Ok((RunResult { scene: s, stats }, interrupted))
 }
 

@@ -287,3 +287,59 @@ def test_a_raising_progress_callback_stops_the_run():
     # Stopped after the first report, far before 2000 ensembles (about 30 s on one core).
     assert len(calls) == 1
     assert time.time() - t0 < 10
+
+
+def test_sweep_gives_the_command_sweep(tmp_path):
+    """gdsmc.sweep equals `gdsmc sweep` of the same scene, values and seed, cell for cell, and
+    a dict of values is the command's list."""
+    scene = SCENES / "grw-example3.toml"
+    s = gdsmc.sweep(
+        scene,
+        {"collisions.restitution": [0.5, 0.8], "drive.beta": "1:2:2"},
+        n=64,
+        ensembles=3,
+        seed=4,
+        threads=1,
+    )
+    out = tmp_path / "sweep"
+    subprocess.run(
+        [
+            str(GDSMC), "sweep", str(scene),
+            "--vary", "collisions.restitution=0.5,0.8", "--vary", "drive.beta=1:2:2",
+            "--n", "64", "--ensembles", "3", "--seed", "4", "--out", str(out),
+        ],
+        check=True,
+        stdout=subprocess.DEVNULL,
+    )
+    assert_table_equals_file(s.table, out / "sweep.csv")
+    assert s.keys == ["collisions.restitution", "drive.beta"]
+    assert s.complete and len(s.table["point"]) == 4
+    assert list(s.table["seed"]) == [4, 5, 6, 7]
+    assert "T" in s.columns and "T_exact" in s.references
+    assert s.to_pandas().shape[0] == 4
+
+
+def test_sweep_point_is_the_run_of_its_seed():
+    """Point k of a sweep is gdsmc.run of its scene with seed + k: the last observation's
+    means and intervals, to the last bit."""
+    scene = gdsmc.Scene.from_file(str(SCENES / "grw-example3.toml"))
+    s = gdsmc.sweep(scene, "drive.beta=0.5,2", n=64, ensembles=3, seed=9)
+    r = gdsmc.run(scene.set("drive.beta", 2.0), n=64, ensembles=3, seed=10)
+    for c in ["T", "a2", "T_bulk"]:
+        assert s.mean[c][1] == r.mean[c][-1], c
+        assert s.ci[c][1] == r.ci[c][-1], c
+
+
+def test_sweep_takes_the_scene_table_and_refuses_bad_values():
+    """A scene's [sweep] table is taken when no values are given; a bad range or a bad point
+    is refused before anything runs, naming the rule or the point."""
+    scene = gdsmc.Scene.from_toml(
+        (SCENES / "grw-example3.toml").read_text()
+        + '\n[sweep]\nvary = ["collisions.restitution=0.5,0.9"]\n'
+    )
+    s = gdsmc.sweep(scene, n=64, ensembles=2)
+    assert list(s.table["collisions.restitution"]) == [0.5, 0.9]
+    with pytest.raises(ValueError, match="count must be an integer"):
+        gdsmc.sweep(scene, "collisions.restitution=0:1:x", n=64, ensembles=2)
+    with pytest.raises(gdsmc.SceneError, match="point 1"):
+        gdsmc.sweep(scene, {"collisions.restitution": [0.5, 1.5]}, n=64, ensembles=2)

@@ -308,7 +308,8 @@ fn the_charts_of_a_sweep_are_readable() {
             })
             .collect();
         let charts = gdsmc_runner::sweep::chart::charts(&s.source, &s.vary, &points, &results);
-        assert!(charts.iter().any(|(stem, _)| stem == "T"), "{file}");
+        let t = gdsmc_runner::run::columns::name::T;
+        assert!(charts.iter().any(|(stem, _)| stem == t), "{file}");
         for (stem, chart) in &charts {
             let c = chart
                 .as_ref()

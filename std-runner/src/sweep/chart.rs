@@ -5,7 +5,8 @@
 
 use super::point::{PointResult, PointScene, references};
 use super::vary::Vary;
-use crate::report::charts::{Chart, Series, Style, profile};
+use crate::reference::curves::Kind;
+use crate::report::charts::{Chart, Residuals, Series, Style, profile_with_residuals};
 use crate::scene::{Override, Sourced};
 use plotters::style::RGBColor;
 
@@ -138,6 +139,8 @@ pub fn charts(
         .into_iter()
         .map(|name| {
             let mut series = Vec::new();
+            let mut residuals = Vec::new();
+            let mut residual_of = None;
             for (gi, g) in groups.iter().enumerate() {
                 let color = COLORS[gi % COLORS.len()];
                 let suffix = if g.is_empty() {
@@ -155,6 +158,31 @@ pub fn charts(
                         Some((x, o.1, o.2))
                     })
                     .collect();
+                // The exact mean at this n, where one applies, judges each point: its residual
+                // (mean - exact) / half-width, inside the interval within +-1.
+                let exact: Vec<(f64, f64, &'static str)> = results
+                    .iter()
+                    .filter(|r| others(&r.values) == *g)
+                    .filter_map(|r| {
+                        let x = r.values[xi].1.parse::<f64>().ok()?;
+                        let o = r.observables.iter().find(|o| o.0 == name)?;
+                        let e = r
+                            .references
+                            .iter()
+                            .find(|e| e.of == name && e.kind == Kind::MeanAtN)?;
+                        (o.2 > 0.0).then(|| (x, (o.1 - e.value) / o.2, e.name))
+                    })
+                    .collect();
+                if let Some(&(_, _, rname)) = exact.first() {
+                    residual_of = Some(rname);
+                    residuals.push(Residuals {
+                        label: format!(
+                            "residual (lower panel): (mean - {rname}) / 99.9% half-width{suffix}"
+                        ),
+                        points: exact.iter().map(|e| (e.0, e.1)).collect(),
+                        color,
+                    });
+                }
                 series.push(Series {
                     label: format!("mean and 99.9% interval{suffix}"),
                     points: pts,
@@ -189,7 +217,21 @@ pub fn charts(
             // The axes name the observable and the key; the title is the physics.
             let title = common.clone();
             let y = crate::run::columns::axis_label(name);
-            (name.to_string(), profile(&title, xkey, &y, false, &series))
+            let residual_desc = residual_of
+                .map(|r| format!("({name} - {r}) / half-width"))
+                .unwrap_or_default();
+            (
+                name.to_string(),
+                profile_with_residuals(
+                    &title,
+                    xkey,
+                    &y,
+                    false,
+                    &series,
+                    &residuals,
+                    &residual_desc,
+                ),
+            )
         })
         .collect()
 }

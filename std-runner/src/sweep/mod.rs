@@ -21,6 +21,7 @@ use crate::error::Error;
 use crate::job::{Outcome, Watch};
 use crate::report::charts::Formats;
 use crate::report::set::OutputSet;
+use crate::run::columns::name;
 use crate::run::{self, Journaled, estimate};
 use crate::scene::Sourced;
 use point::{PointResult, PointScene};
@@ -91,15 +92,13 @@ impl Sweep {
         })
     }
 
-    /// Runs the sweep: every point validated and the summed work checked before anything
-    /// runs, the output place before any simulation; the points in order, each journaled as
-    /// it runs; sweep.csv and sweep.json written at the end (or, when stopped, of the points
-    /// finished, which a rerun keeps).
-    pub fn run(&self, watch: &dyn Watch) -> Result<Outcome, Error> {
+    /// Every point's scene ([`Sweep::points`]), each point's sizes checked against their
+    /// limits and the work summed over the points against the work limit (unless
+    /// `allow_long`): what is checked before anything runs.
+    pub fn checked_points(&self) -> Result<Vec<PointScene>, Error> {
         let points = self.points()?;
         let mut work = 0.0;
         for p in &points {
-            // Each point's sizes against their limits; the work summed below.
             work += estimate::check(&p.source.scene, self.threads, true)?.total();
         }
         if !self.allow_long && (work.is_nan() || work > estimate::MAX_WORK) {
@@ -112,47 +111,90 @@ impl Sweep {
                 ),
             });
         }
-        let dir = self.dir();
-        let set = OutputSet::prepare(&dir)?;
+        Ok(points)
+    }
+
+    /// Runs `points` in order, journaled beside `journals` (the output directory) when given,
+    /// else in memory (the Python package's sweep); stops at the first point the watcher's
+    /// stop flag cuts short. Returns the finished points' results and the notes about
+    /// journals not continued or cut.
+    pub fn run_points(
+        &self,
+        points: &[PointScene],
+        journals: Option<&Path>,
+        watch: &dyn Watch,
+    ) -> Result<(Vec<PointResult>, Vec<String>), Error> {
         let total: u64 = points.iter().map(|p| p.source.scene.ensembles()).sum();
         watch.begin(total);
         let mut results = Vec::new();
         let mut notes = Vec::new();
-        for p in &points {
+        for p in points {
             let sc = &p.source.scene;
-            let file = point_journal(&dir, p.index);
-            let job = Journaled {
-                scene: sc,
-                header: run::journal::Header::new(&p.source, None, 0..sc.ensembles()),
-                path: &file,
-                threads: self.threads,
-                fresh: self.fresh,
-            };
-            let r = match job.run(&|k| watch.advance(k), watch.stop()) {
-                Ok(r) => r,
-                Err(e) => {
-                    watch.end();
-                    return Err(e);
+            let stats = match journals {
+                Some(dir) => {
+                    let file = point_journal(dir, p.index);
+                    let job = Journaled {
+                        scene: sc,
+                        header: run::journal::Header::new(&p.source, None, 0..sc.ensembles()),
+                        path: &file,
+                        threads: self.threads,
+                        fresh: self.fresh,
+                    };
+                    let r = job.run(&|k| watch.advance(k), watch.stop());
+                    let r = match r {
+                        Ok(r) => r,
+                        Err(e) => {
+                            watch.end();
+                            return Err(e);
+                        }
+                    };
+                    if let Some(why) = &r.discarded {
+                        notes.push(format!(
+                            "note: {} was not continued ({why}); started anew",
+                            file.display()
+                        ));
+                    }
+                    if let Some(why) = &r.damage {
+                        notes.push(format!(
+                            "note: {} was cut after its last good record ({why}); the ensembles after it were run again",
+                            file.display()
+                        ));
+                    }
+                    r.stats
+                }
+                None => {
+                    match run::run_interruptible(
+                        sc,
+                        self.threads,
+                        &|k| watch.advance(k),
+                        watch.stop(),
+                    ) {
+                        Ok(s) => s,
+                        Err(e) => {
+                            watch.end();
+                            return Err(e);
+                        }
+                    }
                 }
             };
-            if let Some(why) = &r.discarded {
-                notes.push(format!(
-                    "note: {} was not continued ({why}); started anew",
-                    file.display()
-                ));
+            if stats.ensembles < sc.ensembles() {
+                break; // stopped: a journaled point's finished ensembles stay in its journal
             }
-            if let Some(why) = &r.damage {
-                notes.push(format!(
-                    "note: {} was cut after its last good record ({why}); the ensembles after it were run again",
-                    file.display()
-                ));
-            }
-            if r.stats.ensembles < sc.ensembles() {
-                break; // stopped: this point's finished ensembles stay in its journal
-            }
-            results.push(PointResult::of(p, &r.stats));
+            results.push(PointResult::of(p, &stats));
         }
         watch.end();
+        Ok((results, notes))
+    }
+
+    /// Runs the sweep: every point validated and the summed work checked before anything
+    /// runs, the output place before any simulation; the points in order, each journaled as
+    /// it runs; sweep.csv and sweep.json written at the end (or, when stopped, of the points
+    /// finished, which a rerun keeps).
+    pub fn run(&self, watch: &dyn Watch) -> Result<Outcome, Error> {
+        let points = self.checked_points()?;
+        let dir = self.dir();
+        let set = OutputSet::prepare(&dir)?;
+        let (results, notes) = self.run_points(&points, Some(&dir), watch)?;
         for n in &notes {
             watch.note(n);
         }
@@ -235,7 +277,7 @@ fn summary(results: &[PointResult]) -> String {
         let shown: Vec<String> = p
             .observables
             .iter()
-            .filter(|o| matches!(o.0, "T" | "a2"))
+            .filter(|o| [name::T, name::A2].contains(&o.0))
             .map(|(name, mean, ci)| format!("{name} = {mean:.5} ± {ci:.2e}"))
             .collect();
         let _ = writeln!(

@@ -12,7 +12,7 @@ pub mod time;
 pub use distribution::distribution_charts;
 pub use export::Formats;
 pub use frame::Chart;
-pub use profile::{Series, Style, profile};
+pub use profile::{Residuals, Series, Style, profile, profile_with_residuals};
 pub use tail::tail;
 
 use crate::error::Error;

@@ -53,6 +53,17 @@ fn tick(y: f64) -> String {
     format!("{rounded}")
 }
 
+/// A residual panel's points under a profile chart: `(x, (mean - reference) / half-width)`,
+/// where the 99.9% interval is the strip between -1 and 1.
+pub struct Residuals {
+    /// Legend text (what the residual is measured against).
+    pub label: String,
+    /// The points.
+    pub points: Vec<(f64, f64)>,
+    /// Colour (the series' it belongs to).
+    pub color: RGBColor,
+}
+
 /// A chart of several series against one variable, on a linear or logarithmic y axis.
 pub fn profile(
     title: &str,
@@ -60,6 +71,21 @@ pub fn profile(
     y_desc: &str,
     log_y: bool,
     series: &[Series],
+) -> Result<Chart, String> {
+    profile_with_residuals(title, x_desc, y_desc, log_y, series, &[], "")
+}
+
+/// [`profile`] with a residual panel below when `residuals` has points (its y axis named
+/// `residual_desc`): each group's residuals in its colour, the strip of the 99.9% interval
+/// between the dashed lines at -1 and 1.
+pub fn profile_with_residuals(
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    log_y: bool,
+    series: &[Series],
+    residuals: &[Residuals],
+    residual_desc: &str,
 ) -> Result<Chart, String> {
     let keep = |p: &&(f64, f64, f64)| p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0);
     let (mut x0, mut x1, mut y0, mut y1) = (
@@ -106,7 +132,7 @@ pub fn profile(
     let mut svg = String::new();
     let mut geometry = Geometry::new(title);
     let dash = dashes(series);
-    let entries: Vec<Entry> = series
+    let mut entries: Vec<Entry> = series
         .iter()
         .zip(&dash)
         .map(|(s, d)| {
@@ -118,13 +144,32 @@ pub fn profile(
             Entry::new(sw, s.label.clone())
         })
         .collect();
+    let residuals: Vec<&Residuals> = residuals
+        .iter()
+        .filter(|r| r.points.iter().any(|p| p.0.is_finite() && p.1.is_finite()))
+        .collect();
+    entries.extend(
+        residuals
+            .iter()
+            .map(|r| Entry::new(Swatch::Marker(r.color), r.label.clone())),
+    );
     {
         let frame = Frame::new(&mut svg, title, &entries)?;
-        geometry.axes.push((x_desc.to_string(), y_desc.to_string()));
-        let mut builder = ChartBuilder::on(&frame.plot);
+        let (upper, lower) = if residuals.is_empty() {
+            (frame.plot.clone(), None)
+        } else {
+            let h = frame.plot.dim_in_pixel().1;
+            let (a, b) = frame.plot.split_vertically((h as f64 * 0.68) as u32);
+            (a, Some(b))
+        };
+        let x_upper = if lower.is_some() { "" } else { x_desc };
+        geometry
+            .axes
+            .push((x_upper.to_string(), y_desc.to_string()));
+        let mut builder = ChartBuilder::on(&upper);
         builder
             .margin(10)
-            .x_label_area_size(40)
+            .x_label_area_size(if lower.is_some() { 20 } else { 40 })
             .y_label_area_size(80);
         macro_rules! draw {
             ($chart:expr) => {{
@@ -134,7 +179,7 @@ pub fn profile(
                 let fmt: &dyn Fn(&f64) -> String = if log_y { &fmt_log } else { &fmt_lin };
                 chart
                     .configure_mesh()
-                    .x_desc(x_desc)
+                    .x_desc(x_upper)
                     .y_desc(y_desc)
                     .y_label_formatter(fmt)
                     .x_label_formatter(&|x: &f64| tick(*x))
@@ -216,6 +261,58 @@ pub fn profile(
                     .build_cartesian_2d(x0..x1, y_lo..y_hi)
                     .map_err(|e| e.to_string())?
             );
+        }
+        if let Some(lower) = lower {
+            let top = residuals
+                .iter()
+                .flat_map(|r| r.points.iter())
+                .filter(|p| p.1.is_finite())
+                .map(|p| p.1.abs())
+                .fold(1.5, f64::max)
+                * 1.1;
+            let mut d = ChartBuilder::on(&lower)
+                .margin(10)
+                .x_label_area_size(40)
+                .y_label_area_size(80)
+                .build_cartesian_2d(x0..x1, -top..top)
+                .map_err(|e| e.to_string())?;
+            d.configure_mesh()
+                .x_desc(x_desc)
+                .y_desc(residual_desc)
+                .y_labels(5)
+                .x_label_formatter(&|x: &f64| tick(*x))
+                .draw()
+                .map_err(|e| e.to_string())?;
+            geometry
+                .axes
+                .push((x_desc.to_string(), residual_desc.to_string()));
+            let (xr, yr) = d.plotting_area().get_pixel_range();
+            geometry.plots.push(plot_rect(xr, yr));
+            for y in [-1.0, 1.0] {
+                d.draw_series(DashedLineSeries::new(
+                    [(x0, y), (x1, y)],
+                    6,
+                    4,
+                    RGBColor(120, 120, 120).stroke_width(1),
+                ))
+                .map_err(|e| e.to_string())?;
+            }
+            d.draw_series(std::iter::once(PathElement::new(
+                [(x0, 0.0), (x1, 0.0)],
+                BLACK.stroke_width(1),
+            )))
+            .map_err(|e| e.to_string())?;
+            for r in &residuals {
+                let pts: Vec<(f64, f64)> = r
+                    .points
+                    .iter()
+                    .filter(|p| p.0.is_finite() && p.1.is_finite())
+                    .copied()
+                    .collect();
+                d.draw_series(pts.iter().map(|p| Circle::new(*p, 3, r.color.filled())))
+                    .map_err(|e| e.to_string())?;
+                geometry.data.extend(pts.iter().map(|p| d.backend_coord(p)));
+            }
         }
         geometry.legend = frame.legend(&entries)?;
         frame.present()?;
