@@ -68,6 +68,15 @@ def _parse_csv(text: str) -> Dict[str, np.ndarray]:
     return cols
 
 
+def _data_frame(table):
+    """A table of columns as a pandas DataFrame (needs pandas)."""
+    try:
+        import pandas as pd
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError("to_pandas() needs pandas: pip install pandas") from e
+    return pd.DataFrame(table)
+
+
 class Result:
     """A run's statistics, as the command's files hold them.
 
@@ -129,11 +138,7 @@ class Result:
 
     def to_pandas(self):
         """observables.csv as a pandas DataFrame (needs pandas)."""
-        try:
-            import pandas as pd
-        except ImportError as e:  # pragma: no cover - depends on the environment
-            raise ImportError("to_pandas() needs pandas: pip install pandas") from e
-        return pd.DataFrame(self.table)
+        return _data_frame(self.table)
 
     def write(self, directory: Union[str, os.PathLike], formats: str = "svg") -> List[str]:
         """Writes the command's whole output set (tables, summary.json, charts in ``formats``:
@@ -289,11 +294,7 @@ class Swept:
 
     def to_pandas(self):
         """sweep.csv as a pandas DataFrame (needs pandas)."""
-        try:
-            import pandas as pd
-        except ImportError as e:  # pragma: no cover - depends on the environment
-            raise ImportError("to_pandas() needs pandas: pip install pandas") from e
-        return pd.DataFrame(self.table)
+        return _data_frame(self.table)
 
     def __repr__(self) -> str:
         n = len(self.table.get("point", []))

@@ -6,7 +6,7 @@ use crate::result::polled;
 use crate::scene::Scene;
 use crate::to_py;
 use gdsmc_runner::scene as sc;
-use gdsmc_runner::sweep::{Sweep, table, vary};
+use gdsmc_runner::sweep::{Sweep, table};
 use pyo3::prelude::*;
 use std::sync::atomic::AtomicBool;
 
@@ -52,30 +52,7 @@ pub fn sweep(
     for o in sc::Override::run_flags(n, ensembles, seed) {
         s = s.with(o)?;
     }
-    let argument = |message: String| {
-        to_py(gdsmc_runner::Error::Argument {
-            flag: "vary".into(),
-            message,
-        })
-    };
-    let plan = if vary.is_empty() {
-        sc::sweep_plan(&s.source.path, &s.source.text)
-            .map_err(|e| to_py(e.into()))?
-            .ok_or_else(|| argument("is required: the scene has no [sweep] table".into()))?
-    } else {
-        vary::Plan {
-            vary: vary
-                .iter()
-                .map(|v| vary::Vary::parse(v))
-                .collect::<Result<_, _>>()
-                .map_err(argument)?,
-            combine: if zip {
-                vary::Combine::Zip
-            } else {
-                vary::Combine::Grid
-            },
-        }
-    };
+    let plan = gdsmc_runner::sweep::plan(&s.source, &vary, zip).map_err(to_py)?;
     let sw = Sweep {
         source: s.source.clone(),
         vary: plan.vary,

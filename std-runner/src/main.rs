@@ -275,35 +275,9 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             fresh,
             format,
         } => {
-            use gdsmc_runner::sweep::{self, vary};
+            use gdsmc_runner::sweep;
             let source = flags.source(&path)?;
-            let plan = if vary.is_empty() {
-                scene::sweep_plan(&path, &source.text)?.ok_or_else(|| {
-                    gdsmc_runner::Error::Argument {
-                        flag: "--vary".into(),
-                        message: format!(
-                            "is required: {} has no [sweep] table saying what varies",
-                            path.display()
-                        ),
-                    }
-                })?
-            } else {
-                vary::Plan {
-                    vary: vary
-                        .iter()
-                        .map(|v| vary::Vary::parse(v))
-                        .collect::<Result<_, _>>()
-                        .map_err(|message| gdsmc_runner::Error::Argument {
-                            flag: "--vary".into(),
-                            message,
-                        })?,
-                    combine: if zip {
-                        vary::Combine::Zip
-                    } else {
-                        vary::Combine::Grid
-                    },
-                }
-            };
+            let plan = sweep::plan(&source, &vary, zip)?;
             let s = sweep::Sweep {
                 source,
                 vary: plan.vary,

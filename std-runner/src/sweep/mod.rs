@@ -50,6 +50,35 @@ pub struct Sweep {
     pub format: Formats,
 }
 
+/// What a sweep of `source` varies: the `--vary` texts `vary` (a grid, or zipped when `zip`),
+/// or, when there are none, the scene file's `[sweep]` table.
+pub fn plan(source: &Sourced, vary: &[String], zip: bool) -> Result<vary::Plan, Error> {
+    let argument = |message: String| Error::Argument {
+        flag: "--vary".into(),
+        message,
+    };
+    if vary.is_empty() {
+        return crate::scene::sweep_plan(&source.path, &source.text)?.ok_or_else(|| {
+            argument(format!(
+                "is required: {} has no [sweep] table saying what varies",
+                source.path.display()
+            ))
+        });
+    }
+    Ok(vary::Plan {
+        vary: vary
+            .iter()
+            .map(|v| vary::Vary::parse(v))
+            .collect::<Result<_, _>>()
+            .map_err(argument)?,
+        combine: if zip {
+            vary::Combine::Zip
+        } else {
+            vary::Combine::Grid
+        },
+    })
+}
+
 /// The journal of point `k` of the sweep written to `dir`: beside it, as a run's.
 fn point_journal(dir: &Path, k: usize) -> PathBuf {
     let name = dir
