@@ -226,7 +226,7 @@ pub fn charts(
                     &title,
                     xkey,
                     &y,
-                    false,
+                    (log, false),
                     &series,
                     &residuals,
                     &residual_desc,

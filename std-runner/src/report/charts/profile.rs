@@ -72,22 +72,24 @@ pub fn profile(
     log_y: bool,
     series: &[Series],
 ) -> Result<Chart, String> {
-    profile_with_residuals(title, x_desc, y_desc, log_y, series, &[], "")
+    profile_with_residuals(title, x_desc, y_desc, (false, log_y), series, &[], "")
 }
 
-/// [`profile`] with a residual panel below when `residuals` has points (its y axis named
-/// `residual_desc`): each group's residuals in its colour, the strip of the 99.9% interval
-/// between the dashed lines at -1 and 1.
+/// [`profile`] on logarithmic axes where `(log_x, log_y)` say so, with a residual panel below
+/// when `residuals` has points (its y axis named `residual_desc`): each group's residuals in
+/// its colour, the strip of the 99.9% interval between the dashed lines at -1 and 1.
 pub fn profile_with_residuals(
     title: &str,
     x_desc: &str,
     y_desc: &str,
-    log_y: bool,
+    (log_x, log_y): (bool, bool),
     series: &[Series],
     residuals: &[Residuals],
     residual_desc: &str,
 ) -> Result<Chart, String> {
-    let keep = |p: &&(f64, f64, f64)| p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0);
+    let keep = |p: &&(f64, f64, f64)| {
+        p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0) && (!log_x || p.0 > 0.0)
+    };
     let (mut x0, mut x1, mut y0, mut y1) = (
         f64::INFINITY,
         f64::NEG_INFINITY,
@@ -116,8 +118,13 @@ pub fn profile_with_residuals(
     }
     if has_points {
         // Points at the ends of the range keep their error bars off the axes.
-        let pad = 0.02 * (x1 - x0);
-        (x0, x1) = (x0 - pad, x1 + pad);
+        if log_x {
+            let f = (x1 / x0).powf(0.02);
+            (x0, x1) = (x0 / f, x1 * f);
+        } else {
+            let pad = 0.02 * (x1 - x0);
+            (x0, x1) = (x0 - pad, x1 + pad);
+        }
     }
     let (y_lo, y_hi) = if log_y {
         (y0 / 2.0, y1 * 2.0)
@@ -248,19 +255,28 @@ pub fn profile_with_residuals(
                 }
             }};
         }
-        if log_y {
-            let (a, b) = (y_lo, y_hi);
-            draw!(
+        let (a, b) = (y_lo, y_hi);
+        match (log_x, log_y) {
+            (false, false) => draw!(
+                builder
+                    .build_cartesian_2d(x0..x1, a..b)
+                    .map_err(|e| e.to_string())?
+            ),
+            (false, true) => draw!(
                 builder
                     .build_cartesian_2d(x0..x1, (a..b).log_scale())
                     .map_err(|e| e.to_string())?
-            );
-        } else {
-            draw!(
+            ),
+            (true, false) => draw!(
                 builder
-                    .build_cartesian_2d(x0..x1, y_lo..y_hi)
+                    .build_cartesian_2d((x0..x1).log_scale(), a..b)
                     .map_err(|e| e.to_string())?
-            );
+            ),
+            (true, true) => draw!(
+                builder
+                    .build_cartesian_2d((x0..x1).log_scale(), (a..b).log_scale())
+                    .map_err(|e| e.to_string())?
+            ),
         }
         if let Some(lower) = lower {
             let top = residuals
@@ -270,48 +286,65 @@ pub fn profile_with_residuals(
                 .map(|p| p.1.abs())
                 .fold(1.5, f64::max)
                 * 1.1;
-            let mut d = ChartBuilder::on(&lower)
+            let mut builder = ChartBuilder::on(&lower);
+            builder
                 .margin(10)
                 .x_label_area_size(40)
-                .y_label_area_size(80)
-                .build_cartesian_2d(x0..x1, -top..top)
-                .map_err(|e| e.to_string())?;
-            d.configure_mesh()
-                .x_desc(x_desc)
-                .y_desc(residual_desc)
-                .y_labels(5)
-                .x_label_formatter(&|x: &f64| tick(*x))
-                .draw()
-                .map_err(|e| e.to_string())?;
-            geometry
-                .axes
-                .push((x_desc.to_string(), residual_desc.to_string()));
-            let (xr, yr) = d.plotting_area().get_pixel_range();
-            geometry.plots.push(plot_rect(xr, yr));
-            for y in [-1.0, 1.0] {
-                d.draw_series(DashedLineSeries::new(
-                    [(x0, y), (x1, y)],
-                    6,
-                    4,
-                    RGBColor(120, 120, 120).stroke_width(1),
-                ))
-                .map_err(|e| e.to_string())?;
-            }
-            d.draw_series(std::iter::once(PathElement::new(
-                [(x0, 0.0), (x1, 0.0)],
-                BLACK.stroke_width(1),
-            )))
-            .map_err(|e| e.to_string())?;
-            for r in &residuals {
-                let pts: Vec<(f64, f64)> = r
-                    .points
-                    .iter()
-                    .filter(|p| p.0.is_finite() && p.1.is_finite())
-                    .copied()
-                    .collect();
-                d.draw_series(pts.iter().map(|p| Circle::new(*p, 3, r.color.filled())))
+                .y_label_area_size(80);
+            macro_rules! lower {
+                ($chart:expr) => {{
+                    let mut d = $chart;
+                    d.configure_mesh()
+                        .x_desc(x_desc)
+                        .y_desc(residual_desc)
+                        .y_labels(5)
+                        .x_label_formatter(&|x: &f64| tick(*x))
+                        .draw()
+                        .map_err(|e| e.to_string())?;
+                    geometry
+                        .axes
+                        .push((x_desc.to_string(), residual_desc.to_string()));
+                    let (xr, yr) = d.plotting_area().get_pixel_range();
+                    geometry.plots.push(plot_rect(xr, yr));
+                    for y in [-1.0, 1.0] {
+                        d.draw_series(DashedLineSeries::new(
+                            [(x0, y), (x1, y)],
+                            6,
+                            4,
+                            RGBColor(120, 120, 120).stroke_width(1),
+                        ))
+                        .map_err(|e| e.to_string())?;
+                    }
+                    d.draw_series(std::iter::once(PathElement::new(
+                        [(x0, 0.0), (x1, 0.0)],
+                        BLACK.stroke_width(1),
+                    )))
                     .map_err(|e| e.to_string())?;
-                geometry.data.extend(pts.iter().map(|p| d.backend_coord(p)));
+                    for r in &residuals {
+                        let pts: Vec<(f64, f64)> = r
+                            .points
+                            .iter()
+                            .filter(|p| p.0.is_finite() && p.1.is_finite())
+                            .copied()
+                            .collect();
+                        d.draw_series(pts.iter().map(|p| Circle::new(*p, 3, r.color.filled())))
+                            .map_err(|e| e.to_string())?;
+                        geometry.data.extend(pts.iter().map(|p| d.backend_coord(p)));
+                    }
+                }};
+            }
+            if log_x {
+                lower!(
+                    builder
+                        .build_cartesian_2d((x0..x1).log_scale(), -top..top)
+                        .map_err(|e| e.to_string())?
+                );
+            } else {
+                lower!(
+                    builder
+                        .build_cartesian_2d(x0..x1, -top..top)
+                        .map_err(|e| e.to_string())?
+                );
             }
         }
         geometry.legend = frame.legend(&entries)?;
