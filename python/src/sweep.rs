@@ -62,12 +62,13 @@ pub fn sweep(
         out: None,
         fresh: false,
         format: Default::default(),
+        shard: None,
     };
     let points = sw.checked_points().map_err(to_py)?;
     let (ran, interrupted) = polled(py, progress.as_ref(), |stop, advance| {
         sw.run_points(&points, None, &Polled { stop, advance })
     })?;
-    let (results, _) = ran.map_err(to_py)?;
+    let results = ran.map_err(to_py)?.results;
     let csv = table::csv(&sw.vary, &results).map_err(|e| {
         to_py(gdsmc_runner::Error::Argument {
             flag: "sweep.csv".into(),

@@ -105,6 +105,11 @@ enum Command {
         /// Chart formats, comma-separated: svg, png, pdf.
         #[arg(long, value_name = "svg,png,pdf", default_value = "svg")]
         format: gdsmc_runner::report::charts::Formats,
+        /// Run only shard K of S (K from 0): the points k with k mod S = K, journaled beside
+        /// DIR where the whole sweep looks for them (a Slurm array task each); the same command
+        /// without --shard then writes the sweep from the journals, running nothing again.
+        #[arg(long, value_name = "K/S")]
+        shard: Option<String>,
     },
     /// Merge shards into the outputs of the whole run (byte-identical to `gdsmc run`).
     ///
@@ -274,6 +279,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             out,
             fresh,
             format,
+            shard,
         } => {
             use gdsmc_runner::sweep;
             let source = flags.source(&path)?;
@@ -287,6 +293,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 out,
                 fresh,
                 format,
+                shard,
             };
             let outcome = s.run(&Terminal::new())?;
             print!("{}", outcome.text);

@@ -37,6 +37,7 @@ fn sweep(vary: &[&str], sets: &[&str], out: &Path, threads: usize) -> Sweep {
         out: Some(out.to_path_buf()),
         fresh: false,
         format: "svg".parse().unwrap(),
+        shard: None,
     }
 }
 
@@ -298,6 +299,7 @@ fn the_charts_of_a_sweep_are_readable() {
             out: Some(r.join(k.to_string())),
             fresh: false,
             format: "svg".parse().unwrap(),
+            shard: None,
         };
         let points = s.points().unwrap();
         let results: Vec<_> = points
@@ -365,4 +367,44 @@ fn the_command_takes_the_scenes_sweep_table() {
     let sonine = header.iter().position(|h| h == "a2_sonine").unwrap();
     assert!(rows.iter().all(|row| row[sonine].parse::<f64>().is_ok()));
     assert_eq!(rows[17][1..3], ["0.9", "2"]);
+}
+
+/// A sweep run as two shards (each point journaled where the whole sweep looks for it) and
+/// then assembled by the same command without `--shard` writes the single-process sweep's
+/// sweep.csv and sweep.json byte for byte, taking every ensemble from the journals.
+#[test]
+fn a_sharded_sweep_assembled_is_the_single_process_sweep() {
+    let r = root("sharded");
+    let vary = ["collisions.restitution=0.5,0.7,0.9"];
+    sweep(&vary, &[], &r.join("whole"), 1)
+        .run(&Quiet::default())
+        .unwrap();
+    for k in 0..2 {
+        let mut s = sweep(&vary, &[], &r.join("sharded"), 1);
+        s.shard = Some(format!("{k}/2"));
+        let done = s.run(&Quiet::default()).unwrap();
+        assert!(done.complete, "{}", done.text);
+        assert!(!r.join("sharded").exists(), "a shard writes no outputs");
+    }
+    let mut too_many = sweep(&vary, &[], &r.join("sharded"), 1);
+    too_many.shard = Some("0/4".into());
+    let e = too_many.run(&Quiet::default()).unwrap_err().to_string();
+    assert!(e.contains("--shard") && e.contains("3 points"), "{e}");
+    let assembled = sweep(&vary, &[], &r.join("sharded"), 1)
+        .run(&Quiet::default())
+        .unwrap();
+    assert!(
+        assembled
+            .text
+            .contains("12 ensembles taken from the points' journals"),
+        "{}",
+        assembled.text
+    );
+    for f in ["sweep.csv", "sweep.json"] {
+        assert_eq!(
+            std::fs::read(r.join("whole").join(f)).unwrap(),
+            std::fs::read(r.join("sharded").join(f)).unwrap(),
+            "{f}"
+        );
+    }
 }

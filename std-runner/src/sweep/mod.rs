@@ -48,6 +48,21 @@ pub struct Sweep {
     pub fresh: bool,
     /// Chart formats.
     pub format: Formats,
+    /// Run only shard K of S (`K/S`): the points `k` with `k mod S = K`, journaled where the
+    /// whole sweep looks for them; the same command without it then writes the sweep from the
+    /// journals.
+    pub shard: Option<String>,
+}
+
+/// What running a sweep's points gave.
+#[derive(Debug)]
+pub struct Ran {
+    /// The finished points' results, in order.
+    pub results: Vec<PointResult>,
+    /// Notes about journals not continued or cut.
+    pub notes: Vec<String>,
+    /// Ensembles taken from journals rather than run.
+    pub resumed: u64,
 }
 
 /// What a sweep of `source` varies: the `--vary` texts `vary` (a grid, or zipped when `zip`),
@@ -152,11 +167,12 @@ impl Sweep {
         points: &[PointScene],
         journals: Option<&Path>,
         watch: &dyn Watch,
-    ) -> Result<(Vec<PointResult>, Vec<String>), Error> {
+    ) -> Result<Ran, Error> {
         let total: u64 = points.iter().map(|p| p.source.scene.ensembles()).sum();
         watch.begin(total);
         let mut results = Vec::new();
         let mut notes = Vec::new();
+        let mut resumed = 0;
         for p in points {
             let sc = &p.source.scene;
             let stats = match journals {
@@ -189,6 +205,7 @@ impl Sweep {
                             file.display()
                         ));
                     }
+                    resumed += r.resumed;
                     r.stats
                 }
                 None => {
@@ -212,7 +229,11 @@ impl Sweep {
             results.push(PointResult::of(p, &stats));
         }
         watch.end();
-        Ok((results, notes))
+        Ok(Ran {
+            results,
+            notes,
+            resumed,
+        })
     }
 
     /// Runs the sweep: every point validated and the summed work checked before anything
@@ -221,9 +242,16 @@ impl Sweep {
     /// finished, which a rerun keeps).
     pub fn run(&self, watch: &dyn Watch) -> Result<Outcome, Error> {
         let points = self.checked_points()?;
+        if let Some(spec) = &self.shard {
+            return self.run_shard(spec, points, watch);
+        }
         let dir = self.dir();
         let set = OutputSet::prepare(&dir)?;
-        let (results, notes) = self.run_points(&points, Some(&dir), watch)?;
+        let Ran {
+            results,
+            notes,
+            resumed,
+        } = self.run_points(&points, Some(&dir), watch)?;
         for n in &notes {
             watch.note(n);
         }
@@ -248,6 +276,12 @@ impl Sweep {
             }
         }
         let mut text = String::new();
+        if resumed > 0 {
+            let _ = writeln!(
+                text,
+                "continued  {resumed} ensembles taken from the points' journals (a stopped sweep, or its shards)"
+            );
+        }
         let _ = writeln!(
             text,
             "sweep      {} points of {} ({}), {} ensembles each",
@@ -262,6 +296,62 @@ impl Sweep {
         );
         text.push_str(&summary(&results));
         text.push_str(&crate::job::wrote(&files, &dir));
+        Ok(Outcome { text, complete })
+    }
+}
+
+impl Sweep {
+    /// Runs shard `spec` (`K/S`) of the points: those with index `k mod S = K`, each journaled
+    /// beside the output directory, where the whole sweep finds it; writes no outputs.
+    fn run_shard(
+        &self,
+        spec: &str,
+        points: Vec<PointScene>,
+        watch: &dyn Watch,
+    ) -> Result<Outcome, Error> {
+        let (k, s) = run::shard::parse_spec(spec, u64::MAX)?;
+        if s > points.len() as u64 {
+            return Err(Error::Argument {
+                flag: "--shard".into(),
+                message: format!(
+                    "{k}/{s}: {s} shards of a sweep of {} points would leave shards without a point; use at most {}",
+                    points.len(),
+                    points.len()
+                ),
+            });
+        }
+        let dir = self.dir();
+        let parent = match dir.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        std::fs::create_dir_all(&parent).map_err(|source| Error::Write {
+            path: parent.clone(),
+            source,
+        })?;
+        let mine: Vec<PointScene> = points
+            .into_iter()
+            .filter(|p| p.index as u64 % s == k)
+            .collect();
+        let ran = self.run_points(&mine, Some(&dir), watch)?;
+        for n in &ran.notes {
+            watch.note(n);
+        }
+        let complete = ran.results.len() == mine.len();
+        let indices: Vec<String> = mine.iter().map(|p| p.index.to_string()).collect();
+        let mut text = format!(
+            "shard {k}/{s} of the sweep of {}: points {} ({} of them done, {} ensembles continued from their journals) journaled beside {}\n",
+            self.source.scene.name(),
+            indices.join(", "),
+            ran.results.len(),
+            ran.resumed,
+            dir.display()
+        );
+        text.push_str(if complete {
+            "when every shard is done, the same command without --shard writes the sweep from the journals\n"
+        } else {
+            "run the same command again to finish the shard\n"
+        });
         Ok(Outcome { text, complete })
     }
 }
