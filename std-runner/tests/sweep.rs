@@ -408,3 +408,41 @@ fn a_sharded_sweep_assembled_is_the_single_process_sweep() {
         );
     }
 }
+
+/// The sweep's verdict checks every exact mean at n over the points together: the heated
+/// Maxwell gas over beta (fixed seed; the family's 99.9% level, Bonferroni over the points)
+/// has every point inside, and the same results with one point's mean moved by five of its
+/// widened half-widths name that point (the verdict can fail).
+#[test]
+fn the_verdict_checks_the_exact_means_over_the_points() {
+    use gdsmc_runner::sweep::verdict;
+    let r = root("verdict");
+    let s = sweep(&["drive.beta=0.5,1,2"], &[], &r.join("o"), 0);
+    let points = s.points().unwrap();
+    let mut results: Vec<_> = points
+        .iter()
+        .map(|p| {
+            let st = gdsmc_runner::run::run(&p.source.scene, 0, &|_| {}).unwrap();
+            gdsmc_runner::sweep::point::PointResult::of(p, &st)
+        })
+        .collect();
+    let checks = verdict::checks(&results);
+    let t = gdsmc_runner::run::columns::name::T;
+    let c = checks
+        .iter()
+        .find(|c| c.of == t)
+        .expect("T has its exact mean at n");
+    assert_eq!(c.points, 3);
+    assert!(c.outside.is_empty() && c.worst <= 1.0, "{checks:?}");
+    assert!(verdict::text(&checks).contains("all inside"));
+    let o = results[1]
+        .observables
+        .iter_mut()
+        .find(|o| o.0 == t)
+        .unwrap();
+    o.1 += 5.0 * o.2 * gdsmc_stats::level::family(3, 3);
+    let moved = verdict::checks(&results);
+    let c = moved.iter().find(|c| c.of == t).unwrap();
+    assert_eq!(c.outside, [1]);
+    assert!(verdict::text(&moved).contains("OUTSIDE at point 1"));
+}

@@ -14,6 +14,7 @@
 pub mod chart;
 pub mod point;
 pub mod table;
+pub mod verdict;
 
 pub use crate::scene::vary;
 
@@ -295,6 +296,7 @@ impl Sweep {
             self.source.scene.ensembles()
         );
         text.push_str(&summary(&results));
+        text.push_str(&verdict::text(&verdict::checks(&results)));
         text.push_str(&crate::job::wrote(&files, &dir));
         Ok(Outcome { text, complete })
     }
