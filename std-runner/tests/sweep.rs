@@ -203,7 +203,7 @@ fn a_stopped_sweep_continued_writes_the_same_bytes() {
     assert!(journals(&r) >= 2, "the finished point and the running one");
     let again = s.run(&Quiet::default()).unwrap();
     assert!(again.complete);
-    for f in ["sweep.csv", "sweep.json"] {
+    for f in ["sweep.csv", "sweep.json", "sweep.md"] {
         assert_eq!(
             std::fs::read(r.join("whole").join(f)).unwrap(),
             std::fs::read(r.join("cut").join(f)).unwrap(),
@@ -367,6 +367,18 @@ fn the_command_takes_the_scenes_sweep_table() {
     let sonine = header.iter().position(|h| h == "a2_sonine").unwrap();
     assert!(rows.iter().all(|row| row[sonine].parse::<f64>().is_ok()));
     assert_eq!(rows[17][1..3], ["0.9", "2"]);
+    // sweep.md: the a2 table, a row per point, each beside its Sonine value.
+    let md = std::fs::read_to_string(r.join("o").join("sweep.md")).unwrap();
+    let a2 = md
+        .split("\n## ")
+        .find(|t| t.starts_with("a2\n"))
+        .expect("an a2 table");
+    assert_eq!(
+        a2.lines().filter(|l| l.starts_with("| 0.")).count(),
+        18,
+        "{a2}"
+    );
+    assert!(a2.contains("deviation from a2_sonine"), "{a2}");
 }
 
 /// A sweep run as two shards (each point journaled where the whole sweep looks for it) and
@@ -400,7 +412,7 @@ fn a_sharded_sweep_assembled_is_the_single_process_sweep() {
         "{}",
         assembled.text
     );
-    for f in ["sweep.csv", "sweep.json"] {
+    for f in ["sweep.csv", "sweep.json", "sweep.md"] {
         assert_eq!(
             std::fs::read(r.join("whole").join(f)).unwrap(),
             std::fs::read(r.join("sharded").join(f)).unwrap(),

@@ -374,6 +374,11 @@ fn write(
         source: std::io::Error::other(e),
     })?;
     crate::files::write_atomic(&path, &bytes)?;
+    let path = set.dir().join("sweep.md");
+    crate::files::write_atomic(
+        &path,
+        table::markdown(base.scene.name(), vary, results).as_bytes(),
+    )?;
     let path = set.dir().join("sweep.json");
     let j = table::json(base.scene.name(), vary, sweep.combine, complete, results);
     let mut text = serde_json::to_vec_pretty(&j).map_err(|e| Error::Write {

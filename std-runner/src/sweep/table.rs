@@ -142,3 +142,79 @@ pub fn json(
         }).collect::<Vec<_>>(),
     })
 }
+
+/// Decimals that show a half-width `ci` to two significant digits.
+fn decimals(ci: f64) -> usize {
+    if ci.is_finite() && ci > 0.0 {
+        (1 - ci.log10().floor() as i64).clamp(0, 12) as usize
+    } else {
+        6
+    }
+}
+
+/// sweep.md: for each observable that has a reference at some point, a table of the points:
+/// the varied values, the window mean with its 99.9% half-width, every reference, and the
+/// mean's deviation from the first reference with whether that reference lies within the
+/// interval (the docs' tables are these).
+pub fn markdown(scene: &str, vary: &[Vary], points: &[PointResult]) -> String {
+    let mut out = format!(
+        "# Sweep of {scene}\n\nEach observable that has a reference: per point its window mean with the half-width of its 99.9% interval, every reference averaged over the same window, and the deviation from the first reference.\n"
+    );
+    let references = union(points, |p| p.references.iter().map(|r| r.name).collect());
+    for name in observable_names(points) {
+        let refs: Vec<&'static str> = references
+            .iter()
+            .copied()
+            .filter(|r| {
+                points
+                    .iter()
+                    .any(|p| p.references.iter().any(|x| x.name == *r && x.of == name))
+            })
+            .collect();
+        let Some(first) = refs.first() else { continue };
+        out.push_str(&format!("\n## {name}\n\n|"));
+        for v in vary {
+            out.push_str(&format!(" {} |", v.key));
+        }
+        out.push_str(&format!(" {name} (99.9%) |"));
+        for r in &refs {
+            out.push_str(&format!(" {r} |"));
+        }
+        out.push_str(&format!(
+            " deviation from {first} | {first} within the interval |\n|"
+        ));
+        out.push_str(&"---|".repeat(vary.len() + refs.len() + 3));
+        out.push('\n');
+        for p in points {
+            let Some(&(_, mean, ci)) = p.observables.iter().find(|o| o.0 == name) else {
+                continue;
+            };
+            let d = decimals(ci);
+            out.push('|');
+            for (_, v) in &p.values {
+                out.push_str(&format!(" {v} |"));
+            }
+            out.push_str(&format!(" {mean:.d$} +- {ci:.d$} |"));
+            let value = |r: &str| p.references.iter().find(|x| x.name == r).map(|x| x.value);
+            for r in &refs {
+                match value(r) {
+                    Some(x) => out.push_str(&format!(" {x:.d$} |")),
+                    None => out.push_str(" |"),
+                }
+            }
+            match value(first) {
+                Some(x) if x != 0.0 && x.is_finite() => {
+                    let dev = 100.0 * (mean - x) / x.abs();
+                    let inside = if (mean - x).abs() <= ci { "yes" } else { "no" };
+                    out.push_str(&format!(" {dev:+.2}% | {inside} |\n"));
+                }
+                Some(x) if x.is_finite() => {
+                    let inside = if (mean - x).abs() <= ci { "yes" } else { "no" };
+                    out.push_str(&format!(" {:+.d$} | {inside} |\n", mean - x));
+                }
+                _ => out.push_str(" | |\n"),
+            }
+        }
+    }
+    out
+}
