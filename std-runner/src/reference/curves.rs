@@ -450,6 +450,33 @@ pub fn sonine_cooling_a2(scene: &Scene) -> Option<f64> {
         .then(|| crate::reference::exact::sonine::a2_cooling_in(scene.dimension() as f64, alpha))
 }
 
+/// The Boltzmann limit of `a2(t)` of the smooth one-species Maxwell gas without white noise
+/// (`reference/maxwell_cumulant.rs`), cooling or under the Gaussian thermostat (which leaves
+/// it as it is), when the scene is one; not for MS's time-stepped scheme, whose collisions
+/// are not the Maxwell process's.
+pub fn maxwell_cumulant(
+    scene: &Scene,
+) -> Option<crate::reference::maxwell_cumulant::MaxwellCumulant> {
+    use crate::reference::maxwell_cumulant::{MaxwellCumulant, moment_ratio};
+    if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
+        return None;
+    }
+    let alpha = scene.physics().restitution.constant()?;
+    let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
+        return None;
+    };
+    if !matches!(
+        scene.physics().drive,
+        DriveChoice::None | DriveChoice::Gaussian(_)
+    ) || matches!(scene.physics().scheme, SchemeChoice::TimeStepped(_))
+    {
+        return None;
+    }
+    let d = scene.dimension();
+    let r0 = moment_ratio(&initial_sampler(scene), d);
+    Some(MaxwellCumulant::new(d, alpha, gamma, c, r0))
+}
+
 /// Every reference curve that applies to `scene`.
 pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
     if !scene.physics().species.is_empty() {
@@ -463,6 +490,15 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             source: "van Noije and Ernst 1998, first Sonine approximation of the cooling state in d dimensions (MS (5) for d = 3); an approximation, reached once the gas has relaxed",
             kind: Kind::Approximation,
             curve: Box::new(move |_| a2),
+        });
+    }
+    if let Some(m) = maxwell_cumulant(scene) {
+        out.push(ReferenceCurve {
+            name: "a2_exact",
+            of: name::A2,
+            source: "the inelastic Maxwell gas's moment equations (Bobylev, Carrillo and Gamba 2000; Santos 2003 for d = 2), a2(t) in the Boltzmann limit; derived in reference/maxwell_cumulant.rs",
+            kind: Kind::Limit,
+            curve: Box::new(move |t| m.at(t)),
         });
     }
     if let (Some(models), f0) = (hydro_models(scene), initial_sampler(scene)) {

@@ -152,9 +152,50 @@ fn decimals(ci: f64) -> usize {
     }
 }
 
+/// How a point's numbers are written: fixed with the decimals that show its half-width to two
+/// digits, or, for a half-width below 1e-4, a mean and half-width both below 1e-3, or a mean
+/// from 1e6 (a cooling gas's temperature at 1e-45), in scientific notation with the mean's mantissa to the half-width's second digit.
+#[derive(Clone, Copy)]
+enum Digits {
+    Fixed(usize),
+    Scientific(usize),
+}
+
+impl Digits {
+    fn of(mean: f64, ci: f64) -> Digits {
+        let small = !(ci.is_finite() && ci >= 1e-4) || mean.abs().max(ci) < 1e-3;
+        if !small && mean.abs() < 1e6 {
+            return Digits::Fixed(decimals(ci));
+        }
+        let exp = |x: f64| x.abs().log10().floor() as i64;
+        let k = if ci.is_finite() && ci > 0.0 && mean != 0.0 {
+            (exp(mean) - exp(ci) + 1).clamp(1, 12) as usize
+        } else {
+            3
+        };
+        Digits::Scientific(k)
+    }
+
+    fn write(self, x: f64) -> String {
+        match self {
+            Digits::Fixed(d) => format!("{x:.d$}"),
+            Digits::Scientific(k) => format!("{x:.k$e}"),
+        }
+    }
+
+    /// The half-width: to two digits.
+    fn write_ci(self, ci: f64) -> String {
+        match self {
+            Digits::Fixed(d) => format!("{ci:.d$}"),
+            Digits::Scientific(_) => format!("{ci:.1e}"),
+        }
+    }
+}
+
 /// sweep.md: for each observable that has a reference at some point, a table of the points:
 /// the varied values, the window mean with its 99.9% half-width, every reference, and the
-/// mean's deviation from the first reference with whether that reference lies within the
+/// mean's deviation from the first reference (in percent, or absolute where that reference is
+/// within a half-width of 0) with whether that reference lies within the
 /// interval (the docs' tables are these).
 pub fn markdown(scene: &str, vary: &[Vary], points: &[PointResult]) -> String {
     let mut out = format!(
@@ -189,28 +230,35 @@ pub fn markdown(scene: &str, vary: &[Vary], points: &[PointResult]) -> String {
             let Some(&(_, mean, ci)) = p.observables.iter().find(|o| o.0 == name) else {
                 continue;
             };
-            let d = decimals(ci);
+            let digits = Digits::of(mean, ci);
             out.push('|');
             for (_, v) in &p.values {
                 out.push_str(&format!(" {v} |"));
             }
-            out.push_str(&format!(" {mean:.d$} +- {ci:.d$} |"));
+            out.push_str(&format!(
+                " {} +- {} |",
+                digits.write(mean),
+                digits.write_ci(ci)
+            ));
             let value = |r: &str| p.references.iter().find(|x| x.name == r).map(|x| x.value);
             for r in &refs {
                 match value(r) {
-                    Some(x) => out.push_str(&format!(" {x:.d$} |")),
+                    Some(x) => out.push_str(&format!(" {} |", digits.write(x))),
                     None => out.push_str(" |"),
                 }
             }
             match value(first) {
-                Some(x) if x != 0.0 && x.is_finite() => {
+                // Relative where the reference is larger than the half-width (not against a
+                // reference near 0, where a percentage says nothing), absolute otherwise.
+                Some(x) if x.abs() > ci && x.is_finite() => {
                     let dev = 100.0 * (mean - x) / x.abs();
                     let inside = if (mean - x).abs() <= ci { "yes" } else { "no" };
                     out.push_str(&format!(" {dev:+.2}% | {inside} |\n"));
                 }
                 Some(x) if x.is_finite() => {
                     let inside = if (mean - x).abs() <= ci { "yes" } else { "no" };
-                    out.push_str(&format!(" {:+.d$} | {inside} |\n", mean - x));
+                    let sign = if mean >= x { "+" } else { "" };
+                    out.push_str(&format!(" {sign}{} | {inside} |\n", digits.write(mean - x)));
                 }
                 _ => out.push_str(" | |\n"),
             }
