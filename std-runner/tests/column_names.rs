@@ -62,7 +62,6 @@ fn no_column_name_is_written_outside_the_column_table() {
     for dir in [
         "std-runner/src",
         "std-runner/tests",
-        "std-runner/examples",
         "tests/src",
         "tests/tests",
         "python/src",
