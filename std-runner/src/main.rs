@@ -106,8 +106,10 @@ enum Command {
         #[arg(long, value_name = "svg,png,pdf", default_value = "svg")]
         format: gdsmc_runner::report::charts::Formats,
         /// Run only shard K of S (K from 0): the points k with k mod S = K, journaled beside
-        /// DIR where the whole sweep looks for them (a Slurm array task each); the same command
-        /// without --shard then writes the sweep from the journals, running nothing again.
+        /// DIR where the whole sweep looks for them (a Slurm array task each); with more
+        /// shards than points, each point's ensembles split into ceil(S/P) shards too (as
+        /// `gdsmc run --shard` splits a run). The same command without --shard then writes
+        /// the sweep from the journals, running nothing again.
         #[arg(long, value_name = "K/S")]
         shard: Option<String>,
     },

@@ -95,12 +95,47 @@ pub fn plan(source: &Sourced, vary: &[String], zip: bool) -> Result<vary::Plan, 
     })
 }
 
-/// The journal of point `k` of the sweep written to `dir`: beside it, as a run's.
-fn point_journal(dir: &Path, k: usize) -> PathBuf {
+/// The journal of point `k` of the sweep written to `dir`: beside it, as a run's; with
+/// `chunk = Some((c, C))`, the journal of the shard `c` of `C` of the point's ensembles
+/// (`.NAME.point-K.shard-c-of-C.gdsmc-ensembles`).
+fn point_journal_of(dir: &Path, k: usize, chunk: Option<(u64, u64)>) -> PathBuf {
     let name = dir
         .file_name()
         .map_or("out".into(), |n| n.to_string_lossy().into_owned());
-    run::journal::beside(&dir.with_file_name(format!("{name}.point-{k}")), None)
+    run::journal::beside(&dir.with_file_name(format!("{name}.point-{k}")), chunk)
+}
+
+/// The journal of the whole point `k`.
+fn point_journal(dir: &Path, k: usize) -> PathBuf {
+    point_journal_of(dir, k, None)
+}
+
+/// The shard journals of point `k` beside `dir` (`--shard` with more shards than points),
+/// sorted by name; none when the point was not split.
+fn point_shard_journals(dir: &Path, k: usize) -> Vec<PathBuf> {
+    let whole = point_journal(dir, k);
+    let (Some(parent), Some(name)) = (whole.parent(), whole.file_name()) else {
+        return Vec::new();
+    };
+    let name = name.to_string_lossy();
+    let Some(stem) = name.strip_suffix(&format!(".{}", run::journal::EXTENSION)) else {
+        return Vec::new();
+    };
+    let prefix = format!("{stem}.shard-");
+    let mut found: Vec<PathBuf> = std::fs::read_dir(parent)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|f| {
+            f.file_name().is_some_and(|n| {
+                let n = n.to_string_lossy();
+                n.starts_with(&prefix) && n.ends_with(&format!(".{}", run::journal::EXTENSION))
+            })
+        })
+        .collect();
+    found.sort();
+    found
 }
 
 impl Sweep {
@@ -176,7 +211,22 @@ impl Sweep {
         let mut resumed = 0;
         for p in points {
             let sc = &p.source.scene;
+            let shards = journals.map_or_else(Vec::new, |dir| point_shard_journals(dir, p.index));
             let stats = match journals {
+                Some(_) if !shards.is_empty() => {
+                    // The point was split over shards (`--shard` with more shards than
+                    // points): their journals, merged as `gdsmc merge` merges a run's.
+                    let merged = match merged_point(p, &shards) {
+                        Ok(m) => m,
+                        Err(e) => {
+                            watch.end();
+                            return Err(e);
+                        }
+                    };
+                    watch.advance(merged.ensembles);
+                    resumed += merged.ensembles;
+                    merged
+                }
                 Some(dir) => {
                     let file = point_journal(dir, p.index);
                     let job = Journaled {
@@ -274,6 +324,9 @@ impl Sweep {
             // The outputs hold everything now; the journals are no longer needed.
             for p in &points {
                 let _ = std::fs::remove_file(point_journal(&dir, p.index));
+                for f in point_shard_journals(&dir, p.index) {
+                    let _ = std::fs::remove_file(f);
+                }
             }
         }
         let mut text = String::new();
@@ -302,9 +355,41 @@ impl Sweep {
     }
 }
 
+/// Point `p`'s statistics from the journals of its shards: one whole run of exactly its
+/// scene and seed (else the error names the files and what is missing or different).
+fn merged_point(p: &PointScene, files: &[PathBuf]) -> Result<run::RunStats, Error> {
+    let merged = run::shard::merge_files(files).map_err(|e| {
+        Error::Shards(format!(
+            "point {} of the sweep, split over the --shard tasks: {e}; run the missing or unfinished tasks (gdsmc sweep ... --shard K/S) again",
+            p.index
+        ))
+    })?;
+    let first = run::journal::read_file(&files[0])?;
+    let header = run::journal::read(&files[0], &first)?.header;
+    let want = run::journal::Header::new(
+        &p.source,
+        Some((0, merged.shards)),
+        run::shard::range(0, merged.shards, p.source.scene.ensembles()),
+    );
+    if !want.same_set(&header) {
+        return Err(Error::Shards(format!(
+            "{} is not a shard of point {} of this sweep: it is {}",
+            files[0].display(),
+            p.index,
+            header.difference(&want)
+        )));
+    }
+    Ok(merged.stats)
+}
+
 impl Sweep {
-    /// Runs shard `spec` (`K/S`) of the points: those with index `k mod S = K`, each journaled
-    /// beside the output directory, where the whole sweep finds it; writes no outputs.
+    /// Runs shard `spec` (`K/S`) of the sweep, writing no outputs. With at most as many shards
+    /// as points: the points with index `k mod S = K`, each journaled beside the output
+    /// directory, where the whole sweep finds it. With more shards than points, each point's
+    /// ensembles are split into `C = ceil(S / P)` shards as `gdsmc run --shard` splits a run's
+    /// (same generators, so the merged point is the run to the last bit): unit `u = k C + c`
+    /// (shard `c` of point `k`) goes to task `u mod S`, journaled as
+    /// `.NAME.point-K.shard-c-of-C.gdsmc-ensembles`, and the whole sweep merges them.
     fn run_shard(
         &self,
         spec: &str,
@@ -312,15 +397,23 @@ impl Sweep {
         watch: &dyn Watch,
     ) -> Result<Outcome, Error> {
         let (k, s) = run::shard::parse_spec(spec, u64::MAX)?;
-        if s > points.len() as u64 {
-            return Err(Error::Argument {
-                flag: "--shard".into(),
-                message: format!(
-                    "{k}/{s}: {s} shards of a sweep of {} points would leave shards without a point; use at most {}",
-                    points.len(),
-                    points.len()
-                ),
-            });
+        let chunks = s.div_ceil(points.len() as u64);
+        if chunks > 1 {
+            let fewest = points
+                .iter()
+                .map(|p| p.source.scene.ensembles())
+                .min()
+                .unwrap_or(0);
+            if fewest < chunks {
+                return Err(Error::Argument {
+                    flag: "--shard".into(),
+                    message: format!(
+                        "{k}/{s}: {s} shards of a sweep of {} points split each point's ensembles into {chunks} shards, more than the {fewest} ensembles a point has (run.ensembles); use at most {} shards",
+                        points.len(),
+                        points.len() as u64 * fewest
+                    ),
+                });
+            }
         }
         let dir = self.dir();
         let parent = match dir.parent() {
@@ -331,6 +424,9 @@ impl Sweep {
             path: parent.clone(),
             source,
         })?;
+        if chunks > 1 {
+            return self.run_point_shards(k, s, chunks, &points, &dir, watch);
+        }
         let mine: Vec<PointScene> = points
             .into_iter()
             .filter(|p| p.index as u64 % s == k)
@@ -341,7 +437,7 @@ impl Sweep {
         }
         let complete = ran.results.len() == mine.len();
         let indices: Vec<String> = mine.iter().map(|p| p.index.to_string()).collect();
-        let mut text = format!(
+        let text = format!(
             "shard {k}/{s} of the sweep of {}: points {} ({} of them done, {} ensembles continued from their journals) journaled beside {}\n",
             self.source.scene.name(),
             indices.join(", "),
@@ -349,13 +445,86 @@ impl Sweep {
             ran.resumed,
             dir.display()
         );
-        text.push_str(if complete {
-            "when every shard is done, the same command without --shard writes the sweep from the journals\n"
-        } else {
-            "run the same command again to finish the shard\n"
-        });
-        Ok(Outcome { text, complete })
+        Ok(shard_outcome(text, complete))
     }
+}
+
+impl Sweep {
+    /// Task `k` of `s` when each point's ensembles are split into `chunks` shards (see
+    /// [`Sweep::run_shard`]): runs its units in order, each journaled.
+    fn run_point_shards(
+        &self,
+        k: u64,
+        s: u64,
+        chunks: u64,
+        points: &[PointScene],
+        dir: &Path,
+        watch: &dyn Watch,
+    ) -> Result<Outcome, Error> {
+        let units: Vec<(&PointScene, u64)> = (0..points.len() as u64 * chunks)
+            .filter(|u| u % s == k)
+            .map(|u| (&points[(u / chunks) as usize], u % chunks))
+            .collect();
+        let range = |p: &PointScene, c| run::shard::range(c, chunks, p.source.scene.ensembles());
+        watch.begin(
+            units
+                .iter()
+                .map(|&(p, c)| range(p, c).end - range(p, c).start)
+                .sum(),
+        );
+        let (mut done, mut resumed) = (0, 0);
+        for &(p, c) in &units {
+            let file = point_journal_of(dir, p.index, Some((c, chunks)));
+            let job = Journaled {
+                scene: &p.source.scene,
+                header: run::journal::Header::new(&p.source, Some((c, chunks)), range(p, c)),
+                path: &file,
+                threads: self.threads,
+                fresh: self.fresh,
+            };
+            let r = match job.run(&|e| watch.advance(e), watch.stop()) {
+                Ok(r) => r,
+                Err(e) => {
+                    watch.end();
+                    return Err(e);
+                }
+            };
+            if let Some(why) = &r.discarded {
+                watch.note(&format!(
+                    "note: {} was not continued ({why}); started anew",
+                    file.display()
+                ));
+            }
+            resumed += r.resumed;
+            if r.stats.ensembles < range(p, c).end - range(p, c).start {
+                break;
+            }
+            done += 1;
+        }
+        watch.end();
+        let complete = done == units.len();
+        let names: Vec<String> = units
+            .iter()
+            .map(|(p, c)| format!("{}.{c}", p.index))
+            .collect();
+        let text = format!(
+            "shard {k}/{s} of the sweep of {}: each point's ensembles in {chunks} shards; point.shard {} ({done} of them done, {resumed} ensembles continued from their journals) journaled beside {}\n",
+            self.source.scene.name(),
+            names.join(", "),
+            dir.display()
+        );
+        Ok(shard_outcome(text, complete))
+    }
+}
+
+/// A shard task's outcome: its `text` and what to do next.
+fn shard_outcome(mut text: String, complete: bool) -> Outcome {
+    text.push_str(if complete {
+        "when every shard is done, the same command without --shard writes the sweep from the journals\n"
+    } else {
+        "run the same command again to finish the shard\n"
+    });
+    Outcome { text, complete }
 }
 
 /// Writes sweep.csv, sweep.json and the charts into the prepared set and puts it in place.
