@@ -506,4 +506,16 @@ fn the_verdict_checks_the_exact_means_over_the_points() {
     let c = moved.iter().find(|c| c.of == t).unwrap();
     assert_eq!(c.outside, [1]);
     assert!(verdict::text(&moved).contains("OUTSIDE at point 1"));
+    // sweep.json carries the same verdict.
+    let j = gdsmc_runner::sweep::table::json("grw", &s.vary, s.combine, true, &results);
+    let v = j["verdict"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|v| v["of"] == t)
+        .unwrap()
+        .clone();
+    assert_eq!(v["outside"], serde_json::json!([1]));
+    assert_eq!(v["inside"], false);
+    assert_eq!(v["points"], 3);
 }

@@ -94,9 +94,11 @@ fn jnum(x: f64) -> Value {
     if x.is_finite() { json!(x) } else { Value::Null }
 }
 
-/// sweep.json: the scene, the varied keys and how they combine, and each point's values,
-/// seed, window, observables (mean and ci) and references (value, what it is of, kind and
-/// source).
+/// sweep.json: the scene, the varied keys and how they combine, each point's values, seed,
+/// window, observables (mean and ci) and references (value, what it is of, kind and
+/// source), and the verdict ([`super::verdict`]): per observable with an exact mean at n, the
+/// points checked together, the largest deviation in widened half-widths and the points
+/// outside.
 pub fn json(
     scene: &str,
     vary: &[Vary],
@@ -110,6 +112,15 @@ pub fn json(
         "combine": match combine { Combine::Grid => "grid", Combine::Zip => "zip" },
         "complete": complete,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
+        "verdict": super::verdict::checks(points).iter().map(|c| json!({
+            "of": c.of,
+            "reference": c.reference,
+            "points": c.points,
+            "level": "99.9% for the family of points (Bonferroni)",
+            "worst": jnum(c.worst),
+            "outside": c.outside,
+            "inside": c.outside.is_empty(),
+        })).collect::<Vec<_>>(),
         "points": points.iter().map(|p| {
             let window = match p.window {
                 Window::Steady { from, points } => json!({ "steady_from": from, "points": points }),
