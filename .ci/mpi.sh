@@ -70,4 +70,32 @@ if timeout 120 mpirun --allow-run-as-root --oversubscribe -n 3 $G run scenes/grw
 fi
 grep -q "3 ranks for 2 ensembles" "$W/few.log" || { cat "$W/few.log"; exit 1; }
 echo "refused: a user's directory, more ranks than ensembles"
+
+# A sweep under mpirun (issue 37): 2 ranks over 3 points, 5 ranks (each point's ensembles
+# split in 2), and 2 ranks each in its own directory (no shared file system: rank 0 gets
+# rank 1's journal as bytes) all write the single process's sweep, taking every ensemble
+# from the ranks' journals, and leave no journal.
+SW=(sweep "$PWD/scenes/grw-example3.toml" --vary collisions.restitution=0.5,0.7,0.9 --n 64 --ensembles 4)
+$G "${SW[@]}" --out "$W/sweep-one" > /dev/null
+"${MPIRUN[@]}" $G "${SW[@]}" --threads 1 --out "$W/sweep-two" > "$W/sweep-two.log"
+mpirun --allow-run-as-root --oversubscribe -n 5 $G "${SW[@]}" --threads 1 --out "$W/sweep-five" \
+    > "$W/sweep-five.log"
+mkdir -p "$W/own/r0" "$W/own/r1"
+cat > "$W/own-dir.sh" <<'SH'
+#!/usr/bin/env bash
+cd "$1/r$OMPI_COMM_WORLD_RANK" && shift && exec "$@"
+SH
+chmod +x "$W/own-dir.sh"
+"${MPIRUN[@]}" "$W/own-dir.sh" "$PWD/$W/own" "$PWD/$G" "${SW[@]}" --threads 1 --out sweep \
+    > "$W/sweep-own.log"
+for d in sweep-two sweep-five own/r0/sweep; do
+    for f in sweep.csv sweep.json sweep.md; do cmp "$W/sweep-one/$f" "$W/$d/$f"; done
+done
+for l in two five own; do
+    grep -q "continued  12 ensembles taken" "$W/sweep-$l.log" || { cat "$W/sweep-$l.log"; exit 1; }
+done
+if ls -a "$W" "$W/own/r0" "$W/own/r1" | grep -q "gdsmc-ensembles"; then
+    echo "journals left after a finished sweep"; exit 1
+fi
+echo "sweeps under mpirun: the single process's files"
 cargo clippy -p gdsmc --features mpi --all-targets --target-dir target/mpi -- -D warnings

@@ -62,6 +62,34 @@ impl World {
     pub fn size(&self) -> u64 {
         self.world.size() as u64
     }
+
+    /// Rank 0's `ok` (the other ranks pass anything), heard by every rank.
+    pub fn broadcast_ok(&self, ok: bool) -> bool {
+        let mut flag = u8::from(ok);
+        self.world.process_at_rank(0).broadcast_into(&mut flag);
+        flag == 1
+    }
+
+    /// Every rank's `blobs` to rank 0, in rank order (point to point, so the nodes need no
+    /// shared file system): rank 0 gets each rank's list, its own first; the others `None`.
+    pub fn gather(&self, blobs: &[Vec<u8>]) -> Option<Vec<Vec<Vec<u8>>>> {
+        let root = self.world.process_at_rank(0);
+        if self.rank() != 0 {
+            root.send(&[blobs.len() as u64][..]);
+            for b in blobs {
+                root.send(&b[..]);
+            }
+            return None;
+        }
+        let mut all = vec![blobs.to_vec()];
+        for q in 1..self.size() {
+            let from = self.world.process_at_rank(q as i32);
+            let (count, _) = from.receive_vec::<u64>();
+            let n = count.first().copied().unwrap_or(0);
+            all.push((0..n).map(|_| from.receive_vec::<u8>().0).collect());
+        }
+        Some(all)
+    }
 }
 
 /// Runs this rank's shard of `scene` (`header_of(shard, range)` gives its journal header) and,

@@ -12,7 +12,10 @@
 //! --seed SEED+k` to the last bit.
 
 pub mod chart;
+#[cfg(feature = "mpi")]
+mod mpi;
 pub mod point;
+mod shard;
 pub mod table;
 pub mod verdict;
 
@@ -98,7 +101,7 @@ pub fn plan(source: &Sourced, vary: &[String], zip: bool) -> Result<vary::Plan, 
 /// The journal of point `k` of the sweep written to `dir`: beside it, as a run's; with
 /// `chunk = Some((c, C))`, the journal of the shard `c` of `C` of the point's ensembles
 /// (`.NAME.point-K.shard-c-of-C.gdsmc-ensembles`).
-fn point_journal_of(dir: &Path, k: usize, chunk: Option<(u64, u64)>) -> PathBuf {
+pub(super) fn point_journal_of(dir: &Path, k: usize, chunk: Option<(u64, u64)>) -> PathBuf {
     let name = dir
         .file_name()
         .map_or("out".into(), |n| n.to_string_lossy().into_owned());
@@ -106,7 +109,7 @@ fn point_journal_of(dir: &Path, k: usize, chunk: Option<(u64, u64)>) -> PathBuf 
 }
 
 /// The journal of the whole point `k`.
-fn point_journal(dir: &Path, k: usize) -> PathBuf {
+pub(super) fn point_journal(dir: &Path, k: usize) -> PathBuf {
     point_journal_of(dir, k, None)
 }
 
@@ -291,11 +294,26 @@ impl Sweep {
     /// runs, the output place before any simulation; the points in order, each journaled as
     /// it runs; sweep.csv and sweep.json written at the end (or, when stopped, of the points
     /// finished, which a rerun keeps).
+    ///
+    /// With `--shard K/S`, only that task's points (or shards of points) run, journaled
+    /// ([`shard`]); under mpirun (the `mpi` feature) rank r runs task r of the ranks and rank 0
+    /// assembles ([`mpi`]).
     pub fn run(&self, watch: &dyn Watch) -> Result<Outcome, Error> {
         let points = self.checked_points()?;
         if let Some(spec) = &self.shard {
-            return self.run_shard(spec, points, watch);
+            let ks = run::shard::parse_spec(spec, u64::MAX)?;
+            return self.shard_task(ks, points, watch);
         }
+        #[cfg(feature = "mpi")]
+        if let Some(w) = run::mpi::World::init() {
+            return self.run_mpi(&w, points, watch);
+        }
+        self.assemble(points, watch)
+    }
+
+    /// The whole sweep in this process: the points in order, each taken from its journal (or
+    /// its shards' journals) or run, and the outputs written.
+    fn assemble(&self, points: Vec<PointScene>, watch: &dyn Watch) -> Result<Outcome, Error> {
         let dir = self.dir();
         let set = OutputSet::prepare(&dir)?;
         let Ran {
@@ -380,151 +398,6 @@ fn merged_point(p: &PointScene, files: &[PathBuf]) -> Result<run::RunStats, Erro
         )));
     }
     Ok(merged.stats)
-}
-
-impl Sweep {
-    /// Runs shard `spec` (`K/S`) of the sweep, writing no outputs. With at most as many shards
-    /// as points: the points with index `k mod S = K`, each journaled beside the output
-    /// directory, where the whole sweep finds it. With more shards than points, each point's
-    /// ensembles are split into `C = ceil(S / P)` shards as `gdsmc run --shard` splits a run's
-    /// (same generators, so the merged point is the run to the last bit): unit `u = k C + c`
-    /// (shard `c` of point `k`) goes to task `u mod S`, journaled as
-    /// `.NAME.point-K.shard-c-of-C.gdsmc-ensembles`, and the whole sweep merges them.
-    fn run_shard(
-        &self,
-        spec: &str,
-        points: Vec<PointScene>,
-        watch: &dyn Watch,
-    ) -> Result<Outcome, Error> {
-        let (k, s) = run::shard::parse_spec(spec, u64::MAX)?;
-        let chunks = s.div_ceil(points.len() as u64);
-        if chunks > 1 {
-            let fewest = points
-                .iter()
-                .map(|p| p.source.scene.ensembles())
-                .min()
-                .unwrap_or(0);
-            if fewest < chunks {
-                return Err(Error::Argument {
-                    flag: "--shard".into(),
-                    message: format!(
-                        "{k}/{s}: {s} shards of a sweep of {} points split each point's ensembles into {chunks} shards, more than the {fewest} ensembles a point has (run.ensembles); use at most {} shards",
-                        points.len(),
-                        points.len() as u64 * fewest
-                    ),
-                });
-            }
-        }
-        let dir = self.dir();
-        let parent = match dir.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
-        std::fs::create_dir_all(&parent).map_err(|source| Error::Write {
-            path: parent.clone(),
-            source,
-        })?;
-        if chunks > 1 {
-            return self.run_point_shards(k, s, chunks, &points, &dir, watch);
-        }
-        let mine: Vec<PointScene> = points
-            .into_iter()
-            .filter(|p| p.index as u64 % s == k)
-            .collect();
-        let ran = self.run_points(&mine, Some(&dir), watch)?;
-        for n in &ran.notes {
-            watch.note(n);
-        }
-        let complete = ran.results.len() == mine.len();
-        let indices: Vec<String> = mine.iter().map(|p| p.index.to_string()).collect();
-        let text = format!(
-            "shard {k}/{s} of the sweep of {}: points {} ({} of them done, {} ensembles continued from their journals) journaled beside {}\n",
-            self.source.scene.name(),
-            indices.join(", "),
-            ran.results.len(),
-            ran.resumed,
-            dir.display()
-        );
-        Ok(shard_outcome(text, complete))
-    }
-}
-
-impl Sweep {
-    /// Task `k` of `s` when each point's ensembles are split into `chunks` shards (see
-    /// [`Sweep::run_shard`]): runs its units in order, each journaled.
-    fn run_point_shards(
-        &self,
-        k: u64,
-        s: u64,
-        chunks: u64,
-        points: &[PointScene],
-        dir: &Path,
-        watch: &dyn Watch,
-    ) -> Result<Outcome, Error> {
-        let units: Vec<(&PointScene, u64)> = (0..points.len() as u64 * chunks)
-            .filter(|u| u % s == k)
-            .map(|u| (&points[(u / chunks) as usize], u % chunks))
-            .collect();
-        let range = |p: &PointScene, c| run::shard::range(c, chunks, p.source.scene.ensembles());
-        watch.begin(
-            units
-                .iter()
-                .map(|&(p, c)| range(p, c).end - range(p, c).start)
-                .sum(),
-        );
-        let (mut done, mut resumed) = (0, 0);
-        for &(p, c) in &units {
-            let file = point_journal_of(dir, p.index, Some((c, chunks)));
-            let job = Journaled {
-                scene: &p.source.scene,
-                header: run::journal::Header::new(&p.source, Some((c, chunks)), range(p, c)),
-                path: &file,
-                threads: self.threads,
-                fresh: self.fresh,
-            };
-            let r = match job.run(&|e| watch.advance(e), watch.stop()) {
-                Ok(r) => r,
-                Err(e) => {
-                    watch.end();
-                    return Err(e);
-                }
-            };
-            if let Some(why) = &r.discarded {
-                watch.note(&format!(
-                    "note: {} was not continued ({why}); started anew",
-                    file.display()
-                ));
-            }
-            resumed += r.resumed;
-            if r.stats.ensembles < range(p, c).end - range(p, c).start {
-                break;
-            }
-            done += 1;
-        }
-        watch.end();
-        let complete = done == units.len();
-        let names: Vec<String> = units
-            .iter()
-            .map(|(p, c)| format!("{}.{c}", p.index))
-            .collect();
-        let text = format!(
-            "shard {k}/{s} of the sweep of {}: each point's ensembles in {chunks} shards; point.shard {} ({done} of them done, {resumed} ensembles continued from their journals) journaled beside {}\n",
-            self.source.scene.name(),
-            names.join(", "),
-            dir.display()
-        );
-        Ok(shard_outcome(text, complete))
-    }
-}
-
-/// A shard task's outcome: its `text` and what to do next.
-fn shard_outcome(mut text: String, complete: bool) -> Outcome {
-    text.push_str(if complete {
-        "when every shard is done, the same command without --shard writes the sweep from the journals\n"
-    } else {
-        "run the same command again to finish the shard\n"
-    });
-    Outcome { text, complete }
 }
 
 /// Writes sweep.csv, sweep.json and the charts into the prepared set and puts it in place.
