@@ -19,6 +19,7 @@ run with that many ensembles).
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import json
@@ -179,6 +180,22 @@ def _bar(total: Optional[int]):
         return _TextBar(total)
 
 
+@contextlib.contextmanager
+def _progress(progress, total: Optional[int]):
+    """The callback ``progress`` asks for: a callable as it is, ``True`` a bar over ``total``
+    ensembles (unknown: None) closed at the end, ``False`` none."""
+    if callable(progress):
+        yield progress
+    elif progress:
+        bar = _bar(total)
+        try:
+            yield bar.update
+        finally:
+            bar.close()
+    else:
+        yield None
+
+
 def run(
     scene: Union[Scene, str, os.PathLike],
     *,
@@ -203,18 +220,9 @@ def run(
     """
     if not isinstance(scene, Scene):
         scene = Scene.from_file(os.fspath(scene))
-    bar = None
-    callback = None
-    if callable(progress):
-        callback = progress
-    elif progress:
-        bar = _bar(ensembles if ensembles is not None else scene.ensembles)
-        callback = bar.update
-    try:
+    total = ensembles if ensembles is not None else scene.ensembles
+    with _progress(progress, total) as callback:
         raw, interrupted = _gdsmc.run(scene, n, ensembles, seed, threads, callback, allow_long)
-    finally:
-        if bar is not None:
-            bar.close()
     if interrupted:
         asked = ensembles if ensembles is not None else scene.ensembles
         if raw.ensembles == 0:
@@ -329,20 +337,10 @@ def sweep(
     if not isinstance(scene, Scene):
         scene = Scene.from_file(os.fspath(scene))
     specs = _vary_specs(vary)
-    bar = None
-    callback = None
-    if callable(progress):
-        callback = progress
-    elif progress:
-        bar = _bar(None)
-        callback = bar.update
-    try:
+    with _progress(progress, None) as callback:
         csv_text, json_text, asked, interrupted = _gdsmc.sweep(
             scene, specs, zip, n, ensembles, seed, threads, callback, allow_long
         )
-    finally:
-        if bar is not None:
-            bar.close()
     result = Swept(csv_text, json_text)
     if interrupted:
         done = len(result.table.get("point", []))

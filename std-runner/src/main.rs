@@ -187,15 +187,18 @@ enum Bench {
     /// alpha = 1, a host medium), the batch kick and moment kernels, and the machine's
     /// limits (random numbers per second, independent random reads per second).
     ///
-    /// One line per case:
-    ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y> acceptance=<a> of_pair_limit=<f> of_rng=<g> [background_per_s=<b>]
+    /// Every rate is per CPU second of the measuring thread (the first line says
+    /// clock=thread-cpu-time); --seconds is CPU time. One line per case:
+    ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y> acceptance=<a> of_pair_reference=<f> of_rng=<g> [background_per_s=<b>] [choice_reads_per_candidate=<r> choice_reads_per_collision=<q>]
     ///   case=<name> n=<n> particles_per_s=<x>
+    /// of_pair_reference: candidates per second over case=reference-pair-update's pairs per
+    /// second (a reference rate, not a bound).
     #[command(verbatim_doc_comment)]
     Throughput {
         /// Particle numbers of the event-loop cases (comma-separated).
         #[arg(long, value_delimiter = ',', default_values_t = [1_000usize, 100_000, 1_000_000, 10_000_000])]
         sizes: Vec<usize>,
-        /// Measuring time per case, seconds.
+        /// Measuring time per case, CPU seconds of the measuring thread.
         #[arg(long, default_value_t = 1.5)]
         seconds: f64,
     },

@@ -64,6 +64,9 @@ pub struct SumNoSplitting<A> {
     /// `<|c|>` about the bulk velocity at the last synchronization (stored units; the
     /// `t_kick` slots are the caller's between calls, so [`Self::work_rate`] reads this).
     mean_c: Real,
+    /// Uniform draws of the weighted choice of `i` so far (each a random particle read; the
+    /// bench's reads per candidate). Kept here, not in [`Counts`], which journals carry.
+    choice_draws: u64,
     counts: Counts,
     t: Real,
     refresh: RefreshWindow,
@@ -95,6 +98,7 @@ impl<A: Restitution> SumNoSplitting<A> {
             cmax: 0.0,
             ready: false,
             mean_c: 0.0,
+            choice_draws: 0,
             counts: Counts::default(),
             t: t0,
             refresh: RefreshWindow::new(p.len()),
@@ -112,6 +116,12 @@ impl<A: Restitution> SumNoSplitting<A> {
     /// Event counts so far.
     pub fn counts(&self) -> Counts {
         self.counts
+    }
+
+    /// Uniform draws (random particle reads) the weighted choice of the candidates' first
+    /// particle has made so far: `c_max / <|c|>` per candidate on average (module docs).
+    pub fn choice_draws(&self) -> u64 {
+        self.choice_draws
     }
 
     /// Work units per unit time from here ([`crate::engine::EventLoop::work_rate`]): the
@@ -271,6 +281,7 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
         let i = loop {
             let i = self.uniform(p, rng);
             if uniform01(rng) * self.cmax < p.kick_time(i) {
+                self.choice_draws += u64::from(trials) + 1;
                 break i;
             }
             trials += 1;

@@ -7,6 +7,8 @@ use std::fmt;
 /// One line of `gdsmc bench throughput`.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Line {
+    /// `clock=thread-cpu-time`, first: every rate is per CPU second of the measuring thread.
+    Clock,
     /// An event loop's speed beside the machine's limits.
     Loop(LoopLine),
     /// A batch kernel's or a limit's rate.
@@ -14,7 +16,8 @@ pub enum Line {
 }
 
 /// An event loop's line: `case=<name> kernel=<k> n=<n> collisions_per_s=<x>
-/// attempts_per_s=<y> acceptance=<a> of_pair_limit=<f> of_rng=<g> [background_per_s=<b>]`.
+/// attempts_per_s=<y> acceptance=<a> of_pair_reference=<f> of_rng=<g> [background_per_s=<b>]
+/// [choice_reads_per_candidate=<r> choice_reads_per_collision=<q>]`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LoopLine {
     /// The case (loop, drive, restitution).
@@ -32,12 +35,17 @@ pub struct LoopLine {
     /// A host medium's grain-background collisions per second (BRS (26)); `None` for the
     /// other drives.
     pub background_per_s: Option<f64>,
+    /// The sum form's random particle reads per candidate in its weighted choice of the first
+    /// particle (beyond the pair's two); `None` for the other loops.
+    pub choice_reads_per_candidate: Option<f64>,
 }
 
-/// The machine's limits an event-loop line is set against.
+/// The machine's rates an event-loop line is set against.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Limits {
-    /// Random pairs read and written per second at this `n` (`case=limit-pair-update`).
+    /// The reference rate of random pairs read and written per CPU second at this `n`
+    /// (`case=reference-pair-update`; the best of short timings of one swap loop, not a
+    /// bound).
     pub pairs: f64,
     /// Raw xoshiro256++ numbers per second (`case=limit-xoshiro256pp`).
     pub numbers: f64,
@@ -50,9 +58,9 @@ impl LoopLine {
         self.collisions_per_s / self.attempts_per_s
     }
 
-    /// Candidates per second as a fraction of the pair-update limit at this `n`.
+    /// Candidates per second as a fraction of the pair-update reference rate at this `n`.
     #[must_use]
-    pub fn of_pair_limit(&self) -> f64 {
+    pub fn of_pair_reference(&self) -> f64 {
         self.attempts_per_s / self.limits.pairs
     }
 
@@ -109,21 +117,29 @@ pub struct RateLine {
 impl fmt::Display for Line {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            Line::Clock => write!(f, "clock=thread-cpu-time"),
             Line::Loop(l) => {
                 write!(
                     f,
-                    "case={} kernel={} n={} collisions_per_s={:.4e} attempts_per_s={:.4e} acceptance={:.3} of_pair_limit={:.3} of_rng={:.4}",
+                    "case={} kernel={} n={} collisions_per_s={:.4e} attempts_per_s={:.4e} acceptance={:.3} of_pair_reference={:.3} of_rng={:.4}",
                     l.case,
                     l.kernel,
                     l.n,
                     l.collisions_per_s,
                     l.attempts_per_s,
                     l.acceptance(),
-                    l.of_pair_limit(),
+                    l.of_pair_reference(),
                     l.of_rng()
                 )?;
                 if let Some(b) = l.background_per_s {
                     write!(f, " background_per_s={b:.4e}")?;
+                }
+                if let Some(r) = l.choice_reads_per_candidate {
+                    write!(
+                        f,
+                        " choice_reads_per_candidate={r:.3} choice_reads_per_collision={:.3}",
+                        r / l.acceptance()
+                    )?;
                 }
                 Ok(())
             }

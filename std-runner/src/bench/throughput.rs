@@ -5,14 +5,23 @@
 //! acceptance=<a>` for the no-splitting event loop (GRW Section 3 / RW Algorithm 3; `a` the
 //! fraction of candidates that collide), and
 //! `case=<name> n=<n> particles_per_s=<x>` (or `numbers_per_s`, `reads_per_s`) for the
-//! batch kernels and the limits. Each loop line ends with `of_pair_limit`, its candidates per
-//! second as a fraction of the machine's limit for that memory traffic at the same n
-//! (`case=limit-pair-update`: random pairs read and written, drawn ahead and prefetched at the
-//! best lookahead, in the run's huge-page buffer), and `of_rng`, the same as a fraction of the
+//! batch kernels and the limits. Each loop line ends with `of_pair_reference`, its candidates
+//! per second as a fraction of a reference rate for that memory traffic at the same n
+//! (`case=reference-pair-update`: random pairs read and written, drawn ahead and prefetched at
+//! the best lookahead, in the run's huge-page buffer; the best of short timings of one swap
+//! loop, not a bound: a loop can exceed it), and `of_rng`, the same as a fraction of the
 //! generator's raw rate (`case=limit-xoshiro256pp`); the host medium's line adds
-//! `background_per_s`, its grain-background collisions (BRS (26)), which are most of its work.
+//! `background_per_s`, its grain-background collisions (BRS (26)), which are most of its work,
+//! and the sum-form line `choice_reads_per_candidate` and `choice_reads_per_collision`, the
+//! random particle reads its weighted choice of `i` makes (its memory traffic beyond the
+//! pair's).
+//!
+//! Every rate is per CPU second of the measuring thread (`cpu_time::ThreadTime`), and every
+//! budget is CPU time: a machine busy with other work slows the bench's wall clock, not its
+//! figures (the first line, `clock=thread-cpu-time`, says so).
 
 use super::line::{Limits, Line, LoopLine, RateLine, Unit};
+use cpu_time::ThreadTime;
 use gdsmc_core::batch::{kick, sums};
 use gdsmc_core::drive::{
     Drive, HardSphereBackground, HostMedium, HostMediumParams, NoDrive, WhiteNoise,
@@ -27,7 +36,7 @@ use gdsmc_core::sample::{Maxwellian, standard_normal};
 use gdsmc_core::vec3::Vec3;
 use std::f64::consts::PI;
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// What to measure.
 #[derive(Clone, Debug)]
@@ -74,13 +83,17 @@ fn event_loop<K: Kernel, D: Drive>(
 }
 
 /// The loop runs use for hard spheres with no drive: the sum-form majorant
-/// ([`SumNoSplitting`]); returns (collisions per second, attempts per second).
-fn sum_form_loop(kernel: HardSpheres, alpha: f64, n: usize, budget: Duration) -> (f64, f64) {
+/// ([`SumNoSplitting`]); returns (collisions per second, attempts per second, the weighted
+/// choice's particle reads per candidate).
+fn sum_form_loop(kernel: HardSpheres, alpha: f64, n: usize, budget: Duration) -> (f64, f64, f64) {
     let mut buf = system(n, 1);
     let mut p = Particles::new(&mut buf).expect("n >= 2");
     let law = Constant::new(alpha).expect("alpha in (0, 1]");
     let (mut e, _) = SumNoSplitting::start(kernel, law, &mut p, 0.0).expect("finite start");
-    timed(&mut e, &mut p, budget)
+    let (draws, candidates) = (e.choice_draws(), e.counts().candidates);
+    let (coll, att) = timed(&mut e, &mut p, budget);
+    let reads = (e.choice_draws() - draws) as f64 / (e.counts().candidates - candidates) as f64;
+    (coll, att, reads)
 }
 
 /// The rough gas's loop (hard spheres, the rough map with `alpha`, `beta`, uniform spheres,
@@ -128,7 +141,7 @@ fn timed_with_background<E: EventLoop>(
         dt *= 2.0;
     }
     let c0 = e.counts();
-    let start = Instant::now();
+    let start = ThreadTime::now();
     while start.elapsed() < budget {
         let t = e.time() + dt;
         black_box(e.advance_to(p, t, &mut rng).expect("finite"));
@@ -145,11 +158,12 @@ fn timed_with_background<E: EventLoop>(
 /// The lookaheads the pair-update limit tries.
 pub const LOOKAHEADS: [usize; 5] = [1, 8, 16, 32, 64];
 
-/// The machine's limit for the event loop's memory traffic at size `n`: random pairs `(i, j)`
-/// drawn as the loop draws them, each particle of the pair read and written back, with the
-/// pairs drawn `L` ahead and prefetched, in the run's buffer (huge pages). Returns the best
-/// pairs per second over [`LOOKAHEADS`] and the lookahead that gave it.
-fn pair_limit(n: usize, budget: Duration) -> (f64, usize) {
+/// A reference rate for the event loop's memory traffic at size `n` (not a bound: the best of
+/// short timings of one loop, which another loop can exceed): random pairs `(i, j)` drawn as
+/// the loop draws them, each particle of the pair read and written back, with the pairs drawn
+/// `L` ahead and prefetched, in the run's buffer (huge pages). Returns the best pairs per CPU
+/// second over [`LOOKAHEADS`] and the lookahead that gave it.
+fn pair_reference(n: usize, budget: Duration) -> (f64, usize) {
     let mut buf = system(n, 8);
     let mut rng = seeded(9);
     let mut best = (0.0, 0);
@@ -175,10 +189,11 @@ fn pair_limit(n: usize, budget: Duration) -> (f64, usize) {
     best
 }
 
-/// Repeats `f` (which handles `per` items) until `budget` has passed; items per second.
+/// Repeats `f` (which handles `per` items) until `budget` of this thread's CPU time has
+/// passed; items per CPU second.
 fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
     f();
-    let start = Instant::now();
+    let start = ThreadTime::now();
     let mut k = 0u64;
     while start.elapsed() < budget {
         f();
@@ -188,7 +203,7 @@ fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
 }
 
 /// One event-loop line: its collisions and candidates per second against the limits `lim`
-/// ([`pair_limit`], [`rng_limit`]).
+/// ([`pair_reference`], [`rng_limit`]).
 fn loop_line(
     case: &'static str,
     kernel: &'static str,
@@ -197,7 +212,19 @@ fn loop_line(
     att: f64,
     lim: Limits,
 ) -> Line {
-    Line::Loop(LoopLine {
+    Line::Loop(loop_line_of(case, kernel, n, coll, att, lim))
+}
+
+/// The fields of [`loop_line`].
+fn loop_line_of(
+    case: &'static str,
+    kernel: &'static str,
+    n: usize,
+    coll: f64,
+    att: f64,
+    lim: Limits,
+) -> LoopLine {
+    LoopLine {
         case,
         kernel,
         n,
@@ -205,7 +232,8 @@ fn loop_line(
         attempts_per_s: att,
         limits: lim,
         background_per_s: None,
-    })
+        choice_reads_per_candidate: None,
+    }
 }
 
 /// A rate line.
@@ -238,6 +266,7 @@ type LoopCase<'a> = dyn Fn(f64, bool) -> (f64, f64) + 'a;
 pub fn run(o: &Options, mut line: impl FnMut(Line)) {
     let g = 4.0;
     let c = 1.0 / (4.0 * PI);
+    line(Line::Clock);
     let numbers = rng_limit(o.budget);
     line(rate_line(
         "limit-xoshiro256pp",
@@ -246,9 +275,9 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
         numbers,
     ));
     for &n in &o.sizes {
-        let (pairs, lookahead) = pair_limit(n, o.budget);
+        let (pairs, lookahead) = pair_reference(n, o.budget);
         line(Line::Rate(RateLine {
-            case: "limit-pair-update",
+            case: "reference-pair-update",
             n: Some(n),
             unit: Unit::Pairs,
             per_s: pairs,
@@ -266,11 +295,9 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
             }),
             ("hard-spheres", &|a, heated| {
                 let k = HardSpheres::new(g, c).expect("valid");
-                if heated {
-                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
-                } else {
-                    sum_form_loop(k, a, n, o.budget)
-                }
+                // With no drive: the sum form's own line below.
+                assert!(heated, "the elastic hard-sphere case is the sum form's");
+                event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
             }),
             ("vhs", &|a, heated| {
                 let k = Vhs::new(g, c, 0.5).expect("valid");
@@ -305,6 +332,7 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
             attempts_per_s: att,
             limits: limit,
             background_per_s: Some(bg),
+            choice_reads_per_candidate: None,
         }));
         // Hard spheres with no drive on the Umax majorant (GRW step 1.4), the loop before the
         // sum form: the comparison for the elastic hard-sphere line below.
@@ -349,6 +377,15 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
                 ("nosplit-white-noise-alpha0.5", 0.5, true),
                 ("nosplit-elastic-alpha1", 1.0, false),
             ] {
+                if name == "hard-spheres" && !heated {
+                    let k = HardSpheres::new(g, c).expect("valid");
+                    let (coll, att, reads) = sum_form_loop(k, alpha, n, o.budget);
+                    line(Line::Loop(LoopLine {
+                        choice_reads_per_candidate: Some(reads),
+                        ..loop_line_of(case, name, n, coll, att, limit)
+                    }));
+                    continue;
+                }
                 let (coll, att) = f(alpha, heated);
                 line(loop_line(case, name, n, coll, att, limit));
             }
@@ -407,11 +444,13 @@ mod tests {
         };
         let mut lines = Vec::new();
         run(&o, |l| lines.push(l));
+        assert_eq!(lines[0], Line::Clock, "the clock is said first");
+        assert_eq!(lines[0].to_string(), "clock=thread-cpu-time");
         let loops: Vec<&LoopLine> = lines
             .iter()
             .filter_map(|l| match l {
                 Line::Loop(l) => Some(l),
-                Line::Rate(_) => None,
+                _ => None,
             })
             .collect();
         assert_eq!(loops.len(), 10);
@@ -430,9 +469,14 @@ mod tests {
                     "collisions_per_s",
                     "attempts_per_s",
                     "acceptance",
-                    "of_pair_limit",
+                    "of_pair_reference",
                     "of_rng",
-                    "background_per_s"
+                    if l.background_per_s.is_some() {
+                        "background_per_s"
+                    } else {
+                        "choice_reads_per_candidate"
+                    },
+                    "choice_reads_per_collision"
                 ][..keys.len()],
                 "{text}"
             );
@@ -446,6 +490,13 @@ mod tests {
             assert!(l.attempts_per_s >= l.collisions_per_s, "{text}");
             assert!(l.collisions_per_s > 0.0, "{text}");
             assert!(l.of_rng() > 0.0, "{text}");
+            // Only the sum form (elastic hard spheres with no drive) has a weighted choice;
+            // it draws at least once per candidate.
+            let sum_form = l.kernel == "hard-spheres" && l.case == "nosplit-elastic-alpha1";
+            assert_eq!(l.choice_reads_per_candidate.is_some(), sum_form, "{text}");
+            if let Some(r) = l.choice_reads_per_candidate {
+                assert!(r >= 1.0, "{text}");
+            }
             if let Some(bg) = l.background_per_s {
                 // BRS Example 4: about 16 background collisions per grain-grain one.
                 assert!(bg > l.collisions_per_s, "{text}");
@@ -461,7 +512,7 @@ mod tests {
             "moment-sums",
             "limit-xoshiro256pp",
             "limit-random-read",
-            "limit-pair-update",
+            "reference-pair-update",
         ] {
             assert!(
                 lines
