@@ -519,3 +519,59 @@ fn the_verdict_checks_the_exact_means_over_the_points() {
     assert_eq!(v["inside"], false);
     assert_eq!(v["points"], 3);
 }
+
+/// Every shipped sweep (`scenes/sweep-*.toml`, each by its `[sweep]` table) at n = 64 and two
+/// ensembles per point: its charts pass the run charts' review (legend off the data, bands
+/// visible, n and ensembles in the title), so a shipped sweep's docs chart cannot regress.
+#[test]
+fn every_shipped_sweeps_charts_are_readable() {
+    let r = root("shipped");
+    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&scenes)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| {
+            p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with("sweep-"))
+        })
+        .collect();
+    files.sort();
+    assert!(files.len() >= 6, "{files:?}");
+    for (k, file) in files.iter().enumerate() {
+        let source = Sourced::read(file, Override::run_flags(Some(64), Some(2), None)).unwrap();
+        let plan = gdsmc_runner::sweep::plan(&source, &[], false).unwrap();
+        let s = Sweep {
+            source,
+            vary: plan.vary,
+            combine: plan.combine,
+            threads: 0,
+            allow_long: true,
+            out: Some(r.join(k.to_string())),
+            fresh: false,
+            format: "svg".parse().unwrap(),
+            shard: None,
+        };
+        let points = s.points().unwrap();
+        let results: Vec<_> = points
+            .iter()
+            .map(|p| {
+                let st = gdsmc_runner::run::run(&p.source.scene, 0, &|_| {}).unwrap();
+                gdsmc_runner::sweep::point::PointResult::of(p, &st)
+            })
+            .collect();
+        let charts = gdsmc_runner::sweep::chart::charts(&s.source, &s.vary, &points, &results);
+        assert!(!charts.is_empty(), "{}", file.display());
+        for (stem, chart) in &charts {
+            let at = format!("{}: {stem}", file.display());
+            let c = chart.as_ref().unwrap_or_else(|e| panic!("{at}: {e}"));
+            let g = &c.geometry;
+            assert!(
+                g.title.contains("n = 64") && g.title.contains("2 ensembles per point"),
+                "{at}: title {}",
+                g.title
+            );
+            assert_eq!(g.objections(), Vec::<String>::new(), "{at}");
+        }
+    }
+}
