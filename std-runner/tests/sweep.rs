@@ -259,6 +259,34 @@ fn a_users_directory_is_never_replaced() {
     assert_eq!(std::fs::read_dir(&mine).unwrap().count(), 1);
 }
 
+/// A sweep of `source` over `vary` for the chart tests (all cores, no work limit).
+fn chart_sweep(source: Sourced, vary: Vec<Vary>, combine: Combine, out: PathBuf) -> Sweep {
+    Sweep {
+        source,
+        vary,
+        combine,
+        threads: 0,
+        allow_long: true,
+        out: Some(out),
+        fresh: false,
+        format: "svg".parse().unwrap(),
+        shard: None,
+    }
+}
+
+/// Every point of `s` run in memory and the sweep's charts drawn from them.
+fn charts_of(s: &Sweep) -> Vec<(String, Result<gdsmc_runner::report::charts::Chart, String>)> {
+    let points = s.points().unwrap();
+    let results: Vec<_> = points
+        .iter()
+        .map(|p| {
+            let st = gdsmc_runner::run::run(&p.source.scene, 0, &|_| {}).unwrap();
+            gdsmc_runner::sweep::point::PointResult::of(p, &st)
+        })
+        .collect();
+    gdsmc_runner::sweep::chart::charts(&s.source, &s.vary, &points, &results)
+}
+
 /// Every chart of three small sweeps (a cooling state's a2 against alpha beside its Sonine
 /// approximation; a grid of the heated Maxwell gas over beta on a logarithmic range and alpha,
 /// each alpha a series with its exact temperature; a rough gas over the tangential
@@ -290,26 +318,13 @@ fn the_charts_of_a_sweep_are_readable() {
     for (k, (file, vary, sets)) in cases.into_iter().enumerate() {
         let mut overrides: Vec<Override> = sets.iter().map(|s| Override::set(*s)).collect();
         overrides.extend(Override::run_flags(Some(256), Some(3), None));
-        let s = Sweep {
-            source: Sourced::read(&scenes.join(file), overrides).unwrap(),
-            vary: vary.iter().map(|v| Vary::parse(v).unwrap()).collect(),
-            combine: Combine::Grid,
-            threads: 0,
-            allow_long: true,
-            out: Some(r.join(k.to_string())),
-            fresh: false,
-            format: "svg".parse().unwrap(),
-            shard: None,
-        };
-        let points = s.points().unwrap();
-        let results: Vec<_> = points
-            .iter()
-            .map(|p| {
-                let st = gdsmc_runner::run::run(&p.source.scene, 0, &|_| {}).unwrap();
-                gdsmc_runner::sweep::point::PointResult::of(p, &st)
-            })
-            .collect();
-        let charts = gdsmc_runner::sweep::chart::charts(&s.source, &s.vary, &points, &results);
+        let s = chart_sweep(
+            Sourced::read(&scenes.join(file), overrides).unwrap(),
+            vary.iter().map(|v| Vary::parse(v).unwrap()).collect(),
+            Combine::Grid,
+            r.join(k.to_string()),
+        );
+        let charts = charts_of(&s);
         let t = gdsmc_runner::run::columns::name::T;
         assert!(charts.iter().any(|(stem, _)| stem == t), "{file}");
         for (stem, chart) in &charts {
@@ -541,26 +556,8 @@ fn every_shipped_sweeps_charts_are_readable() {
     for (k, file) in files.iter().enumerate() {
         let source = Sourced::read(file, Override::run_flags(Some(64), Some(2), None)).unwrap();
         let plan = gdsmc_runner::sweep::plan(&source, &[], false).unwrap();
-        let s = Sweep {
-            source,
-            vary: plan.vary,
-            combine: plan.combine,
-            threads: 0,
-            allow_long: true,
-            out: Some(r.join(k.to_string())),
-            fresh: false,
-            format: "svg".parse().unwrap(),
-            shard: None,
-        };
-        let points = s.points().unwrap();
-        let results: Vec<_> = points
-            .iter()
-            .map(|p| {
-                let st = gdsmc_runner::run::run(&p.source.scene, 0, &|_| {}).unwrap();
-                gdsmc_runner::sweep::point::PointResult::of(p, &st)
-            })
-            .collect();
-        let charts = gdsmc_runner::sweep::chart::charts(&s.source, &s.vary, &points, &results);
+        let s = chart_sweep(source, plan.vary, plan.combine, r.join(k.to_string()));
+        let charts = charts_of(&s);
         assert!(!charts.is_empty(), "{}", file.display());
         for (stem, chart) in &charts {
             let at = format!("{}: {stem}", file.display());

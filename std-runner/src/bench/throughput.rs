@@ -203,20 +203,8 @@ fn rate(budget: Duration, per: usize, mut f: impl FnMut()) -> f64 {
 }
 
 /// One event-loop line: its collisions and candidates per second against the limits `lim`
-/// ([`pair_reference`], [`rng_limit`]).
+/// ([`pair_reference`], [`rng_limit`]), no background and no weighted choice.
 fn loop_line(
-    case: &'static str,
-    kernel: &'static str,
-    n: usize,
-    coll: f64,
-    att: f64,
-    lim: Limits,
-) -> Line {
-    Line::Loop(loop_line_of(case, kernel, n, coll, att, lim))
-}
-
-/// The fields of [`loop_line`].
-fn loop_line_of(
     case: &'static str,
     kernel: &'static str,
     n: usize,
@@ -343,14 +331,14 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
             n,
             o.budget,
         );
-        line(loop_line(
+        line(Line::Loop(loop_line(
             "nosplit-umax-elastic-alpha1",
             "hard-spheres",
             n,
             coll,
             att,
             limit,
-        ));
+        )));
         // Rough hard spheres (uniform spheres): the elastic perfectly rough gas and the heated
         // one with beta = 0 (both translation and rotation kicked).
         for (case, coll_att) in [
@@ -370,7 +358,14 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
             ),
         ] {
             let (coll, att) = coll_att;
-            line(loop_line(case, "hard-spheres", n, coll, att, limit));
+            line(Line::Loop(loop_line(
+                case,
+                "hard-spheres",
+                n,
+                coll,
+                att,
+                limit,
+            )));
         }
         for (name, f) in kernels {
             for (case, alpha, heated) in [
@@ -382,12 +377,12 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
                     let (coll, att, reads) = sum_form_loop(k, alpha, n, o.budget);
                     line(Line::Loop(LoopLine {
                         choice_reads_per_candidate: Some(reads),
-                        ..loop_line_of(case, name, n, coll, att, limit)
+                        ..loop_line(case, name, n, coll, att, limit)
                     }));
                     continue;
                 }
                 let (coll, att) = f(alpha, heated);
-                line(loop_line(case, name, n, coll, att, limit));
+                line(Line::Loop(loop_line(case, name, n, coll, att, limit)));
             }
         }
     }
