@@ -44,8 +44,9 @@ impl Kind {
     }
 }
 
-/// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
-pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
+/// `(alpha, gamma, C_0)` of a one-species gas of smooth particles with the Maxwell kernel
+/// and a constant restitution: the scenes the Maxwell gas's exact solutions are of.
+fn smooth_maxwell(scene: &Scene) -> Option<(f64, f64, f64)> {
     if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
         return None; // a one-species solution of smooth particles
     }
@@ -53,6 +54,12 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
     let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
         return None;
     };
+    Some((alpha, gamma, c))
+}
+
+/// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
+pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
+    let (alpha, gamma, c) = smooth_maxwell(scene)?;
     let t0 = initial_temperature(scene);
     let m = |beta| MaxwellTemperature::new(t0, alpha, beta, gamma, c);
     match scene.physics().drive {
@@ -65,13 +72,7 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
 pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
-    if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
-        return None; // a one-species solution
-    }
-    let alpha = scene.physics().restitution.constant()?;
-    let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
-        return None;
-    };
+    let (alpha, gamma, c) = smooth_maxwell(scene)?;
     let DriveChoice::HostMedium {
         kernel: BackgroundKernel::Maxwell,
         c1,
@@ -458,13 +459,7 @@ pub fn maxwell_cumulant(
     scene: &Scene,
 ) -> Option<crate::reference::maxwell_cumulant::MaxwellCumulant> {
     use crate::reference::maxwell_cumulant::{MaxwellCumulant, moment_ratio};
-    if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
-        return None;
-    }
-    let alpha = scene.physics().restitution.constant()?;
-    let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
-        return None;
-    };
+    let (alpha, gamma, c) = smooth_maxwell(scene)?;
     if !matches!(
         scene.physics().drive,
         DriveChoice::None | DriveChoice::Gaussian(_)
