@@ -241,6 +241,18 @@ impl RefreshWindow {
         self.wasted += fictitious;
     }
 
+    /// Candidates in the window so far.
+    #[inline(always)]
+    pub fn events(&self) -> u64 {
+        self.window
+    }
+
+    /// `k` more candidates, every one a collision.
+    #[inline(always)]
+    pub fn record_collisions(&mut self, k: u64) {
+        self.window += k;
+    }
+
     /// No drive: `2n` candidates since the last synchronization.
     #[inline(always)]
     pub fn synchronization_due(&self, n: usize) -> bool {

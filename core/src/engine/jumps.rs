@@ -39,6 +39,10 @@ pub(crate) trait Jumps {
     /// One event at time `t`: a candidate pair, its kicks, the fictitious test and the map.
     /// True when the majorant changed (the rate is then recomputed).
     fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool;
+    /// One event of a loop with no drive and no `Umax`, which always collides: a pair and the
+    /// map, counted as a candidate and a collision. [`run_events`] calls it only when
+    /// neither `ACTS` nor `USES_UMAX`; a loop with either may run [`Jumps::step`] here.
+    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, rng: &mut R);
 }
 
 /// The four accessors of [`Jumps`] every loop writes the same way, from the loop's time field,
@@ -96,6 +100,18 @@ pub(crate) fn run_events<J: Jumps, R: Rng + ?Sized>(
             let after = j.bound();
             j.window().refreshed(before, after, n);
         }
+        if !J::ACTS && !J::USES_UMAX {
+            // Every candidate collides and the rate holds until the next synchronization: the
+            // events run as a burst, the same draws in the same order as below, with none of
+            // the fictitious-collision bookkeeping.
+            let room = (2 * n as u64).saturating_sub(j.window().events());
+            let (done, stopped) = burst(j, p, t_end, rate, room, rng);
+            j.window().record_collisions(done);
+            if stopped {
+                return Ok(());
+            }
+            continue;
+        }
         let t_next = j.now() + standard_exponential(rng) / rate;
         // Not `t_next >= t_end` alone: a zero rate with a zero draw gives NaN, which stops too.
         if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
@@ -109,4 +125,35 @@ pub(crate) fn run_events<J: Jumps, R: Rng + ?Sized>(
         let wasted = j.tally().fictitious - before;
         j.window().record(wasted);
     }
+}
+
+/// Up to `room` events of a loop with no drive and no `Umax` (every candidate collides, the
+/// rate is fixed), stopping before the first event at or after `t_end`: (events done, whether
+/// `t_end` stopped it). The loop's time is left at the last event. The waiting times are the
+/// ones [`run_events`] draws, to the bit (`tau / rate` added to the time of the last event).
+#[inline(always)]
+fn burst<J: Jumps, R: Rng + ?Sized>(
+    j: &mut J,
+    p: &mut Particles<'_>,
+    t_end: Real,
+    rate: Real,
+    room: u64,
+    rng: &mut R,
+) -> (u64, bool) {
+    let mut now = j.now();
+    let mut done = 0;
+    let stopped = loop {
+        if done == room {
+            break false;
+        }
+        let t_next = now + standard_exponential(rng) / rate;
+        if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
+            break true;
+        }
+        now = t_next;
+        j.collide(p, rng);
+        done += 1;
+    };
+    j.set_now(now);
+    (done, stopped)
 }

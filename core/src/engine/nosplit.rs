@@ -304,4 +304,14 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Jumps for NoSplitting<K,
             .kick_counting(p, j, t, rng, &mut self.c.counts.background);
         self.c.candidate(p, i, j, D::ACTS, rng)
     }
+    #[inline(always)]
+    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, rng: &mut R) {
+        let (i, j) = self.c.pairs.next(p, rng);
+        let v = (p.velocity(i), p.velocity(j));
+        self.c
+            .map
+            .collide_pair::<K, G, R>(p, (i, j), v, rng, &mut self.c.counts);
+        self.c.counts.candidates += 1;
+        self.c.counts.collisions += 1;
+    }
 }
