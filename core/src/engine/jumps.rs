@@ -2,9 +2,12 @@
 //! Algorithm 3's waiting times, with the synchronizations and refreshes of the majorant
 //! ([`RefreshWindow`]). The loops ([`super::NoSplitting`] and the rough gas's) differ only in
 //! what one event does ([`Jumps::step`]: which pair, which kicks, which map) and in how they
-//! synchronize; the schedule is here once. The mixture's loop keeps its own copy: on this
-//! skeleton its `advance_to` took 3.5% more instructions (callgrind, the mixture cooling
-//! scene), the one-species and rough loops within 0.5% either way.
+//! synchronize; the schedule is here once. A loop with no `Umax` (the Maxwell kernel)
+//! collides at every candidate at a fixed rate, so its events run as a burst
+//! ([`Jumps::collide`]): the same draws in the same order, with none of the
+//! fictitious-collision bookkeeping. The mixture's loop keeps its own copy: on this skeleton
+//! its `advance_to` took 3.5% more instructions (callgrind, the mixture cooling scene), the
+//! one-species and rough loops within 0.5% either way.
 
 use super::event::RefreshWindow;
 use super::{Counts, EngineError};
@@ -39,10 +42,10 @@ pub(crate) trait Jumps {
     /// One event at time `t`: a candidate pair, its kicks, the fictitious test and the map.
     /// True when the majorant changed (the rate is then recomputed).
     fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool;
-    /// One event of a loop with no drive and no `Umax`, which always collides: a pair and the
-    /// map, counted as a candidate and a collision. [`run_events`] calls it only when
-    /// neither `ACTS` nor `USES_UMAX`; a loop with either may run [`Jumps::step`] here.
-    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, rng: &mut R);
+    /// One event at time `t` of a loop with no `Umax`, which always collides: a pair, its
+    /// kicks and the map, counted as a candidate and a collision. [`run_events`] calls it
+    /// only when not `USES_UMAX`; a loop with a `Umax` may run [`Jumps::step`] here.
+    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R);
 }
 
 /// The four accessors of [`Jumps`] every loop writes the same way, from the loop's time field,
@@ -100,11 +103,16 @@ pub(crate) fn run_events<J: Jumps, R: Rng + ?Sized>(
             let after = j.bound();
             j.window().refreshed(before, after, n);
         }
-        if !J::ACTS && !J::USES_UMAX {
-            // Every candidate collides and the rate holds until the next synchronization: the
+        if !J::USES_UMAX {
+            // Every candidate collides and the rate holds until the next synchronization (with
+            // a drive, until `t_end`: nothing refreshes a majorant that cannot go loose): the
             // events run as a burst, the same draws in the same order as below, with none of
             // the fictitious-collision bookkeeping.
-            let room = (2 * n as u64).saturating_sub(j.window().events());
+            let room = if J::ACTS {
+                u64::MAX
+            } else {
+                (2 * n as u64).saturating_sub(j.window().events())
+            };
             let (done, stopped) = burst(j, p, t_end, rate, room, rng);
             j.window().record_collisions(done);
             if stopped {
@@ -127,8 +135,8 @@ pub(crate) fn run_events<J: Jumps, R: Rng + ?Sized>(
     }
 }
 
-/// Up to `room` events of a loop with no drive and no `Umax` (every candidate collides, the
-/// rate is fixed), stopping before the first event at or after `t_end`: (events done, whether
+/// Up to `room` events of a loop with no `Umax` (every candidate collides, the rate is
+/// fixed), stopping before the first event at or after `t_end`: (events done, whether
 /// `t_end` stopped it). The loop's time is left at the last event. The waiting times are the
 /// ones [`run_events`] draws, to the bit (`tau / rate` added to the time of the last event).
 #[inline(always)]
@@ -151,7 +159,7 @@ fn burst<J: Jumps, R: Rng + ?Sized>(
             break true;
         }
         now = t_next;
-        j.collide(p, rng);
+        j.collide(p, now, rng);
         done += 1;
     };
     j.set_now(now);

@@ -305,8 +305,14 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Jumps for NoSplitting<K,
         self.c.candidate(p, i, j, D::ACTS, rng)
     }
     #[inline(always)]
-    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, rng: &mut R) {
+    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
         let (i, j) = self.c.pairs.next(p, rng);
+        self.c
+            .drive
+            .kick_counting(p, i, t, rng, &mut self.c.counts.background);
+        self.c
+            .drive
+            .kick_counting(p, j, t, rng, &mut self.c.counts.background);
         let v = (p.velocity(i), p.velocity(j));
         self.c
             .map

@@ -322,7 +322,7 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
         true
     }
     /// Never reached (the sum form has a bound that goes loose): one step.
-    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, rng: &mut R) {
-        self.step(p, self.t, rng);
+    fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
+        self.step(p, t, rng);
     }
 }
