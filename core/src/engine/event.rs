@@ -105,6 +105,23 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Collider<K, D, A, G> {
         self.rate(n, scale) + n as Real * self.drive.event_rate(speed)
     }
 
+    /// The next candidate pair (uniform, drawn ahead), both partners kicked lazily to the event
+    /// time `t` (GRW steps 2.3-2.6).
+    #[inline(always)]
+    pub fn kicked_pair<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t: Real,
+        rng: &mut R,
+    ) -> (usize, usize) {
+        let (i, j) = self.pairs.next(p, rng);
+        self.drive
+            .kick_counting(p, i, t, rng, &mut self.counts.background);
+        self.drive
+            .kick_counting(p, j, t, rng, &mut self.counts.background);
+        (i, j)
+    }
+
     /// Processes the candidate pair `(i, j)` whose partners are already at the event time: the
     /// fictitious-collision test against the majorant that generated the event (GRW (20)),
     /// else the collision map ([`CollisionMap::collide_pair`]: GRW (3) with a scattering

@@ -295,24 +295,12 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Jumps for NoSplitting<K,
     }
     #[inline(always)]
     fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool {
-        let (i, j) = self.c.pairs.next(p, rng);
-        self.c
-            .drive
-            .kick_counting(p, i, t, rng, &mut self.c.counts.background);
-        self.c
-            .drive
-            .kick_counting(p, j, t, rng, &mut self.c.counts.background);
+        let (i, j) = self.c.kicked_pair(p, t, rng);
         self.c.candidate(p, i, j, D::ACTS, rng)
     }
     #[inline(always)]
     fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
-        let (i, j) = self.c.pairs.next(p, rng);
-        self.c
-            .drive
-            .kick_counting(p, i, t, rng, &mut self.c.counts.background);
-        self.c
-            .drive
-            .kick_counting(p, j, t, rng, &mut self.c.counts.background);
+        let (i, j) = self.c.kicked_pair(p, t, rng);
         let v = (p.velocity(i), p.velocity(j));
         self.c
             .map
