@@ -258,12 +258,6 @@ impl RefreshWindow {
         self.wasted += fictitious;
     }
 
-    /// Candidates in the window so far.
-    #[inline(always)]
-    pub fn events(&self) -> u64 {
-        self.window
-    }
-
     /// `k` more candidates, every one a collision.
     #[inline(always)]
     pub fn record_collisions(&mut self, k: u64) {
@@ -273,7 +267,13 @@ impl RefreshWindow {
     /// No drive: `2n` candidates since the last synchronization.
     #[inline(always)]
     pub fn synchronization_due(&self, n: usize) -> bool {
-        self.window >= 2 * n as u64
+        self.until_synchronization(n) == 0
+    }
+
+    /// No drive: the candidates left before the synchronization is due.
+    #[inline(always)]
+    pub fn until_synchronization(&self, n: usize) -> u64 {
+        (2 * n as u64).saturating_sub(self.window)
     }
 
     /// With a drive: the window is full and more than half of it was fictitious.

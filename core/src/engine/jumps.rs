@@ -111,7 +111,7 @@ pub(crate) fn run_events<J: Jumps, R: Rng + ?Sized>(
             let room = if J::ACTS {
                 u64::MAX
             } else {
-                (2 * n as u64).saturating_sub(j.window().events())
+                j.window().until_synchronization(n)
             };
             let (done, stopped) = burst(j, p, t_end, rate, room, rng);
             j.window().record_collisions(done);
