@@ -16,8 +16,11 @@
 //!   `a2 = <c^4>/(d(d+2) T^2) - 1` ([`crate::moments::Observables::of_dim`]).
 //!
 //! The kernels keep their total pair rate `int B de = 4 pi gamma C_lambda |u|^lambda` in both
-//! dimensions (the time unit is set by the rate constant; a hard-disk gas of diameter `sigma`
-//! at areal density `n_A` has `4 pi gamma C_1 = sigma n_A`).
+//! dimensions (the time unit is set by the rate constant). A hard-disk gas of diameter `sigma`
+//! at areal density `n_A` has `4 pi gamma C_1 = 2 sigma n_A` (the cross-section of disks is the
+//! length `2 sigma`: they meet when the impact parameter lies in `(-sigma, sigma)`), hard
+//! spheres at number density `n` have `4 pi gamma C_1 = pi sigma^2 n` (times Enskog's `chi`
+//! for a dense gas, MS Section 3); `core/tests/disks.rs` counts the disks' collisions.
 
 use crate::kernel::Kernel;
 use crate::math::{Real, sqrt};

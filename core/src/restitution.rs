@@ -26,10 +26,14 @@ pub trait Restitution: Copy + core::fmt::Debug {
 }
 
 /// The impact-speed law BRS (9)-(10): `1 - e = 2 beta_0 |g . n|^delta`, with the normal impact
-/// speed `|g . n|^2 = (|g|^2 - |g| |g . w_hat|) / 2` (BRS (10)), `g = u` the relative velocity
-/// and `w_hat = e` the direction of GRW (3). `delta = 1/5`: viscoelastic spheres; `delta = 0`:
-/// constant `e = 1 - 2 beta_0`. For impact speeds above `(1/(2 beta_0))^{1/delta}` the law gives
-/// `e < 0`; gdsmc then takes `e = 0` (a perfectly inelastic normal impact) and counts it.
+/// speed `|g . n|^2 = (|g|^2 - |g| (g . w_hat)) / 2`, `g = u` the relative velocity and `w_hat =
+/// e` the direction of GRW (3). BRS print (10) with `|g . w_hat|`; without the absolute value
+/// it is the normal of map (4) itself: the impulse there is along `g - |g| w_hat`, the apse line
+/// `n`, and `|g . n|^2 = |g - |g| w_hat|^2 / 4` is the expression above (docs/papers.md, "Where
+/// the code departs from a printed equation"). The rough map, which draws `n`, takes the same
+/// speed. `delta = 1/5`: viscoelastic spheres; `delta = 0`: constant `e = 1 - 2 beta_0`. For
+/// impact speeds above `(1/(2 beta_0))^{1/delta}` the law gives `e < 0`; gdsmc then takes
+/// `e = 0` (a perfectly inelastic normal impact) and counts it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImpactSpeed {
     beta0: Real,
@@ -65,14 +69,14 @@ impl ImpactSpeed {
     pub fn delta(&self) -> Real {
         self.delta
     }
-    /// The normal impact speed `|g . n|` of BRS (10).
+    /// The normal impact speed `|g . n|` of the collision GRW (3) with relative velocity `u`
+    /// and direction `e`: `sqrt((|u|^2 - |u| (u . e)) / 2)` (BRS (10) without its absolute
+    /// value; type docs). A head-on reversal (`e = -u_hat`) gives `|u|`, a grazing collision
+    /// (`e = u_hat`) 0.
     #[inline]
     pub fn normal_speed(u: Vec3, e: Vec3) -> Real {
         let un = u.norm();
-        sqrt(crate::math::max(
-            0.0,
-            0.5 * (un * un - un * crate::math::abs(u.dot(e))),
-        ))
+        sqrt(crate::math::max(0.0, 0.5 * (un * un - un * u.dot(e))))
     }
 }
 

@@ -11,6 +11,7 @@ mod docs_links;
 mod finite_outputs;
 mod hard_spheres;
 mod host_medium;
+mod impact_speed;
 mod maxwell_relaxation;
 mod mixture;
 mod mutated_scenes;

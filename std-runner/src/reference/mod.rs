@@ -1,12 +1,14 @@
 //! The values a run is compared with: exact solutions ([`exact`]: GRW (13), BRS (14)-(17),
 //! MS's Sonine estimates and tail amplitudes; [`maxwell_cumulant`]: the Maxwell gas's `a2(t)`), the BRS hydrodynamic closures ([`hydro`]) and the integrator they are solved with ([`ode`]), and
 //! which of them apply to a scene, as curves beside the observables ([`curves`]), and the
-//! balance of the Gaussian thermostat ([`thermostat`]); [`mutation`]: the hook that perturbs
+//! balance of the Gaussian thermostat ([`thermostat`]); [`impact_speed`]: the exact initial
+//! cooling rate under the impact-speed law; [`mutation`]: the hook that perturbs
 //! one exact reference on purpose, for the mutation check.
 
 pub mod curves;
 pub mod exact;
 pub mod hydro;
+pub mod impact_speed;
 pub mod maxwell_cumulant;
 pub mod mixture;
 pub mod mutation;
