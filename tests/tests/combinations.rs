@@ -266,3 +266,71 @@ fn the_combination_table_is_the_codes() {
         "docs/combinations.md is not the code's table: rerun with GDSMC_UPDATE_DOCS=1\n{generated}"
     );
 }
+
+/// A reference is a number or is absent, never NaN: every reference curve the runner attaches
+/// to every combination the core takes (the scene of GRW Example 3 given that physics, its 17
+/// observation times over [0, 8]) is finite at every time, and so are those of the elastic
+/// cases where a state search has nothing to relax (an elastic perfectly rough mixture, whose
+/// Maxwellian approximation was NaN, and an elastic smooth one).
+#[test]
+fn every_reference_of_every_combination_is_a_number() {
+    use gdsmc_runner::reference::curves::for_scene;
+    let mut base = gdsmc_validation::shipped("grw-example3", N, 1, 1);
+    base.set_steady_from(None).expect("no steady window");
+    let mut checked = 0;
+    let mut check = |ph: &Physics, what: &str| {
+        let mut s = base.clone();
+        if s.with_physics(|p| *p = ph.clone()).is_err() {
+            return; // refused by the scene's rules (the table shows why)
+        }
+        for c in for_scene(&s) {
+            for &t in s.times() {
+                let v = (c.curve)(t);
+                assert!(v.is_finite(), "{what}: {} = {v} at t = {t}", c.name);
+            }
+        }
+        checked += 1;
+    };
+    let blocks = [false, true].into_iter().flat_map(|rough| {
+        [false, true].into_iter().flat_map(move |mixture| {
+            [DimensionChoice::Three, DimensionChoice::Two].map(|dim| Block {
+                rough,
+                mixture,
+                dim,
+            })
+        })
+    });
+    for b in blocks {
+        let cells = DRIVES.iter().flat_map(|d| {
+            LAWS.iter().flat_map(move |l| {
+                SCHEMES
+                    .iter()
+                    .flat_map(move |s| KERNELS.map(|k| (d, l, s, k)))
+            })
+        });
+        for ((dname, drive), (lname, law), (sname, scheme), (kname, kernel)) in cells {
+            let ph = b.physics(kernel, *law, *drive, *scheme);
+            if ph.validate().is_ok() {
+                check(
+                    &ph,
+                    &format!("{}; {kname}; {lname}; {dname}; {sname}", b.title()),
+                );
+            }
+        }
+        // Elastic (and perfectly rough) cooling: nothing dissipates.
+        let mut ph = b.physics(
+            KERNELS[1].1,
+            RestitutionLaw::Constant(1.0),
+            DriveChoice::None,
+            SchemeChoice::NoSplitting,
+        );
+        if let Some(r) = ph.rotation.as_mut() {
+            r.beta = 1.0;
+        }
+        check(&ph, &format!("{}; elastic", b.title()));
+    }
+    assert!(
+        checked >= 900,
+        "only {checked} combinations reached the runner"
+    );
+}

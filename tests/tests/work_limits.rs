@@ -75,3 +75,58 @@ fn absurd_work_is_refused_naming_the_keys() {
         .to_string();
     assert!(e.contains("scheme.dt") && e.contains("2^64 steps"), "{e}");
 }
+
+/// A mixture that gives each pair its coefficient (`pair_restitution`) cools as the same
+/// mixture with one `restitution` for every pair: the estimate sees that cooling (it once
+/// took alpha = 1 from the unused `restitution` and asked for 1e12 units at t_end = 1e7, where
+/// 1e8 were done), for the smooth mixture, its rough twin at beta = -1 and a rough one, at
+/// t_end = 1e7 and every pair alike (the two descriptions of one physics must give one
+/// estimate) or unlike (the pairs' mean dissipation: between the two uniform mixtures').
+#[test]
+fn a_mixture_with_pair_restitution_is_estimated_cooling() {
+    let text = std::fs::read_to_string(scene_path("rough-mixture-hcs")).unwrap();
+    let text = text.replace("steady_from = 100.0", "");
+    let parse = |text: &str| scene::parse(std::path::Path::new("mix.toml"), text).unwrap();
+    let units = |text: &str, set: &str| {
+        let s = parse(
+            &text
+                .replace("restitution = 0.9", set)
+                .replace("t_end = 200.0", "t_end = 1e7"),
+        );
+        check(&s, 2, false).unwrap_or_else(|e| panic!("{set}: {e}"));
+        estimate(&s).total()
+    };
+    let smooth_text = text.replace(
+        "[rotation]\ntangential_restitution = 0.0\ninertia = 0.4\ntemperature = 1.0\n",
+        "",
+    );
+    let twin = text.replace(
+        "tangential_restitution = 0.0",
+        "tangential_restitution = -1.0",
+    );
+    assert!(
+        smooth_text != text && twin != text,
+        "the scene's texts were replaced"
+    );
+    for (what, text) in [
+        ("smooth", &smooth_text),
+        ("beta = -1", &twin),
+        ("beta = 0", &text),
+    ] {
+        let one = units(text, "restitution = 0.9");
+        let pairs = units(text, "pair_restitution = [[0.9, 0.9], [0.9, 0.9]]");
+        assert!(
+            (pairs - one).abs() <= 1e-9 * one,
+            "{what}: {pairs} vs {one}"
+        );
+        let mixed = units(text, "pair_restitution = [[0.8, 0.9], [0.9, 0.95]]");
+        let (lo, hi) = (
+            units(text, "restitution = 0.8"),
+            units(text, "restitution = 0.95"),
+        );
+        assert!(
+            lo < mixed && mixed < hi,
+            "{what}: {mixed} not within ({lo}, {hi})"
+        );
+    }
+}

@@ -407,4 +407,19 @@ mod tests {
             }
         }
     }
+
+    /// Elastic perfectly rough hard species (alpha = beta = 1) neither cool nor heat: their
+    /// state is equilibrium, every ratio 1 (it was NaN: the steps grew without bound as the
+    /// rates vanished). (Softer kernels have no equipartition: docs/rough.md.)
+    #[test]
+    fn the_elastic_perfectly_rough_mixture_is_at_equipartition() {
+        for (d, lambda) in [(2, 1.0), (3, 1.0)] {
+            let mut ma = two(d, 1.0, 1.0, lambda);
+            ma.alpha = vec![1.0; 3];
+            let (t, theta) = ma.steady().unwrap();
+            for v in t.iter().chain(&theta) {
+                assert!((v - 1.0).abs() < 1e-9, "d = {d}: {t:?} {theta:?}");
+            }
+        }
+    }
 }

@@ -83,12 +83,35 @@ fn logistic_integral(r: f64, c: f64, t: f64) -> f64 {
 
 /// The restitution coefficient the estimates use (here and in the step-error warnings): the
 /// constant, or for the impact-speed law BRS (9) its value at unit normal impact speed,
-/// `1 - 2 beta0` (in [0, 1]).
+/// `1 - 2 beta0` (in [0, 1]); for a mixture with `pair_restitution`, the coefficient whose
+/// dissipation `1 - alpha^2` is the pairs' mean over the random pair of species `(s, t)`, drawn
+/// with the mole fractions `x_s x_t` (the scene's own `restitution` is then not used).
 pub fn typical_alpha(scene: &Scene) -> f64 {
-    match scene.physics().restitution {
+    let p = scene.physics();
+    if !p.pair_restitution.is_empty() {
+        let dissipation = pair_mean(p, &p.pair_restitution, |a| 1.0 - a * a);
+        return (1.0 - dissipation).max(0.0).sqrt();
+    }
+    match p.restitution {
         RestitutionLaw::Constant(a) => a,
         RestitutionLaw::ImpactSpeed { beta0, .. } => (1.0 - 2.0 * beta0).clamp(0.0, 1.0),
     }
+}
+
+/// The mean of `f` of a per-pair value (`values` in the order of
+/// [`gdsmc_core::mixture::pair_index`]) over the random pair of species `(s, t)` drawn with the
+/// mole fractions, `sum_{s,t} x_s x_t f(value_st)`.
+fn pair_mean(p: &crate::scene::Physics, values: &[f64], f: impl Fn(f64) -> f64) -> f64 {
+    let total: f64 = p.species.iter().map(|s| s.count as f64).sum();
+    let k = p.species.len();
+    let mut mean = 0.0;
+    for s in 0..k {
+        for t in 0..k {
+            let x = p.species[s].count as f64 * p.species[t].count as f64 / (total * total);
+            mean += x * f(values[gdsmc_core::mixture::pair_index(k, s, t)]);
+        }
+    }
+    mean
 }
 
 /// The estimate for `scene`.
@@ -104,12 +127,15 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     // rotational temperature is energy the translation can take, and the tangential
     // restitution dissipates besides alpha (the two terms of the energy change's closed form,
     // weighted alike: an order of magnitude is all the estimate needs).
+    // A mixture's pairs each with their own tangential restitution: their mean loss.
     let (noise_rot, t_rot0, rough_loss) = p.rotation.map_or((0.0, 0.0, 0.0), |r| {
-        (
-            r.noise,
-            r.temperature,
-            (1.0 - r.beta * r.beta) * r.kappa / (1.0 + r.kappa),
-        )
+        let loss = |beta: f64| (1.0 - beta * beta) * r.kappa / (1.0 + r.kappa);
+        let loss = if p.pair_tangential_restitution.is_empty() {
+            loss(r.beta)
+        } else {
+            pair_mean(p, &p.pair_tangential_restitution, loss)
+        };
+        (r.noise, r.temperature, loss)
     });
     let beta = match p.drive {
         DriveChoice::WhiteNoise(beta) => beta,
