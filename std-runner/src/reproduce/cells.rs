@@ -419,6 +419,10 @@ pub struct Joint {
     /// The probability that the largest of `k` independent `|z|` is at least `max_z`
     /// (Sidak).
     pub p_max: f64,
+    /// How many scores are 0: figures inside the bracket of their estimator's laws, where the
+    /// conservative score is 0 ([`Check::z`]), so that a small chi^2 says they are not off,
+    /// not that they fit better than chance.
+    pub zeros: usize,
 }
 
 impl Joint {
@@ -432,7 +436,7 @@ impl Joint {
     pub fn line(&self) -> String {
         format!(
             "{}, {} figures against their exact laws: chi^2 = {:.1} on {} (p = {:.1e}), mean z = \
-             {:+.2}, largest |z| = {:.2} (p = {:.1e}){}",
+             {:+.2}, largest |z| = {:.2} (p = {:.1e}){}{}",
             match self.side {
                 Side::Paper => "the paper's",
                 Side::Ours => "ours",
@@ -444,6 +448,15 @@ impl Joint {
             self.mean_z,
             self.max_z,
             self.p_max,
+            if self.zeros > 0 {
+                format!(
+                    "; {} of the scores are 0 (inside the bracket of their laws: not off, which \
+                     is all a conservative score can say)",
+                    self.zeros
+                )
+            } else {
+                String::new()
+            },
             if self.off() { ": jointly off" } else { "" }
         )
     }
@@ -477,6 +490,7 @@ impl Table {
             mean_z: z.iter().sum::<f64>() / k as f64,
             max_z,
             p_max: -f64::exp_m1(k as f64 * f64::ln_1p(-one)),
+            zeros: z.iter().filter(|x| **x == 0.0).count(),
         })
     }
 }
