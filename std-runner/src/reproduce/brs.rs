@@ -155,6 +155,7 @@ fn table(
         rows,
         skipped: vec![],
         findings: vec![],
+        readings: vec![],
     })
 }
 
@@ -228,5 +229,6 @@ fn equilibria(o: &Options, seed: u64) -> Result<Table, Error> {
         rows,
         skipped: vec![],
         findings: vec![],
+        readings: vec![],
     })
 }

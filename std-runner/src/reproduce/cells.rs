@@ -6,8 +6,10 @@
 //! each part. A check is informative only when a computed 0, or a value ten times the expected
 //! one, would fall outside its range; a cell with an uninformative check is reported as such,
 //! never as agreeing. An informative check has a power too: the relative error of the judged
-//! figure it catches ([`Check::detectable`]); a cell agrees only if each of its checks would
-//! catch an error of [`POWER`], else it is [`Verdict::Weak`].
+//! figure it catches with probability [`POWER_PROBABILITY`] ([`Check::detectable`]); a cell
+//! agrees only if each of its checks would catch an error of [`POWER`] of the quantity its row
+//! studies (the figure itself, or the effect the row measures, [`Cell::effect`]), else it is
+//! [`Verdict::Weak`].
 
 /// The relative error a check must catch for its cell to count as agreement: a tenth of the
 /// quantity the row is about. The tables' quantities are the effects the papers study (a
@@ -17,6 +19,15 @@
 /// term from Strang's at the tables' time steps differs by more than that), so it confirms
 /// little. Checks wider than this are reported, with their power, as *weak*.
 pub const POWER: f64 = 0.10;
+
+/// The probability with which a check must catch an error for it to count as caught: an error
+/// of [`Check::detectable`] puts the figure's mean beyond the range by this one-sided quantile
+/// of its noise, so the figure falls outside with at least this probability (an error equal
+/// to the half-width alone is caught only half the time).
+pub const POWER_PROBABILITY: f64 = 0.95;
+
+/// The one-sided standard normal quantile of [`POWER_PROBABILITY`].
+const Z_POWER: f64 = 1.6448536269514722;
 
 use std::fmt::Write;
 
@@ -64,10 +75,17 @@ pub struct Check {
     /// known to be (near) Gaussian with a known spread: what the table-wide test
     /// ([`Table::joint`]) sums. `None` for checks without one.
     pub z: Option<f64>,
+    /// The standard deviation of the judged figure's noise, in its units (0 for a figure
+    /// computed without noise): what an error must add to the range's reach to be caught with
+    /// probability [`POWER_PROBABILITY`] ([`Check::detectable`]).
+    pub sd: f64,
 }
 
 impl Check {
-    /// `expected +- tol`, the same at the report's level (a tolerance without noise).
+    /// `expected +- tol`, the same at the report's level; the figure's noise taken as all of
+    /// `tol` at the 99.9% level, `sd = tol / 3.2` (the most it can be for a Gaussian figure:
+    /// Student-t and Bonferroni multipliers are larger, a rounding part is no noise), until
+    /// [`Check::with_sd`] says what it is.
     pub fn around(
         side: Side,
         against: Against,
@@ -85,7 +103,15 @@ impl Check {
             expected,
             basis: basis.into(),
             z: None,
+            sd: tol.abs() / gdsmc_stats::LAMBDA_999,
         }
+    }
+
+    /// Sets the standard deviation of the judged figure's noise ([`Check::sd`]).
+    #[must_use]
+    pub fn with_sd(mut self, sd: f64) -> Self {
+        self.sd = sd;
+        self
     }
 
     /// Sets the judged figure's standard score ([`Check::z`]).
@@ -127,16 +153,26 @@ impl Check {
         self.lo.is_finite() && self.hi.is_finite() && !inside(0.0) && !inside(10.0 * self.expected)
     }
 
-    /// The check's power: the smallest relative error `r` such that the figure
-    /// `expected (1 + r)` and the figure `expected (1 - r)` both fall outside the range,
-    /// `max(hi - expected, expected - lo) / |expected|` (infinite for an expected 0 or an
-    /// unbounded range).
-    pub fn detectable(&self) -> f64 {
+    /// The check's power in the figure's units: the smallest error `e` such that a figure
+    /// whose mean is `expected + e` or `expected - e` falls outside the range with probability
+    /// at least [`POWER_PROBABILITY`], `max(hi - expected, expected - lo) + 1.645 sd` (its
+    /// noise Gaussian; infinite for an unbounded range).
+    pub fn reach(&self) -> f64 {
         let reach = (self.hi - self.expected).max(self.expected - self.lo);
-        if self.expected == 0.0 || !reach.is_finite() {
+        if reach.is_finite() {
+            reach + Z_POWER * self.sd
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The check's power as a relative error: [`Check::reach`] over `|expected|` (infinite for
+    /// an expected 0 or an unbounded range).
+    pub fn detectable(&self) -> f64 {
+        if self.expected == 0.0 {
             f64::INFINITY
         } else {
-            reach / self.expected.abs()
+            self.reach() / self.expected.abs()
         }
     }
 }
@@ -216,6 +252,10 @@ pub struct Cell {
     /// The evidence, computed in the same run, that the paper's figure is off; turns a
     /// disagreement into [`Verdict::Disputed`] (it does not touch a cell that agrees).
     pub dispute: Option<String>,
+    /// The size of the effect the row studies, when it is not the figure itself (RW's steady
+    /// temperatures: the time step's shift, or the raw term, is what a row shows), and its
+    /// words: the power rule asks the checks to catch [`POWER`] of it.
+    pub effect: Option<(f64, &'static str)>,
 }
 
 impl Cell {
@@ -229,6 +269,7 @@ impl Cell {
             exact: None,
             checks: Vec::new(),
             dispute: None,
+            effect: None,
         }
     }
 
@@ -241,6 +282,19 @@ impl Cell {
     pub fn check(mut self, c: Check) -> Self {
         self.checks.push(c);
         self
+    }
+
+    /// Sets the effect the row studies ([`Cell::effect`]): `size` in the figure's units.
+    #[must_use]
+    pub fn effect(mut self, size: f64, what: &'static str) -> Self {
+        self.effect = Some((size.abs(), what));
+        self
+    }
+
+    /// What a check's power is judged against: the row's effect, or the check's own expected
+    /// value.
+    fn scale(&self, c: &Check) -> f64 {
+        self.effect.map_or(c.expected.abs(), |e| e.0)
     }
 
     /// Sets the exact expected value.
@@ -284,7 +338,7 @@ impl Cell {
                 blame = Some(blame.map_or(b, |a| a.max(b)));
             }
             informative &= c.informative();
-            powerful &= c.detectable() <= power;
+            powerful &= c.reach() <= power * self.scale(c);
         }
         match (blame, &self.dispute) {
             (Some(_), Some(_)) => Verdict::Disputed,
@@ -310,10 +364,50 @@ impl Cell {
             })
     }
 
-    /// The least power of the cell's checks (the largest relative error one of them lets
-    /// through; [`Check::detectable`]), `None` for a cell only shown.
+    /// Whether the published figure lies within one standard deviation of its noise of an end of
+    /// a range built around an exact value (inside or outside): a redraw of the paper's
+    /// ensembles would land on the other side with probability over 16%, so its agreement, or
+    /// its finding of a published figure off, is fragile (a small error of the exact value
+    /// would flip it too). The report marks such cells "at the edge".
+    pub fn at_edge(&self) -> bool {
+        self.checks.iter().any(|c| {
+            c.side == Side::Paper
+                && c.against == Against::Exact
+                && c.sd > 0.0
+                && (self.paper - c.lo).abs().min((self.paper - c.hi).abs()) < c.sd
+        })
+    }
+
+    /// The verdict's word, with "at the edge" where [`Cell::at_edge`].
+    pub fn word(&self) -> String {
+        let v = self.verdict();
+        if self.at_edge() && v != Verdict::Shown {
+            format!("{} (at the edge)", v.word())
+        } else {
+            v.word().to_string()
+        }
+    }
+
+    /// The least power of the cell's checks (the largest error one of them lets through with
+    /// probability [`POWER_PROBABILITY`], [`Check::reach`], relative to the row's effect or
+    /// to the check's expected value), `None` for a cell only shown.
     pub fn detectable(&self) -> Option<f64> {
-        self.checks.iter().map(Check::detectable).reduce(f64::max)
+        self.checks
+            .iter()
+            .map(|c| {
+                let scale = self.scale(c);
+                if scale == 0.0 {
+                    f64::INFINITY
+                } else {
+                    c.reach() / scale
+                }
+            })
+            .reduce(f64::max)
+    }
+
+    /// The words of what [`Cell::detectable`] is relative to.
+    pub fn power_of(&self) -> &'static str {
+        self.effect.map_or("the quantity", |e| e.1)
     }
 
     /// The checks as one line: `paper in [lo, hi], detects 4.1% (basis); ours in [...]`.
@@ -331,7 +425,18 @@ impl Cell {
                 super::figure::fmt(c.lo),
                 super::figure::fmt(c.hi),
                 if c.informative() {
-                    format!(", detects {}", percent(c.detectable()))
+                    match self.effect {
+                        None => format!(", detects {}", percent(c.detectable())),
+                        Some((size, what)) => format!(
+                            ", detects {} ({} of {what})",
+                            percent(c.detectable()),
+                            percent(if size == 0.0 {
+                                f64::INFINITY
+                            } else {
+                                c.reach() / size
+                            })
+                        ),
+                    }
                 } else {
                     " (cannot fail)".into()
                 },
@@ -398,6 +503,50 @@ pub struct Table {
     /// What the table's figures show together beyond the cells (e.g. which reading of the
     /// paper's estimator its figures fit), as sentences.
     pub findings: Vec<String>,
+    /// The published figures' scores under two readings of what they estimate (RW's steady
+    /// tables), which the report pools over its tables.
+    pub readings: Vec<ReadingScores>,
+}
+
+/// A published figure's standard scores under two readings of what it estimates: RW (23)'s
+/// raw temperature, and the temperature about the bulk velocity (RW's steady tables).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReadingScores {
+    /// Against the exact mean of the raw temperature.
+    pub raw: f64,
+    /// Against the exact mean of the temperature about the bulk velocity.
+    pub bulk: f64,
+}
+
+impl ReadingScores {
+    /// The two readings' chi^2 tests over `scores` as a sentence: `the raw temperature of RW
+    /// (23), chi^2 = .. on k (p = .., mean z = ..); the temperature about the bulk velocity, ..:
+    /// RW's figures fit ..`.
+    pub fn words(scores: &[ReadingScores]) -> String {
+        use statrs::distribution::{ChiSquared, ContinuousCDF};
+        let k = scores.len() as f64;
+        let test = |z: &dyn Fn(&ReadingScores) -> f64| {
+            let z: Vec<f64> = scores.iter().map(z).collect();
+            let chi2: f64 = z.iter().map(|x| x * x).sum();
+            let p = ChiSquared::new(k).map_or(f64::NAN, |c| c.sf(chi2));
+            let mean = z.iter().sum::<f64>() / k;
+            (chi2, p, mean)
+        };
+        let (raw, p_raw, m_raw) = test(&|r| r.raw);
+        let (bulk, p_bulk, m_bulk) = test(&|r| r.bulk);
+        format!(
+            "the raw temperature of RW (23), chi^2 = {raw:.1} on {k} (p = {p_raw:.1e}, mean z = {m_raw:+.2}); the temperature about the bulk \
+             velocity, chi^2 = {bulk:.1} on {k} (p = {p_bulk:.1e}, mean z = {m_bulk:+.2}): RW's \
+             figures fit {}.",
+            if p_bulk > 10.0 * p_raw && p_bulk > 0.01 {
+                "the temperature about the bulk velocity better than RW (23)'s raw temperature"
+            } else if p_raw > 10.0 * p_bulk && p_raw > 0.01 {
+                "RW (23)'s raw temperature better than the temperature about the bulk velocity"
+            } else {
+                "neither reading decisively better"
+            }
+        )
+    }
 }
 
 /// A table-wide test of one side's figures against their exact laws: the standard scores of
@@ -545,8 +694,8 @@ impl Counts {
         format!(
             "{} agree, {} disagree (the paper's figure off an exact value), {} disagree \
              (ours off, or unresolved; {} of them beyond the report-wide range, failing the run), \
-             {} disputed, {} weak (agree, but would let an error of more than {} through), \
-             {} uninformative, {} shown",
+             {} disputed, {} weak (agree, but would let an error of more than {} of the quantity \
+             or its row's effect through with probability {}), {} uninformative, {} shown",
             self.agree,
             self.paper_off,
             self.failing,
@@ -554,6 +703,7 @@ impl Counts {
             self.disputed,
             self.weak,
             percent(POWER),
+            percent(POWER_PROBABILITY),
             self.uninformative,
             self.shown
         )

@@ -148,6 +148,9 @@ fn table(
                 family_hi: family_hi + round,
                 expected,
                 z: None,
+                // The range's half-width over 3.2, as for a Gaussian figure (its law is that
+                // of a maximum of norms, near enough for a power statement).
+                sd: (hi - lo) / (2.0 * gdsmc_stats::LAMBDA_999),
                 basis: format!(
                     "the 99.9% range of max_t |V(t)| of a {big_n}-ensemble mean, {}, s = \
                      sqrt((T0 + 2 beta t_end)/(n N)) = {}{}",
@@ -204,5 +207,6 @@ fn table(
         rows: out,
         skipped: vec![],
         findings: vec![],
+        readings: vec![],
     })
 }

@@ -204,7 +204,9 @@ pub fn max_error_exact(
                 ),
             )
             .family(max_error(s_ours, k * FAMILY, dof))
-            .with_z(law.z(ours, 1.0 / (ensembles as f64).sqrt(), 0.0)),
+            .with_z(law.z(ours, 1.0 / (ensembles as f64).sqrt(), 0.0))
+            // The largest error's noise is that of one time's mean, at most the largest.
+            .with_sd(s_ours),
         )
         .check(
             Check::around(
@@ -223,7 +225,8 @@ pub fn max_error_exact(
                 ),
             )
             .family(max_error(noise.se, k * FAMILY, noise.dof) + rounding(paper))
-            .with_z(law.z(paper, noise.se / law.sd_max(), rounding(paper))),
+            .with_z(law.z(paper, noise.se / law.sd_max(), rounding(paper)))
+            .with_sd(noise.se),
         )
 }
 
@@ -271,7 +274,8 @@ pub fn mean_exact(
             .with_z(t_to_z(
                 (ours.0 - exact) / (ours.1 / gdsmc_stats::multiplier(dof + 1)),
                 dof,
-            )),
+            ))
+            .with_sd(ours.1 / gdsmc_stats::multiplier(dof + 1)),
         )
         .check(
             Check::around(
@@ -290,7 +294,8 @@ pub fn mean_exact(
             .with_z(
                 (paper - exact)
                     / ((paper_half / gdsmc_stats::LAMBDA_999).powi(2) + round * round / 3.0).sqrt(),
-            ),
+            )
+            .with_sd(paper_half / gdsmc_stats::LAMBDA_999),
         )
 }
 
@@ -318,7 +323,9 @@ pub fn against_paper(
                 fmt(round)
             ),
         )
-        .family(tol.1 + round),
+        .family(tol.1 + round)
+        // Both sides' noise, given at 99.9% (the rounding is none).
+        .with_sd(tol.0 / gdsmc_stats::LAMBDA_999),
     )
 }
 

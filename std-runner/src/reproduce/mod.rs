@@ -26,7 +26,8 @@ mod runs;
 mod rw;
 
 pub use cells::{
-    Against, Blame, Cell, Check, Counts, POWER, Row, Side, Table, Verdict, percent, rounding,
+    Against, Blame, Cell, Check, Counts, POWER, POWER_PROBABILITY, ReadingScores, Row, Side, Table,
+    Verdict, percent, rounding,
 };
 pub use figure::fmt;
 pub use report::{epilogue, markdown, text};
@@ -181,7 +182,7 @@ mod tests {
                 Side::Paper,
                 Against::Exact,
                 1.0,
-                0.08,
+                0.06,
                 "paper",
             ))
     }
@@ -239,6 +240,7 @@ mod tests {
             }],
             skipped: vec![],
             findings: vec![],
+            readings: vec![],
         }
     }
 
@@ -268,7 +270,7 @@ mod tests {
             Side::Ours,
             Against::Other,
             1.0,
-            0.08,
+            0.06,
             "both",
         ));
         assert_eq!(c.verdict(), Verdict::Agree);
@@ -308,9 +310,11 @@ mod tests {
         assert_eq!(Cell::shown("x", 1.0, 2.0).verdict(), Verdict::Shown);
     }
 
-    /// A check that can fail but lets through more than `POWER` of the quantity (here 1 +- 0.2:
-    /// it catches 20%) is weak, not agreement; at 1 +- 0.09 it catches 9% and agrees. Its power
-    /// is printed in the basis.
+    /// A check that can fail but lets through more than `POWER` of the quantity is weak, not
+    /// agreement. Its power is the error caught with probability 0.95: the reach plus 1.645
+    /// standard deviations of the figure's noise (taken as the whole tolerance at 3.2 sigma
+    /// unless set): 1 +- 0.2 catches 0.2 + 1.645 x 0.2 / 3.2 = 30%; 1 +- 0.06 catches 9.1% and
+    /// agrees. Its power is printed in the basis; a row's effect, when set, is the scale.
     #[test]
     fn a_check_wider_than_the_power_is_weak() {
         let cell = |tol: f64| {
@@ -323,11 +327,30 @@ mod tests {
             ))
         };
         let weak = cell(0.2);
-        assert!((weak.detectable().unwrap() - 0.2).abs() < 1e-12);
+        let want = 0.2 * (1.0 + 1.6448536269514722 / 3.2);
+        assert!((weak.detectable().unwrap() - want).abs() < 1e-12);
         assert_eq!(weak.verdict(), Verdict::Weak);
         assert_eq!(weak.verdict_with(1.3), Verdict::Disagree(Blame::Ours));
-        assert!(weak.basis().contains("detects 20%"), "{}", weak.basis());
-        assert_eq!(cell(0.9 * POWER).verdict(), Verdict::Agree);
+        assert!(weak.basis().contains("detects 30%"), "{}", weak.basis());
+        assert_eq!(cell(0.06).verdict(), Verdict::Agree);
+        // The half-width alone within POWER is not enough: 0.09 + 1.645 x 0.09 / 3.2 > 0.1.
+        assert_eq!(cell(0.9 * POWER).verdict(), Verdict::Weak);
+        // A known noise: 1 +- 0.08 with sd 0.01 catches 9.6%.
+        assert_eq!(
+            Cell::new("E", 1.0, (1.05, 0.0))
+                .check(Check::around(Side::Ours, Against::Exact, 1.0, 0.08, "").with_sd(0.01))
+                .verdict(),
+            Verdict::Agree
+        );
+        // Judged against the row's effect (here 0.5 of the value): 9.1% of the value is 18%
+        // of the effect, weak.
+        let on_effect = cell(0.06).effect(0.5, "the effect");
+        assert_eq!(on_effect.verdict(), Verdict::Weak);
+        assert!(
+            on_effect.basis().contains("18% of the effect"),
+            "{}",
+            on_effect.basis()
+        );
         // Asymmetric: the wider side decides; a negative expectation counts by its size.
         let c = Check {
             lo: 0.95,
@@ -336,7 +359,7 @@ mod tests {
         };
         assert!((c.detectable() - 0.3).abs() < 1e-12);
         let c = Check::around(Side::Ours, Against::Exact, -2.0, 0.1, "");
-        assert!((c.detectable() - 0.05).abs() < 1e-12);
+        assert!((c.detectable() - 0.05 * (1.0 + 1.6448536269514722 / 3.2)).abs() < 1e-12);
         assert_eq!(
             Check::around(Side::Ours, Against::Exact, 0.0, 0.1, "").detectable(),
             f64::INFINITY
@@ -344,7 +367,10 @@ mod tests {
         let t = one_row_table(vec![weak, cell(0.05)]);
         let k = Counts::of([&t]);
         assert_eq!((k.agree, k.weak), (1, 1));
-        assert!(epilogue(&[t]).contains("t r: E (detects 20%)"));
+        assert!(
+            epilogue(&[t]).contains("t r: E (detects 30% of the quantity)"),
+            "the epilogue names the weak cell and its power"
+        );
     }
 
     #[test]

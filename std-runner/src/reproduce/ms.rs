@@ -166,6 +166,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
         rows,
         skipped: vec![],
         findings: vec![],
+        readings: vec![],
     })
 }
 

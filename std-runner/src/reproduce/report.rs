@@ -56,7 +56,7 @@ pub fn text(t: &Table) -> String {
                 ours,
                 c.exact.map_or("-".into(), fmt),
                 ranges(c),
-                c.verdict().word()
+                c.word()
             );
         }
     }
@@ -85,14 +85,16 @@ fn joints(t: &Table) -> Vec<super::cells::Joint> {
 /// The lines that end a `reproduce` run on the terminal, one per unusual class of cell, each
 /// saying why the cell is what it is: a disagreement of ours that stays within the report-wide
 /// range (expected now and then from sound code, so it does not fail the run), a disputed cell
-/// with the evidence against the paper's figure, the published figures off an exact value, and
-/// the weak cells with the error their checks let through.
+/// with the evidence against the paper's figure, the published figures off an exact value, the
+/// weak cells with the error their checks let through, and the uninformative ones with their
+/// ranges; RW's readings pooled over the tables that have them.
 pub fn epilogue(tables: &[Table]) -> String {
     let mut s = String::new();
     let mut within = Vec::new();
     let mut disputed = Vec::new();
     let mut paper_off = Vec::new();
     let mut weak = Vec::new();
+    let mut uninformative = Vec::new();
     let mut jointly = Vec::new();
     let mut findings = Vec::new();
     for t in tables {
@@ -117,9 +119,13 @@ pub fn epilogue(tables: &[Table]) -> String {
                         fmt(c.paper),
                         fmt(c.ours)
                     )),
+                    Verdict::Uninformative => {
+                        uninformative.push(format!("{at} (ours {}; {})", fmt(c.ours), c.basis()))
+                    }
                     Verdict::Weak => weak.push(format!(
-                        "{at} (detects {})",
-                        super::percent(c.detectable().unwrap_or(f64::INFINITY))
+                        "{at} (detects {} of {})",
+                        super::percent(c.detectable().unwrap_or(f64::INFINITY)),
+                        c.power_of()
                     )),
                     _ => {}
                 }
@@ -169,6 +175,19 @@ pub fn epilogue(tables: &[Table]) -> String {
             let _ = writeln!(s, "  {j}");
         }
     }
+    let pooled: Vec<_> = tables.iter().flat_map(|t| &t.readings).copied().collect();
+    let pooling: Vec<&str> = tables
+        .iter()
+        .filter(|t| !t.readings.is_empty())
+        .map(|t| t.name)
+        .collect();
+    if pooling.len() > 1 {
+        findings.push(format!(
+            "{} pooled: {}",
+            pooling.join(", "),
+            super::ReadingScores::words(&pooled)
+        ));
+    }
     if !findings.is_empty() {
         let _ = writeln!(s, "what tables show together:");
         for f in &findings {
@@ -179,11 +198,23 @@ pub fn epilogue(tables: &[Table]) -> String {
         let _ = writeln!(
             s,
             "weak (every check passed, but one would let an error of more than {} of the quantity \
-             through: the relative error it catches is beside each):",
-            super::percent(super::POWER)
+             or of the effect its row studies through: the error it catches with probability {} \
+             is beside each):",
+            super::percent(super::POWER),
+            super::percent(super::POWER_PROBABILITY)
         );
         for w in &weak {
             let _ = writeln!(s, "  {w}");
+        }
+    }
+    if !uninformative.is_empty() {
+        let _ = writeln!(
+            s,
+            "uninformative (every check passed, but one could not have failed: its range holds 0 \
+             or ten times the expected value):"
+        );
+        for u in &uninformative {
+            let _ = writeln!(s, "  {u}");
         }
     }
     s
@@ -213,13 +244,20 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
          ours; elsewhere ours is judged against the paper's figure. A check whose range holds 0, \
          or ten times the expected value, could not fail: its cell is *uninformative*, never \
          *agree*. Each check that can fail states its power, the relative error of the judged \
-         figure it catches (`detects`); a cell whose checks all pass is *agree* only if each \
-         would catch an error of {} of the quantity (a tenth of the effect the row measures), \
-         else *weak*. *disagree (paper)*: the published figure lies outside the range of an exact \
+         figure it catches with probability {} (`detects`: the range's reach plus 1.645 standard \
+         deviations of the figure's noise; an error of the half-width alone is caught only half \
+         the time); a cell whose checks all pass is *agree* only if each would catch an error \
+         of {} of the quantity, or of the effect the row measures where that is not the figure \
+         itself (RW's steady tables: the time step's shift or the raw term, beside each \
+         check), else *weak*. *disagree (paper)*: the published figure lies outside the range of an exact \
          value (a finding; it does not fail the run). *DISAGREE* or *disagree (ours)*: fails \
          the run. *disputed*: a disagreement that a consistency check computed in the same run \
-         puts on the paper (the table's notes give the evidence). Intervals use Student-t \
+         puts on the paper (the table's notes give the evidence). *at the edge*: the published \
+         figure lies within one standard deviation of its noise of an end of its range, so its \
+         agreement or its being off is fragile (a redraw, or a small error of the exact value, \
+         could flip it). Intervals use Student-t \
          quantiles for the ensembles run.\n",
+        super::percent(super::POWER_PROBABILITY),
         super::percent(super::POWER)
     );
     let _ = writeln!(
@@ -248,7 +286,7 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
                         t.name,
                         r.label,
                         cell_text(&c.quantity),
-                        v.word(),
+                        c.word(),
                         fmt(c.paper),
                         fmt(c.ours),
                         c.dispute
@@ -293,7 +331,7 @@ pub fn markdown(tables: &[Table], opts: &Options, seconds: f64) -> String {
                         "-".into()
                     },
                     c.exact.map_or("-".into(), fmt),
-                    c.verdict().word(),
+                    c.word(),
                     if c.checks.is_empty() {
                         "shown, not judged".into()
                     } else {
