@@ -26,8 +26,11 @@ pub const POWER: f64 = 0.10;
 /// to the half-width alone is caught only half the time).
 pub const POWER_PROBABILITY: f64 = 0.95;
 
-/// The one-sided standard normal quantile of [`POWER_PROBABILITY`].
-const Z_POWER: f64 = 1.6448536269514722;
+/// The one-sided standard normal quantile of [`POWER_PROBABILITY`] (1.645).
+fn z_power() -> f64 {
+    use statrs::distribution::{ContinuousCDF, Normal};
+    Normal::standard().inverse_cdf(POWER_PROBABILITY)
+}
 
 use std::fmt::Write;
 
@@ -160,7 +163,7 @@ impl Check {
     pub fn reach(&self) -> f64 {
         let reach = (self.hi - self.expected).max(self.expected - self.lo);
         if reach.is_finite() {
-            reach + Z_POWER * self.sd
+            reach + z_power() * self.sd
         } else {
             f64::INFINITY
         }
@@ -394,15 +397,19 @@ impl Cell {
     pub fn detectable(&self) -> Option<f64> {
         self.checks
             .iter()
-            .map(|c| {
-                let scale = self.scale(c);
-                if scale == 0.0 {
-                    f64::INFINITY
-                } else {
-                    c.reach() / scale
-                }
-            })
+            .map(|c| self.relative_reach(c))
             .reduce(f64::max)
+    }
+
+    /// A check's [`Check::reach`] relative to what the cell's power is judged against
+    /// ([`Cell::scale`]; infinite against 0).
+    fn relative_reach(&self, c: &Check) -> f64 {
+        let scale = self.scale(c);
+        if scale == 0.0 {
+            f64::INFINITY
+        } else {
+            c.reach() / scale
+        }
     }
 
     /// The words of what [`Cell::detectable`] is relative to.
@@ -427,14 +434,10 @@ impl Cell {
                 if c.informative() {
                     match self.effect {
                         None => format!(", detects {}", percent(c.detectable())),
-                        Some((size, what)) => format!(
+                        Some((_, what)) => format!(
                             ", detects {} ({} of {what})",
                             percent(c.detectable()),
-                            percent(if size == 0.0 {
-                                f64::INFINITY
-                            } else {
-                                c.reach() / size
-                            })
+                            percent(self.relative_reach(c))
                         ),
                     }
                 } else {
