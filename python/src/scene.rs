@@ -70,10 +70,8 @@ impl Scene {
     /// Reads and validates a scene file (TOML).
     #[staticmethod]
     fn from_file(path: PathBuf) -> PyResult<Self> {
-        let text = std::fs::read_to_string(&path)
-            .map_err(|e| SceneError::new_err(format!("{}: cannot read: {e}", path.display())))?;
         Ok(Scene {
-            source: sc::Sourced::parse(&path, text, Vec::new()).map_err(scene_error)?,
+            source: sc::Sourced::read(&path, Vec::new()).map_err(scene_error)?,
         })
     }
 

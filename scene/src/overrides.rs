@@ -95,10 +95,7 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
             }
         }
     }
-    let mut doc: toml::Table = toml::from_str(text).map_err(|e| Error::Parse {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    })?;
+    let mut doc: toml::Table = crate::toml_of(path, text)?;
     for o in overrides {
         // A line break would let one value carry further keys (`0.5\nfoo = 1`), which the
         // TOML reader below would take as a second assignment and drop.

@@ -52,6 +52,25 @@ fn number(spec: &str, what: &str, text: &str) -> Result<f64, String> {
     }
 }
 
+/// A range's values as scene text ([`range_value`]), each a finite number, else the refusal
+/// (a value would overflow, or be rounded out of the range of f64).
+fn finite(spec: &str, xs: impl Iterator<Item = f64>) -> Result<Vec<String>, String> {
+    xs.map(|x| {
+        let v = range_value(x);
+        match v.parse::<f64>() {
+            Ok(y) if y.is_finite() && x.is_finite() => Ok(v),
+            _ => Err(bad(
+                spec,
+                format!(
+                    "the range gives a value beyond the largest number ({x:e}); choose ends of \
+                     smaller magnitude"
+                ),
+            )),
+        }
+    })
+    .collect()
+}
+
 /// A range's count: an integer >= 2 and at most [`MAX_POINTS`].
 fn count(spec: &str, text: &str) -> Result<usize, String> {
     match text.trim().parse::<usize>() {
@@ -98,16 +117,14 @@ impl Vary {
                     ));
                 }
                 let (la, lb) = (a.ln(), b.ln());
-                (0..k)
-                    .map(|i| {
-                        let x = match i {
-                            0 => a,
-                            _ if i == k - 1 => b,
-                            _ => (la + (lb - la) * i as f64 / (k - 1) as f64).exp(),
-                        };
-                        range_value(x)
-                    })
-                    .collect()
+                finite(
+                    spec,
+                    (0..k).map(|i| match i {
+                        0 => a,
+                        _ if i == k - 1 => b,
+                        _ => (la + (lb - la) * i as f64 / (k - 1) as f64).exp(),
+                    }),
+                )?
             }
             [start, stop, k] => {
                 let (a, b, k) = (
@@ -115,9 +132,14 @@ impl Vary {
                     number(spec, "stop", stop)?,
                     count(spec, k)?,
                 );
-                (0..k)
-                    .map(|i| range_value(a + (b - a) * i as f64 / (k - 1) as f64))
-                    .collect()
+                // Halves first: `b - a` overflows for ends near the largest number.
+                finite(
+                    spec,
+                    (0..k).map(|i| {
+                        let f = i as f64 / (k - 1) as f64;
+                        2.0 * (a / 2.0 + (b / 2.0 - a / 2.0) * f)
+                    }),
+                )?
             }
             [_] => values.split(',').map(|v| v.trim().to_string()).collect(),
             _ => {

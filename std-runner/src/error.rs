@@ -35,6 +35,16 @@ pub enum Error {
         /// The bytes asked for.
         bytes: usize,
     },
+    /// A sweep's point failed while it ran (its index and varied values named).
+    #[error("point {index} of the sweep ({values}): {source}")]
+    Point {
+        /// The point's index.
+        index: usize,
+        /// Its varied keys' values, `key = value, ...`.
+        values: String,
+        /// What went wrong.
+        source: Box<Error>,
+    },
     /// The run was interrupted (Ctrl-C); what was finished has been written.
     #[error("interrupted")]
     Interrupted,

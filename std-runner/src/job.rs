@@ -102,17 +102,26 @@ impl Job {
         // The output place is prepared (and shown writable) before any simulation.
         let dir = self.dir(sc.name());
         let set = OutputSet::prepare(&dir)?;
-        let file = run::journal::beside(&dir, None);
+        let file = run::journal::beside(&dir, run::journal::Of::Run);
         let r = self.journaled(&file, None, 0..sc.ensembles(), watch)?;
         let stats = r.stats;
         let complete = stats.ensembles == sc.ensembles();
         if !complete {
-            watch.note(&format!(
-                "kept {} of {} ensembles in {}: run the same command again to continue",
-                stats.ensembles,
-                sc.ensembles(),
-                file.display()
-            ));
+            watch.note(&if file.exists() {
+                format!(
+                    "kept {} of {} ensembles in {}: run the same command again to continue",
+                    stats.ensembles,
+                    sc.ensembles(),
+                    file.display()
+                )
+            } else {
+                format!(
+                    "{} was removed while the run went: its {} finished ensembles cannot be \
+                     continued by a rerun",
+                    file.display(),
+                    stats.ensembles
+                )
+            });
             if stats.ensembles == 0 {
                 return Err(Error::Interrupted);
             }

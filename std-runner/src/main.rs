@@ -31,7 +31,7 @@ enum Command {
     /// the references, steady-state averages, tail exponent), histograms.csv when the scene
     /// asks for it, and SVG charts. Files are replaced atomically. Ctrl-C finishes the running
     /// ensembles and writes the results of those completed (exit code 130). Finished ensembles
-    /// are kept as they finish in DIR's journal (.NAME.gdsmc-ensembles beside it): the same
+    /// are kept as they finish in DIR's journal (.NAME.run.gdsmc-ensembles beside it): the same
     /// command continues an interrupted or killed run to the same results. Under mpirun (a
     /// build with the mpi feature) the ranks share the ensembles and rank 0 writes.
     ///

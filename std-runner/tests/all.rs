@@ -7,6 +7,7 @@ mod cluster;
 mod column_names;
 mod data_safety;
 mod distribution;
+mod faults;
 mod histogram;
 mod hydro;
 mod job;

@@ -12,6 +12,7 @@ fn a_run_writes_csv_json_and_svg() {
     let st = gdsmc_runner::run::run(&s, 1, &|_| {}).unwrap();
     let refs = gdsmc_runner::reference::curves::for_scene(&s);
     let dir = std::env::temp_dir().join(format!("gdsmc-charts-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
     gdsmc_runner::report::write_all(&dir, &s, &st, &refs, Default::default()).unwrap();
     for f in [
         "observables.csv",

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-fn root(name: &str) -> PathBuf {
+pub(crate) fn root(name: &str) -> PathBuf {
     let r = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
         .join("data_safety")
         .join(name);
@@ -16,12 +16,12 @@ fn root(name: &str) -> PathBuf {
     r
 }
 
-fn scene(name: &str) -> PathBuf {
+pub(crate) fn scene(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("../scenes/{name}.toml"))
 }
 
 /// `gdsmc run SCENE --n 64 --ensembles 2 --threads 1 ARGS...`, output captured.
-fn small_run(name: &str, args: &[&str]) -> Output {
+pub(crate) fn small_run(name: &str, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_gdsmc"))
         .arg("run")
         .arg(scene(name))
@@ -33,7 +33,7 @@ fn small_run(name: &str, args: &[&str]) -> Output {
         .unwrap()
 }
 
-fn gdsmc(args: &[&str]) -> Output {
+pub(crate) fn gdsmc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_gdsmc"))
         .args(args)
         .stdout(Stdio::piped())
@@ -42,13 +42,13 @@ fn gdsmc(args: &[&str]) -> Output {
         .unwrap()
 }
 
-fn s(p: &Path) -> &str {
+pub(crate) fn s(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
 /// The run was refused: exit 1 (an error, not a panic's 101 or a signal), the message holding
 /// every one of `words`.
-fn refused(o: &Output, words: &[&str]) {
+pub(crate) fn refused(o: &Output, words: &[&str]) {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "not refused cleanly: {err}");
     for w in words {
@@ -56,7 +56,7 @@ fn refused(o: &Output, words: &[&str]) {
     }
 }
 
-fn ok(o: &Output) {
+pub(crate) fn ok(o: &Output) {
     assert!(
         o.status.success(),
         "failed: {}",
@@ -65,7 +65,7 @@ fn ok(o: &Output) {
 }
 
 /// Every file under `dir` with its bytes (a directory as its name with a slash), sorted.
-fn tree(dir: &Path) -> Vec<(String, Vec<u8>)> {
+pub(crate) fn tree(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut out = Vec::new();
     for e in std::fs::read_dir(dir).unwrap().flatten() {
         let p = e.path();
@@ -86,12 +86,16 @@ fn tree(dir: &Path) -> Vec<(String, Vec<u8>)> {
 }
 
 /// Staging directories and journals left in `dir`.
-fn leftovers(dir: &Path) -> Vec<String> {
+pub(crate) fn leftovers(dir: &Path) -> Vec<String> {
     std::fs::read_dir(dir)
         .unwrap()
         .flatten()
         .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|n| n.contains(".partial-") || n.ends_with(".gdsmc-ensembles"))
+        .filter(|n| {
+            n.contains(".partial-")
+                || n.ends_with(".gdsmc-ensembles")
+                || n.ends_with(".gdsmc-claim")
+        })
         .collect()
 }
 
@@ -197,7 +201,7 @@ fn merge_never_replaces_its_inputs() {
     ok(&gdsmc(&["merge", s(&d), "--out", s(&r.join("merged"))]));
 }
 
-/// A link planted at the journal's place (`.NAME.gdsmc-ensembles` beside the output, in a
+/// A link planted at the journal's place (`.NAME.run.gdsmc-ensembles` beside the output, in a
 /// shared directory anyone could plant it) is not followed: its target is unchanged and the
 /// run is refused. A user's own file there, a FIFO, are refused too, never overwritten or
 /// blocked on.
@@ -206,23 +210,23 @@ fn the_journal_never_writes_through_a_link_or_over_a_users_file() {
     let r = root("journal-link");
     let target = r.join("target.txt");
     std::fs::write(&target, "secret\n").unwrap();
-    std::os::unix::fs::symlink(&target, r.join(".sym.gdsmc-ensembles")).unwrap();
+    std::os::unix::fs::symlink(&target, r.join(".sym.run.gdsmc-ensembles")).unwrap();
     refused(
         &small_run("grw-example3", &["--out", s(&r.join("sym"))]),
-        &[".sym.gdsmc-ensembles", "symbolic link"],
+        &[".sym.run.gdsmc-ensembles", "symbolic link"],
     );
     assert_eq!(std::fs::read(&target).unwrap(), b"secret\n");
     assert!(!r.join("sym").exists());
 
-    let mine = r.join(".mine.gdsmc-ensembles");
+    let mine = r.join(".mine.run.gdsmc-ensembles");
     std::fs::write(&mine, "my notes, not a journal\n").unwrap();
     refused(
         &small_run("grw-example3", &["--out", s(&r.join("mine"))]),
-        &[".mine.gdsmc-ensembles", "not a gdsmc ensemble journal"],
+        &[".mine.run.gdsmc-ensembles", "not a gdsmc ensemble journal"],
     );
     assert_eq!(std::fs::read(&mine).unwrap(), b"my notes, not a journal\n");
 
-    let fifo = r.join(".fifo.gdsmc-ensembles");
+    let fifo = r.join(".fifo.run.gdsmc-ensembles");
     assert!(
         Command::new("mkfifo")
             .arg(&fifo)
@@ -240,14 +244,14 @@ fn the_journal_never_writes_through_a_link_or_over_a_users_file() {
 
 /// The bytes of an ensemble file up to the end of its header (magic, format, length, JSON,
 /// CRC), and the header's JSON.
-fn split_header(b: &[u8]) -> (usize, serde_json::Value) {
+pub(crate) fn split_header(b: &[u8]) -> (usize, serde_json::Value) {
     let len = u32::from_le_bytes(b[20..24].try_into().unwrap()) as usize;
     let json = serde_json::from_slice(&b[24..24 + len]).unwrap();
     (24 + len + 4, json)
 }
 
 /// An ensemble file with `json` as its header (a valid checksum) and `rest` after it.
-fn with_header(b: &[u8], json: &serde_json::Value, rest: &[u8]) -> Vec<u8> {
+pub(crate) fn with_header(b: &[u8], json: &serde_json::Value, rest: &[u8]) -> Vec<u8> {
     let text = serde_json::to_vec(json).unwrap();
     let mut out = b[..20].to_vec();
     out.extend_from_slice(&(text.len() as u32).to_le_bytes());
@@ -308,7 +312,7 @@ fn a_spliced_journal_is_not_continued() {
         &row,
         &gdsmc_core::engine::Counts::default(),
     ));
-    std::fs::write(r.join(".o.gdsmc-ensembles"), &b).unwrap();
+    std::fs::write(r.join(".o.run.gdsmc-ensembles"), &b).unwrap();
     let o = small_run("grw-example3", &["--seed", "1", "--out", s(&r.join("o"))]);
     ok(&o);
     let err = String::from_utf8_lossy(&o.stderr);

@@ -114,7 +114,8 @@ pub fn tables(
     Ok(out)
 }
 
-/// Writes the [`tables`] and the charts (in `formats`) into `dir` (created if missing).
+/// Writes the [`tables`] and the charts (in `formats`) into `dir`, which must exist (a
+/// staging directory removed while the run went is an error, not made again).
 pub fn write_all(
     dir: &Path,
     scene: &Scene,
@@ -122,10 +123,6 @@ pub fn write_all(
     refs: &[ReferenceCurve],
     formats: charts::Formats,
 ) -> Result<(), Error> {
-    std::fs::create_dir_all(dir).map_err(|source| Error::Write {
-        path: dir.to_path_buf(),
-        source,
-    })?;
     for (name, bytes) in tables(scene, stats, refs)? {
         write_atomic(&dir.join(name), &bytes)?;
     }

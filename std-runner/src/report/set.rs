@@ -4,8 +4,16 @@
 //! its size and FNV-1a checksum, and the run's scene, seed and ensembles) and then swapped in
 //! for the previous set in one step: on Linux an atomic exchange of the two directories
 //! (`renameat2(RENAME_EXCHANGE)`), elsewhere two renames. A run killed at any moment leaves the
-//! previous whole set or the new whole set at the target, never a mix; staging directories of
-//! killed runs are removed by the next run. [`verify`] tells a whole set from a broken one.
+//! previous whole set or the new whole set at the target, never a mix. Every file and the
+//! staging directory are flushed to the disk before the swap and the parent directory after
+//! it, so a power cut after the swap keeps the new set whole (Unix; see README's data safety).
+//! [`verify`] tells a whole set from a broken one.
+//!
+//! One process at a time writes to a target: [`OutputSet::prepare`] takes the target's
+//! [`Claim`] (refused at once, naming the holder, while another process holds it) and records
+//! in it the staging directory before creating it. The staging directory of a killed run is
+//! removed by the next run at that target because the killed run's claim names it: a
+//! directory that merely has such a name (a user's) is never removed.
 //!
 //! Only what gdsmc wrote is ever replaced ([`check_replaceable`], before the run and again just
 //! before the swap): the target must be absent, an empty directory, or a whole gdsmc set that
@@ -13,6 +21,7 @@
 //! the target is refused, naming it, and left as it is.
 
 use crate::error::Error;
+use crate::files::claim::Claim;
 use std::path::{Path, PathBuf};
 
 /// The file that closes a set.
@@ -40,6 +49,9 @@ pub struct OutputSet {
     target: PathBuf,
     staging: PathBuf,
     committed: bool,
+    /// The target's claim, held until the set is committed or dropped (after the staging
+    /// directory is gone).
+    _claim: Claim,
 }
 
 /// `.NAME.partial-` for a target `.../NAME`.
@@ -48,16 +60,6 @@ fn staging_prefix(target: &Path) -> String {
         .file_name()
         .map_or("out".into(), |n| n.to_string_lossy());
     format!(".{name}.partial-")
-}
-
-/// Whether process `pid` is alive (Linux: /proc; elsewhere assumed alive, so nothing is
-/// removed that might be another run's).
-fn alive(pid: u32) -> bool {
-    if cfg!(target_os = "linux") {
-        Path::new("/proc").join(pid.to_string()).exists()
-    } else {
-        true
-    }
 }
 
 /// Whether a new set may replace what is at `target`: nothing, an empty directory, or a whole
@@ -161,29 +163,36 @@ impl OutputSet {
             _ => PathBuf::from("."),
         };
         std::fs::create_dir_all(&parent).map_err(write_err(&parent))?;
+        let mut claim = Claim::take(target)?;
+        // The staging directory a killed run recorded in its claim is gdsmc's: removed. A
+        // directory of that name that is a link, or absent, is left.
+        if let Some(left) = claim.left_behind()
+            && std::fs::symlink_metadata(left).is_ok_and(|m| m.is_dir())
+        {
+            let _ = std::fs::remove_dir_all(left);
+        }
         let prefix = staging_prefix(target);
-        if let Ok(entries) = std::fs::read_dir(&parent) {
-            for e in entries.flatten() {
-                let name = e.file_name().to_string_lossy().into_owned();
-                if let Some(pid) = name.strip_prefix(&prefix).and_then(|p| p.parse().ok())
-                    && !alive(pid)
-                    && e.file_type().is_ok_and(|t| t.is_dir())
-                {
-                    let _ = std::fs::remove_dir_all(e.path());
-                }
-            }
-        }
-        let staging = parent.join(format!("{prefix}{}", std::process::id()));
-        // A directory of this name is a staging directory of a killed run whose process id
-        // this one now has; anything else there is left alone (the create below refuses it).
-        if std::fs::symlink_metadata(&staging).is_ok_and(|m| m.is_dir()) {
-            let _ = std::fs::remove_dir_all(&staging);
-        }
+        let pid = std::process::id();
+        // A name nothing has: whatever is at `PID` (a user's directory, or the staging
+        // directory of a killed run of another gdsmc) is left as it is.
+        let staging = (0..64)
+            .map(|k| match k {
+                0 => parent.join(format!("{prefix}{pid}")),
+                _ => parent.join(format!("{prefix}{pid}-{k}")),
+            })
+            .find(|p| std::fs::symlink_metadata(p).is_err())
+            .ok_or_else(|| {
+                write_err(&parent)(std::io::Error::other(
+                    "no free name for a staging directory beside the output directory",
+                ))
+            })?;
+        claim.record_staging(&staging)?;
         std::fs::create_dir(&staging).map_err(write_err(&staging))?;
         Ok(OutputSet {
             target: target.to_path_buf(),
             staging,
             committed: false,
+            _claim: claim,
         })
     }
 
@@ -206,6 +215,9 @@ impl OutputSet {
         names.sort();
         for p in names {
             let bytes = std::fs::read(&p).map_err(write_err(&p))?;
+            // On the disk before the set is swapped in: a power cut after the swap must find
+            // whole files.
+            crate::files::sync_file(&p)?;
             written.push(
                 p.file_name()
                     .map_or(String::new(), |n| n.to_string_lossy().into_owned()),
@@ -223,6 +235,7 @@ impl OutputSet {
             source: std::io::Error::other(e),
         })?;
         crate::files::write_atomic(&path, &text)?;
+        crate::files::sync_dir(&self.staging)?;
         self.swap_in()?;
         self.committed = true;
         written.push(MANIFEST.to_string());
@@ -234,8 +247,10 @@ impl OutputSet {
     fn swap_in(&self) -> Result<(), Error> {
         let (staging, target) = (&self.staging, &self.target);
         check_replaceable(target)?;
+        let parent = staging.parent().unwrap_or(Path::new("."));
         if std::fs::symlink_metadata(target).is_err() {
-            return std::fs::rename(staging, target).map_err(write_err(target));
+            std::fs::rename(staging, target).map_err(write_err(target))?;
+            return crate::files::sync_dir(parent);
         }
         #[cfg(target_os = "linux")]
         {
@@ -243,6 +258,7 @@ impl OutputSet {
             // One atomic step: the staging directory now holds the previous set.
             renameat_with(CWD, staging, CWD, target, RenameFlags::EXCHANGE)
                 .map_err(|e| write_err(target)(e.into()))?;
+            crate::files::sync_dir(parent)?;
             let _ = std::fs::remove_dir_all(staging);
             Ok(())
         }
@@ -251,6 +267,7 @@ impl OutputSet {
             let old = staging.with_extension("old");
             std::fs::rename(target, &old).map_err(write_err(target))?;
             std::fs::rename(staging, target).map_err(write_err(target))?;
+            crate::files::sync_dir(parent)?;
             let _ = std::fs::remove_dir_all(&old);
             Ok(())
         }

@@ -114,22 +114,32 @@ impl Header {
                 assignment: assignment.clone(),
             })
             .collect();
+        let ours = env!("CARGO_PKG_VERSION");
+        // Written by this gdsmc, the text gives the scene it records; if not, the file was
+        // changed after gdsmc wrote it. Written by another, this one may read it differently.
+        let why = if self.gdsmc_version == ours {
+            "the file was changed after gdsmc wrote it (its scene text does not give the run it \
+             records)"
+                .to_string()
+        } else {
+            format!(
+                "it was written by gdsmc {}, and this gdsmc ({ours}) reads its scene differently",
+                self.gdsmc_version
+            )
+        };
+        let bad = |detail: String| Error::Journal {
+            path: path.to_path_buf(),
+            message: format!("its scene ({}) {detail}: {why}", self.scene_path),
+        };
         let scene =
-            crate::scene::parse_with(Path::new(&self.scene_path), &self.scene_text, &overrides)?;
+            crate::scene::parse_with(Path::new(&self.scene_path), &self.scene_text, &overrides)
+                .map_err(|e| bad(format!("does not read ({e})")))?;
         if fingerprint(&scene) != self.fingerprint
             || scene.seed() != self.seed
             || scene.ensembles() != self.ensembles
             || crate::run::totals::Totals::row_len_of(&scene) != self.row_len
         {
-            return Err(Error::Journal {
-                path: path.to_path_buf(),
-                message: format!(
-                    "its scene ({}) reads differently in this gdsmc ({}); it was written by gdsmc {}",
-                    self.scene_path,
-                    env!("CARGO_PKG_VERSION"),
-                    self.gdsmc_version
-                ),
-            });
+            return Err(bad("is not the one the file's header records".into()));
         }
         Ok(scene)
     }
@@ -279,10 +289,42 @@ pub fn file_name(name: &str, k: u64, s: u64) -> String {
     format!("{name}.shard-{k:0w$}-of-{s}.{EXTENSION}")
 }
 
-/// The journal of a run writing its outputs into `dir`, hidden beside it:
-/// `.NAME.gdsmc-ensembles` for a whole run, `.NAME.shard-K-of-S.gdsmc-ensembles` for the
-/// shard `(K, S)` an MPI rank runs.
-pub fn beside(dir: &Path, shard: Option<(u64, u64)>) -> std::path::PathBuf {
+/// Which journal of an output place a file is: what keeps the journals of different commands
+/// writing near one another apart (a run's `--out res.point-0` and point 0 of a sweep's
+/// `--out res` once shared a name).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Of {
+    /// A whole run (`gdsmc run`).
+    Run,
+    /// Shard `(K, S)` of a run, as an MPI rank runs it.
+    Rank(u64, u64),
+    /// Point `k` of a sweep, whole.
+    Point(usize),
+    /// Shard `(c, C)` of point `k` of a sweep (`gdsmc sweep --shard` with more tasks than
+    /// points).
+    PointShard(usize, u64, u64),
+}
+
+impl Of {
+    /// The tag in the file name: no dot in it, so that the name `.NAME.TAG.gdsmc-ensembles`
+    /// gives back NAME and TAG, and no two (place, journal) pairs share a file.
+    pub fn tag(self) -> String {
+        let padded = |k: u64, s: u64| {
+            let w = s.to_string().len();
+            format!("{k:0w$}-of-{s}")
+        };
+        match self {
+            Of::Run => "run".into(),
+            Of::Rank(k, s) => format!("rank-{}", padded(k, s)),
+            Of::Point(k) => format!("point-{k}"),
+            Of::PointShard(k, c, n) => format!("point-{k}-shard-{}", padded(c, n)),
+        }
+    }
+}
+
+/// The journal `of` the output place `dir`, hidden beside it: `.NAME.TAG.gdsmc-ensembles`
+/// ([`Of::tag`]).
+pub fn beside(dir: &Path, of: Of) -> std::path::PathBuf {
     let name = dir
         .file_name()
         .map_or("out".into(), |n| n.to_string_lossy().into_owned());
@@ -290,10 +332,7 @@ pub fn beside(dir: &Path, shard: Option<(u64, u64)>) -> std::path::PathBuf {
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
         .map_or_else(|| std::path::PathBuf::from("."), Path::to_path_buf);
-    parent.join(match shard {
-        Some((k, s)) => format!(".{}", file_name(&name, k, s)),
-        None => format!(".{name}.{EXTENSION}"),
-    })
+    parent.join(format!(".{name}.{}.{EXTENSION}", of.tag()))
 }
 
 /// The `Debug` text of `scene` with its seed and ensemble count cleared
@@ -655,12 +694,14 @@ impl Writer {
                     std::thread::sleep(std::time::Duration::from_millis(50));
                 }
                 Err(std::fs::TryLockError::WouldBlock) => {
+                    let who = crate::files::claim::flock_holder(&file)
+                        .map_or(String::new(), |pid| format!(" (process {pid})"));
                     return Err(Error::Journal {
                         path: path.to_path_buf(),
-                        message: "another gdsmc run is writing this journal (the same scene \
-                                  into the same output place): wait for it, or choose another \
-                                  --out"
-                            .into(),
+                        message: format!(
+                            "another gdsmc process{who} is writing this journal (the same run \
+                             into the same output place): wait for it, or choose another --out"
+                        ),
                     });
                 }
                 Err(std::fs::TryLockError::Error(e)) => return Err(werr(e)),

@@ -138,7 +138,7 @@ pub fn run(
         return Ok(None);
     }
     let range = shard::range(r, p, scene.ensembles());
-    let path = journal::beside(dir, Some((r, p)));
+    let path = journal::beside(dir, journal::Of::Rank(r, p));
     let job = Journaled {
         scene,
         header: header_of((r, p), range),
@@ -168,7 +168,7 @@ pub fn run(
         let mut inputs = vec![(path.clone(), bytes)];
         for q in 1..p {
             let (b, _) = w.world.process_at_rank(q as i32).receive_vec::<u8>();
-            inputs.push((journal::beside(dir, Some((q, p))), b));
+            inputs.push((journal::beside(dir, journal::Of::Rank(q, p)), b));
         }
         let merged = check(&inputs).and_then(|()| shard::merge(&inputs));
         let written = merged.and_then(|m| write(&m).map(|()| m));

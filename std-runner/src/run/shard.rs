@@ -149,19 +149,9 @@ pub fn merge_with<'a>(
     for (i, path) in names.iter().enumerate() {
         let c = journal::read(path, &load(i)?)?;
         let k = whole_shard(path, &c)?;
-        if let Some((i0, _, first)) = shards.first()
-            && !first.same_set(&c.header)
-        {
-            return Err(Error::Shards(format!(
-                "{} and {} are not shards of one run: {} is {}",
-                names[*i0].display(),
-                path.display(),
-                path.display(),
-                c.header.difference(first)
-            )));
-        }
         shards.push((i, k, c.header));
     }
+    strangers(names, &shards)?;
     shards.sort_by_key(|(_, k, _)| *k);
     let s = shards[0].2.shard.map_or(1, |s| s.1);
     for w in shards.windows(2) {
@@ -226,6 +216,54 @@ pub fn merge_with<'a>(
         scene,
         shards: s,
     })
+}
+
+/// Refuses shards that are not of one run, naming the strangers: the files whose header is not
+/// of the run most of the files hold (the first such run on a tie), whatever their order.
+fn strangers(names: &[PathBuf], shards: &[(usize, u64, journal::Header)]) -> Result<(), Error> {
+    let holding = |h: &journal::Header| shards.iter().filter(|x| x.2.same_set(h)).count();
+    let Some(most) = shards
+        .iter()
+        .map(|x| (holding(&x.2), x))
+        .rev()
+        .max_by_key(|(n, _)| *n)
+        .map(|(_, x)| x)
+    else {
+        return Ok(());
+    };
+    let odd: Vec<&(usize, u64, journal::Header)> =
+        shards.iter().filter(|x| !x.2.same_set(&most.2)).collect();
+    let Some(first) = odd.first() else {
+        return Ok(());
+    };
+    let others: Vec<String> = shards
+        .iter()
+        .filter(|x| x.2.same_set(&most.2))
+        .map(|x| names[x.0].display().to_string())
+        .collect();
+    if 2 * others.len() <= shards.len() {
+        // No run holds most of the files: none can be named the stranger.
+        return Err(Error::Shards(format!(
+            "{} and {} are not shards of one run: {} is {} (and no run holds most of the {} files)",
+            names[most.0].display(),
+            names[first.0].display(),
+            names[first.0].display(),
+            first.2.difference(&most.2),
+            shards.len()
+        )));
+    }
+    let more = if odd.len() > 1 {
+        format!(" ({} more files are of other runs)", odd.len() - 1)
+    } else {
+        String::new()
+    };
+    Err(Error::Shards(format!(
+        "{} is not a shard of the run {} hold{}: it is {}{more}",
+        names[first.0].display(),
+        others.join(", "),
+        if others.len() == 1 { "s" } else { "" },
+        first.2.difference(&most.2)
+    )))
 }
 
 /// The shard index of a file that is a whole shard: one with a shard header and complete; else

@@ -2,7 +2,7 @@
 //! varied ([`vary`]: lists, linear and logarithmic ranges, a grid or zipped), every point
 //! validated as a file is before anything runs ([`point`]), then run one after another, each
 //! on all threads and journaled beside the output directory as `gdsmc run` journals a run
-//! (`.NAME.point-K.gdsmc-ensembles`), so an interrupted sweep continues where it stopped and
+//! (`.NAME.point-K.gdsmc-ensembles`, a name no run's journal has), so an interrupted sweep continues where it stopped and
 //! gives the same bytes. Each point's window averages (the steady window, or the last
 //! observation) with their 99.9% intervals and every reference that applies there go into
 //! sweep.csv and sweep.json ([`table`]), written as one output set.
@@ -100,12 +100,15 @@ pub fn plan(source: &Sourced, vary: &[String], zip: bool) -> Result<vary::Plan, 
 
 /// The journal of point `k` of the sweep written to `dir`: beside it, as a run's; with
 /// `chunk = Some((c, C))`, the journal of the shard `c` of `C` of the point's ensembles
-/// (`.NAME.point-K.shard-c-of-C.gdsmc-ensembles`).
+/// (`.NAME.point-K-shard-c-of-C.gdsmc-ensembles`).
 pub(super) fn point_journal_of(dir: &Path, k: usize, chunk: Option<(u64, u64)>) -> PathBuf {
-    let name = dir
-        .file_name()
-        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
-    run::journal::beside(&dir.with_file_name(format!("{name}.point-{k}")), chunk)
+    run::journal::beside(
+        dir,
+        match chunk {
+            None => run::journal::Of::Point(k),
+            Some((c, n)) => run::journal::Of::PointShard(k, c, n),
+        },
+    )
 }
 
 /// The journal of the whole point `k`.
@@ -114,17 +117,18 @@ pub(super) fn point_journal(dir: &Path, k: usize) -> PathBuf {
 }
 
 /// The shard journals of point `k` beside `dir` (`--shard` with more shards than points),
-/// sorted by name; none when the point was not split.
+/// sorted by name; none when the point was not split. Only names [`point_journal_of`] gives
+/// (`...point-K-shard-c-of-C.gdsmc-ensembles`, c and C numbers) are taken.
 fn point_shard_journals(dir: &Path, k: usize) -> Vec<PathBuf> {
-    let whole = point_journal(dir, k);
-    let (Some(parent), Some(name)) = (whole.parent(), whole.file_name()) else {
+    let Some(parent) = point_journal(dir, k).parent().map(Path::to_path_buf) else {
         return Vec::new();
     };
-    let name = name.to_string_lossy();
-    let Some(stem) = name.strip_suffix(&format!(".{}", run::journal::EXTENSION)) else {
-        return Vec::new();
-    };
-    let prefix = format!("{stem}.shard-");
+    let name = dir
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    let prefix = format!(".{name}.point-{k}-shard-");
+    let suffix = format!(".{}", run::journal::EXTENSION);
+    let numbers = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit());
     let mut found: Vec<PathBuf> = std::fs::read_dir(parent)
         .into_iter()
         .flatten()
@@ -133,7 +137,10 @@ fn point_shard_journals(dir: &Path, k: usize) -> Vec<PathBuf> {
         .filter(|f| {
             f.file_name().is_some_and(|n| {
                 let n = n.to_string_lossy();
-                n.starts_with(&prefix) && n.ends_with(&format!(".{}", run::journal::EXTENSION))
+                n.strip_prefix(&prefix)
+                    .and_then(|r| r.strip_suffix(&suffix))
+                    .and_then(|r| r.split_once("-of-"))
+                    .is_some_and(|(c, n)| numbers(c) && numbers(n))
             })
         })
         .collect();
@@ -214,9 +221,33 @@ impl Sweep {
         let mut resumed = 0;
         for p in points {
             let sc = &p.source.scene;
-            let shards = journals.map_or_else(Vec::new, |dir| point_shard_journals(dir, p.index));
+            let named = |e: Error| match e {
+                Error::Interrupted => e,
+                e => Error::Point {
+                    index: p.index,
+                    values: p.words(),
+                    source: Box::new(e),
+                },
+            };
+            // A point split over `--shard` tasks is merged from their journals, unless the
+            // sweep starts anew (`--fresh`) or the journals are another sweep's (a note says
+            // so; they are removed with the point's journal when the sweep is written).
+            let shards = match journals {
+                Some(dir) if !self.fresh => point_shard_journals(dir, p.index),
+                _ => Vec::new(),
+            };
+            let stale = (!shards.is_empty())
+                .then(|| stale_shards(p, &shards))
+                .flatten();
+            if let Some(why) = &stale {
+                notes.push(format!(
+                    "note: the shard journals of point {} ({}, ...) were not merged ({why}); the point runs anew",
+                    p.index,
+                    shards[0].display()
+                ));
+            }
             let stats = match journals {
-                Some(_) if !shards.is_empty() => {
+                Some(_) if !shards.is_empty() && stale.is_none() => {
                     // The point was split over shards (`--shard` with more shards than
                     // points): their journals, merged as `gdsmc merge` merges a run's.
                     let merged = match merged_point(p, &shards) {
@@ -244,7 +275,7 @@ impl Sweep {
                         Ok(r) => r,
                         Err(e) => {
                             watch.end();
-                            return Err(e);
+                            return Err(named(e));
                         }
                     };
                     if let Some(why) = &r.discarded {
@@ -272,7 +303,7 @@ impl Sweep {
                         Ok(s) => s,
                         Err(e) => {
                             watch.end();
-                            return Err(e);
+                            return Err(named(e));
                         }
                     }
                 }
@@ -321,7 +352,7 @@ impl Sweep {
             notes,
             resumed,
         } = self.run_points(&points, Some(&dir), watch)?;
-        for n in &notes {
+        for n in notes.iter().chain(&one_ensemble_notes(&results)) {
             watch.note(n);
         }
         let complete = results.len() == points.len();
@@ -356,7 +387,7 @@ impl Sweep {
         }
         let _ = writeln!(
             text,
-            "sweep      {} points of {} ({}), {} ensembles each",
+            "sweep      {} points of {} ({}), {}",
             points.len(),
             self.source.scene.name(),
             self.vary
@@ -364,13 +395,63 @@ impl Sweep {
                 .map(|v| v.key.as_str())
                 .collect::<Vec<_>>()
                 .join(", "),
-            self.source.scene.ensembles()
+            ensembles_words(&points)
         );
         text.push_str(&summary(&results));
         text.push_str(&verdict::text(&verdict::checks(&results)));
         text.push_str(&crate::job::wrote(&files, &dir));
         Ok(Outcome { text, complete })
     }
+}
+
+/// The points' ensembles in words: `N ensembles each`, or their range when `run.ensembles`
+/// varies.
+fn ensembles_words(points: &[PointScene]) -> String {
+    let e = points.iter().map(|p| p.source.scene.ensembles());
+    match (e.clone().min(), e.max()) {
+        (Some(a), Some(b)) if a == b => format!("{a} ensembles each"),
+        (Some(a), Some(b)) => format!("{a} to {b} ensembles (run.ensembles varies)"),
+        _ => "no points".into(),
+    }
+}
+
+/// A note for every finished point of one ensemble: its intervals are NaN (undefined, not
+/// zero) and the verdict leaves it out.
+fn one_ensemble_notes(results: &[PointResult]) -> Vec<String> {
+    let ones: Vec<String> = results
+        .iter()
+        .filter(|r| r.ensembles == 1)
+        .map(|r| r.index.to_string())
+        .collect();
+    if ones.is_empty() {
+        return Vec::new();
+    }
+    vec![format!(
+        "note: point{} {} {} one ensemble: {} _ci columns of sweep.csv (and intervals of \
+         sweep.json) are NaN, since an interval needs the spread of at least two ensembles (it is \
+         undefined, not zero), and the verdict leaves {} out; run.ensembles = 2 or more gives \
+         intervals",
+        if ones.len() > 1 { "s" } else { "" },
+        ones.join(", "),
+        if ones.len() > 1 { "have" } else { "has" },
+        if ones.len() > 1 { "their" } else { "its" },
+        if ones.len() > 1 { "them" } else { "it" },
+    )]
+}
+
+/// Why the shard journals `files` of point `p` are another sweep's (their header is not a
+/// shard of this point's run), or `None` when they are this point's (complete or not: an
+/// unfinished task is then reported by the merge).
+fn stale_shards(p: &PointScene, files: &[PathBuf]) -> Option<String> {
+    let bytes = run::journal::read_file(&files[0]).ok()?;
+    let header = run::journal::read(&files[0], &bytes).ok()?.header;
+    let s = header.shard?.1;
+    let want = run::journal::Header::new(
+        &p.source,
+        Some((0, s)),
+        run::shard::range(0, s, p.source.scene.ensembles()),
+    );
+    (!want.same_set(&header)).then(|| header.difference(&want))
 }
 
 /// Point `p`'s statistics from the journals of its shards: one whole run of exactly its

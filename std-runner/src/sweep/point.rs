@@ -54,6 +54,15 @@ impl PointScene {
             source,
         })
     }
+
+    /// Its varied values in words: `key = value, ...`.
+    pub fn words(&self) -> String {
+        self.values
+            .iter()
+            .map(|(k, v)| format!("{k} = {v}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
 }
 
 /// The observation window a point's averages are over.

@@ -45,7 +45,7 @@ impl Sweep {
     /// ensembles are split into `C = ceil(S / P)` shards as `gdsmc run --shard` splits a run's
     /// (same generators, so the merged point is the run to the last bit): unit `u = k C + c`
     /// (shard `c` of point `k`) goes to task `u mod S`, journaled as
-    /// `.NAME.point-K.shard-c-of-C.gdsmc-ensembles`, and the whole sweep merges them.
+    /// `.NAME.point-K-shard-c-of-C.gdsmc-ensembles`, and the whole sweep merges them.
     pub(super) fn shard_task(
         &self,
         (k, s): (u64, u64),

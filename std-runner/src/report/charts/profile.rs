@@ -75,6 +75,12 @@ pub fn profile(
     profile_with_residuals(title, x_desc, y_desc, (false, log_y), series, &[], "")
 }
 
+/// Whether `lo..hi` can be a logarithmic axis: ends that are normal positive numbers with a
+/// finite ratio (else the axis's decades never end).
+fn log_axis(lo: f64, hi: f64) -> bool {
+    lo >= f64::MIN_POSITIVE && hi.is_finite() && (hi / lo).is_finite()
+}
+
 /// [`profile`] on logarithmic axes where `(log_x, log_y)` say so, with a residual panel below
 /// when `residuals` has points (its y axis named `residual_desc`): each group's residuals in
 /// its colour, the strip of the 99.9% interval between the dashed lines at -1 and 1.
@@ -120,14 +126,21 @@ pub fn profile_with_residuals(
         // Points at the ends of the range keep their error bars off the axes.
         if log_x {
             let f = (x1 / x0).powf(0.02);
-            (x0, x1) = (x0 / f, x1 * f);
+            // Unpadded when padding would leave the range of f64 (a range of ~300 decades).
+            if log_axis(x0 / f, x1 * f) {
+                (x0, x1) = (x0 / f, x1 * f);
+            }
         } else {
             let pad = 0.02 * (x1 - x0);
             (x0, x1) = (x0 - pad, x1 + pad);
         }
     }
     let (y_lo, y_hi) = if log_y {
-        (y0 / 2.0, y1 * 2.0)
+        if log_axis(y0 / 2.0, y1 * 2.0) {
+            (y0 / 2.0, y1 * 2.0)
+        } else {
+            (y0, y1)
+        }
     } else {
         let pad = if y1 > y0 {
             0.05 * (y1 - y0)
@@ -136,6 +149,16 @@ pub fn profile_with_residuals(
         };
         (y0 - pad, y1 + pad)
     };
+    // A logarithmic axis needs ends that are normal positive numbers with a finite ratio:
+    // else the axis's ticks never end (a range of ~300 decades once spun for minutes).
+    for (on, lo, hi, which) in [(log_x, x0, x1, "x"), (log_y, y_lo, y_hi, "y")] {
+        if on && !log_axis(lo, hi) {
+            return Err(format!(
+                "the logarithmic {which} axis would run from {lo:e} to {hi:e}, beyond the range \
+                 of f64 a chart can divide into decades"
+            ));
+        }
+    }
     let mut svg = String::new();
     let mut geometry = Geometry::new(title);
     let dash = dashes(series);

@@ -9,7 +9,13 @@
 //!   a link and only when it is a regular file;
 //! - [`open_regular`] opens a file to read (a shard given on the command line, a link to one
 //!   included), refusing a FIFO, device or directory by its type before reading a byte, so
-//!   that nothing blocks or reads for ever.
+//!   that nothing blocks or reads for ever;
+//! - [`claim::Claim`] holds an output place for one process at a time (a lock the kernel
+//!   releases when the process dies), and records the staging directory it creates, the only
+//!   kind of directory gdsmc ever removes;
+//! - [`sync_dir`] makes a rename in a directory durable (a power cut after it keeps it).
+
+pub mod claim;
 
 use crate::error::Error;
 use std::fs::File;
@@ -43,6 +49,16 @@ fn create_temporary(path: &Path) -> Result<(File, PathBuf), Error> {
         {
             Ok(f) => return Ok((f, tmp)),
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                // The directory itself is gone (removed while the run went): said so, and not
+                // made again.
+                let dir = path.parent().unwrap_or(Path::new("."));
+                return Err(write_err(dir)(std::io::Error::new(
+                    e.kind(),
+                    "the directory is gone (removed while gdsmc was writing into it); \
+                     nothing was written",
+                )));
+            }
             Err(e) => return Err(write_err(path)(e)),
         }
     }
@@ -68,6 +84,34 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
         return Err(write_err(path)(e));
     }
     Ok(())
+}
+
+/// Flushes the directory `dir` to the disk (its entries: a file created or renamed in it), where
+/// the platform offers it (Unix: `fsync` of the directory); elsewhere a no-op.
+pub fn sync_dir(dir: &Path) -> Result<(), Error> {
+    #[cfg(unix)]
+    {
+        let dir = if dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            dir
+        };
+        File::open(dir)
+            .and_then(|d| d.sync_all())
+            .map_err(write_err(dir))
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = dir;
+        Ok(())
+    }
+}
+
+/// Flushes the regular file at `path` to the disk.
+pub fn sync_file(path: &Path) -> Result<(), Error> {
+    open_regular(path)
+        .and_then(|f| f.sync_all())
+        .map_err(write_err(path))
 }
 
 /// Whether `path` may be replaced by a file of gdsmc's: it is absent, or it is a regular file
