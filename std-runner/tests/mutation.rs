@@ -106,6 +106,7 @@ fn unnoticed(served: &[Served]) -> Vec<String> {
 }
 
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn every_agreeing_cell_notices_a_wrong_reference_under_it() {
     let opts = Options {
         quick: true,

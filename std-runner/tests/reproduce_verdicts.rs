@@ -10,6 +10,7 @@
 use gdsmc_runner::reproduce::{self, Options, Side, Verdict};
 
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn no_judged_cell_agrees_with_zero_or_ten_times_the_value() {
     let opts = Options {
         quick: true,

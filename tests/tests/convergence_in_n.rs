@@ -13,6 +13,7 @@ use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn temperature_error_falls_fourfold_per_fourfold_n() {
     let ns = [16usize, 64, 256];
     let ms = [8_000u64, 8_000, 16_000];

@@ -8,6 +8,7 @@ use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn example5_converges_in_n() {
     let runs: Vec<(f64, f64)> = [(64usize, 4_000u64), (256, 4_000), (1024, 2_000)]
         .iter()

@@ -111,6 +111,7 @@ fn finite_n_temperature_is_exact_at_n_4_and_16() {
 /// within its 99.9% confidence half-width of the paper's value, widened by the paper's
 /// rounding (5e-4) and by the O(1/n) finite-particle bias (about T/n, as for the Maxwell gas).
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn brs_examples_4_and_5_equilibrium_temperatures() {
     for (k, (name, paper)) in [("brs-example4", 0.953), ("brs-example5", 0.732)]
         .into_iter()
@@ -254,6 +255,7 @@ fn maxwell_disks_in_a_maxwell_host_follow_brs_14_to_17() {
 /// in the majorant's mixture 2.043 (half-widths about 0.002). The two checks jointly
 /// (Bonferroni); the interval must stay below 0.005, a tenth of the second shift.
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn elastic_hard_disks_reach_their_hosts_temperature() {
     use gdsmc_stats::{dof, family};
     let n = 1024;

@@ -33,6 +33,7 @@ fn steady_t(name: &str, scheme: SchemeChoice, seed: u64) -> (f64, f64, f64) {
 }
 
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn rw_tables_3_to_5() {
     // (scheme, RW's T_inf, RW's Conf)
     let rows = [

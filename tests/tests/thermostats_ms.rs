@@ -89,6 +89,7 @@ fn gaussian_alpha_04() {
 }
 
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn constant_force_alpha_08() {
     let (st, a) = steady("ms-constant-force", 1003, 0.8);
     let (mu4, c4) = get(&st, name::MU4);
@@ -111,6 +112,7 @@ fn constant_force_alpha_08() {
 
 /// The same white-noise steady state from MS's own time-stepped scheme (h = 0.01 lambda / v0).
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn white_noise_alpha_08_time_stepped() {
     let mut s = shipped("ms-white-noise", 2048, 16, 1400);
     s.with_physics(|ph| ph.scheme = gdsmc_runner::scene::SchemeChoice::TimeStepped(0.01))

@@ -9,6 +9,7 @@ use gdsmc_runner::scene::SchemeChoice;
 use gdsmc_validation::*;
 
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn time_stepped_converges_to_no_splitting() {
     let n = 256;
     let mut exact = shipped("grw-example5", n, 3000, 1101);
@@ -52,6 +53,7 @@ fn time_stepped_converges_to_no_splitting() {
 /// whose pairs collide 16/(4 pi) times as often (the rate the sphere's factor 16 would give
 /// on the circle) wherever the two lie more than two half-widths apart.
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn time_stepped_hard_disks_converge_to_no_splitting() {
     let n = 256;
     let times = vec![0.0, 0.25, 0.5, 1.0, 2.0];
@@ -90,6 +92,7 @@ fn time_stepped_hard_disks_converge_to_no_splitting() {
 /// scheme of beta = 0.3 wherever the two lie more than two half-widths apart (it must, at two
 /// times at least).
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn time_stepped_rough_spheres_converge_to_no_splitting() {
     let (n, m) = (128, 2000);
     let times = vec![0.0, 0.125, 0.25, 0.5, 1.0];
@@ -127,6 +130,7 @@ fn time_stepped_rough_spheres_converge_to_no_splitting() {
 ///   of 8 particles moves `T` by several per cent. The bias is of order `1/n` (measured: 5% at
 ///   n = 8 in the steady state, below the 0.7% interval at n = 256).
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn time_stepped_maxwell_molecules_keep_the_exact_finite_n_mean() {
     use gdsmc_runner::reference::curves::maxwell_temperature;
     use gdsmc_stats::{dof, family};
@@ -178,6 +182,7 @@ fn time_stepped_maxwell_molecules_keep_the_exact_finite_n_mean() {
 /// of alpha = 0.3 wherever the two lie more than two half-widths apart (at two points at
 /// least).
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn time_stepped_vhs_converges_to_no_splitting() {
     let (n, m) = (128, 2000);
     let times = vec![0.0, 0.0625, 0.125, 0.25, 0.5];
@@ -212,6 +217,7 @@ fn time_stepped_vhs_converges_to_no_splitting() {
 /// exact scheme of beta = 0.5 wherever the two lie more than two half-widths apart (at two
 /// points at least).
 #[test]
+#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn time_stepped_rough_mixture_converges_to_no_splitting() {
     let (n, m) = (128, 1000);
     let times = vec![0.0, 0.5, 1.0, 2.0, 4.0];
