@@ -3,11 +3,13 @@
 
     python3 tools/timings.py [--skip-reproduce]
 
-On a fresh clone of HEAD (in a temporary directory, with ../shared beside it as CI has it) and
-an empty target directory, it runs the README's two commands literally, then the pieces a
-reader asks about: the test build alone, the quick-start run alone, the release build without
-the PNG/PDF renderers (`--no-default-features`, its own target directory) and `gdsmc reproduce
---quick`. For each: wall time, CPU time (user + system of the children), the crates compiled
+On a fresh clone of HEAD (in a temporary directory, with ../shared beside it as CI has it), an
+empty target directory and an empty cargo home (every crate downloaded, as a new user's first
+build does), it runs the README's two commands literally, then the pieces a reader asks about:
+the test build alone, the quick-start run alone, the release build without the PNG/PDF
+renderers (`--no-default-features`, its own target directory), `gdsmc reproduce --quick`, the
+long suite (`-- --ignored`) and the Python package's install into a fresh virtualenv
+(`pip install './python[notebook]'`, its own target directory, as a user's). For each: wall time, CPU time (user + system of the children), the crates compiled
 and the load average before and after, with the machine (CPU model, cores, memory), rustc and
 the commit. It writes docs/timings.md, and the block between the README's `<!-- timings -->`
 markers; tests/tests/timings.rs checks in CI that the block is the one docs/timings.md holds
@@ -84,6 +86,8 @@ def main():
         os.symlink(shared, os.path.join(work, "shared"))
     env = dict(os.environ)
     env.pop("CARGO_TARGET_DIR", None)
+    # A new user's cargo home: nothing downloaded yet (the toolchain is rustup's, elsewhere).
+    env["CARGO_HOME"] = os.path.join(work, "cargo-home")
     # The clone's README block is the previous measurement (or none): its test skips itself.
     env["GDSMC_TIMINGS_RUN"] = "1"
     rows = []
@@ -129,6 +133,18 @@ def main():
                 "`gdsmc reproduce --quick`",
                 ["target/release/gdsmc", "reproduce", "--quick", "--out", "target/timings-reproduce"],
             )
+        long_suite, _ = step(
+            "long-suite",
+            "the long suite after the tests (`-- --ignored`)",
+            ["cargo", "test", "--workspace", "--release", "--", "--ignored"],
+        )
+        venv = os.path.join(work, "venv")
+        subprocess.run([sys.executable, "-m", "venv", venv], check=True)
+        python, _ = step(
+            "python-install",
+            "the Python package into a fresh virtualenv",
+            [os.path.join(venv, "bin", "pip"), "install", "--disable-pip-version-check", "./python[notebook]"],
+        )
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
@@ -142,7 +158,10 @@ def main():
         f"{test_n} crates, the test harnesses and the test-only dependencies, in "
         f"{minutes(test_build)}, and reused the rest; the tests ran {minutes(tests)}). Without "
         f"the PNG/PDF renderers (`--no-default-features`) the release build compiles "
-        f"{bare_n} crates instead of {first_n} and took {minutes(bare)}."
+        f"{bare_n} crates instead of {first_n} and took {minutes(bare)}. The long suite "
+        f"(`cargo test --workspace --release -- --include-ignored` runs both) took "
+        f"{minutes(long_suite)} after them; `pip install './python[notebook]'` into a fresh "
+        f"virtualenv took {minutes(python)} (it builds the extension in its own target)."
     )
     md = [
         "# Timings",

@@ -143,7 +143,8 @@ class Result:
 
     def write(self, directory: Union[str, os.PathLike], formats: str = "svg") -> List[str]:
         """Writes the command's whole output set (tables, summary.json, charts in ``formats``:
-        "svg", "png", "pdf", comma-separated) into ``directory``. Returns the files written."""
+        "svg", "png", "pdf", comma-separated; png and pdf when the extension was built with its
+        ``render`` feature) into ``directory``. Returns the files written."""
         return self._raw.write(os.fspath(directory), formats)
 
     def __repr__(self) -> str:

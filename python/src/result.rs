@@ -154,8 +154,8 @@ impl RunResult {
     }
 
     /// Writes the command's whole output set (tables, summary.json, charts in `formats`:
-    /// "svg", "png", "pdf", comma-separated) into `dir`, replacing the previous set in one
-    /// step. Returns the files written.
+    /// "svg", "png", "pdf", comma-separated; png and pdf with the `render` feature) into
+    /// `dir`, replacing the previous set in one step. Returns the files written.
     #[pyo3(signature = (dir, formats = "svg"))]
     fn write(
         &self,

@@ -14,7 +14,8 @@ const BEGIN: &str = "<!-- timings -->";
 const END: &str = "<!-- /timings -->";
 
 /// Records of measurements, each made by the command it names on the machine it states.
-const RECORDS: [&str; 5] = [
+const RECORDS: [&str; 6] = [
+    "ci.md",
     "timings.md",
     "speed.md",
     "tails-full.md",
