@@ -445,13 +445,18 @@ fn one_ensemble_notes(results: &[PointResult]) -> Vec<String> {
 fn stale_shards(p: &PointScene, files: &[PathBuf]) -> Option<String> {
     let bytes = run::journal::read_file(&files[0]).ok()?;
     let header = run::journal::read(&files[0], &bytes).ok()?.header;
-    let s = header.shard?.1;
-    let want = run::journal::Header::new(
+    let want = shard_header(p, header.shard?.1);
+    (!want.same_set(&header)).then(|| header.difference(&want))
+}
+
+/// The header of shard 0 of `s` of point `p`'s run: what every shard of it must match but for
+/// its index ([`run::journal::Header::same_set`]).
+fn shard_header(p: &PointScene, s: u64) -> run::journal::Header {
+    run::journal::Header::new(
         &p.source,
         Some((0, s)),
         run::shard::range(0, s, p.source.scene.ensembles()),
-    );
-    (!want.same_set(&header)).then(|| header.difference(&want))
+    )
 }
 
 /// Point `p`'s statistics from the journals of its shards: one whole run of exactly its
@@ -465,11 +470,7 @@ fn merged_point(p: &PointScene, files: &[PathBuf]) -> Result<run::RunStats, Erro
     })?;
     let first = run::journal::read_file(&files[0])?;
     let header = run::journal::read(&files[0], &first)?.header;
-    let want = run::journal::Header::new(
-        &p.source,
-        Some((0, merged.shards)),
-        run::shard::range(0, merged.shards, p.source.scene.ensembles()),
-    );
+    let want = shard_header(p, merged.shards);
     if !want.same_set(&header) {
         return Err(Error::Shards(format!(
             "{} is not a shard of point {} of this sweep: it is {}",
