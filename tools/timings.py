@@ -6,8 +6,8 @@
 On a fresh clone of HEAD (in a temporary directory, with ../shared beside it as CI has it), an
 empty target directory and an empty cargo home (every crate downloaded, as a new user's first
 build does), it runs the README's two commands literally, then the pieces a reader asks about:
-the test build alone, the quick-start run alone, the release build without the PNG/PDF
-renderers (`--no-default-features`, its own target directory), `gdsmc reproduce --quick`, the
+the test build alone, the quick-start run alone, the release build with the PNG/PDF
+renderers (`--features render`, its own target directory), `gdsmc reproduce --quick`, the
 long suite (`-- --ignored`) and the Python package's install into a fresh virtualenv
 (`pip install './python[notebook]'`, its own target directory, as a user's). For each: wall time, CPU time (user + system of the children), the crates compiled
 and the load average before and after, with the machine (CPU model, cores, memory), rustc and
@@ -120,12 +120,12 @@ def main():
             "the README's second command after the test build",
             ["cargo", "test", "--workspace", "--release"],
         )
-        bare_env = dict(env, CARGO_TARGET_DIR=os.path.join(work, "target-bare"))
-        bare, bare_n = step(
-            "build-without-renderers",
-            "the release build without the renderers, from nothing",
-            ["cargo", "build", "--release", "-p", "gdsmc", "--no-default-features"],
-            bare_env,
+        render_env = dict(env, CARGO_TARGET_DIR=os.path.join(work, "target-render"))
+        render, render_n = step(
+            "build-with-renderers",
+            "the release build with the PNG/PDF renderers, from nothing",
+            ["cargo", "build", "--release", "-p", "gdsmc", "--features", "render"],
+            render_env,
         )
         if not skip_reproduce:
             step(
@@ -156,9 +156,9 @@ def main():
         f"{minutes(first)} from nothing ({first_n} crates compiled; the run itself "
         f"{minutes(run_alone)}), the second {minutes(test_build + tests)} after it (it compiled "
         f"{test_n} crates, the test harnesses and the test-only dependencies, in "
-        f"{minutes(test_build)}, and reused the rest; the tests ran {minutes(tests)}). Without "
-        f"the PNG/PDF renderers (`--no-default-features`) the release build compiles "
-        f"{bare_n} crates instead of {first_n} and took {minutes(bare)}. The long suite "
+        f"{minutes(test_build)}, and reused the rest; the tests ran {minutes(tests)}). With "
+        f"the PNG/PDF renderers (`--features render`) the release build compiles "
+        f"{render_n} crates instead of {first_n} and took {minutes(render)} from nothing. The long suite "
         f"(`cargo test --workspace --release -- --include-ignored` runs both) took "
         f"{minutes(long_suite)} after them; `pip install './python[notebook]'` into a fresh "
         f"virtualenv took {minutes(python)} (it builds the extension in its own target)."

@@ -5,7 +5,7 @@
 //! family, kernel, drive, law, scheme). CI runs this file with the default features (all), with
 //! the firmware's subsets and with none, so both branches are exercised.
 
-use gdsmc_core::engine::{EngineError, EventLoop};
+use gdsmc_core::engine::EngineError;
 use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::physics::{
     BackgroundKernel, DimensionChoice, DriveChoice, KernelChoice, Physics, RestitutionLaw,

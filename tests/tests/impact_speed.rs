@@ -13,7 +13,6 @@
 //! two half-widths, over six standard errors). With the absolute value put back in
 //! `ImpactSpeed::normal_speed`, the three smooth cases fail (checked when it was fixed).
 
-use gdsmc_core::engine::EventLoop;
 use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::physics::{
     DimensionChoice, DriveChoice, KernelChoice, Physics, RestitutionLaw, RotationChoice,

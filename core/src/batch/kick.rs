@@ -79,8 +79,15 @@ pub fn white_noise_kick_all_simd<R: Rng + ?Sized>(
     let tt = RealX4::splat(t);
     let mut chunks = p.as_mut_slice().chunks_exact_mut(4);
     for q in &mut chunks {
-        // Normals in particle order, as the scalar twin draws them.
-        let g: [Vec3; 4] = core::array::from_fn(|_| standard_normal3(rng));
+        // Normals in particle order, as the scalar twin draws them (an array expression
+        // evaluates left to right; `array::from_fn`'s closure was left out of line in some
+        // builds, 13% more instructions in the kick).
+        let g: [Vec3; 4] = [
+            standard_normal3(rng),
+            standard_normal3(rng),
+            standard_normal3(rng),
+            standard_normal3(rng),
+        ];
         let lane = |f: fn(&Vec3) -> Real| RealX4::from([f(&g[0]), f(&g[1]), f(&g[2]), f(&g[3])]);
         let [x, y, z, tk] = load4(q);
         let s = (tb * (tt - tk)).sqrt();

@@ -28,7 +28,7 @@ use crate::mixture::{
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
-use crate::rng::Rng;
+use crate::rng::{Rng, Xoshiro256PlusPlus};
 use crate::rough::{RoughMap, RoughNoise, RoughObservables, RoughPairLaw};
 
 /// The engine of a validated physics: by particle model, species and dimension, then one
@@ -55,6 +55,24 @@ pub enum Engine {
     RoughMixture(Built<ByKernel<Mixture<Spheres, RoughPairs>>, ROUGH_MIXTURES>),
     /// A mixture of rough disks (features `mixtures`, `rough`, `disks`).
     RoughDiskMixture(Built<ByKernel<Mixture<Disks, RoughPairs>>, ROUGH_DISK_MIXTURES>),
+}
+
+impl Engine {
+    /// [`EventLoop::advance_to`] with the generator every gdsmc run uses (GRW Section 3's
+    /// loop, or the scheme the physics names), compiled once here: the loops are
+    /// monomorphized in this crate's build, not again in each crate that runs them (the
+    /// runner, the C ABI and their test builds each compiled all of them for about 80 s of
+    /// CPU). Not inlined, so a caller links this copy; another generator goes through the
+    /// trait's generic method.
+    #[inline(never)]
+    pub fn advance_to(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut Xoshiro256PlusPlus,
+    ) -> Result<Observables, EngineError> {
+        EventLoop::advance_to(self, p, t_end, rng)
+    }
 }
 
 /// Whether this build holds each engine family (the cargo features of gdsmc-core).

@@ -1,13 +1,14 @@
 //! Charts written as SVG, PNG or PDF: the SVG is drawn once and rendered by resvg (PNG, twice
 //! the SVG's pixel size) or converted by svg2pdf (PDF, vector), with the system's fonts
 //! (`sans-serif` resolved to the first of DejaVu Sans, Liberation Sans, Noto Sans, Arial
-//! found). The renderers are the `render` feature (on by default): without it gdsmc writes
+//! found). The renderers are the `render` feature (off by default: they are more crates than the rest of
+//! the build): without it gdsmc writes
 //! SVG only and refuses `png` and `pdf` where the formats are parsed ([`NO_RENDER`]).
 
 /// Why PNG and PDF are refused by a build without the `render` feature.
 pub const NO_RENDER: &str = "PNG and PDF charts need the `render` feature, which this gdsmc \
-was built without (build it with `--features render`, or leave out --no-default-features); \
-SVG needs nothing";
+was built without (build it with `cargo build --release -p gdsmc --features render`); SVG needs \
+nothing";
 
 /// The formats a chart is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -169,5 +170,48 @@ mod tests {
             assert!("svg".parse::<Formats>().unwrap().svg);
         }
         assert!("".parse::<Formats>().is_err());
+    }
+
+    /// A small chart with text, a line and a filled band.
+    const SVG: &str = r##"<svg xmlns="http://www.w3.org/2000/svg" width="120" height="80">
+<rect x="10" y="30" width="100" height="20" fill="#3060c0" fill-opacity="0.3"/>
+<line x1="10" y1="40" x2="110" y2="40" stroke="#000" stroke-width="2"/>
+<text x="10" y="20" font-family="sans-serif" font-size="12">T(t)</text></svg>"##;
+
+    /// PNG at twice the SVG's pixel size (its IHDR's width and height), with the line drawn
+    /// (not one colour throughout); a complete PDF. CI runs this in the stage
+    /// that builds `render`.
+    #[cfg(feature = "render")]
+    #[test]
+    fn png_and_pdf_are_rendered() {
+        let png = png(SVG).unwrap();
+        assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+        let be = |i: usize| u32::from_be_bytes(png[i..i + 4].try_into().unwrap());
+        assert_eq!((be(16), be(20)), (240, 160), "IHDR size");
+        assert!(
+            png.len() > 300,
+            "an empty picture compresses to less: {}",
+            png.len()
+        );
+        let pdf = pdf(SVG).unwrap();
+        assert!(pdf.starts_with(b"%PDF-"), "{:?}", &pdf[..8]);
+        let tail = String::from_utf8_lossy(&pdf[pdf.len().saturating_sub(64)..]).to_string();
+        assert!(tail.contains("%%EOF"), "{tail}");
+        assert!(
+            have_fonts(),
+            "no system font: the PNG and PDF would have no text"
+        );
+    }
+
+    /// Without the renderers PNG and PDF are refused by name.
+    #[cfg(not(feature = "render"))]
+    #[test]
+    fn png_and_pdf_are_refused_without_render() {
+        for e in [png(SVG).unwrap_err(), pdf(SVG).unwrap_err()] {
+            assert!(
+                e.contains("`render` feature") && e.contains("--features render"),
+                "{e}"
+            );
+        }
     }
 }
