@@ -59,6 +59,8 @@ fn every_chart_of_every_shipped_scene_is_readable() {
     names.sort();
     assert!(names.len() >= 19, "shipped scenes missing");
     let mut checked = 0;
+    #[cfg(feature = "render")]
+    let mut svgs: Vec<(String, String)> = Vec::new();
     for path in names {
         let mut s = scene::load(&path).unwrap();
         s.set_n(256).expect("a valid particle count");
@@ -91,15 +93,22 @@ fn every_chart_of_every_shipped_scene_is_readable() {
             assert_eq!(g.objections(), Vec::<String>::new(), "{at}");
             assert!(!g.axes.is_empty(), "{at}: no axis labels recorded");
             #[cfg(feature = "render")]
-            {
-                let png = charts::export::png(&c.svg).unwrap_or_else(|e| panic!("{at}: PNG: {e}"));
-                assert!(
-                    png.starts_with(b"\x89PNG") && png.len() > 1000,
-                    "{at}: PNG empty"
-                );
-            }
+            svgs.push((at, c.svg.clone()));
             checked += 1;
         }
     }
     assert!(checked > 200, "only {checked} charts checked");
+    // Every chart rendered to PNG, on every core (the renderer is most of this test's time).
+    #[cfg(feature = "render")]
+    {
+        use rayon::prelude::*;
+        svgs.par_iter().for_each(|(at, svg)| {
+            let png = charts::export::png(svg).unwrap_or_else(|e| panic!("{at}: PNG: {e}"));
+            assert!(
+                png.starts_with(b"\x89PNG") && png.len() > 1000,
+                "{at}: PNG empty"
+            );
+        });
+        assert_eq!(svgs.len(), checked);
+    }
 }
