@@ -128,7 +128,9 @@ fn the_readme_block_is_the_measured_one() {
         "quick-start-run",
         "test-build",
         "tests",
-        "build-without-renderers",
+        "build-with-renderers",
+        "long-suite",
+        "python-install",
         "reproduce-quick",
     ] {
         assert!(
