@@ -92,7 +92,16 @@ def main():
     env["GDSMC_TIMINGS_RUN"] = "1"
     rows = []
 
-    def step(key, what, cmd, e=env):
+    def settle():
+        """Waits (at most 150 s) for the previous step's load to fall below one core's, so a
+        step from nothing is measured on a machine as idle as the first one's."""
+        t0 = time.monotonic()
+        while load() > 1.0 and time.monotonic() - t0 < 150:
+            time.sleep(5)
+
+    def step(key, what, cmd, e=env, idle=False):
+        if idle:
+            settle()
         print(f"timings: {what} ...", flush=True)
         w, c, n, l0, l1 = run(cmd, clone, e)
         rows.append((key, what, " ".join(cmd), w, c, n, l0, l1))
@@ -126,6 +135,7 @@ def main():
             "the release build with the PNG/PDF renderers, from nothing",
             ["cargo", "build", "--release", "-p", "gdsmc", "--features", "render"],
             render_env,
+            idle=True,
         )
         if not skip_reproduce:
             step(
@@ -144,6 +154,7 @@ def main():
             "python-install",
             "the Python package into a fresh virtualenv",
             [os.path.join(venv, "bin", "pip"), "install", "--disable-pip-version-check", "./python[notebook]"],
+            idle=True,
         )
     finally:
         shutil.rmtree(work, ignore_errors=True)
@@ -181,6 +192,7 @@ def main():
         "|---|---|---|---|---|---|---|",
     ]
     for key, what, cmd, w, c, n, l0, l1 in rows:
+        cmd = cmd.replace(work + os.sep, "")
         md.append(f"| {what} (`{key}`) | `{cmd}` | {minutes(w)} | {minutes(c)} | {n} | {l0:.2f} | {l1:.2f} |")
     md += ["", "The README's block:", "", BEGIN, block, END, ""]
     with open(os.path.join(REPO, "docs", "timings.md"), "w") as f:

@@ -6,22 +6,51 @@
 use crate::config::*;
 use crate::status::{Failure, Msg, fail, gdsmc_status, msg};
 use gdsmc_core::physics::{
-    BackgroundKernel, Component, DimensionChoice, DriveChoice, KernelChoice, Model, Param, Physics,
-    PhysicsError, RestitutionLaw, RotationChoice, SchemeChoice, SpeciesChoice,
+    BackgroundKernel, Component, DimensionChoice, DriveChoice, DriveKind, KernelChoice, KernelKind,
+    LawKind, Model, Param, Physics, PhysicsError, RestitutionLaw, RotationChoice, SchemeChoice,
+    SchemeKind, SpeciesChoice,
+};
+
+// The C header's codes are the core's kinds' (`gdsmc_core::physics::DriveKind::c_code` and
+// its siblings), checked here at compile time; ffi/tests/kinds.rs checks that every kind has its
+// constant in include/gdsmc.h.
+const _: () = {
+    assert!(GDSMC_KERNEL_MAXWELL == KernelKind::Maxwell.c_code());
+    assert!(GDSMC_KERNEL_HARD_SPHERES == KernelKind::HardSpheres.c_code());
+    assert!(GDSMC_KERNEL_VHS == KernelKind::Vhs.c_code());
+    assert!(GDSMC_RESTITUTION_CONSTANT == LawKind::Constant.c_code());
+    assert!(GDSMC_RESTITUTION_IMPACT_SPEED == LawKind::ImpactSpeed.c_code());
+    assert!(GDSMC_DRIVE_NONE == DriveKind::None.c_code());
+    assert!(GDSMC_DRIVE_WHITE_NOISE == DriveKind::WhiteNoise.c_code());
+    assert!(GDSMC_DRIVE_HOST_MEDIUM == DriveKind::HostMedium.c_code());
+    assert!(GDSMC_DRIVE_GAUSSIAN == DriveKind::Gaussian.c_code());
+    assert!(GDSMC_DRIVE_CONSTANT_FORCE == DriveKind::ConstantForce.c_code());
+    assert!(GDSMC_SCHEME_NO_SPLITTING == SchemeKind::NoSplitting.c_code());
+    assert!(GDSMC_SCHEME_EULER == SchemeKind::Euler.c_code());
+    assert!(GDSMC_SCHEME_STRANG == SchemeKind::Strang.c_code());
+    assert!(GDSMC_SCHEME_TIME_STEPPED == SchemeKind::TimeStepped.c_code());
 };
 
 fn invalid<T>(m: Msg) -> Result<T, Failure> {
     fail(gdsmc_status::GDSMC_INVALID_ARGUMENT, m)
 }
 
-/// An enumeration field that must be one of `0..=max`.
-fn check_enum(value: u32, max: u32, field: &str, family: &str) -> Result<(), Failure> {
-    if value > max {
-        return invalid(msg!(
-            "config.{field} = {value} is not a GDSMC_{family}_* value"
-        ));
-    }
-    Ok(())
+/// An enumeration field: the core's kind of its C code (`gdsmc_core::physics::DriveKind` and
+/// its siblings declare the codes), or an error naming the field.
+fn decode<K>(
+    value: u32,
+    of: fn(u32) -> Option<K>,
+    field: &str,
+    family: &str,
+) -> Result<K, Failure> {
+    of(value).map_or_else(
+        || {
+            invalid(msg!(
+                "config.{field} = {value} is not a GDSMC_{family}_* value"
+            ))
+        },
+        Ok,
+    )
 }
 
 /// The C field that holds a physics parameter.
@@ -102,12 +131,12 @@ pub(crate) fn physics_failure(e: PhysicsError, species: usize) -> Failure {
 impl gdsmc_config {
     /// The physics this configuration describes (enumeration integers checked).
     pub(crate) fn physics(&self) -> Result<Physics, Failure> {
-        check_enum(self.kernel, GDSMC_KERNEL_VHS, "kernel", "KERNEL")?;
-        check_enum(self.drive, GDSMC_DRIVE_CONSTANT_FORCE, "drive", "DRIVE")?;
-        check_enum(self.scheme, GDSMC_SCHEME_TIME_STEPPED, "scheme", "SCHEME")?;
-        check_enum(
+        let kernel_kind = decode(self.kernel, KernelKind::from_c, "kernel", "KERNEL")?;
+        let drive_kind = decode(self.drive, DriveKind::from_c, "drive", "DRIVE")?;
+        let scheme_kind = decode(self.scheme, SchemeKind::from_c, "scheme", "SCHEME")?;
+        let law_kind = decode(
             self.restitution_law,
-            GDSMC_RESTITUTION_IMPACT_SPEED,
+            LawKind::from_c,
             "restitution_law",
             "RESTITUTION",
         )?;
@@ -115,53 +144,51 @@ impl gdsmc_config {
             return invalid(msg!("config.n = {} is too large", self.n));
         };
         let (gamma, c) = (self.gamma, self.c);
-        let kernel = match self.kernel {
-            GDSMC_KERNEL_MAXWELL => KernelChoice::Maxwell { gamma, c },
-            GDSMC_KERNEL_HARD_SPHERES => KernelChoice::HardSpheres { gamma, c },
-            _ => KernelChoice::Vhs {
+        // Every match below names every kind (no catch-all): a new kind does not compile until
+        // it is decoded here.
+        let kernel = match kernel_kind {
+            KernelKind::Maxwell => KernelChoice::Maxwell { gamma, c },
+            KernelKind::HardSpheres => KernelChoice::HardSpheres { gamma, c },
+            KernelKind::Vhs => KernelChoice::Vhs {
                 gamma,
                 c,
                 lambda: self.lambda,
             },
         };
-        let restitution = match self.restitution_law {
-            GDSMC_RESTITUTION_CONSTANT => RestitutionLaw::Constant(self.restitution),
-            _ => RestitutionLaw::ImpactSpeed {
+        let restitution = match law_kind {
+            LawKind::Constant => RestitutionLaw::Constant(self.restitution),
+            LawKind::ImpactSpeed => RestitutionLaw::ImpactSpeed {
                 beta0: self.impact_beta0,
                 delta: self.impact_delta,
             },
         };
-        let drive = match self.drive {
-            GDSMC_DRIVE_NONE => DriveChoice::None,
-            GDSMC_DRIVE_WHITE_NOISE => DriveChoice::WhiteNoise(self.beta),
-            GDSMC_DRIVE_GAUSSIAN => DriveChoice::Gaussian(self.zeta),
-            GDSMC_DRIVE_CONSTANT_FORCE => DriveChoice::ConstantForce(self.g),
-            _ => {
-                check_enum(
-                    self.background_kernel,
-                    GDSMC_BACKGROUND_HARD_SPHERES,
-                    "background_kernel",
-                    "BACKGROUND",
-                )?;
-                DriveChoice::HostMedium {
-                    kernel: if self.background_kernel == GDSMC_BACKGROUND_HARD_SPHERES {
-                        BackgroundKernel::HardSpheres
-                    } else {
-                        BackgroundKernel::Maxwell
-                    },
-                    c1: self.background_c,
-                    density: self.background_density,
-                    mass: self.background_mass,
-                    temperature: self.background_temperature,
-                    drift: self.background_drift,
-                }
-            }
+        let drive = match drive_kind {
+            DriveKind::None => DriveChoice::None,
+            DriveKind::WhiteNoise => DriveChoice::WhiteNoise(self.beta),
+            DriveKind::Gaussian => DriveChoice::Gaussian(self.zeta),
+            DriveKind::ConstantForce => DriveChoice::ConstantForce(self.g),
+            DriveKind::HostMedium => DriveChoice::HostMedium {
+                kernel: match self.background_kernel {
+                    GDSMC_BACKGROUND_MAXWELL => BackgroundKernel::Maxwell,
+                    GDSMC_BACKGROUND_HARD_SPHERES => BackgroundKernel::HardSpheres,
+                    other => {
+                        return invalid(msg!(
+                            "config.background_kernel = {other} is not a GDSMC_BACKGROUND_* value"
+                        ));
+                    }
+                },
+                c1: self.background_c,
+                density: self.background_density,
+                mass: self.background_mass,
+                temperature: self.background_temperature,
+                drift: self.background_drift,
+            },
         };
-        let scheme = match self.scheme {
-            GDSMC_SCHEME_NO_SPLITTING => SchemeChoice::NoSplitting,
-            GDSMC_SCHEME_EULER => SchemeChoice::Euler(self.dt),
-            GDSMC_SCHEME_STRANG => SchemeChoice::Strang(self.dt),
-            _ => SchemeChoice::TimeStepped(self.step_factor),
+        let scheme = match scheme_kind {
+            SchemeKind::NoSplitting => SchemeChoice::NoSplitting,
+            SchemeKind::Euler => SchemeChoice::Euler(self.dt),
+            SchemeKind::Strang => SchemeChoice::Strang(self.dt),
+            SchemeKind::TimeStepped => SchemeChoice::TimeStepped(self.step_factor),
         };
         let mut physics = Physics::new(n, kernel, restitution, drive, scheme);
         physics.initial[0] = Component {
@@ -312,29 +339,31 @@ impl gdsmc_config {
             beta: 0.0,
             ..gdsmc_config::example3()
         };
-        (cfg.kernel, cfg.gamma, cfg.c) = match p.kernel {
-            KernelChoice::Maxwell { gamma, c } => (GDSMC_KERNEL_MAXWELL, gamma, c),
-            KernelChoice::HardSpheres { gamma, c } => (GDSMC_KERNEL_HARD_SPHERES, gamma, c),
+        // The codes from the kinds; the parameters by variant (every match exhaustive).
+        cfg.kernel = p.kernel.kind().c_code();
+        cfg.restitution_law = p.restitution.kind().c_code();
+        cfg.drive = p.drive.kind().c_code();
+        cfg.scheme = p.scheme.kind().c_code();
+        (cfg.gamma, cfg.c) = match p.kernel {
+            KernelChoice::Maxwell { gamma, c } | KernelChoice::HardSpheres { gamma, c } => {
+                (gamma, c)
+            }
             KernelChoice::Vhs { gamma, c, lambda } => {
                 cfg.lambda = lambda;
-                (GDSMC_KERNEL_VHS, gamma, c)
+                (gamma, c)
             }
         };
         match p.restitution {
-            RestitutionLaw::Constant(alpha) => {
-                cfg.restitution_law = GDSMC_RESTITUTION_CONSTANT;
-                cfg.restitution = alpha;
-            }
+            RestitutionLaw::Constant(alpha) => cfg.restitution = alpha,
             RestitutionLaw::ImpactSpeed { beta0, delta } => {
-                cfg.restitution_law = GDSMC_RESTITUTION_IMPACT_SPEED;
                 (cfg.impact_beta0, cfg.impact_delta) = (beta0, delta);
             }
         }
         match p.drive {
-            DriveChoice::None => cfg.drive = GDSMC_DRIVE_NONE,
-            DriveChoice::WhiteNoise(b) => (cfg.drive, cfg.beta) = (GDSMC_DRIVE_WHITE_NOISE, b),
-            DriveChoice::Gaussian(z) => (cfg.drive, cfg.zeta) = (GDSMC_DRIVE_GAUSSIAN, z),
-            DriveChoice::ConstantForce(g) => (cfg.drive, cfg.g) = (GDSMC_DRIVE_CONSTANT_FORCE, g),
+            DriveChoice::None => {}
+            DriveChoice::WhiteNoise(b) => cfg.beta = b,
+            DriveChoice::Gaussian(z) => cfg.zeta = z,
+            DriveChoice::ConstantForce(g) => cfg.g = g,
             DriveChoice::HostMedium {
                 kernel,
                 c1,
@@ -343,7 +372,6 @@ impl gdsmc_config {
                 temperature,
                 drift,
             } => {
-                cfg.drive = GDSMC_DRIVE_HOST_MEDIUM;
                 cfg.background_kernel = match kernel {
                     BackgroundKernel::Maxwell => GDSMC_BACKGROUND_MAXWELL,
                     BackgroundKernel::HardSpheres => GDSMC_BACKGROUND_HARD_SPHERES,
@@ -356,12 +384,9 @@ impl gdsmc_config {
             }
         }
         match p.scheme {
-            SchemeChoice::NoSplitting => cfg.scheme = GDSMC_SCHEME_NO_SPLITTING,
-            SchemeChoice::Euler(dt) => (cfg.scheme, cfg.dt) = (GDSMC_SCHEME_EULER, dt),
-            SchemeChoice::Strang(dt) => (cfg.scheme, cfg.dt) = (GDSMC_SCHEME_STRANG, dt),
-            SchemeChoice::TimeStepped(f) => {
-                (cfg.scheme, cfg.step_factor) = (GDSMC_SCHEME_TIME_STEPPED, f)
-            }
+            SchemeChoice::NoSplitting => {}
+            SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => cfg.dt = dt,
+            SchemeChoice::TimeStepped(f) => cfg.step_factor = f,
         }
         Ok(cfg)
     }

@@ -3,6 +3,7 @@
 //! of the disk). Run one file's tests with `cargo test --release -p gdsmc-scene --test all FILE::`.
 
 mod docs_examples;
+mod kinds;
 mod mixture_scenes;
 mod rough_scenes;
 mod scene_errors;

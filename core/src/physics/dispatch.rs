@@ -504,7 +504,11 @@ impl<G: WhiteNoiseIn> Build for SmoothBuild<'_, G> {
     fn noise(&self) -> Option<G::Noise> {
         match self.0.drive {
             DriveModel::WhiteNoise(w) => Some(G::noise(w)),
-            _ => None,
+            DriveModel::None
+            | DriveModel::Gaussian(_)
+            | DriveModel::ConstantForce(_)
+            | DriveModel::HostMaxwell(_)
+            | DriveModel::HostHardSpheres(_) => None,
         }
     }
     fn host<B: BackgroundKernel>(&self, h: HostMedium<B>) -> Result<HostMedium<B, G>, EngineError> {

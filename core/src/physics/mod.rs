@@ -45,6 +45,7 @@ mod dimension;
 mod dispatch;
 pub mod engine;
 pub mod error;
+mod kinds;
 pub mod model;
 mod parts;
 mod rotation;
@@ -52,6 +53,7 @@ mod species;
 
 pub use engine::Engine;
 pub use error::{Param, PhysicsError, Problem};
+pub use kinds::{DriveKind, KernelKind, LawKind, SchemeKind};
 pub use model::Model;
 
 pub use crate::geometry::DimensionChoice;

@@ -167,7 +167,10 @@ impl Model {
         match self.drive {
             DriveModel::HostMaxwell(d) => d.event_rate(speed),
             DriveModel::HostHardSpheres(d) => d.event_rate(speed),
-            _ => 0.0,
+            DriveModel::None
+            | DriveModel::WhiteNoise(_)
+            | DriveModel::Gaussian(_)
+            | DriveModel::ConstantForce(_) => 0.0,
         }
     }
 }

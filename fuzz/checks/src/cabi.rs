@@ -13,6 +13,7 @@
 use crate::wild;
 use arbitrary::Unstructured;
 use gdsmc::*;
+use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind};
 use std::ptr::{null, null_mut};
 
 /// A 32-byte aligned block: the unit of the caller memory handed to gdsmc_sim_init_in.
@@ -20,10 +21,31 @@ use std::ptr::{null, null_mut};
 #[repr(C, align(32))]
 struct Block([u8; 32]);
 
+/// The most kinds any axis has (the core's declarations): an enumeration field is drawn from
+/// `0..=MOST_KINDS`, every kind of every axis and one past them, or anything.
+pub const MOST_KINDS: usize = {
+    let k = [
+        KernelKind::ALL.len(),
+        LawKind::ALL.len(),
+        DriveKind::ALL.len(),
+        SchemeKind::ALL.len(),
+    ];
+    let (mut i, mut most) = (0, 0);
+    while i < k.len() {
+        if k[i] > most {
+            most = k[i];
+        }
+        i += 1;
+    }
+    most
+};
+// The draw below reaches every code of every axis and one past them.
+const _: () = assert!(MOST_KINDS + 1 < 9);
+
 fn small_enum(u: &mut Unstructured<'_>) -> u32 {
     match u.int_in_range(0u8..=9).unwrap_or(0) {
         9 => u.arbitrary().unwrap_or(u32::MAX),
-        k => (k % 6) as u32,
+        k => (k as usize % (MOST_KINDS + 1)) as u32,
     }
 }
 

@@ -19,11 +19,11 @@ mod rough;
 mod samplers;
 mod scene;
 
-pub use cabi::c_abi;
+pub use cabi::{MOST_KINDS, c_abi};
 pub use maps::collision_maps;
 pub use rough::rough_maps;
 pub use samplers::samplers;
-pub use scene::{scene_reader, scene_structured};
+pub use scene::{KEYS, WORDS, scene_reader, scene_structured};
 
 use arbitrary::Unstructured;
 

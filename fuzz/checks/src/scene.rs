@@ -35,7 +35,7 @@ fn check(text: &str, overrides: &[String]) {
 }
 
 /// Every table and key of the schema with the kinds of values it takes.
-const KEYS: &[(&str, &[&str])] = &[
+pub const KEYS: &[(&str, &[&str])] = &[
     ("particles", &["n"]),
     (
         "particles.initial",
@@ -85,7 +85,7 @@ const KEYS: &[(&str, &[&str])] = &[
 ];
 
 /// The words the schema's string keys take, and some it does not.
-const WORDS: &[&str] = &[
+pub const WORDS: &[&str] = &[
     "maxwell",
     "hard-spheres",
     "vhs",

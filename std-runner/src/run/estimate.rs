@@ -137,9 +137,14 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         };
         (r.noise, r.temperature, loss)
     });
+    // Every match on the drive below names every drive (no catch-all): a new drive does not
+    // compile until its bound is written here.
     let beta = match p.drive {
         DriveChoice::WhiteNoise(beta) => beta,
-        _ => 0.0,
+        DriveChoice::None
+        | DriveChoice::Gaussian(_)
+        | DriveChoice::ConstantForce(_)
+        | DriveChoice::HostMedium { .. } => 0.0,
     };
     let heated = matches!(p.drive, DriveChoice::WhiteNoise(_)) || noise_rot > 0.0;
     let temperature = match p.drive {
@@ -173,7 +178,9 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
             let bound = (t0.sqrt() + g * t_end / 3f64.sqrt()).powi(2);
             t0.max(stationary.min(bound))
         }
-        _ => t0,
+        // Not heated, or the Gaussian thermostat, whose heating the effective time below
+        // takes in (the logistic law): the start's temperature.
+        DriveChoice::WhiteNoise(_) | DriveChoice::None | DriveChoice::Gaussian(_) => t0,
     };
     // A rough gas's rotation can hand its energy to the translation.
     let temperature = if p.rotation.is_some() {
@@ -196,7 +203,10 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
             (s * zeta0 * t_end).ln_1p() / (s * zeta0)
         }
         DriveChoice::Gaussian(zeta) => logistic_integral(2.0 * s * zeta, s * zeta0, t_end),
-        _ => t_end,
+        DriveChoice::None
+        | DriveChoice::WhiteNoise(_)
+        | DriveChoice::ConstantForce(_)
+        | DriveChoice::HostMedium { .. } => t_end,
     };
     // A host medium's grains at a typical speed `sqrt(3 T)`.
     let background = model.background_rate((3.0 * temperature).sqrt()) * n * t_end * m;
