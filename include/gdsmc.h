@@ -29,14 +29,20 @@
 #include <stddef.h>
 #include <stdint.h>
 
-// Maxwell pseudo-molecules, `B = gamma C` (GRW, `lambda = 0`).
+// Maxwell pseudo-molecules, `B = gamma C` (GRW (2), `lambda = 0`).
 #define GDSMC_KERNEL_MAXWELL 0
 
-// Hard spheres, `B = gamma C |u|` (GRW (4)).
+// Hard spheres, `B = gamma C |u|` (hard disks in `d = 2`; GRW (4)).
 #define GDSMC_KERNEL_HARD_SPHERES 1
 
 // Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)).
 #define GDSMC_KERNEL_VHS 2
+
+// A constant restitution coefficient alpha (`restitution`).
+#define GDSMC_RESTITUTION_CONSTANT 0
+
+// The impact-speed law BRS (9)-(10), `1 - e = 2 beta0 |g . n|^delta`.
+#define GDSMC_RESTITUTION_IMPACT_SPEED 1
 
 // No drive: the freely cooling gas.
 #define GDSMC_DRIVE_NONE 0
@@ -44,22 +50,19 @@
 // White-noise heating of strength `beta` (GRW (1), (18)).
 #define GDSMC_DRIVE_WHITE_NOISE 1
 
-// Elastic collisions with a Maxwellian host medium (BRS), the `background_*` fields.
+// Elastic collisions with a Maxwellian host medium (BRS Section 2; the background's kernel, `C_1`, density, mass, temperature and drift).
 #define GDSMC_DRIVE_HOST_MEDIUM 2
 
-// The Gaussian thermostat `F = m zeta v` (MS (12)), field `zeta`.
+// The Gaussian thermostat `F = m zeta (v - V)` (MS (12)). Its parameters in `drive_params`: GDSMC_GAUSSIAN_ZETA.
 #define GDSMC_DRIVE_GAUSSIAN 3
 
-// The constant force along the velocity `F = m g v/|v|` (MS (14)), field `g`.
+// The constant force along the peculiar velocity, `F = m g c/|c|` (MS (14)). Its parameters in `drive_params`: GDSMC_CONSTANT_FORCE_G.
 #define GDSMC_DRIVE_CONSTANT_FORCE 4
 
-// Host-medium kernel `B_1 = C_1` (BRS (11)).
-#define GDSMC_BACKGROUND_MAXWELL 0
+// The Langevin thermostat: the drag `-gamma v` and white noise at a bath temperature. Its parameters in `drive_params`: GDSMC_LANGEVIN_FRICTION, GDSMC_LANGEVIN_TEMPERATURE.
+#define GDSMC_DRIVE_LANGEVIN 5
 
-// Host-medium kernel `B_1 = C_1 |g|` (BRS (19)).
-#define GDSMC_BACKGROUND_HARD_SPHERES 1
-
-// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
+// The exact no-splitting scheme (GRW Section 3).
 #define GDSMC_SCHEME_NO_SPLITTING 0
 
 // Euler splitting with time step `dt` (RW Algorithm 1).
@@ -68,16 +71,30 @@
 // Strang splitting with time step `dt` (RW Algorithm 2).
 #define GDSMC_SCHEME_STRANG 2
 
-// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS
-// kernels) with step `step_factor` mean free paths over the thermal speed.
+// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS kernels), step `step_factor` mean free paths over the thermal speed.
 #define GDSMC_SCHEME_TIME_STEPPED 3
 
-// A constant restitution coefficient, field `restitution`.
-#define GDSMC_RESTITUTION_CONSTANT 0
+// Most parameters a drive declared by its type has: the length of
+// `gdsmc_config.drive_params`.
+#define GDSMC_MAX_DRIVE_PARAMS 4
 
-// The impact-speed law BRS (9)-(10), `1 - e = 2 beta0 |g . n|^delta`, fields `impact_beta0`
-// and `impact_delta`.
-#define GDSMC_RESTITUTION_IMPACT_SPEED 1
+// `drive_params[0]` of GDSMC_DRIVE_GAUSSIAN: the rate zeta of the force F = m zeta (v - V) (MS (12); < 0 cools) (1/time, a finite number).
+#define GDSMC_GAUSSIAN_ZETA 0
+
+// `drive_params[0]` of GDSMC_DRIVE_CONSTANT_FORCE: the force per unit mass g along the peculiar velocity (MS (14)) (speed/time, a finite number >= 0).
+#define GDSMC_CONSTANT_FORCE_G 0
+
+// `drive_params[0]` of GDSMC_DRIVE_LANGEVIN: the friction rate gamma of the drag -gamma v (1/time, a finite number > 0).
+#define GDSMC_LANGEVIN_FRICTION 0
+
+// `drive_params[1]` of GDSMC_DRIVE_LANGEVIN: the bath temperature T_b the noise brings every grain to (0: drag alone) (temperature, a finite number >= 0).
+#define GDSMC_LANGEVIN_TEMPERATURE 1
+
+// Host-medium kernel `B_1 = C_1` (BRS (11)).
+#define GDSMC_BACKGROUND_MAXWELL 0
+
+// Host-medium kernel `B_1 = C_1 |g|` (BRS (19)).
+#define GDSMC_BACKGROUND_HARD_SPHERES 1
 
 // Most species a mixture may have (the core's `mixture::MAX_SPECIES`, written out for the
 // header).
@@ -233,10 +250,10 @@ typedef struct {
     double impact_delta;
     // White-noise strength beta >= 0 (used with GDSMC_DRIVE_WHITE_NOISE only).
     double beta;
-    // Gaussian thermostat rate zeta (GDSMC_DRIVE_GAUSSIAN only), finite.
-    double zeta;
-    // Constant force per unit mass g >= 0 (GDSMC_DRIVE_CONSTANT_FORCE only).
-    double g;
+    // The parameters of a drive declared by its type, in its order (GDSMC_DRIVE_GAUSSIAN,
+    // GDSMC_DRIVE_CONSTANT_FORCE, GDSMC_DRIVE_LANGEVIN, ...: `GDSMC_<DRIVE>_<PARAMETER>` is
+    // each one's place, e.g. `drive_params[GDSMC_LANGEVIN_FRICTION]`); the rest unused.
+    double drive_params[GDSMC_MAX_DRIVE_PARAMS];
     // Mass of the initial Maxwellian, > 0.
     double mass;
     // Temperature of the initial Maxwellian, >= 0.

@@ -45,6 +45,12 @@ pub fn exp_m1(x: Real) -> Real {
     libm::expm1(x)
 }
 
+/// `ln(1 + x)`, accurate for small `x`.
+#[inline(always)]
+pub fn ln_1p(x: Real) -> Real {
+    libm::log1p(x)
+}
+
 /// `x` to the power `y`.
 #[inline(always)]
 pub fn powf(x: Real, y: Real) -> Real {

@@ -118,7 +118,12 @@ fn disks_under_the_constant_force_stay_in_the_plane_keep_their_momentum_and_heat
         (SchemeChoice::TimeStepped(0.01), false),
         (SchemeChoice::Euler(0.05), true),
     ] {
-        let mut ph = disks(n, HARD, 1.0, DriveChoice::ConstantForce(0.5));
+        let mut ph = disks(
+            n,
+            HARD,
+            1.0,
+            DriveChoice::declared(gdsmc_core::physics::DriveKind::ConstantForce, &[0.5]).unwrap(),
+        );
         ph.scheme = scheme;
         ph.initial[0].drift = [1.0, -2.0, 0.0];
         if rough {

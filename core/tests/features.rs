@@ -174,7 +174,10 @@ fn each_kernel_drive_law_and_scheme_starts_exactly_when_built() {
     };
     let drives = [
         ("white-noise", DriveChoice::WhiteNoise(1.0)),
-        ("gaussian-thermostat", DriveChoice::Gaussian(1.0)),
+        (
+            "gaussian-thermostat",
+            DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[1.0]).unwrap(),
+        ),
         ("host-medium", host),
     ];
     for (name, d) in drives {
@@ -186,7 +189,8 @@ fn each_kernel_drive_law_and_scheme_starts_exactly_when_built() {
     }
     // The constant force needs a splitting or time-stepped scheme (MS (62)).
     let force = Physics {
-        drive: DriveChoice::ConstantForce(1.0),
+        drive: DriveChoice::declared(gdsmc_core::physics::DriveKind::ConstantForce, &[1.0])
+            .unwrap(),
         scheme: SchemeChoice::Euler(0.1),
         ..base(mx)
     };

@@ -49,7 +49,14 @@ fn a_mixture_under_the_impact_speed_law_of_delta_0_is_the_constant_law_to_the_la
         (HARD, (Three, hot, exact)),
         (MAXWELL, (Three, hot, exact)),
         (HARD, (Two, none, exact)),
-        (MAXWELL, (Two, DriveChoice::Gaussian(0.2), exact)),
+        (
+            MAXWELL,
+            (
+                Two,
+                DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.2]).unwrap(),
+                exact,
+            ),
+        ),
         (HARD, (Three, hot, euler)),
     ] {
         let constant = mixture(kernel, RestitutionLaw::Constant(1.0 - 2.0 * beta0), how);

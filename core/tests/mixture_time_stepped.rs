@@ -138,7 +138,8 @@ fn the_constant_force_keeps_a_mixtures_momentum() {
                     c: 0.25 / PI,
                 },
                 RestitutionLaw::Constant(0.8),
-                DriveChoice::ConstantForce(1.0),
+                DriveChoice::declared(gdsmc_core::physics::DriveKind::ConstantForce, &[1.0])
+                    .unwrap(),
                 scheme,
             );
             ph.species.extend([

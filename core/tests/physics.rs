@@ -127,22 +127,28 @@ fn every_rule_names_its_parameter() {
         ),
         (
             Physics {
-                drive: DriveChoice::Gaussian(f64::NAN),
+                drive: DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[f64::NAN])
+                    .unwrap(),
                 ..grw3()
             },
-            Param::Zeta,
+            Param::Drive(gdsmc_core::physics::DriveKind::Gaussian, 0),
         ),
         (
             Physics {
-                drive: DriveChoice::ConstantForce(-2.0),
+                drive: DriveChoice::declared(
+                    gdsmc_core::physics::DriveKind::ConstantForce,
+                    &[-2.0],
+                )
+                .unwrap(),
                 scheme: SchemeChoice::Euler(0.1),
                 ..grw3()
             },
-            Param::G,
+            Param::Drive(gdsmc_core::physics::DriveKind::ConstantForce, 0),
         ),
         (
             Physics {
-                drive: DriveChoice::ConstantForce(1.0),
+                drive: DriveChoice::declared(gdsmc_core::physics::DriveKind::ConstantForce, &[1.0])
+                    .unwrap(),
                 ..grw3()
             },
             Param::Scheme,
@@ -316,7 +322,7 @@ fn dispatch_builds_the_hand_composed_loop() {
     );
     let ms = Physics {
         kernel: KernelChoice::HardSpheres { gamma: 1.0, c: 0.1 },
-        drive: DriveChoice::Gaussian(0.25),
+        drive: DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.25]).unwrap(),
         scheme: SchemeChoice::TimeStepped(0.05),
         ..p.clone()
     };

@@ -196,7 +196,7 @@ fn rough_refusals_name_their_parameter() {
                     noise: 0.5,
                     ..RotationChoice::spheres(0.0)
                 },
-                DriveChoice::Gaussian(1.0),
+                DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[1.0]).unwrap(),
             ),
             "rotation_noise takes only no drive or white noise on translation beside it (the \
              thermostats and the host medium are not combined with rotational noise)",
@@ -208,7 +208,7 @@ fn rough_refusals_name_their_parameter() {
             4,
             0.9,
             RotationChoice::spheres(0.0),
-            DriveChoice::Gaussian(1.0)
+            DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[1.0]).unwrap()
         )
         .validate()
         .is_ok()

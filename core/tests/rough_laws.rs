@@ -166,13 +166,29 @@ fn rough_particles_under_the_law_of_delta_0_follow_the_constant_law_to_the_last_
         (&[][..], HARD, (Three, none, exact)),
         (&[][..], MAXWELL, (Three, hot, exact)),
         (&[][..], HARD, (Two, hot, strang)),
-        (&[][..], HARD, (Three, DriveChoice::Gaussian(0.2), strang)),
+        (
+            &[][..],
+            HARD,
+            (
+                Three,
+                DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.2]).unwrap(),
+                strang,
+            ),
+        ),
         (&[][..], HARD, (Three, hot, SchemeChoice::TimeStepped(0.05))),
         (&[][..], HARD, (Two, none, SchemeChoice::TimeStepped(0.05))),
         (mix, HARD, (Three, none, exact)),
         (mix, MAXWELL, (Three, hot, exact)),
         (mix, HARD, (Two, hot, exact)),
-        (mix, HARD, (Three, DriveChoice::Gaussian(0.2), strang)),
+        (
+            mix,
+            HARD,
+            (
+                Three,
+                DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.2]).unwrap(),
+                strang,
+            ),
+        ),
     ] {
         let constant = rough(
             species,
@@ -245,7 +261,11 @@ fn rough_particles_with_beta_minus_one_under_the_law_are_smooth_to_the_last_bit(
         (
             mix,
             HARD,
-            (Two, DriveChoice::Gaussian(0.2), SchemeChoice::Strang(0.5)),
+            (
+                Two,
+                DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.2]).unwrap(),
+                SchemeChoice::Strang(0.5),
+            ),
         ),
     ] {
         let mut r = rough(species, kernel, law, how, -1.0);

@@ -455,7 +455,8 @@ fn a_rough_mixture_with_beta_minus_one_is_the_smooth_mixture_bit_for_bit() {
     rough_at_beta_minus_one_is_smooth(&mix[..1], hard, Two, none, &times);
     rough_at_beta_minus_one_is_smooth(&mix[..1], hard, Three, hot, &times);
     // The Gaussian thermostat on translation, a mixture and one species, spheres and disks.
-    let thermostat = DriveChoice::Gaussian(0.3);
+    let thermostat =
+        DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.3]).unwrap();
     rough_at_beta_minus_one_is_smooth(&mix, hard, Three, thermostat, &times);
     rough_at_beta_minus_one_is_smooth(&mix, hard, Two, thermostat, &times);
     rough_at_beta_minus_one_is_smooth(&mix, maxwell, Three, thermostat, &times);

@@ -1,46 +1,13 @@
 //! Configuration: a plain C struct with a defaults function, or a scene given as TOML text.
 
+use crate::codes::*;
 use crate::guard::{check_ptr, guard};
 use crate::status::gdsmc_status;
-
-/// Maxwell pseudo-molecules, `B = gamma C` (GRW, `lambda = 0`).
-pub const GDSMC_KERNEL_MAXWELL: u32 = 0;
-/// Hard spheres, `B = gamma C |u|` (GRW (4)).
-pub const GDSMC_KERNEL_HARD_SPHERES: u32 = 1;
-/// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)).
-pub const GDSMC_KERNEL_VHS: u32 = 2;
-
-/// No drive: the freely cooling gas.
-pub const GDSMC_DRIVE_NONE: u32 = 0;
-/// White-noise heating of strength `beta` (GRW (1), (18)).
-pub const GDSMC_DRIVE_WHITE_NOISE: u32 = 1;
-/// Elastic collisions with a Maxwellian host medium (BRS), the `background_*` fields.
-pub const GDSMC_DRIVE_HOST_MEDIUM: u32 = 2;
-/// The Gaussian thermostat `F = m zeta v` (MS (12)), field `zeta`.
-pub const GDSMC_DRIVE_GAUSSIAN: u32 = 3;
-/// The constant force along the velocity `F = m g v/|v|` (MS (14)), field `g`.
-pub const GDSMC_DRIVE_CONSTANT_FORCE: u32 = 4;
 
 /// Host-medium kernel `B_1 = C_1` (BRS (11)).
 pub const GDSMC_BACKGROUND_MAXWELL: u32 = 0;
 /// Host-medium kernel `B_1 = C_1 |g|` (BRS (19)).
 pub const GDSMC_BACKGROUND_HARD_SPHERES: u32 = 1;
-
-/// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
-pub const GDSMC_SCHEME_NO_SPLITTING: u32 = 0;
-/// Euler splitting with time step `dt` (RW Algorithm 1).
-pub const GDSMC_SCHEME_EULER: u32 = 1;
-/// Strang splitting with time step `dt` (RW Algorithm 2).
-pub const GDSMC_SCHEME_STRANG: u32 = 2;
-/// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS
-/// kernels) with step `step_factor` mean free paths over the thermal speed.
-pub const GDSMC_SCHEME_TIME_STEPPED: u32 = 3;
-
-/// A constant restitution coefficient, field `restitution`.
-pub const GDSMC_RESTITUTION_CONSTANT: u32 = 0;
-/// The impact-speed law BRS (9)-(10), `1 - e = 2 beta0 |g . n|^delta`, fields `impact_beta0`
-/// and `impact_delta`.
-pub const GDSMC_RESTITUTION_IMPACT_SPEED: u32 = 1;
 
 /// Everything a simulation needs. Fill it with gdsmc_config_default (GRW Example 3) or
 /// gdsmc_config_from_toml, then change fields. Enumerations are plain integers
@@ -79,10 +46,10 @@ pub struct gdsmc_config {
     pub impact_delta: f64,
     /// White-noise strength beta >= 0 (used with GDSMC_DRIVE_WHITE_NOISE only).
     pub beta: f64,
-    /// Gaussian thermostat rate zeta (GDSMC_DRIVE_GAUSSIAN only), finite.
-    pub zeta: f64,
-    /// Constant force per unit mass g >= 0 (GDSMC_DRIVE_CONSTANT_FORCE only).
-    pub g: f64,
+    /// The parameters of a drive declared by its type, in its order (GDSMC_DRIVE_GAUSSIAN,
+    /// GDSMC_DRIVE_CONSTANT_FORCE, GDSMC_DRIVE_LANGEVIN, ...: `GDSMC_<DRIVE>_<PARAMETER>` is
+    /// each one's place, e.g. `drive_params[GDSMC_LANGEVIN_FRICTION]`); the rest unused.
+    pub drive_params: [f64; GDSMC_MAX_DRIVE_PARAMS],
     /// Mass of the initial Maxwellian, > 0.
     pub mass: f64,
     /// Temperature of the initial Maxwellian, >= 0.
@@ -206,8 +173,7 @@ impl gdsmc_config {
             impact_beta0: 0.0,
             impact_delta: 0.0,
             beta: 1.0,
-            zeta: 0.0,
-            g: 0.0,
+            drive_params: [0.0; GDSMC_MAX_DRIVE_PARAMS],
             mass: 1.0,
             temperature: 1.0,
             drift: [0.0; 3],

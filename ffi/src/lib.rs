@@ -25,6 +25,7 @@
 #![allow(clippy::result_large_err)]
 
 mod access;
+mod codes;
 mod config;
 mod guard;
 #[cfg(feature = "fault-injection")]
@@ -39,6 +40,7 @@ mod status;
 mod toml;
 
 pub use access::*;
+pub use codes::*;
 pub use config::*;
 #[cfg(feature = "std")]
 pub use heap::*;

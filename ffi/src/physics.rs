@@ -11,25 +11,8 @@ use gdsmc_core::physics::{
     SchemeKind, SpeciesChoice,
 };
 
-// The C header's codes are the core's kinds' (`gdsmc_core::physics::DriveKind::c_code` and
-// its siblings), checked here at compile time; ffi/tests/kinds.rs checks that every kind has its
-// constant in include/gdsmc.h.
-const _: () = {
-    assert!(GDSMC_KERNEL_MAXWELL == KernelKind::Maxwell.c_code());
-    assert!(GDSMC_KERNEL_HARD_SPHERES == KernelKind::HardSpheres.c_code());
-    assert!(GDSMC_KERNEL_VHS == KernelKind::Vhs.c_code());
-    assert!(GDSMC_RESTITUTION_CONSTANT == LawKind::Constant.c_code());
-    assert!(GDSMC_RESTITUTION_IMPACT_SPEED == LawKind::ImpactSpeed.c_code());
-    assert!(GDSMC_DRIVE_NONE == DriveKind::None.c_code());
-    assert!(GDSMC_DRIVE_WHITE_NOISE == DriveKind::WhiteNoise.c_code());
-    assert!(GDSMC_DRIVE_HOST_MEDIUM == DriveKind::HostMedium.c_code());
-    assert!(GDSMC_DRIVE_GAUSSIAN == DriveKind::Gaussian.c_code());
-    assert!(GDSMC_DRIVE_CONSTANT_FORCE == DriveKind::ConstantForce.c_code());
-    assert!(GDSMC_SCHEME_NO_SPLITTING == SchemeKind::NoSplitting.c_code());
-    assert!(GDSMC_SCHEME_EULER == SchemeKind::Euler.c_code());
-    assert!(GDSMC_SCHEME_STRANG == SchemeKind::Strang.c_code());
-    assert!(GDSMC_SCHEME_TIME_STEPPED == SchemeKind::TimeStepped.c_code());
-};
+// The C header's codes are generated from the core's kinds (`src/codes.rs`, checked by
+// ffi/tests/kinds.rs, which also checks that every kind has its constant in include/gdsmc.h).
 
 fn invalid<T>(m: Msg) -> Result<T, Failure> {
     fail(gdsmc_status::GDSMC_INVALID_ARGUMENT, m)
@@ -67,8 +50,7 @@ fn field(p: Param) -> &'static str {
         Param::Beta0 => "impact_beta0",
         Param::Delta => "impact_delta",
         Param::Beta => "beta",
-        Param::Zeta => "zeta",
-        Param::G => "g",
+        Param::Drive(..) => "drive_params",
         Param::BackgroundC => "background_c",
         Param::BackgroundDensity => "background_density",
         Param::BackgroundMass => "background_mass",
@@ -108,6 +90,7 @@ fn index(p: Param, species: usize) -> Option<usize> {
         | Param::SpeciesInertia(k)
         | Param::SpeciesRotationTemperature(k)
         | Param::SpeciesRotationNoise(k) => Some(k),
+        Param::Drive(_, i) => Some(i),
         Param::PairRestitution(s, t) | Param::PairTangentialRestitution(s, t) => {
             Some(gdsmc_core::mixture::pair_index(species, s, t))
         }
@@ -165,8 +148,6 @@ impl gdsmc_config {
         let drive = match drive_kind {
             DriveKind::None => DriveChoice::None,
             DriveKind::WhiteNoise => DriveChoice::WhiteNoise(self.beta),
-            DriveKind::Gaussian => DriveChoice::Gaussian(self.zeta),
-            DriveKind::ConstantForce => DriveChoice::ConstantForce(self.g),
             DriveKind::HostMedium => DriveChoice::HostMedium {
                 kernel: match self.background_kernel {
                     GDSMC_BACKGROUND_MAXWELL => BackgroundKernel::Maxwell,
@@ -182,6 +163,16 @@ impl gdsmc_config {
                 mass: self.background_mass,
                 temperature: self.background_temperature,
                 drift: self.background_drift,
+            },
+            // A drive declared by its type: its parameters from `drive_params` in its order.
+            declared => match DriveChoice::declared(declared, &self.drive_params) {
+                Some(d) => d,
+                None => {
+                    return invalid(msg!(
+                        "config.drive = {} has no parameters in drive_params",
+                        self.drive
+                    ));
+                }
             },
         };
         let scheme = match scheme_kind {
@@ -362,8 +353,9 @@ impl gdsmc_config {
         match p.drive {
             DriveChoice::None => {}
             DriveChoice::WhiteNoise(b) => cfg.beta = b,
-            DriveChoice::Gaussian(z) => cfg.zeta = z,
-            DriveChoice::ConstantForce(g) => cfg.g = g,
+            DriveChoice::Declared(d) => {
+                cfg.drive_params[..d.values().len()].copy_from_slice(d.values());
+            }
             DriveChoice::HostMedium {
                 kernel,
                 c1,

@@ -1,6 +1,7 @@
 //! The scene file as written: one serde struct per TOML table, unknown keys refused, values
 //! kept with their byte spans so that errors can name the line.
 
+use gdsmc_core::physics::DriveKind;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -315,23 +316,6 @@ fn default_c() -> Spanned<f64> {
     Spanned::new(0..0, 1.0 / (4.0 * std::f64::consts::PI))
 }
 
-/// `drive.kind`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum DriveKind {
-    /// No drive: the freely cooling gas.
-    #[default]
-    None,
-    /// White-noise heating of strength `beta` (GRW (1), (18)).
-    WhiteNoise,
-    /// Elastic collisions with a Maxwellian host medium (BRS).
-    HostMedium,
-    /// The Gaussian thermostat `F = m zeta v` (MS (12)); key `zeta`.
-    Gaussian,
-    /// The constant-magnitude force along `v`, `F = m g v_hat` (MS (14)); key `g`.
-    ConstantForce,
-}
-
 /// `drive.kernel` of a host medium.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -342,40 +326,67 @@ pub enum BackgroundKind {
     HardSpheres,
 }
 
-/// `[drive]`.
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
+/// `[drive]`: its `kind` and the keys that kind reads. Which keys a kind has is known to
+/// `validate/drive.rs` (a declared drive's from its declaration in the core,
+/// [`gdsmc_core::drive::Declared`]); here every key is read by its type: `kernel` a background
+/// kernel, `drift` a velocity, every other key a number.
+#[derive(Debug, Clone, Default)]
 pub struct DriveSpec {
-    /// Which drive. Default `"none"`.
-    #[serde(default)]
-    pub kind: DriveKind,
-    /// White-noise strength beta >= 0 (required for `"white-noise"`).
-    #[serde(default)]
-    pub beta: Option<Spanned<f64>>,
-    /// Gaussian thermostat rate zeta (required for `"gaussian"`).
-    #[serde(default)]
-    pub zeta: Option<Spanned<f64>>,
-    /// Constant force per unit mass g >= 0 (required for `"constant-force"`).
-    #[serde(default)]
-    pub g: Option<Spanned<f64>>,
+    /// Which drive (default: none), and where the file says so.
+    pub kind: Option<Spanned<DriveKind>>,
     /// Host medium: background kernel (required for `"host-medium"`).
-    #[serde(default)]
     pub kernel: Option<BackgroundKind>,
-    /// Host medium: kernel constant C_1 > 0. Default 1.
-    #[serde(default)]
-    pub c: Option<Spanned<f64>>,
-    /// Host medium: number density rho^B > 0. Default 1.
-    #[serde(default)]
-    pub density: Option<Spanned<f64>>,
-    /// Host medium: background particle mass m^B > 0. Default 1.
-    #[serde(default)]
-    pub mass: Option<Spanned<f64>>,
-    /// Host medium: background temperature T^B >= 0. Default 1.
-    #[serde(default)]
-    pub temperature: Option<Spanned<f64>>,
     /// Host medium: background drift u^B. Default 0.
-    #[serde(default)]
     pub drift: Option<Spanned<Vector3>>,
+    /// Every numeric key (`beta`, the host medium's `c`, `density`, `mass`, `temperature`, a
+    /// declared drive's parameters), by name.
+    pub numbers: std::collections::BTreeMap<String, Spanned<f64>>,
+}
+
+impl DriveSpec {
+    /// Which drive (default: none).
+    pub fn kind(&self) -> DriveKind {
+        self.kind.as_ref().map_or(DriveKind::None, |k| *k.get_ref())
+    }
+}
+
+impl<'de> Deserialize<'de> for DriveSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde::de::Error;
+        let keys = std::collections::BTreeMap::<String, Spanned<toml::Value>>::deserialize(d)?;
+        let mut spec = DriveSpec::default();
+        for (key, value) in keys {
+            let span = value.span();
+            let value = value.into_inner();
+            match key.as_str() {
+                "kind" => {
+                    let word = String::deserialize(value).map_err(D::Error::custom)?;
+                    let kind = DriveKind::from_scene_name(&word).ok_or_else(|| {
+                        let words: Vec<_> = DriveKind::ALL.iter().map(|k| k.scene_name()).collect();
+                        D::Error::custom(format!(
+                            "unknown drive kind `{word}`, expected one of `{}`",
+                            words.join("`, `")
+                        ))
+                    })?;
+                    spec.kind = Some(Spanned::new(span, kind));
+                }
+                "kernel" => {
+                    spec.kernel =
+                        Some(BackgroundKind::deserialize(value).map_err(D::Error::custom)?)
+                }
+                "drift" => {
+                    let v = Vector3::deserialize(value).map_err(D::Error::custom)?;
+                    spec.drift = Some(Spanned::new(span, v));
+                }
+                _ => {
+                    let x = f64::deserialize(value)
+                        .map_err(|e| D::Error::custom(format!("drive.{key}: {e}")))?;
+                    spec.numbers.insert(key, Spanned::new(span, x));
+                }
+            }
+        }
+        Ok(spec)
+    }
 }
 
 /// `scheme.kind`.

@@ -55,12 +55,21 @@ fn every_restitution_law_is_read() {
 #[test]
 fn every_drive_is_read() {
     for &k in DriveKind::ALL {
-        let (keys, scheme) = match k {
-            DriveKind::None => ("", EXACT),
-            DriveKind::WhiteNoise => ("beta = 1.0", EXACT),
-            DriveKind::HostMedium => ("kernel = \"maxwell\"", EXACT),
-            DriveKind::Gaussian => ("zeta = 0.5", EXACT),
-            DriveKind::ConstantForce => ("g = 0.5", "kind = \"time-stepped\"\nstep_factor = 0.01"),
+        // A declared drive's keys and example values from its declaration.
+        let keys = match k {
+            DriveKind::None => String::new(),
+            DriveKind::WhiteNoise => "beta = 1.0".to_string(),
+            DriveKind::HostMedium => "kernel = \"maxwell\"".to_string(),
+            declared => declared
+                .params()
+                .expect("a declared drive")
+                .iter()
+                .map(|p| format!("{} = {:?}\n", p.name, p.example))
+                .collect(),
+        };
+        let scheme = match k.stepped_only() {
+            Some(_) => "kind = \"time-stepped\"\nstep_factor = 0.01",
+            None => EXACT,
         };
         let d = format!("kind = \"{}\"\n{keys}", k.scene_name());
         assert_eq!(read(&scene(MAXWELL, &d, scheme)).drive.kind(), k);

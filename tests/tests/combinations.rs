@@ -13,8 +13,9 @@
 use gdsmc_core::engine::EventLoop;
 use gdsmc_core::particles::{Particle, Particles, Spin};
 use gdsmc_core::physics::{
-    BackgroundKernel, DimensionChoice, DriveChoice, DriveKind, KernelChoice, KernelKind, LawKind,
-    Physics, RestitutionLaw, RotationChoice, SchemeChoice, SchemeKind, SpeciesChoice,
+    BackgroundKernel, DimensionChoice, DriveChoice, DriveKind, DriveParams, KernelChoice,
+    KernelKind, LawKind, Physics, RestitutionLaw, RotationChoice, SchemeChoice, SchemeKind,
+    SpeciesChoice,
 };
 use gdsmc_core::rng::stream;
 use std::collections::BTreeMap;
@@ -49,12 +50,20 @@ const LAWS: [(&str, RestitutionLaw); 2] = [
     ),
 ];
 
-const DRIVES: [(&str, DriveChoice); 5] = [
-    ("none", DriveChoice::None),
-    ("white noise", DriveChoice::WhiteNoise(0.5)),
-    ("Gaussian thermostat", DriveChoice::Gaussian(0.5)),
-    ("constant force", DriveChoice::ConstantForce(0.5)),
-    (
+/// The drives of the matrix: the cooling gas, white noise, every drive declared by its type
+/// with its parameters' example values (from its declaration in the core, named by its title),
+/// the host medium last.
+fn drives() -> Vec<(&'static str, DriveChoice)> {
+    let mut drives = vec![
+        ("none", DriveChoice::None),
+        ("white noise", DriveChoice::WhiteNoise(0.5)),
+    ];
+    for &k in DriveKind::ALL {
+        if let (Some(title), Some(d)) = (k.title(), DriveParams::example(k)) {
+            drives.push((title, DriveChoice::Declared(d)));
+        }
+    }
+    drives.push((
         "host medium",
         DriveChoice::HostMedium {
             kernel: BackgroundKernel::HardSpheres,
@@ -64,8 +73,9 @@ const DRIVES: [(&str, DriveChoice); 5] = [
             temperature: 1.0,
             drift: [0.0; 3],
         },
-    ),
-];
+    ));
+    drives
+}
 
 const SCHEMES: [(&str, SchemeChoice); 4] = [
     ("no-splitting", SchemeChoice::NoSplitting),
@@ -81,7 +91,7 @@ const SCHEMES: [(&str, SchemeChoice); 4] = [
 fn the_matrix_holds_every_kind() {
     assert_eq!(KERNELS.map(|k| k.1.kind()), KernelKind::ALL);
     assert_eq!(LAWS.map(|l| l.1.kind()), LawKind::ALL);
-    assert_eq!(DRIVES.map(|d| d.1.kind()).as_slice(), {
+    assert_eq!(drives().iter().map(|d| d.1.kind()).collect::<Vec<_>>(), {
         // The table's order: the cooling gas, then the heating drives, the host medium last.
         let mut k = DriveKind::ALL.to_vec();
         k.sort_by_key(|k| matches!(k, DriveKind::HostMedium));
@@ -198,7 +208,7 @@ fn generate() -> String {
                 let head: Vec<&str> = SCHEMES.iter().map(|s| s.0).collect();
                 writeln!(body, "| drive | law | {} |", head.join(" | ")).unwrap();
                 writeln!(body, "|---|---|{}", "---|".repeat(SCHEMES.len())).unwrap();
-                for (dname, drive) in DRIVES {
+                for (dname, drive) in drives() {
                     for (lname, law) in LAWS {
                         let mut cells = Vec::new();
                         for (sname, scheme) in SCHEMES {
@@ -317,7 +327,8 @@ fn every_reference_of_every_combination_is_a_number() {
         })
     });
     for b in blocks {
-        let cells = DRIVES.iter().flat_map(|d| {
+        let drives = drives();
+        let cells = drives.iter().flat_map(|d| {
             LAWS.iter().flat_map(move |l| {
                 SCHEMES
                     .iter()

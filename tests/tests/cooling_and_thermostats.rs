@@ -44,8 +44,12 @@ fn gaussian_thermostat_with_maxwell_kernel_is_exact() {
         .enumerate()
     {
         let mut s = shipped("rw-transient", n, 20_000, 910 + k as u64);
-        s.with_physics(|ph| ph.drive = DriveChoice::Gaussian(0.75 / 4.0))
-            .expect("a valid physics");
+        s.with_physics(|ph| {
+            ph.drive =
+                DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.75 / 4.0])
+                    .unwrap()
+        })
+        .expect("a valid physics");
         s.set_times((0..=8).map(f64::from).collect())
             .expect("valid observation times");
         s.with_physics(|ph| ph.scheme = scheme)

@@ -83,9 +83,9 @@ fn maxwell_gases_under_the_gaussian_thermostat_follow_grw_13_scaled_at_finite_n(
         // The check has the power to refuse the raw term that grew with the thermostat, and a
         // thermostat counted once (`e^{zeta t}`) in T_bulk.
         let grown =
-            |t: f64| mt.finite_n_bulk_mean(n, t) + mt.t0 * (2.0 * mt.zeta * t).exp() / n as f64;
+            |t: f64| mt.finite_n_bulk_mean(n, t) + mt.t0 * (mt.heating.b * t).exp() / n as f64;
         assert!(times_outside(&st, name::T, f, grown) >= st.times.len() - 3);
-        let once = mt.with_gaussian(0.5 * mt.zeta);
+        let once = mt.with_gaussian(0.25 * mt.heating.b);
         let once = |t: f64| once.finite_n_bulk_mean(n, t);
         assert!(times_outside(&st, name::T_BULK, f, once) >= st.times.len() - 3);
     }

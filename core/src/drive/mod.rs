@@ -4,12 +4,16 @@
 //! needed (GRW Section 3 steps 2.5-2.6, RW Algorithm 3), and in one batch to every particle at
 //! an observation time (GRW step 3.1). The event loop is generic over [`Drive`].
 
+pub mod declared;
 pub mod host_medium;
+pub mod langevin;
 pub mod none;
 pub mod thermostat;
 pub mod white_noise;
 
+pub use declared::{Declared, Heating, MAX_DRIVE_PARAMS, ParamSpec, Rule, WorkInput};
 pub use host_medium::{HardSphereBackground, HostMedium, HostMediumParams, MaxwellBackground};
+pub use langevin::Langevin;
 pub use none::NoDrive;
 pub use thermostat::{ConstantForce, GaussianThermostat};
 pub use white_noise::{PlanarWhiteNoise, WhiteNoise, WhiteNoiseIn};

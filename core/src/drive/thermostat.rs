@@ -18,7 +18,9 @@
 //! moving with the bulk has no direction and is left as it is.
 
 use super::Drive;
-use crate::math::{Real, exp};
+use super::declared::{Declared, Heating, ParamSpec, Rule, WorkInput};
+use crate::geometry::Geometry;
+use crate::math::{Real, SQRT_PI, exp, exp_m1, ln, ln_1p, powf, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::rng::Rng;
@@ -33,6 +35,7 @@ pub struct GaussianThermostat {
 
 impl GaussianThermostat {
     /// `None` unless `zeta` is finite (negative values cool).
+    #[must_use]
     pub fn new(zeta: Real) -> Option<Self> {
         zeta.is_finite().then_some(GaussianThermostat {
             zeta,
@@ -65,6 +68,7 @@ pub struct ConstantForce {
 
 impl ConstantForce {
     /// `None` unless `g` is finite and `>= 0`.
+    #[must_use]
     pub fn new(g: Real) -> Option<Self> {
         (g.is_finite() && g >= 0.0).then_some(ConstantForce {
             g,
@@ -145,5 +149,95 @@ impl Drive for ConstantForce {
                 q.t_kick = t;
             }
         }
+    }
+}
+
+impl Declared for GaussianThermostat {
+    const PARAMS: &'static [ParamSpec] = &[ParamSpec {
+        name: "zeta",
+        rule: Rule::Finite,
+        words: "the rate zeta of the force F = m zeta (v - V) (MS (12); < 0 cools)",
+        unit: "1/time",
+        default: None,
+        example: 0.5,
+    }];
+    const TITLE: &'static str = "Gaussian thermostat";
+    type In<G: Geometry> = Self;
+
+    fn from_values(values: &[Real]) -> Result<Self, usize> {
+        Self::new(values[0]).ok_or(0)
+    }
+
+    fn place<G: Geometry>(self, _mass: Real) -> Option<Self> {
+        Some(self)
+    }
+
+    fn heating(&self) -> Option<Heating> {
+        Some(Heating {
+            a: 0.0,
+            b: 2.0 * self.zeta,
+            p: 0.0,
+        })
+    }
+
+    /// The start's temperature, and the time the candidate rate integrates to under the
+    /// logistic law of the thermostat's heating `2 zeta T` against Haff's cooling.
+    fn work(&self, w: WorkInput) -> (Real, Real) {
+        let time = logistic_integral(2.0 * w.s * self.zeta, w.s * w.zeta0, w.t_end);
+        (w.t0, time)
+    }
+}
+
+/// `int_0^t y`, `y(0) = 1`, for the logistic law `y' = r y - c y^2`: with `y = (T/T0)^s` the
+/// candidate rate of a gas under the Gaussian thermostat (`r = 2 s zeta`, `c = s zeta_0`),
+/// relative to its start. Written so that no intermediate overflows where the result does not.
+fn logistic_integral(r: Real, c: Real, t: Real) -> Real {
+    if c == 0.0 {
+        return if r == 0.0 { t } else { exp_m1(r * t) / r };
+    }
+    if r == 0.0 {
+        ln_1p(c * t) / c
+    } else if r > 0.0 {
+        // ln(1 + c (e^{rt} - 1)/r) = r t + ln(e^{-rt} + (c/r)(1 - e^{-rt})).
+        (r * t + ln(exp(-r * t) - (c / r) * exp_m1(-r * t))) / c
+    } else {
+        ln_1p(c * exp_m1(r * t) / r) / c
+    }
+}
+
+impl Declared for ConstantForce {
+    const PARAMS: &'static [ParamSpec] = &[ParamSpec {
+        name: "g",
+        rule: Rule::AtLeastZero,
+        words: "the force per unit mass g along the peculiar velocity (MS (14))",
+        unit: "speed/time",
+        default: None,
+        example: 0.5,
+    }];
+    const TITLE: &'static str = "constant force";
+    const STEPPED_ONLY: Option<&'static str> = Some(
+        "must be time-stepped, Euler or Strang with the constant-force drive: the no-splitting \
+         scheme is exact because it moves each particle alone between its collisions, and the \
+         force's momentum-keeping correction (MS (62)) makes every particle's free motion depend \
+         on all the others' (coupled equations with no closed form), so no exact scheme exists \
+         for it",
+    );
+    type In<G: Geometry> = Self;
+
+    fn from_values(values: &[Real]) -> Result<Self, usize> {
+        Self::new(values[0]).ok_or(0)
+    }
+
+    fn place<G: Geometry>(self, _mass: Real) -> Option<Self> {
+        Some(self)
+    }
+
+    /// `(2/3) g <|c|> = zeta_0 (T/T0)^s T` with `<|c|> = sqrt(8 T/pi)`: the balance, at most
+    /// the speed `g t` the force adds with no collision at all; the run's span.
+    fn work(&self, w: WorkInput) -> (Real, Real) {
+        let drive = 2.0 / 3.0 * self.g * sqrt(8.0) / SQRT_PI;
+        let stationary = powf(drive * powf(w.t0, w.s) / w.zeta0, 1.0 / (w.s + 0.5));
+        let bound = sqrt(w.t0) + self.g * w.t_end / sqrt(3.0);
+        (w.t0.max(stationary.min(bound * bound)), w.t_end)
     }
 }

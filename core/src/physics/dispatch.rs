@@ -14,13 +14,14 @@ use super::engine::{
     ByDrive, ByKernel, ByLaw, ByMixtureScheme, ByScheme, BySplit, Engine, Family, HostIn, Mixture,
     PairModel, Rough, RoughPairs, Smooth, SmoothPairs,
 };
+use super::kinds::declared_drives;
 use super::model::Model;
 use super::parts::{DriveModel, KernelModel, LawModel, SchemeModel};
 use super::rotation::{MixtureRotation, RoughModel};
 use super::species::MixtureModel;
 use super::{MAX_PAIRS, MAX_SPECIES};
 use crate::drive::host_medium::BackgroundKernel;
-use crate::drive::{Drive, HostMedium, NoDrive, WhiteNoiseIn};
+use crate::drive::{Declared, Drive, HostMedium, NoDrive, WhiteNoiseIn};
 use crate::engine::{
     CollisionMap, EngineError, NoSplitting, Splitting, SumNoSplitting, TimeStepped,
 };
@@ -367,6 +368,9 @@ trait Build {
         &self,
         h: HostMedium<B>,
     ) -> Result<Self::Drives<HostIn<B, Self::F>>, EngineError>;
+    /// The declared drive `d` in the family's dimension, as each species meets it with its
+    /// own mass (one species: unit mass).
+    fn place<T: Declared>(&self, d: T) -> Result<Self::Drives<Placed<T, Self::F>>, EngineError>;
     /// The family's scheme level for kernel `k`, drives `d` and restitution law `a`, started
     /// at `t0` on `p`.
     fn scheme<K: Kernel, D: Drive, A: Law>(
@@ -434,45 +438,48 @@ macro_rules! by_kernel {
 }
 kernel_table!(by_kernel);
 
-/// The one drive level of the dispatch, for every family and kernel. Out of line for the
-/// reason of [`by_kernel`] (a mixture's drives are one per species).
-#[inline(never)]
-fn by_drive<B: Build, K: Kernel>(
-    b: &B,
-    k: K,
-    p: &mut Particles<'_>,
-    t0: Real,
-) -> Begun<ByDrive<B::F, K>> {
-    // White noise first: a rough gas's noise on rotation alone has no drive on translation.
-    if let Some(n) = b.noise() {
-        return built!(feature = "white-noise", "white-noise", {
-            wrap(by_law(b, k, &n, p, t0), ByDrive::WhiteNoise)
-        });
-    }
-    // Validated: rotational noise takes no drive but white noise beside it.
-    match b.model().drive {
-        DriveModel::None => built!(feature = "cooling", "cooling", {
-            wrap(by_law(b, k, &b.each(NoDrive), p, t0), ByDrive::None)
-        }),
-        DriveModel::Gaussian(g) => built!(
-            feature = "gaussian-thermostat",
-            "gaussian-thermostat",
-            wrap(by_law(b, k, &b.each(g), p, t0), ByDrive::Gaussian)
-        ),
-        DriveModel::ConstantForce(f) => built!(feature = "constant-force", "constant-force", {
-            wrap(by_law(b, k, &b.each(f), p, t0), ByDrive::ConstantForce)
-        }),
-        DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
-            wrap(by_law(b, k, &b.host(h)?, p, t0), ByDrive::HostMaxwell)
-        }),
-        DriveModel::HostHardSpheres(h) => built!(feature = "host-medium", "host-medium", {
-            wrap(by_law(b, k, &b.host(h)?, p, t0), ByDrive::HostHardSpheres)
-        }),
-        DriveModel::WhiteNoise(_) => {
-            Err(EngineError::Invariant("white noise is its family's noise"))
+/// Generates [`by_drive`] from the declared drives' table ([`declared_drives`]).
+macro_rules! by_drive {
+    ($($v:ident($t:ty, $feature:literal)),* $(,)?) => {
+        /// The one drive level of the dispatch, for every family and kernel (the declared
+        /// drives' arms generated from their table, `physics/kinds.rs`). Out of line for the
+        /// reason of [`by_kernel`] (a mixture's drives are one per species).
+        #[inline(never)]
+        fn by_drive<B: Build, K: Kernel>(
+            b: &B,
+            k: K,
+            p: &mut Particles<'_>,
+            t0: Real,
+        ) -> Begun<ByDrive<B::F, K>> {
+            // White noise first: a rough gas's noise on rotation alone has no drive on
+            // translation.
+            if let Some(n) = b.noise() {
+                return built!(feature = "white-noise", "white-noise", {
+                    wrap(by_law(b, k, &n, p, t0), ByDrive::WhiteNoise)
+                });
+            }
+            // Validated: rotational noise takes no drive but white noise beside it.
+            match b.model().drive {
+                DriveModel::None => built!(feature = "cooling", "cooling", {
+                    wrap(by_law(b, k, &b.each(NoDrive), p, t0), ByDrive::None)
+                }),
+                DriveModel::HostMaxwell(h) => built!(feature = "host-medium", "host-medium", {
+                    wrap(by_law(b, k, &b.host(h)?, p, t0), ByDrive::HostMaxwell)
+                }),
+                DriveModel::HostHardSpheres(h) => built!(feature = "host-medium", "host-medium", {
+                    wrap(by_law(b, k, &b.host(h)?, p, t0), ByDrive::HostHardSpheres)
+                }),
+                DriveModel::WhiteNoise(_) => {
+                    Err(EngineError::Invariant("white noise is its family's noise"))
+                }
+                $(DriveModel::$v(d) => built!(feature = $feature, $feature, {
+                    wrap(by_law(b, k, &b.place(d)?, p, t0), ByDrive::$v)
+                }),)*
+            }
         }
-    }
+    };
 }
+declared_drives!(by_drive);
 
 /// The one restitution-law level of the dispatch, for every family, kernel and drive.
 fn by_law<B: Build, K: Kernel, D: Drive>(
@@ -502,17 +509,13 @@ impl<G: WhiteNoiseIn> Build for SmoothBuild<'_, G> {
         d
     }
     fn noise(&self) -> Option<G::Noise> {
-        match self.0.drive {
-            DriveModel::WhiteNoise(w) => Some(G::noise(w)),
-            DriveModel::None
-            | DriveModel::Gaussian(_)
-            | DriveModel::ConstantForce(_)
-            | DriveModel::HostMaxwell(_)
-            | DriveModel::HostHardSpheres(_) => None,
-        }
+        self.0.drive.white_noise().map(G::noise)
     }
     fn host<B: BackgroundKernel>(&self, h: HostMedium<B>) -> Result<HostMedium<B, G>, EngineError> {
         Ok(h.in_dim::<G>())
+    }
+    fn place<T: Declared>(&self, d: T) -> Result<T::In<G>, EngineError> {
+        unit_mass(d)
     }
     fn scheme<K: Kernel, D: Drive, A: Law>(
         &self,
@@ -543,6 +546,9 @@ impl<G: Geometry> Build for RoughBuild<'_, G> {
     fn host<B: BackgroundKernel>(&self, h: HostMedium<B>) -> Result<HostMedium<B, G>, EngineError> {
         Ok(h.in_dim::<G>())
     }
+    fn place<T: Declared>(&self, d: T) -> Result<T::In<G>, EngineError> {
+        unit_mass(d)
+    }
     fn scheme<K: Kernel, D: Drive, A: Law>(
         &self,
         k: K,
@@ -569,7 +575,7 @@ struct MixtureBuild<'a, G: WhiteNoiseIn, P: PairModel> {
 impl<'a, G: WhiteNoiseIn> MixtureBuild<'a, G, SmoothPairs> {
     /// A mixture of smooth particles.
     fn smooth(mx: &'a MixtureModel, m: &'a Model) -> Self {
-        let noises = matches!(m.drive, DriveModel::WhiteNoise(_)).then(|| mx.noises.map(G::noise));
+        let noises = m.drive.white_noise().map(|_| mx.noises.map(G::noise));
         Self {
             mx,
             m,
@@ -610,6 +616,18 @@ impl<G: WhiteNoiseIn, P: PairModel> Build for MixtureBuild<'_, G, P> {
     ) -> Result<[HostMedium<B, G>; MAX_SPECIES], EngineError> {
         species_hosts(self.mx, h)
     }
+    fn place<T: Declared>(&self, d: T) -> Result<[T::In<G>; MAX_SPECIES], EngineError> {
+        let sp = &self.mx.species;
+        let first = unit_mass::<T, G>(d)?;
+        let mut placed = [first; MAX_SPECIES];
+        for (s, q) in placed.iter_mut().enumerate().take(sp.len()) {
+            // Validated: every species' mass places the drive.
+            *q = d
+                .place::<G>(sp.mass(s))
+                .ok_or(EngineError::Invariant("a species' mass places its drive"))?;
+        }
+        Ok(placed)
+    }
     fn scheme<K: Kernel, D: Drive, A: Law>(
         &self,
         k: K,
@@ -621,6 +639,16 @@ impl<G: WhiteNoiseIn, P: PairModel> Build for MixtureBuild<'_, G, P> {
         let physics = pair_table(self.mx, k, &a.pairs::<P>(self.laws))?;
         start_mixture::<K, D, _, G>(self.mx, self.m.scheme, &physics, d, p, t0)
     }
+}
+
+/// A declared drive `T` as family `F`'s loops take it (in its dimension).
+type Placed<T, F> = <T as Declared>::In<<F as Family>::G>;
+
+/// The declared drive `d` on a grain of unit mass in dimension `G` (validated: it exists).
+fn unit_mass<T: Declared, G: Geometry>(d: T) -> Result<T::In<G>, EngineError> {
+    d.place::<G>(1.0).ok_or(EngineError::Invariant(
+        "a declared drive acts on a unit mass",
+    ))
 }
 
 /// A mixture loop's start as an engine's: its refusal as an engine error (the model was

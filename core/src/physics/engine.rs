@@ -11,9 +11,9 @@
 #![allow(clippy::large_enum_variant)]
 
 use super::axes::kernel_table;
+use super::kinds::declared_drives;
 use crate::drive::{
-    ConstantForce, Drive, GaussianThermostat, HardSphereBackground, HostMedium, MaxwellBackground,
-    NoDrive, WhiteNoiseIn,
+    Declared, Drive, HardSphereBackground, HostMedium, MaxwellBackground, NoDrive, WhiteNoiseIn,
 };
 use crate::engine::{
     CollisionMap, Counts, EngineError, EventLoop, Frame, NoSplitting, Splitting, SumNoSplitting,
@@ -86,8 +86,6 @@ const ROUGH_DISK_MIXTURES: bool = MIXTURES && ROUGH && DISKS;
 /// Whether this build holds each kernel, drive, law and scheme (the same features).
 const COOLING: bool = cfg!(feature = "cooling");
 const WHITE_NOISE: bool = cfg!(feature = "white-noise");
-const GAUSSIAN: bool = cfg!(feature = "gaussian-thermostat");
-const CONSTANT_FORCE: bool = cfg!(feature = "constant-force");
 const HOST_MEDIUM: bool = cfg!(feature = "host-medium");
 const IMPACT_SPEED: bool = cfg!(feature = "impact-speed");
 const SPLITTING: bool = cfg!(feature = "splitting");
@@ -190,28 +188,41 @@ macro_rules! by_kernel {
     };
 }
 
-/// The one drive level, for every family `F` and kernel `K`.
-#[derive(Clone, Debug)]
-pub enum ByDrive<F: Family, K: Kernel> {
-    /// No drive: the gas cools (feature `cooling`).
-    None(Built<ByLaw<F, K, NoDrive>, COOLING>),
-    /// White noise (GRW (18); rough particles: on translation and rotation; a mixture: each
-    /// species its own strengths; feature `white-noise`).
-    WhiteNoise(Built<ByLaw<F, K, F::Noise>, WHITE_NOISE>),
-    /// The Gaussian thermostat (MS (12)) on translation, about the flow velocity (feature
-    /// `gaussian-thermostat`).
-    Gaussian(Built<ByLaw<F, K, GaussianThermostat>, GAUSSIAN>),
-    /// The constant force (MS (14), (62); a mixture's correction weighted by mass; a stepping
-    /// scheme; feature `constant-force`).
-    ConstantForce(Built<ByLaw<F, K, ConstantForce>, CONSTANT_FORCE>),
-    /// A host medium with the Maxwell background kernel (BRS (2), (11); a mixture's species
-    /// each meets it with its own mass; feature `host-medium`).
-    HostMaxwell(Built<ByLaw<F, K, HostIn<MaxwellBackground, F>>, HOST_MEDIUM>),
-    /// A host medium with the hard-sphere background kernel (BRS (19); feature
-    /// `host-medium`).
-    HostHardSpheres(Built<ByLaw<F, K, HostIn<HardSphereBackground, F>>, HOST_MEDIUM>),
-}
+/// Generates [`ByDrive`] and its [`EventLoop`] from the declared drives' table
+/// (`declared_drives!`), beside the drives written out.
+macro_rules! by_drive {
+    ($($v:ident($t:ty, $feature:literal)),* $(,)?) => {
+        /// The one drive level, for every family `F` and kernel `K` (the declared drives'
+        /// variants generated from their table in `physics/kinds.rs`, each behind its cargo
+        /// feature, as the family's loops take it: [`Declared::In`] of its dimension).
+        #[derive(Clone, Debug)]
+        pub enum ByDrive<F: Family, K: Kernel> {
+            /// No drive: the gas cools (feature `cooling`).
+            None(Built<ByLaw<F, K, NoDrive>, COOLING>),
+            /// White noise (GRW (18); rough particles: on translation and rotation; a mixture:
+            /// each species its own strengths; feature `white-noise`).
+            WhiteNoise(Built<ByLaw<F, K, F::Noise>, WHITE_NOISE>),
+            /// A host medium with the Maxwell background kernel (BRS (2), (11); a mixture's
+            /// species each meets it with its own mass; feature `host-medium`).
+            HostMaxwell(Built<ByLaw<F, K, HostIn<MaxwellBackground, F>>, HOST_MEDIUM>),
+            /// A host medium with the hard-sphere background kernel (BRS (19); feature
+            /// `host-medium`).
+            HostHardSpheres(Built<ByLaw<F, K, HostIn<HardSphereBackground, F>>, HOST_MEDIUM>),
+            $(
+                #[doc = concat!("A declared drive (feature `", $feature, "`).")]
+                $v(Built<ByLaw<F, K, <$t as Declared>::In<<F as Family>::G>>, { drive_built::$v }>),
+            )*
+        }
 
+        /// Whether this build holds each declared drive (its cargo feature).
+        #[allow(non_upper_case_globals)]
+        mod drive_built {
+            $(pub(super) const $v: bool = cfg!(feature = $feature);)*
+        }
+
+        forward!(ByDrive<F, K>, [F: Family, K: Kernel], None, WhiteNoise, HostMaxwell, HostHardSpheres $(, $v)*);
+    };
+}
 /// A host medium of background kernel `B` in family `F`'s dimension.
 pub type HostIn<B, F> = HostMedium<B, <F as Family>::G>;
 
@@ -377,9 +388,9 @@ forward!(
     RoughMixture,
     RoughDiskMixture
 );
-forward!(ByDrive<F, K>, [F: Family, K: Kernel], None, WhiteNoise, Gaussian, ConstantForce, HostMaxwell, HostHardSpheres);
 forward!(ByLaw<F, K, D>, [F: Family, K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm);
 kernel_table!(by_kernel);
+declared_drives!(by_drive);

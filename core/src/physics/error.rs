@@ -34,10 +34,8 @@ pub enum Param {
     Delta,
     /// The white-noise strength beta.
     Beta,
-    /// The Gaussian thermostat rate zeta.
-    Zeta,
-    /// The constant force per unit mass g.
-    G,
+    /// Parameter `.1` of a drive declared by its type ([`super::DriveKind::params`]).
+    Drive(super::DriveKind, usize),
     /// Host medium: kernel constant C_1.
     BackgroundC,
     /// Host medium: number density rho^B.
@@ -106,8 +104,10 @@ impl core::fmt::Display for Param {
             Param::Beta0 => f.write_str("beta0"),
             Param::Delta => f.write_str("delta"),
             Param::Beta => f.write_str("beta"),
-            Param::Zeta => f.write_str("zeta"),
-            Param::G => f.write_str("g"),
+            Param::Drive(kind, i) => match kind.params().and_then(|p| p.get(*i)) {
+                Some(p) => f.write_str(p.name),
+                None => write!(f, "drive parameter {i}"),
+            },
             Param::BackgroundC => f.write_str("background_c"),
             Param::BackgroundDensity => f.write_str("background_density"),
             Param::BackgroundMass => f.write_str("background_mass"),

@@ -10,14 +10,15 @@
 //! too, so a variant of a choice without its row here does not compile.
 
 use super::{DriveChoice, KernelChoice, RestitutionLaw, SchemeChoice};
+use crate::drive::{Declared, ParamSpec};
 
 /// Declares a kind enum: `Name of Choice { Variant = code, "scene-name", "feature"; ... }`.
 macro_rules! kinds {
-    ($(#[$m:meta])* $name:ident { $($(#[$vm:meta])* $v:ident = $code:literal, $scene:literal, $feature:literal;)+ }) => {
+    ($(#[$m:meta])* $name:ident { $($(#[doc = $d:literal])+ $v:ident = $code:literal, $scene:literal, $feature:literal;)+ }) => {
         $(#[$m])*
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum $name {
-            $($(#[$vm])* $v,)+
+            $($(#[doc = $d])+ $v,)+
         }
 
         impl $name {
@@ -43,6 +44,12 @@ macro_rules! kinds {
                 match self { $($name::$v => $feature),+ }
             }
 
+            /// What it is, in words (its doc comment here; the C header's comment).
+            #[must_use]
+            pub const fn doc(self) -> &'static str {
+                match self { $($name::$v => concat!($($d),+)),+ }
+            }
+
             /// The kind of a C code, if it is one.
             #[must_use]
             pub fn from_c(code: u32) -> Option<Self> {
@@ -61,11 +68,11 @@ macro_rules! kinds {
 kinds! {
     /// The collision kernels (GRW (2), (4), (5)).
     KernelKind {
-        /// Maxwell pseudo-molecules (GRW (2)).
+        /// Maxwell pseudo-molecules, `B = gamma C` (GRW (2), `lambda = 0`).
         Maxwell = 0, "maxwell", "maxwell";
-        /// Hard spheres (hard disks in `d = 2`; GRW (4)).
+        /// Hard spheres, `B = gamma C |u|` (hard disks in `d = 2`; GRW (4)).
         HardSpheres = 1, "hard-spheres", "hard-spheres";
-        /// Variable hard spheres (GRW (5)).
+        /// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)).
         Vhs = 2, "vhs", "vhs";
     }
 }
@@ -73,9 +80,9 @@ kinds! {
 kinds! {
     /// The restitution laws (GRW (3), BRS (9)).
     LawKind {
-        /// A constant coefficient alpha.
+        /// A constant restitution coefficient alpha (`restitution`).
         Constant = 0, "restitution", "";
-        /// The impact-speed law BRS (9)-(10).
+        /// The impact-speed law BRS (9)-(10), `1 - e = 2 beta0 |g . n|^delta`.
         ImpactSpeed = 1, "impact_speed_law", "impact-speed";
     }
 }
@@ -83,29 +90,92 @@ kinds! {
 kinds! {
     /// The drives.
     DriveKind {
-        /// None: the freely cooling gas.
+        /// No drive: the freely cooling gas.
         None = 0, "none", "cooling";
-        /// White-noise heating (GRW (1), (18)).
+        /// White-noise heating of strength `beta` (GRW (1), (18)).
         WhiteNoise = 1, "white-noise", "white-noise";
-        /// A Maxwellian host medium (BRS Section 2).
+        /// Elastic collisions with a Maxwellian host medium (BRS Section 2; the background's
+        /// kernel, `C_1`, density, mass, temperature and drift).
         HostMedium = 2, "host-medium", "host-medium";
-        /// The Gaussian thermostat (MS (12)).
+        /// The Gaussian thermostat `F = m zeta (v - V)` (MS (12)).
         Gaussian = 3, "gaussian", "gaussian-thermostat";
-        /// The constant force along the velocity (MS (14)).
+        /// The constant force along the peculiar velocity, `F = m g c/|c|` (MS (14)).
         ConstantForce = 4, "constant-force", "constant-force";
+        /// The Langevin thermostat: the drag `-gamma v` and white noise at a bath temperature.
+        Langevin = 5, "langevin", "langevin";
     }
 }
+
+/// Calls the macro `$then` with the table of the drives declared by their type
+/// ([`Declared`](crate::drive::Declared): parameters, rules, words, title, heating, work), one
+/// row per drive: `Variant(Type, "cargo-feature")`, the variant that of its [`DriveKind`].
+/// The validated drive, the engine's drive level and the dispatch's drive `match` are generated
+/// from it; none, white noise and the host medium are written out beside it (white noise is
+/// each family's own, the host medium has a kernel and a vector among its parameters). A new
+/// drive is its file in `drive/`, its row here and in [`DriveKind`], and its cargo feature.
+macro_rules! declared_drives {
+    ($then:ident) => {
+        $then! {
+            Gaussian(crate::drive::GaussianThermostat, "gaussian-thermostat"),
+            ConstantForce(crate::drive::ConstantForce, "constant-force"),
+            Langevin(crate::drive::Langevin, "langevin"),
+        }
+    };
+}
+pub(super) use declared_drives;
+
+/// Generates [`DriveKind::params`] and [`DriveKind::title`] from the declared drives.
+macro_rules! drive_kind_declarations {
+    ($($v:ident($t:ty, $feature:literal)),* $(,)?) => {
+        impl DriveKind {
+            /// The parameters of a drive declared by its type, in the order of their values
+            /// (`drive_params` in C, [`DriveParams`](super::DriveParams)); `None` for none,
+            /// white noise and the host medium, whose parameters are their own.
+            #[must_use]
+            pub fn params(self) -> Option<&'static [ParamSpec]> {
+                match self {
+                    $(DriveKind::$v => Some(<$t as Declared>::PARAMS),)*
+                    DriveKind::None | DriveKind::WhiteNoise | DriveKind::HostMedium => None,
+                }
+            }
+
+            /// A declared drive's name in a chart's title.
+            #[must_use]
+            pub fn title(self) -> Option<&'static str> {
+                match self {
+                    $(DriveKind::$v => Some(<$t as Declared>::TITLE),)*
+                    DriveKind::None | DriveKind::WhiteNoise | DriveKind::HostMedium => None,
+                }
+            }
+
+            /// Why no exact scheme runs a declared drive, when none does.
+            #[must_use]
+            pub fn stepped_only(self) -> Option<&'static str> {
+                match self {
+                    $(DriveKind::$v => <$t as Declared>::STEPPED_ONLY,)*
+                    DriveKind::None | DriveKind::WhiteNoise | DriveKind::HostMedium => None,
+                }
+            }
+        }
+
+        #[cfg(test)]
+        /// The declared drives' rows as `(kind, feature)`.
+        const DECLARED_ROWS: &[(DriveKind, &str)] = &[$((DriveKind::$v, $feature)),*];
+    };
+}
+declared_drives!(drive_kind_declarations);
 
 kinds! {
     /// The schemes that advance the system in time.
     SchemeKind {
         /// The exact no-splitting scheme (GRW Section 3).
         NoSplitting = 0, "no-splitting", "";
-        /// Euler splitting (RW Algorithm 1).
+        /// Euler splitting with time step `dt` (RW Algorithm 1).
         Euler = 1, "euler", "splitting";
-        /// Strang splitting (RW Algorithm 2).
+        /// Strang splitting with time step `dt` (RW Algorithm 2).
         Strang = 2, "strang", "splitting";
-        /// MS's time-stepped scheme (MS Section 3).
+        /// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell
+        /// and VHS kernels), step `step_factor` mean free paths over the thermal speed.
         TimeStepped = 3, "time-stepped", "time-stepped";
     }
 }
@@ -141,8 +211,7 @@ impl DriveChoice {
             DriveChoice::None => DriveKind::None,
             DriveChoice::WhiteNoise(_) => DriveKind::WhiteNoise,
             DriveChoice::HostMedium { .. } => DriveKind::HostMedium,
-            DriveChoice::Gaussian(_) => DriveKind::Gaussian,
-            DriveChoice::ConstantForce(_) => DriveKind::ConstantForce,
+            DriveChoice::Declared(d) => d.kind(),
         }
     }
 }
@@ -180,6 +249,36 @@ mod tests {
         for (k, feature) in rows {
             assert_eq!(k.feature(), *feature, "{k:?}");
         }
+    }
+
+    /// The declared drives' table and the kinds name the same features; each declared drive's
+    /// parameters are at most `MAX_DRIVE_PARAMS`, named uniquely, with defaults that obey their
+    /// rules.
+    #[test]
+    fn the_declared_drives_are_kinds() {
+        for (k, feature) in DECLARED_ROWS {
+            assert_eq!(k.feature(), *feature, "{k:?}");
+            let params = k.params().expect("a declared drive has its parameters");
+            assert!(params.len() <= crate::drive::MAX_DRIVE_PARAMS, "{k:?}");
+            for (i, p) in params.iter().enumerate() {
+                assert!(
+                    params[..i].iter().all(|q| q.name != p.name),
+                    "{k:?}: {}",
+                    p.name
+                );
+                assert!(
+                    p.default.is_none_or(|d| p.rule.holds(d)),
+                    "{k:?}: {}",
+                    p.name
+                );
+                assert!(p.rule.holds(p.example), "{k:?}: {}", p.name);
+            }
+        }
+        let irregular = DriveKind::ALL
+            .iter()
+            .filter(|k| k.params().is_none())
+            .count();
+        assert_eq!(irregular + DECLARED_ROWS.len(), DriveKind::ALL.len());
     }
 
     /// The codes are 0, 1, ... in order (the C header's enumerations), names and codes unique.

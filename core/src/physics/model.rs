@@ -10,7 +10,6 @@ use super::parts::{
 };
 use super::species::Slot;
 use super::{MAX_COMPONENTS, Physics};
-use crate::drive::Drive;
 use crate::kernel::Kernel;
 use crate::math::Real;
 use crate::sample::MaxwellianMixture;
@@ -164,13 +163,20 @@ impl Model {
     /// medium's bound, `4 pi C_1 rho^B` (BRS (11)) or BRS (28) ([`Drive::event_rate`]); 0
     /// without a host medium.
     pub fn background_rate(&self, speed: Real) -> Real {
-        match self.drive {
-            DriveModel::HostMaxwell(d) => d.event_rate(speed),
-            DriveModel::HostHardSpheres(d) => d.event_rate(speed),
-            DriveModel::None
-            | DriveModel::WhiteNoise(_)
-            | DriveModel::Gaussian(_)
-            | DriveModel::ConstantForce(_) => 0.0,
-        }
+        self.drive.event_rate(speed)
+    }
+
+    /// How the drive alone changes the temperature, when it does so linearly
+    /// ([`crate::drive::Heating`]: none, white noise, the Gaussian and Langevin thermostats):
+    /// with the Maxwell kernel the temperature is then exact (GRW (13)).
+    pub fn heating(&self) -> Option<crate::drive::Heating> {
+        self.drive.heating()
+    }
+
+    /// A declared drive's bound for a run's work estimate ([`crate::drive::Declared::work`]):
+    /// the largest temperature and the time at the start's collision rate; `None` for none,
+    /// white noise and the host medium.
+    pub fn drive_work(&self, w: crate::drive::WorkInput) -> Option<(Real, Real)> {
+        self.drive.work(w)
     }
 }

@@ -6,12 +6,13 @@
 
 use super::axes::{WithKernel, kernel_table};
 use super::error::{Param, PhysicsError, Problem};
+use super::kinds::declared_drives;
 use super::{BackgroundKernel, DriveChoice, KernelChoice, RestitutionLaw, SchemeChoice};
-use super::{Component, MAX_COMPONENTS};
+use super::{Component, DriveKind, DriveParams, MAX_COMPONENTS};
 use crate::drive::host_medium::HostMediumError;
 use crate::drive::{
-    ConstantForce, GaussianThermostat, HardSphereBackground, HostMedium, HostMediumParams,
-    MaxwellBackground, WhiteNoise,
+    Declared, Drive, HardSphereBackground, Heating, HostMedium, HostMediumParams,
+    MaxwellBackground, Rule, WhiteNoise, WorkInput,
 };
 use crate::engine::{SplittingOrder, check_step};
 use crate::kernel::{HardSpheres, KernelError, Maxwell, Vhs};
@@ -49,15 +50,118 @@ pub(super) enum LawModel {
     ImpactSpeed(ImpactSpeed),
 }
 
-/// The validated drive.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum DriveModel {
-    None,
-    WhiteNoise(WhiteNoise),
-    Gaussian(GaussianThermostat),
-    ConstantForce(ConstantForce),
-    HostMaxwell(HostMedium<MaxwellBackground>),
-    HostHardSpheres(HostMedium<HardSphereBackground>),
+/// Generates [`DriveModel`] and the validation of a declared drive from the declared drives'
+/// table ([`declared_drives`]).
+macro_rules! drive_model {
+    ($($v:ident($t:ty, $feature:literal)),* $(,)?) => {
+        /// The validated drive (the declared drives' variants generated from their table,
+        /// `physics/kinds.rs`).
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub(super) enum DriveModel {
+            None,
+            WhiteNoise(WhiteNoise),
+            HostMaxwell(HostMedium<MaxwellBackground>),
+            HostHardSpheres(HostMedium<HardSphereBackground>),
+            $($v($t),)*
+        }
+
+        impl DriveModel {
+            /// The white noise, if this is it.
+            pub(super) fn white_noise(&self) -> Option<WhiteNoise> {
+                match self {
+                    DriveModel::WhiteNoise(w) => Some(*w),
+                    DriveModel::None | DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => None,
+                    $(DriveModel::$v(_) => None,)*
+                }
+            }
+
+            /// The kind of a declared drive; `None` for none, white noise and the host medium.
+            pub(super) fn declared_kind(&self) -> Option<DriveKind> {
+                match self {
+                    DriveModel::None | DriveModel::WhiteNoise(_) => None,
+                    DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => None,
+                    $(DriveModel::$v(_) => Some(DriveKind::$v),)*
+                }
+            }
+
+            /// Whether a declared drive acts on a grain of mass `mass` ([`Declared::place`]);
+            /// true for the others.
+            pub(super) fn places(&self, mass: Real) -> bool {
+                match self {
+                    DriveModel::None | DriveModel::WhiteNoise(_) => true,
+                    DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => true,
+                    $(DriveModel::$v(d) => d.place::<crate::geometry::Spheres>(mass).is_some(),)*
+                }
+            }
+
+            /// [`Drive::event_rate`] of a grain of speed at most `speed`.
+            pub(super) fn event_rate(&self, speed: Real) -> Real {
+                match self {
+                    DriveModel::HostMaxwell(d) => d.event_rate(speed),
+                    DriveModel::HostHardSpheres(d) => d.event_rate(speed),
+                    DriveModel::None | DriveModel::WhiteNoise(_) => 0.0,
+                    $(DriveModel::$v(d) => d.event_rate(speed),)*
+                }
+            }
+
+            /// How the drive alone changes the temperature, when linearly ([`Heating`]): none
+            /// and white noise (GRW (18)) besides the declared drives.
+            pub(super) fn heating(&self) -> Option<Heating> {
+                match self {
+                    DriveModel::None => Some(Heating { a: 0.0, b: 0.0, p: 0.0 }),
+                    DriveModel::WhiteNoise(w) => Some(Heating { a: 2.0 * w.beta(), b: 0.0, p: 0.0 }),
+                    DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => None,
+                    $(DriveModel::$v(d) => d.heating(),)*
+                }
+            }
+
+            /// A declared drive's work bound ([`Declared::work`]); `None` for none, white noise
+            /// and the host medium.
+            pub(super) fn work(&self, w: WorkInput) -> Option<(Real, Real)> {
+                match self {
+                    DriveModel::None | DriveModel::WhiteNoise(_) => None,
+                    DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => None,
+                    $(DriveModel::$v(d) => Some(d.work(w)),)*
+                }
+            }
+        }
+
+        /// A declared drive from its parameters, each checked against its rule first.
+        fn declared(d: &DriveParams) -> Result<DriveModel, PhysicsError> {
+            let kind = d.kind();
+            for (i, (spec, &x)) in d.specs().iter().zip(d.values()).enumerate() {
+                if !spec.rule.holds(x) {
+                    return Err(PhysicsError {
+                        param: Param::Drive(kind, i),
+                        problem: refusal(spec.rule, x),
+                    });
+                }
+            }
+            let overflow = |i| PhysicsError {
+                param: Param::Drive(kind, i),
+                problem: Problem::DoesNotFit("makes the drive's rates overflow"),
+            };
+            match kind {
+                $(DriveKind::$v => <$t>::from_values(d.values()).map(DriveModel::$v).map_err(overflow),)*
+                DriveKind::None | DriveKind::WhiteNoise | DriveKind::HostMedium => {
+                    err(Param::Drive(kind, 0), Problem::DoesNotFit("is not declared by its type"))
+                }
+            }
+        }
+    };
+}
+declared_drives!(drive_model);
+
+/// The problem of a value that breaks `rule`.
+fn refusal(rule: Rule, x: Real) -> Problem {
+    if !x.is_finite() {
+        return Problem::NotFinite(x);
+    }
+    match rule {
+        Rule::Finite => Problem::NotFinite(x),
+        Rule::AtLeastZero => Problem::Negative(x),
+        Rule::Positive => Problem::NotPositive(x),
+    }
 }
 
 /// The validated scheme.
@@ -215,15 +319,7 @@ pub(super) fn drive(d: DriveChoice) -> Result<DriveModel, PhysicsError> {
         DriveChoice::WhiteNoise(beta) => DriveModel::WhiteNoise(
             WhiteNoise::new(beta).ok_or_else(|| negative(Param::Beta, beta))?,
         ),
-        DriveChoice::Gaussian(zeta) => {
-            DriveModel::Gaussian(GaussianThermostat::new(zeta).ok_or(PhysicsError {
-                param: Param::Zeta,
-                problem: Problem::NotFinite(zeta),
-            })?)
-        }
-        DriveChoice::ConstantForce(g) => {
-            DriveModel::ConstantForce(ConstantForce::new(g).ok_or_else(|| negative(Param::G, g))?)
-        }
+        DriveChoice::Declared(d) => declared(&d)?,
         DriveChoice::HostMedium {
             kernel,
             c1,
@@ -257,17 +353,8 @@ pub(super) fn drive(d: DriveChoice) -> Result<DriveModel, PhysicsError> {
 pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, PhysicsError> {
     Ok(match s {
         SchemeChoice::NoSplitting => {
-            if let DriveChoice::ConstantForce(_) = d {
-                return err(
-                    Param::Scheme,
-                    Problem::DoesNotFit(
-                        "must be time-stepped, Euler or Strang with the constant-force drive: the \
-                         no-splitting scheme is exact because it moves each particle alone \
-                         between its collisions, and the force's momentum-keeping correction \
-                         (MS (62)) makes every particle's free motion depend on all the others' \
-                         (coupled equations with no closed form), so no exact scheme exists for it",
-                    ),
-                );
+            if let Some(why) = d.kind().stepped_only() {
+                return err(Param::Scheme, Problem::DoesNotFit(why));
             }
             SchemeModel::NoSplitting
         }

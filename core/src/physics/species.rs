@@ -181,29 +181,30 @@ pub(super) fn mixture(
             },
         })?;
     let mut noises = [WhiteNoise::new(0.0).expect("0 is a valid strength"); MAX_SPECIES];
-    match drive {
-        // The Gaussian thermostat acts on every species about the mixture's flow velocity,
-        // which collisions and the thermostat keep: exact between synchronizations (on
-        // translation alone for rough particles).
-        DriveModel::None | DriveModel::Gaussian(_) => {}
-        // Every species meets the one background (its density, temperature, drift and
-        // kernel constant `C_1`) with its own mass in BRS (3)'s ratio.
-        DriveModel::HostMaxwell(_) | DriveModel::HostHardSpheres(_) => {}
-        // One force per unit mass `g` on every grain (the force `m g c_hat` on a grain of
-        // mass `m`, MS (14), about the flow velocity), with the momentum-keeping correction
-        // weighted by mass (MS (62) for several masses); a stepping scheme (validated above).
-        DriveModel::ConstantForce(_) => {}
-        DriveModel::WhiteNoise(_) => {
-            for (k, c) in list.iter().enumerate() {
-                noises[k] = WhiteNoise::new(c.beta).ok_or(PhysicsError {
-                    param: Param::SpeciesBeta(k),
-                    problem: if c.beta.is_finite() {
-                        Problem::Negative(c.beta)
-                    } else {
-                        Problem::NotFinite(c.beta)
-                    },
-                })?;
-            }
+    // The declared drives act on every species as it is (the thermostats about the mixture's
+    // flow velocity, which collisions and the thermostats keep; the constant force per unit
+    // mass, its momentum-keeping correction weighted by mass, MS (62) for several masses; the
+    // Langevin bath on each species with its own mass); every species meets a host medium's
+    // one background with its own mass in BRS (3)'s ratio; white noise is each species' own.
+    if drive.white_noise().is_some() {
+        for (k, c) in list.iter().enumerate() {
+            noises[k] = WhiteNoise::new(c.beta).ok_or(PhysicsError {
+                param: Param::SpeciesBeta(k),
+                problem: if c.beta.is_finite() {
+                    Problem::Negative(c.beta)
+                } else {
+                    Problem::NotFinite(c.beta)
+                },
+            })?;
+        }
+    }
+    // Each species' mass must place a declared drive (the Langevin bath's `T_b / m`).
+    for (k, c) in list.iter().enumerate() {
+        if !drive.places(c.mass) {
+            return refuse(
+                Param::SpeciesMass(k),
+                Problem::DoesNotFit("is too small for the drive: its rates for this mass overflow"),
+            );
         }
     }
     let types = species.pair_types();
@@ -279,14 +280,14 @@ pub(super) fn mixture(
             let alphas: [Real; MAX_PAIRS] =
                 core::array::from_fn(|k| laws[k].coefficient(Vec3::ZERO, Vec3::ZERO));
             let betas: [Real; MAX_SPECIES] = core::array::from_fn(|k| noises[k].beta());
-            let driven = matches!(drive, DriveModel::WhiteNoise(_));
+            let driven = drive.white_noise().is_some();
             Some(mixture_rotation(
                 physics,
                 r,
                 &species,
                 &alphas[..types],
                 driven.then_some(&betas[..list.len()]),
-                matches!(drive, DriveModel::Gaussian(_)),
+                drive.declared_kind().is_some(),
             )?)
         }
     };

@@ -76,8 +76,6 @@ fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
         &mut c.impact_beta0,
         &mut c.impact_delta,
         &mut c.beta,
-        &mut c.zeta,
-        &mut c.g,
         &mut c.mass,
         &mut c.temperature,
         &mut c.dt,
@@ -88,6 +86,13 @@ fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
         &mut c.background_temperature,
     ] {
         if u.ratio(1u8, 4u8).unwrap_or(false) {
+            *f = wild(u);
+        }
+    }
+    // A declared drive's parameters (the Gaussian and Langevin thermostats, the constant
+    // force, ...), in `drive_params`.
+    for f in &mut c.drive_params {
+        if u.ratio(1u8, 2u8).unwrap_or(false) {
             *f = wild(u);
         }
     }
@@ -156,8 +161,7 @@ fn bounded_work(c: &gdsmc_config) -> bool {
         && speed2(c.temperature, c.mass)
         && c.drift.iter().all(|d| within(*d, -10.0, 10.0))
         && within(c.beta, 0.0, 100.0)
-        && within(c.zeta, -1.0, 1.0)
-        && within(c.g, 0.0, 100.0)
+        && c.drive_params.iter().all(|x| within(*x, -1.0, 100.0))
         && within(c.background_c * c.background_density, 0.0, 100.0)
         && speed2(c.background_temperature, c.background_mass)
         && c.background_drift.iter().all(|d| within(*d, -10.0, 10.0))

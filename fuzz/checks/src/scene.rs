@@ -5,7 +5,9 @@
 
 use crate::wild;
 use arbitrary::Unstructured;
+use gdsmc_core::physics::{DriveKind, KernelKind, SchemeKind};
 use std::path::Path;
+use std::sync::LazyLock;
 
 /// Arbitrary bytes as a scene file.
 pub fn scene_reader(data: &[u8]) {
@@ -34,76 +36,77 @@ fn check(text: &str, overrides: &[String]) {
     }
 }
 
-/// Every table and key of the schema with the kinds of values it takes.
-pub const KEYS: &[(&str, &[&str])] = &[
-    ("particles", &["n"]),
-    (
-        "particles.initial",
-        &["kind", "mass", "temperature", "drift", "components"],
-    ),
-    (
-        "collisions",
-        &[
-            "kernel",
-            "lambda",
-            "gamma",
-            "c",
-            "restitution",
-            "impact_speed_law",
-        ],
-    ),
-    (
-        "drive",
-        &[
-            "kind",
-            "beta",
-            "zeta",
-            "g",
-            "kernel",
-            "c",
-            "density",
-            "mass",
-            "temperature",
-            "drift",
-        ],
-    ),
-    ("scheme", &["kind", "dt", "step_factor"]),
-    (
-        "observe",
-        &[
-            "t_start",
-            "t_end",
-            "intervals",
-            "collisional_pairs",
-            "steady_from",
-        ],
-    ),
-    ("run", &["ensembles", "seed"]),
-    ("histogram", &["shells", "radius"]),
-    ("reduced_histogram", &["shells", "radius"]),
-    ("marginal_histogram", &["axis", "bins", "radius"]),
-];
+/// Every table and key of the schema with the kinds of values it takes; `[drive]`'s keys are
+/// derived from the core: none's, white noise's and the host medium's beside every declared
+/// drive's parameters (`DriveKind::params`), so a new drive is fuzzed with its keys.
+pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::new(|| {
+    let mut drive = vec![
+        "kind",
+        "beta",
+        "kernel",
+        "c",
+        "density",
+        "mass",
+        "temperature",
+        "drift",
+    ];
+    for k in DriveKind::ALL {
+        for p in k.params().unwrap_or(&[]) {
+            if !drive.contains(&p.name) {
+                drive.push(p.name);
+            }
+        }
+    }
+    vec![
+        ("particles", vec!["n"]),
+        (
+            "particles.initial",
+            vec!["kind", "mass", "temperature", "drift", "components"],
+        ),
+        (
+            "collisions",
+            vec![
+                "kernel",
+                "lambda",
+                "gamma",
+                "c",
+                "restitution",
+                "impact_speed_law",
+            ],
+        ),
+        ("drive", drive),
+        ("scheme", vec!["kind", "dt", "step_factor"]),
+        (
+            "observe",
+            vec![
+                "t_start",
+                "t_end",
+                "intervals",
+                "collisional_pairs",
+                "steady_from",
+            ],
+        ),
+        ("run", vec!["ensembles", "seed"]),
+        ("histogram", vec!["shells", "radius"]),
+        ("reduced_histogram", vec!["shells", "radius"]),
+        ("marginal_histogram", vec!["axis", "bins", "radius"]),
+    ]
+});
 
-/// The words the schema's string keys take, and some it does not.
-pub const WORDS: &[&str] = &[
-    "maxwell",
-    "hard-spheres",
-    "vhs",
-    "none",
-    "white-noise",
-    "host-medium",
-    "gaussian",
-    "constant-force",
-    "no-splitting",
-    "euler",
-    "strang",
-    "time-stepped",
-    "maxwellian",
-    "mixture",
-    "",
-    "MAXWELL",
-    "hard_spheres",
-];
+/// The words the schema's string keys take, and some it does not: every kernel's, drive's and
+/// scheme's scene word from the core's kinds, the host medium's background kernels, the initial
+/// distributions, and near misses.
+pub static WORDS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
+    let mut words: Vec<&'static str> = KernelKind::ALL
+        .iter()
+        .map(|k| k.scene_name())
+        .chain(DriveKind::ALL.iter().map(|k| k.scene_name()))
+        .chain(SchemeKind::ALL.iter().map(|k| k.scene_name()))
+        .collect();
+    words.extend(["maxwellian", "mixture", "", "MAXWELL", "hard_spheres"]);
+    words.dedup();
+    words
+});
 
 fn value(u: &mut Unstructured<'_>, depth: u32) -> toml::Value {
     match u.int_in_range(0u8..=7).unwrap_or(0) {
@@ -149,7 +152,7 @@ pub fn scene_structured(data: &[u8]) {
     let mut doc = toml::Table::new();
     let mut paths = Vec::new();
     for _ in 0..u.int_in_range(0u8..=24).unwrap_or(0) {
-        let (table, keys) = KEYS[u.choose_index(KEYS.len()).unwrap_or(0)];
+        let (table, keys) = &KEYS[u.choose_index(KEYS.len()).unwrap_or(0)];
         let key = keys[u.choose_index(keys.len()).unwrap_or(0)];
         let v = value(&mut u, 0);
         let mut t = &mut doc;

@@ -1,88 +1,91 @@
-//! `[drive]`: which drive, and only the keys that drive uses.
+//! `[drive]`: which drive, and only the keys that drive uses. A drive declared by its type
+//! ([`gdsmc_core::drive::Declared`]) has the keys its declaration names, with their defaults;
+//! none, white noise and the host medium are written out here.
 
 use super::Ctx;
 use crate::error::Error;
-use crate::schema::{BackgroundKind, DriveKind, DriveSpec, one};
-use gdsmc_core::physics::{BackgroundKernel, DriveChoice, Param};
+use crate::schema::{BackgroundKind, DriveSpec};
+use gdsmc_core::physics::MAX_DRIVE_PARAMS;
+use gdsmc_core::physics::{BackgroundKernel, DriveChoice, DriveKind, DriveParams, Param};
 use toml::Spanned;
 
-/// A required drive key: its value, recorded as holding `param`.
-fn required(
-    ctx: &mut Ctx<'_>,
-    v: &Option<Spanned<f64>>,
-    param: Param,
-    key: &str,
-    kind: &str,
-) -> Result<f64, Error> {
-    match v {
+/// The keys of the host medium's table besides `kind`.
+const HOST_KEYS: [&str; 6] = ["kernel", "c", "density", "mass", "temperature", "drift"];
+
+/// The keys `kind` reads besides `kind` itself.
+pub fn keys_of(kind: DriveKind) -> Vec<&'static str> {
+    match kind {
+        DriveKind::None => vec![],
+        DriveKind::WhiteNoise => vec!["beta"],
+        DriveKind::HostMedium => HOST_KEYS.to_vec(),
+        declared => declared
+            .params()
+            .map_or_else(Vec::new, |ps| ps.iter().map(|p| p.name).collect()),
+    }
+}
+
+/// A required number of the drive: its value, recorded as holding `param`.
+fn required(ctx: &mut Ctx<'_>, d: &DriveSpec, key: &str, param: Param) -> Result<f64, Error> {
+    match d.numbers.get(key) {
         Some(v) => {
             ctx.holds(param, format!("drive.{key}"), v.span());
             Ok(*v.get_ref())
         }
         None => ctx.invalid(
-            0..0,
+            kind_span(d),
             &format!("drive.{key}"),
-            format!("is required with kind = \"{kind}\""),
+            format!("is required with kind = \"{}\"", d.kind().scene_name()),
         ),
     }
 }
 
-/// A host-medium key with default 1, recorded as holding `param`.
-fn or_one(ctx: &mut Ctx<'_>, v: &Option<Spanned<f64>>, param: Param, key: &str) -> f64 {
-    let v = v.clone().unwrap_or_else(one);
+/// A number of the drive with a default, recorded as holding `param`.
+fn or_default(ctx: &mut Ctx<'_>, d: &DriveSpec, key: &str, param: Param, default: f64) -> f64 {
+    let v = d
+        .numbers
+        .get(key)
+        .cloned()
+        .unwrap_or_else(|| Spanned::new(0..0, default));
     ctx.holds(param, format!("drive.{key}"), v.span());
     *v.get_ref()
 }
 
+/// Where the file names the drive's kind (0..0 when it does not).
+fn kind_span(d: &DriveSpec) -> std::ops::Range<usize> {
+    d.kind.as_ref().map_or(0..0, Spanned::span)
+}
+
 /// The drive, with the keys that hold its parameters.
 pub(super) fn drive(ctx: &mut Ctx<'_>, d: &DriveSpec) -> Result<DriveChoice, Error> {
-    let host_keys = [
-        ("kernel", d.kernel.is_some()),
-        ("c", d.c.is_some()),
-        ("density", d.density.is_some()),
-        ("mass", d.mass.is_some()),
-        ("temperature", d.temperature.is_some()),
-        ("drift", d.drift.is_some()),
-    ];
-    if d.kind != DriveKind::HostMedium
-        && let Some((k, _)) = host_keys.iter().find(|(_, set)| *set)
-    {
-        return ctx.invalid(
-            0..0,
-            &format!("drive.{k}"),
-            "is only used with kind = \"host-medium\"",
-        );
-    }
-    for (key, kind, v, name) in [
-        ("beta", DriveKind::WhiteNoise, &d.beta, "white-noise"),
-        ("zeta", DriveKind::Gaussian, &d.zeta, "gaussian"),
-        ("g", DriveKind::ConstantForce, &d.g, "constant-force"),
-    ] {
-        if d.kind != kind
-            && let Some(b) = v
-        {
+    let kind = d.kind();
+    let keys = keys_of(kind);
+    let written = d
+        .numbers
+        .iter()
+        .map(|(k, v)| (k.as_str(), v.span()))
+        .chain(d.kernel.map(|_| ("kernel", 0..0)))
+        .chain(d.drift.as_ref().map(|v| ("drift", v.span())));
+    for (key, span) in written {
+        if !keys.contains(&key) {
+            let has = if keys.is_empty() {
+                "it has no other key".to_string()
+            } else {
+                format!("its keys: {}", keys.join(", "))
+            };
             return ctx.invalid(
-                b.span(),
+                span,
                 &format!("drive.{key}"),
-                format!("is only used with kind = \"{name}\""),
+                format!("is not a key of kind = \"{}\" ({has})", kind.scene_name()),
             );
         }
     }
-    Ok(match d.kind {
+    Ok(match kind {
         DriveKind::None => DriveChoice::None,
-        DriveKind::WhiteNoise => {
-            DriveChoice::WhiteNoise(required(ctx, &d.beta, Param::Beta, "beta", "white-noise")?)
-        }
-        DriveKind::Gaussian => {
-            DriveChoice::Gaussian(required(ctx, &d.zeta, Param::Zeta, "zeta", "gaussian")?)
-        }
-        DriveKind::ConstantForce => {
-            DriveChoice::ConstantForce(required(ctx, &d.g, Param::G, "g", "constant-force")?)
-        }
+        DriveKind::WhiteNoise => DriveChoice::WhiteNoise(required(ctx, d, "beta", Param::Beta)?),
         DriveKind::HostMedium => {
             let Some(kernel) = d.kernel else {
                 return ctx.invalid(
-                    0..0,
+                    kind_span(d),
                     "drive.kernel",
                     "is required with kind = \"host-medium\" (\"maxwell\" or \"hard-spheres\")",
                 );
@@ -98,17 +101,26 @@ pub(super) fn drive(ctx: &mut Ctx<'_>, d: &DriveSpec) -> Result<DriveChoice, Err
                     BackgroundKind::Maxwell => BackgroundKernel::Maxwell,
                     BackgroundKind::HardSpheres => BackgroundKernel::HardSpheres,
                 },
-                c1: or_one(ctx, &d.c, Param::BackgroundC, "c"),
-                density: or_one(ctx, &d.density, Param::BackgroundDensity, "density"),
-                mass: or_one(ctx, &d.mass, Param::BackgroundMass, "mass"),
-                temperature: or_one(
-                    ctx,
-                    &d.temperature,
-                    Param::BackgroundTemperature,
-                    "temperature",
-                ),
+                c1: or_default(ctx, d, "c", Param::BackgroundC, 1.0),
+                density: or_default(ctx, d, "density", Param::BackgroundDensity, 1.0),
+                mass: or_default(ctx, d, "mass", Param::BackgroundMass, 1.0),
+                temperature: or_default(ctx, d, "temperature", Param::BackgroundTemperature, 1.0),
                 drift: drift.map_or([0.0; 3], |s| s.get_ref().0),
             }
+        }
+        declared => {
+            let specs = declared.params().unwrap_or(&[]);
+            let mut values = [0.0; MAX_DRIVE_PARAMS];
+            for (i, p) in specs.iter().enumerate() {
+                let param = Param::Drive(declared, i);
+                values[i] = match p.default {
+                    Some(x) => or_default(ctx, d, p.name, param, x),
+                    None => required(ctx, d, p.name, param)?,
+                };
+            }
+            let params = DriveParams::new(declared, &values[..specs.len()])
+                .expect("a declared drive takes one value per parameter");
+            DriveChoice::Declared(params)
         }
     })
 }

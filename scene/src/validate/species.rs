@@ -5,7 +5,8 @@
 
 use super::Ctx;
 use crate::error::Error;
-use crate::schema::{DriveKind, InitialKind, SceneFile};
+use crate::schema::{InitialKind, SceneFile};
+use gdsmc_core::physics::DriveKind;
 use gdsmc_core::physics::{MAX_PAIRS, MAX_SPECIES, Param, SpeciesChoice};
 use toml::Spanned;
 
@@ -115,7 +116,7 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
     }
     let counts = counts(&fractions, n);
     out.fractions = fractions;
-    let drive_beta = file.drive.beta.as_ref().map_or(0.0, |b| *b.get_ref());
+    let drive_beta = file.drive.numbers.get("beta").map_or(0.0, |b| *b.get_ref());
     for (k, s) in list.iter().enumerate() {
         if counts[k] == 0 {
             return ctx.invalid(
@@ -138,7 +139,7 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
             s.diameter.span(),
         );
         let beta = match &s.beta {
-            Some(b) if file.drive.kind != DriveKind::WhiteNoise => {
+            Some(b) if file.drive.kind() != DriveKind::WhiteNoise => {
                 return ctx.invalid(
                     b.span(),
                     &key("beta"),
@@ -150,7 +151,7 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
                 *b.get_ref()
             }
             None => {
-                let span = file.drive.beta.as_ref().map_or(0..0, |b| b.span());
+                let span = file.drive.numbers.get("beta").map_or(0..0, |b| b.span());
                 ctx.holds(Param::SpeciesBeta(k), "drive.beta", span);
                 drive_beta
             }

@@ -6,7 +6,7 @@ use crate::reference::exact::sonine::mu2_maxwellian;
 use crate::reference::exact::tail;
 use crate::run::RunStats;
 use crate::run::columns::name;
-use crate::scene::{DriveChoice, KernelChoice, Scene};
+use crate::scene::{DriveKind, KernelChoice, Scene};
 
 /// Mean and 99.9% half-width of a column: the steady-state average when the scene has one,
 /// else the last observation.
@@ -88,14 +88,15 @@ pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
             "first Sonine, MS (26)",
         ),
     };
-    let (equation, amplitude, power) = match scene.physics().drive {
-        DriveChoice::WhiteNoise(_) => ("MS (36)", tail::a_white_noise_36(mu2), 1.5),
-        DriveChoice::Gaussian(_) | DriveChoice::None => ("MS (42)", tail::a_gaussian_42(mu2), 1.0),
-        DriveChoice::ConstantForce(_) => {
+    // MS's tails of its own drives; none for another drive (a host medium, a Langevin bath).
+    let (equation, amplitude, power) = match scene.physics().drive.kind() {
+        DriveKind::WhiteNoise => ("MS (36)", tail::a_white_noise_36(mu2), 1.5),
+        DriveKind::Gaussian | DriveKind::None => ("MS (42)", tail::a_gaussian_42(mu2), 1.0),
+        DriveKind::ConstantForce => {
             let (c1, _) = settled(stats, name::C1)?;
             ("MS (52)", tail::a_constant_force_52(mu2, c1), 2.0)
         }
-        DriveChoice::HostMedium { .. } => return None,
+        _ => return None,
     };
     Some(TailLaw {
         equation,

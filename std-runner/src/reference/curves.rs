@@ -3,7 +3,7 @@
 use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
 use crate::run::columns::name;
 use crate::run::{initial_sampler, initial_temperature};
-use crate::scene::{BackgroundKernel, DriveChoice, KernelChoice, Scene, SchemeChoice};
+use crate::scene::{BackgroundKernel, DriveChoice, DriveKind, KernelChoice, Scene, SchemeChoice};
 
 /// A named reference curve `t -> value` for an observable column.
 pub struct ReferenceCurve {
@@ -61,13 +61,10 @@ fn smooth_maxwell(scene: &Scene) -> Option<(f64, f64, f64)> {
 pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
     let (alpha, gamma, c) = smooth_maxwell(scene)?;
     let t0 = initial_temperature(scene);
-    let m = |beta| MaxwellTemperature::new(t0, alpha, beta, gamma, c);
-    match scene.physics().drive {
-        DriveChoice::None => Some(m(0.0)),
-        DriveChoice::WhiteNoise(b) => Some(m(b)),
-        DriveChoice::Gaussian(z) => Some(m(0.0).with_gaussian(z)),
-        DriveChoice::ConstantForce(_) | DriveChoice::HostMedium { .. } => None,
-    }
+    // Every drive that heats linearly (the core's declaration: none, white noise, the Gaussian
+    // and Langevin thermostats, ...) has it exact.
+    let heating = scene.model().heating()?;
+    Some(MaxwellTemperature::new(t0, alpha, 0.0, gamma, c).with_heating(heating))
 }
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
@@ -155,11 +152,12 @@ fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianA
     if ph.rotation.is_some() || ph.dimension != gdsmc_core::physics::DimensionChoice::Three {
         return None;
     }
-    // Nor does it know a host medium or the constant force, which move each species'
-    // temperature.
-    if matches!(
-        ph.drive,
-        DriveChoice::HostMedium { .. } | DriveChoice::ConstantForce(_)
+    // Nor does it know a drive but white noise and the Gaussian thermostat (which scales every
+    // species alike): a host medium, the constant force or a Langevin bath move each
+    // species' temperature.
+    if !matches!(
+        ph.drive.kind(),
+        DriveKind::None | DriveKind::WhiteNoise | DriveKind::Gaussian
     ) {
         return None;
     }
@@ -197,9 +195,9 @@ pub fn rough_mixture_approximation(
     // The thermostat on translation alone moves the cooling state's theta, and a host medium
     // or the constant force every temperature: the approximation (noise and collisions) follows neither, so it
     // draws nothing there.
-    if matches!(
-        scene.physics().drive,
-        DriveChoice::Gaussian(_) | DriveChoice::HostMedium { .. } | DriveChoice::ConstantForce(_)
+    if !matches!(
+        scene.physics().drive.kind(),
+        DriveKind::None | DriveKind::WhiteNoise
     ) {
         return None;
     }
@@ -369,13 +367,13 @@ pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::Rou
     let alpha = scene.physics().restitution.constant()?;
     let (strength, lambda) = scene.physics().kernel.rate_constants();
     // The constant force's work depends on `E|v - V|` (MS (14)), which the approximation
-    // does not follow: no curve.
-    let (beta, zeta) = match scene.physics().drive {
-        DriveChoice::WhiteNoise(b) => (b, 0.0),
-        DriveChoice::Gaussian(z) => (0.0, z),
-        DriveChoice::None => (0.0, 0.0),
-        DriveChoice::ConstantForce(_) | DriveChoice::HostMedium { .. } => return None,
-    };
+    // does not follow, nor does it a host medium's encounters: no curve (they heat otherwise
+    // than linearly).
+    // A drive that heats the translation linearly (the core's declaration, `Heating`) is
+    // `dT/dt = a + b T` in the approximation's equations: white noise `2 beta`, a thermostat
+    // `2 zeta T`, a Langevin bath both.
+    let h = scene.model().heating()?;
+    let (beta, zeta) = (h.a / 2.0, h.b / 2.0);
     let mut ma = crate::reference::rough::RoughApproximation::in_dimension(
         scene.dimension(),
         alpha,
@@ -461,8 +459,8 @@ pub fn maxwell_cumulant(
     use crate::reference::maxwell_cumulant::{MaxwellCumulant, moment_ratio};
     let (alpha, gamma, c) = smooth_maxwell(scene)?;
     if !matches!(
-        scene.physics().drive,
-        DriveChoice::None | DriveChoice::Gaussian(_)
+        scene.physics().drive.kind(),
+        DriveKind::None | DriveKind::Gaussian
     ) || matches!(scene.physics().scheme, SchemeChoice::TimeStepped(_))
     {
         return None;
@@ -568,7 +566,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             of: name::T,
             source: "GRW (13)-(14)",
             kind: Kind::Limit,
-            curve: Box::new(move |t| mt.at(t) + v0),
+            curve: Box::new(move |t| mt.at(t) + v0 * mt.drift_factor(t)),
         });
         out.push(ReferenceCurve {
             name: "T_bulk_exact",
@@ -598,7 +596,7 @@ pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
             of: name::T,
             source: "exact ensemble mean at this n and scheme",
             kind: Kind::MeanAtN,
-            curve: Box::new(move |t| raw(t) + mt.bulk_to_raw(n, t) + v0),
+            curve: Box::new(move |t| raw(t) + mt.bulk_to_raw(n, t) + v0 * mt.drift_factor(t)),
         });
         out.push(ReferenceCurve {
             name: "T_bulk_mean_n",

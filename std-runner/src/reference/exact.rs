@@ -1,6 +1,7 @@
 //! Exact reference solutions, each with its paper and equation.
 
 use crate::reference::mutation::{Reference, mutated};
+use gdsmc_core::drive::Heating;
 
 /// GRW (13)-(14) / RW (24)-(25): the temperature of the heated Maxwell gas, `B = gamma C_0`,
 /// `T(t) = T_inf + (T_0 - T_inf) exp(-k t)`, `k = gamma pi C_0 (1 - alpha^2)`,
@@ -13,10 +14,10 @@ pub struct MaxwellTemperature {
     pub t0: f64,
     /// Decay rate `k = gamma pi C_0 (1 - alpha^2)`.
     pub k: f64,
-    /// White-noise strength beta.
-    pub beta: f64,
-    /// Gaussian thermostat rate zeta (MS (12)); 0 without one.
-    pub zeta: f64,
+    /// How the drive changes the temperature ([`Heating`]: white noise `(2 beta, 0, 0)`, the
+    /// Gaussian thermostat `(0, 2 zeta, 0)`, the Langevin thermostat `(2 gamma T_b, -2 gamma,
+    /// -2 gamma)`).
+    pub heating: Heating,
 }
 
 impl MaxwellTemperature {
@@ -25,9 +26,19 @@ impl MaxwellTemperature {
         MaxwellTemperature {
             t0,
             k: gamma * std::f64::consts::PI * c0 * (1.0 - alpha * alpha),
-            beta,
-            zeta: 0.0,
+            heating: Heating {
+                a: 2.0 * beta,
+                b: 0.0,
+                p: 0.0,
+            },
         }
+    }
+
+    /// With the drive's heating `h` instead of white noise (the Maxwell gas's temperature is
+    /// exact for every drive that heats linearly, [`Heating`]): `T' = a + (b - k) T`.
+    pub fn with_heating(mut self, h: Heating) -> Self {
+        self.heating = h;
+        self
     }
 
     /// With a Gaussian thermostat `F = m zeta (v - V)` (MS (12), about the bulk velocity as
@@ -35,30 +46,30 @@ impl MaxwellTemperature {
     /// (no white noise). Exact at finite `n` for the Maxwell kernel in any dimension: the
     /// scaling of `v - V` commutes with collisions whose rate does not depend on `|u|`.
     pub fn with_gaussian(mut self, zeta: f64) -> Self {
-        self.zeta = zeta;
+        self.heating.b = 2.0 * zeta;
         self
     }
 
-    /// The net decay rate `k - 2 zeta`.
+    /// The net decay rate `k - b` (`k - 2 zeta` with a Gaussian thermostat).
     fn rate(&self) -> f64 {
-        self.k - 2.0 * self.zeta
+        self.k - self.heating.b
     }
 
     /// `T(t)`; for `alpha = 1` (`k = 0`) the limit `T_0 + 2 beta t` (RW, after (25)).
     pub fn at(&self, t: f64) -> f64 {
         let r = self.rate();
         let x = if r == 0.0 {
-            self.t0 + 2.0 * self.beta * t
+            self.t0 + self.heating.a * t
         } else {
             let e = (-r * t).exp();
-            self.t0 * e + 2.0 * self.beta / r * (1.0 - e)
+            self.t0 * e + self.heating.a / r * (1.0 - e)
         };
         mutated(Reference::MaxwellTemperature, x)
     }
 
     /// `T_inf = 2 beta / k` (GRW (14), RW (25)).
     pub fn stationary(&self) -> f64 {
-        2.0 * self.beta / self.rate()
+        self.heating.a / self.rate()
     }
 
     /// The exact mean over ensembles of the bulk temperature `T_bulk` of an `n`-particle system
@@ -88,12 +99,24 @@ impl MaxwellTemperature {
     /// `E |P(t)|^2 / (3 n^2) = (T_0 + 2 beta t) / n`: what the raw temperature's mean adds to
     /// the bulk one (zero-mean start; collisions keep `P`, and so does the Gaussian thermostat,
     /// which scales the peculiar velocity `v - V` (MS (61)); kicks make it a random walk).
-    /// The same in any dimension: `E |P|^2 = d n T_0 + 2 d n beta t` over `d n^2`.
+    /// The same in any dimension: `E |P|^2 = d n T_0 + 2 d n beta t` over `d n^2`. In general
+    /// `U = E|P|^2/(d n)` obeys `U' = a + p U` ([`Heating`]; the Langevin bath's drag makes `P`
+    /// decay), and this is `U(t)/n`.
     pub fn bulk_to_raw(&self, n: usize, t: f64) -> f64 {
-        mutated(
-            Reference::BulkToRaw,
-            (self.t0 + 2.0 * self.beta * t) / n as f64,
-        )
+        let (a, p) = (self.heating.a, self.heating.p);
+        let u = if p == 0.0 {
+            self.t0 + a * t
+        } else {
+            let e = (p * t).exp_m1();
+            self.t0 + self.t0 * e + a / p * e
+        };
+        mutated(Reference::BulkToRaw, u / n as f64)
+    }
+
+    /// The factor `e^{p t}` by which the drive carries the square of an initial drift
+    /// ([`Heating`]: 1 but for a drag on the whole velocity).
+    pub fn drift_factor(&self, t: f64) -> f64 {
+        (self.heating.p * t).exp()
     }
 
     /// The exact ensemble mean of `T_bulk` of the splitting schemes (RW Algorithms 1 and 2)
@@ -111,10 +134,16 @@ impl MaxwellTemperature {
         let m = (t / dt).round();
         let nf = n as f64;
         let x0 = 3.0 * (nf - 1.0) * self.t0;
-        let b = 6.0
-            * (nf - 1.0)
-            * self.beta
-            * dt
+        // The kicking step: `X -> e^{b dt} X + 3 (n - 1) (a/b)(e^{b dt} - 1)` (`a dt` for
+        // `b = 0`); the scaling `e^{b dt}` is folded into the step's factor below.
+        // (`6 (n - 1) (a/2) dt` for `b = 0`: RW's white noise, `a = 2 beta`, as written there.)
+        let (ha, hb) = (self.heating.a, self.heating.b);
+        let added = if hb == 0.0 {
+            6.0 * (nf - 1.0) * (ha / 2.0) * dt
+        } else {
+            3.0 * (nf - 1.0) * (ha / hb * (hb * dt).exp_m1())
+        };
+        let b = added
             * if strang {
                 (-0.5 * self.k * dt).exp()
             } else {
@@ -122,7 +151,7 @@ impl MaxwellTemperature {
             };
         let a = (-self.rate() * dt).exp();
         let am = a.powf(m);
-        let geometric = if self.k == 0.0 {
+        let geometric = if self.rate() == 0.0 {
             m
         } else {
             (1.0 - am) / (1.0 - a)

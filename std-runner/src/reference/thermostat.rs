@@ -16,7 +16,7 @@
 //! none. A Maxwell gas needs none in any dimension: its exact `T` is GRW (13) times `e^{2 zeta
 //! t}` (`curves::maxwell_temperature`).
 
-use crate::scene::{DriveChoice, RestitutionLaw, Scene};
+use crate::scene::{DriveKind, RestitutionLaw, Scene};
 use statrs::function::gamma::gamma;
 use std::f64::consts::PI;
 
@@ -44,9 +44,11 @@ impl GaussianBalance {
             return None;
         }
         let t0 = crate::run::initial_temperature(scene);
-        let DriveChoice::Gaussian(zeta) = scene.physics().drive else {
-            return None;
-        };
+        let zeta = scene
+            .physics()
+            .drive
+            .params_of(DriveKind::Gaussian)?
+            .get("zeta")?;
         let RestitutionLaw::Constant(alpha) = scene.physics().restitution else {
             return None;
         };

@@ -17,6 +17,7 @@
 
 use crate::error::Error;
 use crate::scene::{DriveChoice, RestitutionLaw, Scene, SchemeChoice};
+use gdsmc_core::drive::WorkInput;
 use std::f64::consts::PI;
 
 /// Work units (events and particle updates) a run may need without `--allow-long`: the core's
@@ -61,23 +62,6 @@ impl WorkEstimate {
     /// All work units.
     pub fn total(&self) -> f64 {
         self.events + self.background + self.updates + self.output
-    }
-}
-
-/// `int_0^t y`, `y(0) = 1`, for the logistic law `y' = r y - c y^2`: with `y = (T/T0)^s` the
-/// candidate rate of a gas under the Gaussian thermostat (`r = 2 s zeta`, `c = s zeta_0`),
-/// relative to its start. Written so that no intermediate overflows where the result does not.
-fn logistic_integral(r: f64, c: f64, t: f64) -> f64 {
-    if c == 0.0 {
-        return if r == 0.0 { t } else { (r * t).exp_m1() / r };
-    }
-    if r == 0.0 {
-        (c * t).ln_1p() / c
-    } else if r > 0.0 {
-        // ln(1 + c (e^{rt} - 1)/r) = r t + ln(e^{-rt} + (c/r)(1 - e^{-rt})).
-        (r * t + ((-r * t).exp() - (c / r) * (-r * t).exp_m1()).ln()) / c
-    } else {
-        (c * (r * t).exp_m1() / r).ln_1p() / c
     }
 }
 
@@ -137,14 +121,19 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
         };
         (r.noise, r.temperature, loss)
     });
-    // Every match on the drive below names every drive (no catch-all): a new drive does not
-    // compile until its bound is written here.
+    // None, white noise and the host medium are written out; a declared drive gives its own
+    // bound ([`gdsmc_core::drive::Declared::work`]: the largest temperature, and the time
+    // at the start's collision rate).
+    let (s, zeta0) = haff(t0, gc, lambda, alpha);
+    let work = scene.model().drive_work(WorkInput {
+        t0,
+        t_end,
+        s,
+        zeta0,
+    });
     let beta = match p.drive {
         DriveChoice::WhiteNoise(beta) => beta,
-        DriveChoice::None
-        | DriveChoice::Gaussian(_)
-        | DriveChoice::ConstantForce(_)
-        | DriveChoice::HostMedium { .. } => 0.0,
+        DriveChoice::None | DriveChoice::HostMedium { .. } | DriveChoice::Declared(_) => 0.0,
     };
     let heated = matches!(p.drive, DriveChoice::WhiteNoise(_)) || noise_rot > 0.0;
     let temperature = match p.drive {
@@ -169,18 +158,9 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
             let lightest = p.species.iter().map(|s| s.mass).fold(1.0, f64::min);
             t0.max(temperature / mass).max(temperature / lightest)
         }
-        DriveChoice::ConstantForce(g) => {
-            // (2/3) g <|c|> = zeta_0 (T/T0)^s T with <|c|> = sqrt(8 T/pi): the balance, and
-            // the speed g t the force adds with no collision at all.
-            let (s, zeta0) = haff(t0, gc, lambda, alpha);
-            let drive = 2.0 / 3.0 * g * (8.0 / PI).sqrt();
-            let stationary = (drive * t0.powf(s) / zeta0).powf(1.0 / (s + 0.5));
-            let bound = (t0.sqrt() + g * t_end / 3f64.sqrt()).powi(2);
-            t0.max(stationary.min(bound))
-        }
-        // Not heated, or the Gaussian thermostat, whose heating the effective time below
-        // takes in (the logistic law): the start's temperature.
-        DriveChoice::WhiteNoise(_) | DriveChoice::None | DriveChoice::Gaussian(_) => t0,
+        DriveChoice::Declared(_) => work.map_or(t0, |(t, _)| t),
+        // Not heated: the start's temperature.
+        DriveChoice::WhiteNoise(_) | DriveChoice::None => t0,
     };
     // A rough gas's rotation can hand its energy to the translation.
     let temperature = if p.rotation.is_some() {
@@ -196,17 +176,14 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     // A gas with no drive cools (Haff's law for hard spheres): with the cooling rate
     // zeta0 = (1 - alpha^2)/4 nu0 and the rate going as T^(lambda/2), T = T0 (1 + s zeta0
     // t)^(-1/s), s = lambda/2, the rate integrates to ln(1 + s zeta0 t)/(s zeta0) instead of t.
-    // The Gaussian thermostat adds 2 zeta T: the logistic law of logistic_integral.
-    let (s, zeta0) = haff(t0, gc, lambda, alpha);
+    // A declared drive gives its own time (the Gaussian thermostat: the logistic law of its
+    // heating 2 zeta T against the cooling).
     let effective_time = match p.drive {
         DriveChoice::None if !heated && s * zeta0 * t_end > 1e-6 => {
             (s * zeta0 * t_end).ln_1p() / (s * zeta0)
         }
-        DriveChoice::Gaussian(zeta) => logistic_integral(2.0 * s * zeta, s * zeta0, t_end),
-        DriveChoice::None
-        | DriveChoice::WhiteNoise(_)
-        | DriveChoice::ConstantForce(_)
-        | DriveChoice::HostMedium { .. } => t_end,
+        DriveChoice::Declared(_) => work.map_or(t_end, |(_, time)| time),
+        DriveChoice::None | DriveChoice::WhiteNoise(_) | DriveChoice::HostMedium { .. } => t_end,
     };
     // A host medium's grains at a typical speed `sqrt(3 T)`.
     let background = model.background_rate((3.0 * temperature).sqrt()) * n * t_end * m;

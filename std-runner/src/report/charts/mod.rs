@@ -67,13 +67,11 @@ pub fn title(scene: &crate::scene::Scene, ensembles: u64) -> String {
         (RestitutionLaw::Constant(_), false) => "alpha per pair".to_string(),
         (RestitutionLaw::ImpactSpeed { .. }, _) => "impact-speed alpha (BRS (9))".to_string(),
     };
+    // The core's words for the drive (a declared drive's from its declaration), but a
+    // mixture's white noise, whose strengths are each species' own.
     let drive = match ph.drive {
-        DriveChoice::None => "cooling freely".to_string(),
-        DriveChoice::WhiteNoise(b) if ph.species.is_empty() => format!("white noise (beta = {b})"),
-        DriveChoice::WhiteNoise(_) => "white noise".to_string(),
-        DriveChoice::Gaussian(z) => format!("Gaussian thermostat (zeta = {z})"),
-        DriveChoice::ConstantForce(g) => format!("constant force (g = {g})"),
-        DriveChoice::HostMedium { .. } => "in a host medium".to_string(),
+        DriveChoice::WhiteNoise(_) if !ph.species.is_empty() => "white noise".to_string(),
+        d => d.to_string(),
     };
     format!(
         "{particles}, {kernel}, {law}, {drive}, n = {}, {ensembles} ensembles",

@@ -1,0 +1,171 @@
+//! Drives declared by their type (rand_distr's model: the parameters, their rules and the
+//! rules' words beside the constructor). A declared drive names once, in its own file, its
+//! parameters ([`ParamSpec`]: name, rule, words, unit), how it is built from their values, how
+//! it acts in each dimension and on each mass ([`Declared::place`]), the words of a chart's
+//! title, the rate at which it heats the temperature when that rate is linear (the exact
+//! Maxwell-gas references follow from it) and the bound a run's work estimate takes; its row in
+//! the drive table (`physics/kinds.rs`) gives its scene word, C code and cargo feature. The
+//! scene's `[drive]` keys, the C ABI's `drive_params`, the validation's errors, the engine's
+//! drive level, the dispatch and the runner's words, references and estimate are derived from
+//! these declarations.
+
+use super::Drive;
+use crate::geometry::Geometry;
+use crate::math::{Real, exp_m1};
+
+/// Most parameters a declared drive has (the C ABI's `drive_params`).
+pub const MAX_DRIVE_PARAMS: usize = 4;
+
+/// The rule a declared parameter's value obeys. Its refusal is the physics error every front
+/// end prints (`drive.friction must be > 0, got -1`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rule {
+    /// Any finite number.
+    Finite,
+    /// A finite number `>= 0`.
+    AtLeastZero,
+    /// A finite number `> 0`.
+    Positive,
+}
+
+impl Rule {
+    /// Whether `x` obeys the rule.
+    #[must_use]
+    pub fn holds(self, x: Real) -> bool {
+        x.is_finite()
+            && match self {
+                Rule::Finite => true,
+                Rule::AtLeastZero => x >= 0.0,
+                Rule::Positive => x > 0.0,
+            }
+    }
+
+    /// The rule in words, as a scene's documentation states it.
+    #[must_use]
+    pub const fn words(self) -> &'static str {
+        match self {
+            Rule::Finite => "a finite number",
+            Rule::AtLeastZero => "a finite number >= 0",
+            Rule::Positive => "a finite number > 0",
+        }
+    }
+}
+
+/// A parameter of a declared drive.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParamSpec {
+    /// Its name: the scene key under `[drive]`, the name in errors and in titles.
+    pub name: &'static str,
+    /// The rule its value obeys.
+    pub rule: Rule,
+    /// What it is, in words (documentation, the C header's comments).
+    pub words: &'static str,
+    /// Its unit, in the scene's units (`"1/time"`, `"temperature"`, `"speed/time"`).
+    pub unit: &'static str,
+    /// Its value when the scene leaves it out (`None`: required).
+    pub default: Option<Real>,
+    /// A typical value that obeys the rule: the combination matrix, the fuzzers and the
+    /// documentation's examples run the drive with it.
+    pub example: Real,
+}
+
+/// What a run's work estimate takes from a drive: the temperature at the start, the run's
+/// last time and Haff's law of the kernel there (`dT/dt = -zeta0 (T/T0)^s T` from the
+/// collisions alone).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorkInput {
+    /// The temperature at the start.
+    pub t0: Real,
+    /// The run's last time.
+    pub t_end: Real,
+    /// Haff's exponent `s = lambda/2`.
+    pub s: Real,
+    /// The collisional cooling rate at `t0`.
+    pub zeta0: Real,
+}
+
+/// A drive that changes the temperature linearly (unit-mass particles, `d` components, `n` of
+/// them; `S = sum |v_i|^2`, `P = sum v_i`, `X = E[S - |P|^2/n] = d n E T_bulk`,
+/// `U = E|P|^2/(d n)`): the drive alone gives `dX/dt = d (n - 1) a + b X` and
+/// `dU/dt = a + p U`. White noise (GRW (18)): `(2 beta, 0, 0)`; the Gaussian thermostat, which
+/// scales `v - V` and keeps `P` (MS (12)): `(0, 2 zeta, 0)`; the Langevin thermostat:
+/// `(2 gamma T_b, -2 gamma, -2 gamma)`. With the Maxwell kernel the collisions take `k X` from
+/// `X` (`k = pi gamma C_0 (1 - alpha^2)`, GRW (13)) and keep `P`, so `E T_bulk = (1 - 1/n) T(t)`
+/// with `T' = a + (b - k) T`, and the raw temperature adds `U/n`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Heating {
+    /// The rate that does not depend on the temperature.
+    pub a: Real,
+    /// The rate per unit of the temperature about the bulk velocity.
+    pub b: Real,
+    /// The rate per unit of the bulk velocity's square, `|P|^2/(d n)`.
+    pub p: Real,
+}
+
+impl Heating {
+    /// `y(t)` of `y' = a + rate y`, `y(0) = y0`, in closed form.
+    #[must_use]
+    pub fn evolve(&self, y0: Real, rate: Real, t: Real) -> Real {
+        if rate == 0.0 {
+            y0 + self.a * t
+        } else {
+            let e = exp_m1(rate * t);
+            y0 + y0 * e + self.a / rate * e
+        }
+    }
+}
+
+/// A drive declared by its type.
+pub trait Declared: Drive + PartialEq + 'static {
+    /// Its parameters, in the order of their values (the C ABI's `drive_params`).
+    const PARAMS: &'static [ParamSpec];
+    /// Its name in a chart's title ("Langevin thermostat"); the title adds the parameters.
+    const TITLE: &'static str;
+    /// Why no exact (no-splitting) scheme exists for it, when none does: the scheme must then
+    /// be Euler, Strang or time-stepped.
+    const STEPPED_ONLY: Option<&'static str> = None;
+
+    /// The drive as a loop of dimension `G` takes it.
+    type In<G: Geometry>: Drive;
+
+    /// The drive of these values, each of which obeys its rule; `Err(i)` when parameter `i`
+    /// makes it overflow anyway.
+    fn from_values(values: &[Real]) -> Result<Self, usize>;
+
+    /// The drive acting on a grain of mass `mass` (a mixture's species; one species: 1) in
+    /// dimension `G`; `None` when that mass makes it overflow.
+    fn place<G: Geometry>(self, mass: Real) -> Option<Self::In<G>>;
+
+    /// How the drive alone changes the temperature, when it does so linearly ([`Heating`]):
+    /// then the Maxwell gas's temperature is exact with it. `None`: not linear.
+    fn heating(&self) -> Option<Heating> {
+        None
+    }
+
+    /// The largest temperature a run can reach and the time over which it collides at the
+    /// start's rate (a run's work estimate, an order of magnitude). Default, from
+    /// [`Declared::heating`]: the drive alone, with no collision to cool it, and the run's span.
+    fn work(&self, w: WorkInput) -> (Real, Real) {
+        let heated = match self.heating() {
+            Some(h) => h.evolve(w.t0, h.b, w.t_end),
+            None => w.t0,
+        };
+        (w.t0.max(heated), w.t_end)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each rule refuses what its words exclude, and every rule refuses what is not finite.
+    #[test]
+    fn rules_hold_as_worded() {
+        for r in [Rule::Finite, Rule::AtLeastZero, Rule::Positive] {
+            assert!(!r.holds(Real::NAN) && !r.holds(Real::INFINITY), "{r:?}");
+            assert!(r.holds(1.0), "{r:?}");
+        }
+        assert!(Rule::Finite.holds(-1.0) && !Rule::AtLeastZero.holds(-1.0));
+        assert!(Rule::AtLeastZero.holds(0.0) && !Rule::Positive.holds(0.0));
+    }
+}
