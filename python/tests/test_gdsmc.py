@@ -71,6 +71,9 @@ def strip_timing(v):
             "ms-constant-force",
             ["--n", "256", "--ensembles", "6", "--set", "observe.collisional_pairs=500"],
         ),
+        # The Langevin thermostat (a drive declared by its type in the core): its keys read,
+        # its exact finite-n temperature attached.
+        ("langevin-maxwell", ["--n", "200", "--ensembles", "8", "--seed", "11"]),
         # A granular mixture: the species' columns (T_s0, T_s0_ratio, ...) and references.
         ("mixture-maxwell", ["--n", "200", "--ensembles", "8", "--seed", "3"]),
         # Rough particles: the rotation's columns (T_rot, theta, ...) and references.
@@ -165,6 +168,19 @@ def test_bad_scenes_name_the_key():
     # SceneError is a ValueError; the scene itself is unchanged by a refused set.
     assert issubclass(gdsmc.SceneError, ValueError)
     assert s.overrides == []
+
+
+def test_the_langevin_thermostat_runs_and_meets_its_exact_temperature():
+    s = gdsmc.Scene.from_file(SCENES / "langevin-maxwell.toml")
+    with pytest.raises(gdsmc.SceneError, match=r"drive\.friction.*> 0.*-1"):
+        s.set("drive.friction", -1.0)
+    with pytest.raises(gdsmc.SceneError, match=r"drive\.zeta.*not a key.*langevin"):
+        s.set("drive.zeta", 0.5)
+    r = gdsmc.run(s, n=100, ensembles=400, seed=3)
+    exact = r.references["T_bulk_mean_n"]
+    # Jointly at 99.9% over the 21 times (Bonferroni): each 99.9% half-width (z 3.29, 400
+    # ensembles) widened to z(1 - 0.0005/21) = 4.07.
+    assert (abs(r.mean["T_bulk"] - exact) <= 4.07 / 3.29 * r.ci["T_bulk"]).all()
 
 
 def test_set_and_properties():

@@ -88,3 +88,30 @@ fn every_scheme_is_read() {
         assert_eq!(read(&scene(MAXWELL, NONE, &s)).scheme.kind(), k);
     }
 }
+
+/// docs/scenes.md names every drive's scene word and every key of a drive declared by its type
+/// (a row `drive.<name>`): a drive added to the core and not to the scene documentation fails.
+#[test]
+fn the_scene_documentation_names_every_drive_and_its_keys() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/scenes.md"))
+        .expect("docs/scenes.md");
+    let kinds_row = doc
+        .lines()
+        .find(|l| l.starts_with("| `drive.kind` |"))
+        .expect("the drive.kind row");
+    for k in DriveKind::ALL {
+        assert!(
+            kinds_row.contains(&format!("`\"{}\"`", k.scene_name())),
+            "docs/scenes.md's drive.kind row does not name \"{}\"",
+            k.scene_name()
+        );
+        for p in k.params().unwrap_or(&[]) {
+            assert!(
+                doc.contains(&format!("| `drive.{}` |", p.name)),
+                "docs/scenes.md has no row for drive.{} ({:?})",
+                p.name,
+                k
+            );
+        }
+    }
+}

@@ -78,6 +78,15 @@ static void config_errors(void) {
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.restitution");
     c = base(); c.beta = -1.0;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.beta");
+    /* A declared drive's parameters in drive_params, named by their place. */
+    c = base(); c.drive = GDSMC_DRIVE_LANGEVIN; c.drive_params[GDSMC_LANGEVIN_FRICTION] = -1.0;
+    c.drive_params[GDSMC_LANGEVIN_TEMPERATURE] = 1.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.drive_params[0] must be > 0, got -1");
+    c = base(); c.drive = GDSMC_DRIVE_LANGEVIN; c.drive_params[GDSMC_LANGEVIN_FRICTION] = 0.5;
+    c.drive_params[GDSMC_LANGEVIN_TEMPERATURE] = -2.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.drive_params[1] must be >= 0, got -2");
     c = base(); c.gamma = 0.0;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.gamma");
     c = base(); c.kernel = GDSMC_KERNEL_VHS; c.lambda = 2.0;

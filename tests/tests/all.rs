@@ -12,6 +12,7 @@ mod finite_outputs;
 mod hard_spheres;
 mod host_medium;
 mod impact_speed;
+mod langevin;
 mod maxwell_relaxation;
 mod mixture;
 mod mutated_scenes;
