@@ -86,3 +86,27 @@ pub fn time_index(stats: &RunStats, t: f64) -> usize {
         .position(|&x| (x - t).abs() < 1e-12)
         .expect("observation time")
 }
+
+/// Runs `s`, a Maxwell gas whose temperature is exact (GRW (13) with its drive's heating), and
+/// asserts `T_bulk` and the raw `T` within their exact finite-n means jointly at 99.9% over
+/// both columns and every time (Bonferroni); `what` names the case. Returns the reference, the
+/// run and the family's factor, for the caller's power checks.
+pub fn assert_exact_maxwell_temperature(
+    s: &Scene,
+    what: &str,
+) -> (
+    gdsmc_runner::reference::exact::MaxwellTemperature,
+    RunStats,
+    f64,
+) {
+    let mt = gdsmc_runner::reference::curves::maxwell_temperature(s)
+        .expect("a Maxwell gas: GRW (13) applies");
+    let n = s.n();
+    let st = run(s);
+    let f = gdsmc_stats::family(2 * st.times.len(), gdsmc_stats::dof(st.ensembles));
+    let name = gdsmc_runner::run::columns::name::T_BULK;
+    assert_within_at_all_times(&st, name, f, |t| mt.finite_n_bulk_mean(n, t), what);
+    let name = gdsmc_runner::run::columns::name::T;
+    assert_within_at_all_times(&st, name, f, |t| mt.finite_n_raw_mean(n, t), what);
+    (mt, st, f)
+}

@@ -73,13 +73,8 @@ fn maxwell_gases_under_the_gaussian_thermostat_follow_grw_13_scaled_at_finite_n(
         );
         let s = gdsmc_runner::scene::parse(std::path::Path::new("gaussian.toml"), &text)
             .expect("a valid scene");
-        let mt = maxwell_temperature(&s).expect("a Maxwell gas: GRW (13) applies");
         let n = s.n();
-        let st = run(&s);
-        let f = family(2 * st.times.len(), dof(st.ensembles));
-        let what = format!("d = {dimension}");
-        assert_within_at_all_times(&st, name::T_BULK, f, |t| mt.finite_n_bulk_mean(n, t), &what);
-        assert_within_at_all_times(&st, name::T, f, |t| mt.finite_n_raw_mean(n, t), &what);
+        let (mt, st, f) = assert_exact_maxwell_temperature(&s, &format!("d = {dimension}"));
         // The check has the power to refuse the raw term that grew with the thermostat, and a
         // thermostat counted once (`e^{zeta t}`) in T_bulk.
         let grown =

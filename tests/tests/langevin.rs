@@ -43,17 +43,12 @@ fn maxwell_gases_in_a_langevin_bath_follow_their_exact_temperature() {
             "kind = \"no-splitting\"",
             5400 + u64::from(dimension),
         );
-        let mt = maxwell_temperature(&s).expect("the bath heats linearly: GRW (13) applies");
+        let n = s.n();
+        let (mt, st, f) = assert_exact_maxwell_temperature(&s, &format!("d = {dimension}"));
         assert_eq!(
             (mt.heating.a, mt.heating.b, mt.heating.p),
             (2.0, -1.0, -1.0)
         );
-        let n = s.n();
-        let st = run(&s);
-        let f = family(2 * st.times.len(), dof(st.ensembles));
-        let what = format!("d = {dimension}");
-        assert_within_at_all_times(&st, name::T_BULK, f, |t| mt.finite_n_bulk_mean(n, t), &what);
-        assert_within_at_all_times(&st, name::T, f, |t| mt.finite_n_raw_mean(n, t), &what);
         let mut kept = mt;
         kept.heating.p = 0.0;
         let kept = |t: f64| kept.finite_n_raw_mean(n, t);
