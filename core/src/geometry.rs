@@ -113,7 +113,7 @@ impl Geometry for Spheres {
 
     #[inline(always)]
     fn impact<R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
-        crate::rough::impact_direction(u, rng)
+        crate::sample::impact_direction(u, rng)
     }
 
     #[inline(always)]

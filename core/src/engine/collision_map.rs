@@ -16,10 +16,10 @@ use crate::collision::{inelastic, scattering_direction_from_impact};
 use crate::geometry::{DimensionChoice, Geometry};
 use crate::kernel::Kernel;
 use crate::math::Real;
+use crate::observe::RoughObservables;
 use crate::particles::Particles;
 use crate::restitution::Restitution;
 use crate::rng::Rng;
-use crate::rough::RoughObservables;
 use crate::vec3::Vec3;
 
 /// What a collision does to an accepted pair: the particle model (module docs).

@@ -49,13 +49,13 @@ pub trait EventLoop {
     }
     /// A mixture's observables per species of the synchronized particles `p` (right after
     /// [`EventLoop::advance_to`] or a start), in physical units; `None` for a one-species gas.
-    fn species(&self, _p: &Particles<'_>) -> Option<crate::mixture::MixtureObservables> {
+    fn species(&self, _p: &Particles<'_>) -> Option<crate::observe::MixtureObservables> {
         None
     }
 
     /// A rough gas's rotational observables (`None` for a smooth gas). The particles must be
     /// at the current time (as after [`EventLoop::advance_to`]).
-    fn rough(&self, _p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+    fn rough(&self, _p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
         None
     }
 }
@@ -110,7 +110,7 @@ impl_event_loop!(
     [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry],
     NoSplitting<K, D, A, G>,
     {
-        fn rough(&self, p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+        fn rough(&self, p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
             NoSplitting::rough(self, p)
         }
     }
@@ -120,7 +120,7 @@ impl_event_loop!(
     [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry],
     Splitting<K, D, A, G>,
     {
-        fn rough(&self, p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+        fn rough(&self, p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
             Splitting::rough(self, p)
         }
     }
@@ -158,7 +158,7 @@ impl<
     fn work_rate(&self, n: usize) -> Real {
         TimeStepped::work_rate(self, n)
     }
-    fn rough(&self, p: &Particles<'_>) -> Option<crate::rough::RoughObservables> {
+    fn rough(&self, p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
         TimeStepped::rough(self, p)
     }
 }

@@ -48,9 +48,9 @@ use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{Real, sqrt};
 use crate::moments::Observables;
+use crate::observe::RoughObservables;
 use crate::particles::Particles;
 use crate::rng::Rng;
-use crate::rough::RoughObservables;
 use crate::vec3::Vec3;
 
 pub use super::frame::RESCALE_BELOW;

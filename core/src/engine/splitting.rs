@@ -22,9 +22,9 @@ use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
 use crate::moments::Observables;
+use crate::observe::RoughObservables;
 use crate::particles::Particles;
 use crate::rng::Rng;
-use crate::rough::RoughObservables;
 use crate::sample::standard_exponential;
 
 /// Which splitting: RW Algorithm 1 or 2.

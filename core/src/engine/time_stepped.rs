@@ -47,9 +47,9 @@ use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{PI, Real, floor, max, min, powf, sqrt};
 use crate::moments::Observables;
+use crate::observe::RoughObservables;
 use crate::particles::Particles;
 use crate::rng::{Rng, uniform_pair, uniform01};
-use crate::rough::RoughObservables;
 
 /// The collision stage of one pair type (module docs): its kernel, the candidates' bound (MS's
 /// `omega_max` for hard spheres, `Umax` for the VHS kernel, unused for Maxwell molecules) and

@@ -40,14 +40,12 @@
 
 pub mod map;
 pub mod nosplit;
-pub mod observables;
-pub mod species;
 pub mod splitting;
 pub mod time_stepped;
 
+pub use crate::observe::MixtureObservables;
+pub use crate::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 pub use map::{MassMap, MassRatio, PairLaw};
 pub use nosplit::{MixtureNoSplitting, PairPhysics, StartError};
-pub use observables::MixtureObservables;
-pub use species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 pub use splitting::MixtureSplitting;
 pub use time_stepped::MixtureTimeStepped;

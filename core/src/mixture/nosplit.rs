@@ -26,8 +26,6 @@
 //! drawn when used) and gives its results to the last bit.
 
 use super::map::PairLaw;
-use super::observables::MixtureObservables;
-use super::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::collision_map::CollisionMap;
 use crate::engine::event::{Majorant, RefreshWindow};
@@ -36,9 +34,11 @@ use crate::engine::{Counts, EngineError};
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{Real, max};
+use crate::observe::MixtureObservables;
 use crate::particles::Particles;
 use crate::rng::{Rng, uniform_index, uniform_pair, uniform01};
 use crate::sample::standard_exponential;
+use crate::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 
 /// The physics of one pair type `(s, t)`: kernel and particle model (a restitution law, or
 /// [`crate::rough::RoughPairLaw`]); the masses are the species'.

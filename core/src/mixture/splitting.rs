@@ -13,16 +13,16 @@ use super::map::PairLaw;
 use super::nosplit::{
     MixtureNoSplitting, PairPhysics, StartError, drives_off, kick_species, tell_drives,
 };
-use super::observables::MixtureObservables;
-use super::species::{MAX_SPECIES, Species};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::frame::Frame;
 use crate::engine::{Counts, EngineError, SplittingOrder, check_step, grid_target};
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::Real;
+use crate::observe::MixtureObservables;
 use crate::particles::Particles;
 use crate::rng::Rng;
+use crate::species::{MAX_SPECIES, Species};
 
 /// A splitting scheme for a mixture: kernel `K`, drive `D` (one per species), pair law `L`,
 /// dimension `G` (spheres unless named).

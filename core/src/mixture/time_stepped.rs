@@ -23,8 +23,6 @@ use super::map::PairLaw;
 use super::nosplit::{
     MixtureNoSplitting, PairPhysics, StartError, drives_off, kick_species, tell_drives,
 };
-use super::observables::MixtureObservables;
-use super::species::{MAX_PAIRS, MAX_SPECIES, Species};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::collision_map::CollisionMap;
 use crate::engine::frame::Frame;
@@ -33,8 +31,10 @@ use crate::engine::{Counts, EngineError, check_step};
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
 use crate::math::{Real, min, sqrt};
+use crate::observe::MixtureObservables;
 use crate::particles::Particles;
 use crate::rng::{Rng, uniform_index, uniform_pair};
+use crate::species::{MAX_PAIRS, MAX_SPECIES, Species};
 
 /// MS's time-stepped scheme for a mixture: kernel `K`, drive `D` (one per species), pair law
 /// `L` (one per pair type), dimension `G` (spheres unless named).

@@ -11,10 +11,10 @@
 
 pub mod drive;
 pub mod map;
-pub mod observables;
 pub mod pair;
 
+pub use crate::observe::RoughObservables;
+pub use crate::sample::impact_direction;
 pub use drive::RoughNoise;
-pub use map::{RoughError, RoughMap, impact_direction};
-pub use observables::RoughObservables;
+pub use map::{RoughError, RoughMap};
 pub use pair::{RoughPair, RoughPairLaw};

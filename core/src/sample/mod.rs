@@ -6,6 +6,7 @@
 
 pub mod circle;
 pub mod exponential;
+pub mod impact;
 pub mod maxwellian;
 pub mod mixture;
 pub mod normal;
@@ -17,6 +18,7 @@ pub mod ziggurat_tables;
 
 pub use circle::unit_circle;
 pub use exponential::standard_exponential;
+pub use impact::impact_direction;
 pub use maxwellian::Maxwellian;
 pub use mixture::MaxwellianMixture;
 pub use normal::{standard_normal, standard_normal3};

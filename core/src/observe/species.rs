@@ -4,12 +4,12 @@
 //! particles each species' rotational observables and temperature
 //! `T_rot,s = m_s kappa_s <|w|^2>_s / d_rot` (Santos, Kremer and Garzó 2010, (2.9)).
 
-use super::species::{MAX_SPECIES, Species};
+use super::rotation::RoughObservables;
 use crate::geometry::DimensionChoice;
 use crate::math::Real;
 use crate::moments::Observables;
 use crate::particles::{Particle, Spin};
-use crate::rough::RoughObservables;
+use crate::species::{MAX_SPECIES, Species};
 use crate::vec3::Vec3;
 
 /// The observables of a mixture at one time, in physical units.
