@@ -123,7 +123,12 @@ fn white_noise_delta_and_tail_amplitude_ms_figures_2_and_3() {
     let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let r = reduced(&s, &st).expect("asked for");
     let (a2, a2_ci) = r.a2;
-    let steady = |c: &str| st.steady.as_ref().unwrap().mean_ci(&st, st.col(c).unwrap());
+    let steady = |c: &str| {
+        st.steady
+            .as_ref()
+            .unwrap()
+            .steady_mean_ci(&st, st.col(c).unwrap())
+    };
     let (a3, _) = steady(name::A3);
     let s3 = |x: f64| -x * x * x / 6.0 + 1.75 * x * x - 4.375 * x + 2.1875;
     let reference = |c: f64| sonine_s2(c * c) + a3 / a2 * s3(c * c);

@@ -142,7 +142,10 @@ fn cooling_gas_has_the_gaussian_thermostats_collisional_moments() {
     let hcs = run(&shipped_set("hcs-hard-spheres", &hcs_set, 2048, 16, 1500));
     let gauss = run(&shipped_set("ms-gaussian", &common, 2048, 16, 1501));
     let get = |st: &gdsmc_runner::run::RunStats, c: &str| {
-        st.steady.as_ref().unwrap().mean_ci(st, st.col(c).unwrap())
+        st.steady
+            .as_ref()
+            .unwrap()
+            .steady_mean_ci(st, st.col(c).unwrap())
     };
     let t_last = at(&hcs, hcs.times.len() - 1, name::LOG10_T_BULK).0;
     assert!(

@@ -124,7 +124,7 @@ fn brs_examples_4_and_5_equilibrium_temperatures() {
             .steady
             .as_ref()
             .expect("the scene asks for a steady-state average");
-        let (t, ci) = steady.mean_ci(&st, st.col(name::T_BULK).unwrap());
+        let (t, ci) = steady.steady_mean_ci(&st, st.col(name::T_BULK).unwrap());
         let allowance = ci + 5e-4 + paper / n as f64;
         assert!(
             (t - paper).abs() <= allowance,
@@ -273,7 +273,7 @@ fn elastic_hard_disks_reach_their_hosts_temperature() {
             .steady
             .as_ref()
             .expect("the scene averages its steady state");
-        let (t, ci) = steady.mean_ci(&st, st.col(name::T_BULK).unwrap());
+        let (t, ci) = steady.steady_mean_ci(&st, st.col(name::T_BULK).unwrap());
         let want = 2.0 * (1.0 - 1.0 / n as f64);
         let f = family(2, dof(st.ensembles));
         assert!(

@@ -410,7 +410,7 @@ fn steady(text: &str, cols: &[&str]) -> Vec<(f64, f64)> {
     let stats = gdsmc_runner::run::run(&scene, 0, &|_| {}).unwrap();
     let st = stats.steady.as_ref().unwrap();
     cols.iter()
-        .map(|c| st.mean_ci(&stats, stats.col(c).unwrap()))
+        .map(|c| st.steady_mean_ci(&stats, stats.col(c).unwrap()))
         .collect()
 }
 

@@ -43,7 +43,7 @@ fn euler_long_step() {
         .steady
         .as_ref()
         .unwrap()
-        .mean_ci(&st, st.col(name::T_BULK).unwrap());
+        .steady_mean_ci(&st, st.col(name::T_BULK).unwrap());
     let err = t / (8.0 / 3.0) - 1.0;
     assert!(
         (err - 0.094).abs() <= ci / (8.0 / 3.0) + 0.0035 + 1.0 / 4096.0,

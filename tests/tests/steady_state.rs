@@ -23,7 +23,7 @@ fn steady_t(name: &str, scheme: SchemeChoice, seed: u64) -> (f64, f64, f64) {
         .steady
         .as_ref()
         .unwrap()
-        .mean_ci(&st, st.col(name::T_BULK).unwrap());
+        .steady_mean_ci(&st, st.col(name::T_BULK).unwrap());
     let exact = match scheme {
         SchemeChoice::Euler(dt) => mt.splitting_bulk_mean(s.n(), dt, false, 136.0),
         SchemeChoice::Strang(dt) => mt.splitting_bulk_mean(s.n(), dt, true, 136.0),

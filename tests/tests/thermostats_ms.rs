@@ -35,7 +35,7 @@ fn get(st: &gdsmc_runner::run::RunStats, col: &str) -> (f64, f64) {
     st.steady
         .as_ref()
         .unwrap()
-        .mean_ci(st, st.col(col).unwrap())
+        .steady_mean_ci(st, st.col(col).unwrap())
 }
 
 #[test]

@@ -13,7 +13,7 @@ use crate::scene::{DriveKind, KernelChoice, Scene};
 pub fn settled(stats: &RunStats, name: &str) -> Option<(f64, f64)> {
     let col = stats.col(name)?;
     Some(match &stats.steady {
-        Some(st) => st.mean_ci(stats, col),
+        Some(st) => st.steady_mean_ci(stats, col),
         None => {
             let ti = stats.times.len() - 1;
             (stats.mean(ti, col), stats.ci(ti, col))

@@ -269,7 +269,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         let window = &stats.times[st.first..];
         for name in names {
             let Some(col) = stats.col(name) else { continue };
-            let (m, ci) = st.mean_ci(stats, col);
+            let (m, ci) = st.steady_mean_ci(stats, col);
             let _ = write!(s, "  {name:<width$} {:>13} +- {ci:.2e}", num(m));
             // References beside it: their mean over the same observation times (what the
             // window mean estimates, whether or not the reference has settled).

@@ -324,7 +324,7 @@ impl Steady {
                 .iter()
                 .enumerate()
                 .map(|(i, col)| {
-                    let (mean, ci) = st.mean_ci(stats, i);
+                    let (mean, ci) = st.steady_mean_ci(stats, i);
                     (col.to_string(), MeanCi { mean, ci })
                 })
                 .collect(),

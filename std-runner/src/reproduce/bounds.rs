@@ -15,7 +15,7 @@ pub const FAMILY: usize = 200;
 
 /// The factor that widens a noise half-width made for `k` intervals at the cell's level to the
 /// report's level: `joint(k FAMILY, dof) / joint(k, dof)` (1.4 for one normal interval).
-pub fn family_factor(k: usize, dof: u64) -> f64 {
+pub fn report_factor(k: usize, dof: u64) -> f64 {
     joint(k * FAMILY, dof) / joint(k, dof)
 }
 

@@ -2,7 +2,7 @@
 //! BRS (15)) and the equilibrium temperatures of Examples 4 and 5 (hard spheres) beside the
 //! closures BRS (21) and (22).
 
-use super::bounds::{family_factor, width};
+use super::bounds::{report_factor, width};
 use super::cells::Cell;
 use super::judged::{MaxLaw, OurLargest, PaperNoise, against_paper, computed, max_error_exact};
 use super::{Entry, Options, Row, Table, go, largest, relative, scene};
@@ -184,7 +184,7 @@ fn equilibria(o: &Options, seed: u64) -> Result<Table, Error> {
                 ours,
                 (
                     ours.1 + paper / n as f64,
-                    ours.1 * family_factor(1, m - 1) + paper / n as f64,
+                    ours.1 * report_factor(1, m - 1) + paper / n as f64,
                 ),
                 // BRS print three decimals: half a unit of the last is 5e-4.
                 5e-4,

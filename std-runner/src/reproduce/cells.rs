@@ -125,7 +125,7 @@ impl Check {
     }
 
     /// Sets the report-level range to `expected +- tol`.
-    pub fn family(mut self, tol: f64) -> Self {
+    pub fn report_range(mut self, tol: f64) -> Self {
         self.family_lo = self.expected - tol;
         self.family_hi = self.expected + tol;
         self

@@ -2,7 +2,7 @@
 //! exact value (the paper's with the paper's noise, ours with ours), and a figure against the
 //! paper's when nothing is known exactly.
 
-use super::bounds::{FAMILY, KNOWN, family_factor, joint, max_error};
+use super::bounds::{FAMILY, KNOWN, joint, max_error, report_factor};
 use super::cells::{Against, Cell, Check, Side, rounding};
 use super::figure::fmt;
 
@@ -203,7 +203,7 @@ pub fn max_error_exact(
                     fmt(s_ours)
                 ),
             )
-            .family(max_error(s_ours, k * FAMILY, dof))
+            .report_range(max_error(s_ours, k * FAMILY, dof))
             .with_z(law.z(ours, 1.0 / (ensembles as f64).sqrt(), 0.0))
             // The largest error's noise is that of one time's mean, at most the largest.
             .with_sd(s_ours),
@@ -224,7 +224,7 @@ pub fn max_error_exact(
                     fmt(rounding(paper))
                 ),
             )
-            .family(max_error(noise.se, k * FAMILY, noise.dof) + rounding(paper))
+            .report_range(max_error(noise.se, k * FAMILY, noise.dof) + rounding(paper))
             .with_z(law.z(paper, noise.se / law.sd_max(), rounding(paper)))
             .with_sd(noise.se),
         )
@@ -270,7 +270,7 @@ pub fn mean_exact(
                     fmt(exact)
                 ),
             )
-            .family(ours.1 * family_factor(1, dof))
+            .report_range(ours.1 * report_factor(1, dof))
             .with_z(t_to_z(
                 (ours.0 - exact) / (ours.1 / gdsmc_stats::multiplier(dof + 1)),
                 dof,
@@ -290,7 +290,7 @@ pub fn mean_exact(
                     fmt(round)
                 ),
             )
-            .family(paper_half * family_factor(1, KNOWN) + round)
+            .report_range(paper_half * report_factor(1, KNOWN) + round)
             .with_z(
                 (paper - exact)
                     / ((paper_half / gdsmc_stats::LAMBDA_999).powi(2) + round * round / 3.0).sqrt(),
@@ -323,7 +323,7 @@ pub fn against_paper(
                 fmt(round)
             ),
         )
-        .family(tol.1 + round)
+        .report_range(tol.1 + round)
         // Both sides' noise, given at 99.9% (the rounding is none).
         .with_sd(tol.0 / gdsmc_stats::LAMBDA_999),
     )

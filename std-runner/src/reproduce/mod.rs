@@ -279,7 +279,9 @@ mod tests {
         assert!(!Verdict::Disagree(Blame::Paper).against_us());
         // The run fails only beyond the report-wide range: 1 +- 0.2 here, 1 +- 0.3 for the run.
         let c = Cell {
-            checks: vec![Check::around(Side::Ours, Against::Other, 1.0, 0.2, "both").family(0.3)],
+            checks: vec![
+                Check::around(Side::Ours, Against::Other, 1.0, 0.2, "both").report_range(0.3),
+            ],
             ..c
         };
         assert!(!c.fails_run());

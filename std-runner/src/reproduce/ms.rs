@@ -2,7 +2,7 @@
 //! thermostats, directly from random pairs (MS (67)) and indirectly from mu2 and the moments
 //! (MS (23), (38), (44)), with the Maxwellian value mu4^(0) (MS (29)).
 
-use super::bounds::{family_factor, joint};
+use super::bounds::{joint, report_factor};
 use super::figure::fmt;
 use super::judged::{against_paper, computed};
 use super::{Entry, Options, Row, Table, go, scene, steady};
@@ -95,7 +95,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
                 "the departure from mu4^(0)",
             );
             // Our half-widths come from m ensembles (Student t, m - 1 degrees of freedom).
-            let wide = family_factor(1, m - 1);
+            let wide = report_factor(1, m - 1);
             // MS's noise (from their route differences) holds their rounding already.
             let mut d = against_paper(
                 &format!("mu4 {short}"),

@@ -140,7 +140,7 @@ pub(crate) fn steady(st: &RunStats, col: &str) -> (f64, f64) {
     st.steady
         .as_ref()
         .expect("a steady-state scene")
-        .mean_ci(st, st.col(col).expect("a known column"))
+        .steady_mean_ci(st, st.col(col).expect("a known column"))
 }
 
 /// Per observation time: the relative error of the mean of column `col` against `truth`,

@@ -21,7 +21,7 @@ impl SteadyStats {
     /// Mean over ensembles of the steady-state average of column `col`, and the half-width of
     /// its 99.9% confidence interval. With one ensemble the interval comes from the spread of
     /// the observation points (RW Section 4.2), widened for their lag-1 autocorrelation.
-    pub fn mean_ci(&self, stats: &RunStats, col: usize) -> (f64, f64) {
+    pub fn steady_mean_ci(&self, stats: &RunStats, col: usize) -> (f64, f64) {
         if self.acc.count() > 1 {
             return (self.acc.mean(col), self.acc.ci(col));
         }

@@ -163,7 +163,7 @@ impl PointResult {
             .enumerate()
             .map(|(col, &name)| {
                 let (mean, ci) = match &stats.steady {
-                    Some(st) => st.mean_ci(stats, col),
+                    Some(st) => st.steady_mean_ci(stats, col),
                     None => (stats.mean(last, col), stats.ci(last, col)),
                 };
                 (name, mean, ci)
