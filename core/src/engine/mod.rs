@@ -163,6 +163,20 @@ impl<
     }
 }
 
+/// The opening every loop's start shares: the start time `t0` must be finite and a loop of
+/// rough particles (`spins`) needs their spins beside them; then every particle's last kick is
+/// at `t0` (GRW Section 3, step 1: all particles synchronized at the start).
+pub(crate) fn open(p: &mut Particles<'_>, t0: Real, spins: bool) -> Result<(), EngineError> {
+    if !t0.is_finite() {
+        return Err(EngineError::TimeBackwards);
+    }
+    if spins && !p.has_spins() {
+        return Err(EngineError::Spins);
+    }
+    p.reset_kick_times(t0);
+    Ok(())
+}
+
 /// The work an advance may ask for before a front end refuses it unasked (`gdsmc run
 /// --allow-long`, the C ABI's `gdsmc_sim_set_work_limit`): 1e12 work units, about a day of
 /// one core at the measured 1e7-3e7 events per second (`gdsmc bench throughput`).

@@ -95,13 +95,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> 
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(Self, Observables), EngineError> {
-        if !t0.is_finite() {
-            return Err(EngineError::TimeBackwards);
-        }
-        if A::SPINS && !p.has_spins() {
-            return Err(EngineError::Spins);
-        }
-        p.reset_kick_times(t0);
+        super::open(p, t0, A::SPINS)?;
         let mut s = NoSplitting {
             c: Collider::new(kernel, drive, restitution),
             t: t0,

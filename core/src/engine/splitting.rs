@@ -63,13 +63,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Splitting<K, D, A, G> {
         t0: Real,
     ) -> Result<(Self, Observables), EngineError> {
         super::check_step(dt)?;
-        if !t0.is_finite() {
-            return Err(EngineError::TimeBackwards);
-        }
-        if A::SPINS && !p.has_spins() {
-            return Err(EngineError::Spins);
-        }
-        p.reset_kick_times(t0);
+        super::open(p, t0, A::SPINS)?;
         let mut s = Splitting {
             c: Collider::new(kernel, drive, restitution),
             order,

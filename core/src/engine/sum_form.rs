@@ -84,10 +84,7 @@ impl<A: Restitution> SumNoSplitting<A> {
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(Self, Observables), EngineError> {
-        if !t0.is_finite() {
-            return Err(EngineError::TimeBackwards);
-        }
-        p.reset_kick_times(t0);
+        super::open(p, t0, false)?;
         let mut s = SumNoSplitting {
             kernel,
             restitution,

@@ -225,13 +225,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> TimeStepped<K, D, A, G> 
         t0: Real,
     ) -> Result<(Self, Observables), EngineError> {
         super::check_step(step_factor)?;
-        if A::SPINS && !p.has_spins() {
-            return Err(EngineError::Spins);
-        }
-        if !t0.is_finite() {
-            return Err(EngineError::TimeBackwards);
-        }
-        p.reset_kick_times(t0);
+        super::open(p, t0, A::SPINS)?;
         let mut s = TimeStepped {
             stage: Stage::new(kernel),
             drive,

@@ -106,12 +106,7 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         p: &mut Particles<'_>,
         t0: Real,
     ) -> Result<(Self, MixtureObservables), StartError> {
-        if !t0.is_finite() {
-            return Err(StartError::Engine(EngineError::TimeBackwards));
-        }
-        if L::Map::SPINS && !p.has_spins() {
-            return Err(StartError::Engine(EngineError::Spins));
-        }
+        crate::engine::open(p, t0, L::Map::SPINS).map_err(StartError::Engine)?;
         let types = sp.pair_types();
         if physics.len() != types {
             return Err(StartError::Mixture(MixtureError::PairCount {
@@ -127,7 +122,6 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         if p.len() != sp.total() {
             return Err(StartError::Mixture(MixtureError::ParticleCount));
         }
-        p.reset_kick_times(t0);
         let maps: [L::Map; MAX_PAIRS] = core::array::from_fn(|k| {
             let k = k.min(types - 1);
             let (a, b) = sp.pair(k);
