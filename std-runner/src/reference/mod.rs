@@ -10,6 +10,7 @@ pub mod exact;
 pub mod hydro;
 pub mod impact_speed;
 pub mod maxwell_cumulant;
+pub mod maxwell_temperature;
 pub mod mixture;
 pub mod mutation;
 pub mod ode;
