@@ -131,10 +131,7 @@ macro_rules! drive_model {
             let kind = d.kind();
             for (i, (spec, &x)) in d.specs().iter().zip(d.values()).enumerate() {
                 if !spec.rule.holds(x) {
-                    return Err(PhysicsError {
-                        param: Param::Drive(kind, i),
-                        problem: refusal(spec.rule, x),
-                    });
+                    return Err(refusal(Param::Drive(kind, i), spec.rule, x));
                 }
             }
             let overflow = |i| PhysicsError {
@@ -152,15 +149,16 @@ macro_rules! drive_model {
 }
 declared_drives!(drive_model);
 
-/// The problem of a value that breaks `rule`.
-fn refusal(rule: Rule, x: Real) -> Problem {
-    if !x.is_finite() {
-        return Problem::NotFinite(x);
-    }
+/// The refusal of a value `x` of `param` that breaks `rule` (the same problems as the written-out
+/// parameters': [`not_positive`], [`negative`]).
+fn refusal(param: Param, rule: Rule, x: Real) -> PhysicsError {
     match rule {
-        Rule::Finite => Problem::NotFinite(x),
-        Rule::AtLeastZero => Problem::Negative(x),
-        Rule::Positive => Problem::NotPositive(x),
+        Rule::Positive => not_positive(param, x),
+        Rule::AtLeastZero => negative(param, x),
+        Rule::Finite => PhysicsError {
+            param,
+            problem: Problem::NotFinite(x),
+        },
     }
 }
 
