@@ -35,7 +35,7 @@
 // Hard spheres, `B = gamma C |u|` (hard disks in `d = 2`; GRW (4)).
 #define GDSMC_KERNEL_HARD_SPHERES 1
 
-// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)).
+// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)). Its parameters in `kernel_params`: GDSMC_VHS_LAMBDA.
 #define GDSMC_KERNEL_VHS 2
 
 // A constant restitution coefficient alpha (`restitution`).
@@ -73,6 +73,13 @@
 
 // MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS kernels), step `step_factor` mean free paths over the thermal speed.
 #define GDSMC_SCHEME_TIME_STEPPED 3
+
+// Most parameters a kernel has beyond gamma and C: the length of
+// `gdsmc_config.kernel_params`.
+#define GDSMC_MAX_KERNEL_PARAMS 4
+
+// `kernel_params[0]` of GDSMC_KERNEL_VHS: the exponent lambda of B = gamma C |u|^lambda (GRW (5); 0: Maxwell, 1: hard spheres) (dimensionless, a number in [0, 1]).
+#define GDSMC_VHS_LAMBDA 0
 
 // Most parameters a drive declared by its type has: the length of
 // `gdsmc_config.drive_params`.
@@ -239,8 +246,9 @@ typedef struct {
     double gamma;
     // Kernel constant C_lambda, > 0.
     double c;
-    // VHS exponent in [0, 1] (used with GDSMC_KERNEL_VHS only).
-    double lambda;
+    // The kernel's parameters beyond gamma and C, in its order (GDSMC_KERNEL_VHS:
+    // `kernel_params[GDSMC_VHS_LAMBDA]`, the exponent in [0, 1]); the rest unused.
+    double kernel_params[GDSMC_MAX_KERNEL_PARAMS];
     // Restitution coefficient alpha in (0, 1] (GDSMC_RESTITUTION_CONSTANT only).
     double restitution;
     // `beta_0 >= 0` of the impact-speed law (GDSMC_RESTITUTION_IMPACT_SPEED only).

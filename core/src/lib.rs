@@ -39,6 +39,7 @@
 pub mod batch;
 pub mod collision;
 pub mod collisional;
+pub mod declared;
 pub mod drive;
 pub mod engine;
 pub mod geometry;

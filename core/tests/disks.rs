@@ -28,10 +28,7 @@ fn disks(n: usize, kernel: KernelChoice, alpha: f64, drive: DriveChoice) -> Phys
     ph
 }
 
-const HARD: KernelChoice = KernelChoice::HardSpheres {
-    gamma: 1.0,
-    c: 0.25 / core::f64::consts::PI,
-};
+const HARD: KernelChoice = KernelChoice::hard_spheres(1.0, 0.25 / core::f64::consts::PI);
 
 /// The impact direction of hard disks: in the plane, on the approaching side, and its
 /// component across `u_hat` (the impact parameter `b`) uniform on (-1, 1). Also the scattering
@@ -265,10 +262,7 @@ fn disks_under_the_impact_speed_law_of_delta_0_are_the_constant_law_to_the_last_
     let beta0 = 0.05;
     for kernel in [
         HARD,
-        KernelChoice::Maxwell {
-            gamma: 1.0,
-            c: 0.25 / core::f64::consts::PI,
-        },
+        KernelChoice::maxwell(1.0, 0.25 / core::f64::consts::PI),
     ] {
         for drive in [DriveChoice::None, DriveChoice::WhiteNoise(0.5)] {
             let constant = disks(64, kernel, 1.0 - 2.0 * beta0, drive);
@@ -357,10 +351,7 @@ fn hard_disks_under_the_impact_speed_law_lose_the_energy_of_brs_9_10() {
 #[test]
 fn hard_disks_collide_at_twice_sigma_n_a_times_the_mean_relative_speed() {
     let (sigma, n_a) = (0.02, 25.0);
-    let kernel = KernelChoice::HardSpheres {
-        gamma: 1.0,
-        c: 2.0 * sigma * n_a / (4.0 * core::f64::consts::PI),
-    };
+    let kernel = KernelChoice::hard_spheres(1.0, 2.0 * sigma * n_a / (4.0 * core::f64::consts::PI));
     let (n, t) = (1000, 2.0);
     let model = disks(n, kernel, 1.0, DriveChoice::None).validate().unwrap();
     let mut streams = gdsmc_core::rng::Streams::new(2051);

@@ -17,7 +17,7 @@ use gdsmc_core::rng::stream;
 fn physics(mixture: bool, rough: bool, dim: DimensionChoice) -> Physics {
     let mut ph = Physics::new(
         8,
-        KernelChoice::HardSpheres { gamma: 1.0, c: 1.0 },
+        KernelChoice::hard_spheres(1.0, 1.0),
         RestitutionLaw::Constant(0.9),
         DriveChoice::None,
         SchemeChoice::NoSplitting,
@@ -146,20 +146,12 @@ fn each_kernel_drive_law_and_scheme_starts_exactly_when_built() {
             SchemeChoice::NoSplitting,
         )
     };
-    let mx = KernelChoice::Maxwell { gamma: 1.0, c: 1.0 };
-    let hs = KernelChoice::HardSpheres { gamma: 1.0, c: 1.0 };
+    let mx = KernelChoice::maxwell(1.0, 1.0);
+    let hs = KernelChoice::hard_spheres(1.0, 1.0);
     let kernels = [
         ("maxwell", mx, maxwell),
         ("hard-spheres", hs, hard),
-        (
-            "vhs",
-            KernelChoice::Vhs {
-                gamma: 1.0,
-                c: 1.0,
-                lambda: 0.5,
-            },
-            vhs,
-        ),
+        ("vhs", KernelChoice::vhs(1.0, 1.0, 0.5), vhs),
     ];
     for (name, k, on) in kernels {
         starts_exactly_when_built(name, base(k), &[(on, name), (cooling, "cooling")]);

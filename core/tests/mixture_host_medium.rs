@@ -30,10 +30,7 @@ const MASSES: [f64; 2] = [1.0, 4.0];
 fn in_bath(kernel: BackgroundKernel, rough: bool, dimension: DimensionChoice) -> Physics {
     let mut ph = Physics::new(
         8,
-        KernelChoice::HardSpheres {
-            gamma: 1.0,
-            c: 0.25 / PI,
-        },
+        KernelChoice::hard_spheres(1.0, 0.25 / PI),
         RestitutionLaw::Constant(1.0),
         DriveChoice::HostMedium {
             kernel,

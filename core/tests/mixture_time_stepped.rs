@@ -133,10 +133,7 @@ fn the_constant_force_keeps_a_mixtures_momentum() {
         for rough in [false, true] {
             let mut ph = Physics::new(
                 64,
-                KernelChoice::HardSpheres {
-                    gamma: 1.0,
-                    c: 0.25 / PI,
-                },
+                KernelChoice::hard_spheres(1.0, 0.25 / PI),
                 RestitutionLaw::Constant(0.8),
                 DriveChoice::declared(gdsmc_core::physics::DriveKind::ConstantForce, &[1.0])
                     .unwrap(),

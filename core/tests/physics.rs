@@ -18,10 +18,7 @@ use gdsmc_core::vec3::Vec3;
 fn grw3() -> Physics {
     Physics::new(
         16,
-        KernelChoice::Maxwell {
-            gamma: 4.0,
-            c: 0.25 / core::f64::consts::PI,
-        },
+        KernelChoice::maxwell(4.0, 0.25 / core::f64::consts::PI),
         RestitutionLaw::Constant(0.5),
         DriveChoice::WhiteNoise(1.0),
         SchemeChoice::NoSplitting,
@@ -35,7 +32,7 @@ fn refused(p: Physics) -> (Param, Problem) {
 
 #[test]
 fn every_rule_names_its_parameter() {
-    let hs = KernelChoice::HardSpheres { gamma: 1.0, c: 1.0 };
+    let hs = KernelChoice::hard_spheres(1.0, 1.0);
     let cases: Vec<(Physics, Param)> = vec![
         (Physics { n: 1, ..grw3() }, Param::N),
         (
@@ -47,17 +44,14 @@ fn every_rule_names_its_parameter() {
         ),
         (
             Physics {
-                kernel: KernelChoice::Maxwell { gamma: 0.0, c: 1.0 },
+                kernel: KernelChoice::maxwell(0.0, 1.0),
                 ..grw3()
             },
             Param::Gamma,
         ),
         (
             Physics {
-                kernel: KernelChoice::Maxwell {
-                    gamma: 1.0,
-                    c: f64::NAN,
-                },
+                kernel: KernelChoice::maxwell(1.0, f64::NAN),
                 ..grw3()
             },
             Param::C,
@@ -65,24 +59,17 @@ fn every_rule_names_its_parameter() {
         // Each positive, the product underflows to 0 (a hostile-input case that once panicked).
         (
             Physics {
-                kernel: KernelChoice::Maxwell {
-                    gamma: 5e-324,
-                    c: 0.1,
-                },
+                kernel: KernelChoice::maxwell(5e-324, 0.1),
                 ..grw3()
             },
             Param::Gamma,
         ),
         (
             Physics {
-                kernel: KernelChoice::Vhs {
-                    gamma: 1.0,
-                    c: 1.0,
-                    lambda: 1.5,
-                },
+                kernel: KernelChoice::vhs(1.0, 1.0, 1.5),
                 ..grw3()
             },
-            Param::Lambda,
+            Param::Kernel(gdsmc_core::physics::KernelKind::Vhs, 0),
         ),
         (
             Physics {
@@ -300,11 +287,7 @@ fn dispatch_builds_the_hand_composed_loop() {
         |e| matches!(e, Engine::Smooth(ByKernel::Maxwell(_))),
     );
     let vhs = Physics {
-        kernel: KernelChoice::Vhs {
-            gamma: 1.0,
-            c: 0.1,
-            lambda: 0.5,
-        },
+        kernel: KernelChoice::vhs(1.0, 0.1, 0.5),
         scheme: SchemeChoice::Strang(0.25),
         ..p.clone()
     };
@@ -321,7 +304,7 @@ fn dispatch_builds_the_hand_composed_loop() {
         |e| matches!(e, Engine::Smooth(ByKernel::Vhs(_))),
     );
     let ms = Physics {
-        kernel: KernelChoice::HardSpheres { gamma: 1.0, c: 0.1 },
+        kernel: KernelChoice::hard_spheres(1.0, 0.1),
         drive: DriveChoice::declared(gdsmc_core::physics::DriveKind::Gaussian, &[0.25]).unwrap(),
         scheme: SchemeChoice::TimeStepped(0.05),
         ..p.clone()
@@ -338,7 +321,7 @@ fn dispatch_builds_the_hand_composed_loop() {
         |e| matches!(e, Engine::Smooth(ByKernel::HardSpheres(_))),
     );
     let brs = Physics {
-        kernel: KernelChoice::HardSpheres { gamma: 1.0, c: 1.0 },
+        kernel: KernelChoice::hard_spheres(1.0, 1.0),
         restitution: RestitutionLaw::ImpactSpeed {
             beta0: 0.2,
             delta: 0.2,

@@ -16,10 +16,7 @@ use gdsmc_core::rng::Streams;
 fn rough(n: usize, alpha: f64, rotation: RotationChoice, drive: DriveChoice) -> Physics {
     let mut ph = Physics::new(
         n,
-        KernelChoice::HardSpheres {
-            gamma: 1.0,
-            c: 0.25 / core::f64::consts::PI,
-        },
+        KernelChoice::hard_spheres(1.0, 0.25 / core::f64::consts::PI),
         RestitutionLaw::Constant(alpha),
         drive,
         SchemeChoice::NoSplitting,

@@ -194,10 +194,7 @@ fn a_one_species_rough_mixture_is_the_rough_loop_bit_for_bit() {
 fn elastic_rough_mixture(dimension: DimensionChoice) -> Physics {
     let mut ph = Physics::new(
         8,
-        KernelChoice::HardSpheres {
-            gamma: 1.0,
-            c: c1(),
-        },
+        KernelChoice::hard_spheres(1.0, c1()),
         RestitutionLaw::Constant(1.0),
         DriveChoice::None,
         SchemeChoice::NoSplitting,
@@ -325,15 +322,9 @@ fn smooth_or_rough(
 ) -> Physics {
     let n = species.iter().map(|s| s.0).sum::<usize>();
     let kernel = if maxwell {
-        KernelChoice::Maxwell {
-            gamma: 4.0,
-            c: c1(),
-        }
+        KernelChoice::maxwell(4.0, c1())
     } else {
-        KernelChoice::HardSpheres {
-            gamma: 4.0,
-            c: c1(),
-        }
+        KernelChoice::hard_spheres(4.0, c1())
     };
     let mut ph = Physics::new(n, kernel, RestitutionLaw::Constant(alpha), drive, scheme);
     for (k, &(count, mass)) in species.iter().enumerate() {

@@ -19,10 +19,7 @@ const TIMES: [f64; 4] = [0.5, 1.0, 2.0, 4.0];
 fn model(alpha: f64) -> Model {
     Physics::new(
         64,
-        KernelChoice::HardSpheres {
-            gamma: 4.0,
-            c: 0.25 / core::f64::consts::PI,
-        },
+        KernelChoice::hard_spheres(4.0, 0.25 / core::f64::consts::PI),
         RestitutionLaw::Constant(alpha),
         DriveChoice::None,
         SchemeChoice::NoSplitting,

@@ -9,7 +9,7 @@ pub const GDSMC_KERNEL_MAXWELL: u32 = 0;
 /// Hard spheres, `B = gamma C |u|` (hard disks in `d = 2`; GRW (4)).
 pub const GDSMC_KERNEL_HARD_SPHERES: u32 = 1;
 
-/// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)).
+/// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)). Its parameters in `kernel_params`: GDSMC_VHS_LAMBDA.
 pub const GDSMC_KERNEL_VHS: u32 = 2;
 
 /// A constant restitution coefficient alpha (`restitution`).
@@ -47,6 +47,13 @@ pub const GDSMC_SCHEME_STRANG: u32 = 2;
 
 /// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS kernels), step `step_factor` mean free paths over the thermal speed.
 pub const GDSMC_SCHEME_TIME_STEPPED: u32 = 3;
+
+/// Most parameters a kernel has beyond gamma and C: the length of
+/// `gdsmc_config.kernel_params`.
+pub const GDSMC_MAX_KERNEL_PARAMS: usize = 4;
+
+/// `kernel_params[0]` of GDSMC_KERNEL_VHS: the exponent lambda of B = gamma C |u|^lambda (GRW (5); 0: Maxwell, 1: hard spheres) (dimensionless, a number in [0, 1]).
+pub const GDSMC_VHS_LAMBDA: usize = 0;
 
 /// Most parameters a drive declared by its type has: the length of
 /// `gdsmc_config.drive_params`.

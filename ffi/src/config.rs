@@ -35,8 +35,9 @@ pub struct gdsmc_config {
     pub gamma: f64,
     /// Kernel constant C_lambda, > 0.
     pub c: f64,
-    /// VHS exponent in [0, 1] (used with GDSMC_KERNEL_VHS only).
-    pub lambda: f64,
+    /// The kernel's parameters beyond gamma and C, in its order (GDSMC_KERNEL_VHS:
+    /// `kernel_params[GDSMC_VHS_LAMBDA]`, the exponent in [0, 1]); the rest unused.
+    pub kernel_params: [f64; GDSMC_MAX_KERNEL_PARAMS],
     /// Restitution coefficient alpha in (0, 1] (GDSMC_RESTITUTION_CONSTANT only).
     pub restitution: f64,
     /// `beta_0 >= 0` of the impact-speed law (GDSMC_RESTITUTION_IMPACT_SPEED only).
@@ -168,7 +169,7 @@ impl gdsmc_config {
             restitution_law: GDSMC_RESTITUTION_CONSTANT,
             gamma: 4.0,
             c: 1.0 / (4.0 * core::f64::consts::PI),
-            lambda: 0.0,
+            kernel_params: [0.0; GDSMC_MAX_KERNEL_PARAMS],
             restitution: 0.5,
             impact_beta0: 0.0,
             impact_delta: 0.0,

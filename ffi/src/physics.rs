@@ -45,7 +45,7 @@ fn field(p: Param) -> &'static str {
         Param::Drift(_) => "drift",
         Param::Gamma => "gamma",
         Param::C => "c",
-        Param::Lambda => "lambda",
+        Param::Kernel(..) => "kernel_params",
         Param::Restitution => "restitution",
         Param::Beta0 => "impact_beta0",
         Param::Delta => "impact_delta",
@@ -90,7 +90,7 @@ fn index(p: Param, species: usize) -> Option<usize> {
         | Param::SpeciesInertia(k)
         | Param::SpeciesRotationTemperature(k)
         | Param::SpeciesRotationNoise(k) => Some(k),
-        Param::Drive(_, i) => Some(i),
+        Param::Drive(_, i) | Param::Kernel(_, i) => Some(i),
         Param::PairRestitution(s, t) | Param::PairTangentialRestitution(s, t) => {
             Some(gdsmc_core::mixture::pair_index(species, s, t))
         }
@@ -126,18 +126,17 @@ impl gdsmc_config {
         let Ok(n) = usize::try_from(self.n) else {
             return invalid(msg!("config.n = {} is too large", self.n));
         };
-        let (gamma, c) = (self.gamma, self.c);
+        // Every kernel is declared by its type: its parameters from `kernel_params` in its
+        // order (`GDSMC_MAX_KERNEL_PARAMS` holds the most any kernel has).
+        let Some(kernel) = KernelChoice::new(kernel_kind, self.gamma, self.c, &self.kernel_params)
+        else {
+            return invalid(msg!(
+                "config.kernel = {} has more parameters than kernel_params holds",
+                self.kernel
+            ));
+        };
         // Every match below names every kind (no catch-all): a new kind does not compile until
         // it is decoded here.
-        let kernel = match kernel_kind {
-            KernelKind::Maxwell => KernelChoice::Maxwell { gamma, c },
-            KernelKind::HardSpheres => KernelChoice::HardSpheres { gamma, c },
-            KernelKind::Vhs => KernelChoice::Vhs {
-                gamma,
-                c,
-                lambda: self.lambda,
-            },
-        };
         let restitution = match law_kind {
             LawKind::Constant => RestitutionLaw::Constant(self.restitution),
             LawKind::ImpactSpeed => RestitutionLaw::ImpactSpeed {
@@ -326,7 +325,6 @@ impl gdsmc_config {
             mass: only.mass,
             temperature: only.temperature,
             drift: only.drift,
-            lambda: 0.0,
             beta: 0.0,
             ..gdsmc_config::example3()
         };
@@ -335,15 +333,8 @@ impl gdsmc_config {
         cfg.restitution_law = p.restitution.kind().c_code();
         cfg.drive = p.drive.kind().c_code();
         cfg.scheme = p.scheme.kind().c_code();
-        (cfg.gamma, cfg.c) = match p.kernel {
-            KernelChoice::Maxwell { gamma, c } | KernelChoice::HardSpheres { gamma, c } => {
-                (gamma, c)
-            }
-            KernelChoice::Vhs { gamma, c, lambda } => {
-                cfg.lambda = lambda;
-                (gamma, c)
-            }
-        };
+        (cfg.gamma, cfg.c) = (p.kernel.gamma(), p.kernel.c());
+        cfg.kernel_params[..p.kernel.values().len()].copy_from_slice(p.kernel.values());
         match p.restitution {
             RestitutionLaw::Constant(alpha) => cfg.restitution = alpha,
             RestitutionLaw::ImpactSpeed { beta0, delta } => {

@@ -3,13 +3,17 @@
 //! core without its C constant fails here.
 //!
 //! The constants come from `ffi/src/codes.rs`, generated from the core's declarations (glam's
-//! "generated from one table"): the kinds (code and words) and each declared drive's parameters
-//! (`DriveKind::params`: name, rule, words, unit, their places in `drive_params`). A test here
+//! "generated from one table"): the kinds (code and words) and each kernel's and declared
+//! drive's parameters (`KernelKind::params`, `DriveKind::params`: name, rule, words, unit,
+//! their places in `kernel_params` and `drive_params`). A test here
 //! fails when the file is not what the declarations give;
 //! `GDSMC_UPDATE_CODES=1 cargo test --release -p gdsmc-ffi --test kinds` rewrites it (then
 //! cbindgen the header, `include/gdsmc.h`).
 
-use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, MAX_DRIVE_PARAMS, SchemeKind};
+use gdsmc_core::declared::ParamSpec;
+use gdsmc_core::physics::{
+    DriveKind, KernelKind, LawKind, MAX_DRIVE_PARAMS, MAX_KERNEL_PARAMS, SchemeKind,
+};
 use std::fmt::Write;
 
 /// `HardSpheres` -> `HARD_SPHERES`.
@@ -80,6 +84,57 @@ fn every_kind_has_its_constant_in_the_header() {
     assert_eq!(upper_snake("ConstantForce"), "CONSTANT_FORCE");
 }
 
+/// ` Its parameters in `kernel_params`: GDSMC_VHS_LAMBDA.` (nothing when it has none).
+fn places(kind: &str, params: &[ParamSpec], array: &str) -> String {
+    if params.is_empty() {
+        return String::new();
+    }
+    let names: Vec<String> = params
+        .iter()
+        .map(|p| format!("GDSMC_{}_{}", upper_snake(kind), p.name.to_uppercase()))
+        .collect();
+    format!(" Its parameters in `{array}`: {}.", names.join(", "))
+}
+
+/// A parameter array's length and every kind's places in it: `(axis, array, whose words)`.
+fn array(
+    out: &mut String,
+    (axis, name, whose): (&str, &str, &str),
+    max: usize,
+    kinds: Vec<(String, &[ParamSpec])>,
+) {
+    let _ = writeln!(
+        out,
+        "\n/// Most parameters {whose}: the length of\n\
+         /// `gdsmc_config.{name}`.\n\
+         pub const GDSMC_MAX_{}: usize = {max};",
+        name.to_uppercase()
+    );
+    for (kind, params) in kinds {
+        constants(out, axis, &kind, params, name);
+    }
+}
+
+/// Each parameter's place in `array` as a constant, with its words, unit and rule.
+fn constants(out: &mut String, axis: &str, kind: &str, params: &[ParamSpec], array: &str) {
+    for (i, p) in params.iter().enumerate() {
+        let default = p
+            .default
+            .map_or(String::new(), |d| format!("; default {d}"));
+        let _ = writeln!(
+            out,
+            "\n/// `{array}[{i}]` of GDSMC_{axis}_{}: {} ({}, {}{default}).\n\
+             pub const GDSMC_{}_{}: usize = {i};",
+            upper_snake(kind),
+            p.words,
+            p.unit,
+            p.rule,
+            upper_snake(kind),
+            p.name.to_uppercase(),
+        );
+    }
+}
+
 /// The file the declarations give.
 fn generated() -> String {
     let mut out = String::from(
@@ -102,7 +157,10 @@ fn generated() -> String {
         "KERNEL",
         KernelKind::ALL
             .iter()
-            .map(|k| (format!("{k:?}"), k.c_code(), k.doc(), String::new()))
+            .map(|k| {
+                let extra = places(&format!("{k:?}"), k.params(), "kernel_params");
+                (format!("{k:?}"), k.c_code(), k.doc(), extra)
+            })
             .collect(),
     );
     family(
@@ -117,22 +175,7 @@ fn generated() -> String {
         DriveKind::ALL
             .iter()
             .map(|k| {
-                let extra = match k.params() {
-                    Some(ps) if !ps.is_empty() => {
-                        let names: Vec<String> = ps
-                            .iter()
-                            .map(|p| {
-                                format!(
-                                    "GDSMC_{}_{}",
-                                    upper_snake(&format!("{k:?}")),
-                                    p.name.to_uppercase()
-                                )
-                            })
-                            .collect();
-                        format!(" Its parameters in `drive_params`: {}.", names.join(", "))
-                    }
-                    _ => String::new(),
-                };
+                let extra = places(&format!("{k:?}"), k.params().unwrap_or(&[]), "drive_params");
                 (format!("{k:?}"), k.c_code(), k.doc(), extra)
             })
             .collect(),
@@ -144,30 +187,24 @@ fn generated() -> String {
             .map(|k| (format!("{k:?}"), k.c_code(), k.doc(), String::new()))
             .collect(),
     );
-    let _ = writeln!(
-        out,
-        "\n/// Most parameters a drive declared by its type has: the length of\n\
-         /// `gdsmc_config.drive_params`.\n\
-         pub const GDSMC_MAX_DRIVE_PARAMS: usize = {MAX_DRIVE_PARAMS};"
+    let kernels = KernelKind::ALL
+        .iter()
+        .map(|k| (format!("{k:?}"), k.params()));
+    array(
+        &mut out,
+        ("KERNEL", "kernel_params", "a kernel has beyond gamma and C"),
+        MAX_KERNEL_PARAMS,
+        kernels.collect(),
     );
-    for k in DriveKind::ALL {
-        for (i, p) in k.params().unwrap_or(&[]).iter().enumerate() {
-            let default = p
-                .default
-                .map_or(String::new(), |d| format!("; default {d}"));
-            let _ = writeln!(
-                out,
-                "\n/// `drive_params[{i}]` of GDSMC_DRIVE_{}: {} ({}, {}{default}).\n\
-                 pub const GDSMC_{}_{}: usize = {i};",
-                upper_snake(&format!("{k:?}")),
-                p.words,
-                p.unit,
-                p.rule.words(),
-                upper_snake(&format!("{k:?}")),
-                p.name.to_uppercase(),
-            );
-        }
-    }
+    let drives = DriveKind::ALL
+        .iter()
+        .map(|k| (format!("{k:?}"), k.params().unwrap_or(&[])));
+    array(
+        &mut out,
+        ("DRIVE", "drive_params", "a drive declared by its type has"),
+        MAX_DRIVE_PARAMS,
+        drives.collect(),
+    );
     out
 }
 

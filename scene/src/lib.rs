@@ -42,8 +42,8 @@ pub mod vary;
 
 pub use error::Error;
 pub use gdsmc_core::physics::{
-    BackgroundKernel, Component, DriveChoice, DriveKind, DriveParams, KernelChoice, Model, Physics,
-    RestitutionLaw, SchemeChoice,
+    BackgroundKernel, Component, DriveChoice, DriveKind, DriveParams, KernelChoice, KernelKind,
+    Model, Physics, RestitutionLaw, SchemeChoice,
 };
 pub use overrides::{
     Override, Sourced, load_with, load_with_overrides, parse_with, parse_with_overrides,

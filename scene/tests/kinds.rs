@@ -1,7 +1,7 @@
 //! Every kind the core declares (`gdsmc_core::physics::{Kernel,Law,Drive,Scheme}Kind`) is
 //! written in a scene by its declared word and read back as that kind. The keys each one needs
-//! are matched exhaustively, so a kind added to the core does not compile here until a scene
-//! can name it, and fails until the reader takes it.
+//! are the kind's declared parameters or matched exhaustively, so a kind added to the core
+//! does not compile here until a scene can name it, and fails until the reader takes it.
 
 use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind};
 use gdsmc_scene::parse;
@@ -31,12 +31,55 @@ const EXACT: &str = "kind = \"no-splitting\"";
 #[test]
 fn every_kernel_is_read() {
     for &k in KernelKind::ALL {
-        let extra = match k {
-            KernelKind::Maxwell | KernelKind::HardSpheres => "",
-            KernelKind::Vhs => "lambda = 0.5",
-        };
+        // Its own keys and example values from its declaration.
+        let extra: String = k
+            .params()
+            .iter()
+            .map(|p| format!("{} = {:?}\n", p.name, p.example))
+            .collect();
         let c = format!("kernel = \"{}\"\n{extra}\n{ALPHA}", k.scene_name());
-        assert_eq!(read(&scene(&c, NONE, EXACT)).kernel.kind(), k);
+        let kernel = read(&scene(&c, NONE, EXACT)).kernel;
+        assert_eq!(kernel.kind(), k);
+        for p in k.params() {
+            assert_eq!(kernel.get(p.name), Some(p.example), "{k:?}: {}", p.name);
+        }
+    }
+}
+
+/// A kernel's own key is required with it and refused with another kernel, the refusal naming
+/// the keys that kernel has.
+#[test]
+fn a_kernels_keys_are_its_own() {
+    for &k in KernelKind::ALL {
+        for p in k.params() {
+            let c = format!("kernel = \"{}\"\n{ALPHA}", k.scene_name());
+            let e = parse(Path::new("kinds.toml"), &scene(&c, NONE, EXACT))
+                .expect_err("its parameter is required")
+                .to_string();
+            assert!(
+                e.contains(&format!("collisions.{}", p.name)) && e.contains("required"),
+                "{e}"
+            );
+            for &other in KernelKind::ALL {
+                if other.params().iter().any(|q| q.name == p.name) {
+                    continue;
+                }
+                let c = format!(
+                    "kernel = \"{}\"\n{} = {:?}\n{ALPHA}",
+                    other.scene_name(),
+                    p.name,
+                    p.example
+                );
+                let e = parse(Path::new("kinds.toml"), &scene(&c, NONE, EXACT))
+                    .expect_err("not a key of another kernel")
+                    .to_string();
+                assert!(
+                    e.contains(&format!("`collisions.{}` is not a key", p.name))
+                        && e.contains("its keys: kernel, gamma, c"),
+                    "{e}"
+                );
+            }
+        }
     }
 }
 
@@ -86,6 +129,32 @@ fn every_scheme_is_read() {
         };
         let s = format!("kind = \"{}\"\n{keys}", k.scene_name());
         assert_eq!(read(&scene(MAXWELL, NONE, &s)).scheme.kind(), k);
+    }
+}
+
+/// docs/scenes.md names every kernel's scene word and every key of its own (a row
+/// `collisions.<name>`): a kernel added to the core and not to the scene documentation fails.
+#[test]
+fn the_scene_documentation_names_every_kernel_and_its_keys() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/scenes.md"))
+        .expect("docs/scenes.md");
+    let kinds_row = doc
+        .lines()
+        .find(|l| l.starts_with("| `collisions.kernel` |"))
+        .expect("the collisions.kernel row");
+    for k in KernelKind::ALL {
+        assert!(
+            kinds_row.contains(&format!("`\"{}\"`", k.scene_name())),
+            "docs/scenes.md's collisions.kernel row does not name \"{}\"",
+            k.scene_name()
+        );
+        for p in k.params() {
+            assert!(
+                doc.contains(&format!("| `collisions.{}` |", p.name)),
+                "docs/scenes.md has no row for collisions.{} ({k:?})",
+                p.name
+            );
+        }
     }
 }
 

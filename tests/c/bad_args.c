@@ -89,8 +89,8 @@ static void config_errors(void) {
            "config.drive_params[1] must be >= 0, got -2");
     c = base(); c.gamma = 0.0;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.gamma");
-    c = base(); c.kernel = GDSMC_KERNEL_VHS; c.lambda = 2.0;
-    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.lambda");
+    c = base(); c.kernel = GDSMC_KERNEL_VHS; c.kernel_params[GDSMC_VHS_LAMBDA] = 2.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.kernel_params[0]");
     c = base(); c.temperature = INFINITY;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.temperature");
     c = base(); c.drift[1] = NAN;
@@ -110,8 +110,12 @@ static void toml_errors(void) {
         "[collisions]\nkernel = \"maxwell\"\nrestitution = 2.0\n[observe]\nt_end = 1.0\n";
     STATUS(gdsmc_config_from_toml(bad_alpha, &c), GDSMC_INVALID_ARGUMENT,
            "<toml>:3: `collisions.restitution` must lie in (0, 1]");
-    const char *unknown = "[collisions]\nkernel = \"maxwell\"\nrestitution = 0.5\nfoo = 1\n[observe]\nt_end = 1.0\n";
+    const char *unknown = "[collisions]\nkernel = \"maxwell\"\nrestitution = 0.5\n[observe]\nt_end = 1.0\nfoo = 1\n";
     STATUS(gdsmc_config_from_toml(unknown, &c), GDSMC_PARSE_ERROR, "unknown field `foo`");
+    /* A kernel's keys are its declaration's: one it does not have is named with those it has. */
+    const char *not_its = "[collisions]\nkernel = \"maxwell\"\nrestitution = 0.5\nlambda = 0.5\n[observe]\nt_end = 1.0\n";
+    STATUS(gdsmc_config_from_toml(not_its, &c), GDSMC_INVALID_ARGUMENT,
+           "<toml>:4: `collisions.lambda` is not a key of [collisions] with kernel = \"maxwell\" (its keys: kernel, gamma, c, restitution, impact_speed_law, pair_restitution)");
     const char *good =
         "[particles]\nn = 100\n[collisions]\nkernel = \"hard-spheres\"\ngamma = 4.0\nrestitution = 0.5\n"
         "[drive]\nkind = \"white-noise\"\nbeta = 0.125\n[observe]\nt_end = 2.0\n[run]\nseed = 9\n";

@@ -113,8 +113,8 @@ fn check(
 
 #[test]
 fn the_initial_cooling_rate_under_the_impact_speed_law_is_exact() {
-    let hs = KernelChoice::HardSpheres { gamma: 1.0, c: C };
-    let maxwell = KernelChoice::Maxwell { gamma: 1.0, c: C };
+    let hs = KernelChoice::hard_spheres(1.0, C);
+    let maxwell = KernelChoice::maxwell(1.0, C);
     let n = 2000;
     let (three, two) = (DimensionChoice::Three, DimensionChoice::Two);
     let mut misses = Vec::new();

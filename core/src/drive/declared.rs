@@ -10,64 +10,12 @@
 //! these declarations.
 
 use super::Drive;
+pub use crate::declared::{ParamSpec, Rule};
 use crate::geometry::Geometry;
 use crate::math::{Real, exp_m1};
 
 /// Most parameters a declared drive has (the C ABI's `drive_params`).
 pub const MAX_DRIVE_PARAMS: usize = 4;
-
-/// The rule a declared parameter's value obeys. Its refusal is the physics error every front
-/// end prints (`drive.friction must be > 0, got -1`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Rule {
-    /// Any finite number.
-    Finite,
-    /// A finite number `>= 0`.
-    AtLeastZero,
-    /// A finite number `> 0`.
-    Positive,
-}
-
-impl Rule {
-    /// Whether `x` obeys the rule.
-    #[must_use]
-    pub fn holds(self, x: Real) -> bool {
-        x.is_finite()
-            && match self {
-                Rule::Finite => true,
-                Rule::AtLeastZero => x >= 0.0,
-                Rule::Positive => x > 0.0,
-            }
-    }
-
-    /// The rule in words, as a scene's documentation states it.
-    #[must_use]
-    pub const fn words(self) -> &'static str {
-        match self {
-            Rule::Finite => "a finite number",
-            Rule::AtLeastZero => "a finite number >= 0",
-            Rule::Positive => "a finite number > 0",
-        }
-    }
-}
-
-/// A parameter of a declared drive.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ParamSpec {
-    /// Its name: the scene key under `[drive]`, the name in errors and in titles.
-    pub name: &'static str,
-    /// The rule its value obeys.
-    pub rule: Rule,
-    /// What it is, in words (documentation, the C header's comments).
-    pub words: &'static str,
-    /// Its unit, in the scene's units (`"1/time"`, `"temperature"`, `"speed/time"`).
-    pub unit: &'static str,
-    /// Its value when the scene leaves it out (`None`: required).
-    pub default: Option<Real>,
-    /// A typical value that obeys the rule: the combination matrix, the fuzzers and the
-    /// documentation's examples run the drive with it.
-    pub example: Real,
-}
 
 /// What a run's work estimate takes from a drive: the temperature at the start, the run's
 /// last time and Haff's law of the kernel there (`dT/dt = -zeta0 (T/T0)^s T` from the
@@ -151,21 +99,5 @@ pub trait Declared: Drive + PartialEq + 'static {
             None => w.t0,
         };
         (w.t0.max(heated), w.t_end)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Each rule refuses what its words exclude, and every rule refuses what is not finite.
-    #[test]
-    fn rules_hold_as_worded() {
-        for r in [Rule::Finite, Rule::AtLeastZero, Rule::Positive] {
-            assert!(!r.holds(Real::NAN) && !r.holds(Real::INFINITY), "{r:?}");
-            assert!(r.holds(1.0), "{r:?}");
-        }
-        assert!(Rule::Finite.holds(-1.0) && !Rule::AtLeastZero.holds(-1.0));
-        assert!(Rule::AtLeastZero.holds(0.0) && !Rule::Positive.holds(0.0));
     }
 }

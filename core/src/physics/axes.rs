@@ -1,26 +1,41 @@
 //! The kernel axis as one table. Each kernel (GRW (2), (4), (5)) is one row: its variant, its
-//! type and the cargo feature that builds it. Every level that lists the kernels is generated
-//! from this table by the macro that takes it (glam's "generated from one template"): the
-//! validated kernel ([`KernelModel`](super::parts), with [`WithKernel`] for what is done with
-//! whichever kernel it holds), the engine's kernel level
+//! C code, its scene word, its type (declared by it, [`crate::kernel::Declared`]: parameters,
+//! title, exponent), the cargo feature that builds it and its words. Every level that lists
+//! the kernels is generated from this table by the macro that takes it (glam's "generated from
+//! one template"): [`KernelKind`](super::KernelKind) (code, scene word, feature, parameters,
+//! title), the validated kernel ([`KernelModel`](super::parts), with [`WithKernel`] for what
+//! is done with whichever kernel it holds), the engine's kernel level
 //! ([`ByKernel`](super::engine::ByKernel)) and the dispatch's kernel `match`. A new kernel is
-//! a row here, its type in `kernel.rs`, its parameters in [`KernelChoice`](super::KernelChoice)
-//! and their rules in [`parts::kernel`](super::parts).
+//! its file in `kernel/` (and its `mod` line there), its row here and its cargo feature.
 
 use crate::kernel::Kernel;
 
 /// Calls the macro `$then` with the kernel table, one row per kernel:
-/// `Variant(Type, "cargo-feature", "doc")`.
+/// `Variant(code, "scene-word", Type, "cargo-feature", "doc")`.
 macro_rules! kernel_table {
     ($then:ident) => {
         $then! {
-            Maxwell(crate::kernel::Maxwell, "maxwell", "Maxwell pseudo-molecules (GRW (2))"),
+            Maxwell(
+                0,
+                "maxwell",
+                crate::kernel::Maxwell,
+                "maxwell",
+                "Maxwell pseudo-molecules, `B = gamma C` (GRW (2), `lambda = 0`)."
+            ),
             HardSpheres(
+                1,
+                "hard-spheres",
                 crate::kernel::HardSpheres,
                 "hard-spheres",
-                "Hard spheres (hard disks in `d = 2`; GRW (4))"
+                "Hard spheres, `B = gamma C |u|` (hard disks in `d = 2`; GRW (4))."
             ),
-            Vhs(crate::kernel::Vhs, "vhs", "Variable hard spheres (GRW (5))"),
+            Vhs(
+                2,
+                "vhs",
+                crate::kernel::Vhs,
+                "vhs",
+                "Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5))."
+            ),
         }
     };
 }

@@ -198,7 +198,7 @@ impl Model {
 
 /// Generates [`by_kernel`] from the kernel table ([`kernel_table`]).
 macro_rules! by_kernel {
-    ($($v:ident($t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+    ($($v:ident($code:literal, $scene:literal, $t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
         /// The one kernel level of the dispatch, for every family (generated from the kernel
         /// table, [`super::axes`]). Out of line: each family's start keeps its locals (a
         /// mixture's pair table, its per-species observables) in its own frame, not in

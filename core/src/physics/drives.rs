@@ -125,16 +125,26 @@ impl core::fmt::Display for DriveChoice {
             DriveChoice::HostMedium { .. } => f.write_str("in a host medium"),
             DriveChoice::Declared(d) => {
                 f.write_str(d.kind.title().unwrap_or(d.kind.scene_name()))?;
-                for (i, (p, v)) in d.specs().iter().zip(d.values()).enumerate() {
-                    let sep = if i == 0 { " (" } else { ", " };
-                    write!(f, "{sep}{} = {v}", p.name)?;
-                }
-                if d.values().is_empty() {
-                    Ok(())
-                } else {
-                    f.write_str(")")
-                }
+                write_params(f, d.specs(), d.values())
             }
         }
+    }
+}
+
+/// A title's list of declared parameters, ` (friction = 0.5, temperature = 2)`; nothing when
+/// there are none.
+pub(super) fn write_params(
+    f: &mut core::fmt::Formatter<'_>,
+    specs: &[crate::declared::ParamSpec],
+    values: &[Real],
+) -> core::fmt::Result {
+    for (i, (p, v)) in specs.iter().zip(values).enumerate() {
+        let sep = if i == 0 { " (" } else { ", " };
+        write!(f, "{sep}{} = {v}", p.name)?;
+    }
+    if values.is_empty() {
+        Ok(())
+    } else {
+        f.write_str(")")
     }
 }

@@ -169,7 +169,7 @@ pub trait Family: Clone + core::fmt::Debug {
 
 /// Generates [`ByKernel`] and its [`EventLoop`] from the kernel table (`kernel_table!`).
 macro_rules! by_kernel {
-    ($($v:ident($t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+    ($($v:ident($code:literal, $scene:literal, $t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
         /// The one kernel level, for every family: the kernel chosen at run time, the levels
         /// below it generic over the kernel (generated from the kernel table in
         /// `physics/axes.rs`; each variant behind its kernel's cargo feature).

@@ -24,8 +24,9 @@ pub enum Param {
     Gamma,
     /// The kernel constant C_lambda.
     C,
-    /// The VHS exponent lambda.
-    Lambda,
+    /// Parameter `.1` of a kernel beyond `gamma` and `C` ([`super::KernelKind::params`]:
+    /// VHS's `lambda`).
+    Kernel(super::KernelKind, usize),
     /// The constant restitution coefficient alpha.
     Restitution,
     /// `beta_0` of the impact-speed law BRS (9).
@@ -99,7 +100,10 @@ impl core::fmt::Display for Param {
             Param::Drift(k) => write!(f, "components[{k}].drift"),
             Param::Gamma => f.write_str("gamma"),
             Param::C => f.write_str("c"),
-            Param::Lambda => f.write_str("lambda"),
+            Param::Kernel(kind, i) => match kind.params().get(*i) {
+                Some(p) => f.write_str(p.name),
+                None => write!(f, "kernel parameter {i}"),
+            },
             Param::Restitution => f.write_str("restitution"),
             Param::Beta0 => f.write_str("beta0"),
             Param::Delta => f.write_str("delta"),

@@ -9,8 +9,11 @@
 //! ([`DriveKind::ALL`]). A choice tells its kind ([`DriveChoice::kind`]), matched exhaustively
 //! too, so a variant of a choice without its row here does not compile.
 
-use super::{DriveChoice, KernelChoice, RestitutionLaw, SchemeChoice};
+use super::axes::kernel_table;
+use super::{DriveChoice, RestitutionLaw, SchemeChoice};
 use crate::drive::{Declared, ParamSpec};
+use crate::kernel::Declared as DeclaredKernel;
+use crate::math::Real;
 
 /// Declares a kind enum: `Name of Choice { Variant = code, "scene-name", "feature"; ... }`.
 macro_rules! kinds {
@@ -65,17 +68,48 @@ macro_rules! kinds {
     };
 }
 
-kinds! {
-    /// The collision kernels (GRW (2), (4), (5)).
-    KernelKind {
-        /// Maxwell pseudo-molecules, `B = gamma C` (GRW (2), `lambda = 0`).
-        Maxwell = 0, "maxwell", "maxwell";
-        /// Hard spheres, `B = gamma C |u|` (hard disks in `d = 2`; GRW (4)).
-        HardSpheres = 1, "hard-spheres", "hard-spheres";
-        /// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)).
-        Vhs = 2, "vhs", "vhs";
-    }
+/// Generates [`KernelKind`] (its codes, scene words, features and words through `kinds!`) and
+/// what the kernels declare by their type ([`KernelKind::params`], [`KernelKind::title`],
+/// [`KernelKind::exponent`]) from the kernel table ([`kernel_table`]).
+macro_rules! kernel_kind {
+    ($($v:ident($code:literal, $scene:literal, $t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+        kinds! {
+            /// The collision kernels (GRW (2), (4), (5)), generated from the kernel table
+            /// (`physics/axes.rs`).
+            KernelKind {
+                $(#[doc = $doc] $v = $code, $scene, $feature;)*
+            }
+        }
+
+        impl KernelKind {
+            /// Its parameters beyond `gamma` and `C`, in the order of their values
+            /// (`kernel_params` in C, [`KernelChoice::values`]).
+            #[must_use]
+            pub fn params(self) -> &'static [ParamSpec] {
+                match self {
+                    $(KernelKind::$v => <$t as DeclaredKernel>::PARAMS,)*
+                }
+            }
+
+            /// Its name in a chart's title ("hard-sphere kernel").
+            #[must_use]
+            pub fn title(self) -> &'static str {
+                match self {
+                    $(KernelKind::$v => <$t as DeclaredKernel>::TITLE,)*
+                }
+            }
+
+            /// The exponent `lambda` of `|u|^lambda` these values of its parameters give.
+            #[must_use]
+            pub fn exponent(self, values: &[Real]) -> Real {
+                match self {
+                    $(KernelKind::$v => <$t as DeclaredKernel>::exponent(values),)*
+                }
+            }
+        }
+    };
 }
+kernel_table!(kernel_kind);
 
 kinds! {
     /// The restitution laws (GRW (3), BRS (9)).
@@ -180,18 +214,6 @@ kinds! {
     }
 }
 
-impl KernelChoice {
-    /// Which kernel this is.
-    #[must_use]
-    pub const fn kind(&self) -> KernelKind {
-        match self {
-            KernelChoice::Maxwell { .. } => KernelKind::Maxwell,
-            KernelChoice::HardSpheres { .. } => KernelKind::HardSpheres,
-            KernelChoice::Vhs { .. } => KernelKind::Vhs,
-        }
-    }
-}
-
 impl RestitutionLaw {
     /// Which law this is.
     #[must_use]
@@ -233,21 +255,19 @@ impl SchemeChoice {
 mod tests {
     use super::*;
 
-    /// The kernel table's rows (`axes.rs`, from which the engine's kernel level is generated)
-    /// as `(kind, feature)`.
-    macro_rules! kernel_rows {
-        ($($v:ident($t:ty, $f:literal, $d:literal)),+ $(,)?) => {
-            &[$((KernelKind::$v, $f)),+]
-        };
-    }
-
-    /// The engine's kernel table and the kinds name the same kernels with the same features.
+    /// Each kernel's declared parameters fit `kernel_params`, are named uniquely, apart from
+    /// `gamma` and `c`, with defaults and examples that obey their rules.
     #[test]
-    fn the_kernel_table_is_the_kinds() {
-        let rows: &[(KernelKind, &str)] = super::super::axes::kernel_table!(kernel_rows);
-        assert_eq!(rows.len(), KernelKind::ALL.len());
-        for (k, feature) in rows {
-            assert_eq!(k.feature(), *feature, "{k:?}");
+    fn the_kernels_declarations_hold() {
+        for &k in KernelKind::ALL {
+            let params = k.params();
+            assert_eq!(
+                crate::declared::check_specs(params, crate::kernel::MAX_KERNEL_PARAMS),
+                Ok(()),
+                "{k:?}"
+            );
+            assert!(params.iter().all(|p| p.name != "gamma" && p.name != "c"));
+            assert!(!k.title().is_empty());
         }
     }
 
@@ -259,20 +279,11 @@ mod tests {
         for (k, feature) in DECLARED_ROWS {
             assert_eq!(k.feature(), *feature, "{k:?}");
             let params = k.params().expect("a declared drive has its parameters");
-            assert!(params.len() <= crate::drive::MAX_DRIVE_PARAMS, "{k:?}");
-            for (i, p) in params.iter().enumerate() {
-                assert!(
-                    params[..i].iter().all(|q| q.name != p.name),
-                    "{k:?}: {}",
-                    p.name
-                );
-                assert!(
-                    p.default.is_none_or(|d| p.rule.holds(d)),
-                    "{k:?}: {}",
-                    p.name
-                );
-                assert!(p.rule.holds(p.example), "{k:?}: {}", p.name);
-            }
+            assert_eq!(
+                crate::declared::check_specs(params, crate::drive::MAX_DRIVE_PARAMS),
+                Ok(()),
+                "{k:?}"
+            );
         }
         let irregular = DriveKind::ALL
             .iter()

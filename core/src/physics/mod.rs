@@ -23,7 +23,7 @@
 //! // GRW Example 3 with 64 particles: alpha = 1/2, beta = 1, gamma = 4, C0 = 1/(4 pi).
 //! let physics = Physics::new(
 //!     64,
-//!     KernelChoice::Maxwell { gamma: 4.0, c: 0.25 / core::f64::consts::PI },
+//!     KernelChoice::maxwell(4.0, 0.25 / core::f64::consts::PI),
 //!     RestitutionLaw::Constant(0.5),
 //!     DriveChoice::WhiteNoise(1.0),
 //!     SchemeChoice::NoSplitting,
@@ -47,6 +47,7 @@ mod dispatch;
 mod drives;
 pub mod engine;
 pub mod error;
+mod kernels;
 mod kinds;
 pub mod model;
 mod parts;
@@ -56,11 +57,13 @@ mod species;
 pub use drives::{BackgroundKernel, DriveChoice, DriveParams};
 pub use engine::Engine;
 pub use error::{Param, PhysicsError, Problem};
+pub use kernels::KernelChoice;
 pub use kinds::{DriveKind, KernelKind, LawKind, SchemeKind};
 pub use model::Model;
 
 pub use crate::drive::MAX_DRIVE_PARAMS;
 pub use crate::geometry::DimensionChoice;
+pub use crate::kernel::MAX_KERNEL_PARAMS;
 use crate::math::Real;
 pub use crate::mixture::{MAX_PAIRS, MAX_SPECIES};
 
@@ -70,34 +73,6 @@ pub const DEFAULT_STEP_FACTOR: Real = 0.01;
 
 /// Most components an initial mixture of Maxwellians may have (BRS (35)).
 pub const MAX_COMPONENTS: usize = 16;
-
-/// The collision kernel `B = gamma C_lambda |u|^lambda` (GRW (1), (4), (5)).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum KernelChoice {
-    /// Maxwell pseudo-molecules, `B = gamma C_0` (GRW, `lambda = 0`).
-    Maxwell {
-        /// Collision-rate constant gamma of GRW (1), > 0.
-        gamma: Real,
-        /// Kernel constant C_0, > 0.
-        c: Real,
-    },
-    /// Hard spheres, `B = gamma C_1 |u|` (GRW (4)).
-    HardSpheres {
-        /// Collision-rate constant gamma of GRW (1), > 0.
-        gamma: Real,
-        /// Kernel constant C_1, > 0.
-        c: Real,
-    },
-    /// Variable hard spheres, `B = gamma C_lambda |u|^lambda` (GRW (5), RW (18)).
-    Vhs {
-        /// Collision-rate constant gamma of GRW (1), > 0.
-        gamma: Real,
-        /// Kernel constant C_lambda, > 0.
-        c: Real,
-        /// Exponent lambda in [0, 1].
-        lambda: Real,
-    },
-}
 
 /// The restitution law of GRW (3).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -111,31 +86,6 @@ pub enum RestitutionLaw {
         /// `delta >= 0` (1/5: viscoelastic spheres).
         delta: Real,
     },
-}
-
-impl KernelChoice {
-    /// `(gamma C, lambda)` of the kernel `B = gamma C |u|^lambda` (GRW (1), (2), (4), (5)):
-    /// its rate constant and its exponent (0 for Maxwell molecules, 1 for hard spheres).
-    #[must_use]
-    pub fn rate_constants(&self) -> (Real, Real) {
-        match *self {
-            KernelChoice::Maxwell { gamma, c } => (gamma * c, 0.0),
-            KernelChoice::HardSpheres { gamma, c } => (gamma * c, 1.0),
-            KernelChoice::Vhs { gamma, c, lambda } => (gamma * c, lambda),
-        }
-    }
-}
-
-/// The kernel as a title names it: "Maxwell kernel", "hard-sphere kernel", "VHS kernel
-/// (lambda = 0.5)".
-impl core::fmt::Display for KernelChoice {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self {
-            KernelChoice::Maxwell { .. } => f.write_str("Maxwell kernel"),
-            KernelChoice::HardSpheres { .. } => f.write_str("hard-sphere kernel"),
-            KernelChoice::Vhs { lambda, .. } => write!(f, "VHS kernel (lambda = {lambda})"),
-        }
-    }
 }
 
 impl RestitutionLaw {

@@ -8,14 +8,14 @@ use super::axes::{WithKernel, kernel_table};
 use super::error::{Param, PhysicsError, Problem};
 use super::kinds::declared_drives;
 use super::{BackgroundKernel, DriveChoice, KernelChoice, RestitutionLaw, SchemeChoice};
-use super::{Component, DriveKind, DriveParams, MAX_COMPONENTS};
+use super::{Component, DriveKind, DriveParams, KernelKind, MAX_COMPONENTS};
 use crate::drive::host_medium::HostMediumError;
 use crate::drive::{
     Declared, Drive, HardSphereBackground, Heating, HostMedium, HostMediumParams,
     MaxwellBackground, Rule, WhiteNoise, WorkInput,
 };
 use crate::engine::{SplittingOrder, check_step};
-use crate::kernel::{HardSpheres, KernelError, Maxwell, Vhs};
+use crate::kernel::{Declared as DeclaredKernel, KernelError};
 use crate::math::Real;
 use crate::particles::{ParticlesError, check_count};
 use crate::restitution::{ALPHA_RANGE, Constant, ImpactSpeed, ImpactSpeedError};
@@ -24,11 +24,39 @@ use crate::vec3::Vec3;
 
 /// Generates [`KernelModel`] from the kernel table ([`kernel_table`]).
 macro_rules! kernel_model {
-    ($($v:ident($t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+    ($($v:ident($code:literal, $scene:literal, $t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
         /// The validated kernel (generated from the kernel table, [`super::axes`]).
         #[derive(Clone, Copy, Debug, PartialEq)]
         pub(super) enum KernelModel {
             $(#[doc = $doc] $v($t),)*
+        }
+
+        /// The validated kernel of `k`: `gamma`, `C` and each of its own parameters checked
+        /// against its rule ([`crate::kernel::Declared`]), then built.
+        pub(super) fn kernel(k: KernelChoice) -> Result<KernelModel, PhysicsError> {
+            let (kind, gamma, c) = (k.kind(), k.gamma(), k.c());
+            for (i, (spec, &x)) in k.specs().iter().zip(k.values()).enumerate() {
+                if !spec.rule.holds(x) {
+                    return Err(refusal(Param::Kernel(kind, i), spec.rule, x));
+                }
+            }
+            let refused = |e| match e {
+                KernelError::Gamma => not_positive(Param::Gamma, gamma),
+                KernelError::C => not_positive(Param::C, c),
+                KernelError::Strength => PhysicsError {
+                    param: Param::Gamma,
+                    problem: Problem::Strength(gamma * c),
+                },
+                KernelError::Param(i) => PhysicsError {
+                    param: Param::Kernel(kind, i),
+                    problem: Problem::DoesNotFit("makes the kernel's rate overflow"),
+                },
+            };
+            match kind {
+                $(KernelKind::$v => <$t as DeclaredKernel>::from_values(gamma, c, k.values())
+                    .map(KernelModel::$v)
+                    .map_err(refused),)*
+            }
         }
 
         impl KernelModel {
@@ -159,6 +187,10 @@ fn refusal(param: Param, rule: Rule, x: Real) -> PhysicsError {
             param,
             problem: Problem::NotFinite(x),
         },
+        Rule::Within { range, .. } => PhysicsError {
+            param,
+            problem: Problem::OutOfRange { value: x, range },
+        },
     }
 }
 
@@ -248,45 +280,6 @@ pub(super) fn initial(
         return err(Param::Components, Problem::AllWeightsZero);
     }
     Ok(mix)
-}
-
-pub(super) fn kernel(k: KernelChoice) -> Result<KernelModel, PhysicsError> {
-    let (gamma, c) = match k {
-        KernelChoice::Maxwell { gamma, c }
-        | KernelChoice::HardSpheres { gamma, c }
-        | KernelChoice::Vhs { gamma, c, .. } => (gamma, c),
-    };
-    let refused = |e| match e {
-        KernelError::Gamma => not_positive(Param::Gamma, gamma),
-        KernelError::C => not_positive(Param::C, c),
-        KernelError::Strength => PhysicsError {
-            param: Param::Gamma,
-            problem: Problem::Strength(gamma * c),
-        },
-        KernelError::Lambda => {
-            let KernelChoice::Vhs { lambda, .. } = k else {
-                unreachable!("only VHS has an exponent")
-            };
-            PhysicsError {
-                param: Param::Lambda,
-                problem: Problem::OutOfRange {
-                    value: lambda,
-                    range: "[0, 1]",
-                },
-            }
-        }
-    };
-    Ok(match k {
-        KernelChoice::Maxwell { .. } => {
-            KernelModel::Maxwell(Maxwell::new(gamma, c).map_err(refused)?)
-        }
-        KernelChoice::HardSpheres { .. } => {
-            KernelModel::HardSpheres(HardSpheres::new(gamma, c).map_err(refused)?)
-        }
-        KernelChoice::Vhs { lambda, .. } => {
-            KernelModel::Vhs(Vhs::new(gamma, c, lambda).map_err(refused)?)
-        }
-    })
 }
 
 pub(super) fn law(r: RestitutionLaw) -> Result<LawModel, PhysicsError> {

@@ -154,13 +154,7 @@ pub fn trajectory_bits(
 pub mod kernels {
     use gdsmc_core::physics::KernelChoice;
     /// Hard spheres.
-    pub const HARD: KernelChoice = KernelChoice::HardSpheres {
-        gamma: 1.0,
-        c: 0.25 / core::f64::consts::PI,
-    };
+    pub const HARD: KernelChoice = KernelChoice::hard_spheres(1.0, 0.25 / core::f64::consts::PI);
     /// Maxwell molecules.
-    pub const MAXWELL: KernelChoice = KernelChoice::Maxwell {
-        gamma: 1.0,
-        c: 0.25 / core::f64::consts::PI,
-    };
+    pub const MAXWELL: KernelChoice = KernelChoice::maxwell(1.0, 0.25 / core::f64::consts::PI);
 }

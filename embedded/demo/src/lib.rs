@@ -34,10 +34,7 @@ const C_QUARTER_PI: f64 = 0.079_577_471_545_947_67;
 pub fn grw_example3(n: usize) -> Physics {
     Physics::new(
         n,
-        KernelChoice::Maxwell {
-            gamma: 4.0,
-            c: C_QUARTER_PI,
-        },
+        KernelChoice::maxwell(4.0, C_QUARTER_PI),
         RestitutionLaw::Constant(0.5),
         DriveChoice::WhiteNoise(1.0),
         SchemeChoice::NoSplitting,
@@ -49,10 +46,7 @@ pub fn grw_example3(n: usize) -> Physics {
 pub fn hcs_hard_spheres(n: usize) -> Physics {
     Physics::new(
         n,
-        KernelChoice::HardSpheres {
-            gamma: 1.0,
-            c: C_QUARTER_PI,
-        },
+        KernelChoice::hard_spheres(1.0, C_QUARTER_PI),
         RestitutionLaw::Constant(0.9),
         DriveChoice::None,
         SchemeChoice::NoSplitting,
@@ -77,10 +71,7 @@ pub fn rough_hcs(n: usize) -> Physics {
 pub fn rough_disk_mixture(n: usize) -> Physics {
     let mut p = Physics::new(
         n,
-        KernelChoice::HardSpheres {
-            gamma: 4.0,
-            c: C_QUARTER_PI,
-        },
+        KernelChoice::hard_spheres(4.0, C_QUARTER_PI),
         RestitutionLaw::Constant(0.8),
         DriveChoice::WhiteNoise(1.0),
         SchemeChoice::NoSplitting,

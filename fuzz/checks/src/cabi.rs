@@ -71,7 +71,6 @@ fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
     for f in [
         &mut c.gamma,
         &mut c.c,
-        &mut c.lambda,
         &mut c.restitution,
         &mut c.impact_beta0,
         &mut c.impact_delta,
@@ -90,8 +89,8 @@ fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
         }
     }
     // A declared drive's parameters (the Gaussian and Langevin thermostats, the constant
-    // force, ...), in `drive_params`.
-    for f in &mut c.drive_params {
+    // force, ...), in `drive_params`; a kernel's own (VHS's lambda), in `kernel_params`.
+    for f in c.drive_params.iter_mut().chain(&mut c.kernel_params) {
         if u.ratio(1u8, 2u8).unwrap_or(false) {
             *f = wild(u);
         }

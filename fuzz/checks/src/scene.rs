@@ -38,7 +38,8 @@ fn check(text: &str, overrides: &[String]) {
 
 /// Every table and key of the schema with the kinds of values it takes; `[drive]`'s keys are
 /// derived from the core: none's, white noise's and the host medium's beside every declared
-/// drive's parameters (`DriveKind::params`), so a new drive is fuzzed with its keys.
+/// drive's parameters (`DriveKind::params`), and `[collisions]`'s every kernel's own keys
+/// (`KernelKind::params`), so a new drive or kernel is fuzzed with its keys.
 pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::new(|| {
     let mut drive = vec![
         "kind",
@@ -57,23 +58,21 @@ pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::ne
             }
         }
     }
+    let mut collisions = vec!["kernel", "gamma", "c", "restitution", "impact_speed_law"];
+    for k in KernelKind::ALL {
+        for p in k.params() {
+            if !collisions.contains(&p.name) {
+                collisions.push(p.name);
+            }
+        }
+    }
     vec![
         ("particles", vec!["n"]),
         (
             "particles.initial",
             vec!["kind", "mass", "temperature", "drift", "components"],
         ),
-        (
-            "collisions",
-            vec![
-                "kernel",
-                "lambda",
-                "gamma",
-                "c",
-                "restitution",
-                "impact_speed_law",
-            ],
-        ),
+        ("collisions", collisions),
         ("drive", drive),
         ("scheme", vec!["kind", "dt", "step_factor"]),
         (

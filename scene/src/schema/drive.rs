@@ -40,14 +40,12 @@ impl<'de> Deserialize<'de> for DriveSpec {
             let value = value.into_inner();
             match key.as_str() {
                 "kind" => {
-                    let word = String::deserialize(value).map_err(D::Error::custom)?;
-                    let kind = DriveKind::from_scene_name(&word).ok_or_else(|| {
-                        let words: Vec<_> = DriveKind::ALL.iter().map(|k| k.scene_name()).collect();
-                        D::Error::custom(format!(
-                            "unknown drive kind `{word}`, expected one of `{}`",
-                            words.join("`, `")
-                        ))
-                    })?;
+                    let kind = super::kind_word(
+                        value,
+                        "drive kind",
+                        DriveKind::ALL.iter().map(|&k| (k.scene_name(), k)),
+                    )
+                    .map_err(D::Error::custom)?;
                     spec.kind = Some(Spanned::new(span, kind));
                 }
                 "kernel" => {

@@ -4,7 +4,9 @@
 use serde::Deserialize;
 use toml::Spanned;
 
+mod collisions;
 mod drive;
+pub use collisions::{CollisionsSpec, ImpactSpeedSpec};
 pub use drive::DriveSpec;
 
 /// A scene file as written.
@@ -229,6 +231,27 @@ impl<'de> Deserialize<'de> for Vector3 {
     }
 }
 
+/// The kind a scene word names among `kinds` (`(word, kind)`), or the error that lists them:
+/// "unknown kernel `vsh`, expected one of `maxwell`, `hard-spheres`, `vhs`".
+fn kind_word<K>(
+    value: toml::Value,
+    what: &str,
+    kinds: impl Iterator<Item = (&'static str, K)>,
+) -> Result<K, String> {
+    let word = String::deserialize(value).map_err(|e| e.to_string())?;
+    let mut words = Vec::new();
+    for (w, k) in kinds {
+        if w == word {
+            return Ok(k);
+        }
+        words.push(w);
+    }
+    Err(format!(
+        "unknown {what} `{word}`, expected one of `{}`",
+        words.join("`, `")
+    ))
+}
+
 pub(crate) fn one() -> Spanned<f64> {
     Spanned::new(0..0, 1.0)
 }
@@ -263,59 +286,6 @@ pub struct InitialSpec {
     /// Components of a mixture.
     #[serde(default)]
     pub components: Option<Spanned<Vec<ComponentSpec>>>,
-}
-
-/// `collisions.kernel`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum KernelKind {
-    /// Maxwell pseudo-molecules, `B = gamma C_0`.
-    Maxwell,
-    /// Hard spheres, `B = gamma C_1 |u|`.
-    HardSpheres,
-    /// Variable hard spheres, `B = gamma C_lambda |u|^lambda`.
-    Vhs,
-}
-
-/// `[collisions]`.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct CollisionsSpec {
-    /// The kernel.
-    pub kernel: KernelKind,
-    /// VHS exponent in [0, 1] (only for `kernel = "vhs"`).
-    #[serde(default)]
-    pub lambda: Option<Spanned<f64>>,
-    /// Collision-rate constant gamma of GRW (1) (> 0). Default 1.
-    #[serde(default = "one")]
-    pub gamma: Spanned<f64>,
-    /// Kernel constant C_lambda (> 0). Default 1/(4 pi).
-    #[serde(default = "default_c")]
-    pub c: Spanned<f64>,
-    /// Restitution coefficient alpha in (0, 1] (a constant law).
-    #[serde(default)]
-    pub restitution: Option<Spanned<f64>>,
-    /// The impact-speed law BRS (9)-(10) instead of a constant: `{ beta0 = ..., delta = ... }`.
-    #[serde(default)]
-    pub impact_speed_law: Option<Spanned<ImpactSpeedSpec>>,
-    /// A mixture's restitution per species pair: a symmetric `S x S` matrix (default: the
-    /// constant `restitution` for every pair).
-    #[serde(default)]
-    pub pair_restitution: Option<Spanned<Vec<Vec<f64>>>>,
-}
-
-/// `collisions.impact_speed_law`: `1 - e = 2 beta0 |g . n|^delta` (BRS (9)-(10)).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ImpactSpeedSpec {
-    /// `beta_0 >= 0`.
-    pub beta0: f64,
-    /// `delta >= 0` (1/5: viscoelastic spheres).
-    pub delta: f64,
-}
-
-fn default_c() -> Spanned<f64> {
-    Spanned::new(0..0, 1.0 / (4.0 * std::f64::consts::PI))
 }
 
 /// `drive.kernel` of a host medium.

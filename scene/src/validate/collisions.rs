@@ -1,9 +1,21 @@
-//! `[collisions]`: the kernel and the restitution law.
+//! `[collisions]`: the kernel (`gamma`, `c` and the keys its declaration names,
+//! [`gdsmc_core::kernel::Declared`]) and the restitution law.
 
 use super::Ctx;
+use super::declared::Table;
 use crate::error::Error;
-use crate::schema::{CollisionsSpec, ImpactSpeedSpec, KernelKind};
+use crate::schema::{CollisionsSpec, ImpactSpeedSpec};
 use gdsmc_core::physics::{KernelChoice, Param, RestitutionLaw};
+
+/// The keys of `[collisions]` with every kernel (a kernel's own follow them).
+pub const COMMON_KEYS: [&str; 6] = [
+    "kernel",
+    "gamma",
+    "c",
+    "restitution",
+    "impact_speed_law",
+    "pair_restitution",
+];
 
 /// The kernel and the restitution law, with the keys that hold their parameters.
 pub(super) fn collisions(
@@ -12,33 +24,24 @@ pub(super) fn collisions(
 ) -> Result<(KernelChoice, RestitutionLaw), Error> {
     ctx.holds(Param::Gamma, "collisions.gamma", c.gamma.span());
     ctx.holds(Param::C, "collisions.c", c.c.span());
-    let (gamma, cc) = (*c.gamma.get_ref(), *c.c.get_ref());
-    let kernel = match (c.kernel, &c.lambda) {
-        (KernelKind::Maxwell | KernelKind::HardSpheres, Some(l)) => {
-            return ctx.invalid(
-                l.span(),
-                "collisions.lambda",
-                "is only used with kernel = \"vhs\"",
-            );
-        }
-        (KernelKind::Maxwell, None) => KernelChoice::Maxwell { gamma, c: cc },
-        (KernelKind::HardSpheres, None) => KernelChoice::HardSpheres { gamma, c: cc },
-        (KernelKind::Vhs, None) => {
-            return ctx.invalid(
-                0..0,
-                "collisions.lambda",
-                "is required with kernel = \"vhs\"",
-            );
-        }
-        (KernelKind::Vhs, Some(l)) => {
-            ctx.holds(Param::Lambda, "collisions.lambda", l.span());
-            KernelChoice::Vhs {
-                gamma,
-                c: cc,
-                lambda: *l.get_ref(),
-            }
-        }
+    let kind = *c.kernel.get_ref();
+    let table = Table {
+        name: "collisions",
+        numbers: &c.numbers,
+        kind_span: c.kernel.span(),
+        kind_words: format!("kernel = \"{}\"", kind.scene_name()),
     };
+    let specs = kind.params();
+    let keys: Vec<&str> = COMMON_KEYS
+        .iter()
+        .copied()
+        .chain(specs.iter().map(|p| p.name))
+        .collect();
+    let whose = format!("[collisions] with {}", table.kind_words);
+    table.only(ctx, &keys, std::iter::empty(), &whose)?;
+    let values = table.declared(ctx, specs, |i| Param::Kernel(kind, i))?;
+    let kernel = KernelChoice::new(kind, *c.gamma.get_ref(), *c.c.get_ref(), &values)
+        .expect("a kernel takes one value per parameter");
     if let (Some(r), Some(_)) = (&c.restitution, &c.pair_restitution) {
         return ctx.invalid(
             r.span(),

@@ -5,6 +5,7 @@
 //! histograms, ensembles) are the scene's own and checked here.
 
 mod collisions;
+mod declared;
 mod drive;
 pub(crate) mod observe;
 mod particles;

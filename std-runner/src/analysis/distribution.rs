@@ -6,7 +6,7 @@ use crate::reference::exact::sonine::mu2_maxwellian;
 use crate::reference::exact::tail;
 use crate::run::RunStats;
 use crate::run::columns::name;
-use crate::scene::{DriveKind, KernelChoice, Scene};
+use crate::scene::{DriveKind, KernelKind, Scene};
 
 /// Mean and 99.9% half-width of a column: the steady-state average when the scene has one,
 /// else the last observation.
@@ -74,9 +74,7 @@ pub struct Reduced {
 /// The tail law of MS for this scene, with `mu_2` from the run (pairs) or, without pairs,
 /// the first Sonine approximation `mu_2^(0) (1 + 3 a2 / 16)` (MS (26), (28)).
 pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
-    if !matches!(scene.physics().kernel, KernelChoice::HardSpheres { .. })
-        || !scene.translation_is_smooth()
-    {
+    if scene.physics().kernel.kind() != KernelKind::HardSpheres || !scene.translation_is_smooth() {
         return None;
     }
     // MS's tail laws assume a constant restitution coefficient.

@@ -3,7 +3,7 @@
 use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
 use crate::run::columns::name;
 use crate::run::{initial_sampler, initial_temperature};
-use crate::scene::{BackgroundKernel, DriveChoice, DriveKind, KernelChoice, Scene, SchemeChoice};
+use crate::scene::{BackgroundKernel, DriveChoice, DriveKind, KernelKind, Scene, SchemeChoice};
 
 /// A named reference curve `t -> value` for an observable column.
 pub struct ReferenceCurve {
@@ -51,10 +51,8 @@ fn smooth_maxwell(scene: &Scene) -> Option<(f64, f64, f64)> {
         return None; // a one-species solution of smooth particles
     }
     let alpha = scene.physics().restitution.constant()?;
-    let KernelChoice::Maxwell { gamma, c } = scene.physics().kernel else {
-        return None;
-    };
-    Some((alpha, gamma, c))
+    let k = scene.physics().kernel;
+    (k.kind() == KernelKind::Maxwell).then(|| (alpha, k.gamma(), k.c()))
 }
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
@@ -105,9 +103,11 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroMode
         return None; // BRS (21)-(22)'s coefficients are the spheres' integrals
     }
     use crate::reference::hydro::{Closure, HydroModel};
-    let KernelChoice::HardSpheres { gamma, c } = scene.physics().kernel else {
+    let k = scene.physics().kernel;
+    if k.kind() != KernelKind::HardSpheres {
         return None;
-    };
+    }
+    let (gamma, c) = (k.gamma(), k.c());
     let DriveChoice::HostMedium {
         kernel: BackgroundKernel::HardSpheres,
         c1,
@@ -444,7 +444,7 @@ pub fn sonine_cooling_a2(scene: &Scene) -> Option<f64> {
         return None;
     }
     let alpha = scene.physics().restitution.constant()?;
-    let hard = matches!(scene.physics().kernel, KernelChoice::HardSpheres { .. });
+    let hard = scene.physics().kernel.kind() == KernelKind::HardSpheres;
     (hard && matches!(scene.physics().drive, DriveChoice::None))
         .then(|| crate::reference::exact::sonine::a2_cooling_in(scene.dimension() as f64, alpha))
 }

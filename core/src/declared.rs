@@ -1,0 +1,139 @@
+//! What a variant declared by its type says of each of its parameters (rand_distr's model: the
+//! parameter, its rule and the rule's words beside the constructor): its name, its [`Rule`],
+//! its words, its unit, its default and an example value. Drives
+//! ([`crate::drive::Declared`]) and kernels ([`crate::kernel::Declared`]) declare their
+//! parameters so; every front end (scene keys, the C ABI's parameter arrays, the validation's
+//! errors, the fuzzers, the documentation) is derived from these declarations.
+
+use crate::math::Real;
+
+/// The rule a declared parameter's value obeys. Its refusal is the physics error every front
+/// end prints (`drive.friction must be > 0, got -1`, `collisions.lambda must lie in [0, 1],
+/// got 2`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Rule {
+    /// Any finite number.
+    Finite,
+    /// A finite number `>= 0`.
+    AtLeastZero,
+    /// A finite number `> 0`.
+    Positive,
+    /// A number in the closed interval `[lo, hi]`, written `range` (`"[0, 1]"`).
+    Within {
+        /// The least value.
+        lo: Real,
+        /// The greatest value.
+        hi: Real,
+        /// The interval as text.
+        range: &'static str,
+    },
+}
+
+impl Rule {
+    /// Whether `x` obeys the rule.
+    #[must_use]
+    pub fn holds(self, x: Real) -> bool {
+        x.is_finite()
+            && match self {
+                Rule::Finite => true,
+                Rule::AtLeastZero => x >= 0.0,
+                Rule::Positive => x > 0.0,
+                Rule::Within { lo, hi, .. } => lo <= x && x <= hi,
+            }
+    }
+}
+
+/// The rule in words, as a scene's documentation and the C header state it ("a finite number
+/// > 0", "a number in [0, 1]").
+impl core::fmt::Display for Rule {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Rule::Finite => f.write_str("a finite number"),
+            Rule::AtLeastZero => f.write_str("a finite number >= 0"),
+            Rule::Positive => f.write_str("a finite number > 0"),
+            Rule::Within { range, .. } => write!(f, "a number in {range}"),
+        }
+    }
+}
+
+/// A parameter of a variant declared by its type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParamSpec {
+    /// Its name: the scene key (under `[drive]` for a drive, `[collisions]` for a kernel), the
+    /// name in errors and in titles.
+    pub name: &'static str,
+    /// The rule its value obeys.
+    pub rule: Rule,
+    /// What it is, in words (documentation, the C header's comments).
+    pub words: &'static str,
+    /// Its unit, in the scene's units (`"1/time"`, `"temperature"`, `"1"`).
+    pub unit: &'static str,
+    /// Its value when the scene leaves it out (`None`: required).
+    pub default: Option<Real>,
+    /// A typical value that obeys the rule: the combination matrix, the fuzzers and the
+    /// documentation's examples run the variant with it.
+    pub example: Real,
+}
+
+/// Checks a table of declared parameters: at most `max`, named uniquely, defaults and examples
+/// that obey their rules. `Err` names the first parameter that breaks this.
+pub fn check_specs(params: &[ParamSpec], max: usize) -> Result<(), &'static str> {
+    if params.len() > max {
+        return Err("more parameters than its array holds");
+    }
+    for (i, p) in params.iter().enumerate() {
+        if params[..i].iter().any(|q| q.name == p.name) {
+            return Err(p.name);
+        }
+        if !p.default.is_none_or(|d| p.rule.holds(d)) || !p.rule.holds(p.example) {
+            return Err(p.name);
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const UNIT: Rule = Rule::Within {
+        lo: 0.0,
+        hi: 1.0,
+        range: "[0, 1]",
+    };
+
+    /// Each rule refuses what its words exclude, and every rule refuses what is not finite.
+    #[test]
+    fn rules_hold_as_worded() {
+        for r in [Rule::Finite, Rule::AtLeastZero, Rule::Positive, UNIT] {
+            assert!(!r.holds(Real::NAN) && !r.holds(Real::INFINITY), "{r:?}");
+            assert!(r.holds(1.0), "{r:?}");
+        }
+        assert!(Rule::Finite.holds(-1.0) && !Rule::AtLeastZero.holds(-1.0));
+        assert!(Rule::AtLeastZero.holds(0.0) && !Rule::Positive.holds(0.0));
+        assert!(UNIT.holds(0.0) && !UNIT.holds(1.0 + 1e-12) && !UNIT.holds(-1e-300));
+    }
+
+    /// A table with a repeated name, or an example its rule refuses, is refused.
+    #[test]
+    fn bad_tables_are_refused() {
+        let p = ParamSpec {
+            name: "x",
+            rule: UNIT,
+            words: "",
+            unit: "1",
+            default: None,
+            example: 0.5,
+        };
+        assert_eq!(check_specs(&[p], 1), Ok(()));
+        assert_eq!(check_specs(&[p, p], 4), Err("x"));
+        assert!(check_specs(&[p, p], 1).is_err());
+        let bad = ParamSpec { example: 2.0, ..p };
+        assert_eq!(check_specs(&[bad], 1), Err("x"));
+        let bad = ParamSpec {
+            default: Some(-1.0),
+            ..p
+        };
+        assert_eq!(check_specs(&[bad], 1), Err("x"));
+    }
+}

@@ -1,0 +1,140 @@
+//! The kernel in the description: [`KernelChoice`], a kernel declared by its type
+//! ([`crate::kernel::Declared`]) with `gamma`, `C` and the values of its parameters, and the
+//! words a title gives it.
+
+use super::{KernelKind, MAX_KERNEL_PARAMS};
+use crate::declared::ParamSpec;
+use crate::math::Real;
+
+/// The collision kernel `B = gamma C |u|^lambda` (GRW (1), (2), (4), (5)): its kind, the
+/// collision-rate constant `gamma` of GRW (1), the kernel constant `C` and the values of the
+/// kind's own parameters in their declared order ([`KernelKind::params`]: VHS's `lambda`).
+/// The rules are checked by [`Physics::validate`](super::Physics::validate).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KernelChoice {
+    kind: KernelKind,
+    gamma: Real,
+    c: Real,
+    values: [Real; MAX_KERNEL_PARAMS],
+}
+
+impl KernelChoice {
+    /// The kernel `kind` with `gamma`, `c` and `values` for its parameters in their order;
+    /// `None` unless `values` holds a value for each of them (the rest are ignored).
+    #[must_use]
+    pub fn new(kind: KernelKind, gamma: Real, c: Real, values: &[Real]) -> Option<Self> {
+        let given = values.get(..kind.params().len())?;
+        let mut all = [0.0; MAX_KERNEL_PARAMS];
+        all[..given.len()].copy_from_slice(given);
+        Some(KernelChoice {
+            kind,
+            gamma,
+            c,
+            values: all,
+        })
+    }
+
+    /// The kernel `kind` with `gamma`, `c` and each parameter's example value
+    /// ([`ParamSpec::example`]): what the combination matrix and the fuzzers run.
+    #[must_use]
+    pub fn example(kind: KernelKind, gamma: Real, c: Real) -> Self {
+        let mut values = [0.0; MAX_KERNEL_PARAMS];
+        for (v, p) in values.iter_mut().zip(kind.params()) {
+            *v = p.example;
+        }
+        KernelChoice {
+            kind,
+            gamma,
+            c,
+            values,
+        }
+    }
+
+    /// Maxwell pseudo-molecules `B = gamma C_0` (GRW (2); GRW: `C_0 = 1/(4 pi)`).
+    #[must_use]
+    pub const fn maxwell(gamma: Real, c: Real) -> Self {
+        Self::written(KernelKind::Maxwell, gamma, c, 0.0)
+    }
+
+    /// Hard spheres `B = gamma C_1 |u|` (GRW (4); hard disks in `d = 2`).
+    #[must_use]
+    pub const fn hard_spheres(gamma: Real, c: Real) -> Self {
+        Self::written(KernelKind::HardSpheres, gamma, c, 0.0)
+    }
+
+    /// Variable hard spheres `B = gamma C_lambda |u|^lambda`, `lambda` in `[0, 1]` (GRW (5)).
+    #[must_use]
+    pub const fn vhs(gamma: Real, c: Real, lambda: Real) -> Self {
+        Self::written(KernelKind::Vhs, gamma, c, lambda)
+    }
+
+    const fn written(kind: KernelKind, gamma: Real, c: Real, first: Real) -> Self {
+        let mut values = [0.0; MAX_KERNEL_PARAMS];
+        values[0] = first;
+        KernelChoice {
+            kind,
+            gamma,
+            c,
+            values,
+        }
+    }
+
+    /// Which kernel this is.
+    #[must_use]
+    pub const fn kind(&self) -> KernelKind {
+        self.kind
+    }
+
+    /// The collision-rate constant `gamma` of GRW (1).
+    #[must_use]
+    pub const fn gamma(&self) -> Real {
+        self.gamma
+    }
+
+    /// The kernel constant `C`.
+    #[must_use]
+    pub const fn c(&self) -> Real {
+        self.c
+    }
+
+    /// The same kernel with `gamma` and `c` replaced.
+    #[must_use]
+    pub const fn with_constants(self, gamma: Real, c: Real) -> Self {
+        KernelChoice { gamma, c, ..self }
+    }
+
+    /// The values of its own parameters, one per declared parameter.
+    #[must_use]
+    pub fn values(&self) -> &[Real] {
+        &self.values[..self.specs().len()]
+    }
+
+    /// Its parameters' declarations.
+    #[must_use]
+    pub fn specs(&self) -> &'static [ParamSpec] {
+        self.kind.params()
+    }
+
+    /// The value of the parameter named `name`, if the kernel has one.
+    #[must_use]
+    pub fn get(&self, name: &str) -> Option<Real> {
+        let i = self.specs().iter().position(|p| p.name == name)?;
+        Some(self.values[i])
+    }
+
+    /// `(gamma C, lambda)` of the kernel `B = gamma C |u|^lambda` (GRW (1), (2), (4), (5)):
+    /// its rate constant and its exponent (0 for Maxwell molecules, 1 for hard spheres).
+    #[must_use]
+    pub fn rate_constants(&self) -> (Real, Real) {
+        (self.gamma * self.c, self.kind.exponent(self.values()))
+    }
+}
+
+/// The kernel as a title names it: "Maxwell kernel", "hard-sphere kernel", "VHS kernel
+/// (lambda = 0.5)".
+impl core::fmt::Display for KernelChoice {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.kind.title())?;
+        super::drives::write_params(f, self.specs(), self.values())
+    }
+}
