@@ -29,6 +29,11 @@ pub trait Drive: Copy + core::fmt::Debug {
     /// False for a drive that does nothing (then no kick is ever computed).
     const ACTS: bool;
 
+    /// False for a drive no exact (no-splitting) scheme runs (the constant force, whose
+    /// correction couples every particle's free motion): its exact loops are then never
+    /// compiled (the engine's `Exact` level), and the validation refuses the scheme first.
+    const EXACT: bool = true;
+
     /// Called by the event loops whenever every particle is at one time, with the observables
     /// there (drives that act about the bulk velocity take it from here). Default: nothing.
     #[inline(always)]

@@ -8,8 +8,8 @@
 )]
 
 use super::engine::{
-    ByMixtureScheme, ByScheme, BySplit, Family, HostIn, Mixture, PairModel, Rough, RoughPairs,
-    Smooth, SmoothPairs,
+    ByMixtureScheme, ByScheme, BySplit, Exact, Family, HostIn, Mixture, PairModel, Rough,
+    RoughPairs, Smooth, SmoothPairs,
 };
 use super::model::Model;
 use super::parts::SchemeModel;
@@ -121,7 +121,7 @@ fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
             )
         }),
         SchemeModel::NoSplitting => wrap(
-            started(MixtureNoSplitting::start_in(sp, physics, drives, p, t0)),
+            Exact::start(|| started(MixtureNoSplitting::start_in(sp, physics, drives, p, t0))),
             ByMixtureScheme::NoSplitting,
         ),
     }
@@ -160,7 +160,8 @@ fn by_split<K: Kernel, D: Drive, A: CollisionMap, G: Geometry>(
 ) -> Begun<BySplit<K, D, A, G>> {
     match scheme {
         SchemeModel::NoSplitting => {
-            wrap(NoSplitting::start_in(k, d, a, p, t0), BySplit::NoSplitting)
+            let exact = Exact::start(|| NoSplitting::start_in(k, d, a, p, t0));
+            wrap(exact, BySplit::NoSplitting)
         }
         SchemeModel::Splitting(order, dt) => built!(feature = "splitting", "splitting", {
             wrap(

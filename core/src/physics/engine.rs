@@ -152,6 +152,100 @@ impl<T> EventLoop for NotBuilt<T> {
     }
 }
 
+/// An exact (no-splitting) loop `T` of drive `D`: the loop itself for a drive an exact scheme
+/// runs; for one none does ([`Drive::EXACT`] false) it is never made (the dispatch refuses
+/// first, as the validation does), and its methods' calls, behind the constant, are not
+/// compiled: no exact loop of a stepped-only drive is monomorphized.
+#[derive(Clone, Debug)]
+pub struct Exact<T, D>(T, core::marker::PhantomData<D>);
+
+impl<T, D: Drive> Exact<T, D> {
+    /// The loop `t`, if drive `D` is run exactly; `None` never calls `t`, so the loop is not
+    /// compiled for a stepped-only drive.
+    pub(super) fn start(
+        t: impl FnOnce() -> Result<(T, Observables), EngineError>,
+    ) -> Result<(Self, Observables), EngineError> {
+        if D::EXACT {
+            let (l, obs) = t()?;
+            Ok((Exact(l, core::marker::PhantomData), obs))
+        } else {
+            Err(EngineError::Invariant(
+                "validated: no exact loop runs a drive that must be time-stepped",
+            ))
+        }
+    }
+}
+
+/// The method of an exact loop whose drive is stepped-only: never called (no such loop is made).
+#[cold]
+fn never_made() -> ! {
+    unreachable!("no exact loop of a stepped-only drive is made")
+}
+
+impl<T: EventLoop, D: Drive> EventLoop for Exact<T, D> {
+    fn advance_to<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t_end: Real,
+        rng: &mut R,
+    ) -> Result<Observables, EngineError> {
+        if D::EXACT {
+            self.0.advance_to(p, t_end, rng)
+        } else {
+            never_made()
+        }
+    }
+    fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        if D::EXACT {
+            self.0.resync(p)
+        } else {
+            never_made()
+        }
+    }
+    fn time(&self) -> Real {
+        if D::EXACT {
+            self.0.time()
+        } else {
+            never_made()
+        }
+    }
+    fn counts(&self) -> Counts {
+        if D::EXACT {
+            self.0.counts()
+        } else {
+            never_made()
+        }
+    }
+    fn work_rate(&self, n: usize) -> Real {
+        if D::EXACT {
+            self.0.work_rate(n)
+        } else {
+            never_made()
+        }
+    }
+    fn velocity_map(&self) -> Frame {
+        if D::EXACT {
+            self.0.velocity_map()
+        } else {
+            never_made()
+        }
+    }
+    fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
+        if D::EXACT {
+            self.0.species(p)
+        } else {
+            never_made()
+        }
+    }
+    fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
+        if D::EXACT {
+            self.0.rough(p)
+        } else {
+            never_made()
+        }
+    }
+}
+
 /// A family of loops (particle model, species, dimension): what the levels below the kernel
 /// hold for it. Every level ([`ByKernel`], [`ByDrive`], [`ByLaw`]) is written once for all
 /// families; a family names only what differs: its white noise, its dimension and its scheme
@@ -271,8 +365,8 @@ impl<G: WhiteNoiseIn, P: PairModel> Family for Mixture<G, P> {
 /// collision map `A`, dimension `G`.
 #[derive(Clone, Debug)]
 pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
-    /// The exact no-splitting scheme (GRW Section 3).
-    NoSplitting(NoSplitting<K, D, A, G>),
+    /// The exact no-splitting scheme (GRW Section 3; never made for a stepped-only drive).
+    NoSplitting(Exact<NoSplitting<K, D, A, G>, D>),
     /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
     Splitting(Built<Splitting<K, D, A, G>, SPLITTING>),
     /// MS's time-stepped scheme (Bird's no-time-counter form for the Maxwell and VHS kernels;
@@ -319,8 +413,9 @@ impl PairModel for RoughPairs {
 /// law `L` and dimension `G`.
 #[derive(Clone, Debug)]
 pub enum ByMixtureScheme<K: Kernel, D: Drive, L: PairLaw, G: Geometry> {
-    /// The exact no-splitting scheme (GRW Section 3, one majorant per pair of species).
-    NoSplitting(MixtureNoSplitting<K, D, L, G>),
+    /// The exact no-splitting scheme (GRW Section 3, one majorant per pair of species; never
+    /// made for a stepped-only drive).
+    NoSplitting(Exact<MixtureNoSplitting<K, D, L, G>, D>),
     /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
     Splitting(Built<MixtureSplitting<K, D, L, G>, SPLITTING>),
     /// MS's time-stepped scheme, one collision stage per pair type (feature `time-stepped`).
