@@ -43,6 +43,12 @@ impl Majorant {
         }
     }
 
+    /// The exact majorant of a gas whose observables are `obs`, `Umax = 2 max_i |v_i - V|`
+    /// about its bulk velocity `V` (GRW step 1.4): every loop's start and synchronization.
+    pub fn about(obs: &Observables) -> Self {
+        Majorant::new(2.0 * obs.max_peculiar_speed, obs.bulk)
+    }
+
     /// Raises the bound to cover `v`: `Umax = max(Umax, 2 |v - V|)` (RW (21)), the same bits as
     /// computing it every time, with a square root only when `|v - V|^2` passes the last one.
     #[inline(always)]
@@ -168,7 +174,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Collider<K, D, A, G> {
         self.counts.observations += 1;
         self.drive.observe(obs);
         if K::USES_UMAX {
-            self.maj = Majorant::new(2.0 * obs.max_peculiar_speed, obs.bulk);
+            self.maj = Majorant::about(obs);
         }
     }
 }

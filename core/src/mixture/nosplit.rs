@@ -428,8 +428,7 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         tell_drives(&mut self.drives, &obs);
         for s in 0..self.sp.len() {
             if K::USES_UMAX {
-                self.maj[s] =
-                    Majorant::new(2.0 * obs.species[s].max_peculiar_speed, obs.species[s].bulk);
+                self.maj[s] = Majorant::about(&obs.species[s]);
             }
         }
         for k in 0..self.sp.pair_types() {

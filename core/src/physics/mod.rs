@@ -42,6 +42,7 @@
 
 mod axes;
 mod build;
+mod built;
 mod dimension;
 mod dispatch;
 mod drives;
