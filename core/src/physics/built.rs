@@ -80,7 +80,9 @@ pub struct Exact<T, D>(T, core::marker::PhantomData<D>);
 
 impl<T, D: Drive> Exact<T, D> {
     /// The loop `t`, if drive `D` is run exactly; `None` never calls `t`, so the loop is not
-    /// compiled for a stepped-only drive.
+    /// compiled for a stepped-only drive. Inlined: the loop is moved no more than it was
+    /// without this level (a firmware's stack).
+    #[inline(always)]
     pub(super) fn start(
         t: impl FnOnce() -> Result<(T, Observables), EngineError>,
     ) -> Result<(Self, Observables), EngineError> {
