@@ -35,7 +35,9 @@
 //! front ends read scenes alike.
 
 mod error;
+mod histograms;
 mod overrides;
+mod read;
 pub mod schema;
 mod validate;
 pub mod vary;
@@ -45,51 +47,16 @@ pub use gdsmc_core::physics::{
     BackgroundKernel, Component, DriveChoice, DriveKind, DriveParams, KernelChoice, KernelKind,
     Model, Physics, RestitutionLaw, SchemeChoice,
 };
+pub use histograms::{Marginal, Shells};
 pub use overrides::{
     Override, Sourced, load_with, load_with_overrides, parse_with, parse_with_overrides,
 };
+pub(crate) use read::toml_of;
+pub use read::{MAX_SCENE_BYTES, load, parse, read, sweep_plan};
 pub use schema::SceneFile;
 pub use validate::DEFAULT_STEP_FACTOR;
 
-use std::path::{Path, PathBuf};
-
-/// A histogram of a speed in equal shells: `shells` shells on [0, `radius`) and one beyond
-/// (the keys `shells` and `radius` of `[histogram]` and `[reduced_histogram]`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Shells {
-    /// Shells inside the radius (K).
-    pub shells: usize,
-    /// Their outer radius (R; `c_max` for the reduced speed).
-    pub radius: f64,
-}
-
-impl Shells {
-    /// Weights the histogram holds: the K shells and the one beyond.
-    #[must_use]
-    pub fn weights(&self) -> usize {
-        self.shells + 1
-    }
-}
-
-/// A histogram of one velocity component (`[marginal_histogram]`): `bins` equal bins on
-/// [-`radius`, `radius`) and one beyond each end.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Marginal {
-    /// The component, 0..=2 (the file's 1..=3).
-    pub axis: usize,
-    /// Bins inside [-R, R).
-    pub bins: usize,
-    /// R.
-    pub radius: f64,
-}
-
-impl Marginal {
-    /// Weights one observation's histogram holds: the bins and one beyond each end.
-    #[must_use]
-    pub fn weights(&self) -> usize {
-        self.bins + 2
-    }
-}
+use std::path::PathBuf;
 
 /// A validated scene, ready to run.
 #[derive(Debug, Clone)]
@@ -451,67 +418,4 @@ impl Scene {
             + self.reduced_histogram.map_or(0, |h| h.weights())
             + self.marginal_histogram.map_or(0, |h| 2 * h.weights())
     }
-}
-
-/// Most bytes a scene may have: a scene is a few KiB, and the TOML reader's memory grows with
-/// its input many times over (50 MB of `=` once took 2.5 GB before the refusal).
-pub const MAX_SCENE_BYTES: usize = 1 << 20;
-
-/// The refusal of a scene text or file of `len` bytes or more, above [`MAX_SCENE_BYTES`].
-fn too_large(path: &Path, len: usize) -> Error {
-    Error::Parse {
-        path: path.to_path_buf(),
-        message: format!(
-            "is {len} bytes or more, above the {} KiB a scene may have (a scene is a few KiB):              is this the scene file?",
-            MAX_SCENE_BYTES >> 10
-        ),
-    }
-}
-
-/// Scene text read as TOML into `T`, refused before reading when above [`MAX_SCENE_BYTES`].
-pub(crate) fn toml_of<T: serde::de::DeserializeOwned>(path: &Path, text: &str) -> Result<T, Error> {
-    if text.len() > MAX_SCENE_BYTES {
-        return Err(too_large(path, text.len()));
-    }
-    toml::from_str(text).map_err(|e| Error::Parse {
-        path: PathBuf::from(path),
-        message: e.to_string().trim_end().to_string(),
-    })
-}
-
-/// Parses and validates scene text; `path` names the source in errors.
-pub fn parse(path: &Path, text: &str) -> Result<Scene, Error> {
-    let file: SceneFile = toml_of(path, text)?;
-    file.validate(path, text)
-}
-
-/// The `[sweep]` plan of a scene file's text (`None` without the table), checked as the file
-/// is: a bad value is named by its key and line.
-pub fn sweep_plan(path: &Path, text: &str) -> Result<Option<vary::Plan>, Error> {
-    let file: SceneFile = toml_of(path, text)?;
-    file.sweep_plan(path, text)
-}
-
-/// Reads a scene file: at most [`MAX_SCENE_BYTES`] (a longer file is refused without being
-/// read further), UTF-8.
-pub fn read(path: &Path) -> Result<String, Error> {
-    use std::io::Read;
-    let err = |source| Error::Read {
-        path: path.to_path_buf(),
-        source,
-    };
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_SCENE_BYTES as u64 + 1).read_to_end(&mut bytes))
-        .map_err(err)?;
-    if bytes.len() > MAX_SCENE_BYTES {
-        return Err(too_large(path, bytes.len()));
-    }
-    String::from_utf8(bytes)
-        .map_err(|e| err(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))
-}
-
-/// Reads, parses and validates a scene file.
-pub fn load(path: &Path) -> Result<Scene, Error> {
-    parse(path, &read(path)?)
 }
