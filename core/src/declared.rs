@@ -75,6 +75,51 @@ pub struct ParamSpec {
     pub example: Real,
 }
 
+/// The values of `params` taken from `values` in their order, the rest of the `N` places 0;
+/// `None` when `values` has fewer than `params` (the rest of `values` is ignored).
+#[must_use]
+pub fn fill<const N: usize>(params: &[ParamSpec], values: &[Real]) -> Option<[Real; N]> {
+    let given = values.get(..params.len())?;
+    let mut all = [0.0; N];
+    all.get_mut(..given.len())?.copy_from_slice(given);
+    Some(all)
+}
+
+/// Each parameter's example value ([`ParamSpec::example`]) in its place, the rest 0.
+#[must_use]
+pub fn examples<const N: usize>(params: &[ParamSpec]) -> [Real; N] {
+    let mut all = [0.0; N];
+    for (v, p) in all.iter_mut().zip(params) {
+        *v = p.example;
+    }
+    all
+}
+
+/// The value of the parameter named `name` among `params`, whose values are `values`.
+#[must_use]
+pub fn named(params: &[ParamSpec], values: &[Real], name: &str) -> Option<Real> {
+    let i = params.iter().position(|p| p.name == name)?;
+    values.get(i).copied()
+}
+
+/// A title's list of declared parameters, ` (friction = 0.5, temperature = 2)`; nothing when
+/// there are none.
+pub fn write_params(
+    f: &mut core::fmt::Formatter<'_>,
+    specs: &[ParamSpec],
+    values: &[Real],
+) -> core::fmt::Result {
+    for (i, (p, v)) in specs.iter().zip(values).enumerate() {
+        let sep = if i == 0 { " (" } else { ", " };
+        write!(f, "{sep}{} = {v}", p.name)?;
+    }
+    if values.is_empty() {
+        Ok(())
+    } else {
+        f.write_str(")")
+    }
+}
+
 /// Checks a table of declared parameters: at most `max`, named uniquely, defaults and examples
 /// that obey their rules. `Err` names the first parameter that breaks this.
 pub fn check_specs(params: &[ParamSpec], max: usize) -> Result<(), &'static str> {

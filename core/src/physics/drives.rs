@@ -54,21 +54,15 @@ impl DriveParams {
     /// ignored). The rules are checked by [`Physics::validate`].
     #[must_use]
     pub fn new(kind: DriveKind, values: &[Real]) -> Option<Self> {
-        let params = kind.params()?;
-        let given = values.get(..params.len())?;
-        let mut all = [0.0; MAX_DRIVE_PARAMS];
-        all[..given.len()].copy_from_slice(given);
-        Some(DriveParams { kind, values: all })
+        let values = crate::declared::fill(kind.params()?, values)?;
+        Some(DriveParams { kind, values })
     }
 
     /// The declared drive `kind` with each parameter's example value ([`ParamSpec::example`](crate::drive::ParamSpec)):
     /// what the combination matrix and the fuzzers run; `None` unless `kind` is declared.
     #[must_use]
     pub fn example(kind: DriveKind) -> Option<Self> {
-        let mut values = [0.0; MAX_DRIVE_PARAMS];
-        for (v, p) in values.iter_mut().zip(kind.params()?) {
-            *v = p.example;
-        }
+        let values = crate::declared::examples::<MAX_DRIVE_PARAMS>(kind.params()?);
         Self::new(kind, &values)
     }
 
@@ -93,8 +87,7 @@ impl DriveParams {
     /// The value of the parameter named `name`, if the drive has one.
     #[must_use]
     pub fn get(&self, name: &str) -> Option<Real> {
-        let i = self.specs().iter().position(|p| p.name == name)?;
-        Some(self.values[i])
+        crate::declared::named(self.specs(), self.values(), name)
     }
 }
 
@@ -125,26 +118,8 @@ impl core::fmt::Display for DriveChoice {
             DriveChoice::HostMedium { .. } => f.write_str("in a host medium"),
             DriveChoice::Declared(d) => {
                 f.write_str(d.kind.title().unwrap_or(d.kind.scene_name()))?;
-                write_params(f, d.specs(), d.values())
+                crate::declared::write_params(f, d.specs(), d.values())
             }
         }
-    }
-}
-
-/// A title's list of declared parameters, ` (friction = 0.5, temperature = 2)`; nothing when
-/// there are none.
-pub(super) fn write_params(
-    f: &mut core::fmt::Formatter<'_>,
-    specs: &[crate::declared::ParamSpec],
-    values: &[Real],
-) -> core::fmt::Result {
-    for (i, (p, v)) in specs.iter().zip(values).enumerate() {
-        let sep = if i == 0 { " (" } else { ", " };
-        write!(f, "{sep}{} = {v}", p.name)?;
-    }
-    if values.is_empty() {
-        Ok(())
-    } else {
-        f.write_str(")")
     }
 }

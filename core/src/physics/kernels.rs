@@ -3,7 +3,7 @@
 //! words a title gives it.
 
 use super::{KernelKind, MAX_KERNEL_PARAMS};
-use crate::declared::ParamSpec;
+use crate::declared::{self, ParamSpec};
 use crate::math::Real;
 
 /// The collision kernel `B = gamma C |u|^lambda` (GRW (1), (2), (4), (5)): its kind, the
@@ -23,14 +23,12 @@ impl KernelChoice {
     /// `None` unless `values` holds a value for each of them (the rest are ignored).
     #[must_use]
     pub fn new(kind: KernelKind, gamma: Real, c: Real, values: &[Real]) -> Option<Self> {
-        let given = values.get(..kind.params().len())?;
-        let mut all = [0.0; MAX_KERNEL_PARAMS];
-        all[..given.len()].copy_from_slice(given);
+        let values = declared::fill(kind.params(), values)?;
         Some(KernelChoice {
             kind,
             gamma,
             c,
-            values: all,
+            values,
         })
     }
 
@@ -38,10 +36,7 @@ impl KernelChoice {
     /// ([`ParamSpec::example`]): what the combination matrix and the fuzzers run.
     #[must_use]
     pub fn example(kind: KernelKind, gamma: Real, c: Real) -> Self {
-        let mut values = [0.0; MAX_KERNEL_PARAMS];
-        for (v, p) in values.iter_mut().zip(kind.params()) {
-            *v = p.example;
-        }
+        let values = declared::examples(kind.params());
         KernelChoice {
             kind,
             gamma,
@@ -118,8 +113,7 @@ impl KernelChoice {
     /// The value of the parameter named `name`, if the kernel has one.
     #[must_use]
     pub fn get(&self, name: &str) -> Option<Real> {
-        let i = self.specs().iter().position(|p| p.name == name)?;
-        Some(self.values[i])
+        declared::named(self.specs(), self.values(), name)
     }
 
     /// `(gamma C, lambda)` of the kernel `B = gamma C |u|^lambda` (GRW (1), (2), (4), (5)):
@@ -135,6 +129,6 @@ impl KernelChoice {
 impl core::fmt::Display for KernelChoice {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(self.kind.title())?;
-        super::drives::write_params(f, self.specs(), self.values())
+        declared::write_params(f, self.specs(), self.values())
     }
 }
