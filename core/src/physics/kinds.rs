@@ -271,6 +271,31 @@ mod tests {
         }
     }
 
+    /// Checks each kernel of the table: the exponent its declaration states for its example
+    /// values is the one the kernel built from them has (`Kernel::lambda`).
+    macro_rules! exponents_agree {
+        ($($v:ident($code:literal, $scene:literal, $t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
+            $({
+                let values: [Real; crate::kernel::MAX_KERNEL_PARAMS] =
+                    crate::declared::examples(<$t as DeclaredKernel>::PARAMS);
+                let k = <$t as DeclaredKernel>::from_values(1.0, 0.1, &values)
+                    .expect("the example values build the kernel");
+                assert_eq!(
+                    crate::kernel::Kernel::lambda(&k),
+                    <$t as DeclaredKernel>::exponent(&values),
+                    "{}",
+                    stringify!($v)
+                );
+            })*
+        };
+    }
+
+    /// A kernel's declared exponent (what the references read) is its built kernel's.
+    #[test]
+    fn each_kernels_declared_exponent_is_its_own() {
+        kernel_table!(exponents_agree);
+    }
+
     /// The declared drives' table and the kinds name the same features; each declared drive's
     /// parameters are at most `MAX_DRIVE_PARAMS`, named uniquely, with defaults that obey their
     /// rules.
