@@ -23,6 +23,7 @@ mod rough_gas;
 mod rough_laws;
 mod rough_maps;
 mod rough_mixture;
+mod rough_mixture_equipartition;
 mod samplers;
 mod sum_majorant;
 mod work_rate;

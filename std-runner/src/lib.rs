@@ -25,6 +25,8 @@ pub mod report;
 pub mod reproduce;
 pub mod run;
 pub mod sweep;
+#[cfg(feature = "cli")]
+pub mod terminal;
 pub use gdsmc_scene as scene;
 
 pub use error::Error;

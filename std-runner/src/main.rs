@@ -268,7 +268,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 fresh,
                 format,
             };
-            let outcome = job.run(&Terminal::new())?;
+            let outcome = job.run(&gdsmc_runner::terminal::Terminal::install())?;
             print!("{}", outcome.text);
             if outcome.complete {
                 Ok(())
@@ -300,7 +300,7 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 format,
                 shard,
             };
-            let outcome = s.run(&Terminal::new())?;
+            let outcome = s.run(&gdsmc_runner::terminal::Terminal::install())?;
             print!("{}", outcome.text);
             if outcome.complete {
                 Ok(())
@@ -322,63 +322,16 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             threads,
             seed,
             out,
-        } => reproduce(&names, quick, threads, seed, out),
+        } => gdsmc_runner::reproduce::command(
+            &names,
+            &gdsmc_runner::reproduce::Options {
+                quick,
+                threads,
+                seed,
+            },
+            out,
+        ),
         Command::Bench(b) => bench(b),
-    }
-}
-
-/// The terminal's view of a run: a progress bar on standard error (when it is a terminal)
-/// and Ctrl-C: the first lets the running ensembles finish and keeps what is done, a second
-/// ends the process at once.
-struct Terminal {
-    bar: indicatif::ProgressBar,
-    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
-}
-
-impl Terminal {
-    fn new() -> Self {
-        let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-        {
-            let stop = stop.clone();
-            let _ = ctrlc::set_handler(move || {
-                if stop.swap(true, std::sync::atomic::Ordering::SeqCst) {
-                    std::process::exit(130);
-                }
-                eprintln!(
-                    "\ninterrupted: finishing the running ensembles and keeping what is done (Ctrl-C again to quit)"
-                );
-            });
-        }
-        let bar = indicatif::ProgressBar::hidden();
-        bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} ensembles, {per_sec}, ETA {eta}",
-            )
-            .expect("template"),
-        );
-        Terminal { bar, stop }
-    }
-}
-
-impl gdsmc_runner::job::Watch for Terminal {
-    fn begin(&self, total: u64) {
-        self.bar.set_length(total);
-        if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
-            self.bar
-                .set_draw_target(indicatif::ProgressDrawTarget::stderr());
-        }
-    }
-    fn advance(&self, k: u64) {
-        self.bar.inc(k);
-    }
-    fn end(&self) {
-        self.bar.finish_and_clear();
-    }
-    fn stop(&self) -> &std::sync::atomic::AtomicBool {
-        &self.stop
-    }
-    fn note(&self, line: &str) {
-        eprintln!("{line}");
     }
 }
 
@@ -442,50 +395,16 @@ fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
             target,
             threads,
             out,
-        } => {
-            let sc = scene::load(&path)?;
-            let ladder = bench::work_precision::default_ladder(quick);
-            println!(
-                "{:<13} {:>7} {:>6} {:>5} {:>12} {:>22} {:>12} {:>12}",
-                "scheme", "n", "K", "runs", "cpu s/run", "T mean +- 99.9%", "T exact", "error"
-            );
-            let points = bench::work_precision::measure(&sc, &ladder, runs, threads, |p| {
-                let k = if p.config.dt > 0.0 {
-                    format!("{}", (8.0 / p.config.dt).round())
-                } else {
-                    "-".into()
-                };
-                println!(
-                    "{:<13} {:>7} {:>6} {:>5} {:>12.4e} {:>11.5} +- {:<8.1e} {:>12.5} {:>12.3e}",
-                    p.config.scheme,
-                    p.config.n,
-                    k,
-                    p.runs,
-                    p.cpu,
-                    p.mean.0,
-                    p.mean.1,
-                    p.exact_mean,
-                    p.error
-                );
-            })?;
-            let dir = out.unwrap_or_else(|| PathBuf::from("out").join("work-precision"));
-            let target = match (target, quick) {
-                (Some(t), _) => t,
-                (None, false) => 0.01,
-                (None, true) => {
-                    let t = bench::work_precision::reachable_target(&points).unwrap_or(0.01);
-                    println!(
-                        "\n--quick: costs compared at {:.2}% error, the smallest every scheme of the small ladder reached (RW compare at 1%: the full ladder, or --target)",
-                        100.0 * t
-                    );
-                    t
-                }
-            };
-            let text = bench::work_precision::write(&dir, sc.name(), &points, target)?;
-            print!("\n{text}");
-            println!("wrote {}", dir.join("work_precision.svg").display());
-            Ok(())
-        }
+        } => bench::work_precision(
+            &scene::load(&path)?,
+            &bench::WorkPrecision {
+                runs,
+                quick,
+                target,
+                threads,
+                out,
+            },
+        ),
         Bench::Scaling {
             scene: path,
             threads,
@@ -499,63 +418,5 @@ fn bench(b: Bench) -> Result<(), gdsmc_runner::Error> {
             println!("{}", bench::scaling::measure(&sc, k)?);
             Ok(())
         }
-    }
-}
-
-/// The first words of every report.md `gdsmc reproduce` writes.
-const REPORT_SIGNATURE: &str = "# gdsmc reproduce:";
-
-fn reproduce(
-    names: &[String],
-    quick: bool,
-    threads: usize,
-    seed: u64,
-    out: Option<PathBuf>,
-) -> Result<(), gdsmc_runner::Error> {
-    use gdsmc_runner::reproduce;
-    let opts = reproduce::Options {
-        quick,
-        threads,
-        seed,
-    };
-    let dir = out.unwrap_or_else(|| PathBuf::from("out").join("reproduce"));
-    std::fs::create_dir_all(&dir).map_err(|e| gdsmc_runner::Error::Write {
-        path: dir.clone(),
-        source: e,
-    })?;
-    let report = dir.join("report.md");
-    // A report.md that is not gdsmc's is refused before any table runs, not replaced.
-    gdsmc_runner::files::check_own(&report, REPORT_SIGNATURE)?;
-    let start = std::time::Instant::now();
-    let mut done = Vec::new();
-    let mut write_err = None;
-    let tables = reproduce::run(names, &opts, |t| {
-        print!("{}", reproduce::text(t));
-        done.push(t.clone());
-        let md = reproduce::markdown(&done, &opts, start.elapsed().as_secs_f64());
-        if let Err(e) = gdsmc_runner::files::write_own(&report, md.as_bytes(), REPORT_SIGNATURE) {
-            write_err.get_or_insert(e);
-        }
-    })?;
-    if let Some(e) = write_err {
-        return Err(e);
-    }
-    let bad = reproduce::failures(&tables);
-    println!(
-        "\n{} tables in {:.0} s; wrote {}\n{}",
-        tables.len(),
-        start.elapsed().as_secs_f64(),
-        report.display(),
-        reproduce::Counts::of(&tables).line()
-    );
-    print!("{}", reproduce::epilogue(&tables));
-    if bad.is_empty() {
-        println!(
-            "no disagreement of ours beyond the report-wide range (Bonferroni over every \
-             check): the run passes"
-        );
-        Ok(())
-    } else {
-        Err(gdsmc_runner::Error::Disagrees(bad))
     }
 }

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-fn root(name: &str) -> PathBuf {
+pub(super) fn root(name: &str) -> PathBuf {
     let r = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
         .join("sweep")
         .join(name);
@@ -20,12 +20,12 @@ fn root(name: &str) -> PathBuf {
     r
 }
 
-fn scene() -> PathBuf {
+pub(super) fn scene() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/grw-example3.toml")
 }
 
 /// The sweep of GRW Example 3 (n = 64, 4 ensembles, seed 5) over `vary`, into `out`.
-fn sweep(vary: &[&str], sets: &[&str], out: &Path, threads: usize) -> Sweep {
+pub(super) fn sweep(vary: &[&str], sets: &[&str], out: &Path, threads: usize) -> Sweep {
     let mut overrides: Vec<Override> = sets.iter().map(|s| Override::set(*s)).collect();
     overrides.extend(Override::run_flags(Some(64), Some(4), Some(5)));
     Sweep {
@@ -41,13 +41,13 @@ fn sweep(vary: &[&str], sets: &[&str], out: &Path, threads: usize) -> Sweep {
     }
 }
 
-fn json(path: &Path) -> Value {
+pub(super) fn json(path: &Path) -> Value {
     serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap()
 }
 
 /// `gdsmc run` of GRW Example 3 (n = 64, 4 ensembles, one thread) with `seed` and `sets`,
 /// into `out`.
-fn command_run(out: &Path, seed: usize, sets: &[String]) {
+pub(super) fn command_run(out: &Path, seed: usize, sets: &[String]) {
     let mut c = Command::new(env!("CARGO_BIN_EXE_gdsmc"));
     c.arg("run")
         .arg(scene())
@@ -110,7 +110,7 @@ fn a_point_is_the_run_of_its_scene_and_seed() {
 }
 
 /// The header and the rows of a CSV file, as text.
-fn csv_cells(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+pub(super) fn csv_cells(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     let text = std::fs::read_to_string(path).unwrap();
     let mut lines = text
         .lines()
@@ -259,96 +259,6 @@ fn a_users_directory_is_never_replaced() {
     assert_eq!(std::fs::read_dir(&mine).unwrap().count(), 1);
 }
 
-/// A sweep of `source` over `vary` for the chart tests (all cores, no work limit).
-fn chart_sweep(source: Sourced, vary: Vec<Vary>, combine: Combine, out: PathBuf) -> Sweep {
-    Sweep {
-        source,
-        vary,
-        combine,
-        threads: 0,
-        allow_long: true,
-        out: Some(out),
-        fresh: false,
-        format: "svg".parse().unwrap(),
-        shard: None,
-    }
-}
-
-/// Every point of `s` run in memory and the sweep's charts drawn from them.
-fn charts_of(s: &Sweep) -> Vec<(String, Result<gdsmc_runner::report::charts::Chart, String>)> {
-    let points = s.points().unwrap();
-    let results: Vec<_> = points
-        .iter()
-        .map(|p| {
-            let st = gdsmc_runner::run::run(&p.source.scene, 0, &|_| {}).unwrap();
-            gdsmc_runner::sweep::point::PointResult::of(p, &st)
-        })
-        .collect();
-    gdsmc_runner::sweep::chart::charts(&s.source, &s.vary, &points, &results)
-}
-
-/// Every chart of three small sweeps (a cooling state's a2 against alpha beside its Sonine
-/// approximation; a grid of the heated Maxwell gas over beta on a logarithmic range and alpha,
-/// each alpha a series with its exact temperature; a rough gas over the tangential
-/// restitution) passes the run charts' review (`Geometry::objections`: legend off the data,
-/// every point and bar end inside a plot, lines told apart) and its title names the physics
-/// (not the file), n and the ensembles per point, and not the varied values.
-#[test]
-fn the_charts_of_a_sweep_are_readable() {
-    let r = root("charts");
-    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
-    let cases: [(&str, &[&str], &[&str]); 3] = [
-        (
-            "hcs-hard-spheres.toml",
-            &["collisions.restitution=0.5,0.7,0.9"],
-            &["observe.steady_from=20"],
-        ),
-        (
-            "grw-example3.toml",
-            &["drive.beta=log:0.5:2:3", "collisions.restitution=0.5,1"],
-            &[],
-        ),
-        (
-            "rough-hcs.toml",
-            &["rotation.tangential_restitution=-0.5,0,0.5"],
-            &[],
-        ),
-    ];
-    let mut checked = 0;
-    for (k, (file, vary, sets)) in cases.into_iter().enumerate() {
-        let mut overrides: Vec<Override> = sets.iter().map(|s| Override::set(*s)).collect();
-        overrides.extend(Override::run_flags(Some(256), Some(3), None));
-        let s = chart_sweep(
-            Sourced::read(&scenes.join(file), overrides).unwrap(),
-            vary.iter().map(|v| Vary::parse(v).unwrap()).collect(),
-            Combine::Grid,
-            r.join(k.to_string()),
-        );
-        let charts = charts_of(&s);
-        let t = gdsmc_runner::run::columns::name::T;
-        assert!(charts.iter().any(|(stem, _)| stem == t), "{file}");
-        for (stem, chart) in &charts {
-            let c = chart
-                .as_ref()
-                .unwrap_or_else(|e| panic!("{file}: {stem}: {e}"));
-            let g = &c.geometry;
-            let at = format!("{file}: {stem}");
-            assert!(
-                g.title.contains("n = 256")
-                    && g.title.contains("3 ensembles per point")
-                    && (g.title.contains("spheres") || g.title.contains("disks"))
-                    && !g.title.contains(".toml")
-                    && !g.title.contains("alpha = 0.5"),
-                "{at}: title {}",
-                g.title
-            );
-            assert_eq!(g.objections(), Vec::<String>::new(), "{at}");
-            checked += 1;
-        }
-    }
-    assert!(checked > 30, "only {checked} charts checked");
-}
-
 /// `gdsmc sweep` with no `--vary` takes the scene's `[sweep]` table: the shipped cooling-state
 /// sweep (9 values of alpha, spheres and disks) gives 18 rows, each with its Sonine value.
 #[test]
@@ -394,95 +304,6 @@ fn the_command_takes_the_scenes_sweep_table() {
         "{a2}"
     );
     assert!(a2.contains("deviation from a2_sonine"), "{a2}");
-}
-
-/// Runs the sweep over `vary` into `r/name` without `--shard`, which must take all 12
-/// ensembles from the journals the shard tasks left, and compares its files with the
-/// single-process sweep's in `r/whole`, byte for byte.
-fn assemble(vary: &[&str], r: &Path, name: &str) {
-    let assembled = sweep(vary, &[], &r.join(name), 1)
-        .run(&Quiet::default())
-        .unwrap();
-    assert!(
-        assembled
-            .text
-            .contains("12 ensembles taken from the points' journals"),
-        "{}",
-        assembled.text
-    );
-    for f in ["sweep.csv", "sweep.json", "sweep.md"] {
-        assert_eq!(
-            std::fs::read(r.join("whole").join(f)).unwrap(),
-            std::fs::read(r.join(name).join(f)).unwrap(),
-            "{f}"
-        );
-    }
-}
-
-/// A sweep run as two shards (each point journaled where the whole sweep looks for it) and
-/// then assembled by the same command without `--shard` writes the single-process sweep's
-/// sweep.csv and sweep.json byte for byte, taking every ensemble from the journals.
-#[test]
-fn a_sharded_sweep_assembled_is_the_single_process_sweep() {
-    let r = root("sharded");
-    let vary = ["collisions.restitution=0.5,0.7,0.9"];
-    sweep(&vary, &[], &r.join("whole"), 1)
-        .run(&Quiet::default())
-        .unwrap();
-    for k in 0..2 {
-        let mut s = sweep(&vary, &[], &r.join("sharded"), 1);
-        s.shard = Some(format!("{k}/2"));
-        let done = s.run(&Quiet::default()).unwrap();
-        assert!(done.complete, "{}", done.text);
-        assert!(!r.join("sharded").exists(), "a shard writes no outputs");
-    }
-    let mut too_many = sweep(&vary, &[], &r.join("sharded"), 1);
-    too_many.shard = Some("0/13".into());
-    let e = too_many.run(&Quiet::default()).unwrap_err().to_string();
-    assert!(
-        e.contains("--shard") && e.contains("3 points") && e.contains("at most 12"),
-        "{e}"
-    );
-    assemble(&vary, &r, "sharded");
-}
-
-/// More shards than points split each point's ensembles (5 tasks over 3 points: each point
-/// in 2 shards, 6 units dealt round the tasks): with one task missing the assembly refuses,
-/// naming the point and the missing shard, and writes nothing; with every task done it
-/// writes the single-process sweep's files byte for byte and removes the shard journals.
-#[test]
-fn a_sweep_sharded_within_its_points_assembled_is_the_single_process_sweep() {
-    let r = root("sharded-points");
-    let vary = ["collisions.restitution=0.5,0.7,0.9"];
-    sweep(&vary, &[], &r.join("whole"), 1)
-        .run(&Quiet::default())
-        .unwrap();
-    let task = |k: u64| {
-        let mut s = sweep(&vary, &[], &r.join("split"), 1);
-        s.shard = Some(format!("{k}/5"));
-        let done = s.run(&Quiet::default()).unwrap();
-        assert!(done.complete, "{}", done.text);
-        assert!(done.text.contains("in 2 shards"), "{}", done.text);
-    };
-    for k in [0, 1, 2, 4] {
-        task(k);
-    }
-    let e = sweep(&vary, &[], &r.join("split"), 1)
-        .run(&Quiet::default())
-        .unwrap_err()
-        .to_string();
-    // Task 3 holds unit 3 (point 1, shard 1 of 2).
-    assert!(e.contains("point 1") && e.contains("1/2"), "{e}");
-    assert!(!r.join("split").exists(), "nothing written: {e}");
-    task(3);
-    assemble(&vary, &r, "split");
-    let left: Vec<_> = std::fs::read_dir(&r)
-        .unwrap()
-        .flatten()
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|n| n.ends_with(".gdsmc-ensembles"))
-        .collect();
-    assert!(left.is_empty(), "journals left: {left:?}");
 }
 
 /// The sweep's verdict checks every exact mean at n over the points together: the heated
@@ -533,43 +354,4 @@ fn the_verdict_checks_the_exact_means_over_the_points() {
     assert_eq!(v["outside"], serde_json::json!([1]));
     assert_eq!(v["inside"], false);
     assert_eq!(v["points"], 3);
-}
-
-/// Every shipped sweep (`scenes/sweep-*.toml`, each by its `[sweep]` table) at n = 64 and two
-/// ensembles per point: its charts pass the run charts' review (legend off the data, bands
-/// visible, n and ensembles in the title), so a shipped sweep's docs chart cannot regress.
-#[test]
-#[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
-fn every_shipped_sweeps_charts_are_readable() {
-    let r = root("shipped");
-    let scenes = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&scenes)
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| {
-            p.file_name()
-                .is_some_and(|n| n.to_string_lossy().starts_with("sweep-"))
-        })
-        .collect();
-    files.sort();
-    assert!(files.len() >= 6, "{files:?}");
-    for (k, file) in files.iter().enumerate() {
-        let source = Sourced::read(file, Override::run_flags(Some(64), Some(2), None)).unwrap();
-        let plan = gdsmc_runner::sweep::plan(&source, &[], false).unwrap();
-        let s = chart_sweep(source, plan.vary, plan.combine, r.join(k.to_string()));
-        let charts = charts_of(&s);
-        assert!(!charts.is_empty(), "{}", file.display());
-        for (stem, chart) in &charts {
-            let at = format!("{}: {stem}", file.display());
-            let c = chart.as_ref().unwrap_or_else(|e| panic!("{at}: {e}"));
-            let g = &c.geometry;
-            assert!(
-                g.title.contains("n = 64") && g.title.contains("2 ensembles per point"),
-                "{at}: title {}",
-                g.title
-            );
-            assert_eq!(g.objections(), Vec::<String>::new(), "{at}");
-        }
-    }
 }

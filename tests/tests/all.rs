@@ -15,6 +15,7 @@ mod impact_speed;
 mod langevin;
 mod maxwell_relaxation;
 mod mixture;
+mod mixture_steady;
 mod mutated_scenes;
 mod rough;
 mod splitting;

@@ -38,14 +38,36 @@
 //! assert!(obs.mixture_temperature() < start.mixture_temperature()); // the mixture cools
 //! ```
 
+mod drives;
 pub mod map;
 pub mod nosplit;
 pub mod splitting;
 pub mod time_stepped;
 
+use crate::engine::EngineError;
 pub use crate::observe::MixtureObservables;
 pub use crate::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 pub use map::{MassMap, MassRatio, PairLaw};
-pub use nosplit::{MixtureNoSplitting, PairPhysics, StartError};
+pub use nosplit::{MixtureNoSplitting, PairPhysics};
 pub use splitting::MixtureSplitting;
 pub use time_stepped::MixtureTimeStepped;
+
+/// Why a mixture loop could not start.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StartError {
+    /// The mixture description does not fit the data given.
+    Mixture(MixtureError),
+    /// The engine refused (non-finite start time or velocities).
+    Engine(EngineError),
+}
+
+impl core::fmt::Display for StartError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            StartError::Mixture(e) => e.fmt(f),
+            StartError::Engine(e) => e.fmt(f),
+        }
+    }
+}
+
+impl core::error::Error for StartError {}

@@ -9,10 +9,10 @@
 //! Observation times must lie on the grid `t0 + k dt`. Each step synchronizes the particles
 //! once after each collision stage and once after the kick (O(n) each, as the kick itself is).
 
+use super::StartError;
+use super::drives::{kick_species, tell_drives};
 use super::map::PairLaw;
-use super::nosplit::{
-    MixtureNoSplitting, PairPhysics, StartError, drives_off, kick_species, tell_drives,
-};
+use super::nosplit::{MixtureNoSplitting, PairPhysics, drives_off};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::frame::Frame;
 use crate::engine::{Counts, EngineError, SplittingOrder, check_step, grid_target};

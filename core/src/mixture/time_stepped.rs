@@ -19,10 +19,10 @@
 //! mean free times per step. Each stage's bound starts from the exact loop's `U_st`
 //! (`|v_i - v_j| <= S_s + S_t + |V_s - V_t|`) and rises at each overshoot.
 
+use super::StartError;
+use super::drives::{kick_species, tell_drives};
 use super::map::PairLaw;
-use super::nosplit::{
-    MixtureNoSplitting, PairPhysics, StartError, drives_off, kick_species, tell_drives,
-};
+use super::nosplit::{MixtureNoSplitting, PairPhysics, drives_off};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::collision_map::CollisionMap;
 use crate::engine::frame::Frame;

@@ -17,6 +17,7 @@
 mod bounds;
 mod brs;
 mod cells;
+mod command;
 mod figure;
 mod grw;
 mod judged;
@@ -29,6 +30,7 @@ pub use cells::{
     Against, Blame, Cell, Check, Counts, POWER, POWER_PROBABILITY, ReadingScores, Row, Side, Table,
     Verdict, percent, rounding,
 };
+pub use command::command;
 pub use figure::fmt;
 pub use report::{epilogue, markdown, text};
 pub use runs::with_cached_runs;

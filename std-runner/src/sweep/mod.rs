@@ -14,6 +14,7 @@
 pub mod chart;
 #[cfg(feature = "mpi")]
 mod mpi;
+mod output;
 pub mod point;
 mod shard;
 pub mod table;
@@ -25,10 +26,11 @@ use crate::error::Error;
 use crate::job::{Outcome, Watch};
 use crate::report::charts::Formats;
 use crate::report::set::OutputSet;
-use crate::run::columns::name;
 use crate::run::{self, Journaled, estimate};
 use crate::scene::Sourced;
+use output::{ensembles_words, one_ensemble_notes, summary, write};
 use point::{PointResult, PointScene};
+use shard::{merged_point, point_shard_journals, stale_shards};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use vary::{Combine, Vary};
@@ -114,38 +116,6 @@ pub(super) fn point_journal_of(dir: &Path, k: usize, chunk: Option<(u64, u64)>) 
 /// The journal of the whole point `k`.
 pub(super) fn point_journal(dir: &Path, k: usize) -> PathBuf {
     point_journal_of(dir, k, None)
-}
-
-/// The shard journals of point `k` beside `dir` (`--shard` with more shards than points),
-/// sorted by name; none when the point was not split. Only names [`point_journal_of`] gives
-/// (`...point-K-shard-c-of-C.gdsmc-ensembles`, c and C numbers) are taken.
-fn point_shard_journals(dir: &Path, k: usize) -> Vec<PathBuf> {
-    let Some(parent) = point_journal(dir, k).parent().map(Path::to_path_buf) else {
-        return Vec::new();
-    };
-    let name = dir
-        .file_name()
-        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
-    let prefix = format!(".{name}.point-{k}-shard-");
-    let suffix = format!(".{}", run::journal::EXTENSION);
-    let numbers = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit());
-    let mut found: Vec<PathBuf> = std::fs::read_dir(parent)
-        .into_iter()
-        .flatten()
-        .flatten()
-        .map(|e| e.path())
-        .filter(|f| {
-            f.file_name().is_some_and(|n| {
-                let n = n.to_string_lossy();
-                n.strip_prefix(&prefix)
-                    .and_then(|r| r.strip_suffix(&suffix))
-                    .and_then(|r| r.split_once("-of-"))
-                    .is_some_and(|(c, n)| numbers(c) && numbers(n))
-            })
-        })
-        .collect();
-    found.sort();
-    found
 }
 
 impl Sweep {
@@ -402,141 +372,4 @@ impl Sweep {
         text.push_str(&crate::job::wrote(&files, &dir));
         Ok(Outcome { text, complete })
     }
-}
-
-/// The points' ensembles in words: `N ensembles each`, or their range when `run.ensembles`
-/// varies.
-fn ensembles_words(points: &[PointScene]) -> String {
-    let e = points.iter().map(|p| p.source.scene.ensembles());
-    match (e.clone().min(), e.max()) {
-        (Some(a), Some(b)) if a == b => format!("{a} ensembles each"),
-        (Some(a), Some(b)) => format!("{a} to {b} ensembles (run.ensembles varies)"),
-        _ => "no points".into(),
-    }
-}
-
-/// A note for every finished point of one ensemble: its intervals are NaN (undefined, not
-/// zero) and the verdict leaves it out.
-fn one_ensemble_notes(results: &[PointResult]) -> Vec<String> {
-    let ones: Vec<String> = results
-        .iter()
-        .filter(|r| r.ensembles == 1)
-        .map(|r| r.index.to_string())
-        .collect();
-    if ones.is_empty() {
-        return Vec::new();
-    }
-    vec![format!(
-        "note: point{} {} {} one ensemble: {} _ci columns of sweep.csv (and intervals of \
-         sweep.json) are NaN, since an interval needs the spread of at least two ensembles (it is \
-         undefined, not zero), and the verdict leaves {} out; run.ensembles = 2 or more gives \
-         intervals",
-        if ones.len() > 1 { "s" } else { "" },
-        ones.join(", "),
-        if ones.len() > 1 { "have" } else { "has" },
-        if ones.len() > 1 { "their" } else { "its" },
-        if ones.len() > 1 { "them" } else { "it" },
-    )]
-}
-
-/// Why the shard journals `files` of point `p` are another sweep's (their header is not a
-/// shard of this point's run), or `None` when they are this point's (complete or not: an
-/// unfinished task is then reported by the merge).
-fn stale_shards(p: &PointScene, files: &[PathBuf]) -> Option<String> {
-    let bytes = run::journal::read_file(&files[0]).ok()?;
-    let header = run::journal::read(&files[0], &bytes).ok()?.header;
-    let want = shard_header(p, header.shard?.1);
-    (!want.same_set(&header)).then(|| header.difference(&want))
-}
-
-/// The header of shard 0 of `s` of point `p`'s run: what every shard of it must match but for
-/// its index ([`run::journal::Header::same_set`]).
-fn shard_header(p: &PointScene, s: u64) -> run::journal::Header {
-    run::journal::Header::new(
-        &p.source,
-        Some((0, s)),
-        run::shard::range(0, s, p.source.scene.ensembles()),
-    )
-}
-
-/// Point `p`'s statistics from the journals of its shards: one whole run of exactly its
-/// scene and seed (else the error names the files and what is missing or different).
-fn merged_point(p: &PointScene, files: &[PathBuf]) -> Result<run::RunStats, Error> {
-    let merged = run::shard::merge_files(files).map_err(|e| {
-        Error::Shards(format!(
-            "point {} of the sweep, split over the --shard tasks: {e}; run the missing or unfinished tasks (gdsmc sweep ... --shard K/S) again",
-            p.index
-        ))
-    })?;
-    let first = run::journal::read_file(&files[0])?;
-    let header = run::journal::read(&files[0], &first)?.header;
-    let want = shard_header(p, merged.shards);
-    if !want.same_set(&header) {
-        return Err(Error::Shards(format!(
-            "{} is not a shard of point {} of this sweep: it is {}",
-            files[0].display(),
-            p.index,
-            header.difference(&want)
-        )));
-    }
-    Ok(merged.stats)
-}
-
-/// Writes sweep.csv, sweep.json and the charts into the prepared set and puts it in place.
-fn write(
-    set: OutputSet,
-    sweep: &Sweep,
-    complete: bool,
-    results: &[PointResult],
-    charts: &[(String, Result<crate::report::charts::Chart, String>)],
-) -> Result<Vec<String>, Error> {
-    let (base, vary) = (&sweep.source, &sweep.vary);
-    crate::report::charts::write(set.dir(), charts, sweep.format)?;
-    let path = set.dir().join("sweep.csv");
-    let bytes = table::csv(vary, results).map_err(|e| Error::Write {
-        path: path.clone(),
-        source: std::io::Error::other(e),
-    })?;
-    crate::files::write_atomic(&path, &bytes)?;
-    let path = set.dir().join("sweep.md");
-    crate::files::write_atomic(
-        &path,
-        table::markdown(base.scene.name(), vary, results).as_bytes(),
-    )?;
-    let path = set.dir().join("sweep.json");
-    let j = table::json(base.scene.name(), vary, sweep.combine, complete, results);
-    let mut text = serde_json::to_vec_pretty(&j).map_err(|e| Error::Write {
-        path: path.clone(),
-        source: std::io::Error::other(e),
-    })?;
-    text.push(b'\n');
-    crate::files::write_atomic(&path, &text)?;
-    set.commit(serde_json::json!({
-        "sweep": base.scene.name(),
-        "points": results.len(),
-        "gdsmc_version": env!("CARGO_PKG_VERSION"),
-    }))
-}
-
-/// The terminal's table: per point the varied values and the main observables' window means
-/// with their intervals (T, a2 where the run has them).
-fn summary(results: &[PointResult]) -> String {
-    let mut out = String::new();
-    for p in results {
-        let values: Vec<String> = p.values.iter().map(|(k, v)| format!("{k} = {v}")).collect();
-        let shown: Vec<String> = p
-            .observables
-            .iter()
-            .filter(|o| [name::T, name::A2].contains(&o.0))
-            .map(|(name, mean, ci)| format!("{name} = {mean:.5} ± {ci:.2e}"))
-            .collect();
-        let _ = writeln!(
-            out,
-            "point {:>3}  {}  {}",
-            p.index,
-            values.join(", "),
-            shown.join(", ")
-        );
-    }
-    out
 }

@@ -2,7 +2,7 @@
 //! points, or shards of points, task K runs, each journaled beside the output directory where
 //! the whole sweep (the same command without `--shard`) finds and merges them.
 
-use super::{PointScene, Sweep, point_journal_of};
+use super::{PointScene, Sweep, point_journal, point_journal_of};
 use crate::error::Error;
 use crate::job::{Outcome, Watch};
 use crate::run::{self, Journaled};
@@ -180,4 +180,78 @@ fn shard_outcome(mut text: String, complete: bool) -> Outcome {
         "run the same command again to finish the shard\n"
     });
     Outcome { text, complete }
+}
+/// The shard journals of point `k` beside `dir` (`--shard` with more shards than points),
+/// sorted by name; none when the point was not split. Only names [`point_journal_of`] gives
+/// (`...point-K-shard-c-of-C.gdsmc-ensembles`, c and C numbers) are taken.
+pub(super) fn point_shard_journals(dir: &Path, k: usize) -> Vec<PathBuf> {
+    let Some(parent) = point_journal(dir, k).parent().map(Path::to_path_buf) else {
+        return Vec::new();
+    };
+    let name = dir
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    let prefix = format!(".{name}.point-{k}-shard-");
+    let suffix = format!(".{}", run::journal::EXTENSION);
+    let numbers = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit());
+    let mut found: Vec<PathBuf> = std::fs::read_dir(parent)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|f| {
+            f.file_name().is_some_and(|n| {
+                let n = n.to_string_lossy();
+                n.strip_prefix(&prefix)
+                    .and_then(|r| r.strip_suffix(&suffix))
+                    .and_then(|r| r.split_once("-of-"))
+                    .is_some_and(|(c, n)| numbers(c) && numbers(n))
+            })
+        })
+        .collect();
+    found.sort();
+    found
+}
+
+/// Why the shard journals `files` of point `p` are another sweep's (their header is not a
+/// shard of this point's run), or `None` when they are this point's (complete or not: an
+/// unfinished task is then reported by the merge).
+pub(super) fn stale_shards(p: &PointScene, files: &[PathBuf]) -> Option<String> {
+    let bytes = run::journal::read_file(&files[0]).ok()?;
+    let header = run::journal::read(&files[0], &bytes).ok()?.header;
+    let want = shard_header(p, header.shard?.1);
+    (!want.same_set(&header)).then(|| header.difference(&want))
+}
+
+/// The header of shard 0 of `s` of point `p`'s run: what every shard of it must match but for
+/// its index ([`run::journal::Header::same_set`]).
+fn shard_header(p: &PointScene, s: u64) -> run::journal::Header {
+    run::journal::Header::new(
+        &p.source,
+        Some((0, s)),
+        run::shard::range(0, s, p.source.scene.ensembles()),
+    )
+}
+
+/// Point `p`'s statistics from the journals of its shards: one whole run of exactly its
+/// scene and seed (else the error names the files and what is missing or different).
+pub(super) fn merged_point(p: &PointScene, files: &[PathBuf]) -> Result<run::RunStats, Error> {
+    let merged = run::shard::merge_files(files).map_err(|e| {
+        Error::Shards(format!(
+            "point {} of the sweep, split over the --shard tasks: {e}; run the missing or unfinished tasks (gdsmc sweep ... --shard K/S) again",
+            p.index
+        ))
+    })?;
+    let first = run::journal::read_file(&files[0])?;
+    let header = run::journal::read(&files[0], &first)?.header;
+    let want = shard_header(p, merged.shards);
+    if !want.same_set(&header) {
+        return Err(Error::Shards(format!(
+            "{} is not a shard of point {} of this sweep: it is {}",
+            files[0].display(),
+            p.index,
+            header.difference(&want)
+        )));
+    }
+    Ok(merged.stats)
 }

@@ -3,6 +3,9 @@
 //! drawn in the same style as their series, and the geometry a test can check with the
 //! objections a referee would raise ([`Geometry::objections`]).
 
+pub use super::geometry::{
+    Geometry, LINE_WIDTH, Layer, MAX_LINE_LUMINANCE, MIN_LUMINANCE_STEP, Rect, luminance,
+};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -12,8 +15,6 @@ pub const WIDTH: u32 = 980;
 pub const PLOT_HEIGHT: u32 = 500;
 /// Height of one title line; the title band holds as many as the title has.
 const TITLE_LINE: u32 = 24;
-/// Width of every drawn line, pixels.
-pub const LINE_WIDTH: u32 = 2;
 /// Legend entries per row.
 const LEGEND_COLUMNS: usize = 2;
 /// Characters per legend line before it wraps (a column is about half the canvas).
@@ -23,179 +24,6 @@ const LEGEND_LINE: i32 = 17;
 const LEGEND_GAP: i32 = 5;
 /// Margin above and below the legend's entries, pixels.
 const LEGEND_PAD: i32 = 8;
-/// Largest relative luminance of a line on the white canvas (pure green's is 0.72: it
-/// vanishes in grey scale and in print).
-pub const MAX_LINE_LUMINANCE: f64 = 0.6;
-/// Smallest luminance difference that tells two lines of the same dash apart in grey scale.
-pub const MIN_LUMINANCE_STEP: f64 = 0.3;
-
-/// A rectangle in pixels, `(left, top)` to `(right, bottom)`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Rect {
-    /// Left edge.
-    pub left: i32,
-    /// Top edge.
-    pub top: i32,
-    /// Right edge.
-    pub right: i32,
-    /// Bottom edge.
-    pub bottom: i32,
-}
-
-impl Rect {
-    /// Whether two rectangles share any pixel.
-    pub fn overlaps(&self, o: &Rect) -> bool {
-        self.left < o.right && o.left < self.right && self.top < o.bottom && o.top < self.bottom
-    }
-
-    /// Whether `(x, y)` lies inside (edges included).
-    pub fn contains(&self, (x, y): (i32, i32)) -> bool {
-        x >= self.left && x <= self.right && y >= self.top && y <= self.bottom
-    }
-}
-
-/// One drawn layer of the first panel, in drawing order.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Layer {
-    /// The translucent confidence band.
-    Band,
-    /// A line: its colour, its dash and gap (`None`: solid) and its legend text.
-    Line {
-        /// Colour.
-        color: RGBColor,
-        /// Dash and gap, pixels; `None` for a solid line.
-        dash: Option<(u32, u32)>,
-        /// What it is.
-        label: String,
-    },
-}
-
-/// Relative luminance of a colour (ITU-R BT.709 weights on the 0-1 channels): what a line
-/// keeps in grey scale.
-pub fn luminance(c: RGBColor) -> f64 {
-    (0.2126 * c.0 as f64 + 0.7152 * c.1 as f64 + 0.0722 * c.2 as f64) / 255.0
-}
-
-/// Where a chart put things: for the checks that a reviewer's eye would make.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Geometry {
-    /// The title.
-    pub title: String,
-    /// The plotting areas (one per panel), pixels.
-    pub plots: Vec<Rect>,
-    /// Each panel's axis labels, `(x, y)` (an empty x label: the panel below carries it).
-    pub axes: Vec<(String, String)>,
-    /// The first panel's band and lines in drawing order.
-    pub layers: Vec<Layer>,
-    /// The legend's box, pixels.
-    pub legend: Rect,
-    /// The drawn data, in pixels (every point, band corner and error-bar end), to check it
-    /// lies in the plotting areas.
-    pub data: Vec<(i32, i32)>,
-    /// The tallest extent of the confidence band in pixels, when a band is drawn.
-    pub band_px: Option<f64>,
-}
-
-impl Geometry {
-    /// Nothing placed yet, under `title`.
-    pub fn new(title: &str) -> Self {
-        Geometry {
-            title: title.to_string(),
-            plots: Vec::new(),
-            axes: Vec::new(),
-            layers: Vec::new(),
-            legend: Rect {
-                left: 0,
-                top: 0,
-                right: 0,
-                bottom: 0,
-            },
-            data: Vec::new(),
-            band_px: None,
-        }
-    }
-
-    /// What a referee would object to, one sentence each (empty: none): the legend over a
-    /// plotting area, data outside the plotting areas, a band drawn where it is no taller
-    /// than a line or drawn under a line (the lines then hide it), a line too light to see in
-    /// grey scale (luminance above [`MAX_LINE_LUMINANCE`]), two lines of the same dash that
-    /// grey scale cannot tell apart (luminances closer than [`MIN_LUMINANCE_STEP`]), an axis
-    /// label that is only a symbol (no word of four letters or more).
-    pub fn objections(&self) -> Vec<String> {
-        let mut out = Vec::new();
-        if self.plots.is_empty() {
-            out.push("no plotting area".to_string());
-        }
-        for p in &self.plots {
-            if self.legend.overlaps(p) {
-                out.push(format!(
-                    "the legend {:?} covers the plot {p:?}",
-                    self.legend
-                ));
-            }
-        }
-        if let Some(d) = self
-            .data
-            .iter()
-            .find(|&&d| !self.plots.iter().any(|p| p.contains(d)))
-        {
-            out.push(format!("data at {d:?} outside the plotting areas"));
-        }
-        if let Some(px) = self.band_px
-            && px <= LINE_WIDTH as f64
-        {
-            out.push(format!(
-                "a band of {px:.1} px drawn under a {LINE_WIDTH} px line"
-            ));
-        }
-        if let Some(band) = self.layers.iter().position(|l| *l == Layer::Band)
-            && let Some(Layer::Line { label, .. }) = self.layers[band..]
-                .iter()
-                .find(|l| matches!(l, Layer::Line { .. }))
-        {
-            out.push(format!(
-                "the band is drawn under the line \"{label}\", which hides it"
-            ));
-        }
-        type Drawn<'a> = (RGBColor, Option<(u32, u32)>, &'a str);
-        let lines: Vec<Drawn<'_>> = self
-            .layers
-            .iter()
-            .filter_map(|l| match l {
-                Layer::Line { color, dash, label } => Some((*color, *dash, label.as_str())),
-                Layer::Band => None,
-            })
-            .collect();
-        for (i, a) in lines.iter().enumerate() {
-            if luminance(a.0) > MAX_LINE_LUMINANCE {
-                out.push(format!(
-                    "the line \"{}\" is too light for grey scale (luminance {:.2})",
-                    a.2,
-                    luminance(a.0)
-                ));
-            }
-            for b in &lines[i + 1..] {
-                if a.1 == b.1 && (luminance(a.0) - luminance(b.0)).abs() < MIN_LUMINANCE_STEP {
-                    out.push(format!(
-                        "the lines \"{}\" and \"{}\" look the same in grey scale",
-                        a.2, b.2
-                    ));
-                }
-            }
-        }
-        for (x, y) in &self.axes {
-            for label in [x, y] {
-                let named = label
-                    .split(|c: char| !c.is_ascii_alphabetic())
-                    .any(|w| w.len() >= 4);
-                if !label.is_empty() && !named {
-                    out.push(format!("the axis label \"{label}\" is only a symbol"));
-                }
-            }
-        }
-        out
-    }
-}
 
 /// A chart: its SVG text and where it put things.
 #[derive(Clone, Debug, PartialEq)]
@@ -426,82 +254,6 @@ mod tests {
         assert_eq!(wrap("", 10), Vec::<String>::new());
     }
 
-    /// A chart as the T chart was drawn before the objections existed: band first and the
-    /// lines over it, a bright green reference, bare symbols on the axes.
-    fn yesterdays_t_chart() -> Geometry {
-        let plot = Rect {
-            left: 100,
-            top: 50,
-            right: 700,
-            bottom: 400,
-        };
-        let line = |color, dash, label: &str| Layer::Line {
-            color,
-            dash,
-            label: label.into(),
-        };
-        Geometry {
-            title: "grw-example3, n = 1024, 1000 ensembles: T".into(),
-            plots: vec![plot],
-            axes: vec![("t".into(), crate::run::columns::name::T.into())],
-            layers: vec![
-                Layer::Band,
-                line(BLUE, None, "mean"),
-                line(RED, Some((12, 5)), "T_exact"),
-                line(GREEN, Some((4, 4)), "T_mean_n"),
-            ],
-            legend: Rect {
-                left: 710,
-                top: 50,
-                right: 970,
-                bottom: 300,
-            },
-            data: vec![(150, 200)],
-            band_px: Some(4.0),
-        }
-    }
-
-    /// The objections catch each fault of the old T chart, one at a time, and none is left
-    /// once all are mended: the check can fail, and passes only a readable chart.
-    #[test]
-    fn objections_name_each_fault_and_pass_a_mended_chart() {
-        let old = yesterdays_t_chart();
-        let found = old.objections().join("\n");
-        assert!(found.contains("drawn under the line \"mean\""), "{found}");
-        assert!(found.contains("\"T_mean_n\" is too light"), "{found}");
-        assert!(found.contains("\"t\" is only a symbol"), "{found}");
-        assert!(found.contains("\"T\" is only a symbol"), "{found}");
-        let mut g = old.clone();
-        g.layers.rotate_left(1);
-        g.layers[2] = Layer::Line {
-            color: BLACK,
-            dash: Some((3, 3)),
-            label: "T_mean_n".into(),
-        };
-        g.axes = vec![(
-            "time t (scene units)".into(),
-            "temperature T (scene units)".into(),
-        )];
-        assert_eq!(g.objections(), Vec::<String>::new());
-        // Each further fault alone is caught.
-        let mut covered = g.clone();
-        covered.legend.left = 600;
-        assert!(covered.objections()[0].contains("covers the plot"));
-        let mut outside = g.clone();
-        outside.data.push((50, 50));
-        assert!(outside.objections()[0].contains("outside the plotting areas"));
-        let mut thin = g.clone();
-        thin.band_px = Some(LINE_WIDTH as f64);
-        assert!(thin.objections()[0].contains("drawn under a 2 px line"));
-        let mut twins = g.clone();
-        twins.layers[1] = Layer::Line {
-            color: RGBColor(60, 60, 60),
-            dash: Some((3, 3)),
-            label: "T_exact".into(),
-        };
-        assert!(twins.objections()[0].contains("look the same in grey scale"));
-    }
-
     #[test]
     fn legend_rows_are_as_tall_as_their_tallest_entry() {
         let e = |t: &str| Entry::new(Swatch::None, t);
@@ -511,24 +263,5 @@ mod tests {
         assert_eq!(layout[1].2.len(), 2);
         assert_eq!(layout[2].1, LEGEND_PAD + 2 * LEGEND_LINE + LEGEND_GAP);
         assert_eq!(height, layout[2].1 + LEGEND_LINE + LEGEND_PAD);
-    }
-
-    #[test]
-    fn rectangles_overlap_only_when_they_share_pixels() {
-        let a = Rect {
-            left: 0,
-            top: 0,
-            right: 10,
-            bottom: 10,
-        };
-        let b = Rect {
-            left: 10,
-            top: 0,
-            right: 20,
-            bottom: 10,
-        };
-        assert!(!a.overlaps(&b));
-        let c = Rect { left: 9, ..b };
-        assert!(a.overlaps(&c));
     }
 }

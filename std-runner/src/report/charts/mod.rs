@@ -5,6 +5,7 @@
 pub mod distribution;
 pub mod export;
 pub mod frame;
+pub mod geometry;
 pub mod profile;
 pub mod tail;
 pub mod time;

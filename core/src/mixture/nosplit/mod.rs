@@ -25,11 +25,15 @@
 //! below [`crate::engine::pairs::PREFETCH_FROM`] particles (no pair-type draw for one type; pairs
 //! drawn when used) and gives its results to the last bit.
 
+mod observe;
+
+use super::StartError;
+use super::drives::kick_species;
 use super::map::PairLaw;
 use crate::drive::{Drive, NoDrive};
 use crate::engine::collision_map::CollisionMap;
 use crate::engine::event::{Majorant, RefreshWindow};
-use crate::engine::frame::{Frame, RESCALE_BELOW};
+use crate::engine::frame::Frame;
 use crate::engine::{Counts, EngineError};
 use crate::geometry::{Geometry, Spheres};
 use crate::kernel::Kernel;
@@ -177,27 +181,6 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
     /// The species.
     pub fn species(&self) -> &Species {
         &self.sp
-    }
-
-    /// Re-synchronizes after the caller changed velocities between calls (physical units):
-    /// every last-kick time becomes the current time, the majorants are recomputed.
-    pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
-        // The caller's velocities are physical (a rough mixture's spins are left as stored).
-        self.frame.reset(p, L::Map::SPINS);
-        p.reset_kick_times(self.t);
-        self.synchronized(p)
-    }
-
-    /// The map `v_phys = offset + scale v` from stored to physical velocities.
-    pub fn velocity_map(&self) -> Frame {
-        self.frame
-    }
-
-    /// Each species' observables of the synchronized particles `p` (right after an advance or
-    /// a start), in physical units.
-    pub fn species_now(&self, p: &Particles<'_>) -> MixtureObservables {
-        let obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
-        self.physical(p, obs)
     }
 
     /// The collision map of pair type `k` (the time-stepped scheme's table).
@@ -402,77 +385,6 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
             );
         }
     }
-
-    /// Observables of the synchronized system (physical units); makes every species'
-    /// majorant exact and rescales a cooling gas (as [`crate::engine::NoSplitting`] does).
-    fn synchronized(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
-        let mut obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
-        if let Some(what) = obs.all.non_finite() {
-            return Err(EngineError::NonFinite(what));
-        }
-        if L::Map::SPINS {
-            crate::engine::nosplit::spins_finite(p)?;
-        }
-        let mut all = obs.all;
-        let d = G::CHOICE.d();
-        if !D::ACTS
-            && self.rescale
-            && self
-                .frame
-                .rescale(p, &mut all, RESCALE_BELOW, d, L::Map::SPINS)
-        {
-            self.counts.rescales += 1;
-            obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
-        }
-        self.counts.observations += 1;
-        tell_drives(&mut self.drives, &obs);
-        for s in 0..self.sp.len() {
-            if K::USES_UMAX {
-                self.maj[s] = Majorant::about(&obs.species[s]);
-            }
-        }
-        for k in 0..self.sp.pair_types() {
-            let (s, t) = self.pair_of[k];
-            self.apart[k] = if s == t {
-                0.0
-            } else {
-                (obs.species[s].bulk - obs.species[t].bulk).norm()
-            };
-        }
-        Ok(self.physical(p, obs))
-    }
-
-    /// The observables `obs` of the stored particles `p` in physical units, with a rough
-    /// mixture's rotation.
-    fn physical(&self, p: &Particles<'_>, obs: MixtureObservables) -> MixtureObservables {
-        let obs = self.with_raw_v6(p, obs.in_units(self.frame.scale, self.frame.offset));
-        if !L::Map::SPINS {
-            return obs;
-        }
-        obs.with_rotation(
-            p.as_slice(),
-            p.spins(),
-            &self.sp,
-            &self.kappa,
-            self.frame.scale,
-        )
-    }
-
-    /// `<|v|^6>` of a gas stored rescaled about a bulk velocity, summed from the physical
-    /// velocities (as [`crate::engine::NoSplitting`] does; [`crate::moments::Observables::in_units`]
-    /// leaves it NaN).
-    fn with_raw_v6(&self, p: &Particles<'_>, mut obs: MixtureObservables) -> MixtureObservables {
-        if D::ACTS {
-            return obs;
-        }
-        obs.all = self.frame.with_raw_v6(p.as_slice(), obs.all);
-        for s in 0..self.sp.len() {
-            obs.species[s] = self
-                .frame
-                .with_raw_v6(&p.as_slice()[self.sp.range(s)], obs.species[s]);
-        }
-        obs
-    }
 }
 
 /// The exact loop with the drives off ([`drives_off`]).
@@ -499,52 +411,6 @@ pub(super) fn drives_off<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
     Ok((table.never_rescaled(), obs))
 }
 
-/// Brings every particle of `p` to `t`, each species `s` with `drives[s]` (a one-species
-/// mixture with the drive's batch kernel, as the one-species loop), counting a host medium's
-/// events in `background`.
-pub(super) fn kick_species<D: Drive, R: Rng + ?Sized>(
-    drives: &[D; MAX_SPECIES],
-    sp: &Species,
-    p: &mut Particles<'_>,
-    t: Real,
-    rng: &mut R,
-    background: &mut u64,
-) {
-    if sp.len() == 1 {
-        drives[0].kick_all_counting(p, t, rng, background);
-    } else if D::COUPLES {
-        // One drive for every species (validated), its correction over all of them.
-        let groups: [(core::ops::Range<usize>, Real); MAX_SPECIES] = core::array::from_fn(|s| {
-            let s = s.min(sp.len() - 1);
-            (sp.range(s), sp.mass(s))
-        });
-        drives[0].kick_weighted(p, &groups[..sp.len()], t, rng);
-    } else {
-        for (s, drive) in drives.iter().enumerate().take(sp.len()) {
-            for i in sp.range(s) {
-                drive.kick_counting(p, i, t, rng, background);
-            }
-        }
-    }
-}
-
-/// Tells each species' drive the synchronized observables `obs`: drives that act about a
-/// centre (the Gaussian thermostat) get the mixture's flow velocity, which collisions keep
-/// (and such a drive too), so that kicks between synchronizations stay exact; each species'
-/// own moments otherwise.
-pub(super) fn tell_drives<D: Drive>(drives: &mut [D; MAX_SPECIES], obs: &MixtureObservables) {
-    let flow = if obs.len == 1 {
-        obs.species[0].bulk // the same bits as the one-species loop
-    } else {
-        obs.flow_velocity()
-    };
-    for (s, drive) in drives.iter_mut().enumerate().take(obs.len) {
-        let mut seen = obs.species[s];
-        seen.bulk = flow;
-        drive.observe(&seen);
-    }
-}
-
 crate::engine::impl_event_loop!(
     MixtureNoSplitting,
     [K: Kernel, D: Drive, L: PairLaw, G: Geometry],
@@ -556,23 +422,3 @@ crate::engine::impl_event_loop!(
         }
     }
 );
-
-/// Why a mixture loop could not start.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum StartError {
-    /// The mixture description does not fit the data given.
-    Mixture(MixtureError),
-    /// The engine refused (non-finite start time or velocities).
-    Engine(EngineError),
-}
-
-impl core::fmt::Display for StartError {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self {
-            StartError::Mixture(e) => e.fmt(f),
-            StartError::Engine(e) => e.fmt(f),
-        }
-    }
-}
-
-impl core::error::Error for StartError {}
