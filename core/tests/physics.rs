@@ -8,7 +8,7 @@ use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::physics::engine::ByKernel;
 use gdsmc_core::physics::{
     BackgroundKernel, Component, DriveChoice, Engine, KernelChoice, Param, Physics, Problem,
-    RestitutionLaw, SchemeChoice,
+    RestitutionLaw, SchemeChoice, SchemeKind,
 };
 use gdsmc_core::restitution::{Constant, ImpactSpeed};
 use gdsmc_core::rng::seeded;
@@ -145,7 +145,7 @@ fn every_rule_names_its_parameter() {
                 scheme: SchemeChoice::Strang(0.0),
                 ..grw3()
             },
-            Param::Dt,
+            Param::Step(SchemeKind::Strang, 0),
         ),
         (
             Physics {
@@ -153,7 +153,7 @@ fn every_rule_names_its_parameter() {
                 scheme: SchemeChoice::TimeStepped(-1.0),
                 ..grw3()
             },
-            Param::StepFactor,
+            Param::Step(SchemeKind::TimeStepped, 0),
         ),
     ];
     for (p, param) in cases {
@@ -372,7 +372,7 @@ fn a_step_that_takes_no_step_is_refused() {
     assert!(SchemeChoice::NoSplitting.check_span(1.0).is_ok());
     for dt in [8.000001, 1e300, f64::MAX, f64::INFINITY, f64::NAN] {
         let e = strang(dt).check_span(8.0).unwrap_err();
-        assert_eq!(e.param, Param::Dt, "dt = {dt}");
+        assert_eq!(e.param, Param::Step(SchemeKind::Strang, 0), "dt = {dt}");
         assert!(e.to_string().contains("at most the run's span 8"), "{e}");
     }
     // The grid: the start, whole steps to within 1e-9 of a step, nothing else.

@@ -119,68 +119,105 @@ fn every_drive_is_read() {
     }
 }
 
+/// Every scheme is read with its declared keys and their example values; each key is refused
+/// on a scheme that does not declare it, naming the keys that scheme has.
 #[test]
 fn every_scheme_is_read() {
     for &k in SchemeKind::ALL {
-        let keys = match k {
-            SchemeKind::NoSplitting => "",
-            SchemeKind::Euler | SchemeKind::Strang => "dt = 0.25",
-            SchemeKind::TimeStepped => "step_factor = 0.01",
-        };
+        let keys: String = k
+            .params()
+            .iter()
+            .map(|p| format!("{} = {:?}\n", p.name, p.example))
+            .collect();
         let s = format!("kind = \"{}\"\n{keys}", k.scene_name());
         assert_eq!(read(&scene(MAXWELL, NONE, &s)).scheme.kind(), k);
+        for p in k.params() {
+            for &other in SchemeKind::ALL {
+                if other.params().iter().any(|q| q.name == p.name) {
+                    continue;
+                }
+                let s = format!(
+                    "kind = \"{}\"\n{}\n{} = {:?}",
+                    other.scene_name(),
+                    other
+                        .params()
+                        .iter()
+                        .map(|q| format!("{} = {:?}", q.name, q.example))
+                        .collect::<Vec<_>>()
+                        .join("\n"),
+                    p.name,
+                    p.example
+                );
+                let e = parse(Path::new("kinds.toml"), &scene(MAXWELL, NONE, &s))
+                    .expect_err("not a key of another scheme")
+                    .to_string();
+                assert!(
+                    e.contains(&format!("`scheme.{}` is not a key of [scheme]", p.name))
+                        && e.contains("its keys: kind"),
+                    "{e}"
+                );
+            }
+        }
     }
 }
 
-/// docs/scenes.md names every kernel's scene word and every key of its own (a row
-/// `collisions.<name>`): a kernel added to the core and not to the scene documentation fails.
+/// Asserts that docs/scenes.md's row of `kind_key` names every variant's scene word and that
+/// the documentation has a row `| \`TABLE.KEY\` |` for each of its keys (`variants`: scene
+/// word and keys): a variant added to the core and not to the documentation fails.
+fn documented<'a>(
+    kind_key: &str,
+    table: &str,
+    variants: impl Iterator<Item = (&'a str, Vec<&'a str>)>,
+) {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/scenes.md"))
+        .expect("docs/scenes.md");
+    let kinds_row = doc
+        .lines()
+        .find(|l| l.starts_with(&format!("| `{kind_key}` |")))
+        .unwrap_or_else(|| panic!("docs/scenes.md has no {kind_key} row"));
+    for (word, keys) in variants {
+        assert!(
+            kinds_row.contains(&format!("`\"{word}\"`")),
+            "docs/scenes.md's {kind_key} row does not name \"{word}\""
+        );
+        for key in keys {
+            assert!(
+                doc.contains(&format!("| `{table}.{key}` |")),
+                "docs/scenes.md has no row for {table}.{key} ({word})"
+            );
+        }
+    }
+}
+
+/// docs/scenes.md names every scheme's scene word and every key of its own.
+#[test]
+fn the_scene_documentation_names_every_scheme_and_its_keys() {
+    let names = |k: SchemeKind| k.params().iter().map(|p| p.name).collect();
+    documented(
+        "scheme.kind",
+        "scheme",
+        SchemeKind::ALL.iter().map(|&k| (k.scene_name(), names(k))),
+    );
+}
+
+/// docs/scenes.md names every kernel's scene word and every key of its own.
 #[test]
 fn the_scene_documentation_names_every_kernel_and_its_keys() {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/scenes.md"))
-        .expect("docs/scenes.md");
-    let kinds_row = doc
-        .lines()
-        .find(|l| l.starts_with("| `collisions.kernel` |"))
-        .expect("the collisions.kernel row");
-    for k in KernelKind::ALL {
-        assert!(
-            kinds_row.contains(&format!("`\"{}\"`", k.scene_name())),
-            "docs/scenes.md's collisions.kernel row does not name \"{}\"",
-            k.scene_name()
-        );
-        for p in k.params() {
-            assert!(
-                doc.contains(&format!("| `collisions.{}` |", p.name)),
-                "docs/scenes.md has no row for collisions.{} ({k:?})",
-                p.name
-            );
-        }
-    }
+    let names = |k: KernelKind| k.params().iter().map(|p| p.name).collect();
+    documented(
+        "collisions.kernel",
+        "collisions",
+        KernelKind::ALL.iter().map(|&k| (k.scene_name(), names(k))),
+    );
 }
 
-/// docs/scenes.md names every drive's scene word and every key of a drive declared by its type
-/// (a row `drive.<name>`): a drive added to the core and not to the scene documentation fails.
+/// docs/scenes.md names every drive's scene word and every key of a drive declared by its type.
 #[test]
 fn the_scene_documentation_names_every_drive_and_its_keys() {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/scenes.md"))
-        .expect("docs/scenes.md");
-    let kinds_row = doc
-        .lines()
-        .find(|l| l.starts_with("| `drive.kind` |"))
-        .expect("the drive.kind row");
-    for k in DriveKind::ALL {
-        assert!(
-            kinds_row.contains(&format!("`\"{}\"`", k.scene_name())),
-            "docs/scenes.md's drive.kind row does not name \"{}\"",
-            k.scene_name()
-        );
-        for p in k.params().unwrap_or(&[]) {
-            assert!(
-                doc.contains(&format!("| `drive.{}` |", p.name)),
-                "docs/scenes.md has no row for drive.{} ({:?})",
-                p.name,
-                k
-            );
-        }
-    }
+    let names = |k: DriveKind| k.params().unwrap_or(&[]).iter().map(|p| p.name).collect();
+    documented(
+        "drive.kind",
+        "drive",
+        DriveKind::ALL.iter().map(|&k| (k.scene_name(), names(k))),
+    );
 }

@@ -18,6 +18,7 @@ mod mixture;
 mod mixture_steady;
 mod mutated_scenes;
 mod rough;
+mod source_sizes;
 mod splitting;
 mod stability;
 mod steady_state;

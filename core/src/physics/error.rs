@@ -47,10 +47,9 @@ pub enum Param {
     BackgroundTemperature,
     /// Host medium: drift u^B.
     BackgroundDrift,
-    /// The time step of a splitting scheme.
-    Dt,
-    /// The step factor of the time-stepped scheme.
-    StepFactor,
+    /// Parameter `i` of a scheme's declaration ([`super::SchemeKind::params`]): a splitting's
+    /// `dt`, the time-stepped scheme's `step_factor`.
+    Step(super::SchemeKind, usize),
     /// The scheme itself (it does not fit the kernel or the drive).
     Scheme,
     /// The species of a mixture as a whole.
@@ -117,8 +116,10 @@ impl core::fmt::Display for Param {
             Param::BackgroundMass => f.write_str("background_mass"),
             Param::BackgroundTemperature => f.write_str("background_temperature"),
             Param::BackgroundDrift => f.write_str("background_drift"),
-            Param::Dt => f.write_str("dt"),
-            Param::StepFactor => f.write_str("step_factor"),
+            Param::Step(kind, i) => match kind.params().get(*i) {
+                Some(p) => f.write_str(p.name),
+                None => write!(f, "scheme parameter {i}"),
+            },
             Param::Scheme => f.write_str("scheme"),
             Param::Species => f.write_str("species"),
             Param::SpeciesCount(k) => write!(f, "species[{k}].count"),

@@ -53,6 +53,7 @@ mod kinds;
 pub mod model;
 mod parts;
 mod rotation;
+mod schemes;
 mod species;
 
 pub use drives::{BackgroundKernel, DriveChoice, DriveParams};
@@ -124,7 +125,7 @@ impl SchemeChoice {
         match *self {
             SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) if dt.is_nan() || dt > span => {
                 Err(PhysicsError {
-                    param: Param::Dt,
+                    param: Param::Step(self.kind(), 0),
                     problem: Problem::LongerThanSpan { value: dt, span },
                 })
             }

@@ -342,6 +342,14 @@ pub(super) fn drive(d: DriveChoice) -> Result<DriveModel, PhysicsError> {
 }
 
 pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, PhysicsError> {
+    let kind = s.kind();
+    for (i, (spec, &x)) in kind.params().iter().zip(s.values()).enumerate() {
+        if !spec.rule.holds(x) {
+            return Err(refusal(Param::Step(kind, i), spec.rule, x));
+        }
+    }
+    // The rules held: a step is finite and > 0 (`check_step`).
+    let step = |h: Real| check_step(h).map_err(|_| not_positive(Param::Step(kind, 0), h));
     Ok(match s {
         SchemeChoice::NoSplitting => {
             if let Some(why) = d.kind().stepped_only() {
@@ -349,16 +357,8 @@ pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, Phy
             }
             SchemeModel::NoSplitting
         }
-        SchemeChoice::Euler(dt) => SchemeModel::Splitting(
-            SplittingOrder::Euler,
-            check_step(dt).map_err(|_| not_positive(Param::Dt, dt))?,
-        ),
-        SchemeChoice::Strang(dt) => SchemeModel::Splitting(
-            SplittingOrder::Strang,
-            check_step(dt).map_err(|_| not_positive(Param::Dt, dt))?,
-        ),
-        SchemeChoice::TimeStepped(f) => {
-            SchemeModel::TimeStepped(check_step(f).map_err(|_| not_positive(Param::StepFactor, f))?)
-        }
+        SchemeChoice::Euler(dt) => SchemeModel::Splitting(SplittingOrder::Euler, step(dt)?),
+        SchemeChoice::Strang(dt) => SchemeModel::Splitting(SplittingOrder::Strang, step(dt)?),
+        SchemeChoice::TimeStepped(f) => SchemeModel::TimeStepped(step(f)?),
     })
 }

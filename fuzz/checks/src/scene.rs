@@ -66,6 +66,14 @@ pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::ne
             }
         }
     }
+    let mut scheme = vec!["kind"];
+    for k in SchemeKind::ALL {
+        for p in k.params() {
+            if !scheme.contains(&p.name) {
+                scheme.push(p.name);
+            }
+        }
+    }
     vec![
         ("particles", vec!["n"]),
         (
@@ -74,7 +82,7 @@ pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::ne
         ),
         ("collisions", collisions),
         ("drive", drive),
-        ("scheme", vec!["kind", "dt", "step_factor"]),
+        ("scheme", scheme),
         (
             "observe",
             vec![

@@ -6,8 +6,10 @@ use toml::Spanned;
 
 mod collisions;
 mod drive;
+mod scheme;
 pub use collisions::{CollisionsSpec, ImpactSpeedSpec};
 pub use drive::DriveSpec;
+pub use scheme::SchemeSpec;
 
 /// A scene file as written.
 #[derive(Debug, Clone, Deserialize)]
@@ -296,37 +298,6 @@ pub enum BackgroundKind {
     Maxwell,
     /// `B_1 = C_1 |g|` (BRS (19)).
     HardSpheres,
-}
-
-/// `scheme.kind`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
-#[serde(rename_all = "kebab-case")]
-pub enum SchemeKind {
-    /// The exact no-splitting scheme (GRW Section 3, RW Algorithm 3).
-    #[default]
-    NoSplitting,
-    /// Euler splitting with time step `dt` (RW Algorithm 1).
-    Euler,
-    /// Strang splitting with time step `dt` (RW Algorithm 2).
-    Strang,
-    /// The time-stepped scheme of MS Section 3 (hard spheres; Bird's no-time-counter form for
-    /// the other kernels), step `step_factor` mean free paths over the thermal speed.
-    TimeStepped,
-}
-
-/// `[scheme]`.
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-pub struct SchemeSpec {
-    /// Which scheme. Default `"no-splitting"`.
-    #[serde(default)]
-    pub kind: SchemeKind,
-    /// Time step (> 0) of the splitting schemes; observation times must be multiples of it.
-    #[serde(default)]
-    pub dt: Option<Spanned<f64>>,
-    /// Time-stepped scheme: `h = step_factor * lambda / v0(t)` (MS: 0.01). Default 0.01.
-    #[serde(default)]
-    pub step_factor: Option<Spanned<f64>>,
 }
 
 /// `[observe]`.

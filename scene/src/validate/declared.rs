@@ -1,5 +1,6 @@
 //! The keys of a table whose variant declares its parameters by its type (a drive's
-//! [`gdsmc_core::drive::Declared`], a kernel's [`gdsmc_core::kernel::Declared`]): each number
+//! [`gdsmc_core::drive::Declared`], a kernel's [`gdsmc_core::kernel::Declared`], a scheme's
+//! [`gdsmc_core::physics::SchemeKind::params`]): each number
 //! read under its declared name with its default, recorded as holding its parameter, and every
 //! key the variant does not have refused with the keys it has.
 

@@ -1,57 +1,39 @@
-//! `[scheme]`: which scheme, its step, and (a rule of observing) that the observation times lie
+//! `[scheme]`: which scheme and its parameters, read by the scheme's declaration
+//! ([`gdsmc_core::physics::SchemeKind::params`]: a splitting's `dt`, the time-stepped scheme's
+//! `step_factor` with its default), and (a rule of observing) that the observation times lie
 //! on a splitting scheme's grid.
 
 use super::Ctx;
+use super::declared::Table;
 use crate::error::Error;
-use crate::schema::{SchemeKind, SchemeSpec};
+use crate::schema::SchemeSpec;
 use gdsmc_core::physics::{Param, SchemeChoice};
 
 pub use gdsmc_core::physics::DEFAULT_STEP_FACTOR;
 
-/// The scheme, with the keys that hold its parameters.
+/// The scheme, with the keys that hold its parameters; a key the scheme does not have is
+/// refused naming the keys it has.
 pub(super) fn scheme(ctx: &mut Ctx<'_>, sch: &SchemeSpec) -> Result<SchemeChoice, Error> {
-    ctx.holds(Param::Scheme, "scheme.kind", 0..0);
-    if sch.kind != SchemeKind::TimeStepped
-        && let Some(f) = &sch.step_factor
-    {
-        return ctx.invalid(
-            f.span(),
-            "scheme.step_factor",
-            "is only used with kind = \"time-stepped\"",
-        );
-    }
-    Ok(match (sch.kind, &sch.dt) {
-        (SchemeKind::NoSplitting | SchemeKind::TimeStepped, Some(d)) => {
-            return ctx.invalid(
-                d.span(),
-                "scheme.dt",
-                "is only used with kind = \"euler\" or \"strang\"",
-            );
-        }
-        (SchemeKind::NoSplitting, None) => SchemeChoice::NoSplitting,
-        (SchemeKind::TimeStepped, None) => match &sch.step_factor {
-            Some(f) => {
-                ctx.holds(Param::StepFactor, "scheme.step_factor", f.span());
-                SchemeChoice::TimeStepped(*f.get_ref())
-            }
-            None => SchemeChoice::TimeStepped(DEFAULT_STEP_FACTOR),
-        },
-        (_, None) => {
-            return ctx.invalid(
-                0..0,
-                "scheme.dt",
-                "is required with kind = \"euler\" or \"strang\"",
-            );
-        }
-        (kind, Some(d)) => {
-            ctx.holds(Param::Dt, "scheme.dt", d.span());
-            if kind == SchemeKind::Euler {
-                SchemeChoice::Euler(*d.get_ref())
-            } else {
-                SchemeChoice::Strang(*d.get_ref())
-            }
-        }
-    })
+    ctx.holds(Param::Scheme, "scheme.kind", sch.kind.span());
+    let kind = *sch.kind.get_ref();
+    let kind_words = format!("kind = \"{}\"", kind.scene_name());
+    let table = Table {
+        name: "scheme",
+        numbers: &sch.numbers,
+        kind_span: sch.kind.span(),
+        kind_words: kind_words.clone(),
+    };
+    let keys: Vec<&str> = std::iter::once("kind")
+        .chain(kind.params().iter().map(|p| p.name))
+        .collect();
+    table.only(
+        ctx,
+        &keys,
+        std::iter::empty(),
+        &format!("[scheme] with {kind_words}"),
+    )?;
+    let values = table.declared(ctx, kind.params(), |i| Param::Step(kind, i))?;
+    Ok(SchemeChoice::new(kind, &values).expect("one value per declared parameter"))
 }
 
 /// A splitting scheme observes only on its grid: every observation time a multiple of `dt`.
@@ -61,7 +43,7 @@ pub(super) fn on_grid(
     scheme: SchemeChoice,
     times: &[f64],
 ) -> Result<(), Error> {
-    let at = sch.dt.as_ref().map_or(0..0, |d| d.span());
+    let at = sch.numbers.get("dt").map_or(0..0, |d| d.span());
     match grid_problem(scheme, times) {
         Some(message) => ctx.invalid(at, "scheme.dt", message),
         None => Ok(()),

@@ -1,0 +1,88 @@
+//! The schemes declared: each scheme's parameters ([`ParamSpec`]: name, rule, words, unit,
+//! default), from which the scene's `[scheme]` keys, the validation's refusals and their words
+//! follow; a [`SchemeChoice`] is a kind with the values of its parameters.
+
+use super::{DEFAULT_STEP_FACTOR, SchemeChoice, SchemeKind};
+use crate::declared::{ParamSpec, Rule};
+use crate::math::Real;
+
+/// The time step of RW's splittings (RW Algorithms 1-2).
+const DT: ParamSpec = ParamSpec {
+    name: "dt",
+    rule: Rule::Positive,
+    words: "the time step of the splitting (RW Algorithms 1-2); every observation time a \
+            multiple of it, the run's last time at least one step",
+    unit: "time",
+    default: None,
+    example: 0.25,
+};
+
+/// The step of MS's time-stepped scheme (MS Section 3).
+const STEP_FACTOR: ParamSpec = ParamSpec {
+    name: "step_factor",
+    rule: Rule::Positive,
+    words: "the time step in mean free paths over the thermal speed, h = step_factor lambda / \
+            v0(t) (MS Section 3: 0.01)",
+    unit: "1",
+    default: Some(DEFAULT_STEP_FACTOR),
+    example: DEFAULT_STEP_FACTOR,
+};
+
+impl SchemeKind {
+    /// Its parameters, in the order of their values ([`SchemeChoice::values`]).
+    #[must_use]
+    pub const fn params(self) -> &'static [ParamSpec] {
+        match self {
+            SchemeKind::NoSplitting => &[],
+            SchemeKind::Euler | SchemeKind::Strang => &[DT],
+            SchemeKind::TimeStepped => &[STEP_FACTOR],
+        }
+    }
+}
+
+impl SchemeChoice {
+    /// The scheme `kind` with the values of its parameters in their order
+    /// ([`SchemeKind::params`]; the rest of `values` is ignored); `None` when `values` has
+    /// fewer. The values are checked when the physics is validated.
+    #[must_use]
+    pub fn new(kind: SchemeKind, values: &[Real]) -> Option<Self> {
+        let first = || values.first().copied();
+        Some(match kind {
+            SchemeKind::NoSplitting => SchemeChoice::NoSplitting,
+            SchemeKind::Euler => SchemeChoice::Euler(first()?),
+            SchemeKind::Strang => SchemeChoice::Strang(first()?),
+            SchemeKind::TimeStepped => SchemeChoice::TimeStepped(first()?),
+        })
+    }
+
+    /// The values of its parameters, in the order of [`SchemeKind::params`].
+    #[must_use]
+    pub fn values(&self) -> &[Real] {
+        match self {
+            SchemeChoice::NoSplitting => &[],
+            SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => core::slice::from_ref(dt),
+            SchemeChoice::TimeStepped(f) => core::slice::from_ref(f),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every scheme's declaration holds (unique names, defaults and examples that obey their
+    /// rules), and a choice made from a kind's examples gives them back, of that kind.
+    #[test]
+    fn each_schemes_declaration_round_trips() {
+        for &k in SchemeKind::ALL {
+            assert_eq!(crate::declared::check_specs(k.params(), 1), Ok(()), "{k:?}");
+            let values: [Real; 1] = crate::declared::examples(k.params());
+            let s = SchemeChoice::new(k, &values).expect("its examples make it");
+            assert_eq!(s.kind(), k);
+            assert_eq!(s.values(), &values[..k.params().len()]);
+            if !k.params().is_empty() {
+                assert_eq!(SchemeChoice::new(k, &[]), None, "{k:?}");
+            }
+        }
+    }
+}
