@@ -27,6 +27,15 @@ pub enum Rule {
         /// The interval as text.
         range: &'static str,
     },
+    /// A number in the half-open interval `(lo, hi]`, written `range` (`"(0, 1]"`).
+    AboveAtMost {
+        /// The bound the value must exceed.
+        lo: Real,
+        /// The greatest value.
+        hi: Real,
+        /// The interval as text.
+        range: &'static str,
+    },
 }
 
 impl Rule {
@@ -39,6 +48,7 @@ impl Rule {
                 Rule::AtLeastZero => x >= 0.0,
                 Rule::Positive => x > 0.0,
                 Rule::Within { lo, hi, .. } => lo <= x && x <= hi,
+                Rule::AboveAtMost { lo, hi, .. } => lo < x && x <= hi,
             }
     }
 }
@@ -51,7 +61,9 @@ impl core::fmt::Display for Rule {
             Rule::Finite => f.write_str("a finite number"),
             Rule::AtLeastZero => f.write_str("a finite number >= 0"),
             Rule::Positive => f.write_str("a finite number > 0"),
-            Rule::Within { range, .. } => write!(f, "a number in {range}"),
+            Rule::Within { range, .. } | Rule::AboveAtMost { range, .. } => {
+                write!(f, "a number in {range}")
+            }
         }
     }
 }
@@ -150,13 +162,22 @@ mod tests {
     /// Each rule refuses what its words exclude, and every rule refuses what is not finite.
     #[test]
     fn rules_hold_as_worded() {
-        for r in [Rule::Finite, Rule::AtLeastZero, Rule::Positive, UNIT] {
+        let alpha = Rule::AboveAtMost {
+            lo: 0.0,
+            hi: 1.0,
+            range: "(0, 1]",
+        };
+        for r in [Rule::Finite, Rule::AtLeastZero, Rule::Positive, UNIT, alpha] {
             assert!(!r.holds(Real::NAN) && !r.holds(Real::INFINITY), "{r:?}");
             assert!(r.holds(1.0), "{r:?}");
         }
         assert!(Rule::Finite.holds(-1.0) && !Rule::AtLeastZero.holds(-1.0));
         assert!(Rule::AtLeastZero.holds(0.0) && !Rule::Positive.holds(0.0));
         assert!(UNIT.holds(0.0) && !UNIT.holds(1.0 + 1e-12) && !UNIT.holds(-1e-300));
+        assert!(!alpha.holds(0.0) && alpha.holds(1e-300) && !alpha.holds(1.0 + 1e-12));
+        let mut words = heapless::String::<32>::new();
+        core::fmt::Write::write_fmt(&mut words, format_args!("{alpha}")).unwrap();
+        assert_eq!(words.as_str(), "a number in (0, 1]");
     }
 
     /// A table with a repeated name, or an example its rule refuses, is refused.

@@ -7,8 +7,8 @@ use gdsmc_core::kernel::{HardSpheres, Maxwell, Vhs};
 use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::physics::engine::ByKernel;
 use gdsmc_core::physics::{
-    BackgroundKernel, Component, DriveChoice, Engine, KernelChoice, Param, Physics, Problem,
-    RestitutionLaw, SchemeChoice, SchemeKind,
+    BackgroundKernel, Component, DriveChoice, Engine, KernelChoice, LawKind, Param, Physics,
+    Problem, RestitutionLaw, SchemeChoice, SchemeKind,
 };
 use gdsmc_core::restitution::{Constant, ImpactSpeed};
 use gdsmc_core::rng::seeded;
@@ -76,14 +76,14 @@ fn every_rule_names_its_parameter() {
                 restitution: RestitutionLaw::Constant(0.0),
                 ..grw3()
             },
-            Param::Restitution,
+            Param::Law(LawKind::Constant, 0),
         ),
         (
             Physics {
                 restitution: RestitutionLaw::Constant(1.0 + 1e-12),
                 ..grw3()
             },
-            Param::Restitution,
+            Param::Law(LawKind::Constant, 0),
         ),
         (
             Physics {
@@ -93,7 +93,7 @@ fn every_rule_names_its_parameter() {
                 },
                 ..grw3()
             },
-            Param::Beta0,
+            Param::Law(LawKind::ImpactSpeed, 0),
         ),
         (
             Physics {
@@ -103,7 +103,7 @@ fn every_rule_names_its_parameter() {
                 },
                 ..grw3()
             },
-            Param::Delta,
+            Param::Law(LawKind::ImpactSpeed, 1),
         ),
         (
             Physics {

@@ -83,16 +83,69 @@ fn a_kernels_keys_are_its_own() {
     }
 }
 
+/// Every restitution law is read with its declared keys and their example values (the constant
+/// law's one parameter is its key, the impact-speed law's the keys of its table); a key the
+/// impact-speed law does not declare is refused naming the keys it has, and docs/scenes.md's
+/// row of each law names its keys.
 #[test]
 fn every_restitution_law_is_read() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/scenes.md"))
+        .expect("docs/scenes.md");
     for &k in LawKind::ALL {
+        let params = k.params();
         let value = match k {
-            LawKind::Constant => "0.8",
-            LawKind::ImpactSpeed => "{ beta0 = 0.1, delta = 0.2 }",
+            LawKind::Constant => format!("{:?}", params[0].example),
+            LawKind::ImpactSpeed => format!(
+                "{{ {} }}",
+                params
+                    .iter()
+                    .map(|p| format!("{} = {:?}", p.name, p.example))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
         };
         let c = format!("kernel = \"maxwell\"\n{} = {value}", k.scene_name());
-        assert_eq!(read(&scene(&c, NONE, EXACT)).restitution.kind(), k);
+        let law = read(&scene(&c, NONE, EXACT)).restitution;
+        assert_eq!(law.kind(), k);
+        assert_eq!(
+            &law.values()[..params.len()],
+            &examples(params)[..params.len()]
+        );
+        let row = doc
+            .lines()
+            .find(|l| l.starts_with(&format!("| `collisions.{}` |", k.scene_name())))
+            .unwrap_or_else(|| {
+                panic!(
+                    "docs/scenes.md has no row for collisions.{}",
+                    k.scene_name()
+                )
+            });
+        for p in params {
+            assert!(row.contains(p.name), "{row}: no {}", p.name);
+        }
     }
+    let c = "kernel = \"maxwell\"\nimpact_speed_law = { beta0 = 0.1, delta = 0.2, gamma = 1.0 }";
+    let e = parse(Path::new("kinds.toml"), &scene(c, NONE, EXACT))
+        .expect_err("not a key of the impact-speed law")
+        .to_string();
+    assert!(
+        e.contains("`collisions.impact_speed_law.gamma` is not a key")
+            && e.contains("its keys: beta0, delta"),
+        "{e}"
+    );
+    let c = "kernel = \"maxwell\"\nimpact_speed_law = { beta0 = 0.1 }";
+    let e = parse(Path::new("kinds.toml"), &scene(c, NONE, EXACT))
+        .expect_err("delta is required")
+        .to_string();
+    assert!(
+        e.contains("`collisions.impact_speed_law.delta` is required"),
+        "{e}"
+    );
+}
+
+/// Each parameter's example value in its place (`gdsmc_core::declared::examples`).
+fn examples(params: &[gdsmc_core::declared::ParamSpec]) -> [f64; 4] {
+    gdsmc_core::declared::examples(params)
 }
 
 #[test]

@@ -27,12 +27,9 @@ pub enum Param {
     /// Parameter `.1` of a kernel beyond `gamma` and `C` ([`super::KernelKind::params`]:
     /// VHS's `lambda`).
     Kernel(super::KernelKind, usize),
-    /// The constant restitution coefficient alpha.
-    Restitution,
-    /// `beta_0` of the impact-speed law BRS (9).
-    Beta0,
-    /// `delta` of the impact-speed law BRS (9).
-    Delta,
+    /// Parameter `i` of a restitution law's declaration ([`super::LawKind::params`]): the
+    /// constant coefficient alpha, the impact-speed law's `beta0` and `delta` (BRS (9)).
+    Law(super::LawKind, usize),
     /// The white-noise strength beta.
     Beta,
     /// Parameter `.1` of a drive declared by its type ([`super::DriveKind::params`]).
@@ -103,9 +100,10 @@ impl core::fmt::Display for Param {
                 Some(p) => f.write_str(p.name),
                 None => write!(f, "kernel parameter {i}"),
             },
-            Param::Restitution => f.write_str("restitution"),
-            Param::Beta0 => f.write_str("beta0"),
-            Param::Delta => f.write_str("delta"),
+            Param::Law(kind, i) => match kind.params().get(*i) {
+                Some(p) => f.write_str(p.name),
+                None => write!(f, "law parameter {i}"),
+            },
             Param::Beta => f.write_str("beta"),
             Param::Drive(kind, i) => match kind.params().and_then(|p| p.get(*i)) {
                 Some(p) => f.write_str(p.name),

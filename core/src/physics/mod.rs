@@ -50,6 +50,7 @@ pub mod engine;
 pub mod error;
 mod kernels;
 mod kinds;
+mod laws;
 pub mod model;
 mod parts;
 mod rotation;
@@ -61,6 +62,7 @@ pub use engine::Engine;
 pub use error::{Param, PhysicsError, Problem};
 pub use kernels::KernelChoice;
 pub use kinds::{DriveKind, KernelKind, LawKind, SchemeKind};
+pub use laws::MAX_LAW_PARAMS;
 pub use model::Model;
 
 pub use crate::drive::MAX_DRIVE_PARAMS;

@@ -18,7 +18,7 @@ use crate::engine::{SplittingOrder, check_step};
 use crate::kernel::{Declared as DeclaredKernel, KernelError};
 use crate::math::Real;
 use crate::particles::{ParticlesError, check_count};
-use crate::restitution::{ALPHA_RANGE, Constant, ImpactSpeed, ImpactSpeedError};
+use crate::restitution::{Constant, ImpactSpeed, ImpactSpeedError};
 use crate::sample::{Maxwellian, MaxwellianMixture, ParamError};
 use crate::vec3::Vec3;
 
@@ -187,7 +187,7 @@ fn refusal(param: Param, rule: Rule, x: Real) -> PhysicsError {
             param,
             problem: Problem::NotFinite(x),
         },
-        Rule::Within { range, .. } => PhysicsError {
+        Rule::Within { range, .. } | Rule::AboveAtMost { range, .. } => PhysicsError {
             param,
             problem: Problem::OutOfRange { value: x, range },
         },
@@ -283,23 +283,23 @@ pub(super) fn initial(
 }
 
 pub(super) fn law(r: RestitutionLaw) -> Result<LawModel, PhysicsError> {
-    match r {
-        RestitutionLaw::Constant(alpha) => {
-            Constant::new(alpha)
-                .map(LawModel::Constant)
-                .map_err(|_| PhysicsError {
-                    param: Param::Restitution,
-                    problem: Problem::OutOfRange {
-                        value: alpha,
-                        range: ALPHA_RANGE,
-                    },
-                })
+    let kind = r.kind();
+    for (i, (spec, &x)) in kind.params().iter().zip(&r.values()).enumerate() {
+        if !spec.rule.holds(x) {
+            return Err(refusal(Param::Law(kind, i), spec.rule, x));
         }
+    }
+    // The declared rules are the constructors' own: they hold, so these succeed; a refusal is
+    // still the parameter's.
+    match r {
+        RestitutionLaw::Constant(alpha) => Constant::new(alpha)
+            .map(LawModel::Constant)
+            .map_err(|_| refusal(Param::Law(kind, 0), kind.params()[0].rule, alpha)),
         RestitutionLaw::ImpactSpeed { beta0, delta } => ImpactSpeed::new(beta0, delta)
             .map(LawModel::ImpactSpeed)
             .map_err(|e| match e {
-                ImpactSpeedError::Beta0 => negative(Param::Beta0, beta0),
-                ImpactSpeedError::Delta => negative(Param::Delta, delta),
+                ImpactSpeedError::Beta0 => negative(Param::Law(kind, 0), beta0),
+                ImpactSpeedError::Delta => negative(Param::Law(kind, 1), delta),
             }),
     }
 }

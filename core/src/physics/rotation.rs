@@ -216,7 +216,7 @@ pub(super) fn rotation(
         RoughError::DiskKappa => outside(Param::Inertia, r.kappa, "(0, 1] for disks"),
         // alpha passed the law's own rule, which is the map's.
         RoughError::Alpha => PhysicsError {
-            param: Param::Restitution,
+            param: Param::Law(super::LawKind::Constant, 0),
             problem: Problem::OutOfRange {
                 value: alpha,
                 range: crate::restitution::ALPHA_RANGE,

@@ -17,23 +17,15 @@ pub struct CollisionsSpec {
     pub c: Spanned<f64>,
     /// Restitution coefficient alpha in (0, 1] (a constant law).
     pub restitution: Option<Spanned<f64>>,
-    /// The impact-speed law BRS (9)-(10) instead of a constant: `{ beta0 = ..., delta = ... }`.
-    pub impact_speed_law: Option<Spanned<ImpactSpeedSpec>>,
+    /// The impact-speed law BRS (9)-(10) instead of a constant: `{ beta0 = ..., delta = ... }`,
+    /// its numbers by name (which keys it has is the core's declaration,
+    /// [`gdsmc_core::physics::LawKind::params`]), each with the table's place.
+    pub impact_speed_law: Option<Spanned<std::collections::BTreeMap<String, Spanned<f64>>>>,
     /// A mixture's restitution per species pair: a symmetric `S x S` matrix (default: the
     /// constant `restitution` for every pair).
     pub pair_restitution: Option<Spanned<Vec<Vec<f64>>>>,
     /// Every other key, a number: the kernel's own parameters (VHS's `lambda`), by name.
     pub numbers: std::collections::BTreeMap<String, Spanned<f64>>,
-}
-
-/// `collisions.impact_speed_law`: `1 - e = 2 beta0 |g . n|^delta` (BRS (9)-(10)).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ImpactSpeedSpec {
-    /// `beta_0 >= 0`.
-    pub beta0: f64,
-    /// `delta >= 0` (1/5: viscoelastic spheres).
-    pub delta: f64,
 }
 
 impl<'de> Deserialize<'de> for CollisionsSpec {
@@ -70,9 +62,14 @@ impl<'de> Deserialize<'de> for CollisionsSpec {
                 "c" => spec.c = Spanned::new(span, number(&key, value)?),
                 "restitution" => spec.restitution = Some(Spanned::new(span, number(&key, value)?)),
                 "impact_speed_law" => {
-                    let law = ImpactSpeedSpec::deserialize(value).map_err(|e| {
-                        D::Error::custom(format!("collisions.impact_speed_law: {e}"))
-                    })?;
+                    let law = std::collections::BTreeMap::<String, f64>::deserialize(value)
+                        .map_err(|e| {
+                            D::Error::custom(format!("collisions.impact_speed_law: {e}"))
+                        })?;
+                    let law = law
+                        .into_iter()
+                        .map(|(k, x)| (k, Spanned::new(span.clone(), x)))
+                        .collect();
                     spec.impact_speed_law = Some(Spanned::new(span, law));
                 }
                 "pair_restitution" => {

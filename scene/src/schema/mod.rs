@@ -7,7 +7,7 @@ use toml::Spanned;
 mod collisions;
 mod drive;
 mod scheme;
-pub use collisions::{CollisionsSpec, ImpactSpeedSpec};
+pub use collisions::CollisionsSpec;
 pub use drive::DriveSpec;
 pub use scheme::SchemeSpec;
 

@@ -4,8 +4,8 @@
 use super::Ctx;
 use super::declared::Table;
 use crate::error::Error;
-use crate::schema::{CollisionsSpec, ImpactSpeedSpec};
-use gdsmc_core::physics::{KernelChoice, Param, RestitutionLaw};
+use crate::schema::CollisionsSpec;
+use gdsmc_core::physics::{KernelChoice, LawKind, Param, RestitutionLaw};
 
 /// The keys of `[collisions]` with every kernel (a kernel's own follow them).
 pub const COMMON_KEYS: [&str; 6] = [
@@ -53,15 +53,31 @@ pub(super) fn collisions(
         // Every pair's coefficient is given (checked against the species by species.rs).
         (None, None) if c.pair_restitution.is_some() => RestitutionLaw::Constant(1.0),
         (Some(r), None) => {
-            ctx.holds(Param::Restitution, "collisions.restitution", r.span());
+            ctx.holds(
+                Param::Law(LawKind::Constant, 0),
+                "collisions.restitution",
+                r.span(),
+            );
             RestitutionLaw::Constant(*r.get_ref())
         }
         (None, Some(law)) => {
-            let key = "collisions.impact_speed_law";
-            ctx.holds(Param::Beta0, format!("{key}.beta0"), law.span());
-            ctx.holds(Param::Delta, format!("{key}.delta"), law.span());
-            let ImpactSpeedSpec { beta0, delta } = *law.get_ref();
-            RestitutionLaw::ImpactSpeed { beta0, delta }
+            // Its keys are its declaration's (`LawKind::params`).
+            let kind = LawKind::ImpactSpeed;
+            let table = Table {
+                name: "collisions.impact_speed_law",
+                numbers: law.get_ref(),
+                kind_span: law.span(),
+                kind_words: "collisions.impact_speed_law".into(),
+            };
+            let keys: Vec<&str> = kind.params().iter().map(|p| p.name).collect();
+            table.only(
+                ctx,
+                &keys,
+                std::iter::empty(),
+                "collisions.impact_speed_law",
+            )?;
+            let values = table.declared(ctx, kind.params(), |i| Param::Law(kind, i))?;
+            RestitutionLaw::new(kind, &values).expect("one value per declared parameter")
         }
         (Some(r), Some(_)) => {
             return ctx.invalid(
