@@ -27,8 +27,8 @@ mod runs;
 mod rw;
 
 pub use cells::{
-    Against, Blame, Cell, Check, Counts, POWER, POWER_PROBABILITY, ReadingScores, Row, Side, Table,
-    Verdict, percent, rounding,
+    Against, Blame, Cell, Check, Counts, Joint, POWER, POWER_PROBABILITY, ReadingScores, Row, Side,
+    Table, Verdict, percent, rounding,
 };
 pub use command::command;
 pub use figure::fmt;

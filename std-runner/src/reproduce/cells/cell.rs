@@ -159,7 +159,7 @@ impl Cell {
     }
 
     /// The least power of the cell's checks (the largest error one of them lets through with
-    /// probability [`POWER_PROBABILITY`], [`Check::reach`], relative to the row's effect or
+    /// probability [`super::POWER_PROBABILITY`], [`Check::reach`], relative to the row's effect or
     /// to the check's expected value), `None` for a cell only shown.
     pub fn detectable(&self) -> Option<f64> {
         self.checks

@@ -82,7 +82,7 @@ impl ReadingScores {
 }
 
 /// A table-wide test of one side's figures against their exact laws: the standard scores of
-/// every check of that side that has one ([`Check::z`]), taken together.
+/// every check of that side that has one ([`super::Check::z`]), taken together.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Joint {
     /// Whose figures.
@@ -101,7 +101,7 @@ pub struct Joint {
     /// (Sidak).
     pub p_max: f64,
     /// How many scores are 0: figures inside the bracket of their estimator's laws, where the
-    /// conservative score is 0 ([`Check::z`]), so that a small chi^2 says they are not off,
+    /// conservative score is 0 ([`super::Check::z`]), so that a small chi^2 says they are not off,
     /// not that they fit better than chance.
     pub zeros: usize,
 }

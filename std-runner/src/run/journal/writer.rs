@@ -84,7 +84,7 @@ impl Writer {
         self.append(&header_bytes(header))
     }
 
-    /// Keeps the first `len` bytes (what [`read`] found valid) and appends after them.
+    /// Keeps the first `len` bytes (what [`super::read`] found valid) and appends after them.
     pub fn keep(&mut self, len: u64) -> Result<(), Error> {
         let werr = |source| Error::Write {
             path: self.path.clone(),
