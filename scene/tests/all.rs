@@ -8,3 +8,18 @@ mod mixture_scenes;
 mod rough_scenes;
 mod scene_errors;
 mod sweep_table;
+
+/// The error of parsing the scene `text` as `bad.toml`.
+fn err(text: &str) -> String {
+    gdsmc_scene::parse(std::path::Path::new("bad.toml"), text)
+        .unwrap_err()
+        .to_string()
+}
+
+/// Asserts that the scene `text` is refused with an error containing `words` (the file, line
+/// and key where they are part of `words`).
+#[track_caller]
+fn refused(text: &str, words: &str) {
+    let e = err(text);
+    assert!(e.contains(words), "expected {words:?} in: {e}");
+}

@@ -4,14 +4,7 @@
 use gdsmc_scene::parse;
 use std::path::{Path, PathBuf};
 
-const BASE: &str = r#"
-[collisions]
-kernel = "maxwell"
-restitution = 0.5
-[observe]
-t_end = 1.0
-intervals = 4
-"#;
+const BASE: &str = include_str!("scenes/docs_base.toml");
 
 fn merge(base: &mut toml::Table, part: toml::Table) {
     for (k, v) in part {

@@ -5,30 +5,9 @@ use gdsmc_scene::parse;
 use gdsmc_scene::{Override, parse_with};
 use std::path::Path;
 
-const MIX: &str = r#"
-[particles]
-n = 10
-[[species]]
-name = "heavy"
-fraction = 1.0
-mass = 4.0
-[[species]]
-fraction = 2.0
-mass = 1.0
-diameter = 2.0
-[collisions]
-kernel = "hard-spheres"
-pair_restitution = [[0.9, 0.8], [0.8, 0.7]]
-[drive]
-kind = "white-noise"
-beta = 1.0
-[observe]
-t_end = 1.0
-"#;
+const MIX: &str = include_str!("scenes/mixture.toml");
 
-fn err(text: &str) -> String {
-    parse(Path::new("bad.toml"), text).unwrap_err().to_string()
-}
+use super::refused;
 
 #[test]
 fn a_mixture_scene_gives_its_species_and_pairs() {
@@ -52,40 +31,38 @@ fn a_mixture_scene_gives_its_species_and_pairs() {
 
 #[test]
 fn bad_species_values_name_line_and_key() {
-    let e = err(&MIX.replace("mass = 4.0", "mass = -4.0"));
-    assert!(
-        e.starts_with("bad.toml:7: `species[0].mass` must be > 0"),
-        "{e}"
+    refused(
+        &MIX.replace("mass = 4.0", "mass = -4.0"),
+        "bad.toml:7: `species[0].mass` must be > 0",
     );
-    let e = err(&MIX.replace("fraction = 2.0", "fraction = 0.0"));
-    assert!(
-        e.starts_with("bad.toml:9: `species[1].fraction` must be a finite number > 0"),
-        "{e}"
+    refused(
+        &MIX.replace("fraction = 2.0", "fraction = 0.0"),
+        "bad.toml:9: `species[1].fraction` must be a finite number > 0",
     );
-    let e = err(&MIX.replace("diameter = 2.0", "diameter = -1.0"));
-    assert!(
-        e.starts_with("bad.toml:11: `species[1].diameter` must be > 0"),
-        "{e}"
+    refused(
+        &MIX.replace("diameter = 2.0", "diameter = -1.0"),
+        "bad.toml:11: `species[1].diameter` must be > 0",
     );
-    let e = err(&MIX.replace("[0.8, 0.7]]", "[0.8, 1.7]]"));
-    assert!(
-        e.contains("`collisions.pair_restitution` must lie in (0, 1], got 1.7"),
-        "{e}"
+    refused(
+        &MIX.replace("[0.8, 0.7]]", "[0.8, 1.7]]"),
+        "`collisions.pair_restitution` must lie in (0, 1], got 1.7",
     );
-    let e = err(&MIX.replace("[0.8, 0.7]]", "[0.6, 0.7]]"));
-    assert!(
-        e.contains("`collisions.pair_restitution` must be symmetric"),
-        "{e}"
+    refused(
+        &MIX.replace("[0.8, 0.7]]", "[0.6, 0.7]]"),
+        "`collisions.pair_restitution` must be symmetric",
     );
-    let e = err(&MIX.replace("[[0.9, 0.8], [0.8, 0.7]]", "[[0.9, 0.8]]"));
-    assert!(e.contains("must be a 2 x 2 matrix"), "{e}");
-    let e = err(&MIX.replace("n = 10", "n = 1"));
-    assert!(
-        e.contains("`species[0].fraction` gives no particle at n = 1"),
-        "{e}"
+    refused(
+        &MIX.replace("[[0.9, 0.8], [0.8, 0.7]]", "[[0.9, 0.8]]"),
+        "must be a 2 x 2 matrix",
     );
-    let e = err(&MIX.replace("beta = 1.0", "beta = -1.0"));
-    assert!(e.contains("`drive.beta` must be >= 0"), "{e}");
+    refused(
+        &MIX.replace("n = 10", "n = 1"),
+        "`species[0].fraction` gives no particle at n = 1",
+    );
+    refused(
+        &MIX.replace("beta = 1.0", "beta = -1.0"),
+        "`drive.beta` must be >= 0",
+    );
     // The constant force (with a stepping scheme): one force per unit mass on every species.
     parse(
         Path::new("mix.toml"),
@@ -114,18 +91,16 @@ fn bad_species_values_name_line_and_key() {
     )
     .unwrap();
     assert!(s.physics().validate().is_ok());
-    let e = err(&MIX.replace("pair_restitution", "restitution = 0.5\npair_restitution"));
-    assert!(
-        e.contains("`collisions.restitution` and collisions.pair_restitution exclude each other"),
-        "{e}"
+    refused(
+        &MIX.replace("pair_restitution", "restitution = 0.5\npair_restitution"),
+        "`collisions.restitution` and collisions.pair_restitution exclude each other",
     );
-    let e = err(&MIX.replace(
-        "[particles]\nn = 10",
-        "[particles]\nn = 10\ninitial = { kind = \"maxwellian\", temperature = 2.0 }",
-    ));
-    assert!(
-        e.contains("`particles.initial` is not used with [[species]]"),
-        "{e}"
+    refused(
+        &MIX.replace(
+            "[particles]\nn = 10",
+            "[particles]\nn = 10\ninitial = { kind = \"maxwellian\", temperature = 2.0 }",
+        ),
+        "`particles.initial` is not used with [[species]]",
     );
 }
 

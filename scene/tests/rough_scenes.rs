@@ -5,26 +5,9 @@
 use gdsmc_scene::{Override, parse, parse_with};
 use std::path::Path;
 
-const ROUGH: &str = r#"
-[particles]
-n = 64
-[collisions]
-kernel = "hard-spheres"
-restitution = 0.9
-[rotation]
-tangential_restitution = 0.25
-inertia = 0.5
-temperature = 2.0
-[drive]
-kind = "white-noise"
-beta = 1.0
-[observe]
-t_end = 1.0
-"#;
+const ROUGH: &str = include_str!("scenes/rough.toml");
 
-fn err(text: &str) -> String {
-    parse(Path::new("bad.toml"), text).unwrap_err().to_string()
-}
+use super::{err, refused};
 
 #[test]
 fn a_rough_scene_gives_its_rotation() {
@@ -49,23 +32,20 @@ fn a_rough_scene_gives_its_rotation() {
 
 #[test]
 fn bad_rotation_values_name_line_and_key() {
-    let e = err(&ROUGH.replace(
-        "tangential_restitution = 0.25",
-        "tangential_restitution = -2.0",
-    ));
-    assert!(
-        e.starts_with("bad.toml:8: `rotation.tangential_restitution` must lie in [-1, 1], got -2"),
-        "{e}"
+    refused(
+        &ROUGH.replace(
+            "tangential_restitution = 0.25",
+            "tangential_restitution = -2.0",
+        ),
+        "bad.toml:8: `rotation.tangential_restitution` must lie in [-1, 1], got -2",
     );
-    let e = err(&ROUGH.replace("inertia = 0.5", "inertia = 0.8"));
-    assert!(
-        e.starts_with("bad.toml:9: `rotation.inertia` must lie in (0, 2/3], got 0.8"),
-        "{e}"
+    refused(
+        &ROUGH.replace("inertia = 0.5", "inertia = 0.8"),
+        "bad.toml:9: `rotation.inertia` must lie in (0, 2/3], got 0.8",
     );
-    let e = err(&ROUGH.replace("temperature = 2.0", "temperature = -2.0"));
-    assert!(
-        e.starts_with("bad.toml:10: `rotation.temperature` must be >= 0"),
-        "{e}"
+    refused(
+        &ROUGH.replace("temperature = 2.0", "temperature = -2.0"),
+        "bad.toml:10: `rotation.temperature` must be >= 0",
     );
     let e = err(&ROUGH.replace("[drive]", "[rotation.x]\n[drive]"));
     assert!(e.contains("unknown field") || e.contains("x"), "{e}");
@@ -79,10 +59,9 @@ fn what_a_rough_gas_cannot_take_is_refused_by_key() {
         "kind = \"gaussian\"\nzeta = 0.5",
     );
     assert!(parse(Path::new("ok.toml"), &thermostat).is_ok());
-    let e = err(&thermostat.replace("temperature = 2.0", "temperature = 2.0\nnoise = 0.5"));
-    assert!(
-        e.contains("`rotation.noise` takes only no drive or white noise on translation"),
-        "{e}"
+    refused(
+        &thermostat.replace("temperature = 2.0", "temperature = 2.0\nnoise = 0.5"),
+        "`rotation.noise` takes only no drive or white noise on translation",
     );
     // MS's time-stepped scheme takes rough hard spheres (core/tests/rough_gas.rs).
     let stepped = ROUGH.replace(
@@ -139,27 +118,7 @@ fn rotation_can_be_overridden() {
     );
 }
 
-const ROUGH_MIXTURE: &str = r#"
-[particles]
-n = 64
-[[species]]
-fraction = 0.5
-mass = 2.0
-[[species]]
-fraction = 0.5
-inertia = 0.2
-rotation_temperature = 3.0
-[collisions]
-kernel = "hard-spheres"
-restitution = 0.9
-[rotation]
-tangential_restitution = 0.25
-pair_tangential_restitution = [[0.25, 0.5], [0.5, -0.5]]
-[drive]
-kind = "none"
-[observe]
-t_end = 1.0
-"#;
+const ROUGH_MIXTURE: &str = include_str!("scenes/rough_mixture.toml");
 
 /// A rough mixture: each species' own rotation where it names one, the rotation's otherwise;
 /// the pairs' tangential restitution from the matrix; bad values named by line and key.
@@ -172,10 +131,9 @@ fn a_rough_mixture_gives_each_species_and_pair_its_rotation() {
     assert_eq!(ph.species[1].rotation_temperature, Some(3.0));
     assert_eq!(&ph.pair_tangential_restitution[..], &[0.25, 0.5, -0.5]);
     assert!(s.model().rotates());
-    let e = err(&ROUGH_MIXTURE.replace("inertia = 0.2", "inertia = 0.9"));
-    assert!(
-        e.starts_with("bad.toml:9: `species[1].inertia` must lie in (0, 2/3], got 0.9"),
-        "{e}"
+    refused(
+        &ROUGH_MIXTURE.replace("inertia = 0.2", "inertia = 0.9"),
+        "bad.toml:9: `species[1].inertia` must lie in (0, 2/3], got 0.9",
     );
     let e = err(&ROUGH_MIXTURE.replace("[[0.25, 0.5], [0.5, -0.5]]", "[[0.25, 2.0], [2.0, -0.5]]"));
     assert!(
@@ -184,8 +142,10 @@ fn a_rough_mixture_gives_each_species_and_pair_its_rotation() {
         ),
         "{e}"
     );
-    let e = err(&ROUGH_MIXTURE.replace("[[0.25, 0.5], [0.5, -0.5]]", "[[0.25, 0.5], [0.4, -0.5]]"));
-    assert!(e.contains("must be symmetric"), "{e}");
+    refused(
+        &ROUGH_MIXTURE.replace("[[0.25, 0.5], [0.5, -0.5]]", "[[0.25, 0.5], [0.4, -0.5]]"),
+        "must be symmetric",
+    );
     // Without [rotation] a species' rotation is refused at its key.
     let smooth = ROUGH_MIXTURE
         .replace("[rotation]\ntangential_restitution = 0.25\n", "")
@@ -193,9 +153,8 @@ fn a_rough_mixture_gives_each_species_and_pair_its_rotation() {
             "pair_tangential_restitution = [[0.25, 0.5], [0.5, -0.5]]\n",
             "",
         );
-    let e = err(&smooth);
-    assert!(
-        e.starts_with("bad.toml:9: `species[1].inertia` is only used with rough particles"),
-        "{e}"
+    refused(
+        &smooth,
+        "bad.toml:9: `species[1].inertia` is only used with rough particles",
     );
 }

@@ -5,15 +5,7 @@ use gdsmc_scene::vary::Combine;
 use gdsmc_scene::{parse, sweep_plan};
 use std::path::Path;
 
-const BASE: &str = r#"
-[particles]
-n = 64
-[collisions]
-kernel = "maxwell"
-restitution = 0.9
-[observe]
-t_end = 1.0
-"#;
+const BASE: &str = include_str!("scenes/sweep_base.toml");
 
 #[test]
 fn a_sweep_table_gives_its_plan() {
