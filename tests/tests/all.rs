@@ -2,6 +2,7 @@
 //! the engine instead of one per file: the test build is faster and its binaries a fraction
 //! of the disk). Run one file's tests with `cargo test --release -p gdsmc-validation --test all FILE::`.
 
+mod cited_references;
 mod combinations;
 mod convergence_in_n;
 mod cooling_and_thermostats;

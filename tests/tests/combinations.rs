@@ -18,6 +18,7 @@ use gdsmc_core::physics::{
     SpeciesChoice,
 };
 use gdsmc_core::rng::stream;
+use gdsmc_runner::reference::curves::registry::REFERENCES;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -192,6 +193,29 @@ fn outcome(ph: &Physics, what: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// GRW Example 3's scene given the physics `ph` (its 17 observation times over [0, 8], no
+/// steady window), or `None` where the scene's rules refuse it.
+fn scene_of(ph: &Physics) -> Option<gdsmc_runner::scene::Scene> {
+    let mut s = gdsmc_validation::shipped("grw-example3", N, 1, 1);
+    s.set_steady_from(None).expect("no steady window");
+    s.with_physics(|p| *p = ph.clone()).ok()?;
+    Some(s)
+}
+
+/// The numbers (from 1, in the registry's order) of the references whose curves the runner
+/// attaches to the physics `ph`.
+fn references_of(ph: &Physics) -> Vec<String> {
+    let Some(s) = scene_of(ph) else {
+        return Vec::new();
+    };
+    REFERENCES
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.holds.of(&s) && !(r.curves)(&s).is_empty())
+        .map(|(k, _)| (k + 1).to_string())
+        .collect()
+}
+
 /// The markdown of docs/combinations.md.
 fn generate() -> String {
     let mut reasons: BTreeMap<String, usize> = BTreeMap::new();
@@ -224,7 +248,12 @@ fn generate() -> String {
                                 let cell = match outcome(&ph, &what) {
                                     Ok(()) => {
                                         runs += 1;
-                                        "runs".to_string()
+                                        let refs = references_of(&ph);
+                                        if refs.is_empty() {
+                                            "runs".to_string()
+                                        } else {
+                                            format!("runs [{}]", refs.join(", "))
+                                        }
                                     }
                                     Err(r) => {
                                         let k = reasons.len() + 1;
@@ -267,6 +296,28 @@ fn generate() -> String {
     )
     .unwrap();
     out.push_str(&body);
+    writeln!(
+        out,
+        "\n## References\n\nThe references the runner attaches to a run (the numbers in \
+         brackets above: every reference whose declaration in \
+         std-runner/src/reference/curves/registry.rs holds for the combination and gives a \
+         curve, for GRW Example 3's scene given that physics), each with what it is to the \
+         run: the exact ensemble mean at n is judged by the verdict; a Boltzmann limit or an \
+         approximation is shown beside the run, not judged.\n"
+    )
+    .unwrap();
+    for (k, r) in REFERENCES.iter().enumerate() {
+        writeln!(
+            out,
+            "{}. {} ({}): {}; holds for {}.",
+            k + 1,
+            r.id,
+            r.kind.words(),
+            r.columns.join(", "),
+            r.holds.words()
+        )
+        .unwrap();
+    }
     writeln!(out, "\n## Refusals\n").unwrap();
     let mut by_number: Vec<(usize, String)> = reasons.into_iter().map(|(r, k)| (k, r)).collect();
     by_number.sort();
@@ -295,26 +346,40 @@ fn the_combination_table_is_the_codes() {
     );
 }
 
-/// A reference is a number or is absent, never NaN: every reference curve the runner attaches
+/// Every reference gives its curves wherever its declaration holds, only the columns and kind
+/// it declares, and a reference is a number or is absent, never NaN: every reference curve the runner attaches
 /// to every combination the core takes (the scene of GRW Example 3 given that physics, its 17
 /// observation times over [0, 8]) is finite at every time, and so are those of the elastic
 /// cases where a state search has nothing to relax (an elastic perfectly rough mixture, whose
 /// Maxwellian approximation was NaN, and an elastic smooth one).
 #[test]
 fn every_reference_of_every_combination_is_a_number() {
-    use gdsmc_runner::reference::curves::for_scene;
-    let mut base = gdsmc_validation::shipped("grw-example3", N, 1, 1);
-    base.set_steady_from(None).expect("no steady window");
     let mut checked = 0;
     let mut check = |ph: &Physics, what: &str| {
-        let mut s = base.clone();
-        if s.with_physics(|p| *p = ph.clone()).is_err() {
+        let Some(s) = scene_of(ph) else {
             return; // refused by the scene's rules (the table shows why)
-        }
-        for c in for_scene(&s) {
-            for &t in s.times() {
-                let v = (c.curve)(t);
-                assert!(v.is_finite(), "{what}: {} = {v} at t = {t}", c.name);
+        };
+        for r in REFERENCES.iter().filter(|r| r.holds.of(&s)) {
+            let curves = (r.curves)(&s);
+            // A reference gives its curves wherever its declaration holds (but for a
+            // condition its axes do not show, which its builder checks).
+            assert!(
+                !curves.is_empty() || r.holds.when.is_some(),
+                "{what}: {} is declared to hold but gives no curve",
+                r.id
+            );
+            for c in curves {
+                assert!(
+                    r.columns.contains(&c.name) && c.kind == r.kind,
+                    "{what}: {} gives {} ({:?}), not declared",
+                    r.id,
+                    c.name,
+                    c.kind
+                );
+                for &t in s.times() {
+                    let v = (c.curve)(t);
+                    assert!(v.is_finite(), "{what}: {} = {v} at t = {t}", c.name);
+                }
             }
         }
         checked += 1;

@@ -3,7 +3,7 @@
 //! 99.9% jointly: Bonferroni over the time points), and the same check refuses hard disks,
 //! whose cooling is not GRW (13)'s. The scene's references say which apply.
 
-use gdsmc_runner::reference::curves::{maxwell_temperature, sonine_cooling_a2};
+use gdsmc_runner::reference::curves::{for_scene, maxwell_temperature};
 use gdsmc_runner::run::columns::name;
 use gdsmc_stats::{dof, family};
 use gdsmc_validation::*;
@@ -41,6 +41,12 @@ fn maxwell_disks_follow_grw_13_exactly_at_finite_n() {
         outside >= st.times.len() - 2,
         "only {outside} times tell hard disks from Maxwell disks"
     );
+}
+
+/// The scene's `a2_sonine` reference (MS (5) in `d` dimensions), if attached.
+fn sonine_cooling_a2(s: &gdsmc_runner::scene::Scene) -> Option<f64> {
+    let c = for_scene(s).into_iter().find(|c| c.name == "a2_sonine")?;
+    Some((c.curve)(0.0))
 }
 
 #[test]

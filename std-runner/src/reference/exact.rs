@@ -141,7 +141,8 @@ impl HostMediumMaxwell {
     }
 }
 
-/// The Sonine estimates of the fourth cumulant `a2(alpha)` of MS, for `d = 3`.
+/// The Sonine estimates of the fourth cumulant `a2(alpha)` of MS: in `d` dimensions where MS
+/// give them so (`_in`), for `d = 3` otherwise.
 pub mod sonine {
     const D: f64 = 3.0;
 
@@ -159,23 +160,39 @@ pub mod sonine {
     }
     /// MS (10): the stochastic (white-noise) thermostat.
     pub fn a2_white_noise_10(a: f64) -> f64 {
+        a2_white_noise_10_in(D, a)
+    }
+    /// MS (10) in `d` dimensions (MS write it for any `d`; van Noije and Ernst 1998).
+    pub fn a2_white_noise_10_in(d: f64, a: f64) -> f64 {
         16.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
-            / (73.0 + 56.0 * D - 3.0 * a * (35.0 + 8.0 * D) + 30.0 * (1.0 - a) * a * a)
+            / (73.0 + 56.0 * d - 3.0 * a * (35.0 + 8.0 * d) + 30.0 * (1.0 - a) * a * a)
     }
     /// MS (32): the stochastic thermostat, the other linearization.
     pub fn a2_white_noise_32(a: f64) -> f64 {
+        a2_white_noise_32_in(D, a)
+    }
+    /// MS (32) in `d` dimensions.
+    pub fn a2_white_noise_32_in(d: f64, a: f64) -> f64 {
         4.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
-            / (19.0 + 14.0 * D - 3.0 * a * (9.0 + 2.0 * D) + 6.0 * (1.0 - a) * a * a)
+            / (19.0 + 14.0 * d - 3.0 * a * (9.0 + 2.0 * d) + 6.0 * (1.0 - a) * a * a)
     }
     /// MS (40): the Gaussian thermostat, better than (5) for alpha < 0.5.
     pub fn a2_gaussian_40(a: f64) -> f64 {
+        a2_gaussian_40_in(D, a)
+    }
+    /// MS (40) in `d` dimensions.
+    pub fn a2_gaussian_40_in(d: f64, a: f64) -> f64 {
         16.0 * (1.0 - a) * (1.0 - 2.0 * a * a)
-            / (25.0 + 24.0 * D - a * (57.0 - 8.0 * D) - 2.0 * (1.0 - a) * a * a)
+            / (25.0 + 24.0 * d - a * (57.0 - 8.0 * d) - 2.0 * (1.0 - a) * a * a)
     }
     /// MS (50): the constant-force thermostat (about 20% too small in magnitude, MS).
     pub fn a2_constant_force_50(a: f64) -> f64 {
+        a2_constant_force_50_in(D, a)
+    }
+    /// MS (50) in `d` dimensions.
+    pub fn a2_constant_force_50_in(d: f64, a: f64) -> f64 {
         -16.0 * (1.0 - a) * (1.0 + 2.0 * a * a)
-            / (63.0 + 40.0 * D - a * (95.0 + 8.0 * D) + 30.0 * (1.0 - a) * a * a)
+            / (63.0 + 40.0 * d - a * (95.0 + 8.0 * d) + 30.0 * (1.0 - a) * a * a)
     }
     /// MS (76): the constant-force thermostat, improved.
     pub fn a2_constant_force_76(a: f64) -> f64 {

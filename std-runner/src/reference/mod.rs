@@ -1,10 +1,13 @@
 //! The values a run is compared with: exact solutions ([`exact`]: GRW (13), BRS (14)-(17),
 //! MS's Sonine estimates and tail amplitudes; [`maxwell_cumulant`]: the Maxwell gas's `a2(t)`), the BRS hydrodynamic closures ([`hydro`]) and the integrator they are solved with ([`ode`]), and
-//! which of them apply to a scene, as curves beside the observables ([`curves`]), and the
-//! balance of the Gaussian thermostat ([`thermostat`]); [`impact_speed`]: the exact initial
+//! which of them apply to a scene, as curves beside the observables ([`curves`], each
+//! reference declared once in [`curves::registry`] with the physics it holds for); the energy
+//! balance of a smooth gas, Haff's law and its heated forms ([`balance`]), and the balance of
+//! the Gaussian thermostat ([`thermostat`]); [`impact_speed`]: the exact initial
 //! cooling rate under the impact-speed law; [`mutation`]: the hook that perturbs
 //! one exact reference on purpose, for the mutation check.
 
+pub mod balance;
 pub mod curves;
 pub mod exact;
 pub mod hydro;

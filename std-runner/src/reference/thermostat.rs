@@ -4,21 +4,17 @@
 //! balance (for the Maxwell kernel, whose cooling rate is proportional to `T`, there is no such
 //! point and `T` grows or decays exponentially).
 //!
-//! The cooling rate of a Maxwellian gas with the kernel `B = gamma C |u|^lambda` (GRW (1),
-//! (5)): a collision of the map GRW (3) changes the energy by `-(1 - alpha^2) |u|^2 / 4` (mean
-//! over `e`), so `dT/dt = -(pi/6) gamma C (1 - alpha^2) E|u|^(2 + lambda) = -kappa T^(1 +
-//! lambda/2)` with `u ~ N(0, 2T)` in R^3, `E|u|^p = 2^p Gamma((3 + p)/2) / Gamma(3/2) T^(p/2)`:
-//! `kappa = pi gamma C (1 - alpha^2)` for Maxwell molecules (GRW (13)'s rate) and
-//! `9.45 gamma C (1 - alpha^2)` for hard spheres. The non-Gaussian correction (for hard spheres
-//! `1 + 3 a2 / 16`, a fraction of a percent at MS's `a2`) is left out: the figures are
-//! estimates for choosing `zeta`, not references to judge a run by. They are those of spheres:
-//! disks (whose hard-disk impact law and moments of `u` in the plane give other constants) get
-//! none. A Maxwell gas needs none in any dimension: its exact `T` is GRW (13) times `e^{2 zeta
-//! t}` (`curves::maxwell_temperature`).
+//! The cooling rate is a Maxwellian gas's, `dT/dt = -kappa T^(1 + lambda/2)`
+//! ([`crate::reference::balance::cooling_constant`], in `d = 2` and 3): `kappa = pi gamma C
+//! (1 - alpha^2)` for Maxwell molecules (GRW (13)'s rate) and `9.45 gamma C (1 - alpha^2)` for
+//! hard spheres. The non-Gaussian correction (for hard particles `1 + 3 a2 / 16`, a fraction of
+//! a percent at MS's `a2`) is left out: the figures are estimates for choosing `zeta`, not
+//! references to judge a run by (the run's `T_bulk_sonine` curve has it). A Maxwell gas needs
+//! none in any dimension: its exact `T` is GRW (13) times `e^{2 zeta t}`
+//! (`curves::maxwell_temperature`).
 
-use crate::scene::{DriveKind, RestitutionLaw, Scene};
-use statrs::function::gamma::gamma;
-use std::f64::consts::PI;
+use crate::reference::balance::cooling_constant;
+use crate::scene::{DriveKind, KernelKind, RestitutionLaw, Scene};
 
 /// The Gaussian thermostat of a scene against the collisional cooling of its kernel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,12 +31,12 @@ pub struct GaussianBalance {
 }
 
 impl GaussianBalance {
-    /// The balance for a scene of spheres with a Gaussian thermostat and a constant
+    /// The balance for a scene of smooth particles with a Gaussian thermostat and a constant
     /// restitution coefficient below 1 (else none), from its initial temperature.
     pub fn of(scene: &Scene) -> Option<Self> {
-        // The balance is the smooth spheres' cooling rate (MS (12)); a rough gas's
-        // translation cools otherwise unless beta = -1.
-        if scene.dimension() != 3 || !scene.translation_is_smooth() {
+        // The balance is the smooth gas's cooling rate (MS (12)); a rough gas's translation
+        // cools otherwise unless beta = -1.
+        if !scene.translation_is_smooth() {
             return None;
         }
         let t0 = crate::run::initial_temperature(scene);
@@ -53,9 +49,8 @@ impl GaussianBalance {
             return None;
         };
         let (gc, lambda) = scene.physics().kernel.rate_constants();
-        let p = 2.0 + lambda;
-        let moment = 2f64.powf(p) * gamma((3.0 + p) / 2.0) / gamma(1.5);
-        let kappa = PI / 6.0 * gc * (1.0 - alpha * alpha) * moment;
+        let hard = scene.physics().kernel.kind() == KernelKind::HardSpheres;
+        let kappa = cooling_constant(scene.dimension(), hard, gc, lambda, alpha);
         (kappa > 0.0 && t0 > 0.0).then_some(GaussianBalance {
             zeta,
             kappa,
@@ -108,6 +103,7 @@ impl GaussianBalance {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::f64::consts::PI;
 
     fn scene(kernel: &str, zeta: f64, alpha: f64) -> Scene {
         let text = format!(

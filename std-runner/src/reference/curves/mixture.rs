@@ -3,7 +3,9 @@
 //! smooth and the rough mixture.
 
 use super::{Kind, ReferenceCurve};
+use crate::reference::mixture::MaxwellMixture;
 use crate::scene::{DriveChoice, DriveKind, Scene, SchemeChoice};
+use std::sync::Arc;
 
 /// Per species `k`: the exact finite-n mean of `T_sk` (Maxwell kernel, no drive), the
 /// Boltzmann limit of `E T_sk / E T_mix`, and the Maxwellian approximation of the cooling or
@@ -114,7 +116,7 @@ pub fn rough_mixture_approximation(
 
 /// A rough mixture's curves: each species' `T_sk_ratio_MA` and `theta_sk_MA` of the cooling
 /// or steady state.
-fn rough_mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
+pub(super) fn rough_mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some(ma) = rough_mixture_approximation(scene) else {
         return Vec::new();
     };
@@ -149,65 +151,101 @@ fn rough_mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     out
 }
 
-/// The reference curves of a mixture scene.
-pub(super) fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
-    use crate::reference::mixture::MaxwellMixture;
-    if scene.physics().rotation.is_some() {
-        return rough_mixture_curves(scene);
-    }
-    let mut out = Vec::new();
+/// Garzó and Dufty 1999's Maxwellian approximation of each species' `T_sk / T_mix` in the
+/// cooling (or steady) state (`T_sk_ratio_MA`).
+pub(super) fn garzo_dufty_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some(ma) = approximation(scene) else {
-        return out;
+        return Vec::new();
     };
-    let ph = &scene.physics();
-    let species = ph.species.len();
     let Some(approx) = ma.steady_ratios() else {
         eprintln!("Garzó and Dufty's Maxwellian approximation: not converged");
-        return out;
+        return Vec::new();
     };
     let cols = crate::run::columns::SPECIES_COLUMNS;
-    for s in 0..species {
-        let r = approx[s];
-        out.push(ReferenceCurve {
-            name: SPECIES_REFERENCES[s][2],
-            of: cols[s][1],
-            source: "Garzó and Dufty 1999, Maxwellian approximation of the cooling (or steady) state",
-            kind: Kind::Approximation,
-            curve: Box::new(move |_| r),
-        });
-    }
-    // The exact moments know no thermostat.
-    if ma.lambda == 0.0 && matches!(ph.drive, DriveChoice::None | DriveChoice::WhiteNoise(_)) {
-        let fractions = ma.fractions.clone();
-        let exact = std::sync::Arc::new(MaxwellMixture {
-            counts: ph.species.iter().map(|s| s.count).collect(),
-            masses: ma.masses,
-            kappa: ma.kappa,
-            alpha: ma.alpha,
-            temperatures: ph.species.iter().map(|s| s.temperature).collect(),
-            beta: ma.beta.clone(),
-        });
-        // The exact mean at this n of the scheme run: the splittings' own recursions.
-        let split = match ph.scheme {
-            SchemeChoice::Euler(dt) => Some((dt, false)),
-            SchemeChoice::Strang(dt) => Some((dt, true)),
-            _ => None,
-        };
-        let at_n = move |e: &MaxwellMixture, t: f64| match split {
-            Some((dt, strang)) => e.splitting_temperatures_at(t, dt, strang),
-            None => e.temperatures_at(t, false),
-        };
-        for s in 0..species {
+    (0..scene.physics().species.len())
+        .map(|s| {
+            let r = approx[s];
+            ReferenceCurve {
+                name: SPECIES_REFERENCES[s][2],
+                of: cols[s][1],
+                source: "Garzó and Dufty 1999, Maxwellian approximation of the cooling (or steady) state",
+                kind: Kind::Approximation,
+                curve: Box::new(move |_| r),
+            }
+        })
+        .collect()
+}
+
+/// The closed second moments of the Maxwell mixture (`reference/mixture`) and its mole
+/// fractions, for a scene the approximation's reading of holds for.
+fn maxwell_mixture(scene: &Scene) -> Option<(Arc<MaxwellMixture>, Vec<f64>)> {
+    let ma = approximation(scene)?;
+    let ph = &scene.physics();
+    let fractions = ma.fractions.clone();
+    let exact = Arc::new(MaxwellMixture {
+        counts: ph.species.iter().map(|s| s.count).collect(),
+        masses: ma.masses,
+        kappa: ma.kappa,
+        alpha: ma.alpha,
+        temperatures: ph.species.iter().map(|s| s.temperature).collect(),
+        beta: ma.beta,
+    });
+    Some((exact, fractions))
+}
+
+/// The exact ensemble means at this n of each species' `T_sk` and of `T_mix` (the no-splitting
+/// process's, or the splittings' own recursions).
+pub(super) fn maxwell_mixture_means(scene: &Scene) -> Vec<ReferenceCurve> {
+    let Some((exact, fractions)) = maxwell_mixture(scene) else {
+        return Vec::new();
+    };
+    let split = match scene.physics().scheme {
+        SchemeChoice::Euler(dt) => Some((dt, false)),
+        SchemeChoice::Strang(dt) => Some((dt, true)),
+        SchemeChoice::NoSplitting => None,
+        SchemeChoice::TimeStepped(_) => return Vec::new(),
+    };
+    let at_n = move |e: &MaxwellMixture, t: f64| match split {
+        Some((dt, strang)) => e.splitting_temperatures_at(t, dt, strang),
+        None => e.temperatures_at(t, false),
+    };
+    let cols = crate::run::columns::SPECIES_COLUMNS;
+    let source = "exact ensemble mean at this n (closed second moments of the Maxwell mixture)";
+    let mut out: Vec<ReferenceCurve> = (0..scene.physics().species.len())
+        .map(|s| {
             let e = exact.clone();
-            out.push(ReferenceCurve {
+            ReferenceCurve {
                 name: SPECIES_REFERENCES[s][0],
                 of: cols[s][0],
-                source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
+                source,
                 kind: Kind::MeanAtN,
                 curve: Box::new(move |t| at_n(&e, t)[s]),
-            });
+            }
+        })
+        .collect();
+    out.push(ReferenceCurve {
+        name: "T_mix_mean_n",
+        of: crate::run::columns::MIXTURE_TEMPERATURE,
+        source,
+        kind: Kind::MeanAtN,
+        curve: Box::new(move |t| {
+            let ts = at_n(&exact, t);
+            ts.iter().zip(&fractions).map(|(a, b)| a * b).sum()
+        }),
+    });
+    out
+}
+
+/// The Boltzmann limit of each species' `E T_sk / E T_mix` from the exact moments.
+pub(super) fn maxwell_mixture_limits(scene: &Scene) -> Vec<ReferenceCurve> {
+    let Some((exact, fractions)) = maxwell_mixture(scene) else {
+        return Vec::new();
+    };
+    let cols = crate::run::columns::SPECIES_COLUMNS;
+    (0..scene.physics().species.len())
+        .map(|s| {
             let (e, x) = (exact.clone(), fractions.clone());
-            out.push(ReferenceCurve {
+            ReferenceCurve {
                 name: SPECIES_REFERENCES[s][1],
                 of: cols[s][1],
                 source: "Boltzmann limit of the exact moments, E T_s / E T_mix",
@@ -217,19 +255,7 @@ pub(super) fn mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
                     let mix: f64 = ts.iter().zip(&x).map(|(a, b)| a * b).sum();
                     ts[s] / mix
                 }),
-            });
-        }
-        let (e, x) = (exact, fractions);
-        out.push(ReferenceCurve {
-            name: "T_mix_mean_n",
-            of: crate::run::columns::MIXTURE_TEMPERATURE,
-            source: "exact ensemble mean at this n (closed second moments of the Maxwell mixture)",
-            kind: Kind::MeanAtN,
-            curve: Box::new(move |t| {
-                let ts = at_n(&e, t);
-                ts.iter().zip(&x).map(|(a, b)| a * b).sum()
-            }),
-        });
-    }
-    out
+            }
+        })
+        .collect()
 }

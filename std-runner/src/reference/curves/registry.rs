@@ -1,0 +1,504 @@
+//! Every reference the runner knows, each declaring once the physics it holds for (particles,
+//! kernel, restitution law, drive, scheme, dimension), what it is to a run (exact mean at n,
+//! Boltzmann limit or approximation), the columns it gives and the words a scene's description
+//! cites it by. [`for_scene`] attaches every reference whose declaration holds for the scene;
+//! no reference is matched to a scene by hand. docs/combinations.md lists them per runnable
+//! combination, and the tests hold each builder to its declaration (every combination it
+//! declares gets its curves) and each shipped scene's description to what its run attaches.
+
+use super::{Kind, ReferenceCurve, mixture, rough, single, sonine};
+use crate::scene::Scene;
+use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind};
+
+/// Which particles a reference holds for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Particles {
+    /// One species without rotation.
+    Smooth,
+    /// One species whose translation is smooth: without rotation, or rough particles with
+    /// `beta = -1` (whose translation is the smooth gas's, bit for bit).
+    SmoothTranslation,
+    /// One species of rough particles.
+    Rough,
+    /// Two or more species without rotation.
+    SmoothMixture,
+    /// Two or more species of rough particles.
+    RoughMixture,
+}
+
+impl Particles {
+    /// Whether `scene`'s particles are these.
+    pub fn of(self, scene: &Scene) -> bool {
+        let ph = scene.physics();
+        let (mixture, rough) = (!ph.species.is_empty(), ph.rotation.is_some());
+        match self {
+            Particles::Smooth => !mixture && !rough,
+            Particles::SmoothTranslation => !mixture && scene.translation_is_smooth(),
+            Particles::Rough => !mixture && rough,
+            Particles::SmoothMixture => mixture && !rough,
+            Particles::RoughMixture => mixture && rough,
+        }
+    }
+
+    /// Its words in docs/combinations.md.
+    pub fn words(self) -> &'static str {
+        match self {
+            Particles::Smooth => "smooth, one species",
+            Particles::SmoothTranslation => {
+                "smooth translation (rough with beta = -1 too), one species"
+            }
+            Particles::Rough => "rough, one species",
+            Particles::SmoothMixture => "smooth mixture",
+            Particles::RoughMixture => "rough mixture",
+        }
+    }
+}
+
+/// The physics a reference holds for: each axis the values it holds at.
+#[derive(Clone, Copy, Debug)]
+pub struct Holds {
+    /// The particles.
+    pub particles: Particles,
+    /// The kernels.
+    pub kernels: &'static [KernelKind],
+    /// The restitution laws.
+    pub laws: &'static [LawKind],
+    /// The drives.
+    pub drives: &'static [DriveKind],
+    /// The schemes.
+    pub schemes: &'static [SchemeKind],
+    /// The dimensions.
+    pub dimensions: &'static [usize],
+    /// A condition on parameters the axes do not show (a host medium's kernel), in words; a
+    /// reference with one attaches where its builder finds it holds.
+    pub when: Option<&'static str>,
+}
+
+impl Holds {
+    /// Whether the axes hold for `scene` (its `when`, if any, is the builder's).
+    pub fn of(&self, scene: &Scene) -> bool {
+        let ph = scene.physics();
+        self.particles.of(scene)
+            && self.kernels.contains(&ph.kernel.kind())
+            && self.laws.contains(&ph.restitution.kind())
+            && self.drives.contains(&ph.drive.kind())
+            && self.schemes.contains(&ph.scheme.kind())
+            && self.dimensions.contains(&scene.dimension())
+    }
+
+    /// Its words: the particles, then each axis it restricts.
+    pub fn words(&self) -> String {
+        fn axis<T: Copy + PartialEq>(
+            of: &[T],
+            all: &[T],
+            name: impl Fn(T) -> &'static str,
+        ) -> Option<String> {
+            (of.len() < all.len())
+                .then(|| of.iter().map(|&k| name(k)).collect::<Vec<_>>().join(" or "))
+        }
+        let mut w = vec![self.particles.words().to_string()];
+        w.extend(axis(self.kernels, KernelKind::ALL, |k| k.scene_name()));
+        w.extend(axis(self.laws, LawKind::ALL, |k| match k {
+            LawKind::Constant => "constant restitution",
+            LawKind::ImpactSpeed => "impact-speed law",
+        }));
+        w.extend(axis(self.drives, DriveKind::ALL, |k| k.scene_name()));
+        w.extend(axis(self.schemes, SchemeKind::ALL, |k| k.scene_name()));
+        if self.dimensions.len() == 1 {
+            w.push(format!("d = {}", self.dimensions[0]));
+        }
+        w.extend(self.when.map(str::to_string));
+        w.join("; ")
+    }
+}
+
+/// One reference: its declaration and the builder of its curves.
+pub struct Reference {
+    /// Its short name: paper and equation, or the authors.
+    pub id: &'static str,
+    /// What it is to a run's means (every curve it gives is of this kind).
+    pub kind: Kind,
+    /// The physics it holds for.
+    pub holds: Holds,
+    /// The names of the curves it may give (columns beside the observables).
+    pub columns: &'static [&'static str],
+    /// Further words a scene's description cites it by (its id and columns cite it too).
+    pub cites: &'static [&'static str],
+    /// Its curves for a scene its declaration holds for.
+    pub curves: fn(&Scene) -> Vec<ReferenceCurve>,
+}
+
+impl Reference {
+    /// Whether `scene`'s description cites it: its id, a column or one of its words.
+    pub fn cited_by(&self, description: &str) -> bool {
+        std::iter::once(self.id)
+            .chain(self.columns.iter().copied())
+            .chain(self.cites.iter().copied())
+            .any(|w| cites(description, w))
+    }
+}
+
+/// Whether `text` holds `word` not inside a longer name (`T_exact` is not `T_bulk_exact`'s).
+pub fn cites(text: &str, word: &str) -> bool {
+    let name = |c: char| c.is_alphanumeric() || c == '_';
+    text.match_indices(word).any(|(i, _)| {
+        let before = text[..i].chars().next_back();
+        let after = text[i + word.len()..].chars().next();
+        !before.is_some_and(name) && !after.is_some_and(name)
+    })
+}
+
+const ANY_KERNEL: &[KernelKind] = KernelKind::ALL;
+const ANY_SCHEME: &[SchemeKind] = SchemeKind::ALL;
+const ANY_D: &[usize] = &[2, 3];
+const CONSTANT: &[LawKind] = &[LawKind::Constant];
+const MAXWELL: &[KernelKind] = &[KernelKind::Maxwell];
+const HARD: &[KernelKind] = &[KernelKind::HardSpheres];
+/// The drives that heat linearly (the core's [`gdsmc_core::drive::Heating`]).
+const LINEAR: &[DriveKind] = &[
+    DriveKind::None,
+    DriveKind::WhiteNoise,
+    DriveKind::Gaussian,
+    DriveKind::Langevin,
+];
+/// The schemes whose exact means at n are known: the no-splitting process and its splittings.
+const EXACT_MEANS: &[SchemeKind] = &[
+    SchemeKind::NoSplitting,
+    SchemeKind::Euler,
+    SchemeKind::Strang,
+];
+/// The cooling state: no drive, or the Gaussian thermostat (its steady state in reduced units,
+/// MS Section 2.2).
+const COOLING: &[DriveKind] = &[DriveKind::None, DriveKind::Gaussian];
+
+/// A one-species smooth gas's axes with the constant restitution of the Sonine estimates.
+const fn hard_smooth(drives: &'static [DriveKind], dimensions: &'static [usize]) -> Holds {
+    Holds {
+        particles: Particles::Smooth,
+        kernels: HARD,
+        laws: CONSTANT,
+        drives,
+        schemes: ANY_SCHEME,
+        dimensions,
+        when: None,
+    }
+}
+
+/// Every reference, in the order of their columns.
+pub const REFERENCES: &[Reference] = &[
+    Reference {
+        id: "Huthmann and Zippelius 1997",
+        kind: Kind::Approximation,
+        holds: Holds {
+            particles: Particles::Rough,
+            kernels: ANY_KERNEL,
+            laws: CONSTANT,
+            drives: LINEAR,
+            schemes: ANY_SCHEME,
+            dimensions: ANY_D,
+            when: None,
+        },
+        columns: &["T_bulk_MA", "T_rot_MA", "theta_MA"],
+        cites: &["Haff's law", "Luding et al. 1998", "Megías and Santos 2019"],
+        curves: rough::rough_curves,
+    },
+    Reference {
+        id: "Haff's law",
+        kind: Kind::Approximation,
+        holds: Holds {
+            particles: Particles::Smooth,
+            kernels: &[KernelKind::HardSpheres, KernelKind::Vhs],
+            laws: CONSTANT,
+            drives: LINEAR,
+            schemes: ANY_SCHEME,
+            dimensions: ANY_D,
+            when: None,
+        },
+        columns: &["T_bulk_MA", "T_bulk_sonine"],
+        cites: &[],
+        curves: sonine::curves,
+    },
+    Reference {
+        id: "MS (5)",
+        kind: Kind::Approximation,
+        holds: hard_smooth(COOLING, ANY_D),
+        columns: &["a2_sonine"],
+        cites: &["van Noije and Ernst"],
+        curves: sonine::a2_ms5,
+    },
+    Reference {
+        id: "MS (40)",
+        kind: Kind::Approximation,
+        holds: hard_smooth(COOLING, ANY_D),
+        columns: &["a2_ms40"],
+        cites: &[],
+        curves: sonine::a2_ms40,
+    },
+    Reference {
+        id: "MS (10)",
+        kind: Kind::Approximation,
+        holds: hard_smooth(&[DriveKind::WhiteNoise], ANY_D),
+        columns: &["a2_ms10"],
+        cites: &[],
+        curves: sonine::a2_ms10,
+    },
+    Reference {
+        id: "MS (32)",
+        kind: Kind::Approximation,
+        holds: hard_smooth(&[DriveKind::WhiteNoise], ANY_D),
+        columns: &["a2_ms32"],
+        cites: &[],
+        curves: sonine::a2_ms32,
+    },
+    Reference {
+        id: "MS (50)",
+        kind: Kind::Approximation,
+        holds: hard_smooth(&[DriveKind::ConstantForce], ANY_D),
+        columns: &["a2_ms50"],
+        cites: &[],
+        curves: sonine::a2_ms50,
+    },
+    Reference {
+        id: "MS (76)",
+        kind: Kind::Approximation,
+        holds: hard_smooth(&[DriveKind::ConstantForce], &[3]),
+        columns: &["a2_ms76"],
+        cites: &[],
+        curves: sonine::a2_ms76,
+    },
+    Reference {
+        id: "Bobylev, Carrillo and Gamba 2000",
+        kind: Kind::Limit,
+        holds: Holds {
+            particles: Particles::SmoothTranslation,
+            kernels: MAXWELL,
+            laws: CONSTANT,
+            drives: COOLING,
+            schemes: EXACT_MEANS,
+            dimensions: ANY_D,
+            when: None,
+        },
+        columns: &["a2_exact"],
+        cites: &["Santos 2003"],
+        curves: single::a2_exact,
+    },
+    Reference {
+        id: "BRS (21), (22)",
+        kind: Kind::Approximation,
+        holds: Holds {
+            particles: Particles::SmoothTranslation,
+            kernels: HARD,
+            laws: CONSTANT,
+            drives: &[DriveKind::HostMedium],
+            schemes: ANY_SCHEME,
+            dimensions: &[3],
+            when: Some("a hard-sphere host medium"),
+        },
+        columns: &[
+            "T_bulk_hydro21",
+            "V_y_hydro21",
+            "T_bulk_hydro22",
+            "V_y_hydro22",
+        ],
+        cites: &["BRS (21)", "BRS (22)"],
+        curves: single::brs_hydro,
+    },
+    Reference {
+        id: "BRS (14)",
+        kind: Kind::MeanAtN,
+        holds: Holds {
+            particles: Particles::SmoothTranslation,
+            kernels: MAXWELL,
+            laws: CONSTANT,
+            drives: &[DriveKind::HostMedium],
+            schemes: ANY_SCHEME,
+            dimensions: ANY_D,
+            when: Some("a Maxwell host medium"),
+        },
+        columns: &["V_x_exact", "V_y_exact", "V_z_exact"],
+        cites: &[],
+        curves: single::brs_bulk,
+    },
+    Reference {
+        id: "BRS (15)-(17)",
+        kind: Kind::Limit,
+        holds: Holds {
+            particles: Particles::SmoothTranslation,
+            kernels: MAXWELL,
+            laws: CONSTANT,
+            drives: &[DriveKind::HostMedium],
+            schemes: ANY_SCHEME,
+            dimensions: ANY_D,
+            when: Some("a Maxwell host medium"),
+        },
+        columns: &["T_bulk_exact"],
+        cites: &["BRS (15)", "BRS (37)-(38)"],
+        curves: single::brs_temperature,
+    },
+    Reference {
+        id: "GRW (13)-(14)",
+        kind: Kind::Limit,
+        holds: Holds {
+            particles: Particles::SmoothTranslation,
+            kernels: MAXWELL,
+            laws: CONSTANT,
+            drives: LINEAR,
+            schemes: ANY_SCHEME,
+            dimensions: ANY_D,
+            when: None,
+        },
+        columns: &["T_exact", "T_bulk_exact"],
+        cites: &["GRW (13)"],
+        curves: single::grw_limit,
+    },
+    Reference {
+        id: "GRW (13)-(14) at finite n",
+        kind: Kind::MeanAtN,
+        holds: Holds {
+            particles: Particles::SmoothTranslation,
+            kernels: MAXWELL,
+            laws: CONSTANT,
+            drives: LINEAR,
+            schemes: EXACT_MEANS,
+            dimensions: ANY_D,
+            when: None,
+        },
+        columns: &["T_mean_n", "T_bulk_mean_n"],
+        cites: &[],
+        curves: single::grw_mean_at_n,
+    },
+    Reference {
+        id: "Garzó and Dufty 1999",
+        kind: Kind::Approximation,
+        holds: Holds {
+            particles: Particles::SmoothMixture,
+            kernels: ANY_KERNEL,
+            laws: CONSTANT,
+            drives: &[DriveKind::None, DriveKind::WhiteNoise, DriveKind::Gaussian],
+            schemes: ANY_SCHEME,
+            dimensions: &[3],
+            when: None,
+        },
+        columns: &[
+            "T_s0_ratio_MA",
+            "T_s1_ratio_MA",
+            "T_s2_ratio_MA",
+            "T_s3_ratio_MA",
+        ],
+        cites: &[],
+        curves: mixture::garzo_dufty_curves,
+    },
+    Reference {
+        id: "Maxwell mixture's moments at finite n",
+        kind: Kind::MeanAtN,
+        holds: Holds {
+            particles: Particles::SmoothMixture,
+            kernels: MAXWELL,
+            laws: CONSTANT,
+            drives: &[DriveKind::None, DriveKind::WhiteNoise],
+            schemes: EXACT_MEANS,
+            dimensions: &[3],
+            when: None,
+        },
+        columns: &[
+            "T_s0_mean_n",
+            "T_s1_mean_n",
+            "T_s2_mean_n",
+            "T_s3_mean_n",
+            "T_mix_mean_n",
+        ],
+        cites: &[],
+        curves: mixture::maxwell_mixture_means,
+    },
+    Reference {
+        id: "Maxwell mixture's moments",
+        kind: Kind::Limit,
+        holds: Holds {
+            particles: Particles::SmoothMixture,
+            kernels: MAXWELL,
+            laws: CONSTANT,
+            drives: &[DriveKind::None, DriveKind::WhiteNoise],
+            schemes: ANY_SCHEME,
+            dimensions: &[3],
+            when: None,
+        },
+        columns: &[
+            "T_s0_ratio_limit",
+            "T_s1_ratio_limit",
+            "T_s2_ratio_limit",
+            "T_s3_ratio_limit",
+        ],
+        cites: &[],
+        curves: mixture::maxwell_mixture_limits,
+    },
+    Reference {
+        id: "Santos, Kremer and Garzó 2010",
+        kind: Kind::Approximation,
+        holds: Holds {
+            particles: Particles::RoughMixture,
+            kernels: ANY_KERNEL,
+            laws: CONSTANT,
+            drives: &[DriveKind::None, DriveKind::WhiteNoise],
+            schemes: ANY_SCHEME,
+            dimensions: ANY_D,
+            when: None,
+        },
+        columns: &[
+            "T_s0_ratio_MA",
+            "T_s1_ratio_MA",
+            "T_s2_ratio_MA",
+            "T_s3_ratio_MA",
+            "theta_s0_MA",
+            "theta_s1_MA",
+            "theta_s2_MA",
+            "theta_s3_MA",
+        ],
+        cites: &["Megías and Santos 2019"],
+        curves: mixture::rough_mixture_curves,
+    },
+];
+
+/// The references whose declaration holds for `scene` (their `when` aside).
+pub fn applicable(scene: &Scene) -> impl Iterator<Item = &'static Reference> + '_ {
+    REFERENCES.iter().filter(|r| r.holds.of(scene))
+}
+
+/// Every reference curve that applies to `scene`: the curves of each reference whose
+/// declaration holds for it.
+pub fn for_scene(scene: &Scene) -> Vec<ReferenceCurve> {
+    applicable(scene).flat_map(|r| (r.curves)(scene)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_citation_is_a_whole_name() {
+        assert!(cites("against MS (10), mu4", "MS (10)"));
+        assert!(!cites("T_bulk_exact here", "T_exact"));
+        assert!(!cites("MS (100)", "MS (10)"));
+        assert!(cites("the exact T_bulk_mean_n.", "T_bulk_mean_n"));
+        assert!(!cites("a2_sonine_x", "a2_sonine"));
+    }
+
+    #[test]
+    fn every_reference_is_declared_once() {
+        let mut ids: Vec<&str> = REFERENCES.iter().map(|r| r.id).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        assert_eq!(ids.len(), REFERENCES.len());
+        for r in REFERENCES {
+            for axis in [
+                r.holds.kernels.is_empty(),
+                r.holds.laws.is_empty(),
+                r.holds.drives.is_empty(),
+                r.holds.schemes.is_empty(),
+                r.holds.dimensions.is_empty(),
+                r.columns.is_empty(),
+            ] {
+                assert!(!axis, "{}: an empty axis holds for nothing", r.id);
+            }
+        }
+    }
+}
