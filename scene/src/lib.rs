@@ -79,6 +79,8 @@ pub struct Scene {
     steady_from: Option<usize>,
     /// Random pairs per observation for mu2, mu4 (0: off).
     collisional_pairs: u64,
+    /// What the time charts draw against.
+    time_axis: TimeAxis,
     /// Radial-shell histogram of `|v - V|` at the last observation, if asked.
     histogram: Option<Shells>,
     /// Reduced-speed histogram: shells of `c = |v - V| / sqrt(2 T_bulk)` up to `c_max` (its
@@ -97,6 +99,17 @@ pub struct Scene {
     species_fractions: Vec<f64>,
 }
 
+/// What a run's time charts draw against (`observe.time_axis`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum TimeAxis {
+    /// The scene's time `t`.
+    #[default]
+    Time,
+    /// Collisions per particle `s = 2 (collisions so far) / n`, the usual axis of
+    /// cooling-state studies (the `s` column).
+    Collisions,
+}
+
 impl PartialEq for Scene {
     /// Every field but the model, which is a function of the physics.
     fn eq(&self, o: &Self) -> bool {
@@ -109,6 +122,7 @@ impl PartialEq for Scene {
             times,
             steady_from,
             collisional_pairs,
+            time_axis,
             histogram,
             reduced_histogram,
             marginal_histogram,
@@ -123,14 +137,14 @@ impl PartialEq for Scene {
             physics,
             times,
             steady_from,
-            collisional_pairs,
+            (collisional_pairs, time_axis),
         ) == (
             &o.name,
             &o.description,
             &o.physics,
             &o.times,
             &o.steady_from,
-            &o.collisional_pairs,
+            (&o.collisional_pairs, &o.time_axis),
         ) && (
             histogram,
             reduced_histogram,
@@ -193,6 +207,11 @@ impl Scene {
     #[must_use]
     pub fn collisional_pairs(&self) -> u64 {
         self.collisional_pairs
+    }
+
+    /// What the time charts draw against (`observe.time_axis`).
+    pub fn time_axis(&self) -> TimeAxis {
+        self.time_axis
     }
 
     /// Radial-shell histogram of `|v - V|` at the last observation, if asked.

@@ -302,3 +302,56 @@ fn set_times_keeps_the_steady_windows_start_time() {
     s.set_times(vec![0.0, 0.1, 0.2, 0.8]).unwrap();
     assert_eq!(s.steady_from(), None, "one time in the window is no window");
 }
+
+#[test]
+fn log_spacing_gives_decades_at_equal_resolution() {
+    let text = GOOD.replace(
+        "t_end = 1.0",
+        "t_end = 1000.0\nintervals = 4\nspacing = \"log\"\nfirst = 1.0",
+    );
+    let s = parse(Path::new("log.toml"), &text).unwrap();
+    let t = s.times();
+    assert_eq!(t.len(), 5);
+    assert_eq!((t[0], t[4]), (0.0, 1000.0));
+    for (k, want) in [(1, 1.0), (2, 10.0), (3, 100.0)] {
+        assert!((t[k] - want).abs() < 1e-12 * want, "{t:?}");
+    }
+    // The default first observation is the linear grid's.
+    let text = GOOD.replace(
+        "t_end = 1.0",
+        "t_end = 8.0\nintervals = 8\nspacing = \"log\"",
+    );
+    let t = parse(Path::new("log.toml"), &text)
+        .unwrap()
+        .times()
+        .to_vec();
+    assert_eq!((t[1], t[8]), (1.0, 8.0));
+    assert!(t.windows(2).all(|w| w[1] > w[0]), "{t:?}");
+}
+
+#[test]
+fn spacing_and_first_are_checked() {
+    refused(
+        &GOOD.replace("t_end = 1.0", "t_end = 1.0\nspacing = \"logarithmic\""),
+        "bad.toml:12: `observe.spacing` must be \"linear\" or \"log\", got \"logarithmic\"",
+    );
+    // `first` is checked under either spacing, and a linear grid ignores it.
+    refused(
+        &GOOD.replace("t_end = 1.0", "t_end = 1.0\nfirst = -0.1"),
+        "bad.toml:12: `observe.first` must be > 0, got -0.1",
+    );
+    let linear = GOOD.replace("t_end = 1.0", "t_end = 1.0\nintervals = 4\nfirst = 0.1");
+    let t = parse(Path::new("l.toml"), &linear)
+        .unwrap()
+        .times()
+        .to_vec();
+    assert_eq!(t, [0.0, 0.25, 0.5, 0.75, 1.0]);
+    refused(
+        &GOOD.replace("t_end = 1.0", "t_end = 1.0\nspacing = \"log\"\nfirst = 2.0"),
+        "bad.toml:13: `observe.first` must be below t_end - t_start = 1, got 2",
+    );
+    refused(
+        &GOOD.replace("t_end = 1.0", "t_end = 1.0\nspacing = \"log\"\nfirst = 0.0"),
+        "bad.toml:13: `observe.first` must be > 0, got 0",
+    );
+}

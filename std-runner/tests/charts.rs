@@ -70,7 +70,14 @@ fn every_chart_of_every_shipped_scene_is_readable() {
         let reduced = gdsmc_runner::analysis::distribution::reduced(&s, &st);
         let marginal = gdsmc_runner::analysis::distribution::marginal(&st);
         let title = charts::title(&s, st.ensembles);
-        let all = charts::all(&title, &st, &refs, reduced.as_ref(), marginal.as_ref());
+        let all = charts::all(
+            &title,
+            &st,
+            s.time_axis(),
+            &refs,
+            reduced.as_ref(),
+            marginal.as_ref(),
+        );
         for &col in &st.names {
             assert!(
                 all.iter().any(|(stem, c)| stem == col && c.is_ok()),

@@ -76,6 +76,7 @@ fn reduced_distribution_of_an_elastic_gas_is_phi() {
             "collisions.restitution=1.0",
             "observe.t_end=4.0",
             "observe.intervals=8",
+            "observe.spacing=linear",
             "observe.steady_from=1.0",
             "reduced_histogram.shells=30",
             "reduced_histogram.radius=3.0",

@@ -137,6 +137,7 @@ fn cooling_gas_has_the_gaussian_thermostats_collisional_moments() {
     hcs_set.extend([
         "observe.t_end=20000",
         "observe.intervals=50",
+        "observe.spacing=linear",
         "observe.steady_from=2000",
     ]);
     let hcs = run(&shipped_set("hcs-hard-spheres", &hcs_set, 2048, 16, 1500));

@@ -89,6 +89,9 @@ pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::ne
                 "t_start",
                 "t_end",
                 "intervals",
+                "spacing",
+                "first",
+                "time_axis",
                 "collisional_pairs",
                 "steady_from",
             ],
@@ -110,7 +113,7 @@ pub static WORDS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
         .chain(DriveKind::ALL.iter().map(|k| k.scene_name()))
         .chain(SchemeKind::ALL.iter().map(|k| k.scene_name()))
         .collect();
-    words.extend(["maxwellian", "mixture", "", "MAXWELL", "hard_spheres"]);
+    words.extend(["maxwellian", "mixture", "", "MAXWELL", "hard_spheres", "linear", "log", "collisions", "time"]);
     words.dedup();
     words
 });

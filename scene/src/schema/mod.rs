@@ -309,9 +309,23 @@ pub struct ObserveSpec {
     pub t_start: Option<Spanned<f64>>,
     /// Final time (> t_start).
     pub t_end: Spanned<f64>,
-    /// Number of equal intervals between observations (>= 1). Default 32.
+    /// Number of intervals between observations (>= 1). Default 32.
     #[serde(default)]
     pub intervals: Option<Spanned<i64>>,
+    /// How the observation times are spaced: `"linear"` (equal intervals, the default) or
+    /// `"log"` (the start, then `intervals` times evenly spaced in `log(t - t_start)` from
+    /// `first` to `t_end`: decades of a cooling gas at equal resolution).
+    #[serde(default)]
+    pub spacing: Option<Spanned<String>>,
+    /// What the time charts draw against: `"time"` (the scene's time, the default) or
+    /// `"collisions"` (collisions per particle `s`, the usual axis of cooling-state studies).
+    #[serde(default)]
+    pub time_axis: Option<Spanned<String>>,
+    /// With `spacing = "log"`: the first observation after the start, as a time after
+    /// `t_start` (> 0, below `t_end - t_start`; checked, and ignored by the linear spacing).
+    /// Default `(t_end - t_start) / intervals`.
+    #[serde(default)]
+    pub first: Option<Spanned<f64>>,
     /// Collisional moments mu2, mu4 (MS (67)) from this many random pairs per observation
     /// (0 or absent: not computed).
     #[serde(default)]

@@ -193,6 +193,7 @@ impl SceneFile {
             times,
             steady_from: observe.0,
             collisional_pairs: observe.1,
+            time_axis: observe.2,
             histogram: histograms.0,
             reduced_histogram: histograms.1,
             marginal_histogram: histograms.2,

@@ -71,7 +71,8 @@ fn count(ctx: &Ctx<'_>, v: &Spanned<i64>, key: &str) -> Result<usize, Error> {
     }
 }
 
-/// The observation times `t_start + (t_end - t_start) k / intervals`, `k = 0..=intervals`.
+/// The observation times: `t_start + (t_end - t_start) k / intervals`, `k = 0..=intervals`, or
+/// with `spacing = "log"` the start and [`log_times`].
 pub(super) fn times(ctx: &Ctx<'_>, o: &ObserveSpec) -> Result<Vec<f64>, Error> {
     let t0 = match &o.t_start {
         Some(s) => {
@@ -109,18 +110,71 @@ pub(super) fn times(ctx: &Ctx<'_>, o: &ObserveSpec) -> Result<Vec<f64>, Error> {
         }
         None => 32,
     };
-    Ok((0..=k)
-        .map(|i| t0 + (t1 - t0) * i as f64 / k as f64)
-        .collect())
+    let span = t1 - t0;
+    let log = match &o.spacing {
+        None => false,
+        Some(sp) => match sp.get_ref().as_str() {
+            "linear" => false,
+            "log" => true,
+            other => {
+                return ctx.invalid(
+                    sp.span(),
+                    "observe.spacing",
+                    format!("must be \"linear\" or \"log\", got \"{other}\""),
+                );
+            }
+        },
+    };
+    // `first` is checked whatever the spacing and used by the log spacing (so that `--set
+    // observe.spacing=linear` can switch a log-spaced file back without removing it).
+    let first = match &o.first {
+        None => span / k as f64,
+        Some(f) => {
+            let x = positive(ctx, f, "observe.first")?;
+            if x >= span {
+                return ctx.invalid(
+                    f.span(),
+                    "observe.first",
+                    format!("must be below t_end - t_start = {span}, got {x}"),
+                );
+            }
+            x
+        }
+    };
+    Ok(if log {
+        log_times(t0, span, first, k)
+    } else {
+        (0..=k).map(|i| t0 + span * i as f64 / k as f64).collect()
+    })
 }
 
-/// The first steady-state observation (if asked) and the collisional pairs per observation.
+/// The start `t0`, then `k` times evenly spaced in `log(t - t0)` from `t0 + first` to
+/// `t0 + span` (the last exactly `t0 + span`; one time for `k = 1`).
+pub fn log_times(t0: f64, span: f64, first: f64, k: usize) -> Vec<f64> {
+    let mut out = vec![t0];
+    if k == 1 {
+        out.push(t0 + span);
+        return out;
+    }
+    let ratio = (span / first).ln();
+    out.extend((0..k).map(|i| {
+        if i + 1 == k {
+            t0 + span
+        } else {
+            t0 + first * (ratio * i as f64 / (k - 1) as f64).exp()
+        }
+    }));
+    out
+}
+
+/// The first steady-state observation (if asked), the collisional pairs per observation and
+/// the time charts' axis.
 pub(super) fn observe(
     ctx: &Ctx<'_>,
     o: &ObserveSpec,
     times: &[f64],
     physics: &Physics,
-) -> Result<(Option<usize>, u64), Error> {
+) -> Result<(Option<usize>, u64, crate::TimeAxis), Error> {
     let steady_from = match &o.steady_from {
         None => None,
         Some(sf) => match steady_index(times, *sf.get_ref()) {
@@ -146,7 +200,21 @@ pub(super) fn observe(
             why,
         );
     }
-    Ok((steady_from, pairs))
+    let axis = match &o.time_axis {
+        None => crate::TimeAxis::Time,
+        Some(a) => match a.get_ref().as_str() {
+            "time" => crate::TimeAxis::Time,
+            "collisions" => crate::TimeAxis::Collisions,
+            other => {
+                return ctx.invalid(
+                    a.span(),
+                    "observe.time_axis",
+                    format!("must be \"time\" or \"collisions\", got \"{other}\""),
+                );
+            }
+        },
+    };
+    Ok((steady_from, pairs, axis))
 }
 
 /// The rule of `observe.collisional_pairs` against the physics: what is wrong, or `None`.

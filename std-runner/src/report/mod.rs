@@ -129,7 +129,14 @@ pub fn write_all(
     let reduced = crate::analysis::distribution::reduced(scene, stats);
     let marginal = crate::analysis::distribution::marginal(stats);
     let title = charts::title(scene, stats.ensembles);
-    let all = charts::all(&title, stats, refs, reduced.as_ref(), marginal.as_ref());
+    let all = charts::all(
+        &title,
+        stats,
+        scene.time_axis(),
+        refs,
+        reduced.as_ref(),
+        marginal.as_ref(),
+    );
     charts::write(dir, &all, formats)?;
     Ok(())
 }

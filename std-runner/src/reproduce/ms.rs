@@ -260,6 +260,7 @@ fn cooling_state(
         format!("observe.collisional_pairs={pairs}"),
         format!("observe.t_end={t_end}"),
         "observe.intervals=50".to_string(),
+        "observe.spacing=linear".to_string(),
         format!("observe.steady_from={}", 0.2 * t_end),
     ];
     let s = scene("hcs-hard-spheres", &set, n, m, seed);

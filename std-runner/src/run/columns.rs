@@ -41,6 +41,8 @@ pub mod name {
     pub const MU2: &str = "mu2";
     /// `mu4`: collisional moment mu_4 (MS (52)).
     pub const MU4: &str = "mu4";
+    /// `s`: collisions per particle so far, `2 (grain-grain collisions) / n`.
+    pub const S: &str = "s";
     /// `T_rot`: rotational temperature of a rough gas (`ROUGH_COLUMNS`).
     pub const T_ROT: &str = "T_rot";
     /// `theta`: rotational-to-translational temperature ratio (`ROUGH_COLUMNS`).
@@ -233,7 +235,8 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
     v
 }
 
-/// The column names of a scene's observables.csv, in order: [`COLUMNS`], then `mu2`, `mu4`
+/// The column names of a scene's observables.csv, in order: [`COLUMNS`], `s` (collisions per
+/// particle), then `mu2`, `mu4`
 /// (MS (67)) when `observe.collisional_pairs` is set, then a rough gas's [`ROUGH_COLUMNS`],
 /// then a mixture's columns
 /// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species; for rough particles
@@ -241,6 +244,7 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
 /// gas's; and with `observe.collisional_pairs` the [`COOLING_COLUMNS`] instead of `mu2`, `mu4`).
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
+    v.push(name::S);
     let species = scene.physics().species.len();
     if scene.collisional_pairs() > 0 && species == 0 {
         v.extend(COLLISIONAL);
@@ -270,6 +274,9 @@ pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
 /// The time axis' label: name, symbol and unit.
 pub const TIME_LABEL: &str = "time t (scene units)";
 
+/// The label of the collisions-per-particle axis (`observe.time_axis = "collisions"`).
+pub const COLLISIONS_LABEL: &str = "collisions per particle s (dimensionless)";
+
 /// The axis label of column `name`: the quantity in words, its symbol and its unit, for a
 /// reader who has not seen this file. Quantities with a dimension are in the scene's units
 /// (particle mass 1, or the species' masses as given; the kernel's `gamma` and `C` fix the
@@ -298,6 +305,10 @@ pub fn axis_label(name: &str) -> String {
             "(of scene units)",
         ),
         name::CRIT => ("distance from the Maxwellian, crit (RW (29))", NONE),
+        name::S => (
+            "collisions per particle s = 2 (collisions so far) / n",
+            NONE,
+        ),
         name::MU2 => ("collisional moment mu2 (MS (44))", NONE),
         name::MU4 => ("collisional moment mu4 (MS (52))", NONE),
         name::T_ROT => ("rotational temperature T_rot", DIM),
@@ -352,6 +363,7 @@ mod label_tests {
     #[test]
     fn every_column_has_a_label_in_words() {
         let mut all: Vec<&str> = COLUMNS.iter().map(|c| c.name).collect();
+        all.push(name::S);
         all.extend(COLLISIONAL);
         all.extend(ROUGH_COLUMNS);
         all.extend([MIXTURE_TEMPERATURE, ROUGH_MIXTURE_TEMPERATURE]);

@@ -108,7 +108,7 @@ fn observe<E: EventLoop>(
     p: &mut Particles<'_>,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Result<(Vec<f64>, Counts), EnsembleError> {
-    let mut out = Vec::with_capacity(scene.times().len() * (COLUMNS.len() + 2) + 1);
+    let mut out = Vec::with_capacity(scene.times().len() * (COLUMNS.len() + 3) + 1);
     // Diagnostics draw from their own stream, so they never change the trajectory.
     let mut diag = rng.clone();
     diag.long_jump();
@@ -162,6 +162,7 @@ fn observe<E: EventLoop>(
             }
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
+        out.push(2.0 * engine.counts().collisions as f64 / p.len() as f64);
         // The scene allows collisional pairs with a constant restitution law only.
         if let (true, Some((bulk, t_bulk)), Some(alpha), true) = (
             scene.collisional_pairs() > 0,

@@ -24,9 +24,9 @@ fn state_a2(scene: &Scene, alpha: f64) -> Option<(f64, &'static str)> {
     }
 }
 
-/// Haff's law and its heated forms for `T_bulk`: `T_bulk_MA` with a Maxwellian's cooling rate,
-/// and for hard particles `T_bulk_sonine` with the first Sonine correction `1 + 3 a2/16` at the
-/// state's `a2` ([`state_a2`]).
+/// Haff's law and its heated forms for `T_bulk`: for hard particles `T_bulk_sonine` with the
+/// first Sonine correction `1 + 3 a2/16` at the state's `a2` ([`state_a2`]), the better of the
+/// two and so the first; `T_bulk_MA` with a Maxwellian's cooling rate.
 pub(super) fn curves(scene: &Scene) -> Vec<ReferenceCurve> {
     let ph = scene.physics();
     let (Some(alpha), Some(heating)) = (ph.restitution.constant(), scene.model().heating()) else {
@@ -57,11 +57,6 @@ pub(super) fn curves(scene: &Scene) -> Vec<ReferenceCurve> {
         }
         Err(e) => eprintln!("{source}: not integrated ({e})"),
     };
-    push(
-        "T_bulk_MA",
-        "Haff's law: the energy balance at a Maxwellian's cooling rate, the drive's heating added (reference/balance.rs); an approximation",
-        balance,
-    );
     if let Some((a2, _)) = hard.then(|| state_a2(scene, alpha)).flatten() {
         push(
             "T_bulk_sonine",
@@ -72,6 +67,11 @@ pub(super) fn curves(scene: &Scene) -> Vec<ReferenceCurve> {
             },
         );
     }
+    push(
+        "T_bulk_MA",
+        "Haff's law: the energy balance at a Maxwellian's cooling rate, the drive's heating added (reference/balance.rs); an approximation",
+        balance,
+    );
     out
 }
 

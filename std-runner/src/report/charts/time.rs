@@ -7,9 +7,11 @@
 use super::frame::{
     BAND_ALPHA, Chart, Entry, Frame, Geometry, LINE_WIDTH, Layer, Swatch, plot_rect,
 };
-use crate::reference::curves::ReferenceCurve;
+use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
-use crate::run::columns::{TIME_LABEL, axis_label};
+use crate::run::columns::name::S;
+use crate::run::columns::{COLLISIONS_LABEL, TIME_LABEL, axis_label};
+use crate::scene::TimeAxis;
 use plotters::prelude::*;
 
 /// Colours and dashes of the reference curves, in order: each dash its own, each colour's
@@ -26,31 +28,112 @@ const BAND_TEXT: &str = "99.9% confidence band of the mean";
 const THIN_BAND_TEXT: &str = "99.9% band: thinner than the line (see the residuals)";
 
 /// The reference the residual panel measures against: the exact ensemble mean at this n when
-/// there is one (it is what the mean estimates), else the first.
+/// there is one (it is what the mean estimates), else a Boltzmann limit, else the first
+/// approximation (the registry lists the better of a reference's curves first).
 fn residual_reference<'a>(refs: &[&'a ReferenceCurve]) -> Option<&'a ReferenceCurve> {
-    refs.iter()
-        .find(|r| r.name.ends_with("_mean_n"))
-        .or(refs.first())
+    [Kind::MeanAtN, Kind::Limit, Kind::Approximation]
+        .iter()
+        .find_map(|k| refs.iter().find(|r| r.kind == *k))
         .copied()
 }
 
-/// One observable's chart (column `col`) with the reference curves `refs`.
+/// Whether the observation times call for a log time axis: their steps grow tenfold or more
+/// from the first to the last (`observe.spacing = "log"`), so a linear axis would squeeze the
+/// early decades into a sliver.
+pub fn log_time(t: &[f64]) -> bool {
+    let positive: Vec<f64> = t.iter().copied().filter(|&x| x > 0.0).collect();
+    match positive.as_slice() {
+        [a, b, .., y, z] => (z - y) > 10.0 * (b - a) && z / a >= 100.0,
+        _ => false,
+    }
+}
+
+/// Whether values in `[lo, hi]` call for a log axis: all positive over three decades or more.
+pub fn log_values(lo: f64, hi: f64) -> bool {
+    lo > 0.0 && hi.is_finite() && hi / lo >= 1e3
+}
+
+/// An axis, linear or decimal-logarithmic: where a value is drawn and how a tick is labelled.
+#[derive(Clone, Copy)]
+struct Scale {
+    log: bool,
+}
+
+impl Scale {
+    /// The drawn coordinate of `v` (NaN for a value a log axis cannot show).
+    fn at(self, v: f64) -> f64 {
+        if !self.log {
+            v
+        } else if v > 0.0 {
+            v.log10()
+        } else {
+            f64::NAN
+        }
+    }
+
+    /// The value a drawn coordinate stands for, as a tick label.
+    fn label(self, c: f64) -> String {
+        if !self.log {
+            return format!("{}", (c * 1e6).round() / 1e6);
+        }
+        // Decades only: a tick between them stays a grid line without words.
+        if (c - c.round()).abs() < 1e-9 {
+            format!("1e{}", c.round())
+        } else {
+            String::new()
+        }
+    }
+
+    /// An axis description with the scale named when it is logarithmic.
+    fn describe(self, label: &str) -> String {
+        if self.log && !label.is_empty() {
+            format!("{label} (log scale)")
+        } else {
+            label.to_string()
+        }
+    }
+}
+
+/// One observable's chart (column `col`) with the reference curves `refs`, against time or
+/// collisions per particle (`axis`).
 pub fn chart(
     stats: &RunStats,
+    axis: TimeAxis,
     col: usize,
     title: &str,
     refs: &[&ReferenceCurve],
 ) -> Result<Chart, String> {
     let name = stats.names[col];
-    let t = &stats.times;
-    let pts: Vec<(f64, f64, f64)> = (0..t.len())
-        .map(|i| (t[i], stats.mean(i, col), stats.ci(i, col)))
-        .filter(|p| p.1.is_finite())
+    // The abscissa of each observation: its time, or the mean collisions per particle there.
+    let by_collisions = axis == TimeAxis::Collisions;
+    let s_col = stats.names.iter().position(|&n| n == S);
+    let abscissa: Vec<f64> = match (by_collisions, s_col) {
+        (true, Some(sc)) => (0..stats.times.len()).map(|i| stats.mean(i, sc)).collect(),
+        _ => stats.times.clone(),
+    };
+    let by_collisions = by_collisions && s_col.is_some();
+    let x_words = if by_collisions {
+        COLLISIONS_LABEL
+    } else {
+        TIME_LABEL
+    };
+    let xs = Scale {
+        log: log_time(&abscissa),
+    };
+    // `(x, mean, half-width, t)` of each observation with a finite mean (a log axis shows the
+    // positive abscissae).
+    let pts: Vec<(f64, f64, f64, f64)> = (0..abscissa.len())
+        .map(|i| {
+            let (x, t) = (abscissa[i], stats.times[i]);
+            (x, stats.mean(i, col), stats.ci(i, col), t)
+        })
+        .filter(|p| p.1.is_finite() && (!xs.log || p.0 > 0.0))
         .collect();
+    let t: Vec<f64> = pts.iter().map(|p| p.3).collect();
     if pts.is_empty() {
         return Err("no finite values to draw".into());
     }
-    let ci = |p: &(f64, f64, f64)| if p.2.is_finite() { p.2 } else { 0.0 };
+    let ci = |p: &(f64, f64, f64, f64)| if p.2.is_finite() { p.2 } else { 0.0 };
     let mut lo = pts
         .iter()
         .map(|p| p.1 - ci(p))
@@ -60,7 +143,7 @@ pub fn chart(
         .map(|p| p.1 + ci(p))
         .fold(f64::NEG_INFINITY, f64::max);
     for r in refs {
-        for &x in t {
+        for &x in &t {
             let y = (r.curve)(x);
             if y.is_finite() {
                 lo = lo.min(y);
@@ -68,17 +151,40 @@ pub fn chart(
             }
         }
     }
+    // A log value axis where the means and the references span three decades or more (the
+    // band's lower edge may reach 0: it is cut a decade below the lowest line).
+    let lines = pts.iter().map(|p| p.1).chain(refs.iter().flat_map(|r| {
+        t.iter()
+            .map(|&x| (r.curve)(x))
+            .filter(|y| y.is_finite())
+            .collect::<Vec<_>>()
+    }));
+    let (line_lo, line_hi) = lines.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
+        (a.min(y), b.max(y))
+    });
+    let ys = Scale {
+        log: log_values(line_lo, line_hi),
+    };
+    let (lo, hi) = if ys.log {
+        (ys.at(lo.max(line_lo / 10.0)), ys.at(hi))
+    } else {
+        (lo, hi)
+    };
     let pad = if hi > lo {
         0.05 * (hi - lo)
     } else {
         0.5 * lo.abs().max(1e-300)
     };
-    let (t0, t1) = (t[0], t[t.len() - 1].max(t[0] + 1e-300));
+    let (x_first, x_last) = (pts[0].0, pts[pts.len() - 1].0);
+    let (t0, t1) = (xs.at(x_first), xs.at(x_last).max(xs.at(x_first) + 1e-300));
+    // The drawn point of a time and a value, and a value clamped into the axis.
+    let y_floor = lo - pad;
+    let at = |x: f64, y: f64| (xs.at(x), ys.at(y).max(y_floor));
     let residual = residual_reference(refs).and_then(|r| {
         let rs: Vec<(f64, f64)> = pts
             .iter()
             .filter(|p| p.2.is_finite() && p.2 > 0.0)
-            .map(|p| (p.0, (p.1 - (r.curve)(p.0)) / p.2))
+            .map(|p| (xs.at(p.0), (p.1 - (r.curve)(p.3)) / p.2))
             .filter(|p| p.1.is_finite())
             .collect();
         (!rs.is_empty()).then_some((r, rs))
@@ -131,9 +237,13 @@ pub fn chart(
             .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
             .map_err(|e| e.to_string())?;
         let mut mesh = c.configure_mesh();
+        let y_label = ys.describe(&y_label);
         mesh.y_desc(y_label.as_str());
-        let x_label = if lower.is_none() { TIME_LABEL } else { "" };
-        mesh.x_desc(x_label);
+        let x_label = xs.describe(if lower.is_none() { x_words } else { "" });
+        let (xf, yf) = (move |v: &f64| xs.label(*v), move |v: &f64| ys.label(*v));
+        mesh.x_desc(x_label.as_str())
+            .x_label_formatter(&xf)
+            .y_label_formatter(&yf);
         mesh.draw().map_err(|e| e.to_string())?;
         geometry.axes.push((x_label.to_string(), y_label.clone()));
         let (xr, yr) = c.plotting_area().get_pixel_range();
@@ -143,12 +253,22 @@ pub fn chart(
         let mut ref_entries = Vec::new();
         for (k, r) in refs.iter().enumerate() {
             let (color, dash, gap) = REF_STYLES[k % REF_STYLES.len()];
-            let n = 400;
-            let line: Vec<(f64, f64)> = (0..=n)
-                .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
-                .map(|x| (x, (r.curve)(x)))
-                .filter(|p| p.1.is_finite())
-                .collect();
+            // Evenly spaced on a time axis (the curve is a function of time); through the
+            // observations on a collisions axis (their mean s is where each time lies).
+            let line: Vec<(f64, f64)> = if by_collisions {
+                pts.iter()
+                    .map(|p| (xs.at(p.0), ys.at((r.curve)(p.3))))
+                    .filter(|p| p.1.is_finite())
+                    .collect()
+            } else {
+                let n = 400;
+                let time = |c: f64| if xs.log { 10f64.powf(c) } else { c };
+                (0..=n)
+                    .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
+                    .map(|c| (c, ys.at((r.curve)(time(c)))))
+                    .filter(|p| p.1.is_finite())
+                    .collect()
+            };
             c.draw_series(DashedLineSeries::new(
                 line,
                 dash as i32,
@@ -167,7 +287,7 @@ pub fn chart(
             ));
         }
         c.draw_series(LineSeries::new(
-            pts.iter().map(|p| (p.0, p.1)),
+            pts.iter().map(|p| at(p.0, p.1)),
             BLUE.stroke_width(LINE_WIDTH),
         ))
         .map_err(|e| e.to_string())?;
@@ -178,19 +298,19 @@ pub fn chart(
         });
         geometry
             .data
-            .extend(pts.iter().map(|p| c.backend_coord(&(p.0, p.1))));
+            .extend(pts.iter().map(|p| c.backend_coord(&at(p.0, p.1))));
         // The band is drawn where it can be seen: its tallest extent in pixels above the
         // line's width.
         let px_per_unit = (yr.end - yr.start) as f64 / (hi + pad - (lo - pad));
         let band_px = pts
             .iter()
-            .map(|p| 2.0 * ci(p) * px_per_unit)
+            .map(|p| (at(p.0, p.1 + ci(p)).1 - at(p.0, p.1 - ci(p)).1) * px_per_unit)
             .fold(0.0, f64::max);
         if band_px > (LINE_WIDTH + 1) as f64 {
             let band: Vec<(f64, f64)> = pts
                 .iter()
-                .map(|p| (p.0, p.1 + ci(p)))
-                .chain(pts.iter().rev().map(|p| (p.0, p.1 - ci(p))))
+                .map(|p| at(p.0, p.1 + ci(p)))
+                .chain(pts.iter().rev().map(|p| at(p.0, p.1 - ci(p))))
                 .collect();
             geometry
                 .data
@@ -216,13 +336,16 @@ pub fn chart(
                 .build_cartesian_2d(t0..t1, -top..top)
                 .map_err(|e| e.to_string())?;
             let y_label = format!("({name} - {}) / half-width", r.name);
+            let x_label = xs.describe(x_words);
+            let xf = move |v: &f64| xs.label(*v);
             d.configure_mesh()
-                .x_desc(TIME_LABEL)
+                .x_desc(x_label.as_str())
+                .x_label_formatter(&xf)
                 .y_desc(y_label.as_str())
                 .y_labels(5)
                 .draw()
                 .map_err(|e| e.to_string())?;
-            geometry.axes.push((TIME_LABEL.to_string(), y_label));
+            geometry.axes.push((x_label, y_label));
             let (xr, yr) = d.plotting_area().get_pixel_range();
             geometry.plots.push(plot_rect(xr, yr));
             for y in [-1.0, 1.0] {
@@ -257,12 +380,13 @@ pub fn chart(
 pub fn charts(
     title: &str,
     stats: &RunStats,
+    axis: TimeAxis,
     refs: &[ReferenceCurve],
 ) -> Vec<(String, Result<Chart, String>)> {
     let mut out = Vec::new();
     for (col, &name) in stats.names.iter().enumerate() {
         let these: Vec<&ReferenceCurve> = refs.iter().filter(|r| r.of == name).collect();
-        out.push((name.to_string(), chart(stats, col, title, &these)));
+        out.push((name.to_string(), chart(stats, axis, col, title, &these)));
     }
     out
 }
