@@ -73,7 +73,7 @@ fn every_chart_of_every_shipped_scene_is_readable() {
         let all = charts::all(
             &title,
             &st,
-            s.time_axis(),
+            (s.time_axis(), s.species_names()),
             &refs,
             reduced.as_ref(),
             marginal.as_ref(),

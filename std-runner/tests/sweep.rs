@@ -303,7 +303,7 @@ fn the_command_takes_the_scenes_sweep_table() {
         18,
         "{a2}"
     );
-    assert!(a2.contains("deviation from a2_sonine"), "{a2}");
+    assert!(a2.contains("mean - a2_sonine | in half-widths"), "{a2}");
 }
 
 /// The sweep's verdict checks every exact mean at n over the points together: the heated

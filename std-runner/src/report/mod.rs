@@ -132,7 +132,7 @@ pub fn write_all(
     let all = charts::all(
         &title,
         stats,
-        scene.time_axis(),
+        (scene.time_axis(), scene.species_names()),
         refs,
         reduced.as_ref(),
         marginal.as_ref(),

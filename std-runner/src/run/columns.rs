@@ -283,6 +283,12 @@ pub const COLLISIONS_LABEL: &str = "collisions per particle s (dimensionless)";
 /// time unit); ratios and cumulants are dimensionless. A column this table does not know keeps
 /// its name.
 pub fn axis_label(name: &str) -> String {
+    axis_label_in(name, &[])
+}
+
+/// [`axis_label`] with a mixture's species called by their names (`species`, from the scene's
+/// `[[species]] name`; an empty or missing name keeps "species k").
+pub fn axis_label_in(name: &str, species: &[String]) -> String {
     const DIM: &str = "(scene units)";
     const NONE: &str = "(dimensionless)";
     let (words, unit) = match name {
@@ -319,7 +325,7 @@ pub fn axis_label(name: &str) -> String {
         MIXTURE_TEMPERATURE => ("mixture temperature T_mix", DIM),
         ROUGH_MIXTURE_TEMPERATURE => ("mixture rotational temperature T_rot_mix", DIM),
         "zeta_mix" => ("mixture cooling rate zeta_mix", "(1/scene time unit)"),
-        _ => return species_label(name).unwrap_or_else(|| name.to_string()),
+        _ => return species_label(name, species).unwrap_or_else(|| name.to_string()),
     };
     format!("{words} {unit}")
 }
@@ -339,9 +345,21 @@ const ROUGH_SPECIES_WORDS: [(&str, &str); 3] = [
 ];
 const COOLING_WORDS: (&str, &str) = ("cooling rate", "(1/scene time unit)");
 
-/// The label of a per-species column (`T_s0`, `theta_s1`, ..), found in the column tables, or
-/// `None`.
-fn species_label(name: &str) -> Option<String> {
+/// Species `k` in words: "heavy (species 0)" where the scene names it, "species 0" where it
+/// does not (no name, or the scene's default `s0`).
+pub fn species_who(k: usize, species: &[String]) -> String {
+    match species
+        .get(k)
+        .filter(|n| !n.is_empty() && **n != format!("s{k}"))
+    {
+        Some(n) => format!("{n} (species {k})"),
+        None => format!("species {k}"),
+    }
+}
+
+/// The label of a per-species column (`T_s0`, `theta_s1`, ..), found in the column tables and
+/// calling the species by its name in `species` where it has one, or `None`.
+fn species_label(name: &str, species: &[String]) -> Option<String> {
     (0..gdsmc_core::mixture::MAX_SPECIES).find_map(|k| {
         let words = SPECIES_COLUMNS[k]
             .iter()
@@ -350,7 +368,12 @@ fn species_label(name: &str) -> Option<String> {
             .chain(std::iter::once((&COOLING_COLUMNS[k + 1], COOLING_WORDS)))
             .find(|(col, _)| **col == name)?
             .1;
-        Some(format!("species {k}'s {} {name} {}", words.0, words.1))
+        Some(format!(
+            "{}'s {} {name} {}",
+            species_who(k, species),
+            words.0,
+            words.1
+        ))
     })
 }
 
@@ -378,5 +401,11 @@ mod label_tests {
             );
         }
         assert_eq!(axis_label("unknown_s9"), "unknown_s9");
+        let named = ["heavy".to_string(), String::new()];
+        assert_eq!(
+            axis_label_in("T_s0", &named),
+            "heavy (species 0)'s temperature T_s0 (scene units)"
+        );
+        assert!(axis_label_in("T_s1", &named).starts_with("species 1's"));
     }
 }

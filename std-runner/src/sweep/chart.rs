@@ -68,7 +68,7 @@ fn common_title(points: &[PointScene]) -> String {
                 kinds.push(k);
             }
         }
-        kept.insert(0, kinds.join(" or "));
+        kept.insert(0, either(&kinds));
     }
     if !kept.iter().any(|p| p.starts_with("n = ")) {
         kept.push("n varied".into());
@@ -78,6 +78,36 @@ fn common_title(points: &[PointScene]) -> String {
         None => kept.push("ensembles varied".into()),
     }
     kept.join(", ")
+}
+
+/// The particles of points that differ in them, the words they share said once: "Smooth
+/// spheres or disks", not "Smooth spheres or Smooth disks".
+fn either(kinds: &[&str]) -> String {
+    let words: Vec<Vec<&str>> = kinds.iter().map(|k| k.split(' ').collect()).collect();
+    let shared = (0..words[0].len())
+        .take_while(|&i| words.iter().all(|w| w.len() > i + 1 && w[i] == words[0][i]))
+        .count();
+    let rests: Vec<String> = words.iter().map(|w| w[shared..].join(" ")).collect();
+    let head = words[0][..shared].join(" ");
+    if head.is_empty() {
+        rests.join(" or ")
+    } else {
+        format!("{head} {}", rests.join(" or "))
+    }
+}
+
+/// The shift of group `gi` of `groups` along x, so that points of several groups at the same x
+/// stand side by side (their error bars not hidden behind one another): `x` moved by a small
+/// fraction of the range (a factor on a log axis).
+fn dodge(x: f64, gi: usize, groups: usize, (lo, hi): (f64, f64), log: bool) -> f64 {
+    let k = gi as f64 - (groups as f64 - 1.0) / 2.0;
+    if groups < 2 {
+        x
+    } else if log {
+        x * (hi / lo).powf(0.006 * k)
+    } else {
+        x + 0.006 * k * (hi - lo)
+    }
 }
 
 /// Every chart of the sweep, `(file stem, chart)`: none when no varied key is numeric.
@@ -134,6 +164,7 @@ pub fn charts(
         })
         .collect();
     let common = common_title(points);
+    let x_label = super::words::key_label(xkey, &base.scene);
     let names = super::table::observable_names(results);
     names
         .into_iter()
@@ -141,6 +172,7 @@ pub fn charts(
             let mut series = Vec::new();
             let mut residuals = Vec::new();
             let mut residual_of = None;
+            let mut cited_refs: Vec<&'static str> = Vec::new();
             for (gi, g) in groups.iter().enumerate() {
                 let color = COLORS[gi % COLORS.len()];
                 let suffix = if g.is_empty() {
@@ -155,7 +187,7 @@ pub fn charts(
                     .filter_map(|r| {
                         let x = r.values[xi].1.parse::<f64>().ok()?;
                         let o = r.observables.iter().find(|o| o.0 == name)?;
-                        Some((x, o.1, o.2))
+                        Some((dodge(x, gi, groups.len(), (lo, hi), log), o.1, o.2))
                     })
                     .collect();
                 // The exact mean at this n, where one applies, judges each point: its residual
@@ -170,6 +202,7 @@ pub fn charts(
                             .references
                             .iter()
                             .find(|e| e.of == name && e.kind == Kind::MeanAtN)?;
+                        let x = dodge(x, gi, groups.len(), (lo, hi), log);
                         (o.2 > 0.0).then(|| (x, (o.1 - e.value) / o.2, e.name))
                     })
                     .collect();
@@ -206,8 +239,15 @@ pub fn charts(
                                 .map(|r| (*x, r.value, 0.0))
                         })
                         .collect();
+                    // The source once, with the first group's curve of it.
+                    let cited = !cited_refs.contains(&rname);
+                    cited_refs.push(rname);
                     series.push(Series {
-                        label: format!("{rname} ({source}){suffix}"),
+                        label: if cited {
+                            format!("{rname} ({source}){suffix}")
+                        } else {
+                            format!("{rname}{suffix}")
+                        },
                         points: line,
                         style: Style::Dashed,
                         color,
@@ -217,14 +257,15 @@ pub fn charts(
             // The axes name the observable and the key; the title is the physics.
             let title = common.clone();
             let y = crate::run::columns::axis_label(name);
+            // The legend says what the residual is; the panel is too short for the words.
             let residual_desc = residual_of
-                .map(|r| format!("({name} - {r}) / half-width"))
+                .map(|_| "residual".to_string())
                 .unwrap_or_default();
             (
                 name.to_string(),
                 profile_with_residuals(
                     &title,
-                    xkey,
+                    &x_label,
                     &y,
                     (log, false),
                     &series,

@@ -19,6 +19,7 @@ pub mod point;
 mod shard;
 pub mod table;
 pub mod verdict;
+pub mod words;
 
 pub use crate::scene::vary;
 

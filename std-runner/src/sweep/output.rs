@@ -79,17 +79,41 @@ pub(super) fn write(
     }))
 }
 
-/// The terminal's table: per point the varied values and the main observables' window means
-/// with their intervals (T, a2 where the run has them).
+/// The observables a sweep is about: those that have a reference at some point (what the
+/// study compares), else `T` and `a2`.
+fn studied(results: &[PointResult]) -> Vec<&'static str> {
+    let mut with_refs: Vec<&'static str> = Vec::new();
+    for p in results {
+        for o in &p.observables {
+            if p.references.iter().any(|r| r.of == o.0) && !with_refs.contains(&o.0) {
+                with_refs.push(o.0);
+            }
+        }
+    }
+    if with_refs.is_empty() {
+        vec![name::T, name::A2]
+    } else {
+        with_refs
+    }
+}
+
+/// The terminal's table: per point the varied values and the studied observables' window
+/// means with their intervals ([`studied`]), each beside its first reference.
 pub(super) fn summary(results: &[PointResult]) -> String {
     let mut out = String::new();
+    let names = studied(results);
     for p in results {
         let values: Vec<String> = p.values.iter().map(|(k, v)| format!("{k} = {v}")).collect();
-        let shown: Vec<String> = p
-            .observables
+        let shown: Vec<String> = names
             .iter()
-            .filter(|o| [name::T, name::A2].contains(&o.0))
-            .map(|(name, mean, ci)| format!("{name} = {mean:.5} ± {ci:.2e}"))
+            .filter_map(|n| p.observables.iter().find(|o| o.0 == *n))
+            .map(|(name, mean, ci)| {
+                let r = p.references.iter().find(|r| r.of == *name);
+                match r {
+                    Some(r) => format!("{name} = {mean:.5} ± {ci:.2e} ({} {:.5})", r.name, r.value),
+                    None => format!("{name} = {mean:.5} ± {ci:.2e}"),
+                }
+            })
             .collect();
         let _ = writeln!(
             out,

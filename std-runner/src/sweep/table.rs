@@ -205,12 +205,11 @@ impl Digits {
 
 /// sweep.md: for each observable that has a reference at some point, a table of the points:
 /// the varied values, the window mean with its 99.9% half-width, every reference, and the
-/// mean's deviation from the first reference (in percent, or absolute where that reference is
-/// within a half-width of 0) with whether that reference lies within the
-/// interval (the docs' tables are these).
+/// mean's difference from the first reference (in the observable's units and in half-widths)
+/// with whether that reference lies within the interval (the docs' tables are these).
 pub fn markdown(scene: &str, vary: &[Vary], points: &[PointResult]) -> String {
     let mut out = format!(
-        "# Sweep of {scene}\n\nEach observable that has a reference: per point its window mean with the half-width of its 99.9% interval, every reference averaged over the same window, and the deviation from the first reference.\n"
+        "# Sweep of {scene}\n\nEach observable that has a reference: per point its window mean with the half-width of its 99.9% interval, every reference averaged over the same window, and the difference from the first reference (in its units and in half-widths of the interval).\n"
     );
     let references = union(points, |p| p.references.iter().map(|r| r.name).collect());
     for name in observable_names(points) {
@@ -233,9 +232,9 @@ pub fn markdown(scene: &str, vary: &[Vary], points: &[PointResult]) -> String {
             out.push_str(&format!(" {r} |"));
         }
         out.push_str(&format!(
-            " deviation from {first} | {first} within the interval |\n|"
+            " mean - {first} | in half-widths | {first} within the interval |\n|"
         ));
-        out.push_str(&"---|".repeat(vary.len() + refs.len() + 3));
+        out.push_str(&"---|".repeat(vary.len() + refs.len() + 4));
         out.push('\n');
         for p in points {
             let Some(&(_, mean, ci)) = p.observables.iter().find(|o| o.0 == name) else {
@@ -258,20 +257,23 @@ pub fn markdown(scene: &str, vary: &[Vary], points: &[PointResult]) -> String {
                     None => out.push_str(" |"),
                 }
             }
+            // One measure for every row: the difference in the observable's units and in
+            // half-widths of the interval (a percentage says nothing against a value near 0).
             match value(first) {
-                // Relative where the reference is larger than the half-width (not against a
-                // reference near 0, where a percentage says nothing), absolute otherwise.
-                Some(x) if x.abs() > ci && x.is_finite() => {
-                    let dev = 100.0 * (mean - x) / x.abs();
-                    let inside = if (mean - x).abs() <= ci { "yes" } else { "no" };
-                    out.push_str(&format!(" {dev:+.2}% | {inside} |\n"));
-                }
                 Some(x) if x.is_finite() => {
                     let inside = if (mean - x).abs() <= ci { "yes" } else { "no" };
                     let sign = if mean >= x { "+" } else { "" };
-                    out.push_str(&format!(" {sign}{} | {inside} |\n", digits.write(mean - x)));
+                    let widths = if ci > 0.0 {
+                        format!("{:+.2}", (mean - x) / ci)
+                    } else {
+                        String::new()
+                    };
+                    out.push_str(&format!(
+                        " {sign}{} | {widths} | {inside} |\n",
+                        digits.write(mean - x)
+                    ));
                 }
-                _ => out.push_str(" | |\n"),
+                _ => out.push_str(" | | |\n"),
             }
         }
     }

@@ -59,6 +59,24 @@ pub fn luminance(c: RGBColor) -> f64 {
     (0.2126 * c.0 as f64 + 0.7152 * c.1 as f64 + 0.0722 * c.2 as f64) / 255.0
 }
 
+/// The width of an axis description per character, pixels: an upper estimate of the mean
+/// advance of plotters' default description font (measured on the rendered charts: about 4.7).
+pub const AXIS_CHAR_PX: f64 = 5.5;
+
+/// The estimated length of an axis description in pixels ([`AXIS_CHAR_PX`]).
+pub fn label_px(label: &str) -> f64 {
+    label.chars().count() as f64 * AXIS_CHAR_PX
+}
+
+/// `full` when it fits in `px` pixels, else `short` (the symbol and unit without the words).
+pub fn fit_label(full: String, short: &str, px: i32) -> String {
+    if label_px(&full) <= px as f64 {
+        full
+    } else {
+        short.to_string()
+    }
+}
+
 /// Where a chart put things: for the checks that a reviewer's eye would make.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Geometry {
@@ -103,7 +121,8 @@ impl Geometry {
     /// than a line or drawn under a line (the lines then hide it), a line too light to see in
     /// grey scale (luminance above [`MAX_LINE_LUMINANCE`]), two lines of the same dash that
     /// grey scale cannot tell apart (luminances closer than [`MIN_LUMINANCE_STEP`]), an axis
-    /// label that is only a symbol (no word of four letters or more).
+    /// label longer than its panel (so it overprints its neighbour's), an axis label that is
+    /// only a symbol (no word of four letters or more).
     pub fn objections(&self) -> Vec<String> {
         let mut out = Vec::new();
         if self.plots.is_empty() {
@@ -162,6 +181,22 @@ impl Geometry {
                     out.push(format!(
                         "the lines \"{}\" and \"{}\" look the same in grey scale",
                         a.2, b.2
+                    ));
+                }
+            }
+        }
+        // A vertical y description is centred on its panel: longer than the panel, it runs
+        // into the next panel's (or off the chart); an x description likewise across.
+        for ((x, y), p) in self.axes.iter().zip(&self.plots) {
+            for (label, room, side) in [
+                (y, p.bottom - p.top, "height"),
+                (x, p.right - p.left, "width"),
+            ] {
+                if label_px(label) > room as f64 {
+                    out.push(format!(
+                        "the axis label \"{label}\" ({:.0} px) is longer than its panel's {side} \
+                         ({room} px): it runs into its neighbour",
+                        label_px(label)
                     ));
                 }
             }
@@ -251,6 +286,9 @@ mod tests {
         let mut thin = g.clone();
         thin.band_px = Some(LINE_WIDTH as f64);
         assert!(thin.objections()[0].contains("drawn under a 2 px line"));
+        let mut long = g.clone();
+        long.axes[0].1 = "a temperature label much longer than the panel is tall ".repeat(2);
+        assert!(long.objections()[0].contains("longer than its panel's height"));
         let mut twins = g.clone();
         twins.layers[1] = Layer::Line {
             color: RGBColor(60, 60, 60),

@@ -23,16 +23,17 @@ use crate::run::RunStats;
 use std::path::Path;
 
 /// Every chart of a run, `(file stem, chart)`: one per observable, the tail plot when there is
-/// a histogram, the distribution charts; the time charts against `axis`. `title` (the physics, n, ensembles: [`title`]) heads each.
+/// a histogram, the distribution charts; the time charts against `axis`, a mixture's species
+/// called by their names (`species`). `title` (the physics, n, ensembles: [`title`]) heads each.
 pub fn all(
     title: &str,
     stats: &RunStats,
-    axis: crate::scene::TimeAxis,
+    (axis, species): (crate::scene::TimeAxis, &[String]),
     refs: &[ReferenceCurve],
     reduced: Option<&crate::analysis::distribution::Reduced>,
     marginal: Option<&crate::analysis::distribution::Marginal>,
 ) -> Vec<(String, Result<Chart, String>)> {
-    let mut out = time::charts(title, stats, axis, refs);
+    let mut out = time::charts(title, stats, (axis, species), refs);
     if let Some(crate::run::ShellHistogram { radius, weights: h }) = &stats.histogram
         && let Some(fit) = crate::analysis::tails::fit(*radius, h, stats.dimension)
     {

@@ -7,10 +7,11 @@
 use super::frame::{
     BAND_ALPHA, Chart, Entry, Frame, Geometry, LINE_WIDTH, Layer, Swatch, plot_rect,
 };
+use super::geometry::fit_label;
 use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
 use crate::run::columns::name::S;
-use crate::run::columns::{COLLISIONS_LABEL, TIME_LABEL, axis_label};
+use crate::run::columns::{COLLISIONS_LABEL, TIME_LABEL, axis_label_in};
 use crate::scene::TimeAxis;
 use plotters::prelude::*;
 
@@ -95,10 +96,10 @@ impl Scale {
 }
 
 /// One observable's chart (column `col`) with the reference curves `refs`, against time or
-/// collisions per particle (`axis`).
+/// collisions per particle (`axis`), a mixture's species called by their names (`species`).
 pub fn chart(
     stats: &RunStats,
-    axis: TimeAxis,
+    (axis, species): (TimeAxis, &[String]),
     col: usize,
     title: &str,
     refs: &[&ReferenceCurve],
@@ -220,7 +221,7 @@ pub fn chart(
     let mut svg = String::new();
     let mut geometry = Geometry::new(title);
     let mut entries = vec![Entry::new(Swatch::Line(BLUE), mean_text.clone())];
-    let y_label = axis_label(name);
+    let y_label = axis_label_in(name, species);
     {
         let frame = Frame::new(&mut svg, title, &sizing)?;
         let (upper, lower) = if residual.is_some() {
@@ -236,8 +237,17 @@ pub fn chart(
             .y_label_area_size(80)
             .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
             .map_err(|e| e.to_string())?;
+        let (xr, yr) = c.plotting_area().get_pixel_range();
+        // The full words when they fit the panel's height, else the symbol and unit.
+        let short = y_label
+            .find('(')
+            .map_or(name.to_string(), |i| format!("{name} {}", &y_label[i..]));
+        let y_label = fit_label(
+            ys.describe(&y_label),
+            &ys.describe(&short),
+            yr.end - yr.start,
+        );
         let mut mesh = c.configure_mesh();
-        let y_label = ys.describe(&y_label);
         mesh.y_desc(y_label.as_str());
         let x_label = xs.describe(if lower.is_none() { x_words } else { "" });
         let (xf, yf) = (move |v: &f64| xs.label(*v), move |v: &f64| ys.label(*v));
@@ -246,7 +256,6 @@ pub fn chart(
             .y_label_formatter(&yf);
         mesh.draw().map_err(|e| e.to_string())?;
         geometry.axes.push((x_label.to_string(), y_label.clone()));
-        let (xr, yr) = c.plotting_area().get_pixel_range();
         geometry.plots.push(plot_rect(xr, yr.clone()));
         // The references first, then the mean, then the band over both: translucent, it
         // shows the lines through it and no line hides it.
@@ -327,7 +336,7 @@ pub fn chart(
             entries.push(Entry::new(Swatch::None, THIN_BAND_TEXT));
         }
         entries.extend(ref_entries);
-        if let (Some(lower), Some((r, rs))) = (lower, &residual) {
+        if let (Some(lower), Some((_, rs))) = (lower, &residual) {
             let top = rs.iter().map(|p| p.1.abs()).fold(1.5, f64::max) * 1.1;
             let mut d = ChartBuilder::on(&lower)
                 .margin(10)
@@ -335,7 +344,8 @@ pub fn chart(
                 .y_label_area_size(80)
                 .build_cartesian_2d(t0..t1, -top..top)
                 .map_err(|e| e.to_string())?;
-            let y_label = format!("({name} - {}) / half-width", r.name);
+            // The legend says what the residual is; the panel is too short for the words.
+            let y_label = "residual".to_string();
             let x_label = xs.describe(x_words);
             let xf = move |v: &f64| xs.label(*v);
             d.configure_mesh()
@@ -380,13 +390,13 @@ pub fn chart(
 pub fn charts(
     title: &str,
     stats: &RunStats,
-    axis: TimeAxis,
+    labels: (TimeAxis, &[String]),
     refs: &[ReferenceCurve],
 ) -> Vec<(String, Result<Chart, String>)> {
     let mut out = Vec::new();
     for (col, &name) in stats.names.iter().enumerate() {
         let these: Vec<&ReferenceCurve> = refs.iter().filter(|r| r.of == name).collect();
-        out.push((name.to_string(), chart(stats, axis, col, title, &these)));
+        out.push((name.to_string(), chart(stats, labels, col, title, &these)));
     }
     out
 }
