@@ -29,7 +29,7 @@ from typing import Callable, Dict, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _gdsmc
+from . import _gdsmc, _plot
 from ._gdsmc import RunError, Scene, SceneError, __version__
 
 __all__ = [
@@ -141,6 +141,22 @@ class Result:
         """observables.csv as a pandas DataFrame (needs pandas)."""
         return _data_frame(self.table)
 
+    def references_of(self, name: str) -> Dict[str, str]:
+        """The references of observable ``name`` that the run attached, with their sources
+        (from summary.json)."""
+        out: Dict[str, str] = {}
+        for e in self.summary.get("errors", []):
+            if e["observable"] == name and e["reference"] in self.references:
+                out.setdefault(e["reference"], e["source"])
+        return out
+
+    def plot(self, name: str = "T", ax=None, axis: str = "time"):
+        """Draws observable ``name`` as the command's chart does (needs matplotlib): the
+        ensemble mean, its 99.9% band and every reference of it dashed, against time or, with
+        ``axis="collisions"``, collisions per particle (the ``s`` column); log axes where the
+        times or the values span decades. Returns the matplotlib Axes."""
+        return _plot.result(self, name, ax, axis)
+
     def write(self, directory: Union[str, os.PathLike], formats: str = "svg") -> List[str]:
         """Writes the command's whole output set (tables, summary.json, charts in ``formats``:
         "svg", "png", "pdf", comma-separated; png and pdf when the extension was built with its
@@ -156,6 +172,9 @@ class _TextBar:
 
     def __init__(self, total: Optional[int]):
         self.total, self.n = total, 0
+
+    def set_total(self, total: int) -> None:
+        self.total = total
 
     def update(self, k: int) -> None:
         self.n += k
@@ -181,20 +200,30 @@ def _bar(total: Optional[int]):
         return _TextBar(total)
 
 
+def _set_total(bar, total: int) -> None:
+    """Sets a bar's total once it is known (a sweep's, after its points are checked)."""
+    if isinstance(bar, _TextBar):
+        bar.set_total(total)
+    else:
+        bar.total = total
+        bar.refresh()
+
+
 @contextlib.contextmanager
 def _progress(progress, total: Optional[int]):
-    """The callback ``progress`` asks for: a callable as it is, ``True`` a bar over ``total``
-    ensembles (unknown: None) closed at the end, ``False`` none."""
+    """``(callback, set_total)`` for ``progress``: a callable as it is, ``True`` a bar over
+    ``total`` ensembles (unknown: None, until ``set_total`` says) closed at the end, ``False``
+    none."""
     if callable(progress):
-        yield progress
+        yield progress, None
     elif progress:
         bar = _bar(total)
         try:
-            yield bar.update
+            yield bar.update, (lambda t: _set_total(bar, t))
         finally:
             bar.close()
     else:
-        yield None
+        yield None, None
 
 
 def run(
@@ -222,7 +251,7 @@ def run(
     if not isinstance(scene, Scene):
         scene = Scene.from_file(os.fspath(scene))
     total = ensembles if ensembles is not None else scene.ensembles
-    with _progress(progress, total) as callback:
+    with _progress(progress, total) as (callback, _):
         raw, interrupted = _gdsmc.run(scene, n, ensembles, seed, threads, callback, allow_long)
     if interrupted:
         asked = ensembles if ensembles is not None else scene.ensembles
@@ -261,14 +290,19 @@ def _vary_specs(vary) -> List[str]:
     return [str(v) for v in vary]
 
 
+# sweep.csv's columns that count or number things: integers, never NaN.
+_INTEGER_COLUMNS = ("point", "seed", "ensembles", "window_points")
+
+
 class Swept:
     """A sweep's results, as ``gdsmc sweep`` writes them.
 
     Attributes:
         table: every column of sweep.csv (``point``, the varied keys, ``seed``,
             ``ensembles``, ``window_from``, ``window_points``, ``NAME`` and ``NAME_ci`` for every
-            observable, the references), numbers as float arrays (empty cells NaN), a varied
-            key whose values are not numbers as a list of strings.
+            observable, the references): ``point``, ``seed``, ``ensembles`` and
+            ``window_points`` as integer arrays, other numbers as float arrays (empty cells
+            NaN), a varied key whose values are not numbers as a list of strings.
         keys: the varied keys.
         columns: the observables.
         mean, ci: per observable, each point's window mean and the half-width of its 99.9%
@@ -287,6 +321,9 @@ class Swept:
         self.table: Dict[str, Union[np.ndarray, List[str]]] = {}
         for j, name in enumerate(header):
             cells = [r[j] for r in body]
+            if name in _INTEGER_COLUMNS:
+                self.table[name] = np.array([int(c) for c in cells], dtype=np.int64)
+                continue
             try:
                 self.table[name] = np.array(
                     [float(c) if c != "" else np.nan for c in cells], dtype=np.float64
@@ -304,6 +341,13 @@ class Swept:
     def to_pandas(self):
         """sweep.csv as a pandas DataFrame (needs pandas)."""
         return _data_frame(self.table)
+
+    def plot(self, name: str = "a2", x: Optional[str] = None, ax=None):
+        """Draws observable ``name`` at every point as the command's sweep chart does (needs
+        matplotlib): against the varied key ``x`` (default: the first numeric one), one series
+        per combination of the other keys, each point's mean with its 99.9% interval, every
+        reference of it dashed. Returns the matplotlib Axes."""
+        return _plot.swept(self, name, x, ax)
 
     def __repr__(self) -> str:
         n = len(self.table.get("point", []))
@@ -338,9 +382,9 @@ def sweep(
     if not isinstance(scene, Scene):
         scene = Scene.from_file(os.fspath(scene))
     specs = _vary_specs(vary)
-    with _progress(progress, None) as callback:
+    with _progress(progress, None) as (callback, set_total):
         csv_text, json_text, asked, interrupted = _gdsmc.sweep(
-            scene, specs, zip, n, ensembles, seed, threads, callback, allow_long
+            scene, specs, zip, n, ensembles, seed, threads, callback, allow_long, set_total
         )
     result = Swept(csv_text, json_text)
     if interrupted:

@@ -72,6 +72,7 @@ def sweep(
     threads: int = 0,
     progress: Optional[Callable[[int], Any]] = None,
     allow_long: bool = False,
+    total: Optional[Callable[[int], Any]] = None,
 ) -> Tuple[str, str, int, bool]: ...
 def reproduce(
     names: List[str], quick: bool = True, threads: int = 0, seed: int = 1

@@ -23,14 +23,31 @@ pyo3::create_exception!(
     "A run that stopped (an engine error, a refused size, an unwritable output place)."
 );
 
-/// Maps a runner error to the Python exception that says what went wrong.
+/// The command's flags a runner message may name, and the keyword arguments that are their
+/// Python words.
+const KEYWORDS: [(&str, &str); 5] = [
+    ("--allow-long", "allow_long=True"),
+    ("--threads", "threads="),
+    ("--ensembles", "ensembles="),
+    ("--seed", "seed="),
+    ("--vary", "vary="),
+];
+
+/// A runner message in Python's words: each command flag it names as the keyword argument.
+pub(crate) fn python_words(message: &str) -> String {
+    KEYWORDS
+        .iter()
+        .fold(message.to_string(), |m, (flag, word)| m.replace(flag, word))
+}
+
+/// Maps a runner error to the Python exception that says what went wrong, in Python's words.
 pub(crate) fn to_py(e: gdsmc_runner::Error) -> PyErr {
     match e {
-        gdsmc_runner::Error::Scene(s) => SceneError::new_err(s.to_string()),
+        gdsmc_runner::Error::Scene(s) => SceneError::new_err(python_words(&s.to_string())),
         gdsmc_runner::Error::Argument { .. } => {
-            pyo3::exceptions::PyValueError::new_err(e.to_string())
+            pyo3::exceptions::PyValueError::new_err(python_words(&e.to_string()))
         }
-        other => RunError::new_err(other.to_string()),
+        other => RunError::new_err(python_words(&other.to_string())),
     }
 }
 

@@ -99,7 +99,7 @@ pub fn run(
     allow_long: bool,
 ) -> PyResult<(RunResult, bool)> {
     let mut s = scene.clone();
-    for o in sc::Override::run_flags(n, ensembles, seed) {
+    for o in sc::Override::run_keywords(n, ensembles, seed) {
         s = s.with(o)?;
     }
     runner::estimate::check(s.scene(), threads, allow_long).map_err(to_py)?;

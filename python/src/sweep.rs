@@ -30,11 +30,12 @@ impl gdsmc_runner::job::Watch for Polled<'_> {
 
 /// Sweeps `scene` over `vary` (`KEY=VALUES` strings in the command's syntax; empty: the
 /// scene's `[sweep]` table), a grid or `zip`ped, with `n`, `ensembles` and `seed` overriding
-/// the base scene's keys. Every point is validated and the summed work checked first. Returns
+/// the base scene's keys. Every point is validated and the summed work checked first; `total`,
+/// when given, is then called with the ensembles of all points (a progress bar's end). Returns
 /// sweep.csv and sweep.json of the finished points, the number of points asked for, and
 /// whether Ctrl-C stopped the sweep.
 #[pyfunction]
-#[pyo3(signature = (scene, vary, zip = false, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false))]
+#[pyo3(signature = (scene, vary, zip = false, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false, total = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep(
     py: Python<'_>,
@@ -47,9 +48,10 @@ pub fn sweep(
     threads: usize,
     progress: Option<Bound<'_, PyAny>>,
     allow_long: bool,
+    total: Option<Bound<'_, PyAny>>,
 ) -> PyResult<(String, String, usize, bool)> {
     let mut s = scene.clone();
-    for o in sc::Override::run_flags(n, ensembles, seed) {
+    for o in sc::Override::run_keywords(n, ensembles, seed) {
         s = s.with(o)?;
     }
     let plan = gdsmc_runner::sweep::plan(&s.source, &vary, zip).map_err(to_py)?;
@@ -65,6 +67,11 @@ pub fn sweep(
         shard: None,
     };
     let points = sw.checked_points().map_err(to_py)?;
+    // The progress bar's total: every point's ensembles, known once the points are checked.
+    if let Some(t) = &total {
+        let ensembles: u64 = points.iter().map(|p| p.source.scene.ensembles()).sum();
+        t.call1((ensembles,))?;
+    }
     let (ran, interrupted) = polled(py, progress.as_ref(), |stop, advance| {
         sw.run_points(&points, None, &Polled { stop, advance })
     })?;

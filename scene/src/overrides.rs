@@ -46,6 +46,25 @@ impl Override {
         flags
     }
 
+    /// A keyword argument of the Python binding that sets one key, e.g.
+    /// `Override::keyword("ensembles", "run.ensembles", 0)`: its errors name `ensembles=0`, the
+    /// caller's words, not a command's flag.
+    pub fn keyword(name: &str, key: &str, value: impl std::fmt::Display) -> Self {
+        Override {
+            source: format!("{name}={value}"),
+            assignment: format!("{key}={value}"),
+        }
+    }
+
+    /// [`Override::run_flags`] as the Python keywords `n=`, `ensembles=` and `seed=`.
+    pub fn run_keywords(n: Option<i64>, ensembles: Option<i64>, seed: Option<u64>) -> Vec<Self> {
+        let mut words = Vec::new();
+        words.extend(n.map(|n| Override::keyword("n", "particles.n", n)));
+        words.extend(ensembles.map(|m| Override::keyword("ensembles", "run.ensembles", m)));
+        words.extend(seed.map(|s| Override::keyword("seed", "run.seed", s)));
+        words
+    }
+
     /// Whether this override and `other` set the same value: the same key, or one a table
     /// holding the other's key.
     pub fn overlaps(&self, other: &Override) -> bool {

@@ -90,12 +90,46 @@ pub(crate) fn go(s: &Scene, opts: &Options) -> Result<(RunStats, f64), Error> {
     let t = Instant::now();
     let st = run::run(s, opts.threads, &|_| {})?;
     let done = (st, t.elapsed().as_secs_f64());
+    PROGRESS.with(|p| {
+        if let Some(k) = p.get() {
+            p.set(Some(k + 1));
+            eprintln!(
+                "  run {} of this table: {}, n = {}, {} ensembles, {:.1} s",
+                k + 1,
+                s.name(),
+                s.n(),
+                s.ensembles(),
+                done.1
+            );
+        }
+    });
     CACHE.with_borrow_mut(|c| {
         if let Some(c) = c {
             c.insert(key, done.clone());
         }
     });
     Ok(done)
+}
+
+thread_local! {
+    /// The runs of the current table so far, when the command reports progress within a
+    /// table ([`progress_within_tables`]); `None`: silent (the library, Python, the tests).
+    static PROGRESS: std::cell::Cell<Option<usize>> = const { std::cell::Cell::new(None) };
+}
+
+/// Reports each run of a table on stderr as it finishes (its scene, size and seconds), counting
+/// from 1 again after [`next_table`]: `gdsmc reproduce`'s progress within a table.
+pub fn progress_within_tables() {
+    PROGRESS.with(|p| p.set(Some(0)));
+}
+
+/// Counts the next table's runs from 1 (when progress is reported).
+pub fn next_table() {
+    PROGRESS.with(|p| {
+        if p.get().is_some() {
+            p.set(Some(0));
+        }
+    });
 }
 
 thread_local! {
