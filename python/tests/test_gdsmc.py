@@ -251,11 +251,13 @@ def test_reproduce_a_table():
     assert rep.passed, rep.failures
 
 
-def test_the_notebook_runs_headless():
+def execute_notebook(name):
+    """Executes python/examples/NAME.ipynb headless; returns its code cells' outputs, none of
+    them an error."""
     nbformat = pytest.importorskip("nbformat")
     nbclient = pytest.importorskip("nbclient")
     pytest.importorskip("matplotlib")
-    path = ROOT / "python" / "examples" / "grw_example3.ipynb"
+    path = ROOT / "python" / "examples" / f"{name}.ipynb"
     nb = nbformat.read(path, as_version=4)
     client = nbclient.NotebookClient(
         nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}
@@ -263,6 +265,11 @@ def test_the_notebook_runs_headless():
     client.execute()
     outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])]
     assert not [o for o in outputs if o.get("output_type") == "error"]
+    return outputs
+
+
+def test_the_notebook_runs_headless():
+    outputs = execute_notebook("grw_example3")
     text = "".join(o.get("text", "") for o in outputs if o.get("output_type") == "stream")
     assert "inside the 99.9% interval" in text
     assert any("image/png" in o.get("data", {}) for o in outputs)
@@ -278,17 +285,7 @@ def test_the_notebook_runs_headless():
 )
 def test_the_other_notebooks_run_headless(name, words):
     """The sweep, cooling-state and mixture notebooks run without an error, draw, and print."""
-    nbformat = pytest.importorskip("nbformat")
-    nbclient = pytest.importorskip("nbclient")
-    pytest.importorskip("matplotlib")
-    path = ROOT / "python" / "examples" / f"{name}.ipynb"
-    nb = nbformat.read(path, as_version=4)
-    client = nbclient.NotebookClient(
-        nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}
-    )
-    client.execute()
-    outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])]
-    assert not [o for o in outputs if o.get("output_type") == "error"]
+    outputs = execute_notebook(name)
     text = "".join(o.get("text", "") for o in outputs if o.get("output_type") == "stream")
     assert words in text, text
     assert any("image/png" in o.get("data", {}) for o in outputs)
