@@ -6,6 +6,11 @@ use plotters::prelude::*;
 
 /// Width of every drawn line, pixels.
 pub const LINE_WIDTH: u32 = 2;
+
+/// The least height in pixels a confidence band must reach to be drawn: a line's width plus
+/// two pixels on each side, so that it shows beyond the line it surrounds (a thinner band
+/// would be a swatch in the legend for something the reader cannot see).
+pub const MIN_BAND_PX: f64 = (LINE_WIDTH + 4) as f64;
 /// Largest relative luminance of a line on the white canvas (pure green's is 0.72: it
 /// vanishes in grey scale and in print).
 pub const MAX_LINE_LUMINANCE: f64 = 0.6;
@@ -121,8 +126,9 @@ impl Geometry {
     /// than a line or drawn under a line (the lines then hide it), a line too light to see in
     /// grey scale (luminance above [`MAX_LINE_LUMINANCE`]), two lines of the same dash that
     /// grey scale cannot tell apart (luminances closer than [`MIN_LUMINANCE_STEP`]), an axis
-    /// label longer than its panel (so it overprints its neighbour's), an axis label that is
-    /// only a symbol (no word of four letters or more).
+    /// label longer than its panel (so it overprints its neighbour's), a solid line drawn over
+    /// a dashed one (hiding it where they meet), an axis label that is only a symbol (no word
+    /// of four letters or more).
     pub fn objections(&self) -> Vec<String> {
         let mut out = Vec::new();
         if self.plots.is_empty() {
@@ -144,10 +150,11 @@ impl Geometry {
             out.push(format!("data at {d:?} outside the plotting areas"));
         }
         if let Some(px) = self.band_px
-            && px <= LINE_WIDTH as f64
+            && px < MIN_BAND_PX
         {
             out.push(format!(
-                "a band of {px:.1} px drawn under a {LINE_WIDTH} px line"
+                "a band of {px:.1} px drawn under a {LINE_WIDTH} px line (at least {MIN_BAND_PX} \
+                 px shows beyond it)"
             ));
         }
         if let Some(band) = self.layers.iter().position(|l| *l == Layer::Band)
@@ -158,6 +165,26 @@ impl Geometry {
             out.push(format!(
                 "the band is drawn under the line \"{label}\", which hides it"
             ));
+        }
+        // A solid line drawn after a dashed one covers it where they meet (a reference equal
+        // to the mean vanishes under it): the dashed lines go over the solid ones.
+        let lines_in_order: Vec<(&Option<(u32, u32)>, &str)> = self
+            .layers
+            .iter()
+            .filter_map(|l| match l {
+                Layer::Line { dash, label, .. } => Some((dash, label.as_str())),
+                Layer::Band => None,
+            })
+            .collect();
+        for (i, (dash, label)) in lines_in_order.iter().enumerate() {
+            if dash.is_none()
+                && let Some((_, under)) = lines_in_order[..i].iter().find(|(d, _)| d.is_some())
+            {
+                out.push(format!(
+                    "the solid line \"{label}\" is drawn over the dashed \"{under}\", hiding it \
+                     where they meet"
+                ));
+            }
         }
         type Drawn<'a> = (RGBColor, Option<(u32, u32)>, &'a str);
         let lines: Vec<Drawn<'_>> = self
@@ -265,6 +292,7 @@ mod tests {
         assert!(found.contains("\"t\" is only a symbol"), "{found}");
         assert!(found.contains("\"T\" is only a symbol"), "{found}");
         let mut g = old.clone();
+        g.band_px = Some(MIN_BAND_PX + 2.0);
         g.layers.rotate_left(1);
         g.layers[2] = Layer::Line {
             color: BLACK,
@@ -286,6 +314,9 @@ mod tests {
         let mut thin = g.clone();
         thin.band_px = Some(LINE_WIDTH as f64);
         assert!(thin.objections()[0].contains("drawn under a 2 px line"));
+        let mut hidden = g.clone();
+        hidden.layers.swap(0, 1);
+        assert!(hidden.objections()[0].contains("drawn over the dashed \"T_exact\""));
         let mut long = g.clone();
         long.axes[0].1 = "a temperature label much longer than the panel is tall ".repeat(2);
         assert!(long.objections()[0].contains("longer than its panel's height"));

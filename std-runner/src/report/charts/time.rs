@@ -1,5 +1,5 @@
-//! Each observable against time: the reference curves dashed (each its own dash and a
-//! colour dark enough for grey scale), the ensemble mean, and its 99.9% confidence band drawn
+//! Each observable against time: the ensemble mean, the reference curves dashed over it (each
+//! its own dash and a colour dark enough for grey scale), and its 99.9% confidence band drawn
 //! last, translucent, where it is wider than the line (so no line hides it); when a reference
 //! applies, a residual panel below: `(mean - reference) / half-width`, where the 99.9%
 //! interval is the strip between -1 and 1 whatever the band's size on the upper panel.
@@ -7,7 +7,7 @@
 use super::frame::{
     BAND_ALPHA, Chart, Entry, Frame, Geometry, LINE_WIDTH, Layer, Swatch, plot_rect,
 };
-use super::geometry::fit_label;
+use super::geometry::{MIN_BAND_PX, fit_label};
 use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
 use crate::run::columns::name::S;
@@ -240,7 +240,7 @@ pub fn chart(
         let (xr, yr) = c.plotting_area().get_pixel_range();
         // The full words when they fit the panel's height, else the symbol and unit.
         let short = y_label
-            .find('(')
+            .rfind('(')
             .map_or(name.to_string(), |i| format!("{name} {}", &y_label[i..]));
         let y_label = fit_label(
             ys.describe(&y_label),
@@ -257,8 +257,22 @@ pub fn chart(
         mesh.draw().map_err(|e| e.to_string())?;
         geometry.axes.push((x_label.to_string(), y_label.clone()));
         geometry.plots.push(plot_rect(xr, yr.clone()));
-        // The references first, then the mean, then the band over both: translucent, it
-        // shows the lines through it and no line hides it.
+        // The mean first, then the references dashed over it (one that coincides with the
+        // mean shows through its gaps), then the band over all: translucent, it shows the
+        // lines through it and no line hides it.
+        c.draw_series(LineSeries::new(
+            pts.iter().map(|p| at(p.0, p.1)),
+            BLUE.stroke_width(LINE_WIDTH),
+        ))
+        .map_err(|e| e.to_string())?;
+        geometry.layers.push(Layer::Line {
+            color: BLUE,
+            dash: None,
+            label: mean_text,
+        });
+        geometry
+            .data
+            .extend(pts.iter().map(|p| c.backend_coord(&at(p.0, p.1))));
         let mut ref_entries = Vec::new();
         for (k, r) in refs.iter().enumerate() {
             let (color, dash, gap) = REF_STYLES[k % REF_STYLES.len()];
@@ -295,19 +309,6 @@ pub fn chart(
                 ref_texts[k].clone(),
             ));
         }
-        c.draw_series(LineSeries::new(
-            pts.iter().map(|p| at(p.0, p.1)),
-            BLUE.stroke_width(LINE_WIDTH),
-        ))
-        .map_err(|e| e.to_string())?;
-        geometry.layers.push(Layer::Line {
-            color: BLUE,
-            dash: None,
-            label: mean_text,
-        });
-        geometry
-            .data
-            .extend(pts.iter().map(|p| c.backend_coord(&at(p.0, p.1))));
         // The band is drawn where it can be seen: its tallest extent in pixels above the
         // line's width.
         let px_per_unit = (yr.end - yr.start) as f64 / (hi + pad - (lo - pad));
@@ -315,7 +316,7 @@ pub fn chart(
             .iter()
             .map(|p| (at(p.0, p.1 + ci(p)).1 - at(p.0, p.1 - ci(p)).1) * px_per_unit)
             .fold(0.0, f64::max);
-        if band_px > (LINE_WIDTH + 1) as f64 {
+        if band_px >= MIN_BAND_PX {
             let band: Vec<(f64, f64)> = pts
                 .iter()
                 .map(|p| at(p.0, p.1 + ci(p)))
