@@ -93,6 +93,8 @@ class Result:
             ``marginal``), each a dict of columns.
         summary: summary.json as a dict (sizes, seed, timing, counts, errors against the
             references, steady averages, the tail exponent, warnings).
+        samples: with ``run(..., samples=True)``, per observable every ensemble's own values,
+            an array of shape ``(ensembles, times)`` (their mean is ``mean``); else None.
     """
 
     def __init__(self, raw: "_gdsmc.RunResult"):
@@ -112,6 +114,12 @@ class Result:
         self.histograms: Dict[str, Dict[str, np.ndarray]] = {
             name[: -len(".csv")]: _parse_csv(text) for name, text in files.items()
         }
+        kept = raw.samples()
+        self.samples: Optional[Dict[str, np.ndarray]] = None
+        if kept is not None:
+            data, shape, names = kept
+            cube = np.frombuffer(data, dtype="<f8").reshape(shape)
+            self.samples = {c: cube[:, :, j] for j, c in enumerate(names)}
 
     @property
     def scene(self) -> Scene:
@@ -235,6 +243,7 @@ def run(
     threads: int = 0,
     progress: Union[bool, Callable[[int], None]] = False,
     allow_long: bool = False,
+    samples: bool = False,
 ) -> Result:
     """Runs a scene (a :class:`Scene` or a scene file's path).
 
@@ -243,7 +252,9 @@ def run(
     numbers are the same for any value, and equal to ``gdsmc run``'s for the same scene and
     seed. ``progress=True`` shows a bar (tqdm in notebooks when installed); a callable is
     called with the ensembles finished since its last call. A run whose estimated work is
-    above the command's limit is refused unless ``allow_long``.
+    above the command's limit is refused unless ``allow_long``. ``samples=True`` keeps every
+    ensemble's own observables (``Result.samples``: per observable an ``(ensembles, times)``
+    array), for analyses beyond the mean and its interval.
 
     Raises :class:`SceneError` (file, line and key named), :class:`RunError`, and
     :class:`Interrupted` on Ctrl-C (with the finished ensembles' result).
@@ -252,7 +263,9 @@ def run(
         scene = Scene.from_file(os.fspath(scene))
     total = ensembles if ensembles is not None else scene.ensembles
     with _progress(progress, total) as (callback, _):
-        raw, interrupted = _gdsmc.run(scene, n, ensembles, seed, threads, callback, allow_long)
+        raw, interrupted = _gdsmc.run(
+            scene, n, ensembles, seed, threads, callback, allow_long, samples
+        )
     if interrupted:
         asked = ensembles if ensembles is not None else scene.ensembles
         if raw.ensembles == 0:

@@ -17,7 +17,17 @@ use std::time::Duration;
 pub struct RunResult {
     scene: Scene,
     stats: RunStats,
+    /// Every ensemble's observables (`times x columns` each), when asked.
+    samples: Option<Vec<Vec<f64>>>,
 }
+
+/// Every ensemble's observables as Python gets them: little-endian f64 bytes, their shape
+/// `(ensembles, times, columns)` and the column names.
+type Samples<'py> = (
+    Bound<'py, pyo3::types::PyBytes>,
+    (usize, usize, usize),
+    Vec<String>,
+);
 
 /// How often the waiting thread looks for Ctrl-C and reports progress.
 const POLL: Duration = Duration::from_millis(50);
@@ -84,9 +94,10 @@ pub(crate) fn polled<T: Send>(
 /// flags are) on `threads` threads (0: all cores). Returns the result and whether a
 /// KeyboardInterrupt stopped it early (the result then covers the ensembles finished, exactly
 /// those of a shorter run). `progress(k)` is called with the ensembles finished since its last
-/// call.
+/// call. With `samples` the result keeps every ensemble's observables
+/// ([`RunResult::samples`]).
 #[pyfunction]
-#[pyo3(signature = (scene, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false))]
+#[pyo3(signature = (scene, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false, samples = false))]
 #[allow(clippy::too_many_arguments)]
 pub fn run(
     py: Python<'_>,
@@ -97,17 +108,28 @@ pub fn run(
     threads: usize,
     progress: Option<Bound<'_, PyAny>>,
     allow_long: bool,
+    samples: bool,
 ) -> PyResult<(RunResult, bool)> {
     let mut s = scene.clone();
     for o in sc::Override::run_keywords(n, ensembles, seed) {
         s = s.with(o)?;
     }
     runner::estimate::check(s.scene(), threads, allow_long).map_err(to_py)?;
+    let mut kept = Vec::new();
     let (stats, interrupted) = polled(py, progress.as_ref(), |stop, advance| {
-        runner::run_interruptible(s.scene(), threads, advance, stop)
+        if samples {
+            runner::run_with_samples(s.scene(), threads, advance, stop, &mut kept)
+        } else {
+            runner::run_interruptible(s.scene(), threads, advance, stop)
+        }
     })?;
     let stats = stats.map_err(to_py)?;
-    Ok((RunResult { scene: s, stats }, interrupted))
+    let result = RunResult {
+        scene: s,
+        stats,
+        samples: samples.then_some(kept),
+    };
+    Ok((result, interrupted))
 }
 
 #[pymethods]
@@ -145,6 +167,21 @@ impl RunResult {
             .into_iter()
             .map(|(name, bytes)| (name, String::from_utf8_lossy(&bytes).into_owned()))
             .collect())
+    }
+
+    /// Every ensemble's observables when the run kept them (`samples=True`): the values as
+    /// little-endian f64 bytes, ensemble-major then time then column, with the shape
+    /// `(ensembles, times, columns)` and the column names; `None` otherwise.
+    fn samples<'py>(&self, py: Python<'py>) -> Option<Samples<'py>> {
+        let rows = self.samples.as_ref()?;
+        let bytes: Vec<u8> = rows
+            .iter()
+            .flatten()
+            .flat_map(|x| x.to_le_bytes())
+            .collect();
+        let shape = (rows.len(), self.stats.times.len(), self.stats.names.len());
+        let names = self.stats.names.iter().map(|n| n.to_string()).collect();
+        Some((pyo3::types::PyBytes::new(py, &bytes), shape, names))
     }
 
     /// The summary the command prints.

@@ -186,6 +186,29 @@ pub fn run_interruptible(
     Ok(stats_of(scene, totals, clock.timing()))
 }
 
+/// As [`run_interruptible`], keeping every ensemble's own observables: `samples` receives,
+/// per ensemble in order (the finished prefix when stopped), its values at every observation
+/// time, row-major (`times x columns`, the columns of [`columns::names`]): what an analysis
+/// beyond the mean and its interval needs (a bootstrap, the spread of a fitted exponent).
+pub fn run_with_samples(
+    scene: &Scene,
+    threads: usize,
+    progress: &(dyn Fn(u64) + Sync),
+    stop: &AtomicBool,
+    samples: &mut Vec<Vec<f64>>,
+) -> Result<RunStats, Error> {
+    let clock = Clock::start(threads);
+    let mut totals = Totals::new(scene);
+    let width = scene.times().len() * names(scene).len();
+    job(scene, clock.threads, progress, stop, |job| {
+        job.fold(0..scene.ensembles(), &mut totals, &mut |_, row, _| {
+            samples.push(row[..width].to_vec());
+            Ok(())
+        })
+    })?;
+    Ok(stats_of(scene, totals, clock.timing()))
+}
+
 /// Runs `f` with the job of the scene's ensembles (on the scene's validated model).
 fn job<T>(
     scene: &Scene,

@@ -1,0 +1,126 @@
+"""The Python package's analysis side: charts (Result.plot, Swept.plot), each ensemble's own
+samples, integer columns, errors in Python's words, and the example notebooks run headless."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import gdsmc
+
+ROOT = Path(__file__).resolve().parents[2]
+SCENES = ROOT / "scenes"
+
+
+def execute_notebook(name):
+    """Executes python/examples/NAME.ipynb headless; returns its code cells' outputs, none of
+    them an error."""
+    nbformat = pytest.importorskip("nbformat")
+    nbclient = pytest.importorskip("nbclient")
+    pytest.importorskip("matplotlib")
+    path = ROOT / "python" / "examples" / f"{name}.ipynb"
+    nb = nbformat.read(path, as_version=4)
+    client = nbclient.NotebookClient(
+        nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}
+    )
+    client.execute()
+    outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])]
+    assert not [o for o in outputs if o.get("output_type") == "error"]
+    return outputs
+
+
+def test_the_notebook_runs_headless():
+    outputs = execute_notebook("grw_example3")
+    text = "".join(o.get("text", "") for o in outputs if o.get("output_type") == "stream")
+    assert "inside the 99.9% interval" in text
+    assert any("image/png" in o.get("data", {}) for o in outputs)
+
+
+@pytest.mark.parametrize(
+    "name, words",
+    [
+        ("sweep_white_noise", "half-widths"),
+        ("cooling_state", "collisions per particle at the end"),
+        ("mixture", "Garzó and Dufty"),
+    ],
+)
+def test_the_other_notebooks_run_headless(name, words):
+    """The sweep, cooling-state and mixture notebooks run without an error, draw, and print."""
+    outputs = execute_notebook(name)
+    text = "".join(o.get("text", "") for o in outputs if o.get("output_type") == "stream")
+    assert words in text, text
+    assert any("image/png" in o.get("data", {}) for o in outputs)
+
+
+def test_plot_draws_the_mean_band_and_references():
+    """r.plot draws the mean, its band and each reference of the observable (as summary.json
+    pairs them), on log axes where the times and values span decades; s.plot a series per
+    group with every reference; a bad name or axis is refused in Python's words."""
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    r = gdsmc.run(SCENES / "grw-example3.toml", n=64, ensembles=4, seed=2)
+    ax = r.plot("T")
+    refs = r.references_of("T")
+    assert set(refs) == {"T_exact", "T_mean_n"}
+    assert len(ax.lines) == 1 + len(refs)
+    assert ax.get_xscale() == "linear" and ax.get_yscale() == "linear"
+    assert "T_mean_n" in " ".join(t.get_text() for t in ax.get_legend().get_texts())
+    ax = r.plot("T_bulk", axis="collisions")
+    assert ax.get_xlabel().startswith("collisions per particle")
+    assert np.array_equal(ax.lines[0].get_xdata(), r.mean["s"])
+    with pytest.raises(KeyError, match="no observable 'nope'"):
+        r.plot("nope")
+    with pytest.raises(ValueError, match="axis must be"):
+        r.plot("T", axis="t")
+    # A cooling gas observed at log-spaced times: log t and log T, Haff's law beside.
+    hcs = gdsmc.run(SCENES / "hcs-hard-spheres.toml", n=128, ensembles=2)
+    ax = hcs.plot("T_bulk")
+    assert ax.get_xscale() == "log" and ax.get_yscale() == "log"
+    assert {"T_bulk_MA", "T_bulk_sonine"} <= set(hcs.references_of("T_bulk"))
+    s = gdsmc.sweep(
+        SCENES / "grw-example3.toml",
+        {"collisions.restitution": [0.5, 0.8], "drive.beta": [1, 2]},
+        n=64,
+        ensembles=2,
+    )
+    ax = s.plot("T")
+    assert len(ax.containers) == 2  # one error-bar series per drive.beta
+    legend = " ".join(t.get_text() for t in ax.get_legend().get_texts())
+    # Each reference's source once, with the first group's curve, not once per series.
+    assert legend.count("(GRW (13)-(14))") == 1, legend
+    assert legend.count("(exact ensemble mean") == 1, legend
+    assert legend.count("T_exact") == 2 and legend.count("T_mean_n") == 2, legend
+    with pytest.raises(ValueError, match="numeric varied key"):
+        s.plot("T", x="seed")
+
+
+def test_integers_errors_and_the_sweep_total_in_pythons_words():
+    """sweep.csv's counts come back as integers; a bad keyword is named as the keyword (not
+    the command's flag); a sweep tells its bar the total before it runs."""
+    s = gdsmc.sweep(SCENES / "grw-example3.toml", "drive.beta=1,2", n=64, ensembles=2, seed=3)
+    for c in ("point", "seed", "ensembles", "window_points"):
+        assert s.table[c].dtype == np.int64, c
+    assert list(s.table["seed"]) == [3, 4]
+    with pytest.raises(gdsmc.SceneError) as e:
+        gdsmc.run(SCENES / "grw-example3.toml", ensembles=0)
+    assert "ensembles=0" in str(e.value) and "--ensembles" not in str(e.value)
+    scene = gdsmc.Scene.from_file(str(SCENES / "grw-example3.toml"))
+    totals = []
+    gdsmc._gdsmc.sweep(scene, ["drive.beta=1,2,3"], False, 64, 2, None, 0, None, False, totals.append)
+    assert totals == [6]
+    bar = gdsmc._TextBar(None)
+    gdsmc._set_total(bar, 6)
+    assert bar.total == 6
+
+
+def test_samples_are_every_ensembles_own_values():
+    """run(samples=True) keeps each ensemble's observables: their mean over the ensembles is the
+    result's mean (to rounding), the first ensemble is the same whatever the ensemble count,
+    and a run without it keeps none."""
+    r = gdsmc.run(SCENES / "grw-example3.toml", n=64, ensembles=5, seed=3, samples=True)
+    assert r.samples["T"].shape == (5, len(r.times))
+    for c in ("T", "a2", "s"):
+        assert np.allclose(r.samples[c].mean(axis=0), r.mean[c], rtol=1e-12, atol=1e-15), c
+    one = gdsmc.run(SCENES / "grw-example3.toml", n=64, ensembles=1, seed=3, samples=True)
+    assert np.array_equal(one.samples["T"][0], r.samples["T"][0])
+    assert gdsmc.run(SCENES / "grw-example3.toml", n=64, ensembles=2).samples is None
