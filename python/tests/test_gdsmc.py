@@ -1,5 +1,5 @@
 """The Python package against the command: the same numbers for the same scene and seed, the
-same validation, Ctrl-C keeping the finished ensembles, and the example notebook run headless.
+same validation, Ctrl-C keeping the finished ensembles (charts, samples and notebooks: test_analysis.py).
 
 The command is GDSMC_BIN or target/release/gdsmc (built by `cargo build --release -p gdsmc`).
 """
