@@ -60,6 +60,21 @@ pub struct Job {
     pub fresh: bool,
     /// Chart formats.
     pub format: Formats,
+    /// Start every ensemble from this state file (`--initial-state`) instead of the scene's
+    /// initial distribution.
+    pub initial_state: Option<PathBuf>,
+    /// Save every ensemble's particles at the last observation to this file (`--save-state`).
+    pub save_state: Option<PathBuf>,
+}
+
+/// The refusal of a state file where a run is split (shards, MPI ranks): not yet supported.
+fn state_refused(how: &str) -> Error {
+    Error::Argument {
+        flag: "--save-state/--initial-state".into(),
+        message: format!(
+            "are not supported with {how} yet: run the state's ensembles in one process"
+        ),
+    }
 }
 
 /// What a job did, for the caller to show.
@@ -92,18 +107,65 @@ impl Job {
         let shard = self.shard()?;
         // Absurd work is refused before anything is allocated or run.
         let work = run::estimate::check(sc, self.threads, self.allow_long)?;
+        let states = self.initial_state.is_some() || self.save_state.is_some();
         #[cfg(feature = "mpi")]
         if let Some(w) = run::mpi::World::init() {
+            if states {
+                return Err(state_refused("an MPI run"));
+            }
             return self.mpi(&w, shard);
         }
         if let Some((k, s)) = shard {
+            if states {
+                return Err(state_refused("--shard"));
+            }
             return self.run_shard(k, s, watch);
+        }
+        // The state files are checked before anything runs or is written.
+        let initial = self
+            .initial_state
+            .as_deref()
+            .map(run::state::StateReader::open)
+            .transpose()?;
+        if let Some(r) = &initial {
+            r.check(sc)?;
         }
         // The output place is prepared (and shown writable) before any simulation.
         let dir = self.dir(sc.name());
         let set = OutputSet::prepare(&dir)?;
+        let save = self
+            .save_state
+            .as_deref()
+            .map(|p| {
+                let from = initial.as_ref().map(|r| &r.header);
+                let header = run::state::StateHeader::of(sc, sc.ensembles(), from);
+                run::state::StateWriter::create(p, header)
+            })
+            .transpose()?;
+        let io = run::StateIo {
+            initial: initial.as_ref(),
+            save: save.as_ref(),
+        };
         let file = run::journal::beside(&dir, run::journal::Of::Run);
-        let r = self.journaled(&file, None, 0..sc.ensembles(), watch)?;
+        if states {
+            watch.note(
+                "note: a run with a state file starts anew (its journal records no state and \
+                 is not continued)",
+            );
+        }
+        let r = self.journaled(&file, None, 0..sc.ensembles(), (io, states), watch);
+        let r = match (r, save) {
+            (Ok(r), Some(w)) if r.stats.ensembles > 0 => {
+                w.finish(r.stats.ensembles)?;
+                r
+            }
+            (r, w) => {
+                if let Some(w) = w {
+                    w.abandon();
+                }
+                r?
+            }
+        };
         let stats = r.stats;
         let complete = stats.ensembles == sc.ensembles();
         if !complete {
@@ -126,7 +188,19 @@ impl Job {
                 return Err(Error::Interrupted);
             }
         }
-        let mut text = write(set, sc, &stats, &dir, self.format)?;
+        // The references are solved from the scene's start: they hold for a continuation of
+        // the scene's own process, not for other velocities.
+        let refs = match &initial {
+            Some(r) if !r.continues(sc) => {
+                watch.note(
+                    "note: the state file is not a sample of this scene's process (other \
+                     physics or initial distribution): no reference is drawn or judged",
+                );
+                Vec::new()
+            }
+            _ => for_scene(sc),
+        };
+        let mut text = write_with(set, sc, &stats, &dir, self.format, &refs)?;
         let _ = writeln!(
             text,
             "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)",
@@ -147,13 +221,15 @@ impl Job {
             .unwrap_or_else(|| PathBuf::from("out").join(name))
     }
 
-    /// Runs ensembles `range` (shard `shard`, or the whole run) journaled in `file`, and
-    /// tells the watcher what the journal held.
+    /// Runs ensembles `range` (shard `shard`, or the whole run) journaled in `file` (anew when
+    /// `fresh`), from and to the state files of `state`, and tells the watcher what the
+    /// journal held.
     fn journaled(
         &self,
         file: &Path,
         shard: Option<(u64, u64)>,
         range: std::ops::Range<u64>,
+        (state, fresh): (run::StateIo<'_>, bool),
         watch: &dyn Watch,
     ) -> Result<run::JournalRun, Error> {
         let job = Journaled {
@@ -161,7 +237,8 @@ impl Job {
             header: run::journal::Header::new(&self.source, shard, range.clone()),
             path: file,
             threads: self.threads,
-            fresh: self.fresh,
+            fresh: self.fresh || fresh,
+            state,
         };
         watch.begin(range.end - range.start);
         let r = job.run(&|k| watch.advance(k), watch.stop());
@@ -198,7 +275,13 @@ impl Job {
             source,
         })?;
         let file = dir.join(shard::file_name(sc.name(), k, s));
-        let r = self.journaled(&file, Some((k, s)), range.clone(), watch)?;
+        let r = self.journaled(
+            &file,
+            Some((k, s)),
+            range.clone(),
+            Default::default(),
+            watch,
+        )?;
         let done = r.stats.ensembles;
         let complete = done == range.end - range.start;
         if !complete {
@@ -294,9 +377,20 @@ pub fn write(
     dir: &Path,
     format: Formats,
 ) -> Result<String, Error> {
-    let refs = for_scene(scene);
-    let files = report::commit_run(set, scene, stats, &refs, format)?;
-    let mut text = report::summary::text(scene, stats, &refs);
+    write_with(set, scene, stats, dir, format, &for_scene(scene))
+}
+
+/// [`write`] with the references `refs`.
+fn write_with(
+    set: OutputSet,
+    scene: &Scene,
+    stats: &RunStats,
+    dir: &Path,
+    format: Formats,
+    refs: &[crate::reference::curves::ReferenceCurve],
+) -> Result<String, Error> {
+    let files = report::commit_run(set, scene, stats, refs, format)?;
+    let mut text = report::summary::text(scene, stats, refs);
     text.push_str(&wrote(&files, dir));
     Ok(text)
 }

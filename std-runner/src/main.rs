@@ -63,6 +63,17 @@ enum Command {
         /// seed left (by default it is continued; the result is the same either way).
         #[arg(long)]
         fresh: bool,
+        /// Save every ensemble's particles at the last observation into FILE (docs/state.md:
+        /// a versioned binary file, physical velocities), to continue the run later with
+        /// --initial-state. A file gdsmc did not write is refused, not replaced.
+        #[arg(long, value_name = "FILE")]
+        save_state: Option<PathBuf>,
+        /// Start every ensemble from FILE (written by --save-state) at its time instead of the
+        /// scene's initial distribution: the scene must have its particles and observe from
+        /// that time on (--set observe.t_start=T --set observe.t_end=LATER); ensemble k
+        /// continues from record k with a stream no earlier segment used.
+        #[arg(long, value_name = "FILE")]
+        initial_state: Option<PathBuf>,
     },
     /// Run a parameter study: the scene at every value of one or more keys, one table.
     ///
@@ -258,6 +269,8 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
             format,
             shard,
             fresh,
+            save_state,
+            initial_state,
         } => {
             let job = gdsmc_runner::job::Job {
                 source: flags.source(&path)?,
@@ -267,6 +280,8 @@ fn run(cli: Cli) -> Result<(), gdsmc_runner::Error> {
                 out,
                 fresh,
                 format,
+                initial_state,
+                save_state,
             };
             let outcome = job.run(&gdsmc_runner::terminal::Terminal::install())?;
             print!("{}", outcome.text);

@@ -17,6 +17,7 @@ mod limits;
 mod mutation;
 mod output_set;
 mod reproduce_verdicts;
+mod state;
 mod steady_summary;
 mod sweep;
 mod sweep_charts;

@@ -30,6 +30,8 @@ fn job(out: PathBuf) -> Job {
         out: Some(out),
         fresh: false,
         format: "svg".parse().unwrap(),
+        initial_state: None,
+        save_state: None,
     }
 }
 

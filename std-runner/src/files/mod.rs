@@ -26,7 +26,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// Distinguishes the temporary names of one process.
 static TEMPORARIES: AtomicU64 = AtomicU64::new(0);
 
-fn write_err(path: &Path) -> impl Fn(std::io::Error) -> Error + '_ {
+pub(crate) fn write_err(path: &Path) -> impl Fn(std::io::Error) -> Error + '_ {
     move |source| Error::Write {
         path: path.to_path_buf(),
         source,
@@ -35,7 +35,7 @@ fn write_err(path: &Path) -> impl Fn(std::io::Error) -> Error + '_ {
 
 /// `.NAME.partial-PID-K` beside `path`, created exclusively (`O_CREAT | O_EXCL`: never an
 /// existing file, never through a link): the file and its name.
-fn create_temporary(path: &Path) -> Result<(File, PathBuf), Error> {
+pub(crate) fn create_temporary(path: &Path) -> Result<(File, PathBuf), Error> {
     let name = path
         .file_name()
         .map_or("out".into(), |n| n.to_string_lossy());

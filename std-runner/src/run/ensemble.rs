@@ -15,6 +15,8 @@ use gdsmc_core::rng::Xoshiro256PlusPlus;
 use gdsmc_core::sample::MaxwellianMixture;
 use gdsmc_core::vec3::Vec3;
 
+use super::state::{StateReader, StateWriter, continued};
+
 /// The initial distribution of a scene as a core sampler.
 pub fn initial_sampler(scene: &Scene) -> MaxwellianMixture<MAX_COMPONENTS> {
     scene.model().initial().clone()
@@ -80,34 +82,66 @@ pub fn system_buffer(model: &Model) -> Result<SystemBuffer, crate::Error> {
     Ok((particle_buffer(model.n())?, spin_buffer(model)?))
 }
 
-/// Runs one ensemble of `scene` (whose physics `model` is) from the generator `rng` in the
-/// buffers `buf` (from [`system_buffer`]; their contents are overwritten): the observables at
-/// every observation time, row-major (`times x COLUMNS`), and the event counts.
+/// The state files of a run: the one it starts from and the one it saves, when asked.
+#[derive(Clone, Copy, Default)]
+pub struct StateIo<'a> {
+    /// Each ensemble starts from this state's record at its time (`--initial-state`).
+    pub initial: Option<&'a StateReader>,
+    /// Each ensemble's particles at the last observation go here (`--save-state`).
+    pub save: Option<&'a StateWriter>,
+}
+
+/// Runs ensemble `k` of `scene` (whose physics `model` is) from the generator `rng` in the
+/// buffers `buf` (from [`system_buffer`]; their contents are overwritten), from the scene's
+/// initial distribution or the state `io.initial`, saving its last particles to `io.save`:
+/// the observables at every observation time, row-major (`times x COLUMNS`), and the event
+/// counts.
 pub fn run_ensemble(
     scene: &Scene,
     model: &Model,
     mut rng: Xoshiro256PlusPlus,
     buf: &mut SystemBuffer,
-) -> Result<(Vec<f64>, Counts), EnsembleError> {
-    let at0 = |error| EnsembleError { t: 0.0, error };
+    (k, io): (u64, &StateIo<'_>),
+) -> Result<(Vec<f64>, Counts), crate::Error> {
+    let ensemble = |t0: f64| {
+        move |error| crate::Error::Engine {
+            ensemble: k,
+            message: EnsembleError { t: t0, error }.to_string(),
+        }
+    };
     let (particles, spins) = buf;
     let mut p = if spins.is_empty() {
         Particles::new(particles)
     } else {
         Particles::with_spins(particles, spins)
     }
-    .map_err(|_| at0(EngineError::ParticleCount))?;
-    let (engine, obs0) = model.launch(&mut p, 0.0, &mut rng).map_err(at0)?;
-    observe(scene, engine, obs0, &mut p, &mut rng)
+    .map_err(|_| ensemble(0.0)(EngineError::ParticleCount))?;
+    // From the scene's initial distribution at t = 0, or from a saved state at its time (its
+    // collisions per particle counted on).
+    let (t0, s0, (engine, obs0)) = match io.initial {
+        None => (
+            0.0,
+            0.0,
+            model.launch(&mut p, 0.0, &mut rng).map_err(ensemble(0.0))?,
+        ),
+        Some(state) => {
+            let t0 = state.header.time;
+            let s0 = state.get(k, &mut p)?;
+            rng = continued(rng, state.header.segment);
+            (t0, s0, model.start(&mut p, t0).map_err(ensemble(t0))?)
+        }
+    };
+    observe(scene, engine, (t0, s0, obs0), &mut p, &mut rng, (k, io))
 }
 
 fn observe<E: EventLoop>(
     scene: &Scene,
     mut engine: E,
-    obs0: Observables,
+    (t0, s0, obs0): (f64, f64, Observables),
     p: &mut Particles<'_>,
     rng: &mut Xoshiro256PlusPlus,
-) -> Result<(Vec<f64>, Counts), EnsembleError> {
+    (k, io): (u64, &StateIo<'_>),
+) -> Result<(Vec<f64>, Counts), crate::Error> {
     let mut out = Vec::with_capacity(scene.times().len() * (COLUMNS.len() + 3) + 1);
     // Diagnostics draw from their own stream, so they never change the trajectory.
     let mut diag = rng.clone();
@@ -122,13 +156,17 @@ fn observe<E: EventLoop>(
     let cooling = (scene.collisional_pairs() > 0)
         .then(|| CoolingRates::new(scene))
         .flatten();
+    let mut last_s = s0;
     for (ti, &t) in scene.times().iter().enumerate() {
-        let obs = if t == 0.0 {
+        let obs = if t == t0 {
             obs0
         } else {
             engine
                 .advance_to(p, t, rng)
-                .map_err(|error| EnsembleError { t, error })?
+                .map_err(|error| crate::Error::Engine {
+                    ensemble: k,
+                    message: EnsembleError { t, error }.to_string(),
+                })?
         };
         // Bulk velocity and temperature in the stored units, once per observation, for the
         // diagnostics reduced by v0 (exact for a gas stored rescaled, whose physical
@@ -162,7 +200,9 @@ fn observe<E: EventLoop>(
             }
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
-        out.push(2.0 * engine.counts().collisions as f64 / p.len() as f64);
+        let s = s0 + 2.0 * engine.counts().collisions as f64 / p.len() as f64;
+        out.push(s);
+        last_s = s;
         // The scene allows collisional pairs with a constant restitution law only.
         if let (true, Some((bulk, t_bulk)), Some(alpha), true) = (
             scene.collisional_pairs() > 0,
@@ -193,6 +233,10 @@ fn observe<E: EventLoop>(
                 ));
             }
         }
+    }
+    // The state at the last observation, for a continuation.
+    if let Some(w) = io.save {
+        w.put(k, p, engine.velocity_map(), last_s)?;
     }
     // The histogram of the last observation rides at the end of the row (split off in the job).
     if let Some(shells) = scene.histogram() {

@@ -18,10 +18,11 @@ pub mod mpi;
 pub mod pages;
 pub mod results;
 pub mod shard;
+pub mod state;
 pub mod totals;
 
 pub use ensemble::{
-    SystemBuffer, initial_sampler, initial_temperature, particle_buffer, run_ensemble,
+    StateIo, SystemBuffer, initial_sampler, initial_temperature, particle_buffer, run_ensemble,
     system_buffer,
 };
 pub use results::{MarginalHistogram, RunStats, ShellHistogram, SteadyStats};
@@ -51,6 +52,7 @@ struct EnsembleJob<'a> {
     threads: usize,
     progress: &'a (dyn Fn(u64) + Sync),
     stop: &'a AtomicBool,
+    state: StateIo<'a>,
 }
 
 /// What sees each finished ensemble (index, row, counts) before it is folded: the journal.
@@ -144,12 +146,8 @@ impl EnsembleJob<'_> {
                 None => system_buffer(self.model).map(|b| particles.insert(b)),
             }
             .and_then(|buf| {
-                run_ensemble(self.scene, self.model, rng.clone(), buf).map_err(|err| {
-                    Error::Engine {
-                        ensemble: start + i as u64,
-                        message: err.to_string(),
-                    }
-                })
+                let k = start + i as u64;
+                run_ensemble(self.scene, self.model, rng.clone(), buf, (k, &self.state))
             });
             (self.progress)(1);
             if tx.send((i, done)).is_err() {
@@ -180,9 +178,14 @@ pub fn run_interruptible(
 ) -> Result<RunStats, Error> {
     let clock = Clock::start(threads);
     let mut totals = Totals::new(scene);
-    job(scene, clock.threads, progress, stop, |job| {
-        job.fold(0..scene.ensembles(), &mut totals, &mut |_, _, _| Ok(()))
-    })?;
+    job(
+        scene,
+        clock.threads,
+        progress,
+        stop,
+        StateIo::default(),
+        |job| job.fold(0..scene.ensembles(), &mut totals, &mut |_, _, _| Ok(())),
+    )?;
     Ok(stats_of(scene, totals, clock.timing()))
 }
 
@@ -200,12 +203,19 @@ pub fn run_with_samples(
     let clock = Clock::start(threads);
     let mut totals = Totals::new(scene);
     let width = scene.times().len() * names(scene).len();
-    job(scene, clock.threads, progress, stop, |job| {
-        job.fold(0..scene.ensembles(), &mut totals, &mut |_, row, _| {
-            samples.push(row[..width].to_vec());
-            Ok(())
-        })
-    })?;
+    job(
+        scene,
+        clock.threads,
+        progress,
+        stop,
+        StateIo::default(),
+        |job| {
+            job.fold(0..scene.ensembles(), &mut totals, &mut |_, row, _| {
+                samples.push(row[..width].to_vec());
+                Ok(())
+            })
+        },
+    )?;
     Ok(stats_of(scene, totals, clock.timing()))
 }
 
@@ -215,6 +225,7 @@ fn job<T>(
     threads: usize,
     progress: &(dyn Fn(u64) + Sync),
     stop: &AtomicBool,
+    state: StateIo<'_>,
     f: impl FnOnce(&EnsembleJob) -> Result<T, Error>,
 ) -> Result<T, Error> {
     // `steady_from` is a public index: one set by hand past the times is refused, not run.
@@ -236,6 +247,7 @@ fn job<T>(
         threads,
         progress,
         stop,
+        state,
     })
 }
 
@@ -282,6 +294,8 @@ pub struct Journaled<'a> {
     pub threads: usize,
     /// Start anew even when the journal holds finished ensembles of this run.
     pub fresh: bool,
+    /// The state files it starts from and saves to (none: from the scene, nothing saved).
+    pub state: StateIo<'a>,
 }
 
 /// What a journaled run found and did.
@@ -342,7 +356,7 @@ impl Journaled<'_> {
         progress(resumed);
         let range = self.header.start + resumed..self.header.end;
         let key = self.header.key();
-        let ran = job(scene, clock.threads, progress, stop, |job| {
+        let ran = job(scene, clock.threads, progress, stop, self.state, |job| {
             job.fold(range, &mut totals, &mut |e, row, c| {
                 writer.append(&journal::ensemble_record(key, e, row, c))
             })

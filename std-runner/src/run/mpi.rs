@@ -145,6 +145,7 @@ pub fn run(
         path: &path,
         threads,
         fresh: false,
+        state: Default::default(),
     };
     let ran: Result<JournalRun, Error> = job.run(&|_| {}, &AtomicBool::new(false));
     match &ran {

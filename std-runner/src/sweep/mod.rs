@@ -240,6 +240,7 @@ impl Sweep {
                         path: &file,
                         threads: self.threads,
                         fresh: self.fresh,
+                        state: Default::default(),
                     };
                     let r = job.run(&|k| watch.advance(k), watch.stop());
                     let r = match r {

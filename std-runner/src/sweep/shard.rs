@@ -136,6 +136,7 @@ impl Sweep {
                 path: &file,
                 threads: self.threads,
                 fresh: self.fresh,
+                state: Default::default(),
             };
             let r = match job.run(&|e| watch.advance(e), watch.stop()) {
                 Ok(r) => r,

@@ -1,0 +1,364 @@
+//! A run's particle state: saved at its last observation (`gdsmc run --save-state FILE`) and
+//! read to continue it (`--initial-state FILE`). docs/state.md describes the format; it is
+//! versioned and every read is checked (magic, version, size, the scene it may continue).
+//!
+//! The file: the 16 bytes `GDSMC-STATE\0v001`, a header of [`HEADER_BYTES`] bytes holding one
+//! JSON object ([`StateHeader`], padded with spaces), then one record per ensemble in
+//! ensemble order: its collisions per particle so far (`s`, one little-endian f64), its `n`
+//! physical velocities (`3 n` little-endian f64, particle `i`'s `x, y, z` at `3 i`), then for
+//! rough particles its `n` rim velocities likewise. Velocities are physical (a cooling gas
+//! stored rescaled is written in the scene's units).
+//!
+//! A continuation starts ensemble `k` at the state's time from record `k`, with the seed's
+//! stream of ensemble `k` long-jumped `2 (segment + 1)` times (Xoshiro256++'s long jump: 2^192
+//! draws; a run's ensembles and their diagnostics use the first two of these blocks), so no
+//! segment repeats another's random numbers: a continuation is a pure function of the scene,
+//! the seed and the state file. It is not bit for bit one longer run: the engine starts again
+//! at the state's time (its majorant from the velocities, GRW step 1).
+
+use crate::Error;
+use crate::scene::Scene;
+use gdsmc_core::engine::Frame;
+use gdsmc_core::particles::Particles;
+use gdsmc_core::vec3::Vec3;
+use serde::{Deserialize, Serialize};
+use std::fs::File;
+use std::io::{Read, Seek, SeekFrom, Write};
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+/// The first bytes of every state file: the name and the format's version.
+pub const MAGIC: &[u8; 16] = b"GDSMC-STATE\0v001";
+
+/// The header's fixed size in bytes (its JSON padded with spaces).
+pub const HEADER_BYTES: usize = 4096;
+
+/// What a state file holds, as its JSON header says.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StateHeader {
+    /// The format's version (1).
+    pub version: u32,
+    /// The scene's name.
+    pub scene: String,
+    /// The run's seed.
+    pub seed: u64,
+    /// The segment that wrote it: 0 for a run from the scene's initial distribution, one more
+    /// for each continuation.
+    pub segment: u64,
+    /// The time of the state (the run's last observation).
+    pub time: f64,
+    /// Particles per ensemble.
+    pub n: usize,
+    /// The dimension of velocity space.
+    pub dimension: usize,
+    /// Ensembles (records).
+    pub ensembles: u64,
+    /// Whether each record holds rim velocities (rough particles).
+    pub spins: bool,
+    /// A mixture's particles per species, in the order of the records' particles (empty: one
+    /// species).
+    pub species: Vec<usize>,
+    /// The process the records are samples of ([`origin`] of the scene that ran from t = 0,
+    /// kept by continuations of the same physics; `"none"` once other physics continued it):
+    /// the references of a scene of that origin hold for a continuation.
+    pub origin: String,
+    /// The gdsmc version that wrote it.
+    pub gdsmc_version: String,
+}
+
+impl StateHeader {
+    /// The header of the state `scene`'s run leaves: its last observation, `ensembles`
+    /// records, after `segment`, continuing `from` (none: from the scene's initial
+    /// distribution).
+    pub fn of(scene: &Scene, ensembles: u64, from: Option<&StateHeader>) -> Self {
+        let own = origin(scene);
+        let (segment, origin) = match from {
+            None => (0, own),
+            Some(h) if h.origin == own => (h.segment + 1, own),
+            Some(h) => (h.segment + 1, "none".to_string()),
+        };
+        StateHeader {
+            version: 1,
+            scene: scene.name().to_string(),
+            seed: scene.seed(),
+            segment,
+            time: *scene
+                .times()
+                .last()
+                .expect("a scene observes at least once"),
+            n: scene.n(),
+            dimension: scene.dimension(),
+            ensembles,
+            spins: scene.physics().rotation.is_some(),
+            species: scene.physics().species.iter().map(|s| s.count).collect(),
+            origin,
+            gdsmc_version: env!("CARGO_PKG_VERSION").to_string(),
+        }
+    }
+
+    /// A record's size in bytes.
+    fn record_bytes(&self) -> u64 {
+        (8 + self.n * 3 * 8 * if self.spins { 2 } else { 1 }) as u64
+    }
+
+    /// The file's size in bytes.
+    fn file_bytes(&self) -> u64 {
+        (MAGIC.len() + HEADER_BYTES) as u64 + self.ensembles * self.record_bytes()
+    }
+
+    /// The magic and the padded JSON.
+    fn bytes(&self) -> Vec<u8> {
+        let mut b = MAGIC.to_vec();
+        let json = serde_json::to_vec(self).expect("a header serializes");
+        assert!(json.len() <= HEADER_BYTES, "a state header fits its bytes");
+        b.extend(json);
+        b.resize(MAGIC.len() + HEADER_BYTES, b' ');
+        b
+    }
+}
+
+/// The identity of the process a scene runs from t = 0: its physics (particles, kernel, law,
+/// drive, scheme, the initial distribution) as the FNV-1a hash of their `Debug` text, in hex.
+/// Seeds, ensembles and observation times are not part of it: they do not change the process.
+pub fn origin(scene: &Scene) -> String {
+    let text = format!("{:?}", scene.physics());
+    let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    });
+    format!("{hash:016x}")
+}
+
+/// The generator of ensemble `k` of a segment after `segment` (module docs): ensemble `k`'s
+/// stream long-jumped `2 (segment + 1)` times.
+pub fn continued(
+    mut rng: gdsmc_core::rng::Xoshiro256PlusPlus,
+    segment: u64,
+) -> gdsmc_core::rng::Xoshiro256PlusPlus {
+    for _ in 0..2 * (segment + 1) {
+        rng.long_jump();
+    }
+    rng
+}
+
+/// Little-endian f64s of `3 len` components from `f` (velocities or rim velocities).
+fn vectors(it: impl Iterator<Item = Vec3>) -> Vec<u8> {
+    it.flat_map(|v| v.to_array())
+        .flat_map(f64::to_le_bytes)
+        .collect()
+}
+
+/// A state file being written: records put as ensembles finish (from any thread), renamed
+/// into place by [`StateWriter::finish`]; until then it is a temporary file beside `path`.
+pub struct StateWriter {
+    file: Mutex<File>,
+    tmp: PathBuf,
+    path: PathBuf,
+    header: StateHeader,
+}
+
+impl StateWriter {
+    /// Starts the state of `header.ensembles` ensembles at `path`: refused when a file is
+    /// there that gdsmc did not write (a state file is its own: it starts with [`MAGIC`]).
+    pub fn create(path: &Path, header: StateHeader) -> Result<Self, Error> {
+        crate::files::check_own(path, "GDSMC-STATE")?;
+        let (mut file, tmp) = crate::files::create_temporary(path)?;
+        file.write_all(&header.bytes())
+            .and_then(|()| file.set_len(header.file_bytes()))
+            .map_err(crate::files::write_err(path))?;
+        Ok(StateWriter {
+            file: Mutex::new(file),
+            tmp,
+            path: path.to_path_buf(),
+            header,
+        })
+    }
+
+    /// Writes ensemble `k`'s particles `p` (stored velocities mapped by `frame` to physical
+    /// ones) and its collisions per particle so far, `s`.
+    pub fn put(&self, k: u64, p: &Particles<'_>, frame: Frame, s: f64) -> Result<(), Error> {
+        let n = p.len();
+        let mut bytes = s.to_le_bytes().to_vec();
+        bytes.extend(vectors(
+            (0..n).map(|i| frame.offset + frame.scale * p.velocity(i)),
+        ));
+        if self.header.spins {
+            bytes.extend(vectors((0..n).map(|i| frame.scale * p.spin(i))));
+        }
+        let at = (MAGIC.len() + HEADER_BYTES) as u64 + k * self.header.record_bytes();
+        let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
+        f.seek(SeekFrom::Start(at))
+            .and_then(|_| f.write_all(&bytes))
+            .map_err(crate::files::write_err(&self.path))
+    }
+
+    /// Finishes the file with the first `ensembles` records (those of the statistics: an
+    /// interrupted run keeps its finished prefix) and renames it into place.
+    pub fn finish(self, ensembles: u64) -> Result<(), Error> {
+        let header = StateHeader {
+            ensembles,
+            ..self.header
+        };
+        let mut f = self.file.into_inner().unwrap_or_else(|e| e.into_inner());
+        let done = f
+            .seek(SeekFrom::Start(0))
+            .and_then(|_| f.write_all(&header.bytes()))
+            .and_then(|()| f.set_len(header.file_bytes()))
+            .and_then(|()| f.sync_all())
+            .and_then(|()| {
+                drop(f);
+                std::fs::rename(&self.tmp, &self.path)
+            });
+        if let Err(e) = done {
+            let _ = std::fs::remove_file(&self.tmp);
+            return Err(crate::files::write_err(&self.path)(e));
+        }
+        Ok(())
+    }
+
+    /// Drops the unfinished file.
+    pub fn abandon(self) {
+        let _ = std::fs::remove_file(&self.tmp);
+    }
+}
+
+/// A state file opened to continue from, its header checked against its size.
+pub struct StateReader {
+    file: Mutex<File>,
+    path: PathBuf,
+    /// What it holds.
+    pub header: StateHeader,
+}
+
+impl StateReader {
+    /// Opens and checks `path`: its magic, version and size.
+    pub fn open(path: &Path) -> Result<Self, Error> {
+        let bad = |why: String| Error::Argument {
+            flag: "--initial-state".into(),
+            message: format!("{}: {why}", path.display()),
+        };
+        let mut file = crate::files::open_regular(path).map_err(|e| bad(e.to_string()))?;
+        let mut head = vec![0u8; MAGIC.len() + HEADER_BYTES];
+        file.read_exact(&mut head)
+            .map_err(|_| bad("too short to be a gdsmc state file".into()))?;
+        if &head[..MAGIC.len()] != MAGIC {
+            return Err(bad(if head.starts_with(b"GDSMC-STATE") {
+                "a gdsmc state file of another format version (this gdsmc reads v001)".into()
+            } else {
+                "not a gdsmc state file (it does not start with GDSMC-STATE)".into()
+            }));
+        }
+        let header: StateHeader = serde_json::from_slice(head[MAGIC.len()..].trim_ascii_end())
+            .map_err(|e| bad(format!("its header is not readable: {e}")))?;
+        let size = file.metadata().map_err(|e| bad(e.to_string()))?.len();
+        if size != header.file_bytes() {
+            return Err(bad(format!(
+                "holds {size} bytes, but its header ({} ensembles of {} particles) makes {}: \
+                 cut short or damaged",
+                header.ensembles,
+                header.n,
+                header.file_bytes()
+            )));
+        }
+        Ok(StateReader {
+            file: Mutex::new(file),
+            path: path.to_path_buf(),
+            header,
+        })
+    }
+
+    /// Whether `scene` may continue from this state: the same particles (count, dimension,
+    /// rotation, species), no more ensembles than it holds, and every observation time at
+    /// or after its time. The refusal names the key to change.
+    pub fn check(&self, scene: &Scene) -> Result<(), Error> {
+        let h = &self.header;
+        let bad = |key: &str, why: String| Error::Argument {
+            flag: "--initial-state".into(),
+            message: format!("{}: {key} {why}", self.path.display()),
+        };
+        let species: Vec<usize> = scene.physics().species.iter().map(|s| s.count).collect();
+        if scene.n() != h.n {
+            return Err(bad(
+                "particles.n",
+                format!("is {} but the state holds {} particles", scene.n(), h.n),
+            ));
+        }
+        if scene.dimension() != h.dimension {
+            return Err(bad(
+                "particles.dimension",
+                format!(
+                    "is {} but the state's is {}",
+                    scene.dimension(),
+                    h.dimension
+                ),
+            ));
+        }
+        if scene.physics().rotation.is_some() != h.spins {
+            return Err(bad(
+                "[rotation]",
+                format!(
+                    "does not match the state's particles ({})",
+                    if h.spins { "rough" } else { "smooth" }
+                ),
+            ));
+        }
+        if species != h.species {
+            return Err(bad(
+                "[[species]]",
+                format!("count {species:?} particles, the state {:?}", h.species),
+            ));
+        }
+        if scene.ensembles() > h.ensembles {
+            return Err(bad(
+                "run.ensembles",
+                format!(
+                    "is {} but the state holds {}",
+                    scene.ensembles(),
+                    h.ensembles
+                ),
+            ));
+        }
+        let first = scene.times()[0];
+        if first < h.time {
+            return Err(bad(
+                "observe.t_start",
+                format!(
+                    "is {first} but the state is at t = {}: observe from its time on \
+                     (--set observe.t_start={} and a later observe.t_end)",
+                    h.time, h.time
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Whether the references of `scene` (solved from its initial distribution at t = 0) hold
+    /// for a run of it from this state: the state is a sample of `scene`'s own process.
+    pub fn continues(&self, scene: &Scene) -> bool {
+        self.header.origin == origin(scene)
+    }
+
+    /// Sets `p` to ensemble `k`'s particles; returns its collisions per particle so far.
+    pub fn get(&self, k: u64, p: &mut Particles<'_>) -> Result<f64, Error> {
+        let h = &self.header;
+        let mut bytes = vec![0u8; h.record_bytes() as usize];
+        let at = (MAGIC.len() + HEADER_BYTES) as u64 + k * h.record_bytes();
+        {
+            let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
+            f.seek(SeekFrom::Start(at))
+                .and_then(|_| f.read_exact(&mut bytes))
+                .map_err(|e| Error::Argument {
+                    flag: "--initial-state".into(),
+                    message: format!("{}: {e}", self.path.display()),
+                })?;
+        }
+        let x = |j: usize| f64::from_le_bytes(bytes[8 * j..8 * j + 8].try_into().expect("8 bytes"));
+        let v = |j: usize| Vec3::new(x(1 + 3 * j), x(2 + 3 * j), x(3 + 3 * j));
+        for i in 0..h.n {
+            p.set_velocity(i, v(i));
+            if h.spins {
+                p.set_spin(i, v(h.n + i));
+            }
+        }
+        Ok(x(0))
+    }
+}

@@ -1,0 +1,227 @@
+//! `--save-state` and `--initial-state` (docs/state.md): a continuation starts each ensemble
+//! from the saved particles, bit for bit (its first observation is the saved run's last), keeps
+//! the references where the state is a sample of the scene's own process and drops them where
+//! it is not, is the same for any thread count, and bad or foreign files are refused by name.
+
+use gdsmc_runner::job::{Job, Quiet};
+use gdsmc_runner::run::state::{MAGIC, StateReader};
+use gdsmc_runner::scene::{Override, Sourced};
+use std::path::{Path, PathBuf};
+
+fn root(name: &str) -> PathBuf {
+    let r = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("state")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&r);
+    std::fs::create_dir_all(&r).unwrap();
+    r
+}
+
+fn scene(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("../scenes/{name}.toml"))
+}
+
+/// A job of the shipped scene `name` at n = 64 with `ensembles`, `sets` and the state files.
+fn job(name: &str, sets: &[&str], out: &Path, states: (Option<&Path>, Option<&Path>)) -> Job {
+    let mut o: Vec<Override> = sets.iter().map(|s| Override::set(*s)).collect();
+    let given = |k: &str| sets.iter().any(|s| s.starts_with(k));
+    o.extend(Override::run_flags(
+        (!given("particles.n")).then_some(64),
+        (!given("run.ensembles")).then_some(4),
+        Some(7),
+    ));
+    Job {
+        source: Sourced::read(&scene(name), o).expect("a shipped scene"),
+        threads: 2,
+        allow_long: false,
+        shard: None,
+        out: Some(out.to_path_buf()),
+        fresh: false,
+        format: "svg".parse().unwrap(),
+        initial_state: states.0.map(Path::to_path_buf),
+        save_state: states.1.map(Path::to_path_buf),
+    }
+}
+
+/// observables.csv's header and rows.
+fn table(dir: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = std::fs::read_to_string(dir.join("observables.csv")).unwrap();
+    let mut lines = text
+        .lines()
+        .map(|l| l.split(',').map(str::to_string).collect());
+    (lines.next().unwrap(), lines.collect())
+}
+
+/// The observed columns' cells of a row (not the references).
+fn observed(header: &[String], row: &[String]) -> Vec<(String, String)> {
+    let observed: Vec<&String> = header
+        .iter()
+        .filter(|c| header.contains(&format!("{c}_ci")))
+        .collect();
+    header
+        .iter()
+        .zip(row)
+        .filter(|(c, _)| {
+            observed
+                .iter()
+                .any(|o| *o == *c || format!("{o}_ci") == **c)
+        })
+        .map(|(c, v)| (c.clone(), v.clone()))
+        .collect()
+}
+
+#[test]
+fn a_continuation_starts_where_the_saved_run_stopped() {
+    for name in ["grw-example3", "rough-hcs", "mixture-maxwell"] {
+        let r = root(name);
+        let saved = r.join("s.gdsmc-state");
+        // (A steady window inside each segment: rough-hcs's own starts later.)
+        let first = [
+            "observe.t_end=2",
+            "observe.intervals=4",
+            "observe.steady_from=1",
+        ];
+        job(name, &first, &r.join("a"), (None, Some(&saved)))
+            .run(&Quiet::default())
+            .expect("the first segment runs");
+        let h = StateReader::open(&saved).unwrap().header;
+        assert_eq!(
+            (h.segment, h.time, h.ensembles, h.n),
+            (0, 2.0, 4, 64),
+            "{name}"
+        );
+        let later = [
+            "observe.t_start=2",
+            "observe.t_end=4",
+            "observe.intervals=4",
+            "observe.steady_from=3",
+        ];
+        let next = r.join("s2.gdsmc-state");
+        job(name, &later, &r.join("b"), (Some(&saved), Some(&next)))
+            .run(&Quiet::default())
+            .expect("the continuation runs");
+        let (ha, a) = table(&r.join("a"));
+        let (hb, b) = table(&r.join("b"));
+        // The continuation's first observation is the saved run's last, bit for bit (the
+        // collisions per particle counted on from the state's).
+        assert_eq!(
+            observed(&ha, &a[a.len() - 1]),
+            observed(&hb, &b[0]),
+            "{name}"
+        );
+        assert_eq!(b[0][0], "2.0");
+        // The same process: its references are drawn (the saved run's at t = 2 too).
+        assert_eq!(ha, hb, "{name}: the same columns and references");
+        let h2 = StateReader::open(&next).unwrap().header;
+        assert_eq!(
+            (h2.segment, h2.time, &h2.origin),
+            (1, 4.0, &h.origin),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn a_continuation_is_the_same_for_any_thread_count_and_drops_foreign_references() {
+    let r = root("threads");
+    let saved = r.join("s.gdsmc-state");
+    job(
+        "grw-example3",
+        &["observe.t_end=1"],
+        &r.join("a"),
+        (None, Some(&saved)),
+    )
+    .run(&Quiet::default())
+    .unwrap();
+    let later = ["observe.t_start=1", "observe.t_end=2"];
+    let mut one = job("grw-example3", &later, &r.join("one"), (Some(&saved), None));
+    one.threads = 1;
+    one.run(&Quiet::default()).unwrap();
+    job("grw-example3", &later, &r.join("two"), (Some(&saved), None))
+        .run(&Quiet::default())
+        .unwrap();
+    let read = |d: &str| std::fs::read_to_string(r.join(d).join("observables.csv")).unwrap();
+    assert_eq!(read("one"), read("two"));
+    // Other physics from the same velocities: not a sample of its process, no references.
+    let mut other = later.to_vec();
+    other.push("collisions.restitution=0.9");
+    let foreign = r.join("foreign-state");
+    let done = job(
+        "grw-example3",
+        &other,
+        &r.join("other"),
+        (Some(&saved), Some(&foreign)),
+    )
+    .run(&Quiet::default())
+    .unwrap();
+    let (h, _) = table(&r.join("other"));
+    assert!(!h.iter().any(|c| c == "T_mean_n"), "{h:?}");
+    assert!(!done.text.contains("agrees with"), "{}", done.text);
+    assert_eq!(StateReader::open(&foreign).unwrap().header.origin, "none");
+}
+
+#[test]
+fn bad_state_files_and_mismatches_are_refused_by_name() {
+    let r = root("bad");
+    let saved = r.join("s.gdsmc-state");
+    job(
+        "grw-example3",
+        &["observe.t_end=1"],
+        &r.join("a"),
+        (None, Some(&saved)),
+    )
+    .run(&Quiet::default())
+    .unwrap();
+    let later = ["observe.t_start=1", "observe.t_end=2"];
+    let err = |sets: &[&str], file: &Path| {
+        job("grw-example3", sets, &r.join("x"), (Some(file), None))
+            .run(&Quiet::default())
+            .unwrap_err()
+            .to_string()
+    };
+    let e = err(&["observe.t_end=2"], &saved);
+    assert!(
+        e.contains("observe.t_start is 0 but the state is at t = 1"),
+        "{e}"
+    );
+    let e = err(&[later[0], later[1], "particles.n=65"], &saved);
+    assert!(
+        e.contains("particles.n is 65 but the state holds 64"),
+        "{e}"
+    );
+    let e = err(&[later[0], later[1], "run.ensembles=5"], &saved);
+    assert!(
+        e.contains("run.ensembles is 5 but the state holds 4"),
+        "{e}"
+    );
+    let notes = r.join("notes.txt");
+    std::fs::write(&notes, "my notes").unwrap();
+    let e = err(&later, &notes);
+    assert!(e.contains("too short to be a gdsmc state file"), "{e}");
+    let long = r.join("long.txt");
+    std::fs::write(&long, "my notes ".repeat(1000)).unwrap();
+    let e = err(&later, &long);
+    assert!(e.contains("not a gdsmc state file"), "{e}");
+    let mut bytes = std::fs::read(&saved).unwrap();
+    bytes.truncate(bytes.len() - 8);
+    let cut = r.join("cut.gdsmc-state");
+    std::fs::write(&cut, &bytes).unwrap();
+    let e = err(&later, &cut);
+    assert!(e.contains("cut short or damaged"), "{e}");
+    bytes[MAGIC.len() - 1] = b'9';
+    std::fs::write(&cut, &bytes).unwrap();
+    let e = err(&later, &cut);
+    assert!(e.contains("another format version"), "{e}");
+    // A file gdsmc did not write is not replaced by a saved state.
+    let e = job(
+        "grw-example3",
+        &["observe.t_end=1"],
+        &r.join("y"),
+        (None, Some(&notes)),
+    )
+    .run(&Quiet::default())
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("not written by gdsmc"), "{e}");
+    assert_eq!(std::fs::read_to_string(&notes).unwrap(), "my notes");
+}
