@@ -176,17 +176,7 @@ pub fn run_interruptible(
     progress: &(dyn Fn(u64) + Sync),
     stop: &AtomicBool,
 ) -> Result<RunStats, Error> {
-    let clock = Clock::start(threads);
-    let mut totals = Totals::new(scene);
-    job(
-        scene,
-        clock.threads,
-        progress,
-        stop,
-        StateIo::default(),
-        |job| job.fold(0..scene.ensembles(), &mut totals, &mut |_, _, _| Ok(())),
-    )?;
-    Ok(stats_of(scene, totals, clock.timing()))
+    run_seeing_rows(scene, threads, (progress, stop), &mut |_, _, _| Ok(()))
 }
 
 /// As [`run_interruptible`], keeping every ensemble's own observables: `samples` receives,
@@ -200,21 +190,30 @@ pub fn run_with_samples(
     stop: &AtomicBool,
     samples: &mut Vec<Vec<f64>>,
 ) -> Result<RunStats, Error> {
+    let width = scene.times().len() * names(scene).len();
+    run_seeing_rows(scene, threads, (progress, stop), &mut |_, row, _| {
+        samples.push(row[..width].to_vec());
+        Ok(())
+    })
+}
+
+/// Runs every ensemble of `scene` in memory, handing each finished ensemble's row to
+/// `on_row` in ensemble order before it is folded.
+fn run_seeing_rows(
+    scene: &Scene,
+    threads: usize,
+    (progress, stop): (&(dyn Fn(u64) + Sync), &AtomicBool),
+    on_row: &mut OnRow,
+) -> Result<RunStats, Error> {
     let clock = Clock::start(threads);
     let mut totals = Totals::new(scene);
-    let width = scene.times().len() * names(scene).len();
     job(
         scene,
         clock.threads,
         progress,
         stop,
         StateIo::default(),
-        |job| {
-            job.fold(0..scene.ensembles(), &mut totals, &mut |_, row, _| {
-                samples.push(row[..width].to_vec());
-                Ok(())
-            })
-        },
+        |job| job.fold(0..scene.ensembles(), &mut totals, on_row),
     )?;
     Ok(stats_of(scene, totals, clock.timing()))
 }
