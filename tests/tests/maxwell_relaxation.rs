@@ -82,3 +82,30 @@ fn large_n_follows_grw_13() {
         }
     }
 }
+
+/// The collisions per particle `s` of a Maxwell gas have an exact mean: pairs meet at
+/// `4 pi gamma C / n` each, so `E s(t) = 4 pi gamma C (n - 1)/n t` (`collision_rate` of the
+/// Maxwellian gas times `(n - 1)/n`), whatever the drive. One check at the last time (99.9%
+/// interval, no family); it also refuses the rate without the `(n - 1)/n` at this n and
+/// precision.
+#[test]
+fn collisions_per_particle_have_the_maxwell_rate() {
+    use gdsmc_runner::reference::balance::collision_rate;
+    let n = 16;
+    let s = shipped("grw-example3", n, 4_000, 103);
+    let st = run(&s);
+    let last = st.times.len() - 1;
+    let (gc, lambda) = s.physics().kernel.rate_constants();
+    let t = st.times[last];
+    let exact = collision_rate(3, gc, lambda, 1.0) * (n - 1) as f64 / n as f64 * t;
+    let (mean, ci) = at(&st, last, name::S);
+    assert!(
+        (mean - exact).abs() <= ci,
+        "s = {mean} +- {ci}, exact {exact}"
+    );
+    let without = collision_rate(3, gc, lambda, 1.0) * t;
+    assert!(
+        (mean - without).abs() > ci,
+        "the (n - 1)/n is not resolved: {mean} +- {ci}"
+    );
+}

@@ -46,6 +46,16 @@ pub fn cooling_constant(d: usize, hard: bool, gc: f64, lambda: f64, alpha: f64) 
         / gamma(df / 2.0)
 }
 
+/// A particle's collision rate in a Maxwellian gas at temperature `t` (unit mass): pairs meet at
+/// `4 pi gamma C |u|^lambda` (module docs), so in the Boltzmann limit a particle collides at
+/// `omega = 4 pi gamma C E|u|^lambda`, `E|u|^lambda = (4T)^(lambda/2) Gamma((d + lambda)/2) /
+/// Gamma(d/2)`: `4 pi gamma C` for Maxwell particles (exact), `16 sqrt(pi) gamma C sqrt(T)` for
+/// hard spheres. Its inverse is the mean free time, the natural time unit of a granular gas.
+pub fn collision_rate(d: usize, gc: f64, lambda: f64, t: f64) -> f64 {
+    let df = d as f64;
+    4.0 * PI * gc * (4.0 * t).powf(0.5 * lambda) * gamma((df + lambda) / 2.0) / gamma(df / 2.0)
+}
+
 /// The first Sonine correction `1 + 3 a2 / 16` of a hard-particle gas's cooling rate (van
 /// Noije and Ernst 1998, any `d`).
 pub fn sonine_factor(a2: f64) -> f64 {
@@ -187,6 +197,22 @@ mod tests {
         }
         // VHS with lambda = 1 and isotropic scattering in d = 3 is the hard-sphere rate.
         assert!(close(cooling_constant(3, false, gc, 1.0, al), hs));
+    }
+
+    #[test]
+    fn the_collision_rates_are_the_known_ones() {
+        let close = |x: f64, y: f64| (x - y).abs() <= 1e-13 * y;
+        for d in [2, 3] {
+            assert!(
+                close(collision_rate(d, 0.3, 0.0, 7.0), 4.0 * PI * 0.3),
+                "{d}"
+            );
+        }
+        let hs = collision_rate(3, 0.3, 1.0, 2.0);
+        assert!(close(hs, 16.0 * PI.sqrt() * 0.3 * 2f64.sqrt()), "{hs}");
+        // Disks: E|u| = sqrt(4T) Gamma(3/2) = sqrt(pi T).
+        let hd = collision_rate(2, 0.3, 1.0, 2.0);
+        assert!(close(hd, 4.0 * PI * 0.3 * (PI * 2.0).sqrt()), "{hd}");
     }
 
     #[test]

@@ -35,6 +35,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         c.clamped,
         c.collisions as f64 / stats.wall.as_secs_f64().max(1e-9)
     );
+    let _ = writeln!(s, "{}", units(scene, stats));
     if c.background > 0 {
         let _ = writeln!(
             s,
@@ -380,4 +381,37 @@ fn num(x: f64) -> String {
     } else {
         format!("{x:.6e}")
     }
+}
+
+/// The summary's line on units: the scene's, and the gas's own at the first observation (the
+/// thermal speed and, for one species, the Maxwellian collision rate and mean free time,
+/// `reference::balance::collision_rate`), and the collisions per particle by the last.
+fn units(scene: &Scene, stats: &RunStats) -> String {
+    use crate::run::columns::name;
+    let at = |c: &str, i: usize| stats.col(c).map(|k| stats.mean(i, k));
+    let last = stats.times.len() - 1;
+    let mut line =
+        "units      scene units (particle mass 1; the kernel's gamma and C set time)".to_string();
+    if let Some(t) = at(name::T_BULK, 0).filter(|t| *t > 0.0) {
+        line.push_str(&format!(
+            "; at t = {}: thermal speed sqrt(2 T) = {:.4}",
+            stats.times[0],
+            (2.0 * t).sqrt()
+        ));
+        if scene.physics().species.is_empty() {
+            let (gc, lambda) = scene.physics().kernel.rate_constants();
+            let omega = crate::reference::balance::collision_rate(scene.dimension(), gc, lambda, t);
+            line.push_str(&format!(
+                ", collision rate {omega:.4} per particle (Maxwellian), mean free time {:.4}",
+                1.0 / omega
+            ));
+        }
+    }
+    if let Some(s) = at(name::S, last) {
+        line.push_str(&format!(
+            "; {s:.2} collisions per particle by t = {}",
+            stats.times[last]
+        ));
+    }
+    line
 }
