@@ -244,6 +244,8 @@ def run(
     progress: Union[bool, Callable[[int], None]] = False,
     allow_long: bool = False,
     samples: bool = False,
+    initial_state: Optional[Union[str, os.PathLike]] = None,
+    save_state: Optional[Union[str, os.PathLike]] = None,
 ) -> Result:
     """Runs a scene (a :class:`Scene` or a scene file's path).
 
@@ -254,7 +256,10 @@ def run(
     called with the ensembles finished since its last call. A run whose estimated work is
     above the command's limit is refused unless ``allow_long``. ``samples=True`` keeps every
     ensemble's own observables (``Result.samples``: per observable an ``(ensembles, times)``
-    array), for analyses beyond the mean and its interval.
+    array), for analyses beyond the mean and its interval. ``save_state`` and
+    ``initial_state`` are the command's ``--save-state`` and ``--initial-state``
+    (docs/state.md): every ensemble's particles at the last observation saved to a file, and a
+    run continued from one (the scene observing from its time on).
 
     Raises :class:`SceneError` (file, line and key named), :class:`RunError`, and
     :class:`Interrupted` on Ctrl-C (with the finished ensembles' result).
@@ -264,7 +269,16 @@ def run(
     total = ensembles if ensembles is not None else scene.ensembles
     with _progress(progress, total) as (callback, _):
         raw, interrupted = _gdsmc.run(
-            scene, n, ensembles, seed, threads, callback, allow_long, samples
+            scene,
+            n,
+            ensembles,
+            seed,
+            threads,
+            callback,
+            allow_long,
+            samples,
+            None if initial_state is None else os.fspath(initial_state),
+            None if save_state is None else os.fspath(save_state),
         )
     if interrupted:
         asked = ensembles if ensembles is not None else scene.ensembles

@@ -63,6 +63,8 @@ def run(
     progress: Optional[Callable[[int], Any]] = None,
     allow_long: bool = False,
     samples: bool = False,
+    initial_state: Optional[str] = None,
+    save_state: Optional[str] = None,
 ) -> Tuple[RunResult, bool]: ...
 def sweep(
     scene: Scene,

@@ -6,6 +6,7 @@ use crate::scene::Scene;
 use crate::to_py;
 use gdsmc_runner::reference::curves::for_scene;
 use gdsmc_runner::report;
+use gdsmc_runner::run::state::{StateHeader, StateReader, StateWriter};
 use gdsmc_runner::run::{self as runner, RunStats};
 use gdsmc_runner::scene as sc;
 use pyo3::prelude::*;
@@ -19,6 +20,19 @@ pub struct RunResult {
     stats: RunStats,
     /// Every ensemble's observables (`times x columns` each), when asked.
     samples: Option<Vec<Vec<f64>>>,
+    /// Whether the scene's references hold (not for a state of other physics).
+    references: bool,
+}
+
+impl RunResult {
+    /// The references the run's tables and summary carry.
+    fn refs(&self) -> Vec<gdsmc_runner::reference::curves::ReferenceCurve> {
+        if self.references {
+            for_scene(self.scene.scene())
+        } else {
+            Vec::new()
+        }
+    }
 }
 
 /// Every ensemble's observables as Python gets them: little-endian f64 bytes, their shape
@@ -95,9 +109,10 @@ pub(crate) fn polled<T: Send>(
 /// KeyboardInterrupt stopped it early (the result then covers the ensembles finished, exactly
 /// those of a shorter run). `progress(k)` is called with the ensembles finished since its last
 /// call. With `samples` the result keeps every ensemble's observables
-/// ([`RunResult::samples`]).
+/// ([`RunResult::samples`]); `initial_state` and `save_state` are the command's
+/// `--initial-state` and `--save-state` (docs/state.md).
 #[pyfunction]
-#[pyo3(signature = (scene, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false, samples = false))]
+#[pyo3(signature = (scene, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false, samples = false, initial_state = None, save_state = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn run(
     py: Python<'_>,
@@ -109,25 +124,63 @@ pub fn run(
     progress: Option<Bound<'_, PyAny>>,
     allow_long: bool,
     samples: bool,
+    initial_state: Option<std::path::PathBuf>,
+    save_state: Option<std::path::PathBuf>,
 ) -> PyResult<(RunResult, bool)> {
     let mut s = scene.clone();
     for o in sc::Override::run_keywords(n, ensembles, seed) {
         s = s.with(o)?;
     }
     runner::estimate::check(s.scene(), threads, allow_long).map_err(to_py)?;
+    // The state files are checked before anything runs (as the command's flags are).
+    let initial = initial_state
+        .as_deref()
+        .map(StateReader::open)
+        .transpose()
+        .map_err(to_py)?;
+    if let Some(r) = &initial {
+        r.check(s.scene()).map_err(to_py)?;
+    }
+    let save = save_state
+        .as_deref()
+        .map(|p| {
+            let header = StateHeader::of(
+                s.scene(),
+                s.scene().ensembles(),
+                initial.as_ref().map(|r| &r.header),
+            );
+            StateWriter::create(p, header)
+        })
+        .transpose()
+        .map_err(to_py)?;
+    let io = runner::StateIo {
+        initial: initial.as_ref(),
+        save: save.as_ref(),
+    };
     let mut kept = Vec::new();
     let (stats, interrupted) = polled(py, progress.as_ref(), |stop, advance| {
-        if samples {
-            runner::run_with_samples(s.scene(), threads, advance, stop, &mut kept)
-        } else {
-            runner::run_interruptible(s.scene(), threads, advance, stop)
-        }
+        let keep = samples.then_some(&mut kept);
+        runner::run_in_memory(s.scene(), threads, (advance, stop), io, keep)
     })?;
-    let stats = stats.map_err(to_py)?;
+    let stats = match (stats, save) {
+        (Ok(st), Some(w)) if st.ensembles > 0 => {
+            w.finish(st.ensembles).map_err(to_py)?;
+            st
+        }
+        (st, w) => {
+            if let Some(w) = w {
+                w.abandon();
+            }
+            st.map_err(to_py)?
+        }
+    };
+    // The references hold for a continuation of the scene's own process only (docs/state.md).
+    let references = initial.as_ref().is_none_or(|r| r.continues(s.scene()));
     let result = RunResult {
         scene: s,
         stats,
         samples: samples.then_some(kept),
+        references,
     };
     Ok((result, interrupted))
 }
@@ -161,7 +214,7 @@ impl RunResult {
     /// The files `gdsmc run` writes besides the charts, as text: observables.csv,
     /// summary.json, and histograms.csv, reduced.csv, marginal.csv when the scene has them.
     fn tables(&self) -> PyResult<Vec<(String, String)>> {
-        let refs = for_scene(self.scene.scene());
+        let refs = self.refs();
         let files = report::tables(self.scene.scene(), &self.stats, &refs).map_err(to_py)?;
         Ok(files
             .into_iter()
@@ -186,7 +239,7 @@ impl RunResult {
 
     /// The summary the command prints.
     fn summary_text(&self) -> String {
-        let refs = for_scene(self.scene.scene());
+        let refs = self.refs();
         report::summary::text(self.scene.scene(), &self.stats, &refs)
     }
 
@@ -205,7 +258,7 @@ impl RunResult {
             .map_err(|e: String| pyo3::exceptions::PyValueError::new_err(e))?;
         py.detach(|| {
             let set = report::set::OutputSet::prepare(&dir)?;
-            gdsmc_runner::job::commit(set, self.scene.scene(), &self.stats, formats)
+            report::commit_run(set, self.scene.scene(), &self.stats, &self.refs(), formats)
         })
         .map_err(to_py)
     }

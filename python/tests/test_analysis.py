@@ -124,3 +124,27 @@ def test_samples_are_every_ensembles_own_values():
     one = gdsmc.run(SCENES / "grw-example3.toml", n=64, ensembles=1, seed=3, samples=True)
     assert np.array_equal(one.samples["T"][0], r.samples["T"][0])
     assert gdsmc.run(SCENES / "grw-example3.toml", n=64, ensembles=2).samples is None
+
+
+def test_a_saved_state_is_continued(tmp_path):
+    """save_state and initial_state are the command's flags: the continuation's first
+    observation is the saved run's last, its references kept; a state of other physics runs
+    without references; a bad file is refused naming it."""
+    scene = gdsmc.Scene.from_file(str(SCENES / "grw-example3.toml")).set("observe.t_end", 1.0)
+    state = tmp_path / "s.gdsmc-state"
+    a = gdsmc.run(scene, n=64, ensembles=3, seed=5, save_state=state)
+    later = scene.set("observe.t_end", 2.0).set("observe.t_start", 1.0)
+    b = gdsmc.run(later, n=64, ensembles=3, seed=5, initial_state=state)
+    for c in ("T", "T_bulk", "a2", "s"):
+        assert b.mean[c][0] == a.mean[c][-1], c
+    assert "T_mean_n" in b.references
+    other = gdsmc.run(
+        later.set("collisions.restitution", 0.9), n=64, ensembles=3, initial_state=state
+    )
+    assert other.references == {}
+    with pytest.raises(ValueError, match="observe.t_start is 0"):
+        gdsmc.run(scene, n=64, ensembles=3, initial_state=state)
+    bad = tmp_path / "bad"
+    bad.write_text("x" * 5000)
+    with pytest.raises(ValueError, match="not a gdsmc state file"):
+        gdsmc.run(later, n=64, ensembles=3, initial_state=bad)

@@ -176,7 +176,13 @@ pub fn run_interruptible(
     progress: &(dyn Fn(u64) + Sync),
     stop: &AtomicBool,
 ) -> Result<RunStats, Error> {
-    run_seeing_rows(scene, threads, (progress, stop), &mut |_, _, _| Ok(()))
+    run_seeing_rows(
+        scene,
+        threads,
+        (progress, stop),
+        StateIo::default(),
+        &mut |_, _, _| Ok(()),
+    )
 }
 
 /// As [`run_interruptible`], keeping every ensemble's own observables: `samples` receives,
@@ -190,31 +196,47 @@ pub fn run_with_samples(
     stop: &AtomicBool,
     samples: &mut Vec<Vec<f64>>,
 ) -> Result<RunStats, Error> {
+    run_in_memory(
+        scene,
+        threads,
+        (progress, stop),
+        StateIo::default(),
+        Some(samples),
+    )
+}
+
+/// The in-memory run the Python package makes: every ensemble of `scene` from and to the
+/// state files of `state`, each ensemble's observables into `samples` when given.
+pub fn run_in_memory(
+    scene: &Scene,
+    threads: usize,
+    watch: (&(dyn Fn(u64) + Sync), &AtomicBool),
+    state: StateIo<'_>,
+    mut samples: Option<&mut Vec<Vec<f64>>>,
+) -> Result<RunStats, Error> {
     let width = scene.times().len() * names(scene).len();
-    run_seeing_rows(scene, threads, (progress, stop), &mut |_, row, _| {
-        samples.push(row[..width].to_vec());
+    run_seeing_rows(scene, threads, watch, state, &mut |_, row, _| {
+        if let Some(s) = samples.as_deref_mut() {
+            s.push(row[..width].to_vec());
+        }
         Ok(())
     })
 }
 
-/// Runs every ensemble of `scene` in memory, handing each finished ensemble's row to
-/// `on_row` in ensemble order before it is folded.
+/// Runs every ensemble of `scene` in memory (from and to the state files of `state`), handing
+/// each finished ensemble's row to `on_row` in ensemble order before it is folded.
 fn run_seeing_rows(
     scene: &Scene,
     threads: usize,
     (progress, stop): (&(dyn Fn(u64) + Sync), &AtomicBool),
+    state: StateIo<'_>,
     on_row: &mut OnRow,
 ) -> Result<RunStats, Error> {
     let clock = Clock::start(threads);
     let mut totals = Totals::new(scene);
-    job(
-        scene,
-        clock.threads,
-        progress,
-        stop,
-        StateIo::default(),
-        |job| job.fold(0..scene.ensembles(), &mut totals, on_row),
-    )?;
+    job(scene, clock.threads, progress, stop, state, |job| {
+        job.fold(0..scene.ensembles(), &mut totals, on_row)
+    })?;
     Ok(stats_of(scene, totals, clock.timing()))
 }
 
