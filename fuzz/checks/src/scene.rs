@@ -113,7 +113,17 @@ pub static WORDS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
         .chain(DriveKind::ALL.iter().map(|k| k.scene_name()))
         .chain(SchemeKind::ALL.iter().map(|k| k.scene_name()))
         .collect();
-    words.extend(["maxwellian", "mixture", "", "MAXWELL", "hard_spheres", "linear", "log", "collisions", "time"]);
+    words.extend([
+        "maxwellian",
+        "mixture",
+        "",
+        "MAXWELL",
+        "hard_spheres",
+        "linear",
+        "log",
+        "collisions",
+        "time",
+    ]);
     words.dedup();
     words
 });
