@@ -83,6 +83,31 @@ const fn hard_smooth(drives: &'static [DriveKind], dimensions: &'static [usize])
     }
 }
 
+/// The one-species smooth Maxwell gas in a Maxwell host medium (BRS (14)-(17)).
+const MAXWELL_HOST: Holds = Holds {
+    particles: Particles::SmoothTranslation,
+    kernels: MAXWELL,
+    laws: CONSTANT,
+    drives: &[DriveKind::HostMedium],
+    schemes: ANY_SCHEME,
+    dimensions: ANY_D,
+    when: Some("a Maxwell host medium"),
+};
+
+/// The one-species smooth Maxwell gas under a linearly heating drive (GRW (13)-(14)), run by
+/// `schemes`.
+const fn maxwell_linear(schemes: &'static [SchemeKind]) -> Holds {
+    Holds {
+        particles: Particles::SmoothTranslation,
+        kernels: MAXWELL,
+        laws: CONSTANT,
+        drives: LINEAR,
+        schemes,
+        dimensions: ANY_D,
+        when: None,
+    }
+}
+
 /// Every reference, in the order of their columns.
 pub const REFERENCES: &[Reference] = &[
     Reference {
@@ -205,15 +230,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "BRS (14)",
         kind: Kind::MeanAtN,
-        holds: Holds {
-            particles: Particles::SmoothTranslation,
-            kernels: MAXWELL,
-            laws: CONSTANT,
-            drives: &[DriveKind::HostMedium],
-            schemes: ANY_SCHEME,
-            dimensions: ANY_D,
-            when: Some("a Maxwell host medium"),
-        },
+        holds: MAXWELL_HOST,
         columns: &["V_x_exact", "V_y_exact", "V_z_exact"],
         cites: &[],
         curves: single::brs_bulk,
@@ -221,15 +238,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "BRS (15)-(17)",
         kind: Kind::Limit,
-        holds: Holds {
-            particles: Particles::SmoothTranslation,
-            kernels: MAXWELL,
-            laws: CONSTANT,
-            drives: &[DriveKind::HostMedium],
-            schemes: ANY_SCHEME,
-            dimensions: ANY_D,
-            when: Some("a Maxwell host medium"),
-        },
+        holds: MAXWELL_HOST,
         columns: &["T_bulk_exact"],
         cites: &["BRS (15)", "BRS (37)-(38)"],
         curves: single::brs_temperature,
@@ -237,15 +246,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "GRW (13)-(14)",
         kind: Kind::Limit,
-        holds: Holds {
-            particles: Particles::SmoothTranslation,
-            kernels: MAXWELL,
-            laws: CONSTANT,
-            drives: LINEAR,
-            schemes: ANY_SCHEME,
-            dimensions: ANY_D,
-            when: None,
-        },
+        holds: maxwell_linear(ANY_SCHEME),
         columns: &["T_exact", "T_bulk_exact"],
         cites: &["GRW (13)"],
         curves: single::grw_limit,
@@ -253,15 +254,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "GRW (13)-(14) at finite n",
         kind: Kind::MeanAtN,
-        holds: Holds {
-            particles: Particles::SmoothTranslation,
-            kernels: MAXWELL,
-            laws: CONSTANT,
-            drives: LINEAR,
-            schemes: EXACT_MEANS,
-            dimensions: ANY_D,
-            when: None,
-        },
+        holds: maxwell_linear(EXACT_MEANS),
         columns: &["T_mean_n", "T_bulk_mean_n"],
         cites: &[],
         curves: single::grw_mean_at_n,
