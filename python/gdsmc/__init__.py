@@ -27,9 +27,10 @@ from typing import Callable, Dict, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _gdsmc, _plot
+from . import _gdsmc, _plot, _state
 from ._progress import _progress, _set_total, _TextBar  # noqa: F401 (the tests use them)
 from ._gdsmc import RunError, Scene, SceneError, __version__
+from ._state import State, read_state
 
 __all__ = [
     "Scene",
@@ -37,6 +38,8 @@ __all__ = [
     "RunError",
     "Interrupted",
     "Result",
+    "State",
+    "read_state",
     "Reproduced",
     "run",
     "sweep",
@@ -164,6 +167,19 @@ class Result:
         times or the values span decades. Returns the matplotlib Axes."""
         return _plot.result(self, name, ax, axis)
 
+    @property
+    def snapshot_times(self) -> List[float]:
+        """The times of the velocity snapshots (``observe.snapshots``, or ``run(snapshots=)``)."""
+        return [t for t, _ in self._raw.snapshot_files()]
+
+    def snapshot(self, t: float) -> State:
+        """Every ensemble's particles at snapshot time ``t`` (a :class:`State`)."""
+        return _state.snapshot_at(self._raw.snapshot_files(), t)
+
+    def velocities(self, t: float) -> np.ndarray:
+        """The velocities at snapshot time ``t``: ``(ensembles, n, d)``, scene units."""
+        return self.snapshot(t).velocities
+
     def write(self, directory: Union[str, os.PathLike], formats: str = "svg") -> List[str]:
         """Writes the command's whole output set (tables, summary.json, charts in ``formats``:
         "svg", "png", "pdf", comma-separated; png and pdf when the extension was built with its
@@ -186,6 +202,7 @@ def run(
     samples: bool = False,
     initial_state: Optional[Union[str, os.PathLike]] = None,
     save_state: Optional[Union[str, os.PathLike]] = None,
+    snapshots: Optional[Sequence[float]] = None,
 ) -> Result:
     """Runs a scene (a :class:`Scene` or a scene file's path).
 
@@ -199,13 +216,17 @@ def run(
     array), for analyses beyond the mean and its interval. ``save_state`` and
     ``initial_state`` are the command's ``--save-state`` and ``--initial-state``
     (docs/state.md): every ensemble's particles at the last observation saved to a file, and a
-    run continued from one (the scene observing from its time on).
+    run continued from one (the scene observing from its time on). ``snapshots`` sets
+    ``observe.snapshots``: every ensemble's velocities at the first observation at or after
+    each time (``Result.velocities(t)``, ``Result.snapshot(t)``).
 
     Raises :class:`SceneError` (file, line and key named), :class:`RunError`, and
     :class:`Interrupted` on Ctrl-C (with the finished ensembles' result).
     """
     if not isinstance(scene, Scene):
         scene = Scene.from_file(os.fspath(scene))
+    if snapshots is not None:
+        scene = scene.set("observe.snapshots", [float(t) for t in snapshots])
     total = ensembles if ensembles is not None else scene.ensembles
     with _progress(progress, total) as (callback, _):
         raw, interrupted = _gdsmc.run(

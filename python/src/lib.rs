@@ -6,6 +6,7 @@
 
 mod result;
 mod scene;
+mod state;
 mod sweep;
 
 use pyo3::prelude::*;
@@ -25,7 +26,9 @@ pyo3::create_exception!(
 
 /// The command's flags a runner message may name, and the keyword arguments that are their
 /// Python words.
-const KEYWORDS: [(&str, &str); 5] = [
+const KEYWORDS: [(&str, &str); 7] = [
+    ("--save-state", "save_state="),
+    ("--initial-state", "initial_state="),
     ("--allow-long", "allow_long=True"),
     ("--threads", "threads="),
     ("--ensembles", "ensembles="),
@@ -60,6 +63,7 @@ fn _gdsmc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scene::Scene>()?;
     m.add_class::<result::RunResult>()?;
     m.add_function(wrap_pyfunction!(result::run, m)?)?;
+    m.add_function(wrap_pyfunction!(state::read_state, m)?)?;
     m.add_function(wrap_pyfunction!(result::reproduce, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     Ok(())

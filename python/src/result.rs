@@ -10,6 +10,7 @@ use gdsmc_runner::run::state::{StateHeader, StateReader, StateWriter};
 use gdsmc_runner::run::{self as runner, RunStats};
 use gdsmc_runner::scene as sc;
 use pyo3::prelude::*;
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Duration;
 
@@ -22,6 +23,8 @@ pub struct RunResult {
     samples: Option<Vec<Vec<f64>>>,
     /// Whether the scene's references hold (not for a state of other physics).
     references: bool,
+    /// The velocity snapshots (`observe.snapshots`), when the scene takes any.
+    snapshots: Option<crate::state::Snapshots>,
 }
 
 impl RunResult {
@@ -110,7 +113,9 @@ pub(crate) fn polled<T: Send>(
 /// those of a shorter run). `progress(k)` is called with the ensembles finished since its last
 /// call. With `samples` the result keeps every ensemble's observables
 /// ([`RunResult::samples`]); `initial_state` and `save_state` are the command's
-/// `--initial-state` and `--save-state` (docs/state.md).
+/// `--initial-state` and `--save-state` (docs/state.md); the scene's velocity snapshots
+/// (`observe.snapshots`) are written into a directory that lives as long as the result
+/// ([`RunResult::snapshot_files`]).
 #[pyfunction]
 #[pyo3(signature = (scene, n = None, ensembles = None, seed = None, threads = 0, progress = None, allow_long = false, samples = false, initial_state = None, save_state = None))]
 #[allow(clippy::too_many_arguments)]
@@ -153,15 +158,26 @@ pub fn run(
         })
         .transpose()
         .map_err(to_py)?;
+    let from = initial.as_ref().map(|r| &r.header);
+    let (snapshots, writers) =
+        match crate::state::Snapshots::create(s.scene(), s.scene().ensembles(), from)
+            .map_err(to_py)?
+        {
+            Some((d, w)) => (Some(d), w),
+            None => (None, Vec::new()),
+        };
     let io = runner::StateIo {
         initial: initial.as_ref(),
         save: save.as_ref(),
+        snapshots: &writers,
     };
     let mut kept = Vec::new();
     let (stats, interrupted) = polled(py, progress.as_ref(), |stop, advance| {
         let keep = samples.then_some(&mut kept);
         runner::run_in_memory(s.scene(), threads, (advance, stop), io, keep)
     })?;
+    let kept_ensembles = stats.as_ref().ok().map(|st| st.ensembles);
+    runner::state::finish_all(writers, kept_ensembles).map_err(to_py)?;
     let stats = match (stats, save) {
         (Ok(st), Some(w)) if st.ensembles > 0 => {
             w.finish(st.ensembles).map_err(to_py)?;
@@ -181,6 +197,7 @@ pub fn run(
         stats,
         samples: samples.then_some(kept),
         references,
+        snapshots,
     };
     Ok((result, interrupted))
 }
@@ -235,6 +252,14 @@ impl RunResult {
         let shape = (rows.len(), self.stats.times.len(), self.stats.names.len());
         let names = self.stats.names.iter().map(|n| n.to_string()).collect();
         Some((pyo3::types::PyBytes::new(py, &bytes), shape, names))
+    }
+
+    /// Each velocity snapshot's time and state file (read with `read_state`); empty when the
+    /// scene takes none. The files go with the result.
+    fn snapshot_files(&self) -> Vec<(f64, PathBuf)> {
+        self.snapshots
+            .as_ref()
+            .map_or_else(Vec::new, |s| s.files.clone())
     }
 
     /// The summary the command prints.

@@ -148,3 +148,30 @@ def test_a_saved_state_is_continued(tmp_path):
     bad.write_text("x" * 5000)
     with pytest.raises(ValueError, match="not a gdsmc state file"):
         gdsmc.run(later, n=64, ensembles=3, initial_state=bad)
+
+
+def test_snapshots_are_the_particles_the_observables_come_from(tmp_path):
+    """run(snapshots=...) takes every ensemble's velocities at the first observation at or
+    after each time: each ensemble's T from its snapshot is that ensemble's T at the
+    observation (samples=True), the snapshot equals the state a run saves there, a missing
+    time is named, and the files go with the result."""
+    scene = gdsmc.Scene.from_file(str(SCENES / "grw-example3.toml")).set("observe.t_end", 2.0)
+    r = gdsmc.run(scene, n=64, ensembles=3, seed=5, samples=True, snapshots=[0.9, 2.0])
+    i = int(np.searchsorted(r.times, 0.9))
+    assert r.snapshot_times == [float(r.times[i]), 2.0]
+    snap = r.snapshot(r.times[i])
+    v = r.velocities(r.times[i])
+    assert v.shape == (3, 64, 3) and snap.spins is None
+    bulk = v.mean(axis=1, keepdims=True)
+    t_bulk = ((v - bulk) ** 2).sum(axis=2).mean(axis=1) / 3
+    np.testing.assert_allclose(t_bulk, r.samples["T_bulk"][:, i], rtol=1e-12)
+    np.testing.assert_array_equal(snap.s, r.samples["s"][:, i])
+    saved = tmp_path / "s.gdsmc-state"
+    short = scene.set("observe.t_end", float(r.times[i])).set("observe.intervals", i)
+    gdsmc.run(short, n=64, ensembles=3, seed=5, save_state=saved)
+    np.testing.assert_array_equal(gdsmc.read_state(saved).velocities, v)
+    with pytest.raises(KeyError, match="snapshots at"):
+        r.velocities(0.3)
+    files = [p for _, p in r._raw.snapshot_files()]
+    del r, snap
+    assert not any(Path(p).exists() for p in files)

@@ -39,7 +39,9 @@ mod histograms;
 mod overrides;
 mod read;
 pub mod schema;
+mod time_axis;
 mod validate;
+pub use time_axis::TimeAxis;
 pub mod vary;
 
 pub use error::Error;
@@ -81,6 +83,8 @@ pub struct Scene {
     collisional_pairs: u64,
     /// What the time charts draw against.
     time_axis: TimeAxis,
+    /// Velocity snapshot times as asked (each at most the last observation time).
+    snapshots: Vec<f64>,
     /// Radial-shell histogram of `|v - V|` at the last observation, if asked.
     histogram: Option<Shells>,
     /// Reduced-speed histogram: shells of `c = |v - V| / sqrt(2 T_bulk)` up to `c_max` (its
@@ -99,17 +103,6 @@ pub struct Scene {
     species_fractions: Vec<f64>,
 }
 
-/// What a run's time charts draw against (`observe.time_axis`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum TimeAxis {
-    /// The scene's time `t`.
-    #[default]
-    Time,
-    /// Collisions per particle `s = 2 (collisions so far) / n`, the usual axis of
-    /// cooling-state studies (the `s` column).
-    Collisions,
-}
-
 impl PartialEq for Scene {
     /// Every field but the model, which is a function of the physics.
     fn eq(&self, o: &Self) -> bool {
@@ -123,6 +116,7 @@ impl PartialEq for Scene {
             steady_from,
             collisional_pairs,
             time_axis,
+            snapshots,
             histogram,
             reduced_histogram,
             marginal_histogram,
@@ -137,14 +131,14 @@ impl PartialEq for Scene {
             physics,
             times,
             steady_from,
-            (collisional_pairs, time_axis),
+            (collisional_pairs, time_axis, snapshots),
         ) == (
             &o.name,
             &o.description,
             &o.physics,
             &o.times,
             &o.steady_from,
-            (&o.collisional_pairs, &o.time_axis),
+            (&o.collisional_pairs, &o.time_axis, &o.snapshots),
         ) && (
             histogram,
             reduced_histogram,
@@ -207,6 +201,17 @@ impl Scene {
     #[must_use]
     pub fn collisional_pairs(&self) -> u64 {
         self.collisional_pairs
+    }
+
+    /// The observations at which velocity snapshots are taken (`observe.snapshots`: the first
+    /// observation at or after each time asked), increasing and distinct.
+    pub fn snapshots(&self) -> Vec<usize> {
+        let mut at: Vec<usize> = (self.snapshots.iter())
+            .filter_map(|&x| validate::observe::snapshot_index(&self.times, x).ok())
+            .collect();
+        at.sort_unstable();
+        at.dedup();
+        at
     }
 
     /// What the time charts draw against (`observe.time_axis`).
@@ -383,6 +388,11 @@ impl Scene {
             ));
         }
         self.rules(&self.physics, &times)?;
+        if let Some(why) = (self.snapshots.iter())
+            .find_map(|&x| validate::observe::snapshot_index(&times, x).err())
+        {
+            return Err(self.invalid("observe.snapshots", why));
+        }
         // The steady window starts at the same time: its first new observation at or after
         // the old start (an index into the old times means nothing in the new ones). Times that
         // leave it fewer than two observations have no steady window.

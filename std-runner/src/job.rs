@@ -70,7 +70,7 @@ pub struct Job {
 /// The refusal of a state file where a run is split (shards, MPI ranks): not yet supported.
 fn state_refused(how: &str) -> Error {
     Error::Argument {
-        flag: "--save-state/--initial-state".into(),
+        flag: "--save-state/--initial-state/observe.snapshots".into(),
         message: format!(
             "are not supported with {how} yet: run the state's ensembles in one process"
         ),
@@ -107,7 +107,8 @@ impl Job {
         let shard = self.shard()?;
         // Absurd work is refused before anything is allocated or run.
         let work = run::estimate::check(sc, self.threads, self.allow_long)?;
-        let states = self.initial_state.is_some() || self.save_state.is_some();
+        let states =
+            self.initial_state.is_some() || self.save_state.is_some() || !sc.snapshots().is_empty();
         #[cfg(feature = "mpi")]
         if let Some(w) = run::mpi::World::init() {
             if states {
@@ -142,9 +143,12 @@ impl Job {
                 run::state::StateWriter::create(p, header)
             })
             .transpose()?;
+        let from = initial.as_ref().map(|r| &r.header);
+        let snapshots = run::state::snapshot_writers(sc, set.dir(), sc.ensembles(), from)?;
         let io = run::StateIo {
             initial: initial.as_ref(),
             save: save.as_ref(),
+            snapshots: &snapshots,
         };
         let file = run::journal::beside(&dir, run::journal::Of::Run);
         if states {
@@ -154,6 +158,8 @@ impl Job {
             );
         }
         let r = self.journaled(&file, None, 0..sc.ensembles(), (io, states), watch);
+        let kept = r.as_ref().ok().map(|r| r.stats.ensembles);
+        run::state::finish_all(snapshots, kept)?;
         let r = match (r, save) {
             (Ok(r), Some(w)) if r.stats.ensembles > 0 => {
                 w.finish(r.stats.ensembles)?;
@@ -201,6 +207,10 @@ impl Job {
             _ => for_scene(sc),
         };
         let mut text = write_with(set, sc, &stats, &dir, self.format, &refs)?;
+        for (j, &ti) in sc.snapshots().iter().enumerate() {
+            let name = run::state::snapshot_name(j);
+            let _ = writeln!(text, "velocity snapshot at t = {}: {name}", sc.times()[ti]);
+        }
         let _ = writeln!(
             text,
             "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)",

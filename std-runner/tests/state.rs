@@ -225,3 +225,86 @@ fn bad_state_files_and_mismatches_are_refused_by_name() {
     assert!(e.contains("not written by gdsmc"), "{e}");
     assert_eq!(std::fs::read_to_string(&notes).unwrap(), "my notes");
 }
+
+/// Every record of a state file, as f64s.
+fn records(path: &Path) -> Vec<Vec<f64>> {
+    let r = StateReader::open(path).unwrap();
+    (0..r.header.ensembles)
+        .map(|k| r.record(k).unwrap())
+        .collect()
+}
+
+/// A velocity snapshot (`observe.snapshots`) at an intermediate observation holds, bit for bit,
+/// the particles a run stopped there saves (the observations before it are the same, so the
+/// trajectories are), is a state file a continuation starts from, and is listed in the output
+/// set's manifest.
+#[test]
+fn a_snapshot_is_the_state_of_a_run_stopped_there() {
+    for name in ["grw-example3", "rough-hcs", "mixture-maxwell"] {
+        let r = root(&format!("snap-{name}"));
+        let long = [
+            "observe.t_end=2",
+            "observe.intervals=4",
+            "observe.steady_from=1",
+            "observe.snapshots=[0.9, 2.0]",
+        ];
+        job(name, &long, &r.join("a"), (None, None))
+            .run(&Quiet::default())
+            .expect("the run with snapshots runs");
+        let saved = r.join("s.gdsmc-state");
+        let short = [
+            "observe.t_end=1",
+            "observe.intervals=2",
+            "observe.steady_from=0.5",
+        ];
+        job(name, &short, &r.join("b"), (None, Some(&saved)))
+            .run(&Quiet::default())
+            .expect("the shorter run runs");
+        let snap = r.join("a").join("snapshot-0.state");
+        let h = StateReader::open(&snap).unwrap().header;
+        // 0.9 is taken at the first observation at or after it.
+        assert_eq!((h.time, h.segment, h.ensembles), (1.0, 0, 4), "{name}");
+        assert_eq!(records(&snap), records(&saved), "{name}");
+        assert_eq!(
+            StateReader::open(&r.join("a").join("snapshot-1.state"))
+                .unwrap()
+                .header
+                .time,
+            2.0
+        );
+        let manifest = std::fs::read_to_string(r.join("a").join("manifest.json")).unwrap();
+        assert!(manifest.contains("snapshot-1.state"), "{name}");
+    }
+}
+
+/// A snapshot after the last observation is refused by its key; a sweep or a shard of a scene
+/// with snapshots says what it does not take.
+#[test]
+fn snapshots_past_the_end_or_with_shards_are_refused_by_name() {
+    let e = Sourced::read(
+        &scene("grw-example3"),
+        vec![Override::set("observe.snapshots=[0.5, 9.0]")],
+    )
+    .err()
+    .map(|e| e.to_string())
+    .unwrap_or_default();
+    assert!(
+        e.contains("observe.snapshots") && e.contains("at most"),
+        "{e}"
+    );
+    let r = root("snap-shard");
+    let mut j = job(
+        "grw-example3",
+        &["observe.t_end=1", "observe.snapshots=[1.0]"],
+        &r.join("a"),
+        (None, None),
+    );
+    j.shard = Some("0/2".into());
+    let e = (j.run(&Quiet::default()).err())
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(
+        e.contains("observe.snapshots") && e.contains("--shard"),
+        "{e}"
+    );
+}

@@ -92,6 +92,7 @@ pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::ne
                 "spacing",
                 "first",
                 "time_axis",
+                "snapshots",
                 "collisional_pairs",
                 "steady_from",
             ],

@@ -330,6 +330,10 @@ pub struct ObserveSpec {
     /// (0 or absent: not computed).
     #[serde(default)]
     pub collisional_pairs: Option<Spanned<i64>>,
+    /// Velocity snapshots: at the first observation time at or after each of these times, every
+    /// ensemble's particles are written to a state file (docs/state.md). Optional.
+    #[serde(default)]
+    pub snapshots: Option<Spanned<Vec<f64>>>,
     /// Steady state: average every observable over the observation times `t >= steady_from`
     /// (per ensemble, then over ensembles; RW Section 4.2). Optional.
     #[serde(default)]

@@ -174,6 +174,7 @@ impl SceneFile {
         }
         scheme::on_grid(&ctx, &self.scheme, physics.scheme, &times)?;
         let observe = observe::observe(&ctx, &self.observe, &times, &physics)?;
+        let snapshots = observe::snapshots(&ctx, &self.observe, &times)?;
         let histograms = observe::histograms(&ctx, self)?;
         let (ensembles, seed) = observe::run(&ctx, &self.run)?;
         // Checked with the file (a bad table is refused by `gdsmc run` too), read by the sweep
@@ -194,6 +195,7 @@ impl SceneFile {
             steady_from: observe.0,
             collisional_pairs: observe.1,
             time_axis: observe.2,
+            snapshots,
             histogram: histograms.0,
             reduced_histogram: histograms.1,
             marginal_histogram: histograms.2,

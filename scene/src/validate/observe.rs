@@ -46,6 +46,36 @@ pub(crate) fn steady_index(times: &[f64], x: f64) -> Result<usize, String> {
     }
 }
 
+/// The observation of a snapshot time `x`: the first observation time at or after it (the rule
+/// of `observe.steady_from`), or why there is none.
+pub(crate) fn snapshot_index(times: &[f64], x: f64) -> Result<usize, String> {
+    if let Some(why) = finite_problem(x) {
+        return Err(why);
+    }
+    times
+        .iter()
+        .position(|&t| t >= x - 1e-12 * (1.0 + x.abs()))
+        .ok_or_else(|| {
+            format!(
+                "each time must be at most the last observation time t_end = {}, got {x}",
+                times[times.len() - 1]
+            )
+        })
+}
+
+/// The snapshot times of `observe.snapshots` (each checked against the observation times).
+pub(super) fn snapshots(ctx: &Ctx<'_>, o: &ObserveSpec, times: &[f64]) -> Result<Vec<f64>, Error> {
+    let Some(s) = &o.snapshots else {
+        return Ok(Vec::new());
+    };
+    for &x in s.get_ref() {
+        if let Err(why) = snapshot_index(times, x) {
+            return ctx.invalid(s.span(), "observe.snapshots", why);
+        }
+    }
+    Ok(s.get_ref().clone())
+}
+
 fn finite(ctx: &Ctx<'_>, v: &Spanned<f64>, key: &str) -> Result<f64, Error> {
     let x = *v.get_ref();
     match finite_problem(x) {

@@ -89,6 +89,9 @@ pub struct StateIo<'a> {
     pub initial: Option<&'a StateReader>,
     /// Each ensemble's particles at the last observation go here (`--save-state`).
     pub save: Option<&'a StateWriter>,
+    /// Each ensemble's particles at the scene's snapshot observations ([`Scene::snapshots`],
+    /// one writer each, in order) go here; empty: none taken.
+    pub snapshots: &'a [StateWriter],
 }
 
 /// Runs ensemble `k` of `scene` (whose physics `model` is) from the generator `rng` in the
@@ -157,6 +160,8 @@ fn observe<E: EventLoop>(
         .then(|| CoolingRates::new(scene))
         .flatten();
     let mut last_s = s0;
+    let snapshots: Vec<(usize, &StateWriter)> =
+        scene.snapshots().into_iter().zip(io.snapshots).collect();
     for (ti, &t) in scene.times().iter().enumerate() {
         let obs = if t == t0 {
             obs0
@@ -203,6 +208,9 @@ fn observe<E: EventLoop>(
         let s = s0 + 2.0 * engine.counts().collisions as f64 / p.len() as f64;
         out.push(s);
         last_s = s;
+        if let Some((_, w)) = snapshots.iter().find(|(i, _)| *i == ti) {
+            w.put(k, p, engine.velocity_map(), s)?;
+        }
         // The scene allows collisional pairs with a constant restitution law only.
         if let (true, Some((bulk, t_bulk)), Some(alpha), true) = (
             scene.collisional_pairs() > 0,

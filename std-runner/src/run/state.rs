@@ -96,6 +96,13 @@ impl StateHeader {
         }
     }
 
+    /// The same header for a state at observation time `time` (a velocity snapshot,
+    /// `observe.snapshots`): a continuation of it starts there.
+    #[must_use]
+    pub fn at(self, time: f64) -> Self {
+        StateHeader { time, ..self }
+    }
+
     /// A record's size in bytes.
     fn record_bytes(&self) -> u64 {
         (8 + self.n * 3 * 8 * if self.spins { 2 } else { 1 }) as u64
@@ -221,6 +228,43 @@ impl StateWriter {
     }
 }
 
+/// The file name of a run's snapshot `j` (its `j`-th of [`Scene::snapshots`]) in the output
+/// directory: `snapshot-J.state`.
+pub fn snapshot_name(j: usize) -> String {
+    format!("snapshot-{j}.state")
+}
+
+/// The writers of `scene`'s velocity snapshots ([`Scene::snapshots`]) in `dir` (a staging
+/// directory of the output set: they are committed with it), of a run of `ensembles`
+/// ensembles continuing `from` (none: from the scene's initial distribution).
+pub fn snapshot_writers(
+    scene: &Scene,
+    dir: &Path,
+    ensembles: u64,
+    from: Option<&StateHeader>,
+) -> Result<Vec<StateWriter>, Error> {
+    let times = scene.times();
+    (scene.snapshots().iter().enumerate())
+        .map(|(j, &ti)| {
+            let header = StateHeader::of(scene, ensembles, from).at(times[ti]);
+            StateWriter::create(&dir.join(snapshot_name(j)), header)
+        })
+        .collect()
+}
+
+/// Finishes every writer of `writers` with the first `ensembles` records when the run kept
+/// any (`Some`), else drops their files.
+pub fn finish_all(writers: Vec<StateWriter>, ensembles: Option<u64>) -> Result<(), Error> {
+    let mut first = Ok(());
+    for w in writers {
+        match ensembles {
+            Some(m) if m > 0 && first.is_ok() => first = w.finish(m),
+            _ => w.abandon(),
+        }
+    }
+    first
+}
+
 /// A state file opened to continue from, its header checked against its size.
 pub struct StateReader {
     file: Mutex<File>,
@@ -337,28 +381,36 @@ impl StateReader {
         self.header.origin == origin(scene)
     }
 
-    /// Sets `p` to ensemble `k`'s particles; returns its collisions per particle so far.
-    pub fn get(&self, k: u64, p: &mut Particles<'_>) -> Result<f64, Error> {
+    /// Ensemble `k`'s record as f64s: its collisions per particle so far, then `3 n`
+    /// velocity components, then (rough particles) `3 n` rim-velocity components.
+    pub fn record(&self, k: u64) -> Result<Vec<f64>, Error> {
         let h = &self.header;
         let mut bytes = vec![0u8; h.record_bytes() as usize];
         let at = (MAGIC.len() + HEADER_BYTES) as u64 + k * h.record_bytes();
-        {
-            let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
-            f.seek(SeekFrom::Start(at))
-                .and_then(|_| f.read_exact(&mut bytes))
-                .map_err(|e| Error::Argument {
-                    flag: "--initial-state".into(),
-                    message: format!("{}: {e}", self.path.display()),
-                })?;
-        }
-        let x = |j: usize| f64::from_le_bytes(bytes[8 * j..8 * j + 8].try_into().expect("8 bytes"));
-        let v = |j: usize| Vec3::new(x(1 + 3 * j), x(2 + 3 * j), x(3 + 3 * j));
-        for i in 0..h.n {
+        let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
+        f.seek(SeekFrom::Start(at))
+            .and_then(|_| f.read_exact(&mut bytes))
+            .map_err(|e| Error::Argument {
+                flag: "--initial-state".into(),
+                message: format!("{}: {e}", self.path.display()),
+            })?;
+        Ok(bytes
+            .chunks_exact(8)
+            .map(|b| f64::from_le_bytes(b.try_into().expect("8 bytes")))
+            .collect())
+    }
+
+    /// Sets `p` to ensemble `k`'s particles; returns its collisions per particle so far.
+    pub fn get(&self, k: u64, p: &mut Particles<'_>) -> Result<f64, Error> {
+        let (n, spins) = (self.header.n, self.header.spins);
+        let x = self.record(k)?;
+        let v = |j: usize| Vec3::new(x[1 + 3 * j], x[2 + 3 * j], x[3 + 3 * j]);
+        for i in 0..n {
             p.set_velocity(i, v(i));
-            if h.spins {
-                p.set_spin(i, v(h.n + i));
+            if spins {
+                p.set_spin(i, v(n + i));
             }
         }
-        Ok(x(0))
+        Ok(x[0])
     }
 }

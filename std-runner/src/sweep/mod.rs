@@ -189,6 +189,16 @@ impl Sweep {
         watch.begin(total);
         let mut results = Vec::new();
         let mut notes = Vec::new();
+        if points
+            .iter()
+            .any(|p| !p.source.scene.snapshots().is_empty())
+        {
+            notes.push(
+                "note: a sweep takes no velocity snapshots (observe.snapshots): run a point \
+                 with `gdsmc run` for them"
+                    .to_string(),
+            );
+        }
         let mut resumed = 0;
         for p in points {
             let sc = &p.source.scene;
