@@ -79,7 +79,7 @@ pub struct Scene {
     /// Index of the first observation time of the steady-state average, if any (it must leave
     /// two observation times at or after it; [`Scene::set_times`] keeps its start time).
     steady_from: Option<usize>,
-    /// Random pairs per observation for mu2, mu4 (0: off).
+    /// Random pairs per observation for the collisional cooling (0: off).
     collisional_pairs: u64,
     /// What the time charts draw against.
     time_axis: TimeAxis,
@@ -197,7 +197,8 @@ impl Scene {
         self.steady_from
     }
 
-    /// Random pairs per observation for mu2, mu4 (0: off).
+    /// Random pairs per observation for the collisional cooling: `nu`, `zeta`, `zeta_star`
+    /// for every gas, with MS's `mu2`, `mu4` or a mixture's rates where they apply (0: off).
     #[must_use]
     pub fn collisional_pairs(&self) -> u64 {
         self.collisional_pairs
@@ -292,14 +293,10 @@ impl Scene {
         Ok(())
     }
 
-    /// Sets the random pairs per observation for mu2, mu4 (0: off), validated against the
-    /// physics as the file's `observe.collisional_pairs` is.
+    /// Sets the random pairs per observation for the collisional cooling (0: off), as the
+    /// file's `observe.collisional_pairs` does (every physics has them).
     pub fn set_collisional_pairs(&mut self, pairs: u64) -> Result<(), Error> {
-        let before = std::mem::replace(&mut self.collisional_pairs, pairs);
-        if let Err(e) = self.rules(&self.physics, &self.times) {
-            self.collisional_pairs = before;
-            return Err(e);
-        }
+        self.collisional_pairs = pairs;
         Ok(())
     }
 
@@ -368,7 +365,7 @@ impl Scene {
             self.reduced_histogram.is_some(),
             self.marginal_histogram.is_some(),
         );
-        match validate::physics_rules(physics, times, self.collisional_pairs, histograms) {
+        match validate::physics_rules(physics, times, histograms) {
             Some((key, message)) => Err(self.invalid(key, message)),
             None => Ok(()),
         }

@@ -6,6 +6,7 @@ mod cited_references;
 mod combinations;
 mod convergence_in_n;
 mod cooling_and_thermostats;
+mod cooling_rate;
 mod determinism;
 mod disks;
 mod docs_links;

@@ -99,6 +99,47 @@ impl<A: Restitution> CollisionMap for A {
     }
 }
 
+/// The reduced moment of inertia `kappa = 4 I / (m sigma^2)` of a one-species map's particles
+/// (0 for smooth particles): the rotational energy `kappa |w|^2 / 2` per unit mass of a rim
+/// velocity `w` ([`crate::observe::cooling`] weighs the spins' energy by it).
+pub trait Inertia {
+    /// `kappa`; 0 for smooth particles.
+    fn kappa(&self) -> Real;
+}
+
+impl<A: Restitution> Inertia for A {
+    /// Smooth particles carry no rotational energy.
+    fn kappa(&self) -> Real {
+        0.0
+    }
+}
+
+/// The cooling of a one-species gas `p` (velocities stored at `scale` times the physical
+/// ones) under kernel `K`, map `map` and dimension `G`, from `pairs` random pairs
+/// ([`crate::observe::cooling::estimate`]: unit masses, the map's `kappa`).
+pub(crate) fn one_species_cooling<K: Kernel, G: Geometry, A, R: Rng + ?Sized>(
+    (kernel, map, scale): (&K, &A, Real),
+    p: &Particles<'_>,
+    pairs: u64,
+    rng: &mut R,
+) -> crate::observe::Cooling
+where
+    A: CollisionMap + Inertia,
+{
+    let kappa = map.kappa();
+    crate::observe::cooling::estimate(
+        p,
+        pairs,
+        rng,
+        |_| (1.0, kappa),
+        |_, s: &mut Particles<'_>, rng: &mut R| {
+            let (vi, vj) = (s.velocity(0), s.velocity(1));
+            map.collide_pair::<K, G, R>(s, (0, 1), (vi, vj), rng, &mut Counts::default());
+            kernel.pair_rate(scale * (vi - vj).norm())
+        },
+    )
+}
+
 /// GRW (3) for the pair `(i, j)` of velocities `(vi, vj)` with scattering direction `e` and the
 /// law's clamped coefficient: writes and returns the new velocities.
 #[inline(always)]

@@ -58,6 +58,18 @@ pub trait EventLoop {
     fn rough(&self, _p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
         None
     }
+
+    /// The collisional cooling of the particles `p` at the current time (as after
+    /// [`EventLoop::advance_to`]): the collision frequency and `zeta*` from `pairs >= 1`
+    /// random pairs drawn from `rng` (the caller's own stream: the loop and the particles are
+    /// untouched), collided by this loop's kernel, direction law and map
+    /// ([`crate::observe::cooling`]).
+    fn cooling<R: Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling;
 }
 
 /// Implements [`EventLoop`] for a loop type `$ty` (generics `[$g]`) by forwarding every method
@@ -98,6 +110,14 @@ macro_rules! impl_event_loop {
             fn work_rate(&self, n: usize) -> $crate::math::Real {
                 $t::work_rate(self, n)
             }
+            fn cooling<R: $crate::rng::Rng + ?Sized>(
+                &self,
+                p: &$crate::particles::Particles<'_>,
+                pairs: u64,
+                rng: &mut R,
+            ) -> $crate::observe::Cooling {
+                $t::cooling(self, p, pairs, rng)
+            }
             fn velocity_map(&self) -> $crate::engine::Frame {
                 $t::velocity_map(self)
             }
@@ -107,7 +127,7 @@ macro_rules! impl_event_loop {
 pub(crate) use impl_event_loop;
 impl_event_loop!(
     NoSplitting,
-    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry],
+    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap + collision_map::Inertia, G: crate::geometry::Geometry],
     NoSplitting<K, D, A, G>,
     {
         fn rough(&self, p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
@@ -117,7 +137,7 @@ impl_event_loop!(
 );
 impl_event_loop!(
     Splitting,
-    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap, G: crate::geometry::Geometry],
+    [K: crate::kernel::Kernel, D: crate::drive::Drive, A: CollisionMap + collision_map::Inertia, G: crate::geometry::Geometry],
     Splitting<K, D, A, G>,
     {
         fn rough(&self, p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
@@ -134,7 +154,7 @@ impl_event_loop!(
 impl<
     K: crate::kernel::Kernel,
     D: crate::drive::Drive,
-    A: CollisionMap,
+    A: CollisionMap + collision_map::Inertia,
     G: crate::geometry::Geometry,
 > EventLoop for TimeStepped<K, D, A, G>
 {
@@ -160,6 +180,14 @@ impl<
     }
     fn rough(&self, p: &Particles<'_>) -> Option<crate::observe::RoughObservables> {
         TimeStepped::rough(self, p)
+    }
+    fn cooling<R: Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling {
+        TimeStepped::cooling(self, p, pairs, rng)
     }
 }
 

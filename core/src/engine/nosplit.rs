@@ -303,3 +303,24 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Jumps for NoSplitting<K,
         self.c.counts.collisions += 1;
     }
 }
+
+/// The collisional cooling ([`crate::engine::EventLoop::cooling`]).
+impl<K: Kernel, D: Drive, A: CollisionMap + crate::engine::collision_map::Inertia, G: Geometry>
+    NoSplitting<K, D, A, G>
+{
+    /// The collision frequency and `zeta*` of `p` now from `pairs` random pairs
+    /// ([`crate::engine::EventLoop::cooling`]).
+    pub fn cooling<R: Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling {
+        crate::engine::collision_map::one_species_cooling::<K, G, A, R>(
+            (&self.c.kernel, &self.c.map, self.frame.scale),
+            p,
+            pairs,
+            rng,
+        )
+    }
+}

@@ -323,3 +323,28 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
         self.step(p, t, rng);
     }
 }
+
+/// The collisional cooling ([`crate::engine::EventLoop::cooling`]).
+impl<A: Restitution> SumNoSplitting<A> {
+    /// The collision frequency and `zeta*` of `p` now from `pairs` random pairs
+    /// ([`crate::engine::EventLoop::cooling`]).
+    pub fn cooling<R: Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling {
+        // Hard spheres in d = 3: the smooth map with `e` uniform.
+        crate::engine::collision_map::one_species_cooling::<
+            HardSpheres,
+            crate::geometry::Spheres,
+            A,
+            R,
+        >(
+            (&self.kernel, &self.restitution, self.frame.scale),
+            p,
+            pairs,
+            rng,
+        )
+    }
+}

@@ -333,3 +333,25 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> TimeStepped<K, D, A, G> 
         Ok(obs)
     }
 }
+
+/// The collisional cooling ([`crate::engine::EventLoop::cooling`]).
+impl<K: Kernel, D: Drive, A: CollisionMap + crate::engine::collision_map::Inertia, G: Geometry>
+    TimeStepped<K, D, A, G>
+{
+    /// The collision frequency and `zeta*` of `p` now from `pairs` random pairs
+    /// ([`crate::engine::EventLoop::cooling`]).
+    pub fn cooling<R: Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling {
+        // The stepped scheme moves physical velocities.
+        crate::engine::collision_map::one_species_cooling::<K, G, A, R>(
+            (&self.stage.kernel, &self.restitution, 1.0),
+            p,
+            pairs,
+            rng,
+        )
+    }
+}

@@ -174,3 +174,17 @@ crate::engine::impl_event_loop!(
         }
     }
 );
+
+/// The collisional cooling ([`crate::engine::EventLoop::cooling`]).
+impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureSplitting<K, D, L, G> {
+    /// The collision frequency and `zeta*` of `p` now from `pairs` random pairs: the pair
+    /// table's ([`MixtureNoSplitting::cooling`]).
+    pub fn cooling<R: Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling {
+        self.collide.cooling(p, pairs, rng)
+    }
+}

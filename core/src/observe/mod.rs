@@ -3,8 +3,10 @@
 //! report them ([`crate::engine::EventLoop::rough`], [`crate::engine::EventLoop::species`]),
 //! and below the rough and mixture modules that build on the loops.
 
+pub mod cooling;
 pub mod rotation;
 pub mod species;
 
+pub use cooling::Cooling;
 pub use rotation::RoughObservables;
 pub use species::MixtureObservables;

@@ -150,7 +150,12 @@ pub(super) type Begun<E> = Result<(E, Observables), EngineError>;
 
 /// The scheme level every family but the mixtures shares: the exact loop, a splitting or MS's
 /// time-stepped scheme (smooth spheres' sum form is [`Model::by_scheme`]'s).
-fn by_split<K: Kernel, D: Drive, A: CollisionMap, G: Geometry>(
+fn by_split<
+    K: Kernel,
+    D: Drive,
+    A: CollisionMap + crate::engine::collision_map::Inertia,
+    G: Geometry,
+>(
     scheme: SchemeModel,
     k: K,
     d: D,

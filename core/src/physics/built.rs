@@ -8,6 +8,7 @@ use crate::engine::{Counts, EngineError, EventLoop, Frame};
 use crate::math::Real;
 use crate::mixture::MixtureObservables;
 use crate::moments::Observables;
+use crate::observe::Cooling;
 use crate::particles::Particles;
 use crate::rng::Rng;
 use crate::rough::RoughObservables;
@@ -67,6 +68,9 @@ impl<T> EventLoop for NotBuilt<T> {
         match self.0 {}
     }
     fn rough(&self, _p: &Particles<'_>) -> Option<RoughObservables> {
+        match self.0 {}
+    }
+    fn cooling<R: Rng + ?Sized>(&self, _p: &Particles<'_>, _k: u64, _rng: &mut R) -> Cooling {
         match self.0 {}
     }
 }
@@ -161,6 +165,13 @@ impl<T: EventLoop, D: Drive> EventLoop for Exact<T, D> {
     fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
         if D::EXACT {
             self.0.rough(p)
+        } else {
+            never_made()
+        }
+    }
+    fn cooling<R: Rng + ?Sized>(&self, p: &Particles<'_>, pairs: u64, rng: &mut R) -> Cooling {
+        if D::EXACT {
+            self.0.cooling(p, pairs, rng)
         } else {
             never_made()
         }

@@ -212,7 +212,12 @@ impl<G: WhiteNoiseIn, P: PairModel> Family for Mixture<G, P> {
 /// but the mixtures (smooth spheres add the sum form in [`ByScheme`]): kernel `K`, drive `D`,
 /// collision map `A`, dimension `G`.
 #[derive(Clone, Debug)]
-pub enum BySplit<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> {
+pub enum BySplit<
+    K: Kernel,
+    D: Drive,
+    A: CollisionMap + crate::engine::collision_map::Inertia,
+    G: Geometry,
+> {
     /// The exact no-splitting scheme (GRW Section 3; never made for a stepped-only drive).
     NoSplitting(Exact<NoSplitting<K, D, A, G>, D>),
     /// Euler or Strang splitting (RW Algorithms 1, 2; feature `splitting`).
@@ -315,6 +320,14 @@ macro_rules! forward {
             fn rough(&self, p: &Particles<'_>) -> Option<RoughObservables> {
                 match self { $(Self::$v(e) => EventLoop::rough(e, p)),+ }
             }
+            fn cooling<R: Rng + ?Sized>(
+                &self,
+                p: &Particles<'_>,
+                pairs: u64,
+                rng: &mut R,
+            ) -> crate::observe::Cooling {
+                match self { $(Self::$v(e) => EventLoop::cooling(e, p, pairs, rng)),+ }
+            }
         }
     };
 }
@@ -332,7 +345,7 @@ forward!(
     RoughDiskMixture
 );
 forward!(ByLaw<F, K, D>, [F: Family, K: Kernel, D: Drive], Constant, ImpactSpeed);
-forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap, G: Geometry], NoSplitting, Splitting, TimeStepped);
+forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap + crate::engine::collision_map::Inertia, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm);
 kernel_table!(by_kernel);

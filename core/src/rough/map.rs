@@ -304,6 +304,13 @@ pub(crate) fn smooth_limit<K: crate::kernel::Kernel, G: Geometry>(eta_t: Real) -
     eta_t == 0.0 && (K::HARD || G::CHOICE == DimensionChoice::Three)
 }
 
+impl<A: Restitution> crate::engine::collision_map::Inertia for RoughMap<A> {
+    /// The particles' `kappa`.
+    fn kappa(&self) -> Real {
+        self.kappa
+    }
+}
+
 impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
     const SPINS: bool = true;
 

@@ -326,8 +326,10 @@ pub struct ObserveSpec {
     /// Default `(t_end - t_start) / intervals`.
     #[serde(default)]
     pub first: Option<Spanned<f64>>,
-    /// Collisional moments mu2, mu4 (MS (67)) from this many random pairs per observation
-    /// (0 or absent: not computed).
+    /// The collisional cooling from this many random pairs per observation (0 or absent: not
+    /// computed): the collision frequency `nu`, `zeta` and `zeta_star` for every gas, MS's
+    /// moments mu2, mu4 (MS (67)) for smooth spheres of one species and a constant
+    /// coefficient, a smooth mixture's cooling rates.
     #[serde(default)]
     pub collisional_pairs: Option<Spanned<i64>>,
     /// Velocity snapshots: at the first observation time at or after each of these times, every

@@ -89,27 +89,22 @@ const SPHERES_ONLY: &str =
     "is written for spheres (d = 3); disks (particles.dimension = 2) do not have it";
 
 /// The scene's rules that depend on the physics, for a physics changed after the file was
-/// read ([`crate::Scene::with_physics`]): the scheme's grid against the observation `times`,
-/// collisional `pairs`, and what disks refuse (`histograms`: a reduced, a marginal one). The
+/// read ([`crate::Scene::with_physics`]): the scheme's grid against the observation `times`
+/// and what disks refuse (`histograms`: a reduced, a marginal one). The
 /// key and what is wrong, or `None`. The file's validation applies the same rules with the
 /// value's line.
 pub(crate) fn physics_rules(
     physics: &gdsmc_core::physics::Physics,
     times: &[f64],
-    pairs: u64,
     histograms: (bool, bool),
 ) -> Option<(&'static str, String)> {
     if let Some(m) = scheme::grid_problem(physics.scheme, times) {
         return Some(("scheme.dt", m));
     }
-    if let Some(m) = observe::pairs_problem(pairs, physics) {
-        return Some(("observe.collisional_pairs", m.to_string()));
-    }
     if physics.dimension == gdsmc_core::physics::DimensionChoice::Two {
-        let key = match (histograms, pairs > 0) {
-            ((true, _), _) => Some("reduced_histogram"),
-            ((_, true), _) => Some("marginal_histogram"),
-            (_, true) => Some("observe.collisional_pairs"),
+        let key = match histograms {
+            (true, _) => Some("reduced_histogram"),
+            (_, true) => Some("marginal_histogram"),
             _ => None,
         };
         return key.map(|k| (k, SPHERES_ONLY.to_string()));
@@ -125,8 +120,7 @@ impl SceneFile {
 
     /// Disks (`particles.dimension = 2`) run, observe their moments and speed shells (ring
     /// areas) and compare with the references written for any dimension; MS's reduced
-    /// distribution with its tail laws, BRS's marginal distribution and the collisional moments
-    /// are written for spheres, and are refused at their key rather than computed with the
+    /// distribution with its tail laws and BRS's marginal distribution are written for spheres, and are refused at their key rather than computed with the
     /// wrong volume.
     fn spheres_only(&self, ctx: &Ctx<'_>) -> Result<(), Error> {
         let why = SPHERES_ONLY;
@@ -135,11 +129,6 @@ impl SceneFile {
         }
         if let Some(h) = &self.marginal_histogram {
             return ctx.invalid(h.axis.span(), "marginal_histogram", why);
-        }
-        if let Some(k) = &self.observe.collisional_pairs
-            && *k.get_ref() > 0
-        {
-            return ctx.invalid(k.span(), "observe.collisional_pairs", why);
         }
         Ok(())
     }
@@ -173,7 +162,7 @@ impl SceneFile {
             self.spheres_only(&ctx)?;
         }
         scheme::on_grid(&ctx, &self.scheme, physics.scheme, &times)?;
-        let observe = observe::observe(&ctx, &self.observe, &times, &physics)?;
+        let observe = observe::observe(&ctx, &self.observe, &times)?;
         let snapshots = observe::snapshots(&ctx, &self.observe, &times)?;
         let histograms = observe::histograms(&ctx, self)?;
         let (ensembles, seed) = observe::run(&ctx, &self.run)?;

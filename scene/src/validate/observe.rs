@@ -5,7 +5,6 @@ use super::Ctx;
 use crate::error::Error;
 use crate::schema::{HistogramSpec, ObserveSpec, RunSpec, SceneFile};
 use crate::{Marginal, Shells};
-use gdsmc_core::physics::Physics;
 use toml::Spanned;
 
 // The rules of observing, each once: the file's validation (with its spans) and the scene's
@@ -203,7 +202,6 @@ pub(super) fn observe(
     ctx: &Ctx<'_>,
     o: &ObserveSpec,
     times: &[f64],
-    physics: &Physics,
 ) -> Result<(Option<usize>, u64, crate::TimeAxis), Error> {
     let steady_from = match &o.steady_from {
         None => None,
@@ -223,13 +221,6 @@ pub(super) fn observe(
             );
         }
     };
-    if let Some(why) = pairs_problem(pairs, physics) {
-        return ctx.invalid(
-            o.collisional_pairs.as_ref().map_or(0..0, |k| k.span()),
-            "observe.collisional_pairs",
-            why,
-        );
-    }
     let axis = match &o.time_axis {
         None => crate::TimeAxis::Time,
         Some(a) => match a.get_ref().as_str() {
@@ -245,23 +236,6 @@ pub(super) fn observe(
         },
     };
     Ok((steady_from, pairs, axis))
-}
-
-/// The rule of `observe.collisional_pairs` against the physics: what is wrong, or `None`.
-pub(crate) fn pairs_problem(pairs: u64, physics: &Physics) -> Option<&'static str> {
-    if pairs > 0 && physics.restitution.constant().is_none() {
-        return Some(
-            "assumes a constant restitution coefficient (MS (65)-(66)); not available with \
-             collisions.impact_speed_law",
-        );
-    }
-    if pairs > 0 && physics.rotation.is_some() {
-        return Some(
-            "gives the smooth gas's collisional moments (MS (65)-(67)); not available with \
-             [rotation]",
-        );
-    }
-    None
 }
 
 /// What the histogram tables ask for: the radial shells, the reduced shells and the marginal

@@ -178,6 +178,12 @@ pub const SPECIES_COLUMNS: [[&str; 4]; gdsmc_core::mixture::MAX_SPECIES] = [
 pub const COOLING_COLUMNS: [&str; gdsmc_core::mixture::MAX_SPECIES + 1] =
     ["zeta_mix", "zeta_s0", "zeta_s1", "zeta_s2", "zeta_s3"];
 
+/// The collisional cooling of every gas with `observe.collisional_pairs`, after every other
+/// column (gdsmc_core::observe::cooling): the collision frequency `nu` (collisions per
+/// particle per unit time, the rate of `s`), `zeta = -(dE/dt)_coll / E` of the energy about
+/// the flow (translation and rotation) and `zeta_star = zeta / nu`.
+pub const CLOSING_COLUMNS: [&str; 3] = ["nu", "zeta", "zeta_star"];
+
 /// A rough mixture's rotational temperature `T_rot_mix = sum_s x_s T_rot,s` (after the
 /// species' translational columns).
 pub const ROUGH_MIXTURE_TEMPERATURE: &str = "T_rot_mix";
@@ -237,16 +243,18 @@ pub fn mixture_values(m: &gdsmc_core::mixture::MixtureObservables) -> Vec<f64> {
 
 /// The column names of a scene's observables.csv, in order: [`COLUMNS`], `s` (collisions per
 /// particle), then `mu2`, `mu4`
-/// (MS (67)) when `observe.collisional_pairs` is set, then a rough gas's [`ROUGH_COLUMNS`],
+/// (MS (67)) where [`super::collisional::Collisional::moments`], then a rough gas's [`ROUGH_COLUMNS`],
 /// then a mixture's columns
 /// ([`MIXTURE_TEMPERATURE`], [`SPECIES_COLUMNS`] per species; for rough particles
 /// [`ROUGH_MIXTURE_TEMPERATURE`] and [`ROUGH_SPECIES_COLUMNS`] per species instead of the rough
-/// gas's; and with `observe.collisional_pairs` the [`COOLING_COLUMNS`] instead of `mu2`, `mu4`).
+/// gas's; and where [`super::collisional::Collisional::mixture_rates`] the [`COOLING_COLUMNS`]), then with
+/// `observe.collisional_pairs` the [`CLOSING_COLUMNS`].
 pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     let mut v: Vec<&'static str> = COLUMNS.iter().map(|c| c.name).collect();
     v.push(name::S);
     let species = scene.physics().species.len();
-    if scene.collisional_pairs() > 0 && species == 0 {
+    let coll = super::collisional::collisional(scene);
+    if coll.moments {
         v.extend(COLLISIONAL);
     }
     let rough = scene.physics().rotation.is_some();
@@ -264,9 +272,12 @@ pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
                 v.extend(cols);
             }
         }
-        if scene.collisional_pairs() > 0 {
+        if coll.mixture_rates {
             v.extend(&COOLING_COLUMNS[..species + 1]);
         }
+    }
+    if coll.cooling {
+        v.extend(CLOSING_COLUMNS);
     }
     v
 }
@@ -325,6 +336,9 @@ pub fn axis_label_in(name: &str, species: &[String]) -> String {
         MIXTURE_TEMPERATURE => ("mixture temperature T_mix", DIM),
         ROUGH_MIXTURE_TEMPERATURE => ("mixture rotational temperature T_rot_mix", DIM),
         "zeta_mix" => ("mixture cooling rate zeta_mix", "(1/scene time unit)"),
+        "nu" => ("collision frequency nu = ds/dt", "(1/scene time unit)"),
+        "zeta" => ("cooling rate zeta = -(dE/dt)_coll/E", "(1/scene time unit)"),
+        "zeta_star" => ("reduced cooling rate zeta* = zeta/nu", NONE),
         _ => return species_label(name, species).unwrap_or_else(|| name.to_string()),
     };
     format!("{words} {unit}")

@@ -156,7 +156,9 @@ fn observe<E: EventLoop>(
     let marginal_len = scene.marginal_histogram().map_or(0, |h| h.weights());
     let (mut marginal_first, mut marginal_last) =
         (vec![0.0; marginal_len], vec![0.0; marginal_len]);
-    let cooling = (scene.collisional_pairs() > 0)
+    let coll = crate::run::collisional::collisional(scene);
+    let cooling = coll
+        .mixture_rates
         .then(|| CoolingRates::new(scene))
         .flatten();
     let mut last_s = s0;
@@ -211,13 +213,9 @@ fn observe<E: EventLoop>(
         if let Some((_, w)) = snapshots.iter().find(|(i, _)| *i == ti) {
             w.put(k, p, engine.velocity_map(), s)?;
         }
-        // The scene allows collisional pairs with a constant restitution law only.
-        if let (true, Some((bulk, t_bulk)), Some(alpha), true) = (
-            scene.collisional_pairs() > 0,
-            stored,
-            scene.physics().restitution.constant(),
-            cooling.is_none(),
-        ) {
+        if let (true, Some((bulk, t_bulk)), Some(alpha)) =
+            (coll.moments, stored, scene.physics().restitution.constant())
+        {
             // mu2, mu4 are reduced by v0, so the stored units do.
             let (mu2, mu4) =
                 collisional_moments(p, bulk, t_bulk, alpha, scene.collisional_pairs(), &mut diag);
@@ -240,6 +238,11 @@ fn observe<E: EventLoop>(
                     &mut diag,
                 ));
             }
+        }
+        // Last: the draws above keep their bits.
+        if coll.cooling {
+            let c = engine.cooling(p, scene.collisional_pairs(), &mut diag);
+            out.extend([c.frequency, c.zeta(), c.zeta_star]);
         }
     }
     // The state at the last observation, for a continuation.

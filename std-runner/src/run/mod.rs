@@ -8,6 +8,7 @@
 //! The engine is composed at compile time: the core's [`Model::start`] turns the scene's
 //! physics into one statically composed event loop per ensemble.
 
+pub mod collisional;
 pub mod columns;
 pub mod cooling;
 pub mod ensemble;

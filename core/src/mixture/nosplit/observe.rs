@@ -110,3 +110,45 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         obs
     }
 }
+
+/// The collisional cooling ([`crate::engine::EventLoop::cooling`]).
+impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G> {
+    /// The collision frequency and `zeta*` of `p` now from `pairs` random pairs
+    /// ([`crate::observe::cooling`]): each particle of its species' mass and `kappa`, each
+    /// pair collided by its pair type's kernel and map, the lower species first as the loop
+    /// collides them.
+    pub fn cooling<R: crate::rng::Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling {
+        let sp = &self.sp;
+        // Every particle is in one species' range (the ranges tile 0..n).
+        let species = |i: usize| (0..sp.len()).find(|&s| sp.range(s).contains(&i));
+        let of = |i: usize| species(i).unwrap_or(0);
+        crate::observe::cooling::estimate(
+            p,
+            pairs,
+            rng,
+            |i| {
+                let m = sp.mass(of(i));
+                (m, m * self.kappa[of(i)])
+            },
+            |(i, j), s: &mut Particles<'_>, rng: &mut R| {
+                let (si, sj) = (of(i), of(j));
+                let k = sp.pair_index(si, sj);
+                let (a, b) = if si <= sj { (0, 1) } else { (1, 0) };
+                let (va, vb) = (s.velocity(a), s.velocity(b));
+                self.maps[k].collide_pair::<K, G, R>(
+                    s,
+                    (a, b),
+                    (va, vb),
+                    rng,
+                    &mut crate::engine::Counts::default(),
+                );
+                self.kernels[k].pair_rate(self.frame.scale * (va - vb).norm())
+            },
+        )
+    }
+}

@@ -6,6 +6,7 @@ use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
 use crate::run::{initial_sampler, initial_temperature};
 use crate::scene::{BackgroundKernel, DriveChoice, DriveKind, KernelKind, Scene, SchemeChoice};
 
+mod cooling;
 pub mod holds;
 mod mixture;
 pub mod registry;

@@ -7,7 +7,7 @@
 //! declares gets its curves) and each shipped scene's description to what its run attaches.
 
 pub use super::holds::{Holds, Particles};
-use super::{Kind, ReferenceCurve, mixture, rough, single, sonine};
+use super::{Kind, ReferenceCurve, cooling, mixture, rough, single, sonine};
 use crate::scene::Scene;
 use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind};
 
@@ -105,6 +105,20 @@ const fn maxwell_linear(schemes: &'static [SchemeKind]) -> Holds {
         schemes,
         dimensions: ANY_D,
         when: None,
+    }
+}
+
+/// A one-species smooth gas of kernels `kernels`, a constant coefficient, any drive and scheme
+/// in d = 2 and 3, observing its cooling (`observe.collisional_pairs`).
+const fn smooth_cooling(kernels: &'static [KernelKind]) -> Holds {
+    Holds {
+        particles: Particles::Smooth,
+        kernels,
+        laws: CONSTANT,
+        drives: DriveKind::ALL,
+        schemes: ANY_SCHEME,
+        dimensions: ANY_D,
+        when: Some("observe.collisional_pairs > 0"),
     }
 }
 
@@ -347,6 +361,22 @@ pub const REFERENCES: &[Reference] = &[
         ],
         cites: &["Megías and Santos 2019"],
         curves: mixture::rough_mixture_curves,
+    },
+    Reference {
+        id: "zeta* of the Maxwell kernel",
+        kind: Kind::MeanAtN,
+        holds: smooth_cooling(MAXWELL),
+        columns: &["zeta_star_exact"],
+        cites: &[],
+        curves: cooling::maxwell,
+    },
+    Reference {
+        id: "zeta* of hard particles at a Maxwellian",
+        kind: Kind::Approximation,
+        holds: smooth_cooling(HARD),
+        columns: &["zeta_star_MA"],
+        cites: &[],
+        curves: cooling::hard_maxwellian,
     },
 ];
 

@@ -1,0 +1,91 @@
+//! The references of the reduced cooling rate `zeta_star = zeta / nu` (the `zeta_star` column
+//! of `observe.collisional_pairs`; gdsmc_core::observe::cooling), for a one-species smooth gas
+//! with a constant restitution coefficient. Builders of [`super::registry`].
+//!
+//! - The Maxwell kernel: GRW (3) with `e` uniform changes a pair's energy by
+//!   `-(1 - alpha^2) |u|^2 / 8` on average and every pair collides at the same rate, while the
+//!   uniform pairs' `<|u|^2>` is `4 n/(n - 1)` times the energy per particle about the flow:
+//!   `zeta* = (1 - alpha^2)/4 n/(n - 1)` for every state, in any dimension and under any drive
+//!   (the drive is not a collision). Exact at n, as the estimate's mean.
+//! - Hard particles at a Maxwellian of temperature `T`: over collisions (weighted by
+//!   `|u . n|`) the normal relative speed has `<(u . n)^2> = 4 T`, so a collision loses
+//!   `(1 - alpha^2) T` and `zeta* = (1 - alpha^2)/d`. The Maxwellian approximation (MS (5)'s
+//!   Sonine correction moves it by `O(a2)`): shown, not judged.
+
+use super::{Kind, ReferenceCurve};
+use crate::scene::Scene;
+
+/// The constant curve `value` of `zeta_star`.
+fn constant(name: &'static str, source: &'static str, kind: Kind, value: f64) -> ReferenceCurve {
+    ReferenceCurve {
+        name,
+        of: "zeta_star",
+        source,
+        kind,
+        curve: Box::new(move |_| value),
+    }
+}
+
+/// The scene's constant coefficient when it observes the cooling (`observe.collisional_pairs`).
+fn alpha(scene: &Scene) -> Option<f64> {
+    (scene.collisional_pairs() > 0)
+        .then(|| scene.physics().restitution.constant())
+        .flatten()
+}
+
+/// `zeta_star_exact = (1 - alpha^2)/4 n/(n - 1)` of the Maxwell kernel (module docs).
+pub(super) fn maxwell(scene: &Scene) -> Vec<ReferenceCurve> {
+    let Some(a) = alpha(scene) else {
+        return Vec::new();
+    };
+    let n = scene.n() as f64;
+    let value = (1.0 - a * a) / 4.0 * n / (n - 1.0);
+    vec![constant(
+        "zeta_star_exact",
+        "zeta* of the Maxwell kernel",
+        Kind::MeanAtN,
+        value,
+    )]
+}
+
+/// `zeta_star_MA = (1 - alpha^2)/d` of hard particles at a Maxwellian (module docs).
+pub(super) fn hard_maxwellian(scene: &Scene) -> Vec<ReferenceCurve> {
+    let Some(a) = alpha(scene) else {
+        return Vec::new();
+    };
+    let d = scene.dimension() as f64;
+    vec![constant(
+        "zeta_star_MA",
+        "zeta* of hard particles at a Maxwellian",
+        Kind::Approximation,
+        (1.0 - a * a) / d,
+    )]
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::reference::balance::{collision_rate, cooling_constant};
+
+    /// The energy balance's Maxwellian cooling constant (reference/balance.rs, derived there
+    /// from the scattering of GRW (3)) over its Maxwellian collision rate is the `zeta*` these
+    /// references state: `(1 - alpha^2)/d` for hard particles, `(1 - alpha^2)/4` for the
+    /// Maxwell kernel (n -> infinity), in d = 2 and 3.
+    #[test]
+    fn the_values_are_the_energy_balance_per_collision() {
+        let (alpha, t, gc): (f64, f64, f64) = (0.7, 1.3, 0.37);
+        for d in [2, 3] {
+            let hard = cooling_constant(d, true, gc, 1.0, alpha) * t.sqrt()
+                / collision_rate(d, gc, 1.0, t);
+            assert!(
+                (hard - (1.0 - alpha * alpha) / d as f64).abs() < 1e-12,
+                "d = {d}"
+            );
+            let maxwell =
+                cooling_constant(d, false, gc, 0.0, alpha) / collision_rate(d, gc, 0.0, t);
+            assert!(
+                (maxwell - (1.0 - alpha * alpha) / 4.0).abs() < 1e-12,
+                "d = {d}"
+            );
+        }
+    }
+}

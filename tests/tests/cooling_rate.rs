@@ -1,0 +1,157 @@
+//! The collisional cooling of every family (`observe.collisional_pairs`: the columns `nu`,
+//! `zeta`, `zeta_star`; gdsmc_core::observe::cooling), estimated from random pairs collided by
+//! each loop's own kernel and map, against values derived independently of that code:
+//!
+//! - the Maxwell kernel: `zeta* = (1 - alpha^2)/4 n/(n - 1)` in every state and dimension
+//!   (reference/curves/cooling.rs) and `nu = (n - 1)/n 4 pi gamma C` exactly;
+//! - hard particles at the initial Maxwellian (temperatures `T_t`, and `T_r` for rough ones):
+//!   a collision loses on average `(1 - alpha^2) T_t` of translational energy (smooth), and
+//!   `(1 - alpha^2) T_t + (1 - beta^2)(kappa T_t + T_r)/(1 + kappa)` (rough spheres) or
+//!   `... /(2 (1 + kappa))` (rough disks), from `<(u . n)^2> = 4 T_t` over collisions and
+//!   `<|g_t|^2> = 4 T_t + 4 T_r/kappa` (spheres), `2 T_t + 2 T_r/kappa` (disks) with the energy
+//!   change of Huthmann and Zippelius (1997); `zeta*` is that over twice the energy per
+//!   particle, times `n/(n - 1)` (the energy about the flow of n particles);
+//! - a smooth mixture: `zeta` equals `zeta_mix`, the same rate estimated by run/cooling.rs from
+//!   the analytic average over the direction (Garzó and Dufty 1999's definition).
+//!
+//! Every mean is held to its value within its 99.9% half-width, Bonferroni-corrected over the
+//! points checked together (`gdsmc_stats::family`).
+
+use gdsmc_validation::*;
+
+/// `zeta_star` at the first observation of `name` with `set`: mean and half-width.
+fn at_start(name: &str, set: &[&str], n: usize, seed: u64) -> (f64, f64) {
+    let mut all = vec![
+        "observe.collisional_pairs=20000",
+        "observe.t_end=1",
+        "observe.steady_from=",
+        "observe.intervals=1",
+        "observe.spacing=linear",
+    ];
+    all.extend(set);
+    let st = run(&shipped_set(name, &all, n, 16, seed));
+    at(&st, 0, "zeta_star")
+}
+
+#[test]
+fn the_maxwell_gas_loses_one_minus_alpha_squared_over_four_per_collision_in_every_state() {
+    for (k, dim) in ["particles.dimension=3", "particles.dimension=2"]
+        .into_iter()
+        .enumerate()
+    {
+        let s = shipped_set(
+            "grw-example3",
+            &[dim, "observe.collisional_pairs=5000", "observe.intervals=8"],
+            20,
+            12,
+            700 + k as u64,
+        );
+        let (n, alpha) = (s.n() as f64, s.physics().restitution.constant().unwrap());
+        let st = run(&s);
+        let f = gdsmc_stats::family(st.times.len(), gdsmc_stats::dof(st.ensembles));
+        let exact = (1.0 - alpha * alpha) / 4.0 * n / (n - 1.0);
+        assert_within_at_all_times(&st, "zeta_star", f, |_| exact, dim);
+        // Power: the n -> infinity value (5% lower at n = 20) would be refused.
+        let limit = exact * (n - 1.0) / n;
+        assert!(times_outside(&st, "zeta_star", f, |_| limit) > 0, "{dim}");
+        let (gc, _) = s.physics().kernel.rate_constants();
+        let nu = (n - 1.0) / n * 4.0 * std::f64::consts::PI * gc;
+        for ti in 0..st.times.len() {
+            let (m, _) = at(&st, ti, "nu");
+            assert!((m - nu).abs() <= 1e-12 * nu, "{dim}: nu {m} vs {nu}");
+        }
+    }
+}
+
+/// A case: scene, settings, dimension, alpha, and for rough particles `(beta, kappa, T_r)`.
+type Case = (
+    &'static str,
+    &'static [&'static str],
+    f64,
+    f64,
+    Option<(f64, f64, f64)>,
+);
+
+#[test]
+fn hard_particles_at_a_maxwellian_lose_their_energy_per_collision_as_derived() {
+    // (scene, settings, d, alpha, rough: (beta, kappa, T_r)); T_t = 1 everywhere.
+    let cases: [Case; 4] = [
+        ("hcs-hard-spheres", &[], 3.0, 0.5, None),
+        ("disks-hcs", &[], 2.0, 0.5, None),
+        (
+            "rough-hcs",
+            &[
+                "rotation.tangential_restitution=0.5",
+                "rotation.inertia=0.4",
+                "rotation.temperature=0.5",
+            ],
+            3.0,
+            0.9,
+            Some((0.5, 0.4, 0.5)),
+        ),
+        (
+            "rough-disks-hcs",
+            &[
+                "rotation.tangential_restitution=-0.3",
+                "rotation.inertia=0.5",
+                "rotation.temperature=2.0",
+            ],
+            2.0,
+            0.9,
+            Some((-0.3, 0.5, 2.0)),
+        ),
+    ];
+    let n = 1000;
+    let f = gdsmc_stats::family(cases.len(), gdsmc_stats::dof(16));
+    for (k, (name, set, d, alpha, rough)) in cases.into_iter().enumerate() {
+        let (m, c) = at_start(name, set, n, 720 + k as u64);
+        let (loss, twice_energy) = match rough {
+            None => (1.0 - alpha * alpha, d),
+            Some((beta, kappa, tr)) => {
+                let share = if d == 3.0 { 1.0 } else { 0.5 };
+                let rotation = (1.0 - beta * beta) * (kappa + tr) / (1.0 + kappa) * share;
+                let d_rot = if d == 3.0 { 3.0 } else { 1.0 };
+                (1.0 - alpha * alpha + rotation, d + d_rot * tr)
+            }
+        };
+        let expected = loss / twice_energy * n as f64 / (n as f64 - 1.0);
+        assert!(
+            (m - expected).abs() <= f * c,
+            "{name}: zeta_star {m} +- {}, derived {expected}",
+            f * c
+        );
+        // Power: a third off would be caught.
+        assert!(
+            f * c < expected / 3.0,
+            "{name}: +- {} is uninformative",
+            f * c
+        );
+    }
+}
+
+#[test]
+fn a_mixtures_cooling_rate_is_the_analytic_estimates() {
+    let s = shipped_set(
+        "mixture-maxwell",
+        &["observe.collisional_pairs=20000", "observe.intervals=4"],
+        1000,
+        12,
+        740,
+    );
+    let st = run(&s);
+    let f = gdsmc_stats::family(st.times.len(), gdsmc_stats::dof(st.ensembles));
+    for ti in 0..st.times.len() {
+        let (a, ca) = at(&st, ti, "zeta");
+        let (b, cb) = at(&st, ti, "zeta_mix");
+        assert!(
+            (a - b).abs() <= f * (ca + cb),
+            "t = {}: zeta {a} +- {ca}, zeta_mix {b} +- {cb}",
+            st.times[ti]
+        );
+        assert!(
+            f * (ca + cb) < 0.1 * b,
+            "uninformative: +- {}",
+            f * (ca + cb)
+        );
+    }
+}
