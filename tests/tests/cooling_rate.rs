@@ -11,6 +11,8 @@
 //!   `<|g_t|^2> = 4 T_t + 4 T_r/kappa` (spheres), `2 T_t + 2 T_r/kappa` (disks) with the energy
 //!   change of Huthmann and Zippelius (1997); `zeta*` is that over twice the energy per
 //!   particle, times `n/(n - 1)` (the energy about the flow of n particles);
+//! - BRS's impact-speed law at the initial Maxwellian: `zeta` is the exact initial cooling
+//!   rate of `reference::impact_speed` (in scene time units, so `nu` is checked too);
 //! - a smooth mixture: `zeta` equals `zeta_mix`, the same rate estimated by run/cooling.rs from
 //!   the analytic average over the direction (Garzó and Dufty 1999's definition).
 //!
@@ -154,4 +156,52 @@ fn a_mixtures_cooling_rate_is_the_analytic_estimates() {
             f * (ca + cb)
         );
     }
+}
+
+/// Under BRS's impact-speed law the collisions cool a Maxwellian at the exact initial rate of
+/// `reference::impact_speed` (derived over the impact parameter; exact at every n over the
+/// initial draw): `zeta = -(dT/dt)(0)/T0` times `n/(n - 1)` (the energy about the flow), in
+/// scene time units: the estimate's collision frequency is the physical one.
+#[test]
+fn the_impact_speed_law_cools_a_maxwellian_at_its_exact_rate() {
+    use gdsmc_runner::reference::impact_speed::{Impacts, InitialCooling};
+    let n = 1000;
+    let all = [
+        "collisions.restitution=",
+        "collisions.impact_speed_law={ beta0 = 0.3, delta = 1.0 }",
+        "observe.collisional_pairs=20000",
+        "observe.t_end=1",
+        "observe.steady_from=",
+        "observe.intervals=1",
+        "observe.spacing=linear",
+        "observe.first=0.5",
+    ];
+    let s = shipped_set("hcs-hard-spheres", &all, n, 16, 760);
+    let (gc, lambda) = s.physics().kernel.rate_constants();
+    let exact = InitialCooling {
+        n,
+        d: 3,
+        k: 4.0 * std::f64::consts::PI * gc,
+        lambda,
+        impacts: Impacts::Spheres,
+        beta0: 0.3,
+        delta: 1.0,
+        t0: 1.0,
+        rough: None,
+    };
+    let expected = -exact.rate() * n as f64 / (n as f64 - 1.0);
+    let st = run(&s);
+    let (m, c) = at(&st, 0, "zeta");
+    assert!(
+        (m - expected).abs() <= c,
+        "zeta {m} +- {c}, exact {expected}"
+    );
+    assert!(c < 0.1 * expected, "+- {c} is uninformative");
+    // Power: the law at BRS (10)'s printed impact speed (`min(s, 1 - s)` of the normal share)
+    // would be refused.
+    let defect = -exact.rate_seeing(|s| s.min(1.0 - s)) * n as f64 / (n as f64 - 1.0);
+    assert!(
+        (m - defect).abs() > c,
+        "the defect's {defect} is within {m} +- {c}"
+    );
 }
