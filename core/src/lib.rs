@@ -58,3 +58,4 @@ pub mod rough;
 pub mod sample;
 pub mod species;
 pub mod vec3;
+pub mod weighted;

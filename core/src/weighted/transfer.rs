@@ -1,0 +1,145 @@
+//! The weight transfer of a collision (Rjasanow and Wagner 1996): how much weight moves from a
+//! colliding pair to its post-collision velocities, and the jump itself.
+
+use super::particle::{WeightedError, WeightedParticle, WeightedSystem};
+use crate::math::Real;
+use crate::vec3::Vec3;
+
+/// The weight transfer function `gamma(g_i, g_j) = min(g_i, g_j) / (1 + kappa)`, `kappa >= 0`
+/// (Rjasanow and Wagner 1996): `kappa = 0` moves the lighter partner whole (equal weights stay
+/// equal: GRW's process), `kappa > 0` leaves a share `kappa/(1 + kappa)` of it behind.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transfer {
+    kappa: Real,
+}
+
+impl Transfer {
+    /// The transfer with parameter `kappa`: finite and >= 0, else `None`.
+    pub fn new(kappa: Real) -> Option<Self> {
+        (kappa.is_finite() && kappa >= 0.0).then_some(Transfer { kappa })
+    }
+
+    /// `kappa`.
+    pub fn kappa(&self) -> Real {
+        self.kappa
+    }
+
+    /// `gamma(g_i, g_j)`.
+    #[inline(always)]
+    pub fn gamma(&self, gi: Real, gj: Real) -> Real {
+        let m = if gi < gj { gi } else { gj };
+        if self.kappa == 0.0 {
+            m
+        } else {
+            m / (1.0 + self.kappa)
+        }
+    }
+
+    /// The pair's rate factor `g_i g_j / gamma(g_i, g_j) = (1 + kappa) max(g_i, g_j)`: the
+    /// pair collides at `int B de` times it over `n0`, so that rate times `gamma` is
+    /// `g_i g_j int B de / n0` (module docs of [`super`]).
+    #[inline(always)]
+    pub fn rate_factor(&self, gi: Real, gj: Real) -> Real {
+        let m = if gi < gj { gj } else { gi };
+        (1.0 + self.kappa) * m
+    }
+}
+
+/// The collision of particles `i != j` of `sys` with post-collision velocities `(vi, vj)` under
+/// `transfer`: both lose `gamma`, and `gamma` appears at `vi` and at `vj` (in place of a
+/// partner whose weight is used up, else as a new particle). [`WeightedError::Full`] (and
+/// nothing changed) when the new particles do not fit.
+pub fn collide(
+    sys: &mut WeightedSystem<'_>,
+    (i, j): (usize, usize),
+    (vi, vj): (Vec3, Vec3),
+    transfer: &Transfer,
+) -> Result<(), WeightedError> {
+    let (gi, gj) = (sys.particles()[i].g, sys.particles()[j].g);
+    let gamma = transfer.gamma(gi, gj);
+    // `g - gamma` is exactly 0 when gamma is that weight (kappa = 0, the lighter partner).
+    let (ri, rj) = (gi - gamma, gj - gamma);
+    let needed = usize::from(ri > 0.0) + usize::from(rj > 0.0);
+    if sys.len() + needed > sys.capacity() {
+        return Err(WeightedError::Full);
+    }
+    let p = sys.particles_mut();
+    for (k, rest, v) in [(i, ri, vi), (j, rj, vj)] {
+        if rest > 0.0 {
+            p[k].g = rest;
+        } else {
+            p[k] = WeightedParticle::new(v, gamma);
+        }
+    }
+    for (rest, v) in [(ri, vi), (rj, vj)] {
+        if rest > 0.0 {
+            sys.push(WeightedParticle::new(v, gamma))?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::collision::inelastic;
+
+    fn sums(s: &WeightedSystem<'_>) -> (Real, Vec3, Real) {
+        (s.mass(), s.momentum(), s.energy())
+    }
+
+    /// With `kappa = 0` and equal weights a collision is GRW's: the pair replaced, no particle
+    /// added. With `kappa > 0` the jump moves `gamma` to the new velocities: the weighted sums
+    /// of `1`, `v` and `|v|^2/2` change by `gamma` times the pair's change, and the rate factor
+    /// times `gamma` is `g_i g_j` (the Boltzmann operator's weight of the pair).
+    #[test]
+    fn a_collision_moves_gamma_to_the_new_velocities() {
+        let (v, w) = (Vec3::new(1.0, 0.5, -0.2), Vec3::new(-0.3, 0.1, 0.8));
+        let e = Vec3::new(0.0, 0.6, 0.8);
+        let (a, b) = inelastic(v, w, e, 0.7);
+        let pair_loss = 0.5 * (a.norm2() + b.norm2() - v.norm2() - w.norm2());
+        let mut buf = [WeightedParticle::default(); 6];
+        buf[0] = WeightedParticle::new(v, 1.0);
+        buf[1] = WeightedParticle::new(w, 1.0);
+        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
+        collide(&mut sys, (0, 1), (a, b), &Transfer::new(0.0).unwrap()).unwrap();
+        assert_eq!(sys.len(), 2);
+        assert_eq!(sys.particles()[0], WeightedParticle::new(a, 1.0));
+
+        let t = Transfer::new(1.0).unwrap();
+        let (gi, gj) = (1.0, 0.25);
+        let mut buf = [WeightedParticle::default(); 6];
+        buf[0] = WeightedParticle::new(v, gi);
+        buf[1] = WeightedParticle::new(w, gj);
+        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
+        let (m0, p0, e0) = sums(&sys);
+        collide(&mut sys, (0, 1), (a, b), &t).unwrap();
+        let gamma = t.gamma(gi, gj);
+        assert_eq!(gamma, 0.125);
+        assert_eq!(t.rate_factor(gi, gj) * gamma, gi * gj);
+        assert_eq!(sys.len(), 4);
+        let (m1, p1, e1) = sums(&sys);
+        assert!((m1 - m0).abs() < 1e-15);
+        assert!((p1 - p0).norm() < 1e-15);
+        assert!((e1 - e0 - gamma * pair_loss).abs() < 1e-15);
+    }
+
+    /// A collision that does not fit changes nothing; a weight used up is replaced in place.
+    #[test]
+    fn a_full_buffer_refuses_and_changes_nothing() {
+        let v = Vec3::new(1.0, 0.0, 0.0);
+        let mut buf = [
+            WeightedParticle::new(v, 1.0),
+            WeightedParticle::new(-v, 0.5),
+        ];
+        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
+        let t = Transfer::new(0.0).unwrap();
+        let before = [sys.particles()[0], sys.particles()[1]];
+        assert_eq!(
+            collide(&mut sys, (0, 1), (v, v), &t),
+            Err(WeightedError::Full)
+        );
+        assert_eq!(sys.particles(), &before);
+        assert!(Transfer::new(-1.0).is_none() && Transfer::new(Real::NAN).is_none());
+    }
+}
