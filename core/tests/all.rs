@@ -26,4 +26,5 @@ mod rough_mixture;
 mod rough_mixture_equipartition;
 mod samplers;
 mod sum_majorant;
+mod weighted;
 mod work_rate;

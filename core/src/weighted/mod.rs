@@ -16,6 +16,7 @@
 //! reduction ([`reduce`]) replaces groups of particles close in velocity by two, keeping each
 //! group's weight, momentum and energy.
 
+pub mod nosplit;
 pub mod particle;
 pub mod reduce;
 pub mod transfer;
