@@ -2,7 +2,7 @@
 //! GRW's exact temperature of the Maxwell gas: `E[T_bulk(t)] = T_bulk(0) exp(-c t)`,
 //! `c = (1 - alpha^2) int B de / 4`, given each ensemble's own start, for any weight transfer
 //! and through reductions (module docs of `weighted::nosplit`). Judged at three times together
-//! (Bonferroni) at 99.9%; the rate a transfer that forgot `gamma` would give,
+//! (Bonferroni) at 99.9%, with either reduction; the rate a transfer that forgot `gamma` would give,
 //! `c (1 + kappa)`, is refused at the same intervals.
 
 use gdsmc_core::geometry::{Disks, Spheres};
@@ -11,7 +11,7 @@ use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::Streams;
 use gdsmc_core::sample::standard_normal3;
 use gdsmc_core::weighted::nosplit::WeightedNoSplitting;
-use gdsmc_core::weighted::{Transfer, WeightedParticle, WeightedSystem};
+use gdsmc_core::weighted::{Reduction, Transfer, WeightedParticle, WeightedSystem};
 use gdsmc_stats::Sample;
 
 const ALPHA: f64 = 0.5;
@@ -22,6 +22,7 @@ const TIMES: [f64; 3] = [1.0, 4.0, 8.0];
 fn ratios<G: gdsmc_core::geometry::Geometry>(
     ensembles: usize,
     seed: u64,
+    reduction: Reduction,
 ) -> (Vec<[f64; 3]>, usize, u64) {
     let (n0, cap) = (64, 256);
     // gamma C = 1/(4 pi): int B de = 1.
@@ -44,7 +45,7 @@ fn ratios<G: gdsmc_core::geometry::Geometry>(
         let mut e = WeightedNoSplitting::<_, _, G>::start(
             (kernel, law),
             Transfer::new(1.0).unwrap(),
-            4,
+            reduction,
             &sys,
             0.0,
         )
@@ -62,8 +63,8 @@ fn ratios<G: gdsmc_core::geometry::Geometry>(
     (out, most, reductions)
 }
 
-fn check<G: gdsmc_core::geometry::Geometry>(seed: u64) {
-    let (r, most, reductions) = ratios::<G>(400, seed);
+fn check<G: gdsmc_core::geometry::Geometry>(seed: u64, reduction: Reduction) {
+    let (r, most, reductions) = ratios::<G>(400, seed, reduction);
     assert!(
         most > 64 && reductions > 0,
         "the weighted path ran: {most}, {reductions}"
@@ -91,6 +92,13 @@ fn check<G: gdsmc_core::geometry::Geometry>(seed: u64) {
 
 #[test]
 fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
-    check::<Spheres>(31);
-    check::<Disks>(32);
+    check::<Spheres>(31, Reduction::Shells { group: 4 });
+    check::<Disks>(32, Reduction::Shells { group: 4 });
+    // The allocated reduction, every shell given the same number (the tail's particles kept).
+    let equal_shells = Reduction::Allocated {
+        target: 96,
+        shells: 16,
+        exponent: 0.0,
+    };
+    check::<Spheres>(33, equal_shells);
 }

@@ -22,5 +22,5 @@ pub mod reduce;
 pub mod transfer;
 
 pub use particle::{WeightedError, WeightedParticle, WeightedSystem};
-pub use reduce::{reduce, reduce_group};
+pub use reduce::{Reduction, reduce, reduce_allocated, reduce_group};
 pub use transfer::{Transfer, collide};

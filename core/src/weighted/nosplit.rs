@@ -19,7 +19,7 @@
 //! n0 S2 - |P|^2`), and a reduction keeps `S2` and `P`.
 
 use super::particle::{WeightedError, WeightedSystem};
-use super::reduce::reduce;
+use super::reduce::Reduction;
 use super::transfer::{Transfer, collide};
 use crate::collision::inelastic;
 use crate::engine::collision_map::clamped_coefficient;
@@ -78,8 +78,8 @@ pub struct WeightedNoSplitting<K, A, G> {
     kernel: K,
     law: A,
     transfer: Transfer,
-    /// Particles per reduction group.
-    group: usize,
+    /// How the particles are reduced when the buffer is full.
+    reduction: Reduction,
     /// The total weight.
     n0: Real,
     /// The bounds: `Umax` about `vref`, and the largest weight.
@@ -95,12 +95,12 @@ pub struct WeightedNoSplitting<K, A, G> {
 }
 
 impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
-    /// Starts at `t0` on `sys` with the weight transfer `transfer` and reductions of `group`
-    /// particles (at least 3).
+    /// Starts at `t0` on `sys` with the weight transfer `transfer` and the reduction
+    /// `reduction`.
     pub fn start(
         (kernel, law): (K, A),
         transfer: Transfer,
-        group: usize,
+        reduction: Reduction,
         sys: &WeightedSystem<'_>,
         t0: Real,
     ) -> Result<Self, EngineError> {
@@ -111,7 +111,7 @@ impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
             kernel,
             law,
             transfer,
-            group: group.max(3),
+            reduction,
             n0: sys.mass(),
             umax: 0.0,
             vref: Vec3::ZERO,
@@ -208,7 +208,7 @@ impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
     ) -> Result<(), EngineError> {
         self.counts.candidates += 1;
         if sys.len() + 2 > sys.capacity() {
-            reduce(sys, self.group, G::CHOICE, rng);
+            self.reduction.apply(sys, 2, G::CHOICE, rng);
             self.reductions += 1;
             self.refresh(sys)?;
             // The bounds changed: this candidate was drawn at the old rate, which bounds the

@@ -78,6 +78,141 @@ pub fn reduce<R: Rng + ?Sized>(
     out
 }
 
+/// The most speed shells an allocated reduction cuts ([`reduce_allocated`]).
+pub const MAX_SHELLS: usize = 64;
+
+/// How a weighted loop reduces its particles when the buffer is full.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Reduction {
+    /// Every run of `group` particles of similar speed by two ([`reduce`]): the particles keep
+    /// the shape of the distribution's mass.
+    Shells {
+        /// Particles per run (at least 3).
+        group: usize,
+    },
+    /// Toward `target` particles allocated among `shells` speed shells of equal width in
+    /// proportion to `W_s^exponent` (`W_s` a shell's weight; [`reduce_allocated`]): exponent
+    /// 1 follows the mass, 0 gives every shell the same number, so the thin tail keeps as
+    /// many particles as the core (Rjasanow and Wagner 2001's rare events: particles where the
+    /// quantity of interest is, lighter).
+    Allocated {
+        /// Particles aimed at after a reduction.
+        target: usize,
+        /// Speed shells.
+        shells: usize,
+        /// The exponent `q` in [0, 1].
+        exponent: Real,
+    },
+}
+
+impl Reduction {
+    /// Reduces `sys` so that at least `room` more particles fit: by the rule, then (if the rule
+    /// left too many: particles too heavy to group) by runs of 3 until they fit.
+    pub fn apply<R: Rng + ?Sized>(
+        &self,
+        sys: &mut WeightedSystem<'_>,
+        room: usize,
+        dim: DimensionChoice,
+        rng: &mut R,
+    ) {
+        match *self {
+            Reduction::Shells { group } => {
+                reduce(sys, group, dim, rng);
+            }
+            Reduction::Allocated {
+                target,
+                shells,
+                exponent,
+            } => {
+                reduce_allocated(sys, (target, shells, exponent), dim, rng);
+            }
+        }
+        while sys.len() + room > sys.capacity() && sys.len() > 2 {
+            let before = sys.len();
+            reduce(sys, 3, dim, rng);
+            if sys.len() == before {
+                break;
+            }
+        }
+    }
+}
+
+/// Reduces `sys` toward `target` particles: sorted by speed about the flow and cut into
+/// `shells` shells of equal width in speed up to the fastest, shell `s` of weight `W_s` is
+/// given
+/// `K_s = target W_s^q / sum W^q` particles (`q` the `exponent`), so each particle it keeps
+/// weighs about `w_s = W_s / K_s`; its particles are grouped in speed order until a group
+/// weighs `2 w_s`, and each group of 3 or more becomes two ([`reduce_group`]; a lighter group
+/// of 1 or 2 is kept as it is). Keeps every group's weight, momentum and energy. Returns the
+/// particles left.
+pub fn reduce_allocated<R: Rng + ?Sized>(
+    sys: &mut WeightedSystem<'_>,
+    (target, shells, q): (usize, usize, Real),
+    dim: DimensionChoice,
+    rng: &mut R,
+) -> usize {
+    let len = sys.len();
+    let shells = shells.clamp(1, MAX_SHELLS);
+    let flow = (1.0 / sys.mass()) * sys.momentum();
+    let buf = sys.buffer();
+    buf[..len].sort_unstable_by(|a, b| {
+        let (sa, sb) = ((a.velocity() - flow).norm2(), (b.velocity() - flow).norm2());
+        sa.total_cmp(&sb)
+    });
+    // Shells of equal width in speed up to the fastest particle (the last one when sorted),
+    // their bounds and weights taken before any is rewritten.
+    let top = sqrt((buf[len - 1].velocity() - flow).norm2());
+    let mut edges = [len; MAX_SHELLS + 1];
+    let mut weights = [0.0; MAX_SHELLS];
+    for (s, e) in edges.iter_mut().enumerate().take(shells) {
+        let c = top * s as Real / shells as Real;
+        *e = buf[..len].partition_point(|p| sqrt((p.velocity() - flow).norm2()) < c);
+    }
+    for s in 0..shells {
+        weights[s] = buf[edges[s]..edges[s + 1]].iter().map(|p| p.g).sum();
+    }
+    let norm: Real = (weights[..shells].iter())
+        .filter(|&&w| w > 0.0)
+        .map(|&w| libm::pow(w, q))
+        .sum();
+    let mut out = 0;
+    for s in 0..shells {
+        let (a, b) = (edges[s], edges[s + 1]);
+        let ws = weights[s];
+        if ws <= 0.0 {
+            continue;
+        }
+        let keep = target as Real * libm::pow(ws, q) / norm;
+        let each = if keep > 0.0 {
+            ws / keep
+        } else {
+            Real::INFINITY
+        };
+        let mut start = a;
+        while start < b {
+            let (mut end, mut w) = (start, 0.0);
+            while end < b && w < 2.0 * each {
+                w += buf[end].g;
+                end += 1;
+            }
+            if end - start >= 3 {
+                let two = reduce_group(&buf[start..end], dim, rng);
+                buf[out] = two[0];
+                buf[out + 1] = two[1];
+                out += 2;
+            } else {
+                for k in start..end {
+                    buf[out] = buf[k];
+                    out += 1;
+                }
+            }
+            start = end;
+        }
+    }
+    sys.truncate(out.max(2));
+    out.max(2)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -154,5 +289,47 @@ mod tests {
             after > 0.5 * before && after < 1.5 * before,
             "{before} -> {after}"
         );
+    }
+
+    /// An allocated reduction keeps the sums too, lands near its target, and with exponent 0
+    /// keeps more of the fastest tenth than with exponent 1; with exponent 0 a shell of at
+    /// most `target / (2 shells)` unit weights is kept whole (each group is one particle), so
+    /// the fastest particle survives as it was.
+    #[test]
+    fn an_allocated_reduction_keeps_the_sums_and_feeds_the_tail() {
+        let mut counts = [0usize; 2];
+        let mut kept_fastest = false;
+        for (k, q) in [0.0, 1.0].into_iter().enumerate() {
+            let mut rng = Xoshiro256PlusPlus::seed_from_u64(7);
+            let mut buf = system(500, 512, &mut rng);
+            for p in &mut buf[..500] {
+                p.g = 1.0;
+            }
+            let mut sys = WeightedSystem::new(&mut buf, 500).unwrap();
+            let (w, m, e) = (sys.mass(), sys.momentum(), sys.energy());
+            let left = reduce_allocated(&mut sys, (100, 10, q), DimensionChoice::Three, &mut rng);
+            assert!((50..=200).contains(&left), "q = {q}: {left} left");
+            assert!((sys.mass() - w).abs() <= 1e-12 * w);
+            assert!((sys.momentum() - m).norm() <= 1e-12 * 2.0 * e);
+            assert!((sys.energy() - e).abs() <= 1e-12 * e);
+            let flow = (1.0 / w) * m;
+            // The fastest tenth of the speeds before: the particles left beyond its start.
+            let mut speeds: [f64; 500] = [0.0; 500];
+            let mut before = system(500, 512, &mut Xoshiro256PlusPlus::seed_from_u64(7));
+            for (s, p) in speeds.iter_mut().zip(before.iter_mut()) {
+                *s = (p.velocity() - flow).norm();
+            }
+            speeds.sort_unstable_by(f64::total_cmp);
+            let edge = speeds[450];
+            if q == 0.0 {
+                kept_fastest = (sys.particles().iter())
+                    .any(|p| ((p.velocity() - flow).norm() - speeds[499]).abs() < 1e-12);
+            }
+            counts[k] = (sys.particles().iter())
+                .filter(|p| (p.velocity() - flow).norm() > edge)
+                .count();
+        }
+        assert!(counts[0] > counts[1], "tail particles {counts:?}");
+        assert!(kept_fastest, "exponent 0 keeps the fastest particle whole");
     }
 }
