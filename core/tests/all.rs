@@ -27,4 +27,5 @@ mod rough_mixture_equipartition;
 mod samplers;
 mod sum_majorant;
 mod weighted;
+mod weighted_reduction;
 mod work_rate;

@@ -92,8 +92,8 @@ fn check<G: gdsmc_core::geometry::Geometry>(seed: u64, reduction: Reduction) {
 
 #[test]
 fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
-    check::<Spheres>(31, Reduction::Shells { group: 4 });
-    check::<Disks>(32, Reduction::Shells { group: 4 });
+    check::<Spheres>(31, Reduction::Cells { group: 4 });
+    check::<Disks>(32, Reduction::Cells { group: 4 });
     // The allocated reduction, every shell given the same number (the tail's particles kept).
     let equal_shells = Reduction::Allocated {
         target: 96,

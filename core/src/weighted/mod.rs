@@ -13,9 +13,10 @@
 //! Boltzmann collision operator of GRW (1) on the weighted measure; with `kappa = 0` and equal
 //! weights it is GRW's process itself. With `kappa > 0` every collision leaves lighter copies
 //! behind, so the particle number grows and the sparse tails fill with light particles; a
-//! reduction ([`reduce`]) replaces groups of particles close in velocity by two, keeping each
-//! group's weight, momentum and energy.
+//! reduction ([`reduce`]) replaces cells of nearby velocities by two particles each, keeping
+//! each cell's weight, momentum and energy.
 
+mod cells;
 pub mod nosplit;
 pub mod particle;
 pub mod reduce;

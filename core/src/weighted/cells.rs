@@ -1,0 +1,63 @@
+//! Cells of nearby velocities for a reduction: a run of particles split at the median of its
+//! widest velocity component, recursively and in place (a k-d partition), until a cell is
+//! small; each cell of 3 or more particles is then replaced by two ([`reduce_group`]). Grouping
+//! by the velocity vector keeps a reduction local: a group's two particles lie within its
+//! cell's spread of where its particles were (grouping by speed alone mixes directions, and
+//! the replacements' speeds then spread over the whole shell: repeated, that heats the tail).
+
+use super::particle::WeightedParticle;
+use super::reduce::reduce_group;
+use crate::geometry::DimensionChoice;
+use crate::math::Real;
+use crate::rng::Rng;
+
+/// Component `k` of a particle's velocity.
+fn component(p: &WeightedParticle, k: usize) -> Real {
+    match k {
+        0 => p.vx,
+        1 => p.vy,
+        _ => p.vz,
+    }
+}
+
+/// Reduces the particles `buf[a..b]` cell by cell (module docs), writing what is left from
+/// `buf[*out]` on (`*out <= a`: what a call writes never passes what it has read) and
+/// advancing `*out`. A cell is small when `small(cell)` holds or it has at most 2 particles.
+pub(crate) fn reduce_cells<R: Rng + ?Sized>(
+    buf: &mut [WeightedParticle],
+    (a, b): (usize, usize),
+    out: &mut usize,
+    small: &impl Fn(&[WeightedParticle]) -> bool,
+    (dim, rng): (DimensionChoice, &mut R),
+) {
+    debug_assert!(*out <= a);
+    if b - a <= 2 || small(&buf[a..b]) {
+        if b - a >= 3 {
+            let two = reduce_group(&buf[a..b], dim, rng);
+            buf[*out] = two[0];
+            buf[*out + 1] = two[1];
+            *out += 2;
+        } else {
+            for k in a..b {
+                buf[*out] = buf[k];
+                *out += 1;
+            }
+        }
+        return;
+    }
+    let spread = |k: usize| {
+        let (lo, hi) =
+            (buf[a..b].iter()).fold((Real::INFINITY, Real::NEG_INFINITY), |(l, h), p| {
+                let x = component(p, k);
+                (l.min(x), h.max(x))
+            });
+        hi - lo
+    };
+    let axis = (1..dim.d()).fold(0, |best, k| if spread(k) > spread(best) { k } else { best });
+    let mid = a + (b - a) / 2;
+    buf[a..b].select_nth_unstable_by(mid - a, |p, q| {
+        component(p, axis).total_cmp(&component(q, axis))
+    });
+    reduce_cells(buf, (a, mid), out, small, (dim, &mut *rng));
+    reduce_cells(buf, (mid, b), out, small, (dim, rng));
+}
