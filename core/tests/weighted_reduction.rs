@@ -187,3 +187,48 @@ fn repeated_reductions_keep_a_maxwellians_tail() {
         }
     }
 }
+
+/// A group's two replacements keep its weight, momentum, energy and, while the lean toward the
+/// flow is below its limit, the fourth moment `sum g |v - flow|^4` (module docs of
+/// `reduce_group`): a cell of five unequal particles around (2, 1, 0), flow (0.1, 0, 0).
+#[test]
+fn a_group_keeps_its_fourth_moment_about_the_flow() {
+    use gdsmc_core::weighted::reduce_group;
+    let flow = Vec3::new(0.1, 0.0, 0.0);
+    let group = [
+        WeightedParticle::new(Vec3::new(2.1, 1.0, 0.1), 0.3),
+        WeightedParticle::new(Vec3::new(1.9, 1.2, -0.1), 0.1),
+        WeightedParticle::new(Vec3::new(2.0, 0.8, 0.2), 0.25),
+        WeightedParticle::new(Vec3::new(2.2, 1.1, -0.2), 0.05),
+        WeightedParticle::new(Vec3::new(1.8, 0.9, 0.0), 0.3),
+    ];
+    let sums = |ps: &[WeightedParticle]| {
+        ps.iter().fold((0.0, Vec3::ZERO, 0.0, 0.0), |(w, m, e, f), p| {
+            let c2 = (p.velocity() - flow).norm2();
+            (
+                w + p.g,
+                m + p.g * p.velocity(),
+                e + p.g * p.velocity().norm2(),
+                f + p.g * c2 * c2,
+            )
+        })
+    };
+    let mut rng = rng_of(50);
+    for dim in [DimensionChoice::Three, DimensionChoice::Two] {
+        let mut g = group;
+        if dim == DimensionChoice::Two {
+            for p in &mut g {
+                p.vz = 0.0;
+            }
+        }
+        let two = reduce_group(&g, flow, dim, &mut rng);
+        let (a, b) = (sums(&g), sums(&two));
+        assert!((a.0 - b.0).abs() < 1e-14);
+        assert!((a.1 - b.1).norm() < 1e-13);
+        assert!((a.2 - b.2).abs() < 1e-13 * a.2);
+        assert!((a.3 - b.3).abs() < 1e-12 * a.3, "{dim:?}: {} vs {}", a.3, b.3);
+        if dim == DimensionChoice::Two {
+            assert!(two.iter().all(|p| p.vz == 0.0));
+        }
+    }
+}

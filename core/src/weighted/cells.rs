@@ -10,6 +10,7 @@ use super::reduce::reduce_group;
 use crate::geometry::DimensionChoice;
 use crate::math::Real;
 use crate::rng::Rng;
+use crate::vec3::Vec3;
 
 /// Component `k` of a particle's velocity.
 fn component(p: &WeightedParticle, k: usize) -> Real {
@@ -20,7 +21,8 @@ fn component(p: &WeightedParticle, k: usize) -> Real {
     }
 }
 
-/// Reduces the particles `buf[a..b]` cell by cell (module docs), writing what is left from
+/// Reduces the particles `buf[a..b]` cell by cell (module docs; the flow velocity `flow` is
+/// the system's, [`reduce_group`]'s), writing what is left from
 /// `buf[*out]` on (`*out <= a`: what a call writes never passes what it has read) and
 /// advancing `*out`. A cell is small when `small(cell)` holds or it has at most 2 particles.
 pub(crate) fn reduce_cells<R: Rng + ?Sized>(
@@ -28,12 +30,12 @@ pub(crate) fn reduce_cells<R: Rng + ?Sized>(
     (a, b): (usize, usize),
     out: &mut usize,
     small: &impl Fn(&[WeightedParticle]) -> bool,
-    (dim, rng): (DimensionChoice, &mut R),
+    (flow, dim, rng): (Vec3, DimensionChoice, &mut R),
 ) {
     debug_assert!(*out <= a);
     if b - a <= 2 || small(&buf[a..b]) {
         if b - a >= 3 {
-            let two = reduce_group(&buf[a..b], dim, rng);
+            let two = reduce_group(&buf[a..b], flow, dim, rng);
             buf[*out] = two[0];
             buf[*out + 1] = two[1];
             *out += 2;
@@ -58,6 +60,6 @@ pub(crate) fn reduce_cells<R: Rng + ?Sized>(
     buf[a..b].select_nth_unstable_by(mid - a, |p, q| {
         component(p, axis).total_cmp(&component(q, axis))
     });
-    reduce_cells(buf, (a, mid), out, small, (dim, &mut *rng));
-    reduce_cells(buf, (mid, b), out, small, (dim, rng));
+    reduce_cells(buf, (a, mid), out, small, (flow, dim, &mut *rng));
+    reduce_cells(buf, (mid, b), out, small, (flow, dim, rng));
 }

@@ -11,16 +11,20 @@ use crate::sample::{unit_circle, unit_sphere};
 use crate::vec3::Vec3;
 
 /// Two particles in place of `group` (at least one particle, weights > 0): weight `W/2` each
-/// at `V + sigma e` and `V - sigma e`, with `W = sum g`, `V = sum g v / W`,
-/// `sigma^2 = sum g |v - V|^2 / W` and `e` the principal axis of the group's covariance (power
-/// iteration from a uniform direction on the sphere, or the circle for `dim` two: the
-/// velocities stay in the plane). The group's weight, momentum `W V` and energy
-/// `sum g |v|^2 / 2 = W (|V|^2 + sigma^2) / 2` are kept to rounding. Along the principal axis
-/// the two stay where the group's spread is: for a group on a thin speed shell that axis is
-/// tangential, so their speeds stay the shell's (a uniform `e` would spread them radially by
-/// about `2 sigma |V|`, and repeated reductions would move the tail).
+/// at `V + d` and `V - d`, `W = sum g`, `V = sum g v / W`, `|d|^2 = sigma^2 =
+/// sum g |v - V|^2 / W`. The group's weight, momentum `W V` and energy
+/// `sum g |v|^2 / 2 = W (|V|^2 + sigma^2) / 2` are kept to rounding. The direction of `d`
+/// keeps the spread of the squared speeds about the flow `flow` too: with `A = V - flow`, the
+/// two squared speeds are `|A|^2 + sigma^2 +- 2 A . d`, so `d` leans toward `A` by the angle
+/// whose cosine is `sqrt(Var |v - flow|^2) / (2 |A| sigma)` (at most 1) and lies otherwise
+/// along the group's principal axis across `A`; then `sum g |v - flow|^4` is kept as well
+/// (the fourth moment, so `a2`), unless the cosine had to be cut at 1. Two points symmetric
+/// about `V` along one fixed direction would put the whole group at one speed (across `A`) or
+/// spread it over twice its width (along a uniform direction); repeated, either moves the tail
+/// where the density falls (docs/weighted.md).
 pub fn reduce_group<R: Rng + ?Sized>(
     group: &[WeightedParticle],
+    flow: Vec3,
     dim: DimensionChoice,
     rng: &mut R,
 ) -> [WeightedParticle; 2] {
@@ -36,8 +40,39 @@ pub fn reduce_group<R: Rng + ?Sized>(
         DimensionChoice::Three => unit_sphere(rng),
         DimensionChoice::Two => unit_circle(rng),
     };
-    let e = principal_axis(group, v, start);
-    let d = sqrt(s2) * e;
+    let axis = principal_axis(group, v, start);
+    let a = v - flow;
+    let (na, sigma) = (a.norm(), sqrt(s2));
+    let e = if na > 0.0 && sigma > 0.0 {
+        let radial = (1.0 / na) * a;
+        let mean_r: Real = s2 + na * na;
+        let var_r: Real = (group.iter())
+            .map(|p| {
+                let x = (p.velocity() - flow).norm2() - mean_r;
+                p.g * x * x
+            })
+            .sum::<Real>()
+            / w;
+        let cos = sqrt(var_r) / (2.0 * na * sigma);
+        let cos = if cos < 1.0 { cos } else { 1.0 };
+        // The principal axis across A (or the random start's part across it).
+        let across = |x: Vec3| x - x.dot(radial) * radial;
+        let t = match across(axis) {
+            t if t.norm() > 1e-12 => (1.0 / t.norm()) * t,
+            _ => {
+                let t = across(start);
+                if t.norm() > 1e-12 {
+                    (1.0 / t.norm()) * t
+                } else {
+                    Vec3::ZERO
+                }
+            }
+        };
+        cos * radial + sqrt(1.0 - cos * cos) * t
+    } else {
+        axis
+    };
+    let d = sigma * e;
     [
         WeightedParticle::new(v + d, 0.5 * w),
         WeightedParticle::new(v - d, 0.5 * w),
@@ -76,7 +111,8 @@ pub fn reduce<R: Rng + ?Sized>(
     let len = sys.len();
     let mut out = 0;
     let small = |c: &[WeightedParticle]| c.len() <= group;
-    reduce_cells(sys.buffer(), (0, len), &mut out, &small, (dim, rng));
+    let flow = (1.0 / sys.mass()) * sys.momentum();
+    reduce_cells(sys.buffer(), (0, len), &mut out, &small, (flow, dim, rng));
     sys.truncate(out.max(2));
     out.max(2)
 }
@@ -188,7 +224,7 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
         let keep = target as Real * libm::pow(ws, q) / norm;
         let each = ws / keep;
         let small = |c: &[WeightedParticle]| c.iter().map(|p| p.g).sum::<Real>() <= 2.0 * each;
-        reduce_cells(buf, (a, b), &mut out, &small, (dim, &mut *rng));
+        reduce_cells(buf, (a, b), &mut out, &small, (flow, dim, &mut *rng));
     }
     sys.truncate(out.max(2));
     out.max(2)
