@@ -203,15 +203,16 @@ fn a_group_keeps_its_fourth_moment_about_the_flow() {
         WeightedParticle::new(Vec3::new(1.8, 0.9, 0.0), 0.3),
     ];
     let sums = |ps: &[WeightedParticle]| {
-        ps.iter().fold((0.0, Vec3::ZERO, 0.0, 0.0), |(w, m, e, f), p| {
-            let c2 = (p.velocity() - flow).norm2();
-            (
-                w + p.g,
-                m + p.g * p.velocity(),
-                e + p.g * p.velocity().norm2(),
-                f + p.g * c2 * c2,
-            )
-        })
+        ps.iter()
+            .fold((0.0, Vec3::ZERO, 0.0, 0.0), |(w, m, e, f), p| {
+                let c2 = (p.velocity() - flow).norm2();
+                (
+                    w + p.g,
+                    m + p.g * p.velocity(),
+                    e + p.g * p.velocity().norm2(),
+                    f + p.g * c2 * c2,
+                )
+            })
     };
     let mut rng = rng_of(50);
     for dim in [DimensionChoice::Three, DimensionChoice::Two] {
@@ -226,7 +227,12 @@ fn a_group_keeps_its_fourth_moment_about_the_flow() {
         assert!((a.0 - b.0).abs() < 1e-14);
         assert!((a.1 - b.1).norm() < 1e-13);
         assert!((a.2 - b.2).abs() < 1e-13 * a.2);
-        assert!((a.3 - b.3).abs() < 1e-12 * a.3, "{dim:?}: {} vs {}", a.3, b.3);
+        assert!(
+            (a.3 - b.3).abs() < 1e-12 * a.3,
+            "{dim:?}: {} vs {}",
+            a.3,
+            b.3
+        );
         if dim == DimensionChoice::Two {
             assert!(two.iter().all(|p| p.vz == 0.0));
         }
