@@ -5,8 +5,8 @@
 //! cell's spread of where its particles were (grouping by speed alone mixes directions, and
 //! the replacements' speeds then spread over the whole shell: repeated, that heats the tail).
 
+use super::group::reduce_group;
 use super::particle::WeightedParticle;
-use super::reduce::reduce_group;
 use crate::geometry::DimensionChoice;
 use crate::math::Real;
 use crate::rng::Rng;

@@ -17,11 +17,13 @@
 //! each cell's weight, momentum and energy.
 
 mod cells;
+mod group;
 pub mod nosplit;
 pub mod particle;
 pub mod reduce;
 pub mod transfer;
 
+pub use group::reduce_group;
 pub use particle::{WeightedError, WeightedParticle, WeightedSystem};
-pub use reduce::{Reduction, reduce, reduce_allocated, reduce_group};
+pub use reduce::{Reduction, reduce, reduce_allocated};
 pub use transfer::{Transfer, collide};

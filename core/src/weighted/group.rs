@@ -1,0 +1,98 @@
+//! The replacement of a group of weighted particles by two (Rjasanow and Wagner 1996's
+//! reduction step), keeping the group's weight, momentum, energy and fourth moment about the
+//! flow.
+
+use super::particle::WeightedParticle;
+use crate::geometry::DimensionChoice;
+use crate::math::{Real, sqrt};
+use crate::rng::Rng;
+use crate::sample::{unit_circle, unit_sphere};
+use crate::vec3::Vec3;
+
+/// Two particles in place of `group` (at least one particle, weights > 0): weight `W/2` each
+/// at `V + d` and `V - d`, `W = sum g`, `V = sum g v / W`, `|d|^2 = sigma^2 =
+/// sum g |v - V|^2 / W`. The group's weight, momentum `W V` and energy
+/// `sum g |v|^2 / 2 = W (|V|^2 + sigma^2) / 2` are kept to rounding. The direction of `d`
+/// keeps the spread of the squared speeds about the flow `flow` too: with `A = V - flow`, the
+/// two squared speeds are `|A|^2 + sigma^2 +- 2 A . d`, so `d` leans toward `A` by the angle
+/// whose cosine is `sqrt(Var |v - flow|^2) / (2 |A| sigma)` (at most 1) and lies otherwise
+/// along the group's principal axis across `A`; then `sum g |v - flow|^4` is kept as well
+/// (the fourth moment, so `a2`), unless the cosine had to be cut at 1. Two points symmetric
+/// about `V` along one fixed direction would put the whole group at one speed (across `A`) or
+/// spread it over twice its width (along a uniform direction); repeated, either moves the tail
+/// where the density falls (docs/weighted.md).
+pub fn reduce_group<R: Rng + ?Sized>(
+    group: &[WeightedParticle],
+    flow: Vec3,
+    dim: DimensionChoice,
+    rng: &mut R,
+) -> [WeightedParticle; 2] {
+    let w: Real = group.iter().map(|p| p.g).sum();
+    let m = (group.iter()).fold(Vec3::ZERO, |m, p| m + p.g * p.velocity());
+    let v = (1.0 / w) * m;
+    let s2: Real = group
+        .iter()
+        .map(|p| p.g * (p.velocity() - v).norm2())
+        .sum::<Real>()
+        / w;
+    let start = match dim {
+        DimensionChoice::Three => unit_sphere(rng),
+        DimensionChoice::Two => unit_circle(rng),
+    };
+    let axis = principal_axis(group, v, start);
+    let a = v - flow;
+    let (na, sigma) = (a.norm(), sqrt(s2));
+    let e = if na > 0.0 && sigma > 0.0 {
+        let radial = (1.0 / na) * a;
+        let mean_r: Real = s2 + na * na;
+        let var_r: Real = (group.iter())
+            .map(|p| {
+                let x = (p.velocity() - flow).norm2() - mean_r;
+                p.g * x * x
+            })
+            .sum::<Real>()
+            / w;
+        let cos = sqrt(var_r) / (2.0 * na * sigma);
+        let cos = if cos < 1.0 { cos } else { 1.0 };
+        // The principal axis across A (or the random start's part across it).
+        let across = |x: Vec3| x - x.dot(radial) * radial;
+        let t = match across(axis) {
+            t if t.norm() > 1e-12 => (1.0 / t.norm()) * t,
+            _ => {
+                let t = across(start);
+                if t.norm() > 1e-12 {
+                    (1.0 / t.norm()) * t
+                } else {
+                    Vec3::ZERO
+                }
+            }
+        };
+        cos * radial + sqrt(1.0 - cos * cos) * t
+    } else {
+        axis
+    };
+    let d = sigma * e;
+    [
+        WeightedParticle::new(v + d, 0.5 * w),
+        WeightedParticle::new(v - d, 0.5 * w),
+    ]
+}
+
+/// The unit principal axis of the weighted covariance of `group` about `v`: 24 steps of power
+/// iteration from `start` (a unit vector; returned when the group has no spread).
+fn principal_axis(group: &[WeightedParticle], v: Vec3, start: Vec3) -> Vec3 {
+    let mut x = start;
+    for _ in 0..24 {
+        // C x = sum g (c . x) c, c = v_k - v.
+        let y = (group.iter()).fold(Vec3::ZERO, |acc, p| {
+            let c = p.velocity() - v;
+            acc + (p.g * c.dot(x)) * c
+        });
+        let norm = y.norm();
+        if !(norm > 0.0 && norm.is_finite()) {
+            return x;
+        }
+        x = (1.0 / norm) * y;
+    }
+    x
+}
