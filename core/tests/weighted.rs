@@ -3,13 +3,16 @@
 //! `c = (1 - alpha^2) int B de / 4`, given each ensemble's own start, for any weight transfer
 //! and through reductions (module docs of `weighted::nosplit`). Judged at three times together
 //! (Bonferroni) at 99.9%, with either reduction; the rate a transfer that forgot `gamma` would give,
-//! `c (1 + kappa)`, is refused at the same intervals.
+//! `c (1 + kappa)`, is refused at the same intervals. Heated by white noise, GRW (13) at finite
+//! weight (derived in [`heated_band`]).
 
+use gdsmc_core::drive::{NoDrive, PlanarWhiteNoise, WhiteNoise};
 use gdsmc_core::geometry::{Disks, Spheres};
 use gdsmc_core::kernel::Maxwell;
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::Streams;
 use gdsmc_core::sample::standard_normal3;
+use gdsmc_core::weighted::moments::observables;
 use gdsmc_core::weighted::nosplit::WeightedNoSplitting;
 use gdsmc_core::weighted::{Reduction, Transfer, WeightedParticle, WeightedSystem};
 use gdsmc_stats::Sample;
@@ -41,19 +44,19 @@ fn ratios<G: gdsmc_core::geometry::Geometry>(
             *p = WeightedParticle::new(v, 1.0);
         }
         let mut sys = WeightedSystem::new(&mut buf, n0).unwrap();
-        let t0 = gdsmc_core::weighted::nosplit::observe(&sys, G::CHOICE.d(), 0.0).t_bulk;
-        let mut e = WeightedNoSplitting::<_, _, G>::start(
-            (kernel, law),
+        let t0 = observables(&sys, G::CHOICE.d()).t_bulk;
+        let mut e = WeightedNoSplitting::<_, _, _, G>::start(
+            (kernel, law, NoDrive),
             Transfer::new(1.0).unwrap(),
             reduction,
-            &sys,
+            &mut sys,
             0.0,
         )
         .unwrap();
         let mut r = [0.0; 3];
         for (k, &t) in TIMES.iter().enumerate() {
             let o = e.advance_to(&mut sys, t, &mut rng).unwrap();
-            assert!((o.mass - n0 as f64).abs() < 1e-9, "the weight is kept");
+            assert!((sys.mass() - n0 as f64).abs() < 1e-9, "the weight is kept");
             r[k] = o.t_bulk / t0;
             most = most.max(sys.len());
         }
@@ -101,4 +104,83 @@ fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
         exponent: 0.0,
     };
     check::<Spheres>(33, equal_shells);
+}
+
+/// GRW (13) for the weighted system: `Q = S2 - |P|^2/n0 = n0 d T_bulk` obeys
+/// `dE[Q]/dt = -c E[Q] + 2 beta d (n0 - E[sum g^2]/n0)` (the collisions as above; each
+/// particle's kicks add `2 beta g` per unit time to `E[S2]` and `2 beta g^2 / n0` to
+/// `E[|P|^2/n0]`, per degree of freedom). With `0 <= sum g^2 / n0^2 <= g_max / n0` the mean
+/// `E[T_bulk(t)]` lies between `T0 e^{-ct} + f 2 beta (1 - e^{-ct}) / c` at `f = 1 - g_max/n0`
+/// and at `f = 1`: the band a verdict must touch, from this bound and not from a run.
+fn heated_band(t0: f64, beta: f64, c: f64, t: f64, gmax_over_n0: f64) -> (f64, f64) {
+    let decay = (-c * t).exp();
+    let at = |f: f64| t0 * decay + f * 2.0 * beta * (1.0 - decay) / c;
+    (at(1.0 - gmax_over_n0), at(1.0))
+}
+
+fn heated<G: gdsmc_core::geometry::Geometry, D: gdsmc_core::drive::Drive>(
+    drive: D,
+    beta: f64,
+    seed: u64,
+) {
+    let (n0, cap, ensembles) = (64, 256, 400);
+    let kernel = Maxwell::new(1.0, 1.0 / (4.0 * std::f64::consts::PI)).unwrap();
+    let law = Constant::new(ALPHA).unwrap();
+    let mut streams = Streams::new(seed);
+    let (mut samples, mut gmax, mut reductions) = (vec![Vec::new(); 3], 0.0_f64, 0);
+    let mut t0s = Vec::new();
+    for _ in 0..ensembles {
+        let mut rng = streams.next().unwrap();
+        let mut buf = vec![WeightedParticle::default(); cap];
+        let mut times = vec![0.0; cap];
+        for p in buf.iter_mut().take(n0) {
+            let mut v = standard_normal3(&mut rng);
+            if G::CHOICE.d() == 2 {
+                v.z = 0.0;
+            }
+            *p = WeightedParticle::new(v, 1.0);
+        }
+        let mut sys = WeightedSystem::with_times(&mut buf, &mut times, n0, 0.0).unwrap();
+        t0s.push(observables(&sys, G::CHOICE.d()).t_bulk);
+        let mut e = WeightedNoSplitting::<_, _, _, G>::start(
+            (kernel, law, drive),
+            Transfer::new(1.0).unwrap(),
+            Reduction::Cells { group: 4 },
+            &mut sys,
+            0.0,
+        )
+        .unwrap();
+        for (k, &t) in TIMES.iter().enumerate() {
+            let o = e.advance_to(&mut sys, t, &mut rng).unwrap();
+            samples[k].push(o.t_bulk);
+            gmax = sys.particles().iter().fold(gmax, |m, p| m.max(p.g));
+        }
+        reductions += e.reductions();
+    }
+    assert!(reductions > 0, "the weighted path ran");
+    let t0 = Sample::of(&t0s).mean;
+    let c = (1.0 - ALPHA * ALPHA) / 4.0;
+    for (k, &t) in TIMES.iter().enumerate() {
+        let s = Sample::of(&samples[k]);
+        let (lo, hi) = heated_band(t0, beta, c, t, gmax / n0 as f64);
+        let half = s.joint_ci(TIMES.len());
+        assert!(
+            s.mean + half >= lo && s.mean - half <= hi,
+            "d = {}, t = {t}: {} +- {half}, GRW (13) band [{lo}, {hi}]",
+            G::CHOICE.d(),
+            s.mean
+        );
+        // A drive that heated twice as fast is refused.
+        let (_, wrong) = heated_band(t0, 2.0 * beta, c, t, 0.0);
+        assert!(
+            s.mean + half < wrong,
+            "t = {t}: twice the heating {wrong} not refused"
+        );
+    }
+}
+
+#[test]
+fn the_weighted_maxwell_gas_heats_as_grw_13() {
+    heated::<Spheres, _>(WhiteNoise::new(0.5).unwrap(), 0.5, 41);
+    heated::<Disks, _>(PlanarWhiteNoise::new(0.5).unwrap(), 0.5, 42);
 }

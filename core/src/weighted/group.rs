@@ -78,16 +78,43 @@ pub fn reduce_group<R: Rng + ?Sized>(
     ]
 }
 
-/// The unit principal axis of the weighted covariance of `group` about `v`: 24 steps of power
-/// iteration from `start` (a unit vector; returned when the group has no spread).
+/// The unit principal axis of the weighted covariance of `group` about `v`: the covariance
+/// summed in one pass and squared four times (each square scaled by its trace), so that two
+/// products with `start` (a unit vector) are 32 steps of power iteration; `start` when the
+/// group has no spread.
 fn principal_axis(group: &[WeightedParticle], v: Vec3, start: Vec3) -> Vec3 {
-    let mut x = start;
-    for _ in 0..24 {
-        // C x = sum g (c . x) c, c = v_k - v.
-        let y = (group.iter()).fold(Vec3::ZERO, |acc, p| {
-            let c = p.velocity() - v;
-            acc + (p.g * c.dot(x)) * c
+    // C = sum g c c^T, c = v_k - v, as a full symmetric 3 x 3.
+    let mut m = [[0.0; 3]; 3];
+    for p in group {
+        let c = p.velocity() - v;
+        let (cv, gc) = ([c.x, c.y, c.z], p.g * c);
+        for (row, gk) in m.iter_mut().zip([gc.x, gc.y, gc.z]) {
+            for (e, ck) in row.iter_mut().zip(cv) {
+                *e += gk * ck;
+            }
+        }
+    }
+    for _ in 0..4 {
+        let trace = m[0][0] + m[1][1] + m[2][2];
+        if !(trace > 0.0 && trace.is_finite()) {
+            return start;
+        }
+        let s = 1.0 / trace;
+        let a = m.map(|row| row.map(|e| s * e));
+        m = core::array::from_fn(|i| {
+            core::array::from_fn(|j| (0..3).map(|k| a[i][k] * a[k][j]).sum())
         });
+    }
+    let apply = |x: Vec3| {
+        Vec3::new(
+            m[0][0] * x.x + m[0][1] * x.y + m[0][2] * x.z,
+            m[1][0] * x.x + m[1][1] * x.y + m[1][2] * x.z,
+            m[2][0] * x.x + m[2][1] * x.y + m[2][2] * x.z,
+        )
+    };
+    let mut x = start;
+    for _ in 0..2 {
+        let y = apply(x);
         let norm = y.norm();
         if !(norm > 0.0 && norm.is_finite()) {
             return x;

@@ -18,6 +18,7 @@
 
 mod cells;
 mod group;
+pub mod moments;
 pub mod nosplit;
 pub mod particle;
 pub mod reduce;

@@ -1,82 +1,59 @@
 //! The exact (no-splitting) loop of weighted particles: GRW Section 3's majorant process with
-//! the weighted rate of Rjasanow and Wagner (1996), no drive.
+//! the weighted rate of Rjasanow and Wagner (1996), with a drive between collisions.
 //!
 //! The pair `(i, j)` collides at `(1 + kappa) max(g_i, g_j) int B de / n0`
 //! ([`super::Transfer::rate_factor`]); it is bounded by `(1 + kappa) g_max B_max / n0` with
 //! `B_max` the kernel's bound at `Umax = 2 max |v - V|` (GRW (19)), so candidates come at the
 //! total rate `n (n - 1)/2` times that (`n` the particles in use, which changes at every
 //! collision: the rate is recomputed at each event, exactly) and a uniform pair is accepted
-//! with probability `max(g_i, g_j)/g_max` times the kernel's acceptance (GRW (20)). The bound
-//! covers every velocity a collision makes (`Umax` grows to cover it, `g_max` never grows in a
-//! collision), so no pair overshoots and the process has no time-step error. When the buffer
-//! cannot take a collision's particles, the system is reduced first ([`super::reduce`]) and the
-//! bounds are made exact again; every `2 n` candidates they are made exact too.
+//! with probability `max(g_i, g_j)/g_max` times the kernel's acceptance (GRW (20)). With no
+//! drive the bound covers every velocity a collision makes (`Umax` grows to cover it, `g_max`
+//! never grows in a collision), so no pair overshoots and the process has no time-step error.
+//! When the buffer cannot take a collision's particles, the system is reduced first
+//! ([`super::reduce`]) and the bounds are made exact again; every `2 n` candidates they are
+//! made exact too.
+//!
+//! A drive acts as in the equal-weight loop ([`crate::engine::NoSplitting`]): each partner is
+//! kicked lazily from its last-kick time (GRW (18), steps 2.5-2.6) before the pair is tested,
+//! new particles start at the collision's time, and every particle is kicked to the time of an
+//! observation, a reduction or a refresh of the bounds (so a reduction groups velocities of one
+//! time). The weights are untouched by a drive, which acts on each particle alone (a drive that
+//! couples the particles, [`Drive::COUPLES`], is refused). For the Maxwell kernel nothing
+//! depends on `Umax` and the process stays exact; for the others `Umax` grows to cover every
+//! kicked velocity, and a pair whose relative speed passed the `Umax` that drew its waiting
+//! time is truncated there (RW (19), [`Counts::overshoots`]), as in GRW's algorithm.
 //!
 //! For the Maxwell kernel the weighted process keeps GRW's exact finite-n mean of the
 //! temperature: `d/dt E[S2 - |P|^2/n0] = -c E[S2 - |P|^2/n0]`, `S2 = sum g |v|^2`,
 //! `P = sum g v`, `c = (1 - alpha^2) int B de / 4`, for every weight transfer (each pair's
 //! rate times `gamma` is `g_i g_j int B de / n0`, and `sum_{i<j} g_i g_j |v_i - v_j|^2 =
-//! n0 S2 - |P|^2`), and a reduction keeps `S2` and `P`.
+//! n0 S2 - |P|^2`), and a reduction keeps `S2` and `P`; a drive whose heating is linear adds
+//! its own term, each particle's alone, as GRW (13) has it.
 
-use super::particle::{WeightedError, WeightedSystem};
+use super::moments::observables;
+use super::particle::{WeightedError, WeightedParticle, WeightedSystem};
 use super::reduce::Reduction;
 use super::transfer::{Transfer, collide};
 use crate::collision::inelastic;
+use crate::drive::Drive;
 use crate::engine::collision_map::clamped_coefficient;
 use crate::engine::{Counts, EngineError};
 use crate::geometry::Geometry;
 use crate::kernel::Kernel;
 use crate::math::{Real, sqrt};
+use crate::moments::Observables;
 use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_pair, uniform01};
 use crate::sample::standard_exponential;
 use crate::vec3::Vec3;
 
-/// A weighted gas's moments now: its weight, flow velocity, temperature about the flow and
-/// fourth cumulant, with the particles in use.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct WeightedObservables {
-    /// Time.
-    pub t: Real,
-    /// Particles in use.
-    pub particles: usize,
-    /// Total weight `sum g` (the run's `n0`: collisions and reductions keep it).
-    pub mass: Real,
-    /// Flow velocity `sum g v / sum g`.
-    pub bulk: Vec3,
-    /// Temperature about the flow, `sum g |v - V|^2 / (d sum g)`.
-    pub t_bulk: Real,
-    /// Fourth cumulant `<c^4> / <c^2>^2 d/(d + 2) - 1` about the flow (MS (3)).
-    pub a2: Real,
-}
-
-/// The moments of `sys` in dimension `d` at time `t`.
-pub fn observe(sys: &WeightedSystem<'_>, d: usize, t: Real) -> WeightedObservables {
-    let mass = sys.mass();
-    let bulk = (1.0 / mass) * sys.momentum();
-    let (mut s2, mut s4) = (0.0, 0.0);
-    for p in sys.particles() {
-        let c2 = (p.velocity() - bulk).norm2();
-        s2 += p.g * c2;
-        s4 += p.g * c2 * c2;
-    }
-    let (m2, m4) = (s2 / mass, s4 / mass);
-    let df = d as Real;
-    WeightedObservables {
-        t,
-        particles: sys.len(),
-        mass,
-        bulk,
-        t_bulk: m2 / df,
-        a2: m4 / (m2 * m2) * df / (df + 2.0) - 1.0,
-    }
-}
-
-/// The weighted exact loop for kernel `K`, restitution law `A`, dimension `G` (module docs).
+/// The weighted exact loop for kernel `K`, restitution law `A`, drive `D`, dimension `G`
+/// (module docs).
 #[derive(Clone, Debug)]
-pub struct WeightedNoSplitting<K, A, G> {
+pub struct WeightedNoSplitting<K, A, D, G> {
     kernel: K,
     law: A,
+    drive: D,
     transfer: Transfer,
     /// How the particles are reduced when the buffer is full.
     reduction: Reduction,
@@ -94,22 +71,36 @@ pub struct WeightedNoSplitting<K, A, G> {
     dim: core::marker::PhantomData<G>,
 }
 
-impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
-    /// Starts at `t0` on `sys` with the weight transfer `transfer` and the reduction
-    /// `reduction`.
+impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A, D, G> {
+    /// Starts at `t0` on `sys` (every particle at `t0`) with the weight transfer `transfer`
+    /// and the reduction `reduction`. A drive that acts needs a system with last-kick times
+    /// ([`WeightedSystem::with_times`]; they are set to `t0`); one that couples the particles
+    /// is refused.
     pub fn start(
-        (kernel, law): (K, A),
+        (kernel, law, drive): (K, A, D),
         transfer: Transfer,
         reduction: Reduction,
-        sys: &WeightedSystem<'_>,
+        sys: &mut WeightedSystem<'_>,
         t0: Real,
     ) -> Result<Self, EngineError> {
         if !t0.is_finite() {
             return Err(EngineError::TimeBackwards);
         }
+        if D::ACTS && !sys.has_times() {
+            return Err(EngineError::Invariant(
+                "a driven weighted system keeps last-kick times",
+            ));
+        }
+        if D::COUPLES || D::COUNTS_EVENTS {
+            return Err(EngineError::Invariant(
+                "the weighted loop runs drives that act on each particle alone, in closed form",
+            ));
+        }
+        sys.set_all_times(t0);
         let mut s = WeightedNoSplitting {
             kernel,
             law,
+            drive,
             transfer,
             reduction,
             n0: sys.mass(),
@@ -126,7 +117,33 @@ impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
         Ok(s)
     }
 
-    /// The bounds made exact: `vref` the flow, `Umax = 2 max |v - vref|`, `g_max`.
+    /// Particle `i` kicked from its last-kick time to now (a drive that acts only).
+    #[inline(always)]
+    fn kick<R: Rng + ?Sized>(&self, sys: &mut WeightedSystem<'_>, i: usize, rng: &mut R) {
+        if D::ACTS {
+            let dt = self.t - sys.time(i);
+            if dt > 0.0 {
+                let q = sys.particles()[i];
+                let v = self.drive.evolve(q.velocity(), dt, rng);
+                sys.particles_mut()[i] = WeightedParticle::new(v, q.g);
+                sys.set_time(i, self.t);
+            }
+        }
+    }
+
+    /// Every particle kicked to now (a drive that acts only), and the drive told the moments
+    /// there ([`Drive::observe`]).
+    fn synchronize<R: Rng + ?Sized>(&mut self, sys: &mut WeightedSystem<'_>, rng: &mut R) {
+        if D::ACTS {
+            for i in 0..sys.len() {
+                self.kick(sys, i, rng);
+            }
+            self.drive.observe(&observables(sys, G::CHOICE.d()));
+        }
+    }
+
+    /// The bounds made exact: `vref` the flow, `Umax = 2 max |v - vref|`, `g_max` (every
+    /// particle at the current time).
     fn refresh(&mut self, sys: &WeightedSystem<'_>) -> Result<(), EngineError> {
         let vref = (1.0 / sys.mass()) * sys.momentum();
         let (mut c2, mut g) = (0.0, 0.0);
@@ -162,13 +179,14 @@ impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
         self.reductions
     }
 
-    /// Runs to `t_end` (not before the current time) and returns the moments there.
+    /// Runs to `t_end` (not before the current time) and returns the weighted moments there
+    /// (every particle kicked to `t_end`; [`super::moments::observables`]).
     pub fn advance_to<R: Rng + ?Sized>(
         &mut self,
         sys: &mut WeightedSystem<'_>,
         t_end: Real,
         rng: &mut R,
-    ) -> Result<WeightedObservables, EngineError> {
+    ) -> Result<Observables, EngineError> {
         if !t_end.is_finite() || t_end < self.t {
             return Err(EngineError::TimeBackwards);
         }
@@ -196,7 +214,12 @@ impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
         }
         self.t = t_end;
         self.counts.observations += 1;
-        Ok(observe(sys, G::CHOICE.d(), t_end))
+        self.synchronize(sys, rng);
+        let o = observables(sys, G::CHOICE.d());
+        match o.non_finite() {
+            Some(what) => Err(EngineError::NonFinite(what)),
+            None => Ok(o),
+        }
     }
 
     /// One candidate at the current time: the acceptance, the collision, a reduction first
@@ -208,7 +231,9 @@ impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
     ) -> Result<(), EngineError> {
         self.counts.candidates += 1;
         if sys.len() + 2 > sys.capacity() {
+            self.synchronize(sys, rng);
             self.reduction.apply(sys, 2, G::CHOICE, rng);
+            sys.set_all_times(self.t);
             self.reductions += 1;
             self.refresh(sys)?;
             // The bounds changed: this candidate was drawn at the old rate, which bounds the
@@ -218,35 +243,61 @@ impl<K: Kernel, A: Restitution, G: Geometry> WeightedNoSplitting<K, A, G> {
             return Ok(());
         }
         let (i, j) = uniform_pair(rng, sys.len());
+        self.kick(sys, i, rng);
+        self.kick(sys, j, rng);
         let (pi, pj) = (sys.particles()[i], sys.particles()[j]);
         let (vi, vj) = (pi.velocity(), pj.velocity());
         let u = vi - vj;
         let heavier = if pi.g > pj.g { pi.g } else { pj.g };
-        let accept = heavier / self.gmax * self.kernel.acceptance(u.norm(), self.umax);
+        let speed = u.norm();
+        if K::USES_UMAX && speed > self.umax {
+            // A drive moved the pair past the bound that drew this waiting time: the kernel
+            // is truncated there (RW (19)); the bound then covers the kicked velocities.
+            self.counts.overshoots += 1;
+        }
+        let accept = heavier / self.gmax * self.kernel.acceptance(speed, self.umax);
+        if D::ACTS {
+            self.cover([vi, vj]);
+        }
         if uniform01(rng) >= accept {
             self.counts.fictitious += 1;
         } else {
             let e = G::scattering::<K, R>(u, rng);
             let alpha = clamped_coefficient(&self.law, u, e, &mut self.counts);
             let (a, b) = inelastic(vi, vj, e, alpha);
+            let before = sys.len();
             collide(sys, (i, j), (a, b), &self.transfer).map_err(|e| match e {
                 WeightedError::Full => EngineError::Invariant("a reduction makes room first"),
                 _ => EngineError::Invariant("a collision keeps every weight > 0"),
             })?;
-            self.counts.collisions += 1;
-            // Cover the new velocities: no pair overshoots the bound.
-            for v in [a, b] {
-                let c = 2.0 * (v - self.vref).norm();
-                if c > self.umax {
-                    self.umax = c;
+            if D::ACTS {
+                for k in before..sys.len() {
+                    sys.set_time(k, self.t);
                 }
             }
+            self.counts.collisions += 1;
+            // Cover the new velocities: no pair overshoots the bound in a collision.
+            self.cover([a, b]);
         }
         self.until_refresh = self.until_refresh.saturating_sub(1);
         if self.until_refresh == 0 {
             self.counts.refreshes += 1;
+            if K::USES_UMAX {
+                self.synchronize(sys, rng);
+            }
             self.refresh(sys)?;
         }
         Ok(())
+    }
+
+    /// `Umax` grown to cover the velocities `vs` about `vref`.
+    #[inline(always)]
+    fn cover(&mut self, vs: [Vec3; 2]) {
+        for v in vs {
+            let c = 2.0 * (v - self.vref).norm();
+            if c > self.umax {
+                self.umax = c;
+            }
+        }
     }
 }

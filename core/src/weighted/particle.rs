@@ -61,9 +61,11 @@ impl core::fmt::Display for WeightedError {
     }
 }
 
-/// A system of weighted particles: the first `len` records of the caller's buffer.
+/// A system of weighted particles: the first `len` records of the caller's buffer, and under
+/// a drive each one's last-kick time (GRW's `t_j`) in a second caller slice of the same length.
 pub struct WeightedSystem<'a> {
     p: &'a mut [WeightedParticle],
+    times: &'a mut [Real],
     len: usize,
 }
 
@@ -77,7 +79,54 @@ impl<'a> WeightedSystem<'a> {
         if !buf[..len].iter().all(|p| p.g.is_finite() && p.g > 0.0) {
             return Err(WeightedError::Weight);
         }
-        Ok(WeightedSystem { p: buf, len })
+        Ok(WeightedSystem {
+            p: buf,
+            times: &mut [],
+            len,
+        })
+    }
+
+    /// As [`WeightedSystem::new`], with the last-kick times a drive needs: `times` as long as
+    /// `buf` ([`WeightedError::Count`] otherwise), every particle's set to `t0`.
+    pub fn with_times(
+        buf: &'a mut [WeightedParticle],
+        times: &'a mut [Real],
+        len: usize,
+        t0: Real,
+    ) -> Result<Self, WeightedError> {
+        if times.len() != buf.len() {
+            return Err(WeightedError::Count);
+        }
+        let mut sys = WeightedSystem::new(buf, len)?;
+        times.fill(t0);
+        sys.times = times;
+        Ok(sys)
+    }
+
+    /// Whether the system keeps last-kick times ([`WeightedSystem::with_times`]).
+    pub fn has_times(&self) -> bool {
+        !self.times.is_empty()
+    }
+
+    /// Particle `i`'s last-kick time (a system with times only).
+    #[inline(always)]
+    pub fn time(&self, i: usize) -> Real {
+        self.times[i]
+    }
+
+    /// Sets particle `i`'s last-kick time (a system with times only).
+    #[inline(always)]
+    pub fn set_time(&mut self, i: usize, t: Real) {
+        self.times[i] = t;
+    }
+
+    /// Every particle in use last kicked at `t` (after they were all brought there, or after
+    /// a reduction of particles all at `t`); nothing without times.
+    pub fn set_all_times(&mut self, t: Real) {
+        let len = self.len;
+        if let Some(ts) = self.times.get_mut(..len) {
+            ts.fill(t);
+        }
     }
 
     /// Particles in use.
