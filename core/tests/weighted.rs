@@ -25,7 +25,7 @@ const TIMES: [f64; 3] = [1.0, 4.0, 8.0];
 fn ratios<G: gdsmc_core::geometry::Geometry>(
     ensembles: usize,
     seed: u64,
-    reduction: Reduction,
+    (transfer, reduction): (Transfer, Reduction),
 ) -> (Vec<[f64; 3]>, usize, u64) {
     let (n0, cap) = (64, 256);
     // gamma C = 1/(4 pi): int B de = 1.
@@ -47,7 +47,7 @@ fn ratios<G: gdsmc_core::geometry::Geometry>(
         let t0 = observables(&sys, G::CHOICE.d()).t_bulk;
         let mut e = WeightedNoSplitting::<_, _, _, G>::start(
             (kernel, law, NoDrive),
-            Transfer::new(1.0).unwrap(),
+            transfer,
             reduction,
             &mut sys,
             0.0,
@@ -67,7 +67,11 @@ fn ratios<G: gdsmc_core::geometry::Geometry>(
 }
 
 fn check<G: gdsmc_core::geometry::Geometry>(seed: u64, reduction: Reduction) {
-    let (r, most, reductions) = ratios::<G>(400, seed, reduction);
+    check_with::<G>(seed, (Transfer::new(1.0).unwrap(), reduction));
+}
+
+fn check_with<G: gdsmc_core::geometry::Geometry>(seed: u64, how: (Transfer, Reduction)) {
+    let (r, most, reductions) = ratios::<G>(400, seed, how);
     assert!(
         most > 64 && reductions > 0,
         "the weighted path ran: {most}, {reductions}"
@@ -104,6 +108,11 @@ fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
         exponent: 0.0,
     };
     check::<Spheres>(33, equal_shells);
+    // A transfer that moves whole weights in the core and an eighth of the lighter partner's
+    // into the tail beyond 2 thermal speeds (its outcomes thinned by (1 + kappa)/(1 + 7)).
+    let tail = Transfer::with_tail(0.0, 7.0, 2.0).unwrap();
+    check_with::<Spheres>(34, (tail, equal_shells));
+    check_with::<Disks>(35, (tail, Reduction::Cells { group: 4 }));
 }
 
 /// GRW (13) for the weighted system: `Q = S2 - |P|^2/n0 = n0 d T_bulk` obeys

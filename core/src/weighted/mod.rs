@@ -27,4 +27,4 @@ pub mod transfer;
 pub use group::reduce_group;
 pub use particle::{WeightedError, WeightedParticle, WeightedSystem};
 pub use reduce::{Reduction, reduce, reduce_allocated};
-pub use transfer::{Transfer, collide};
+pub use transfer::{Transfer, collide, collide_with};

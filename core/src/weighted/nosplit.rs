@@ -6,7 +6,10 @@
 //! `B_max` the kernel's bound at `Umax = 2 max |v - V|` (GRW (19)), so candidates come at the
 //! total rate `n (n - 1)/2` times that (`n` the particles in use, which changes at every
 //! collision: the rate is recomputed at each event, exactly) and a uniform pair is accepted
-//! with probability `max(g_i, g_j)/g_max` times the kernel's acceptance (GRW (20)). With no
+//! with probability `max(g_i, g_j)/g_max` times the kernel's acceptance (GRW (20)). A transfer
+//! whose `kappa` depends on the outcome ([`Transfer::with_tail`]) bounds with its largest,
+//! and thins an outcome by `(1 + kappa(outcome))/(1 + kappa_max)` once it is drawn; its
+//! thermal speed is the temperature about `vref` at the last refresh of the bounds. With no
 //! drive the bound covers every velocity a collision makes (`Umax` grows to cover it, `g_max`
 //! never grows in a collision), so no pair overshoots and the process has no time-step error.
 //! When the buffer cannot take a collision's particles, the system is reduced first
@@ -33,7 +36,7 @@
 use super::moments::observables;
 use super::particle::{WeightedError, WeightedParticle, WeightedSystem};
 use super::reduce::Reduction;
-use super::transfer::{Transfer, collide};
+use super::transfer::{Transfer, collide_with};
 use crate::collision::inelastic;
 use crate::drive::Drive;
 use crate::engine::collision_map::clamped_coefficient;
@@ -62,6 +65,8 @@ pub struct WeightedNoSplitting<K, A, D, G> {
     /// The bounds: `Umax` about `vref`, and the largest weight.
     umax: Real,
     vref: Vec3,
+    /// The temperature about `vref` at the last refresh (a tail's thermal speed).
+    tref: Real,
     gmax: Real,
     t: Real,
     /// Candidates until the bounds are made exact again.
@@ -106,6 +111,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             n0: sys.mass(),
             umax: 0.0,
             vref: Vec3::ZERO,
+            tref: 0.0,
             gmax: 0.0,
             t: t0,
             until_refresh: 0,
@@ -145,13 +151,16 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     /// The bounds made exact: `vref` the flow, `Umax = 2 max |v - vref|`, `g_max` (every
     /// particle at the current time).
     fn refresh(&mut self, sys: &WeightedSystem<'_>) -> Result<(), EngineError> {
-        let vref = (1.0 / sys.mass()) * sys.momentum();
-        let (mut c2, mut g) = (0.0, 0.0);
+        let mass = sys.mass();
+        let vref = (1.0 / mass) * sys.momentum();
+        let (mut c2, mut g, mut s2) = (0.0, 0.0, 0.0);
         for p in sys.particles() {
             let x = (p.velocity() - vref).norm2();
             c2 = if x > c2 { x } else { c2 };
             g = if p.g > g { p.g } else { g };
+            s2 += p.g * x;
         }
+        self.tref = s2 / (mass * G::CHOICE.d() as Real);
         if !(c2.is_finite() && g.is_finite()) {
             return Err(EngineError::NonFinite(
                 "a weighted particle's velocity or weight",
@@ -194,7 +203,8 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             let n = sys.len();
             let pairs = 0.5 * n as Real * (n - 1) as Real;
             let rate = pairs
-                * self.transfer.rate_factor(self.gmax, self.gmax)
+                * (1.0 + self.transfer.kappa_max())
+                * self.gmax
                 * self.kernel.b_max(self.umax)
                 / self.n0;
             if rate.is_nan() {
@@ -265,8 +275,13 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             let e = G::scattering::<K, R>(u, rng);
             let alpha = clamped_coefficient(&self.law, u, e, &mut self.counts);
             let (a, b) = inelastic(vi, vj, e, alpha);
+            let Some(kappa) = self.outcome_kappa((a, b), rng) else {
+                // This outcome's rate is (1 + kappa)/(1 + kappa_max) of the majorant's.
+                self.counts.fictitious += 1;
+                return self.count_refresh(sys, rng);
+            };
             let before = sys.len();
-            collide(sys, (i, j), (a, b), &self.transfer).map_err(|e| match e {
+            collide_with(sys, (i, j), (a, b), kappa).map_err(|e| match e {
                 WeightedError::Full => EngineError::Invariant("a reduction makes room first"),
                 _ => EngineError::Invariant("a collision keeps every weight > 0"),
             })?;
@@ -279,6 +294,30 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             // Cover the new velocities: no pair overshoots the bound in a collision.
             self.cover([a, b]);
         }
+        self.count_refresh(sys, rng)
+    }
+
+    /// The `kappa` of the outcome `(a, b)` ([`Transfer::with_tail`]: the tail's when a partner
+    /// lands beyond its speed from `vref`, in thermal speeds of the last refresh), or `None`
+    /// when the outcome is thinned away, with probability `1 - (1 + kappa)/(1 + kappa_max)`.
+    fn outcome_kappa<R: Rng + ?Sized>(&self, (a, b): (Vec3, Vec3), rng: &mut R) -> Option<Real> {
+        let Some((tail, speed)) = self.transfer.tail() else {
+            return Some(self.transfer.kappa());
+        };
+        let edge = speed * speed * self.tref;
+        if (a - self.vref).norm2() > edge || (b - self.vref).norm2() > edge {
+            return Some(tail);
+        }
+        let kappa = self.transfer.kappa();
+        (uniform01(rng) * (1.0 + tail) < 1.0 + kappa).then_some(kappa)
+    }
+
+    /// Counts a candidate toward the next refresh of the bounds, and refreshes them when due.
+    fn count_refresh<R: Rng + ?Sized>(
+        &mut self,
+        sys: &mut WeightedSystem<'_>,
+        rng: &mut R,
+    ) -> Result<(), EngineError> {
         self.until_refresh = self.until_refresh.saturating_sub(1);
         if self.until_refresh == 0 {
             self.counts.refreshes += 1;

@@ -8,20 +8,52 @@ use crate::vec3::Vec3;
 /// The weight transfer function `gamma(g_i, g_j) = min(g_i, g_j) / (1 + kappa)`, `kappa >= 0`
 /// (Rjasanow and Wagner 1996): `kappa = 0` moves the lighter partner whole (equal weights stay
 /// equal: GRW's process), `kappa > 0` leaves a share `kappa/(1 + kappa)` of it behind.
+///
+/// With a tail ([`Transfer::with_tail`]) `kappa` depends on the collision's outcome: a
+/// collision that sends a partner beyond `speed` thermal speeds from the flow moves
+/// `min(g_i, g_j)/(1 + kappa_tail)`, any other `min/(1 + kappa)`. The rate of each outcome is
+/// then `(1 + kappa(outcome)) max(g_i, g_j) B / n0`, so the rate times the weight moved stays
+/// `g_i g_j B / n0` outcome by outcome: the same Boltzmann operator, with the tail reached by
+/// more, lighter particles (the importance sampling of Rjasanow and Wagner 2001's rare
+/// events), while a collision in the core moves whole weights and makes no new particle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transfer {
     kappa: Real,
+    /// `(kappa_tail, speed)`: the tail's `kappa` and where it starts, in thermal speeds.
+    tail: Option<(Real, Real)>,
 }
 
 impl Transfer {
     /// The transfer with parameter `kappa`: finite and >= 0, else `None`.
     pub fn new(kappa: Real) -> Option<Self> {
-        (kappa.is_finite() && kappa >= 0.0).then_some(Transfer { kappa })
+        (kappa.is_finite() && kappa >= 0.0).then_some(Transfer { kappa, tail: None })
     }
 
-    /// `kappa`.
+    /// `kappa` in the core and `kappa_tail >= kappa` for a collision that sends a partner
+    /// beyond `speed > 0` thermal speeds `sqrt(T)` from the flow (finite values), else `None`.
+    pub fn with_tail(kappa: Real, kappa_tail: Real, speed: Real) -> Option<Self> {
+        let ok = kappa_tail.is_finite() && kappa_tail >= kappa && speed.is_finite() && speed > 0.0;
+        if !ok {
+            return None;
+        }
+        let mut t = Transfer::new(kappa)?;
+        t.tail = Some((kappa_tail, speed));
+        Some(t)
+    }
+
+    /// `kappa` (in the core, with a tail).
     pub fn kappa(&self) -> Real {
         self.kappa
+    }
+
+    /// The tail's `(kappa_tail, speed)`, if any.
+    pub fn tail(&self) -> Option<(Real, Real)> {
+        self.tail
+    }
+
+    /// The largest `kappa` of any outcome: the majorant's.
+    pub fn kappa_max(&self) -> Real {
+        self.tail.map_or(self.kappa, |(k, _)| k)
     }
 
     /// `gamma(g_i, g_j)`.
@@ -51,12 +83,22 @@ impl Transfer {
 /// nothing changed) when the new particles do not fit.
 pub fn collide(
     sys: &mut WeightedSystem<'_>,
-    (i, j): (usize, usize),
-    (vi, vj): (Vec3, Vec3),
+    pair: (usize, usize),
+    velocities: (Vec3, Vec3),
     transfer: &Transfer,
 ) -> Result<(), WeightedError> {
+    collide_with(sys, pair, velocities, transfer.kappa)
+}
+
+/// As [`collide`] with the transfer's `kappa` of this outcome (a tail's, [`Transfer::with_tail`]).
+pub fn collide_with(
+    sys: &mut WeightedSystem<'_>,
+    (i, j): (usize, usize),
+    (vi, vj): (Vec3, Vec3),
+    kappa: Real,
+) -> Result<(), WeightedError> {
     let (gi, gj) = (sys.particles()[i].g, sys.particles()[j].g);
-    let gamma = transfer.gamma(gi, gj);
+    let gamma = Transfer { kappa, tail: None }.gamma(gi, gj);
     // `g - gamma` is exactly 0 when gamma is that weight (kappa = 0, the lighter partner).
     let (ri, rj) = (gi - gamma, gj - gamma);
     let needed = usize::from(ri > 0.0) + usize::from(rj > 0.0);
@@ -141,5 +183,36 @@ mod tests {
         );
         assert_eq!(sys.particles(), &before);
         assert!(Transfer::new(-1.0).is_none() && Transfer::new(Real::NAN).is_none());
+    }
+
+    /// A tail's `kappa` is at least the core's and its speed > 0; the majorant takes the
+    /// larger, and an outcome's own `kappa` sets the weight it moves.
+    #[test]
+    fn a_tail_transfer_keeps_its_rules() {
+        let t = Transfer::with_tail(0.0, 7.0, 3.0).unwrap();
+        assert_eq!(
+            (t.kappa(), t.kappa_max(), t.tail()),
+            (0.0, 7.0, Some((7.0, 3.0)))
+        );
+        assert_eq!(Transfer::new(1.0).unwrap().kappa_max(), 1.0);
+        for (k, kt, c) in [
+            (1.0, 0.5, 3.0),
+            (0.0, 7.0, 0.0),
+            (0.0, Real::INFINITY, 3.0),
+            (-1.0, 1.0, 3.0),
+        ] {
+            assert!(Transfer::with_tail(k, kt, c).is_none(), "{k} {kt} {c}");
+        }
+        let v = Vec3::new(1.0, 0.0, 0.0);
+        let mut buf = [
+            WeightedParticle::new(v, 1.0),
+            WeightedParticle::new(-v, 1.0),
+            WeightedParticle::default(),
+            WeightedParticle::default(),
+        ];
+        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
+        collide_with(&mut sys, (0, 1), (-v, v), 7.0).unwrap();
+        assert_eq!(sys.len(), 4);
+        assert_eq!(sys.particles()[2], WeightedParticle::new(-v, 0.125));
     }
 }
