@@ -96,6 +96,13 @@ pub enum ParticlesError {
     TooMany,
     /// A rough gas's spins are not one per particle.
     SpinCount,
+    /// Weighted particles' weights are not one per record, or more in use than the buffers hold.
+    WeightCount,
+    /// A weight in use that is not finite and > 0.
+    Weight,
+    /// The buffers of weighted particles are full (reduce them first), or the particles are
+    /// not weighted.
+    Full,
 }
 
 impl core::fmt::Display for ParticlesError {
@@ -104,6 +111,11 @@ impl core::fmt::Display for ParticlesError {
             ParticlesError::TooFew => "a particle system needs n >= 2 particles",
             ParticlesError::TooMany => "n particles of 32 bytes exceed the address space",
             ParticlesError::SpinCount => "a rough gas needs one spin per particle",
+            ParticlesError::WeightCount => {
+                "weighted particles need one weight per record, and no more in use than the buffers hold"
+            }
+            ParticlesError::Weight => "every weight must be finite and > 0",
+            ParticlesError::Full => "the weighted particles fill their buffers: reduce them first",
         })
     }
 }
@@ -122,17 +134,122 @@ pub fn check_count(n: usize) -> Result<(), ParticlesError> {
 }
 
 /// `n >= 2` particles in a caller-owned slice, and for a rough gas their spins in a second one.
+/// Weighted particles ([`Particles::weighted`], Rjasanow and Wagner's SWPM,
+/// [`crate::weighted`]) carry a weight each in a third slice, and use the first `len` records
+/// of buffers whose rest is room for the particles their collisions create.
 #[derive(Debug)]
 pub struct Particles<'a> {
     p: &'a mut [Particle],
     spins: &'a mut [Spin],
+    /// The weights of weighted particles, as long as `p`; empty: every weight 1.
+    weights: &'a mut [Real],
+    /// The particles in use: `p.len()` unless weighted.
+    len: usize,
 }
 
 impl<'a> Particles<'a> {
     /// A system over a caller buffer of `n >= 2` particles (no spins: a smooth gas).
     pub fn new(p: &'a mut [Particle]) -> Result<Self, ParticlesError> {
         check_count(p.len())?;
-        Ok(Particles { p, spins: &mut [] })
+        let len = p.len();
+        Ok(Particles {
+            p,
+            spins: &mut [],
+            weights: &mut [],
+            len,
+        })
+    }
+
+    /// Weighted particles: the first `len >= 2` records of `p` in use with the weights
+    /// `weights[..len]` (each finite and > 0; [`ParticlesError::Weight`] otherwise), the rest of
+    /// both buffers (of one length, [`ParticlesError::WeightCount`] otherwise) room for the
+    /// particles collisions create ([`Particles::push`]).
+    pub fn weighted(
+        p: &'a mut [Particle],
+        weights: &'a mut [Real],
+        len: usize,
+    ) -> Result<Self, ParticlesError> {
+        check_count(len)?;
+        if weights.len() != p.len() || len > p.len() {
+            return Err(ParticlesError::WeightCount);
+        }
+        if !weights[..len].iter().all(|g| g.is_finite() && *g > 0.0) {
+            return Err(ParticlesError::Weight);
+        }
+        Ok(Particles {
+            p,
+            spins: &mut [],
+            weights,
+            len,
+        })
+    }
+
+    /// Whether the particles carry weights ([`Particles::weighted`]).
+    #[inline(always)]
+    pub fn is_weighted(&self) -> bool {
+        !self.weights.is_empty()
+    }
+
+    /// The weight of particle `i` (1 unless weighted).
+    #[inline(always)]
+    pub fn weight(&self, i: usize) -> Real {
+        if self.weights.is_empty() {
+            1.0
+        } else {
+            self.weights[i]
+        }
+    }
+
+    /// The weights of the particles in use (empty unless weighted).
+    pub fn weights(&self) -> &[Real] {
+        let len = self.len.min(self.weights.len());
+        &self.weights[..len]
+    }
+
+    /// Sets the weight of particle `i` (weighted particles only).
+    #[inline(always)]
+    pub fn set_weight(&mut self, i: usize, g: Real) {
+        self.weights[i] = g;
+    }
+
+    /// The particles the buffers hold (`len()` unless weighted).
+    pub fn capacity(&self) -> usize {
+        self.p.len()
+    }
+
+    /// The total weight `sum g` (the number of particles unless weighted).
+    pub fn mass(&self) -> Real {
+        if self.weights.is_empty() {
+            self.len as Real
+        } else {
+            self.weights().iter().sum()
+        }
+    }
+
+    /// Appends a weighted particle of velocity `v`, weight `g`, last kicked at `t`;
+    /// [`ParticlesError::Full`] (nothing changed) when the buffers are full or the particles
+    /// are not weighted.
+    pub fn push(&mut self, v: Vec3, g: Real, t: Real) -> Result<(), ParticlesError> {
+        if !self.is_weighted() || self.len == self.p.len() {
+            return Err(ParticlesError::Full);
+        }
+        self.p[self.len] = Particle::new(v, t);
+        self.weights[self.len] = g;
+        self.len += 1;
+        Ok(())
+    }
+
+    /// Keeps the first `len` particles (`2 <= len <= self.len()`): what a reduction of weighted
+    /// particles leaves.
+    pub(crate) fn truncate(&mut self, len: usize) {
+        debug_assert!(self.is_weighted() && (2..=self.len).contains(&len));
+        self.len = len;
+    }
+
+    /// The whole buffers of weighted particles, records and weights, for a reduction that
+    /// rewrites them in place.
+    pub(crate) fn buffers_mut(&mut self) -> (&mut [Particle], &mut [Real]) {
+        (self.p, self.weights)
     }
 
     /// A rough gas: `n >= 2` particles and their `n` spins, each in a caller buffer.
@@ -144,7 +261,13 @@ impl<'a> Particles<'a> {
         if spins.len() != p.len() {
             return Err(ParticlesError::SpinCount);
         }
-        Ok(Particles { p, spins })
+        let len = p.len();
+        Ok(Particles {
+            p,
+            spins,
+            weights: &mut [],
+            len,
+        })
     }
 
     /// Whether the system carries spins (a rough gas).
@@ -175,10 +298,10 @@ impl<'a> Particles<'a> {
         self.spins
     }
 
-    /// Number of particles.
+    /// Number of particles (in use, when weighted).
     #[inline(always)]
     pub fn len(&self) -> usize {
-        self.p.len()
+        self.len
     }
 
     /// Always false: a system holds at least two particles.
@@ -223,24 +346,24 @@ impl<'a> Particles<'a> {
 
     /// Sets every particle's last-kick time to `t` (start of a run).
     pub fn reset_kick_times(&mut self, t: Real) {
-        for q in self.p.iter_mut() {
+        for q in self.as_mut_slice() {
             q.t_kick = t;
         }
     }
 
     /// The particles, read-only.
     pub fn as_slice(&self) -> &[Particle] {
-        self.p
+        &self.p[..self.len]
     }
 
     /// The particles, mutable: for the batch kernels.
     pub fn as_mut_slice(&mut self) -> &mut [Particle] {
-        self.p
+        &mut self.p[..self.len]
     }
 
     /// Fills the velocities from a sampler and sets every last-kick time to `t0`.
     pub fn fill_with(&mut self, t0: Real, mut sample: impl FnMut() -> Vec3) {
-        for q in self.p.iter_mut() {
+        for q in self.as_mut_slice() {
             *q = Particle::new(sample(), t0);
         }
     }

@@ -9,16 +9,36 @@
 use gdsmc_core::drive::{NoDrive, PlanarWhiteNoise, WhiteNoise};
 use gdsmc_core::geometry::{Disks, Spheres};
 use gdsmc_core::kernel::Maxwell;
+use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::Streams;
 use gdsmc_core::sample::standard_normal3;
 use gdsmc_core::weighted::moments::observables;
 use gdsmc_core::weighted::nosplit::WeightedNoSplitting;
-use gdsmc_core::weighted::{Reduction, Transfer, WeightedParticle, WeightedSystem};
+use gdsmc_core::weighted::{Reduction, Transfer};
 use gdsmc_stats::Sample;
 
 const ALPHA: f64 = 0.5;
 const TIMES: [f64; 3] = [1.0, 4.0, 8.0];
+
+/// Buffers of `cap` records and weights, the first `n0` a Maxwellian sample of weight 1 in
+/// dimension `G`.
+fn start<G: gdsmc_core::geometry::Geometry>(
+    n0: usize,
+    cap: usize,
+    rng: &mut gdsmc_core::rng::Xoshiro256PlusPlus,
+) -> (Vec<Particle>, Vec<f64>) {
+    let (mut buf, mut g) = (vec![Particle::default(); cap], vec![0.0; cap]);
+    for (p, w) in buf.iter_mut().zip(g.iter_mut()).take(n0) {
+        let mut v = standard_normal3(rng);
+        if G::CHOICE.d() == 2 {
+            v.z = 0.0;
+        }
+        *p = Particle::new(v, 0.0);
+        *w = 1.0;
+    }
+    (buf, g)
+}
 
 /// Each ensemble's `T_bulk(t)/T_bulk(0)` at [`TIMES`] in dimension `G`, with the most
 /// particles a system held and the reductions.
@@ -35,15 +55,8 @@ fn ratios<G: gdsmc_core::geometry::Geometry>(
     let (mut out, mut most, mut reductions) = (Vec::new(), 0, 0);
     for _ in 0..ensembles {
         let mut rng = streams.next().unwrap();
-        let mut buf = vec![WeightedParticle::default(); cap];
-        for p in buf.iter_mut().take(n0) {
-            let mut v = standard_normal3(&mut rng);
-            if G::CHOICE.d() == 2 {
-                v.z = 0.0;
-            }
-            *p = WeightedParticle::new(v, 1.0);
-        }
-        let mut sys = WeightedSystem::new(&mut buf, n0).unwrap();
+        let (mut buf, mut g) = start::<G>(n0, cap, &mut rng);
+        let mut sys = Particles::weighted(&mut buf, &mut g, n0).unwrap();
         let t0 = observables(&sys, G::CHOICE.d()).t_bulk;
         let mut e = WeightedNoSplitting::<_, _, _, G>::start(
             (kernel, law, NoDrive),
@@ -140,16 +153,8 @@ fn heated<G: gdsmc_core::geometry::Geometry, D: gdsmc_core::drive::Drive>(
     let mut t0s = Vec::new();
     for _ in 0..ensembles {
         let mut rng = streams.next().unwrap();
-        let mut buf = vec![WeightedParticle::default(); cap];
-        let mut times = vec![0.0; cap];
-        for p in buf.iter_mut().take(n0) {
-            let mut v = standard_normal3(&mut rng);
-            if G::CHOICE.d() == 2 {
-                v.z = 0.0;
-            }
-            *p = WeightedParticle::new(v, 1.0);
-        }
-        let mut sys = WeightedSystem::with_times(&mut buf, &mut times, n0, 0.0).unwrap();
+        let (mut buf, mut g) = start::<G>(n0, cap, &mut rng);
+        let mut sys = Particles::weighted(&mut buf, &mut g, n0).unwrap();
         t0s.push(observables(&sys, G::CHOICE.d()).t_bulk);
         let mut e = WeightedNoSplitting::<_, _, _, G>::start(
             (kernel, law, drive),
@@ -162,7 +167,7 @@ fn heated<G: gdsmc_core::geometry::Geometry, D: gdsmc_core::drive::Drive>(
         for (k, &t) in TIMES.iter().enumerate() {
             let o = e.advance_to(&mut sys, t, &mut rng).unwrap();
             samples[k].push(o.t_bulk);
-            gmax = sys.particles().iter().fold(gmax, |m, p| m.max(p.g));
+            gmax = sys.weights().iter().fold(gmax, |m, &g| m.max(g));
         }
         reductions += e.reductions();
     }

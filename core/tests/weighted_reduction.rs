@@ -3,30 +3,37 @@
 //! allocated one keeps the thin tail's particles, and neither moves the distribution's tail.
 
 use gdsmc_core::geometry::DimensionChoice;
+use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
 use gdsmc_core::sample::standard_normal;
 use gdsmc_core::vec3::Vec3;
-use gdsmc_core::weighted::{WeightedParticle, WeightedSystem, reduce, reduce_allocated};
+use gdsmc_core::weighted::moments::{energy, momentum};
+use gdsmc_core::weighted::{reduce, reduce_allocated};
 
 /// The generator of seed `seed`.
 fn rng_of(seed: u64) -> Xoshiro256PlusPlus {
     Streams::new(seed).next().expect("a stream")
 }
 
-/// A system of `len` particles, velocities normal with a drift, weights spread over four
-/// decades (as a weighted run's tail makes them), in a buffer of `cap`.
-fn system(len: usize, cap: usize, rng: &mut Xoshiro256PlusPlus) -> [WeightedParticle; 512] {
-    let mut buf = [WeightedParticle::default(); 512];
-    for (k, p) in buf.iter_mut().enumerate().take(len.min(cap)) {
+/// The records and weights of `len` particles in buffers of 512, velocities normal with a
+/// drift, weights spread over four decades (as a weighted run's tail makes them).
+fn system(len: usize, rng: &mut Xoshiro256PlusPlus) -> (Vec<Particle>, Vec<f64>) {
+    let (mut buf, mut g) = (vec![Particle::default(); 512], vec![0.0; 512]);
+    for k in 0..len {
         let v = Vec3::new(
             1.0 + standard_normal(rng),
             standard_normal(rng),
             -0.5 + 3.0 * standard_normal(rng),
         );
-        let g = libm::pow(10.0, -4.0 * (k % 7) as f64 / 6.0);
-        *p = WeightedParticle::new(v, g);
+        buf[k] = Particle::new(v, 0.0);
+        g[k] = libm::pow(10.0, -4.0 * (k % 7) as f64 / 6.0);
     }
-    buf
+    (buf, g)
+}
+
+/// The total weight, momentum and energy of `p`.
+fn sums(p: &Particles<'_>) -> (f64, Vec3, f64) {
+    (p.mass(), momentum(p), energy(p))
 }
 
 /// Rjasanow and Wagner's conservation: a reduction keeps the weight, momentum and energy
@@ -39,24 +46,27 @@ fn a_reduction_keeps_weight_momentum_and_energy() {
         (499, 3, DimensionChoice::Three),
         (301, 16, DimensionChoice::Two),
     ] {
-        let mut buf = system(len, 512, &mut rng);
+        let (mut buf, mut g) = system(len, &mut rng);
         if dim == DimensionChoice::Two {
             for p in &mut buf[..len] {
                 p.vz = 0.0;
             }
         }
-        let mut sys = WeightedSystem::new(&mut buf, len).unwrap();
-        let (w, m, e) = (sys.mass(), sys.momentum(), sys.energy());
-        let scale = (sys.particles().iter())
-            .map(|p| p.g * p.velocity().norm2())
-            .sum::<f64>();
-        let left = reduce(&mut sys, group, dim, &mut rng);
+        let mut sys = Particles::weighted(&mut buf, &mut g, len).unwrap();
+        let (w, m, e) = sums(&sys);
+        let scale = 2.0 * e;
+        let left = reduce(&mut sys, 0.5, group, dim, &mut rng);
         assert!(left < len && left >= 2 * (len / group), "{left} of {len}");
-        assert!((sys.mass() - w).abs() <= 1e-12 * w);
-        assert!((sys.momentum() - m).norm() <= 1e-12 * scale.max(w));
-        assert!((sys.energy() - e).abs() <= 1e-12 * scale);
+        let (w1, m1, e1) = sums(&sys);
+        assert!((w1 - w).abs() <= 1e-12 * w);
+        assert!((m1 - m).norm() <= 1e-12 * scale.max(w));
+        assert!((e1 - e).abs() <= 1e-12 * scale);
+        assert!(
+            sys.as_slice().iter().all(|p| p.t_kick == 0.5),
+            "last kicked at the reduction"
+        );
         if dim == DimensionChoice::Two {
-            assert!(sys.particles().iter().all(|p| p.vz == 0.0));
+            assert!(sys.as_slice().iter().all(|p| p.vz == 0.0));
         }
     }
 }
@@ -67,16 +77,16 @@ fn a_reduction_keeps_weight_momentum_and_energy() {
 #[test]
 fn a_reduction_keeps_the_tail_where_it_was() {
     let mut rng = rng_of(6);
-    let mut buf = system(500, 512, &mut rng);
-    let mut sys = WeightedSystem::new(&mut buf, 500).unwrap();
-    let flow = (1.0 / sys.mass()) * sys.momentum();
-    let top = |s: &WeightedSystem<'_>| {
-        (s.particles().iter())
+    let (mut buf, mut g) = system(500, &mut rng);
+    let mut sys = Particles::weighted(&mut buf, &mut g, 500).unwrap();
+    let flow = (1.0 / sys.mass()) * momentum(&sys);
+    let top = |s: &Particles<'_>| {
+        (s.as_slice().iter())
             .map(|p| (p.velocity() - flow).norm())
             .fold(0.0, f64::max)
     };
     let before = top(&sys);
-    reduce(&mut sys, 4, DimensionChoice::Three, &mut rng);
+    reduce(&mut sys, 0.0, 4, DimensionChoice::Three, &mut rng);
     let after = top(&sys);
     assert!(
         after > 0.5 * before && after < 1.5 * before,
@@ -94,31 +104,35 @@ fn an_allocated_reduction_keeps_the_sums_and_feeds_the_tail() {
     let mut kept_fastest = false;
     for (k, q) in [0.0, 1.0].into_iter().enumerate() {
         let mut rng = rng_of(7);
-        let mut buf = system(500, 512, &mut rng);
-        for p in &mut buf[..500] {
-            p.g = 1.0;
-        }
-        let mut sys = WeightedSystem::new(&mut buf, 500).unwrap();
-        let (w, m, e) = (sys.mass(), sys.momentum(), sys.energy());
-        let left = reduce_allocated(&mut sys, (100, 10, q), DimensionChoice::Three, &mut rng);
+        let (mut buf, mut g) = system(500, &mut rng);
+        g[..500].fill(1.0);
+        let mut sys = Particles::weighted(&mut buf, &mut g, 500).unwrap();
+        let (w, m, e) = sums(&sys);
+        let left = reduce_allocated(
+            &mut sys,
+            0.0,
+            (100, 10, q),
+            DimensionChoice::Three,
+            &mut rng,
+        );
         assert!((50..=200).contains(&left), "q = {q}: {left} left");
-        assert!((sys.mass() - w).abs() <= 1e-12 * w);
-        assert!((sys.momentum() - m).norm() <= 1e-12 * 2.0 * e);
-        assert!((sys.energy() - e).abs() <= 1e-12 * e);
+        let (w1, m1, e1) = sums(&sys);
+        assert!((w1 - w).abs() <= 1e-12 * w);
+        assert!((m1 - m).norm() <= 1e-12 * 2.0 * e);
+        assert!((e1 - e).abs() <= 1e-12 * e);
         let flow = (1.0 / w) * m;
         // The fastest tenth of the speeds before: the particles left beyond its start.
-        let mut speeds: [f64; 500] = [0.0; 500];
-        let mut before = system(500, 512, &mut rng_of(7));
-        for (s, p) in speeds.iter_mut().zip(before.iter_mut()) {
-            *s = (p.velocity() - flow).norm();
-        }
+        let (before, _) = system(500, &mut rng_of(7));
+        let mut speeds: Vec<f64> = (before[..500].iter())
+            .map(|p| (p.velocity() - flow).norm())
+            .collect();
         speeds.sort_unstable_by(f64::total_cmp);
         let edge = speeds[450];
         if q == 0.0 {
-            kept_fastest = (sys.particles().iter())
+            kept_fastest = (sys.as_slice().iter())
                 .any(|p| ((p.velocity() - flow).norm() - speeds[499]).abs() < 1e-12);
         }
-        counts[k] = (sys.particles().iter())
+        counts[k] = (sys.as_slice().iter())
             .filter(|p| (p.velocity() - flow).norm() > edge)
             .count();
     }
@@ -149,27 +163,25 @@ fn repeated_reductions_keep_a_maxwellians_tail() {
         let mut rng = rng_of(40 + r as u64);
         let mut tails = [Vec::new(), Vec::new()];
         for _ in 0..40 {
-            let mut buf = vec![WeightedParticle::default(); 20_000];
-            for p in buf.iter_mut().take(4000) {
-                *p = WeightedParticle::new(standard_normal3(&mut rng), 1.0);
+            let (mut buf, mut g) = (vec![Particle::default(); 20_000], vec![0.0; 20_000]);
+            for (p, gk) in buf.iter_mut().zip(g.iter_mut()).take(4000) {
+                *p = Particle::new(standard_normal3(&mut rng), 0.0);
+                *gk = 1.0;
             }
-            let mut sys = WeightedSystem::new(&mut buf, 4000).unwrap();
+            let mut sys = Particles::weighted(&mut buf, &mut g, 4000).unwrap();
             for _ in 0..10 {
                 for i in 0..sys.len() {
-                    let half = WeightedParticle::new(
-                        sys.particles()[i].velocity(),
-                        0.5 * sys.particles()[i].g,
-                    );
-                    sys.particles_mut()[i] = half;
-                    sys.push(half).unwrap();
+                    let half = 0.5 * sys.weight(i);
+                    sys.set_weight(i, half);
+                    sys.push(sys.velocity(i), half, 0.0).unwrap();
                 }
-                red.apply(&mut sys, 2, DimensionChoice::Three, &mut rng);
+                red.apply(&mut sys, (0.0, 2), DimensionChoice::Three, &mut rng);
             }
             let w = sys.mass();
             for (k, cut) in [3.0, 4.0].into_iter().enumerate() {
-                let p: f64 = (sys.particles().iter())
-                    .filter(|p| p.velocity().norm() > cut)
-                    .map(|p| p.g)
+                let p: f64 = (0..sys.len())
+                    .filter(|&i| sys.velocity(i).norm() > cut)
+                    .map(|i| sys.weight(i))
                     .sum();
                 tails[k].push(p / w);
             }
@@ -184,57 +196,6 @@ fn repeated_reductions_keep_a_maxwellians_tail() {
                 s.joint_ci(4),
                 exact[k]
             );
-        }
-    }
-}
-
-/// A group's two replacements keep its weight, momentum, energy and, while the lean toward the
-/// flow is below its limit, the fourth moment `sum g |v - flow|^4` (module docs of
-/// `reduce_group`): a cell of five unequal particles around (2, 1, 0), flow (0.1, 0, 0).
-#[test]
-fn a_group_keeps_its_fourth_moment_about_the_flow() {
-    use gdsmc_core::weighted::reduce_group;
-    let flow = Vec3::new(0.1, 0.0, 0.0);
-    let group = [
-        WeightedParticle::new(Vec3::new(2.1, 1.0, 0.1), 0.3),
-        WeightedParticle::new(Vec3::new(1.9, 1.2, -0.1), 0.1),
-        WeightedParticle::new(Vec3::new(2.0, 0.8, 0.2), 0.25),
-        WeightedParticle::new(Vec3::new(2.2, 1.1, -0.2), 0.05),
-        WeightedParticle::new(Vec3::new(1.8, 0.9, 0.0), 0.3),
-    ];
-    let sums = |ps: &[WeightedParticle]| {
-        ps.iter()
-            .fold((0.0, Vec3::ZERO, 0.0, 0.0), |(w, m, e, f), p| {
-                let c2 = (p.velocity() - flow).norm2();
-                (
-                    w + p.g,
-                    m + p.g * p.velocity(),
-                    e + p.g * p.velocity().norm2(),
-                    f + p.g * c2 * c2,
-                )
-            })
-    };
-    let mut rng = rng_of(50);
-    for dim in [DimensionChoice::Three, DimensionChoice::Two] {
-        let mut g = group;
-        if dim == DimensionChoice::Two {
-            for p in &mut g {
-                p.vz = 0.0;
-            }
-        }
-        let two = reduce_group(&g, flow, dim, &mut rng);
-        let (a, b) = (sums(&g), sums(&two));
-        assert!((a.0 - b.0).abs() < 1e-14);
-        assert!((a.1 - b.1).norm() < 1e-13);
-        assert!((a.2 - b.2).abs() < 1e-13 * a.2);
-        assert!(
-            (a.3 - b.3).abs() < 1e-12 * a.3,
-            "{dim:?}: {} vs {}",
-            a.3,
-            b.3
-        );
-        if dim == DimensionChoice::Two {
-            assert!(two.iter().all(|p| p.vz == 0.0));
         }
     }
 }

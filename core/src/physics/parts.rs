@@ -231,7 +231,10 @@ pub(crate) fn particle_count(n: usize) -> Result<(), PhysicsError> {
     check_count(n).or_else(|e| match e {
         ParticlesError::TooFew => err(Param::N, Problem::TooFewParticles(n)),
         ParticlesError::TooMany => err(Param::N, Problem::TooManyParticles(n)),
-        ParticlesError::SpinCount => unreachable!("check_count does not look at spins"),
+        ParticlesError::SpinCount
+        | ParticlesError::WeightCount
+        | ParticlesError::Weight
+        | ParticlesError::Full => unreachable!("check_count looks at the count alone"),
     })
 }
 

@@ -6,14 +6,14 @@
 //! the replacements' speeds then spread over the whole shell: repeated, that heats the tail).
 
 use super::group::reduce_group;
-use super::particle::WeightedParticle;
 use crate::geometry::DimensionChoice;
 use crate::math::Real;
+use crate::particles::Particle;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
 /// Component `k` of a particle's velocity.
-fn component(p: &WeightedParticle, k: usize) -> Real {
+fn component(p: &Particle, k: usize) -> Real {
     match k {
         0 => p.vx,
         1 => p.vy,
@@ -21,15 +21,15 @@ fn component(p: &WeightedParticle, k: usize) -> Real {
     }
 }
 
-/// Reduces the particles `buf[a..b]` cell by cell (module docs; the flow velocity `flow` is
+/// Reduces the packed records `buf[a..b]` ([`super::packed`]) cell by cell (module docs; the flow velocity `flow` is
 /// the system's, [`reduce_group`]'s), writing what is left from
 /// `buf[*out]` on (`*out <= a`: what a call writes never passes what it has read) and
 /// advancing `*out`. A cell is small when `small(cell)` holds or it has at most 2 particles.
 pub(crate) fn reduce_cells<R: Rng + ?Sized>(
-    buf: &mut [WeightedParticle],
+    buf: &mut [Particle],
     (a, b): (usize, usize),
     out: &mut usize,
-    small: &impl Fn(&[WeightedParticle]) -> bool,
+    small: &impl Fn(&[Particle]) -> bool,
     (flow, dim, rng): (Vec3, DimensionChoice, &mut R),
 ) {
     debug_assert!(*out <= a);

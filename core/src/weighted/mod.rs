@@ -20,11 +20,9 @@ mod cells;
 mod group;
 pub mod moments;
 pub mod nosplit;
-pub mod particle;
+mod packed;
 pub mod reduce;
 pub mod transfer;
 
-pub use group::reduce_group;
-pub use particle::{WeightedError, WeightedParticle, WeightedSystem};
 pub use reduce::{Reduction, reduce, reduce_allocated};
 pub use transfer::{Transfer, collide, collide_with};

@@ -3,24 +3,36 @@
 //! the distribution, so its moments are the gas's), so a weighted run reports the same columns
 //! as an equal-weight one.
 
-use super::particle::{WeightedParticle, WeightedSystem};
 use crate::batch::sums::Sums;
 use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
+use crate::particles::{Particle, Particles};
 use crate::vec3::Vec3;
 
-/// The weighted means of the particles `q` (at least one, total weight > 0) as [`Sums`] of a
-/// single particle (`n = 1`): [`Observables::from_sums_dim`] then divides by 1, and every
-/// field is the weighted mean (GRW (6)-(11) with `g` in place of `1/n`).
-pub fn weighted_means(q: &[WeightedParticle]) -> Sums {
-    let mass: Real = q.iter().map(|p| p.g).sum();
+/// The total momentum `sum g v` of `p` (weights 1 unless weighted).
+pub fn momentum(p: &Particles<'_>) -> Vec3 {
+    (0..p.len()).fold(Vec3::ZERO, |m, i| m + p.weight(i) * p.velocity(i))
+}
+
+/// The total kinetic energy `sum g |v|^2 / 2` of `p`.
+pub fn energy(p: &Particles<'_>) -> Real {
+    (0..p.len())
+        .map(|i| 0.5 * p.weight(i) * p.velocity(i).norm2())
+        .sum()
+}
+
+/// The weighted means of the records `q` with weights `w` (at least one, total weight > 0)
+/// as [`Sums`] of a single particle (`n = 1`): [`Observables::from_sums_dim`] then divides
+/// by 1, and every field is the weighted mean (GRW (6)-(11) with `g` in place of `1/n`).
+pub fn weighted_means(q: &[Particle], weights: &[Real]) -> Sums {
+    let mass: Real = weights.iter().sum();
     let w = 1.0 / mass;
     let mut s = Sums {
         n: 1,
         ..Sums::default()
     };
-    for p in q {
-        let g = p.g * w;
+    for (p, &gp) in q.iter().zip(weights) {
+        let g = gp * w;
         let (x, y, z) = (p.vx, p.vy, p.vz);
         let v2 = x * x + y * y + z * z;
         s.s1[0] += g * x;
@@ -39,8 +51,8 @@ pub fn weighted_means(q: &[WeightedParticle]) -> Sums {
         s.s6 += g * v2 * v2 * v2;
     }
     let bulk = Vec3::new(s.s1[0], s.s1[1], s.s1[2]);
-    for p in q {
-        let g = p.g * w;
+    for (p, &gp) in q.iter().zip(weights) {
+        let g = gp * w;
         let c = p.velocity() - bulk;
         let c2 = c.norm2();
         s.c2[0] += g * c.x * c.x;
@@ -62,36 +74,36 @@ pub fn weighted_means(q: &[WeightedParticle]) -> Sums {
     s
 }
 
-/// The observables of `sys` in dimension `d` (2 or 3): weighted means throughout, `a2` MS (3)
-/// at that `d`, `max_peculiar_speed` over the particles in use whatever their weight.
-pub fn observables(sys: &WeightedSystem<'_>, d: usize) -> Observables {
-    Observables::from_sums_dim(&weighted_means(sys.particles()), d)
+/// The observables of the weighted particles `p` in dimension `d` (2 or 3): weighted means
+/// throughout, `a2` MS (3) at that `d`, `max_peculiar_speed` over the particles in use
+/// whatever their weight.
+pub fn observables(p: &Particles<'_>, d: usize) -> Observables {
+    Observables::from_sums_dim(&weighted_means(p.as_slice(), p.weights()), d)
 }
 
 /// The weight beyond each of `speeds` about `center`: `sum_{|v - center| > c} g / sum g`, the
 /// tail probability `P(|v - V| > c)` the weighted particles are there for.
 pub fn weight_beyond<const K: usize>(
-    sys: &WeightedSystem<'_>,
+    p: &Particles<'_>,
     center: Vec3,
     speeds: [Real; K],
 ) -> [Real; K] {
     let mut out = [0.0; K];
-    for p in sys.particles() {
-        let c2 = (p.velocity() - center).norm2();
+    for i in 0..p.len() {
+        let c2 = (p.velocity(i) - center).norm2();
         for (o, c) in out.iter_mut().zip(speeds) {
             if c2 > c * c {
-                *o += p.g;
+                *o += p.weight(i);
             }
         }
     }
-    let mass = sys.mass();
+    let mass = p.mass();
     out.map(|w| w / mass)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::particles::{Particle, Particles};
 
     /// Equal weights give the equal-weight observables (any common weight); a particle of
     /// weight 2 counts as two of weight 1.
@@ -104,9 +116,9 @@ mod tests {
         ];
         let mut plain: [Particle; 4] = core::array::from_fn(|k| Particle::new(vs[k.min(2)], 0.0));
         let equal = Observables::of(&Particles::new(&mut plain).unwrap());
-        let mut buf: [WeightedParticle; 3] =
-            core::array::from_fn(|k| WeightedParticle::new(vs[k], if k == 2 { 2.0 } else { 1.0 }));
-        let sys = WeightedSystem::new(&mut buf, 3).unwrap();
+        let mut buf: [Particle; 3] = core::array::from_fn(|k| Particle::new(vs[k], 0.0));
+        let mut g = [1.0, 1.0, 2.0];
+        let sys = Particles::weighted(&mut buf, &mut g, 3).unwrap();
         let o = observables(&sys, 3);
         for (a, b) in [
             (o.t_bulk, equal.t_bulk),

@@ -17,7 +17,8 @@
 //! made exact too.
 //!
 //! A drive acts as in the equal-weight loop ([`crate::engine::NoSplitting`]): each partner is
-//! kicked lazily from its last-kick time (GRW (18), steps 2.5-2.6) before the pair is tested,
+//! kicked lazily from its last-kick time (the record's, as for equal weights: GRW (18), steps
+//! 2.5-2.6) before the pair is tested,
 //! new particles start at the collision's time, and every particle is kicked to the time of an
 //! observation, a reduction or a refresh of the bounds (so a reduction groups velocities of one
 //! time). The weights are untouched by a drive, which acts on each particle alone (a drive that
@@ -33,8 +34,7 @@
 //! n0 S2 - |P|^2`), and a reduction keeps `S2` and `P`; a drive whose heating is linear adds
 //! its own term, each particle's alone, as GRW (13) has it.
 
-use super::moments::observables;
-use super::particle::{WeightedError, WeightedParticle, WeightedSystem};
+use super::moments::{momentum, observables};
 use super::reduce::Reduction;
 use super::transfer::{Transfer, collide_with};
 use crate::collision::inelastic;
@@ -45,6 +45,7 @@ use crate::geometry::Geometry;
 use crate::kernel::Kernel;
 use crate::math::{Real, sqrt};
 use crate::moments::Observables;
+use crate::particles::{Particles, ParticlesError};
 use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_pair, uniform01};
 use crate::sample::standard_exponential;
@@ -77,23 +78,22 @@ pub struct WeightedNoSplitting<K, A, D, G> {
 }
 
 impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A, D, G> {
-    /// Starts at `t0` on `sys` (every particle at `t0`) with the weight transfer `transfer`
-    /// and the reduction `reduction`. A drive that acts needs a system with last-kick times
-    /// ([`WeightedSystem::with_times`]; they are set to `t0`); one that couples the particles
-    /// is refused.
+    /// Starts at `t0` on the weighted particles `sys` ([`Particles::weighted`]; every last-kick
+    /// time set to `t0`) with the weight transfer `transfer` and the reduction `reduction`. A
+    /// drive that couples the particles is refused.
     pub fn start(
         (kernel, law, drive): (K, A, D),
         transfer: Transfer,
         reduction: Reduction,
-        sys: &mut WeightedSystem<'_>,
+        sys: &mut Particles<'_>,
         t0: Real,
     ) -> Result<Self, EngineError> {
         if !t0.is_finite() {
             return Err(EngineError::TimeBackwards);
         }
-        if D::ACTS && !sys.has_times() {
+        if !sys.is_weighted() {
             return Err(EngineError::Invariant(
-                "a driven weighted system keeps last-kick times",
+                "the weighted loop runs weighted particles",
             ));
         }
         if D::COUPLES || D::COUNTS_EVENTS {
@@ -101,7 +101,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
                 "the weighted loop runs drives that act on each particle alone, in closed form",
             ));
         }
-        sys.set_all_times(t0);
+        sys.reset_kick_times(t0);
         let mut s = WeightedNoSplitting {
             kernel,
             law,
@@ -125,21 +125,21 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
 
     /// Particle `i` kicked from its last-kick time to now (a drive that acts only).
     #[inline(always)]
-    fn kick<R: Rng + ?Sized>(&self, sys: &mut WeightedSystem<'_>, i: usize, rng: &mut R) {
+    fn kick<R: Rng + ?Sized>(&self, sys: &mut Particles<'_>, i: usize, rng: &mut R) {
         if D::ACTS {
-            let dt = self.t - sys.time(i);
+            let dt = self.t - sys.kick_time(i);
             if dt > 0.0 {
-                let q = sys.particles()[i];
-                let v = self.drive.evolve(q.velocity(), dt, rng);
-                sys.particles_mut()[i] = WeightedParticle::new(v, q.g);
-                sys.set_time(i, self.t);
+                let v = self.drive.evolve(sys.velocity(i), dt, rng);
+                let q = sys.get_mut(i);
+                q.set_velocity(v);
+                q.t_kick = self.t;
             }
         }
     }
 
     /// Every particle kicked to now (a drive that acts only), and the drive told the moments
     /// there ([`Drive::observe`]).
-    fn synchronize<R: Rng + ?Sized>(&mut self, sys: &mut WeightedSystem<'_>, rng: &mut R) {
+    fn synchronize<R: Rng + ?Sized>(&mut self, sys: &mut Particles<'_>, rng: &mut R) {
         if D::ACTS {
             for i in 0..sys.len() {
                 self.kick(sys, i, rng);
@@ -150,15 +150,15 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
 
     /// The bounds made exact: `vref` the flow, `Umax = 2 max |v - vref|`, `g_max` (every
     /// particle at the current time).
-    fn refresh(&mut self, sys: &WeightedSystem<'_>) -> Result<(), EngineError> {
+    fn refresh(&mut self, sys: &Particles<'_>) -> Result<(), EngineError> {
         let mass = sys.mass();
-        let vref = (1.0 / mass) * sys.momentum();
+        let vref = (1.0 / mass) * momentum(sys);
         let (mut c2, mut g, mut s2) = (0.0, 0.0, 0.0);
-        for p in sys.particles() {
+        for (p, &w) in sys.as_slice().iter().zip(sys.weights()) {
             let x = (p.velocity() - vref).norm2();
             c2 = if x > c2 { x } else { c2 };
-            g = if p.g > g { p.g } else { g };
-            s2 += p.g * x;
+            g = if w > g { w } else { g };
+            s2 += w * x;
         }
         self.tref = s2 / (mass * G::CHOICE.d() as Real);
         if !(c2.is_finite() && g.is_finite()) {
@@ -192,7 +192,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     /// (every particle kicked to `t_end`; [`super::moments::observables`]).
     pub fn advance_to<R: Rng + ?Sized>(
         &mut self,
-        sys: &mut WeightedSystem<'_>,
+        sys: &mut Particles<'_>,
         t_end: Real,
         rng: &mut R,
     ) -> Result<Observables, EngineError> {
@@ -236,14 +236,13 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     /// when the buffer is full.
     fn event<R: Rng + ?Sized>(
         &mut self,
-        sys: &mut WeightedSystem<'_>,
+        sys: &mut Particles<'_>,
         rng: &mut R,
     ) -> Result<(), EngineError> {
         self.counts.candidates += 1;
         if sys.len() + 2 > sys.capacity() {
             self.synchronize(sys, rng);
-            self.reduction.apply(sys, 2, G::CHOICE, rng);
-            sys.set_all_times(self.t);
+            self.reduction.apply(sys, (self.t, 2), G::CHOICE, rng);
             self.reductions += 1;
             self.refresh(sys)?;
             // The bounds changed: this candidate was drawn at the old rate, which bounds the
@@ -255,10 +254,10 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         let (i, j) = uniform_pair(rng, sys.len());
         self.kick(sys, i, rng);
         self.kick(sys, j, rng);
-        let (pi, pj) = (sys.particles()[i], sys.particles()[j]);
-        let (vi, vj) = (pi.velocity(), pj.velocity());
+        let (vi, vj) = (sys.velocity(i), sys.velocity(j));
+        let (gi, gj) = (sys.weight(i), sys.weight(j));
         let u = vi - vj;
-        let heavier = if pi.g > pj.g { pi.g } else { pj.g };
+        let heavier = if gi > gj { gi } else { gj };
         let speed = u.norm();
         if K::USES_UMAX && speed > self.umax {
             // A drive moved the pair past the bound that drew this waiting time: the kernel
@@ -280,16 +279,10 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
                 self.counts.fictitious += 1;
                 return self.count_refresh(sys, rng);
             };
-            let before = sys.len();
-            collide_with(sys, (i, j), (a, b), kappa).map_err(|e| match e {
-                WeightedError::Full => EngineError::Invariant("a reduction makes room first"),
+            collide_with(sys, (i, j), ((a, b), self.t), kappa).map_err(|e| match e {
+                ParticlesError::Full => EngineError::Invariant("a reduction makes room first"),
                 _ => EngineError::Invariant("a collision keeps every weight > 0"),
             })?;
-            if D::ACTS {
-                for k in before..sys.len() {
-                    sys.set_time(k, self.t);
-                }
-            }
             self.counts.collisions += 1;
             // Cover the new velocities: no pair overshoots the bound in a collision.
             self.cover([a, b]);
@@ -315,7 +308,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     /// Counts a candidate toward the next refresh of the bounds, and refreshes them when due.
     fn count_refresh<R: Rng + ?Sized>(
         &mut self,
-        sys: &mut WeightedSystem<'_>,
+        sys: &mut Particles<'_>,
         rng: &mut R,
     ) -> Result<(), EngineError> {
         self.until_refresh = self.until_refresh.saturating_sub(1);

@@ -1,29 +1,35 @@
-//! The reduction of a weighted system (Rjasanow and Wagner 1996): groups of particles close in
+//! The reduction of weighted particles (Rjasanow and Wagner 1996): groups of particles close in
 //! velocity replaced by two each, keeping each group's weight, momentum and energy, so the
-//! particle number the collisions grow stays bounded.
+//! particle number the collisions grow stays bounded. Every particle must be at the time `t`
+//! a reduction is given (the loop kicks them there first): the replacements are last kicked
+//! then.
 
 use super::cells::reduce_cells;
-use super::particle::{WeightedParticle, WeightedSystem};
+use super::moments::momentum;
+use super::packed::{pack, unpack, weight};
 use crate::geometry::DimensionChoice;
 use crate::math::{Real, sqrt};
+use crate::particles::{Particle, Particles};
 use crate::rng::Rng;
 
-/// Reduces `sys` cell by cell: its particles split at the median of the widest velocity
-/// component, recursively, into cells of at most `group` (at least 3), each replaced by two
-/// ([`super::reduce_group`], super::cells). Returns the particles left, about `2 len / group`.
+/// Reduces the weighted particles `p` (all at time `t`) cell by cell: split at the median of
+/// the widest velocity component, recursively, into cells of at most `group` (at least 3),
+/// each replaced by two (super::group, super::cells). Returns the particles left, about
+/// `2 len / group`.
 pub fn reduce<R: Rng + ?Sized>(
-    sys: &mut WeightedSystem<'_>,
+    p: &mut Particles<'_>,
+    t: Real,
     group: usize,
     dim: DimensionChoice,
     rng: &mut R,
 ) -> usize {
     let group = group.max(3);
-    let len = sys.len();
     let mut out = 0;
-    let small = |c: &[WeightedParticle]| c.len() <= group;
-    let flow = (1.0 / sys.mass()) * sys.momentum();
-    reduce_cells(sys.buffer(), (0, len), &mut out, &small, (flow, dim, rng));
-    sys.truncate(out.max(2));
+    let small = |c: &[Particle]| c.len() <= group;
+    let flow = (1.0 / p.mass()) * momentum(p);
+    let (buf, len) = pack(p);
+    reduce_cells(buf, (0, len), &mut out, &small, (flow, dim, rng));
+    unpack(p, out.max(2), t);
     out.max(2)
 }
 
@@ -55,38 +61,39 @@ pub enum Reduction {
 }
 
 impl Reduction {
-    /// Reduces `sys` so that at least `room` more particles fit: by the rule, then (if the rule
-    /// left too many: particles too heavy to group) by cells of 3 until they fit.
+    /// Reduces `p` (all at time `t`) so that at least `room` more particles fit: by the rule,
+    /// then (if the rule left too many: particles too heavy to group) by cells of 3 until they
+    /// fit.
     pub fn apply<R: Rng + ?Sized>(
         &self,
-        sys: &mut WeightedSystem<'_>,
-        room: usize,
+        p: &mut Particles<'_>,
+        (t, room): (Real, usize),
         dim: DimensionChoice,
         rng: &mut R,
     ) {
         match *self {
             Reduction::Cells { group } => {
-                reduce(sys, group, dim, rng);
+                reduce(p, t, group, dim, rng);
             }
             Reduction::Allocated {
                 target,
                 shells,
                 exponent,
             } => {
-                reduce_allocated(sys, (target, shells, exponent), dim, rng);
+                reduce_allocated(p, t, (target, shells, exponent), dim, rng);
             }
         }
-        while sys.len() + room > sys.capacity() && sys.len() > 2 {
-            let before = sys.len();
-            reduce(sys, 3, dim, rng);
-            if sys.len() == before {
+        while p.len() + room > p.capacity() && p.len() > 2 {
+            let before = p.len();
+            reduce(p, t, 3, dim, rng);
+            if p.len() == before {
                 break;
             }
         }
     }
 }
 
-/// Reduces `sys` toward `target` particles: sorted by speed about the flow and cut into
+/// Reduces the weighted particles `p` (all at time `t`) toward `target` particles: sorted by speed about the flow and cut into
 /// `shells` shells of equal width in speed up to the fastest, shell `s` of weight `W_s` is
 /// given
 /// `K_s = target W_s^q / sum W^q` particles (`q` the `exponent`), so each particle it keeps
@@ -95,15 +102,15 @@ impl Reduction {
 /// ([`super::reduce_group`]; a cell of 1 or 2 is kept as it is). Keeps every group's weight, momentum and energy. Returns the
 /// particles left.
 pub fn reduce_allocated<R: Rng + ?Sized>(
-    sys: &mut WeightedSystem<'_>,
+    p: &mut Particles<'_>,
+    t: Real,
     (target, shells, q): (usize, usize, Real),
     dim: DimensionChoice,
     rng: &mut R,
 ) -> usize {
-    let len = sys.len();
     let shells = shells.clamp(1, MAX_SHELLS);
-    let flow = (1.0 / sys.mass()) * sys.momentum();
-    let buf = sys.buffer();
+    let flow = (1.0 / p.mass()) * momentum(p);
+    let (buf, len) = pack(p);
     buf[..len].sort_unstable_by(|a, b| {
         let (sa, sb) = ((a.velocity() - flow).norm2(), (b.velocity() - flow).norm2());
         sa.total_cmp(&sb)
@@ -118,7 +125,7 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
         *e = buf[..len].partition_point(|p| sqrt((p.velocity() - flow).norm2()) < c);
     }
     for s in 0..shells {
-        weights[s] = buf[edges[s]..edges[s + 1]].iter().map(|p| p.g).sum();
+        weights[s] = buf[edges[s]..edges[s + 1]].iter().map(weight).sum();
     }
     let norm: Real = (weights[..shells].iter())
         .filter(|&&w| w > 0.0)
@@ -133,9 +140,9 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
         }
         let keep = target as Real * libm::pow(ws, q) / norm;
         let each = ws / keep;
-        let small = |c: &[WeightedParticle]| c.iter().map(|p| p.g).sum::<Real>() <= 2.0 * each;
+        let small = |c: &[Particle]| c.iter().map(weight).sum::<Real>() <= 2.0 * each;
         reduce_cells(buf, (a, b), &mut out, &small, (flow, dim, &mut *rng));
     }
-    sys.truncate(out.max(2));
+    unpack(p, out.max(2), t);
     out.max(2)
 }

@@ -1,8 +1,8 @@
 //! The weight transfer of a collision (Rjasanow and Wagner 1996): how much weight moves from a
 //! colliding pair to its post-collision velocities, and the jump itself.
 
-use super::particle::{WeightedError, WeightedParticle, WeightedSystem};
 use crate::math::Real;
+use crate::particles::{Particle, Particles, ParticlesError};
 use crate::vec3::Vec3;
 
 /// The weight transfer function `gamma(g_i, g_j) = min(g_i, g_j) / (1 + kappa)`, `kappa >= 0`
@@ -77,45 +77,46 @@ impl Transfer {
     }
 }
 
-/// The collision of particles `i != j` of `sys` with post-collision velocities `(vi, vj)` under
-/// `transfer`: both lose `gamma`, and `gamma` appears at `vi` and at `vj` (in place of a
-/// partner whose weight is used up, else as a new particle). [`WeightedError::Full`] (and
-/// nothing changed) when the new particles do not fit.
+/// The collision at time `t` of the weighted particles `i != j` of `p` (both last kicked at
+/// `t`) with post-collision velocities `(vi, vj)` under `transfer`: both lose `gamma`, and
+/// `gamma` appears at `vi` and at `vj` (in place of a partner whose weight is used up, else as
+/// a new particle last kicked at `t`). [`ParticlesError::Full`] (and nothing changed) when the
+/// new particles do not fit.
 pub fn collide(
-    sys: &mut WeightedSystem<'_>,
+    p: &mut Particles<'_>,
     pair: (usize, usize),
-    velocities: (Vec3, Vec3),
+    (velocities, t): ((Vec3, Vec3), Real),
     transfer: &Transfer,
-) -> Result<(), WeightedError> {
-    collide_with(sys, pair, velocities, transfer.kappa)
+) -> Result<(), ParticlesError> {
+    collide_with(p, pair, (velocities, t), transfer.kappa)
 }
 
 /// As [`collide`] with the transfer's `kappa` of this outcome (a tail's, [`Transfer::with_tail`]).
 pub fn collide_with(
-    sys: &mut WeightedSystem<'_>,
+    p: &mut Particles<'_>,
     (i, j): (usize, usize),
-    (vi, vj): (Vec3, Vec3),
+    ((vi, vj), t): ((Vec3, Vec3), Real),
     kappa: Real,
-) -> Result<(), WeightedError> {
-    let (gi, gj) = (sys.particles()[i].g, sys.particles()[j].g);
+) -> Result<(), ParticlesError> {
+    let (gi, gj) = (p.weight(i), p.weight(j));
     let gamma = Transfer { kappa, tail: None }.gamma(gi, gj);
     // `g - gamma` is exactly 0 when gamma is that weight (kappa = 0, the lighter partner).
     let (ri, rj) = (gi - gamma, gj - gamma);
     let needed = usize::from(ri > 0.0) + usize::from(rj > 0.0);
-    if sys.len() + needed > sys.capacity() {
-        return Err(WeightedError::Full);
+    if p.len() + needed > p.capacity() || !p.is_weighted() {
+        return Err(ParticlesError::Full);
     }
-    let p = sys.particles_mut();
     for (k, rest, v) in [(i, ri, vi), (j, rj, vj)] {
         if rest > 0.0 {
-            p[k].g = rest;
+            p.set_weight(k, rest);
         } else {
-            p[k] = WeightedParticle::new(v, gamma);
+            *p.get_mut(k) = Particle::new(v, t);
+            p.set_weight(k, gamma);
         }
     }
     for (rest, v) in [(ri, vi), (rj, vj)] {
         if rest > 0.0 {
-            sys.push(WeightedParticle::new(v, gamma))?;
+            p.push(v, gamma, t)?;
         }
     }
     Ok(())
@@ -125,9 +126,15 @@ pub fn collide_with(
 mod tests {
     use super::*;
     use crate::collision::inelastic;
+    use crate::weighted::moments::{energy, momentum};
 
-    fn sums(s: &WeightedSystem<'_>) -> (Real, Vec3, Real) {
-        (s.mass(), s.momentum(), s.energy())
+    fn sums(s: &Particles<'_>) -> (Real, Vec3, Real) {
+        (s.mass(), momentum(s), energy(s))
+    }
+
+    /// Records of velocities `vs` in a buffer of 6, with room for 4 more.
+    fn records(vs: &[Vec3]) -> [Particle; 6] {
+        core::array::from_fn(|k| Particle::new(vs.get(k).copied().unwrap_or(Vec3::ZERO), 0.0))
     }
 
     /// With `kappa = 0` and equal weights a collision is GRW's: the pair replaced, no particle
@@ -140,48 +147,60 @@ mod tests {
         let e = Vec3::new(0.0, 0.6, 0.8);
         let (a, b) = inelastic(v, w, e, 0.7);
         let pair_loss = 0.5 * (a.norm2() + b.norm2() - v.norm2() - w.norm2());
-        let mut buf = [WeightedParticle::default(); 6];
-        buf[0] = WeightedParticle::new(v, 1.0);
-        buf[1] = WeightedParticle::new(w, 1.0);
-        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
-        collide(&mut sys, (0, 1), (a, b), &Transfer::new(0.0).unwrap()).unwrap();
+        let mut buf = records(&[v, w]);
+        let mut g = [1.0; 6];
+        let mut sys = Particles::weighted(&mut buf, &mut g, 2).unwrap();
+        let t0 = Transfer::new(0.0).unwrap();
+        collide(&mut sys, (0, 1), ((a, b), 0.5), &t0).unwrap();
         assert_eq!(sys.len(), 2);
-        assert_eq!(sys.particles()[0], WeightedParticle::new(a, 1.0));
+        assert_eq!(
+            (sys.as_slice()[0], sys.weight(0)),
+            (Particle::new(a, 0.5), 1.0)
+        );
 
         let t = Transfer::new(1.0).unwrap();
         let (gi, gj) = (1.0, 0.25);
-        let mut buf = [WeightedParticle::default(); 6];
-        buf[0] = WeightedParticle::new(v, gi);
-        buf[1] = WeightedParticle::new(w, gj);
-        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
+        let mut buf = records(&[v, w]);
+        let mut g = [gi, gj, 0.0, 0.0, 0.0, 0.0];
+        let mut sys = Particles::weighted(&mut buf, &mut g, 2).unwrap();
         let (m0, p0, e0) = sums(&sys);
-        collide(&mut sys, (0, 1), (a, b), &t).unwrap();
+        collide(&mut sys, (0, 1), ((a, b), 0.5), &t).unwrap();
         let gamma = t.gamma(gi, gj);
         assert_eq!(gamma, 0.125);
         assert_eq!(t.rate_factor(gi, gj) * gamma, gi * gj);
         assert_eq!(sys.len(), 4);
+        assert_eq!(
+            sys.kick_time(3),
+            0.5,
+            "a new particle starts at the collision"
+        );
         let (m1, p1, e1) = sums(&sys);
         assert!((m1 - m0).abs() < 1e-15);
         assert!((p1 - p0).norm() < 1e-15);
         assert!((e1 - e0 - gamma * pair_loss).abs() < 1e-15);
     }
 
-    /// A collision that does not fit changes nothing; a weight used up is replaced in place.
+    /// A collision that does not fit changes nothing; particles without weights refuse.
     #[test]
     fn a_full_buffer_refuses_and_changes_nothing() {
         let v = Vec3::new(1.0, 0.0, 0.0);
-        let mut buf = [
-            WeightedParticle::new(v, 1.0),
-            WeightedParticle::new(-v, 0.5),
-        ];
-        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
+        let mut buf = [Particle::new(v, 0.0), Particle::new(-v, 0.0)];
+        let mut g = [1.0, 0.5];
+        let mut sys = Particles::weighted(&mut buf, &mut g, 2).unwrap();
         let t = Transfer::new(0.0).unwrap();
-        let before = [sys.particles()[0], sys.particles()[1]];
+        let before = [sys.as_slice()[0], sys.as_slice()[1]];
         assert_eq!(
-            collide(&mut sys, (0, 1), (v, v), &t),
-            Err(WeightedError::Full)
+            collide(&mut sys, (0, 1), ((v, v), 0.0), &t),
+            Err(ParticlesError::Full)
         );
-        assert_eq!(sys.particles(), &before);
+        assert_eq!(sys.as_slice(), &before);
+        assert_eq!(sys.weights(), &[1.0, 0.5]);
+        let mut plain = [Particle::new(v, 0.0), Particle::new(-v, 0.0)];
+        let mut p = Particles::new(&mut plain).unwrap();
+        assert_eq!(
+            collide(&mut p, (0, 1), ((v, v), 0.0), &t),
+            Err(ParticlesError::Full)
+        );
         assert!(Transfer::new(-1.0).is_none() && Transfer::new(Real::NAN).is_none());
     }
 
@@ -204,15 +223,11 @@ mod tests {
             assert!(Transfer::with_tail(k, kt, c).is_none(), "{k} {kt} {c}");
         }
         let v = Vec3::new(1.0, 0.0, 0.0);
-        let mut buf = [
-            WeightedParticle::new(v, 1.0),
-            WeightedParticle::new(-v, 1.0),
-            WeightedParticle::default(),
-            WeightedParticle::default(),
-        ];
-        let mut sys = WeightedSystem::new(&mut buf, 2).unwrap();
-        collide_with(&mut sys, (0, 1), (-v, v), 7.0).unwrap();
+        let mut buf = records(&[v, -v]);
+        let mut g = [1.0; 6];
+        let mut sys = Particles::weighted(&mut buf, &mut g, 2).unwrap();
+        collide_with(&mut sys, (0, 1), ((-v, v), 0.0), 7.0).unwrap();
         assert_eq!(sys.len(), 4);
-        assert_eq!(sys.particles()[2], WeightedParticle::new(-v, 0.125));
+        assert_eq!((sys.velocity(2), sys.weight(2)), (-v, 0.125));
     }
 }
