@@ -198,3 +198,47 @@ fn the_weighted_maxwell_gas_heats_as_grw_13() {
     heated::<Spheres, _>(WhiteNoise::new(0.5).unwrap(), 0.5, 41);
     heated::<Disks, _>(PlanarWhiteNoise::new(0.5).unwrap(), 0.5, 42);
 }
+
+/// `zeta*` of the weighted Maxwell gas from random pairs, each counted by `g_i g_j`
+/// (`EventLoop::cooling`): for the Maxwell kernel every state's exact value is
+/// `(1 - alpha^2)/4 W^2 / (W^2 - sum g^2)`, `W = sum g` (the pair sums of the module docs of
+/// `weighted::nosplit`: `sum_{i<j} g_i g_j |u|^2 = W S2 - |P|^2` against the energy about the
+/// flow and `sum_{i<j} g_i g_j = (W^2 - sum g^2)/2`; `n/(n - 1)` for equal weights). Eight
+/// particles, four of weight 1 and four of 1e-3 (exact factor 1.333; equal weights' 8/7 =
+/// 1.143 is refused), 60 independent estimates of 4000 pairs, at 99.9%.
+#[test]
+fn the_weighted_cooling_rate_is_the_maxwell_gas_exact_one() {
+    use gdsmc_core::engine::EventLoop;
+    let kernel = Maxwell::new(1.0, 1.0 / (4.0 * std::f64::consts::PI)).unwrap();
+    let law = Constant::new(ALPHA).unwrap();
+    let mut rng = Streams::new(61).next().unwrap();
+    let (mut buf, mut g) = start::<Spheres>(8, 16, &mut rng);
+    for w in &mut g[4..8] {
+        *w = 1e-3;
+    }
+    let mut sys = Particles::weighted(&mut buf, &mut g, 8).unwrap();
+    let e = WeightedNoSplitting::<_, _, _, Spheres>::start(
+        (kernel, law, NoDrive),
+        Transfer::new(1.0).unwrap(),
+        Reduction::Cells { group: 4 },
+        &mut sys,
+        0.0,
+    )
+    .unwrap();
+    let w = sys.mass();
+    let g2: f64 = sys.weights().iter().map(|g| g * g).sum();
+    let base = (1.0 - ALPHA * ALPHA) / 4.0;
+    let (exact, equal) = (base * w * w / (w * w - g2), base * 8.0 / 7.0);
+    let mut diag = Streams::new(62).next().unwrap();
+    let z: Vec<f64> = (0..60)
+        .map(|_| EventLoop::cooling(&e, &sys, 4000, &mut diag).zeta_star)
+        .collect();
+    let s = Sample::of(&z);
+    assert!(
+        s.admits(exact, 1),
+        "{} +- {}, exact {exact}",
+        s.mean,
+        s.joint_ci(1)
+    );
+    assert!(!s.admits(equal, 1), "the equal-weight {equal} not refused");
+}

@@ -54,7 +54,9 @@ fn kinetic(m: Real, v: Vec3) -> Real {
 /// is particle `i`'s `(m, m kappa)` (`kappa` 0 for smooth particles); `collide((i, j), s,
 /// rng)` collides the scratch system `s` (particle 0 holding `i`, 1 holding `j`, spins
 /// beside them when `p` has spins) as the loop collides `i` with `j`, and returns the pair's
-/// `int B de` at its physical relative velocity.
+/// `int B de` at its physical relative velocity. Weighted particles ([`Particles::weighted`])
+/// count each particle by its weight and each pair by `g_i g_j` (the pairs it stands for), the
+/// rates per unit weight.
 pub fn estimate<R: Rng + ?Sized>(
     p: &Particles<'_>,
     pairs: u64,
@@ -67,6 +69,7 @@ pub fn estimate<R: Rng + ?Sized>(
     let (mut mass, mut momentum) = (0.0, Vec3::ZERO);
     for i in 0..n {
         let m = inertia(i).0;
+        let m = m * p.weight(i);
         mass += m;
         momentum += m * p.velocity(i);
     }
@@ -74,9 +77,10 @@ pub fn estimate<R: Rng + ?Sized>(
     let mut energy = 0.0;
     for i in 0..n {
         let (m, mk) = inertia(i);
-        energy += kinetic(m, p.velocity(i) - bulk);
+        let w = p.weight(i);
+        energy += w * kinetic(m, p.velocity(i) - bulk);
         if spins {
-            energy += kinetic(mk, p.spin(i));
+            energy += w * kinetic(mk, p.spin(i));
         }
     }
     let (mut rate, mut loss) = (0.0, 0.0);
@@ -106,12 +110,24 @@ pub fn estimate<R: Rng + ?Sized>(
             (Vec3::ZERO, Vec3::ZERO)
         };
         let after = kinetic(mi, a) + kinetic(mj, b) + kinetic(ki, wa) + kinetic(kj, wb);
+        // Weighted particles: the pair stands for g_i g_j physical pairs (1 otherwise).
+        let r = r * (p.weight(i) * p.weight(j));
         rate += r;
         loss += r * (after - before);
     }
-    let frequency = (n - 1) as Real / n as Real * rate / pairs as Real;
+    let (frequency, per) = if p.is_weighted() {
+        // nu = (2 / n0^2) sum_{i<j} g_i g_j r_ij over the N particles in use, n0 = sum g.
+        let w0 = p.mass();
+        let nn = n as Real;
+        (nn * (nn - 1.0) / (w0 * w0) * rate / pairs as Real, w0)
+    } else {
+        (
+            (n - 1) as Real / n as Real * rate / pairs as Real,
+            n as Real,
+        )
+    };
     // e = energy / n, in stored units as the changes are.
-    let zeta_star = -loss / (2.0 * (energy / n as Real) * rate);
+    let zeta_star = -loss / (2.0 * (energy / per) * rate);
     Cooling {
         frequency,
         zeta_star,

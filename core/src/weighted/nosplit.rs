@@ -39,7 +39,7 @@ use super::reduce::Reduction;
 use super::transfer::{Transfer, collide_with};
 use crate::collision::inelastic;
 use crate::drive::Drive;
-use crate::engine::collision_map::clamped_coefficient;
+use crate::engine::collision_map::{clamped_coefficient, one_species_cooling};
 use crate::engine::{Counts, EngineError};
 use crate::geometry::Geometry;
 use crate::kernel::Kernel;
@@ -72,6 +72,8 @@ pub struct WeightedNoSplitting<K, A, D, G> {
     t: Real,
     /// Candidates until the bounds are made exact again.
     until_refresh: u64,
+    /// The particles in use when the loop last stopped (for [`Self::work_rate`]).
+    len: usize,
     counts: Counts,
     reductions: u64,
     dim: core::marker::PhantomData<G>,
@@ -115,6 +117,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             gmax: 0.0,
             t: t0,
             until_refresh: 0,
+            len: sys.len(),
             counts: Counts::default(),
             reductions: 0,
             dim: core::marker::PhantomData,
@@ -188,6 +191,49 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         self.reductions
     }
 
+    /// Re-synchronizes after the caller changed velocities (not weights) between calls: every
+    /// last-kick time becomes the current time and the bounds are made exact. Returns the
+    /// observables.
+    pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        p.reset_kick_times(self.t);
+        self.refresh(p)?;
+        let o = observables(p, G::CHOICE.d());
+        self.drive.observe(&o);
+        match o.non_finite() {
+            Some(what) => Err(EngineError::NonFinite(what)),
+            None => Ok(o),
+        }
+    }
+
+    /// Candidates per unit time now: the majorant's rate at the particles in use when the loop
+    /// last stopped (`_n`, the particles a run started with, does not set it: collisions and
+    /// reductions change the number).
+    pub fn work_rate(&self, _n: usize) -> Real {
+        let n = self.len as Real;
+        0.5 * n
+            * (n - 1.0)
+            * (1.0 + self.transfer.kappa_max())
+            * self.gmax
+            * self.kernel.b_max(self.umax)
+            / self.n0
+    }
+
+    /// The collisional cooling of `p` at the current time from `pairs` random pairs, each
+    /// counted by the product of its weights ([`crate::observe::cooling::estimate`]).
+    pub fn cooling<R: Rng + ?Sized>(
+        &self,
+        p: &Particles<'_>,
+        pairs: u64,
+        rng: &mut R,
+    ) -> crate::observe::Cooling {
+        one_species_cooling::<K, G, A, R>((&self.kernel, &self.law, 1.0), p, pairs, rng)
+    }
+
+    /// Velocities are stored as they are (a cooling gas is not rescaled yet).
+    pub fn velocity_map(&self) -> crate::engine::Frame {
+        crate::engine::Frame::IDENTITY
+    }
+
     /// Runs to `t_end` (not before the current time) and returns the weighted moments there
     /// (every particle kicked to `t_end`; [`super::moments::observables`]).
     pub fn advance_to<R: Rng + ?Sized>(
@@ -223,6 +269,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             self.event(sys, rng)?;
         }
         self.t = t_end;
+        self.len = sys.len();
         self.counts.observations += 1;
         self.synchronize(sys, rng);
         let o = observables(sys, G::CHOICE.d());
@@ -333,3 +380,9 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         }
     }
 }
+
+crate::engine::impl_event_loop!(
+    WeightedNoSplitting,
+    [K: Kernel, A: Restitution, D: Drive, G: Geometry],
+    WeightedNoSplitting<K, A, D, G>
+);
