@@ -74,6 +74,9 @@
 // MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS kernels), step `step_factor` mean free paths over the thermal speed.
 #define GDSMC_SCHEME_TIME_STEPPED 3
 
+// The exact no-splitting scheme on weighted particles (Rjasanow and Wagner's SWPM): the tails resolved by many light particles, reductions keeping the number bounded.
+#define GDSMC_SCHEME_WEIGHTED 4
+
 // Most parameters a kernel has beyond gamma and C: the length of
 // `gdsmc_config.kernel_params`.
 #define GDSMC_MAX_KERNEL_PARAMS 4

@@ -1,10 +1,22 @@
 //! Radial-shell histograms of the speed, GRW (31)-(33): shells `r_k = k R / K`, `k = 1..K`;
 //! `f_1` counts `|v| < r_1`, `f_k` counts `r_{k-1} <= |v| < r_k`, `f_{K+1}` counts `|v| >= R`,
-//! each with the particle weight `g = 1/n`.
+//! each with the particle weight `g = 1/n` (weighted particles: `g_i / sum g`).
 
 use crate::engine::Frame;
 use crate::math::{Real, sqrt};
-use crate::particles::Particles;
+use crate::particles::{Particle, Particles};
+
+/// Each particle in use with its share of the histogram: `1/n`, or for weighted particles its
+/// weight over the total.
+fn shares<'b>(p: &'b Particles<'_>) -> impl Iterator<Item = (&'b Particle, Real)> {
+    let (weighted, g) = if p.is_weighted() {
+        (true, 1.0 / p.mass())
+    } else {
+        (false, 1.0 / p.len() as Real)
+    };
+    (p.as_slice().iter().enumerate())
+        .map(move |(i, q)| (q, if weighted { p.weight(i) * g } else { g }))
+}
 
 /// Adds the shell weights of `p` to `out` (`K + 1` entries, the last one for `|v| >= R`),
 /// for shells of width `radius / (out.len() - 1)`. Returns `false` (adding nothing) when `out`
@@ -26,10 +38,9 @@ pub fn radial_shells_mapped(
     if k == 0 || !(radius.is_finite() && radius > 0.0) {
         return false;
     }
-    let g = 1.0 / p.len() as Real;
     let per = k as Real / radius;
     let identity = frame.is_identity();
-    for q in p.as_slice() {
+    for (q, g) in shares(p) {
         let v = if identity {
             q.velocity()
         } else {
@@ -63,9 +74,8 @@ pub fn component_bins(
     if k == 0 || axis > 2 || !(radius.is_finite() && radius > 0.0) {
         return false;
     }
-    let g = 1.0 / p.len() as Real;
     let per = k as Real / (2.0 * radius);
-    for q in p.as_slice() {
+    for (q, g) in shares(p) {
         let v = frame.physical(q.velocity()).to_array()[axis];
         let i = if v < -radius {
             k

@@ -206,6 +206,12 @@ impl<'a> Particles<'a> {
         &self.weights[..len]
     }
 
+    /// Every weight in use set to 1 (the start of a weighted run; nothing unless weighted).
+    pub fn reset_weights(&mut self) {
+        let len = self.len.min(self.weights.len());
+        self.weights[..len].fill(1.0);
+    }
+
     /// Sets the weight of particle `i` (weighted particles only).
     #[inline(always)]
     pub fn set_weight(&mut self, i: usize, g: Real) {

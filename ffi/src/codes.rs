@@ -48,6 +48,9 @@ pub const GDSMC_SCHEME_STRANG: u32 = 2;
 /// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS kernels), step `step_factor` mean free paths over the thermal speed.
 pub const GDSMC_SCHEME_TIME_STEPPED: u32 = 3;
 
+/// The exact no-splitting scheme on weighted particles (Rjasanow and Wagner's SWPM): the tails resolved by many light particles, reductions keeping the number bounded.
+pub const GDSMC_SCHEME_WEIGHTED: u32 = 4;
+
 /// Most parameters a kernel has beyond gamma and C: the length of
 /// `gdsmc_config.kernel_params`.
 pub const GDSMC_MAX_KERNEL_PARAMS: usize = 4;

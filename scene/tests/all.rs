@@ -8,6 +8,7 @@ mod mixture_scenes;
 mod rough_scenes;
 mod scene_errors;
 mod sweep_table;
+mod weighted_scenes;
 
 /// The error of parsing the scene `text` as `bad.toml`.
 fn err(text: &str) -> String {

@@ -109,6 +109,10 @@ impl Job {
         let work = run::estimate::check(sc, self.threads, self.allow_long)?;
         let states =
             self.initial_state.is_some() || self.save_state.is_some() || !sc.snapshots().is_empty();
+        if states && sc.model().weighted() {
+            // A state file holds n equal particles (docs/state.md), not weights.
+            return Err(state_refused("the weighted scheme"));
+        }
         #[cfg(feature = "mpi")]
         if let Some(w) = run::mpi::World::init() {
             if states {

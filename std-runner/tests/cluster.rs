@@ -135,12 +135,12 @@ fn run(v: &[String]) -> Output {
     ))
 }
 
-/// GRW Example 3 (observables) and MS's constant-force thermostat (steady averages and the
-/// reduced histogram): one process, and 4 shards (of uneven sizes: 23 = 5 + 6 + 6 + 6)
+/// GRW Example 3 (observables), MS's constant-force thermostat (steady averages and the
+/// reduced histogram) and GRW Example 3 on weighted particles: one process, and 4 shards (of uneven sizes: 23 = 5 + 6 + 6 + 6)
 /// merged, give the same CSV files byte for byte and the same summary statistics.
 #[test]
 fn four_shards_merged_equal_one_run() {
-    for name in ["grw-example3", "ms-constant-force"] {
+    for name in ["grw-example3", "ms-constant-force", "grw-example3-weighted"] {
         let r = root(&format!("shards-{name}"));
         let base = small(name);
         let one = r.join("one");

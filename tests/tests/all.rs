@@ -28,4 +28,5 @@ mod tail_warning;
 mod thermostats_ms;
 mod time_stepped;
 mod timings;
+mod weighted_scheme;
 mod work_limits;

@@ -2,7 +2,7 @@
 //! of particle model (smooth, rough), species (one, two), dimension (3, 2), kernel (every kernel
 //! the core declares), restitution law (constant, impact speed), drive (none, white noise,
 //! every drive declared by its type, host medium) and scheme (no-splitting, Euler, Strang,
-//! time-stepped) is described as a core `Physics` and validated. A combination the core takes
+//! time-stepped, weighted) is described as a core `Physics` and validated. A combination the core takes
 //! is launched and advanced here (n = 16, to t = 0.5) and must give finite observables: that is
 //! the test behind each "runs". A refused one shows the core's own refusal (the parameter and
 //! its rule, one place for each rule). The checked-in table must equal the generated one;
@@ -77,12 +77,23 @@ fn drives() -> Vec<(&'static str, DriveChoice)> {
     drives
 }
 
-const SCHEMES: [(&str, SchemeChoice); 4] = [
-    ("no-splitting", SchemeChoice::NoSplitting),
-    ("Euler", SchemeChoice::Euler(0.125)),
-    ("Strang", SchemeChoice::Strang(0.125)),
-    ("time-stepped", SchemeChoice::TimeStepped(0.01)),
-];
+/// The schemes of the matrix; the weighted scheme with its parameters' example values (from
+/// its declaration in the core).
+fn schemes() -> [(&'static str, SchemeChoice); 5] {
+    let weighted = gdsmc_core::declared::examples::<{ gdsmc_core::physics::WEIGHTED_PARAMS }>(
+        SchemeKind::Weighted.params(),
+    );
+    [
+        ("no-splitting", SchemeChoice::NoSplitting),
+        ("Euler", SchemeChoice::Euler(0.125)),
+        ("Strang", SchemeChoice::Strang(0.125)),
+        ("time-stepped", SchemeChoice::TimeStepped(0.01)),
+        (
+            "weighted",
+            SchemeChoice::new(SchemeKind::Weighted, &weighted).expect("its examples make it"),
+        ),
+    ]
+}
 
 /// The matrix holds every kind the core declares, in the core's order: a kernel, law, drive or
 /// scheme added to the core and not here fails this test (and is then missing from the table
@@ -100,7 +111,7 @@ fn the_matrix_holds_every_kind() {
         k.sort_by_key(|k| matches!(k, DriveKind::HostMedium));
         k
     });
-    assert_eq!(SCHEMES.map(|s| s.1.kind()), SchemeKind::ALL);
+    assert_eq!(schemes().map(|s| s.1.kind()), SchemeKind::ALL);
 }
 
 /// One block of the table: particle model, species, dimension.
@@ -162,9 +173,12 @@ impl Block {
 /// run panics: the core took it, so it must run.
 fn outcome(ph: &Physics, what: &str) -> Result<(), String> {
     let model = ph.validate().map_err(|e| e.to_string())?;
-    let mut buf = vec![Particle::default(); N];
+    let mut buf = vec![Particle::default(); model.capacity()];
     let mut spins = vec![Spin::default(); N];
-    let mut p = if model.rotates() {
+    let mut weights = vec![1.0; model.capacity()];
+    let mut p = if model.weighted() {
+        Particles::weighted(&mut buf, &mut weights, N).expect("n weights of 1")
+    } else if model.rotates() {
         Particles::with_spins(&mut buf, &mut spins).expect("equal lengths")
     } else {
         Particles::new(&mut buf).expect("n >= 2")
@@ -231,13 +245,13 @@ fn generate() -> String {
                     dim,
                 };
                 writeln!(body, "\n## {}\n", b.title()).unwrap();
-                let head: Vec<&str> = SCHEMES.iter().map(|s| s.0).collect();
+                let head: Vec<&str> = schemes().iter().map(|s| s.0).collect();
                 writeln!(body, "| drive | law | {} |", head.join(" | ")).unwrap();
-                writeln!(body, "|---|---|{}", "---|".repeat(SCHEMES.len())).unwrap();
+                writeln!(body, "|---|---|{}", "---|".repeat(head.len())).unwrap();
                 for (dname, drive) in drives() {
                     for (lname, law) in LAWS {
                         let mut cells = Vec::new();
-                        for (sname, scheme) in SCHEMES {
+                        for (sname, scheme) in schemes() {
                             // Per kernel: "runs" or the refusal's footnote number.
                             let mut by_outcome: Vec<(String, Vec<&str>)> = Vec::new();
                             for (kname, kernel) in kernels() {
@@ -394,11 +408,11 @@ fn every_reference_of_every_combination_is_a_number() {
         })
     });
     for b in blocks {
-        let (drives, kernels) = (drives(), kernels());
-        let kernels = &kernels;
+        let (drives, kernels, schemes) = (drives(), kernels(), schemes());
+        let (kernels, schemes) = (&kernels, &schemes);
         let cells = drives.iter().flat_map(|d| {
             LAWS.iter().flat_map(move |l| {
-                SCHEMES
+                schemes
                     .iter()
                     .flat_map(move |s| kernels.iter().map(move |k| (d, l, s, *k)))
             })

@@ -90,6 +90,18 @@ impl Frame {
         d: usize,
         spins: bool,
     ) -> bool {
+        self.rescale_with(p, obs, (below, spins), |p| Observables::of_dim(p, d))
+    }
+
+    /// As [`Frame::rescale`], the stored system's observables from `observe` (a weighted
+    /// system's are weighted means, [`crate::weighted::moments::observables`]).
+    pub fn rescale_with(
+        &mut self,
+        p: &mut Particles<'_>,
+        obs: &mut Observables,
+        (below, spins): (Real, bool),
+        observe: impl FnOnce(&Particles<'_>) -> Observables,
+    ) -> bool {
         if !rescale_due(obs.t_bulk, obs.bulk, below) {
             return false;
         }
@@ -105,7 +117,7 @@ impl Frame {
         }
         self.offset += self.scale * obs.bulk;
         self.scale /= s;
-        *obs = Observables::of_dim(p, d);
+        *obs = observe(p);
         true
     }
 
@@ -114,14 +126,32 @@ impl Frame {
     /// summed directly from the physical velocities of `q` (their peculiar parts are below the
     /// bulk's last digits there, so this is as accurate as the sum can be).
     #[must_use]
-    pub fn with_raw_v6(&self, q: &[Particle], mut obs: Observables) -> Observables {
+    pub fn with_raw_v6(&self, q: &[Particle], obs: Observables) -> Observables {
+        self.with_raw_v6_weighted(q, &[], obs)
+    }
+
+    /// As [`Frame::with_raw_v6`], each record `q[i]` counted by `weights[i]` (all 1 when
+    /// `weights` is empty): the weighted mean.
+    #[must_use]
+    pub fn with_raw_v6_weighted(
+        &self,
+        q: &[Particle],
+        weights: &[Real],
+        mut obs: Observables,
+    ) -> Observables {
         if obs.v6.is_nan() && self.offset != Vec3::ZERO {
-            let mut s = 0.0;
-            for x in q {
+            let (mut s, mut w) = (0.0, 0.0);
+            for (i, x) in q.iter().enumerate() {
+                let g = weights.get(i).copied().unwrap_or(1.0);
                 let v2 = self.physical(x.velocity()).norm2();
-                s += v2 * v2 * v2;
+                s += g * (v2 * v2 * v2);
+                w += g;
             }
-            obs.v6 = s / q.len() as Real;
+            obs.v6 = if weights.is_empty() {
+                s / q.len() as Real
+            } else {
+                s / w
+            };
         }
         obs
     }

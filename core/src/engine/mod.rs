@@ -43,6 +43,11 @@ pub trait EventLoop {
     /// work of an advance to `t` is about `work_rate(n) * (t - time())` ([`work_to`]); a
     /// heated gas's majorant grows during it, so this is an estimate, not a bound.
     fn work_rate(&self, n: usize) -> Real;
+    /// Collisions per particle so far, `2 collisions / n` for a run of `n` particles; weighted
+    /// particles count each collision by the weight it moved (over the total weight).
+    fn collisions_per_particle(&self, n: usize) -> Real {
+        2.0 * self.counts().collisions as Real / n as Real
+    }
     /// The map `v_phys = offset + scale v` from stored to physical velocities.
     fn velocity_map(&self) -> Frame {
         Frame::IDENTITY

@@ -31,6 +31,7 @@ use crate::moments::Observables;
 use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
 use crate::rough::{RoughMap, RoughNoise};
+use crate::weighted::nosplit::WeightedNoSplitting;
 use core::marker::PhantomData;
 
 /// `$e` when the build holds the engine (`$on`, a cfg predicate on gdsmc-core's features),
@@ -67,7 +68,23 @@ impl Model {
                     wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
                 })
             }
-            _ => wrap(by_split(self.scheme, k, d, a, p, t0), ByScheme::Split),
+            SchemeModel::Weighted(w) => built!(feature = "weighted", "weighted", {
+                let start = || {
+                    let mut e = WeightedNoSplitting::<K, A, D, G>::start(
+                        (k, a, d),
+                        w.transfer,
+                        w.reduction(self.n()),
+                        p,
+                        t0,
+                    )?;
+                    let obs = e.resync(p)?;
+                    Ok((e, obs))
+                };
+                wrap(Exact::start(start), ByScheme::Weighted)
+            }),
+            SchemeModel::NoSplitting | SchemeModel::Splitting(..) | SchemeModel::TimeStepped(_) => {
+                wrap(by_split(self.scheme, k, d, a, p, t0), ByScheme::Split)
+            }
         }
     }
 }
@@ -124,6 +141,7 @@ fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
             Exact::start(|| started(MixtureNoSplitting::start_in(sp, physics, drives, p, t0))),
             ByMixtureScheme::NoSplitting,
         ),
+        SchemeModel::Weighted(_) => Err(WEIGHTED_SMOOTH),
     }
 }
 
@@ -144,6 +162,11 @@ fn species_hosts<B: BackgroundKernel, G: Geometry>(
     }
     Ok(hosts)
 }
+
+/// What the weighted scheme's validation refused before a rough gas or a mixture could reach
+/// its scheme level.
+const WEIGHTED_SMOOTH: EngineError =
+    EngineError::Invariant("validated: the weighted scheme runs smooth particles of one species");
 
 /// An engine started, with its observables at the start.
 pub(super) type Begun<E> = Result<(E, Observables), EngineError>;
@@ -177,6 +200,7 @@ fn by_split<
         SchemeModel::TimeStepped(f) => built!(feature = "time-stepped", "time-stepped", {
             wrap(TimeStepped::start(k, d, a, f, p, t0), BySplit::TimeStepped)
         }),
+        SchemeModel::Weighted(_) => Err(WEIGHTED_SMOOTH),
     }
 }
 

@@ -64,6 +64,9 @@ impl<T> EventLoop for NotBuilt<T> {
     fn velocity_map(&self) -> Frame {
         match self.0 {}
     }
+    fn collisions_per_particle(&self, _n: usize) -> Real {
+        match self.0 {}
+    }
     fn species(&self, _p: &Particles<'_>) -> Option<MixtureObservables> {
         match self.0 {}
     }
@@ -151,6 +154,13 @@ impl<T: EventLoop, D: Drive> EventLoop for Exact<T, D> {
     fn velocity_map(&self) -> Frame {
         if D::EXACT {
             self.0.velocity_map()
+        } else {
+            never_made()
+        }
+    }
+    fn collisions_per_particle(&self, n: usize) -> Real {
+        if D::EXACT {
+            self.0.collisions_per_particle(n)
         } else {
             never_made()
         }

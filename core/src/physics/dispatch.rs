@@ -69,6 +69,8 @@ impl Model {
             return Ok(());
         }
         let mut bad = false;
+        // Weighted particles start with weight 1 each (the run's `n0` is `n`).
+        p.reset_weights();
         p.fill_with(t0, || {
             // The weights were validated: a positive total, so sampling cannot fail.
             self.initial().sample(rng).unwrap_or_else(|_| {

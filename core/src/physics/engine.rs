@@ -31,6 +31,7 @@ use crate::particles::Particles;
 use crate::restitution::{Constant, ImpactSpeed, Restitution};
 use crate::rng::{Rng, Xoshiro256PlusPlus};
 use crate::rough::{RoughMap, RoughNoise, RoughObservables, RoughPairLaw};
+use crate::weighted::nosplit::WeightedNoSplitting;
 
 /// The engine of a validated physics: by particle model, species and dimension, then one
 /// kernel level ([`ByKernel`]) over the family's nest of drives, laws and schemes.
@@ -93,6 +94,8 @@ const SPLITTING: bool = cfg!(feature = "splitting");
 const TIME_STEPPED: bool = cfg!(feature = "time-stepped");
 /// Whether this build holds the sum form of hard spheres (their kernel's feature).
 const HARD_SPHERES: bool = cfg!(feature = "hard-spheres");
+/// Whether the build holds the weighted scheme's loop.
+const WEIGHTED: bool = cfg!(feature = "weighted");
 
 /// A family of loops (particle model, species, dimension): what the levels below the kernel
 /// hold for it. Every level ([`ByKernel`], [`ByDrive`], [`ByLaw`]) is written once for all
@@ -285,6 +288,9 @@ pub enum ByScheme<K: Kernel, D: Drive, A: Restitution, G: Geometry = Spheres> {
     /// The exact scheme of hard spheres with no drive on the sum-form majorant (built only under
     /// [`ByKernel::HardSpheres`] with [`ByDrive::None`], for spheres; feature `hard-spheres`).
     SumForm(Built<SumNoSplitting<A>, HARD_SPHERES>),
+    /// The exact scheme on weighted particles (Rjasanow and Wagner's SWPM; feature
+    /// `weighted`).
+    Weighted(Built<Exact<WeightedNoSplitting<K, A, D, G>, D>, WEIGHTED>),
 }
 
 /// Implements [`EventLoop`] for one level by forwarding every method to the variant.
@@ -313,6 +319,9 @@ macro_rules! forward {
             }
             fn velocity_map(&self) -> Frame {
                 match self { $(Self::$v(e) => EventLoop::velocity_map(e)),+ }
+            }
+            fn collisions_per_particle(&self, n: usize) -> Real {
+                match self { $(Self::$v(e) => EventLoop::collisions_per_particle(e, n)),+ }
             }
             fn species(&self, p: &Particles<'_>) -> Option<MixtureObservables> {
                 match self { $(Self::$v(e) => EventLoop::species(e, p)),+ }
@@ -347,6 +356,6 @@ forward!(
 forward!(ByLaw<F, K, D>, [F: Family, K: Kernel, D: Drive], Constant, ImpactSpeed);
 forward!(BySplit<K, D, A, G>, [K: Kernel, D: Drive, A: CollisionMap + crate::engine::collision_map::Inertia, G: Geometry], NoSplitting, Splitting, TimeStepped);
 forward!(ByMixtureScheme<K, D, L, G>, [K: Kernel, D: Drive, L: PairLaw, G: Geometry], NoSplitting, Splitting, TimeStepped);
-forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm);
+forward!(ByScheme<K, D, A, G>, [K: Kernel, D: Drive, A: Restitution, G: Geometry], Split, SumForm, Weighted);
 kernel_table!(by_kernel);
 declared_drives!(by_drive);

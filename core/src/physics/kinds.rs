@@ -211,6 +211,9 @@ kinds! {
         /// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell
         /// and VHS kernels), step `step_factor` mean free paths over the thermal speed.
         TimeStepped = 3, "time-stepped", "time-stepped";
+        /// The exact no-splitting scheme on weighted particles (Rjasanow and Wagner's SWPM): the
+        /// tails resolved by many light particles, reductions keeping the number bounded.
+        Weighted = 4, "weighted", "weighted";
     }
 }
 
@@ -247,6 +250,7 @@ impl SchemeChoice {
             SchemeChoice::Euler(_) => SchemeKind::Euler,
             SchemeChoice::Strang(_) => SchemeKind::Strang,
             SchemeChoice::TimeStepped(_) => SchemeKind::TimeStepped,
+            SchemeChoice::Weighted(_) => SchemeKind::Weighted,
         }
     }
 }

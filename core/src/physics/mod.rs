@@ -75,6 +75,10 @@ pub use crate::mixture::{MAX_PAIRS, MAX_SPECIES};
 /// default of every front end.
 pub const DEFAULT_STEP_FACTOR: Real = 0.01;
 
+/// The parameters of the weighted scheme (`[scheme]` keys `kappa`, `tail_kappa`, `tail_speed`,
+/// `capacity`, `target`, `exponent`; [`SchemeKind::params`]): the most any scheme has.
+pub const WEIGHTED_PARAMS: usize = 6;
+
 /// Most components an initial mixture of Maxwellians may have (BRS (35)).
 pub const MAX_COMPONENTS: usize = 16;
 
@@ -115,6 +119,9 @@ pub enum SchemeChoice {
     /// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and
     /// VHS kernels) with this step factor > 0 (`h = factor lambda / v0`; MS: 0.01).
     TimeStepped(Real),
+    /// The exact scheme on weighted particles (Rjasanow and Wagner's SWPM, [`crate::weighted`])
+    /// with the values of its parameters in the order of [`SchemeKind::params`].
+    Weighted([Real; WEIGHTED_PARAMS]),
 }
 
 impl SchemeChoice {

@@ -55,6 +55,9 @@ impl Model {
             None => None,
             Some(_) => super::rotation::rotation(physics, law, drive)?,
         };
+        if let SchemeModel::Weighted(w) = scheme {
+            weighted_fits(physics, w)?;
+        }
         Ok(Model {
             n: physics.n,
             initial,
@@ -143,6 +146,22 @@ impl Model {
         &self.initial
     }
 
+    /// The particles a system's buffers hold: `n`, or for the weighted scheme its `capacity`
+    /// times `n` (room for the particles collisions create, [`crate::particles::Particles::weighted`]).
+    pub fn capacity(&self) -> usize {
+        match self.scheme {
+            SchemeModel::Weighted(w) => w.capacity(self.n),
+            SchemeModel::NoSplitting | SchemeModel::Splitting(..) | SchemeModel::TimeStepped(_) => {
+                self.n
+            }
+        }
+    }
+
+    /// Whether the scheme runs weighted particles.
+    pub fn weighted(&self) -> bool {
+        matches!(self.scheme, SchemeModel::Weighted(_))
+    }
+
     /// The exact schemes' candidate rate of `n` particles whose relative speeds stay below
     /// `umax`, `2 pi gamma C_lambda (n - 1) Umax^lambda` (GRW Section 3, RW (20)): the
     /// kernel's [`Kernel::majorant_rate`], for estimates made before any engine exists.
@@ -179,4 +198,26 @@ impl Model {
     pub fn drive_work(&self, w: crate::drive::WorkInput) -> Option<(Real, Real)> {
         self.drive.work(w)
     }
+}
+
+/// The weighted scheme's rules against the rest of `physics`: smooth particles of one species,
+/// and buffers of `capacity n` particles that memory can address.
+fn weighted_fits(physics: &Physics, w: super::parts::WeightedModel) -> Result<(), PhysicsError> {
+    use super::error::{Param, Problem};
+    let refuse = |why| {
+        Err(PhysicsError {
+            param: Param::Scheme,
+            problem: Problem::DoesNotFit(why),
+        })
+    };
+    if !physics.species.is_empty() {
+        return refuse("runs one species (no [[species]] yet)");
+    }
+    if physics.rotation.is_some() {
+        return refuse("runs smooth particles (no [rotation] yet)");
+    }
+    crate::particles::check_count(w.capacity(physics.n)).map_err(|_| PhysicsError {
+        param: Param::Step(super::SchemeKind::Weighted, 3),
+        problem: Problem::DoesNotFit("makes more particles than memory can address"),
+    })
 }

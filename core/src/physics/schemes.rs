@@ -2,7 +2,7 @@
 //! default), from which the scene's `[scheme]` keys, the validation's refusals and their words
 //! follow; a [`SchemeChoice`] is a kind with the values of its parameters.
 
-use super::{DEFAULT_STEP_FACTOR, SchemeChoice, SchemeKind};
+use super::{DEFAULT_STEP_FACTOR, SchemeChoice, SchemeKind, WEIGHTED_PARAMS};
 use crate::declared::{ParamSpec, Rule};
 use crate::math::Real;
 
@@ -28,6 +28,77 @@ const STEP_FACTOR: ParamSpec = ParamSpec {
     example: DEFAULT_STEP_FACTOR,
 };
 
+/// The parameters of the weighted scheme ([`SchemeKind::Weighted`]), in the order of its
+/// values: the weight transfer (Rjasanow and Wagner 1996; the tail's, 2001) and the reduction.
+const WEIGHTED: [ParamSpec; WEIGHTED_PARAMS] = [
+    ParamSpec {
+        name: "kappa",
+        rule: Rule::AtLeastZero,
+        words: "the weight transfer in the core: a collision moves min(g_i, g_j)/(1 + kappa) of \
+                the partners' weights to their new velocities (0: whole weights, no new particle \
+                from equal weights)",
+        unit: "1",
+        default: Some(0.0),
+        example: 0.0,
+    },
+    ParamSpec {
+        name: "tail_kappa",
+        rule: Rule::AtLeastZero,
+        words: "the weight transfer of a collision that sends a partner beyond tail_speed: \
+                min/(1 + tail_kappa), at (1 + tail_kappa) times the rate (at least kappa)",
+        unit: "1",
+        default: Some(7.0),
+        example: 7.0,
+    },
+    ParamSpec {
+        name: "tail_speed",
+        rule: Rule::Positive,
+        words: "where the tail starts, in thermal speeds sqrt(T) from the flow velocity",
+        unit: "1",
+        default: Some(3.0),
+        example: 3.0,
+    },
+    ParamSpec {
+        name: "capacity",
+        rule: Rule::Within {
+            lo: 2.0,
+            hi: 64.0,
+            range: "[2, 64]",
+        },
+        words: "the particles the buffers hold, in multiples of particles.n: a reduction runs \
+                when a collision's new particles would not fit",
+        unit: "1",
+        default: Some(4.0),
+        example: 4.0,
+    },
+    ParamSpec {
+        name: "target",
+        rule: Rule::AboveAtMost {
+            lo: 0.0,
+            hi: 64.0,
+            range: "(0, 64]",
+        },
+        words: "the particles a reduction aims at, in multiples of particles.n (below capacity)",
+        unit: "1",
+        default: Some(2.0),
+        example: 2.0,
+    },
+    ParamSpec {
+        name: "exponent",
+        rule: Rule::Within {
+            lo: 0.0,
+            hi: 1.0,
+            range: "[0, 1]",
+        },
+        words: "how a reduction shares the particles among 32 speed shells: in proportion to each \
+                shell's weight to this power (1 follows the mass as equal weights do, 0 gives \
+                every shell as many, so the thin tail keeps its particles)",
+        unit: "1",
+        default: Some(0.5),
+        example: 0.5,
+    },
+];
+
 impl SchemeKind {
     /// Its parameters, in the order of their values ([`SchemeChoice::values`]).
     #[must_use]
@@ -36,6 +107,7 @@ impl SchemeKind {
             SchemeKind::NoSplitting => &[],
             SchemeKind::Euler | SchemeKind::Strang => &[DT],
             SchemeKind::TimeStepped => &[STEP_FACTOR],
+            SchemeKind::Weighted => &WEIGHTED,
         }
     }
 }
@@ -52,6 +124,9 @@ impl SchemeChoice {
             SchemeKind::Euler => SchemeChoice::Euler(first()?),
             SchemeKind::Strang => SchemeChoice::Strang(first()?),
             SchemeKind::TimeStepped => SchemeChoice::TimeStepped(first()?),
+            SchemeKind::Weighted => {
+                SchemeChoice::Weighted(values.get(..WEIGHTED_PARAMS)?.try_into().ok()?)
+            }
         })
     }
 
@@ -62,6 +137,7 @@ impl SchemeChoice {
             SchemeChoice::NoSplitting => &[],
             SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => core::slice::from_ref(dt),
             SchemeChoice::TimeStepped(f) => core::slice::from_ref(f),
+            SchemeChoice::Weighted(v) => v,
         }
     }
 }
@@ -75,8 +151,12 @@ mod tests {
     #[test]
     fn each_schemes_declaration_round_trips() {
         for &k in SchemeKind::ALL {
-            assert_eq!(crate::declared::check_specs(k.params(), 1), Ok(()), "{k:?}");
-            let values: [Real; 1] = crate::declared::examples(k.params());
+            assert_eq!(
+                crate::declared::check_specs(k.params(), WEIGHTED_PARAMS),
+                Ok(()),
+                "{k:?}"
+            );
+            let values: [Real; WEIGHTED_PARAMS] = crate::declared::examples(k.params());
             let s = SchemeChoice::new(k, &values).expect("its examples make it");
             assert_eq!(s.kind(), k);
             assert_eq!(s.values(), &values[..k.params().len()]);

@@ -62,8 +62,8 @@ pub enum Reduction {
 
 impl Reduction {
     /// Reduces `p` (all at time `t`) so that at least `room` more particles fit: by the rule,
-    /// then (if the rule left too many: particles too heavy to group) by cells of 3 until they
-    /// fit.
+    /// then (if the rule left too many: particles too heavy to group, or spread over the shells
+    /// a few to each) by cells of 4 until they fit.
     pub fn apply<R: Rng + ?Sized>(
         &self,
         p: &mut Particles<'_>,
@@ -83,9 +83,11 @@ impl Reduction {
                 reduce_allocated(p, t, (target, shells, exponent), dim, rng);
             }
         }
+        // Cells of at most 4 (a k-d split halves a run of 2^k particles down to pairs, which
+        // cells of 3 would keep whole); with cells of 4 a run of 3 or more always shrinks.
         while p.len() + room > p.capacity() && p.len() > 2 {
             let before = p.len();
-            reduce(p, t, 3, dim, rng);
+            reduce(p, t, 4, dim, rng);
             if p.len() == before {
                 break;
             }

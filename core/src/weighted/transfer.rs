@@ -80,14 +80,14 @@ impl Transfer {
 /// The collision at time `t` of the weighted particles `i != j` of `p` (both last kicked at
 /// `t`) with post-collision velocities `(vi, vj)` under `transfer`: both lose `gamma`, and
 /// `gamma` appears at `vi` and at `vj` (in place of a partner whose weight is used up, else as
-/// a new particle last kicked at `t`). [`ParticlesError::Full`] (and nothing changed) when the
-/// new particles do not fit.
+/// a new particle last kicked at `t`); returns `gamma`. [`ParticlesError::Full`] (and nothing
+/// changed) when the new particles do not fit.
 pub fn collide(
     p: &mut Particles<'_>,
     pair: (usize, usize),
     (velocities, t): ((Vec3, Vec3), Real),
     transfer: &Transfer,
-) -> Result<(), ParticlesError> {
+) -> Result<Real, ParticlesError> {
     collide_with(p, pair, (velocities, t), transfer.kappa)
 }
 
@@ -97,7 +97,7 @@ pub fn collide_with(
     (i, j): (usize, usize),
     ((vi, vj), t): ((Vec3, Vec3), Real),
     kappa: Real,
-) -> Result<(), ParticlesError> {
+) -> Result<Real, ParticlesError> {
     let (gi, gj) = (p.weight(i), p.weight(j));
     let gamma = Transfer { kappa, tail: None }.gamma(gi, gj);
     // `g - gamma` is exactly 0 when gamma is that weight (kappa = 0, the lighter partner).
@@ -119,7 +119,7 @@ pub fn collide_with(
             p.push(v, gamma, t)?;
         }
     }
-    Ok(())
+    Ok(gamma)
 }
 
 #[cfg(test)]
@@ -152,6 +152,7 @@ mod tests {
         let mut sys = Particles::weighted(&mut buf, &mut g, 2).unwrap();
         let t0 = Transfer::new(0.0).unwrap();
         collide(&mut sys, (0, 1), ((a, b), 0.5), &t0).unwrap();
+        assert_eq!(sys.weight(1), 1.0);
         assert_eq!(sys.len(), 2);
         assert_eq!(
             (sys.as_slice()[0], sys.weight(0)),

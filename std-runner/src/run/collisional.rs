@@ -5,7 +5,8 @@
 /// [`super::columns::names`] and the ensemble loop read it from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Collisional {
-    /// MS's `mu2`, `mu4` (MS (65)-(67)): smooth spheres of one species, a constant coefficient.
+    /// MS's `mu2`, `mu4` (MS (65)-(67)): smooth spheres of one species, a constant coefficient,
+    /// equal weights.
     pub moments: bool,
     /// A smooth mixture's [`super::columns::COOLING_COLUMNS`] (run/cooling.rs): spheres, constant coefficients.
     pub mixture_rates: bool,
@@ -23,7 +24,8 @@ pub fn collisional(scene: &crate::scene::Scene) -> Collisional {
         moments: on
             && ph.species.is_empty()
             && smooth_spheres
-            && ph.restitution.constant().is_some(),
+            && ph.restitution.constant().is_some()
+            && !scene.model().weighted(),
         mixture_rates: on
             && !ph.species.is_empty()
             && smooth_spheres

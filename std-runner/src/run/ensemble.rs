@@ -74,12 +74,31 @@ pub fn spin_buffer(model: &Model) -> Result<Vec<Spin>, crate::Error> {
     Ok(buf)
 }
 
-/// One worker's memory for a system: the particles and, for a rough gas, their spins.
-pub type SystemBuffer = (Vec<Particle>, Vec<Spin>);
+/// One worker's memory for a system: the particles (for the weighted scheme, with room for
+/// what its collisions create), for a rough gas their spins, for the weighted scheme their
+/// weights (empty otherwise).
+pub type SystemBuffer = (Vec<Particle>, Vec<Spin>, Vec<f64>);
 
-/// The [`SystemBuffer`] of `model`'s systems.
+/// The [`SystemBuffer`] of `model`'s systems ([`Model::capacity`] particles).
 pub fn system_buffer(model: &Model) -> Result<SystemBuffer, crate::Error> {
-    Ok((particle_buffer(model.n())?, spin_buffer(model)?))
+    let weights = if model.weighted() {
+        let n = model.capacity();
+        let mut w = Vec::new();
+        w.try_reserve_exact(n)
+            .map_err(|_| crate::Error::OutOfMemory {
+                what: format!("the weights of {n} weighted particles (`scheme.capacity`)"),
+                bytes: n.saturating_mul(8),
+            })?;
+        w.resize(n, 1.0);
+        w
+    } else {
+        Vec::new()
+    };
+    Ok((
+        particle_buffer(model.capacity())?,
+        spin_buffer(model)?,
+        weights,
+    ))
 }
 
 /// The state files of a run: the one it starts from and the one it saves, when asked.
@@ -112,8 +131,12 @@ pub fn run_ensemble(
             message: EnsembleError { t: t0, error }.to_string(),
         }
     };
-    let (particles, spins) = buf;
-    let mut p = if spins.is_empty() {
+    let (particles, spins, weights) = buf;
+    let mut p = if !weights.is_empty() {
+        // Every ensemble starts with n particles of weight 1 (Model::initialize sets them).
+        weights.fill(1.0);
+        Particles::weighted(particles, weights, model.n())
+    } else if spins.is_empty() {
         Particles::new(particles)
     } else {
         Particles::with_spins(particles, spins)
@@ -207,7 +230,7 @@ fn observe<E: EventLoop>(
             }
         }
         out.extend(COLUMNS.iter().map(|c| (c.get)(&obs)));
-        let s = s0 + 2.0 * engine.counts().collisions as f64 / p.len() as f64;
+        let s = s0 + engine.collisions_per_particle(scene.n());
         out.push(s);
         last_s = s;
         if let Some((_, w)) = snapshots.iter().find(|(i, _)| *i == ti) {
@@ -288,17 +311,18 @@ fn cooling_rates(
     v
 }
 
-/// Bulk velocity and temperature (about it) of the velocities as stored.
+/// Bulk velocity and temperature (about it) of the velocities as stored (weighted particles:
+/// weighted means).
 fn stored_bulk_temperature(p: &Particles<'_>) -> (Vec3, f64) {
-    let n = p.len() as f64;
+    let n = p.mass();
     let mut v = Vec3::ZERO;
-    for q in p.as_slice() {
-        v += q.velocity();
+    for (i, q) in p.as_slice().iter().enumerate() {
+        v += p.weight(i) * q.velocity();
     }
     let bulk = (1.0 / n) * v;
     let mut s = 0.0;
-    for q in p.as_slice() {
-        s += (q.velocity() - bulk).norm2();
+    for (i, q) in p.as_slice().iter().enumerate() {
+        s += p.weight(i) * (q.velocity() - bulk).norm2();
     }
     (bulk, s / (3.0 * n))
 }

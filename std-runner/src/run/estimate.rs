@@ -187,8 +187,20 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     };
     // A host medium's grains at a typical speed `sqrt(3 T)`.
     let background = model.background_rate((3.0 * temperature).sqrt()) * n * t_end * m;
+    // Weighted particles: the candidates of up to `capacity n` particles, at the majorant's
+    // largest transfer (docs/weighted.md); each particle's record and weight.
+    let (weighted_events, bytes_per_particle) = match p.scheme {
+        SchemeChoice::Weighted(v) => {
+            let (tail_kappa, capacity) = (v[1], v[3]);
+            ((1.0 + tail_kappa) * capacity * capacity, 40.0 * capacity)
+        }
+        SchemeChoice::NoSplitting
+        | SchemeChoice::Euler(_)
+        | SchemeChoice::Strang(_)
+        | SchemeChoice::TimeStepped(_) => (1.0, 32.0),
+    };
     let steps = match p.scheme {
-        SchemeChoice::NoSplitting => 0.0,
+        SchemeChoice::NoSplitting | SchemeChoice::Weighted(_) => 0.0,
         SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => t_end / dt,
         SchemeChoice::TimeStepped(f) => {
             // h = f lambda / v0, lambda = 1 / (sqrt 2 4 pi gamma C), v0 = sqrt(2 T).
@@ -200,12 +212,12 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     WorkEstimate {
         row_values,
         output: row_values as f64 * (m + OUTPUT_UNITS),
-        events: rate * effective_time * m,
+        events: rate * effective_time * m * weighted_events,
         background,
         updates: (n * (scene.times().len() as f64 + steps)
             + scene.collisional_pairs() as f64 * scene.times().len() as f64)
             * m,
-        particle_bytes: 32.0 * n,
+        particle_bytes: bytes_per_particle * n,
     }
 }
 

@@ -203,7 +203,8 @@ pub(super) fn maxwell_mixture_means(scene: &Scene) -> Vec<ReferenceCurve> {
         SchemeChoice::Euler(dt) => Some((dt, false)),
         SchemeChoice::Strang(dt) => Some((dt, true)),
         SchemeChoice::NoSplitting => None,
-        SchemeChoice::TimeStepped(_) => return Vec::new(),
+        // MS's collisions are not the Maxwell process's; the weighted scheme runs no mixture.
+        SchemeChoice::TimeStepped(_) | SchemeChoice::Weighted(_) => return Vec::new(),
     };
     let at_n = move |e: &MaxwellMixture, t: f64| match split {
         Some((dt, strang)) => e.splitting_temperatures_at(t, dt, strang),

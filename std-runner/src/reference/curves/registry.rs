@@ -9,7 +9,7 @@
 pub use super::holds::{Holds, Particles};
 use super::{Kind, ReferenceCurve, cooling, mixture, rough, single, sonine};
 use crate::scene::Scene;
-use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind};
+use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind, SchemeKind as S};
 
 /// One reference: its declaration and the builder of its curves.
 pub struct Reference {
@@ -61,11 +61,11 @@ const LINEAR: &[DriveKind] = &[
     DriveKind::Langevin,
 ];
 /// The schemes whose exact means at n are known: the no-splitting process and its splittings.
-const EXACT_MEANS: &[SchemeKind] = &[
-    SchemeKind::NoSplitting,
-    SchemeKind::Euler,
-    SchemeKind::Strang,
-];
+const EXACT_MEANS: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang];
+/// The schemes whose n -> infinity limit is the Boltzmann equation's solution.
+const BOLTZMANN: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang, S::Weighted];
+/// Every scheme but the weighted one (whose finite-n means carry `sum g^2`).
+const EQUAL_WEIGHTS: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang, S::TimeStepped];
 /// The cooling state: no drive, or the Gaussian thermostat (its steady state in reduced units,
 /// MS Section 2.2).
 const COOLING: &[DriveKind] = &[DriveKind::None, DriveKind::Gaussian];
@@ -108,15 +108,15 @@ const fn maxwell_linear(schemes: &'static [SchemeKind]) -> Holds {
     }
 }
 
-/// A one-species smooth gas of kernels `kernels`, a constant coefficient, any drive and scheme
-/// in d = 2 and 3, observing its cooling (`observe.collisional_pairs`).
-const fn smooth_cooling(kernels: &'static [KernelKind]) -> Holds {
+/// A one-species smooth gas of kernels `kernels`, a constant coefficient, any drive and the
+/// schemes `schemes` in d = 2 and 3, observing its cooling (`observe.collisional_pairs`).
+const fn smooth_cooling(kernels: &'static [KernelKind], schemes: &'static [SchemeKind]) -> Holds {
     Holds {
         particles: Particles::Smooth,
         kernels,
         laws: CONSTANT,
         drives: DriveKind::ALL,
-        schemes: ANY_SCHEME,
+        schemes,
         dimensions: ANY_D,
         when: Some("observe.collisional_pairs > 0"),
     }
@@ -212,7 +212,7 @@ pub const REFERENCES: &[Reference] = &[
             kernels: MAXWELL,
             laws: CONSTANT,
             drives: COOLING,
-            schemes: EXACT_MEANS,
+            schemes: BOLTZMANN,
             dimensions: ANY_D,
             when: None,
         },
@@ -269,6 +269,18 @@ pub const REFERENCES: &[Reference] = &[
         id: "GRW (13)-(14) at finite n",
         kind: Kind::MeanAtN,
         holds: maxwell_linear(EXACT_MEANS),
+        columns: &["T_mean_n", "T_bulk_mean_n"],
+        cites: &[],
+        curves: single::grw_mean_at_n,
+    },
+    Reference {
+        id: "GRW (13)-(14) at finite weight",
+        kind: Kind::MeanAtN,
+        // Where the drive adds no heat of its own (docs/weighted.md).
+        holds: Holds {
+            drives: COOLING,
+            ..maxwell_linear(&[SchemeKind::Weighted])
+        },
         columns: &["T_mean_n", "T_bulk_mean_n"],
         cites: &[],
         curves: single::grw_mean_at_n,
@@ -365,7 +377,8 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "zeta* of the Maxwell kernel",
         kind: Kind::MeanAtN,
-        holds: smooth_cooling(MAXWELL),
+        // Equal weights: `n/(n - 1)` is their `W^2/(W^2 - sum g^2)` (core/tests/weighted.rs).
+        holds: smooth_cooling(MAXWELL, EQUAL_WEIGHTS),
         columns: &["zeta_star_exact"],
         cites: &[],
         curves: cooling::maxwell,
@@ -373,7 +386,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "zeta* of hard particles at a Maxwellian",
         kind: Kind::Approximation,
-        holds: smooth_cooling(HARD),
+        holds: smooth_cooling(HARD, ANY_SCHEME),
         columns: &["zeta_star_MA"],
         cites: &[],
         curves: cooling::hard_maxwellian,

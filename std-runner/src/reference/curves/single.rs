@@ -140,7 +140,8 @@ pub(super) fn grw_limit(scene: &Scene) -> Vec<ReferenceCurve> {
 /// GRW (13)-(14)'s exact ensemble means at this n (and time step): the scheme's whole
 /// systematic error, for `T_bulk` and for the raw `T` (which adds the random walk of the bulk
 /// velocity, `bulk_to_raw`, and the initial drift). None for MS's time-stepped scheme, whose
-/// collisions are not the Maxwell process's.
+/// collisions are not the Maxwell process's, nor for weighted particles under a drive that
+/// heats them by itself.
 pub(super) fn grw_mean_at_n(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some(mt) = maxwell_temperature(scene) else {
         return Vec::new();
@@ -150,7 +151,13 @@ pub(super) fn grw_mean_at_n(scene: &Scene) -> Vec<ReferenceCurve> {
         SchemeChoice::NoSplitting => Arc::new(move |t| mt.finite_n_bulk_mean(n, t)),
         SchemeChoice::Euler(dt) => Arc::new(move |t| mt.splitting_bulk_mean(n, dt, false, t)),
         SchemeChoice::Strang(dt) => Arc::new(move |t| mt.splitting_bulk_mean(n, dt, true, t)),
-        SchemeChoice::TimeStepped(_) => return Vec::new(),
+        // Weighted particles keep GRW's mean of T_bulk where the drive adds no heat of its own
+        // (`a = 0`: cooling, the Gaussian thermostat); white noise's depends on the weights
+        // (docs/weighted.md: sum g^2 / n0^2 in place of 1/n), so only the limit stands then.
+        SchemeChoice::Weighted(_) if mt.heating.a == 0.0 => {
+            Arc::new(move |t| mt.finite_n_bulk_mean(n, t))
+        }
+        SchemeChoice::TimeStepped(_) | SchemeChoice::Weighted(_) => return Vec::new(),
     };
     let raw = finite.clone();
     vec![

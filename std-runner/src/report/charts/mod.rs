@@ -64,6 +64,12 @@ pub fn title(scene: &crate::scene::Scene, ensembles: u64) -> String {
         2 => format!("Binary mixture of {surface} {shape}"),
         k => format!("Mixture of {k} species of {surface} {shape}"),
     };
+    // Weighted particles (the scheme that changes what a particle is) are named with them.
+    let particles = if scene.model().weighted() {
+        format!("{particles} (weighted particles)")
+    } else {
+        particles
+    };
     let kernel = ph.kernel.to_string();
     let law = match (ph.restitution, ph.pair_restitution.is_empty()) {
         (RestitutionLaw::Constant(a), true) => format!("alpha = {a}"),

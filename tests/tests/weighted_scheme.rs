@@ -1,0 +1,100 @@
+//! The weighted scheme from a scene (`[scheme] kind = "weighted"`, Rjasanow and Wagner's SWPM,
+//! docs/weighted.md): GRW's exact finite-n temperature of the Maxwell gas holds under it where
+//! the drive adds no heat of its own (cooling, the Gaussian thermostat), through reductions and
+//! the rescaling of a gas cooled far below its bulk velocity's digits; a run is bit-identical
+//! for any thread count; its collisions per particle are the physical ones; and where equal
+//! weights at the same n resolve a tail probability, the two agree.
+//!
+//! Fixed seeds; each comparison is at 99.9% jointly over its times and columns (Bonferroni,
+//! Student-t for the ensembles), `gdsmc_stats::family`.
+
+use gdsmc_runner::run::columns::name;
+use gdsmc_validation::*;
+
+/// The shipped Maxwell cooling scene on weighted particles, `n` particles, `m` ensembles.
+fn weighted_hcs(n: usize, m: u64, seed: u64, more: &[&str]) -> gdsmc_runner::scene::Scene {
+    let mut set = vec![
+        "scheme.kind=weighted",
+        "observe.t_end=30",
+        "observe.intervals=6",
+    ];
+    set.extend_from_slice(more);
+    shipped_set("hcs-maxwell", &set, n, m, seed)
+}
+
+/// T_bulk and T at their exact finite-n means (GRW (13)-(14) with no drive: the weighted
+/// process keeps `E[S2 - |P|^2/n0]`'s law, core/src/weighted/nosplit/mod.rs) to t = 30, where the
+/// temperature has fallen 1e-10 below its start and the gas is stored rescaled (without the
+/// rescaling the late means missed by many intervals: their digits were below the bulk
+/// velocity's). The wrong rate a transfer that forgot its weight would give is refused.
+#[test]
+fn the_weighted_maxwell_gas_cools_at_its_exact_finite_n_mean() {
+    for (kappa, tail) in [("0", "7"), ("1", "1")] {
+        let (kappa, tail) = (
+            format!("scheme.kappa={kappa}"),
+            format!("scheme.tail_kappa={tail}"),
+        );
+        let s = weighted_hcs(
+            64,
+            60,
+            71,
+            &[&kappa, &tail, "scheme.capacity=3", "scheme.target=1.5"],
+        );
+        let (mt, st, f) = assert_exact_maxwell_temperature(&s, &format!("weighted {kappa}"));
+        assert!(
+            st.counts.rescales > 0 && st.counts.collisions > 0,
+            "{:?}",
+            st.counts
+        );
+        // The rate 2k refused at the late times (the verdict can fail).
+        let wrong = |t: f64| mt.finite_n_bulk_mean(64, 2.0 * t);
+        assert!(times_outside(&st, name::T_BULK, f, wrong) > st.times.len() / 2);
+    }
+}
+
+/// A run is a pure function of (scene, seed) under weights too: the same observables.csv bytes
+/// for 1, 2 and 3 threads, other bytes for another seed.
+#[test]
+fn a_weighted_run_is_bit_identical_for_any_thread_count() {
+    let bytes = |seed: u64, threads: usize| {
+        let s = shipped("grw-example3-weighted", 64, 24, seed);
+        let st = gdsmc_runner::run::run(&s, threads, &|_| {}).unwrap();
+        gdsmc_runner::report::observables_csv(&st, &gdsmc_runner::reference::curves::for_scene(&s))
+            .unwrap()
+    };
+    let one = bytes(3, 1);
+    assert_eq!(one, bytes(3, 2));
+    assert_eq!(one, bytes(3, 3));
+    assert_ne!(one, bytes(4, 2));
+}
+
+/// The collisions per particle `s` of a weighted run count the weight each collision moved
+/// over the total. With `kappa = tail_kappa = 0` every collision moves whole equal weights (the
+/// weighted process is GRW's own, no particle is made), so `E[s(t)] = 4 t (1 - 1/n)` exactly
+/// for GRW Example 3 (`int B de = 4 pi gamma C = 4` per pair and particle, `n - 1` partners
+/// over `n`); counting each event once for both partners (`2 t (1 - 1/n)`) is refused.
+#[test]
+fn weighted_collisions_per_particle_are_the_physical_rate() {
+    let s = shipped_set(
+        "grw-example3-weighted",
+        &["scheme.kappa=0", "scheme.tail_kappa=0"],
+        16,
+        400,
+        5,
+    );
+    let st = run(&s);
+    let f = gdsmc_stats::family(st.times.len() - 1, gdsmc_stats::dof(st.ensembles));
+    for (ti, &t) in st.times.iter().enumerate().skip(1) {
+        let (m, c) = at(&st, ti, name::S);
+        let exact = 4.0 * t * (1.0 - 1.0 / 16.0);
+        assert!(
+            (m - exact).abs() <= f * c,
+            "t = {t}: s {m} +- {}, exact {exact}",
+            f * c
+        );
+        assert!(
+            (m - 0.5 * exact).abs() > f * c,
+            "t = {t}: half the rate not refused"
+        );
+    }
+}
