@@ -214,6 +214,7 @@ pub(super) struct WeightedModel {
 }
 
 /// The speed shells of the weighted scheme's reduction (`exponent`'s words say 32).
+#[cfg_attr(not(feature = "weighted"), allow(dead_code))]
 const WEIGHTED_SHELLS: usize = 32;
 
 impl WeightedModel {
@@ -223,6 +224,7 @@ impl WeightedModel {
     }
 
     /// The reduction of a run of `n` particles.
+    #[cfg_attr(not(feature = "weighted"), allow(dead_code))]
     pub(super) fn reduction(&self, n: usize) -> crate::weighted::Reduction {
         crate::weighted::Reduction::Allocated {
             target: (libm::round(self.target * n as Real) as usize).max(2),
