@@ -111,11 +111,9 @@ impl core::fmt::Display for ParticlesError {
             ParticlesError::TooFew => "a particle system needs n >= 2 particles",
             ParticlesError::TooMany => "n particles of 32 bytes exceed the address space",
             ParticlesError::SpinCount => "a rough gas needs one spin per particle",
-            ParticlesError::WeightCount => {
-                "weighted particles need one weight per record, and no more in use than the buffers hold"
-            }
-            ParticlesError::Weight => "every weight must be finite and > 0",
-            ParticlesError::Full => "the weighted particles fill their buffers: reduce them first",
+            ParticlesError::WeightCount => "one weight per record, len <= buffer",
+            ParticlesError::Weight => "a weight not finite and > 0",
+            ParticlesError::Full => "weighted buffers full",
         })
     }
 }
@@ -359,12 +357,13 @@ impl<'a> Particles<'a> {
 
     /// The particles, read-only.
     pub fn as_slice(&self) -> &[Particle] {
-        &self.p[..self.len]
+        // `len <= p.len()` always (the constructors and `truncate` keep it): no panic path.
+        self.p.get(..self.len).unwrap_or(&[])
     }
 
     /// The particles, mutable: for the batch kernels.
     pub fn as_mut_slice(&mut self) -> &mut [Particle] {
-        &mut self.p[..self.len]
+        self.p.get_mut(..self.len).unwrap_or(&mut [])
     }
 
     /// Fills the velocities from a sampler and sets every last-kick time to `t0`.

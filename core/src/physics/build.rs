@@ -68,6 +68,7 @@ impl Model {
                     wrap(SumNoSplitting::start(hs, a, p, t0), ByScheme::SumForm)
                 })
             }
+            #[cfg(feature = "weighted")]
             SchemeModel::Weighted(w) => built!(feature = "weighted", "weighted", {
                 let start = || {
                     let mut e = WeightedNoSplitting::<K, A, D, G>::start(
@@ -141,6 +142,7 @@ fn start_mixture<K: Kernel, D: Drive, L: PairLaw, G: Geometry>(
             Exact::start(|| started(MixtureNoSplitting::start_in(sp, physics, drives, p, t0))),
             ByMixtureScheme::NoSplitting,
         ),
+        #[cfg(feature = "weighted")]
         SchemeModel::Weighted(_) => Err(WEIGHTED_SMOOTH),
     }
 }
@@ -163,10 +165,11 @@ fn species_hosts<B: BackgroundKernel, G: Geometry>(
     Ok(hosts)
 }
 
+#[cfg(feature = "weighted")]
 /// What the weighted scheme's validation refused before a rough gas or a mixture could reach
 /// its scheme level.
 const WEIGHTED_SMOOTH: EngineError =
-    EngineError::Invariant("validated: the weighted scheme runs smooth particles of one species");
+    EngineError::Invariant("validated: weighted runs one smooth species");
 
 /// An engine started, with its observables at the start.
 pub(super) type Begun<E> = Result<(E, Observables), EngineError>;
@@ -200,6 +203,7 @@ fn by_split<
         SchemeModel::TimeStepped(f) => built!(feature = "time-stepped", "time-stepped", {
             wrap(TimeStepped::start(k, d, a, f, p, t0), BySplit::TimeStepped)
         }),
+        #[cfg(feature = "weighted")]
         SchemeModel::Weighted(_) => Err(WEIGHTED_SMOOTH),
     }
 }

@@ -55,6 +55,7 @@ impl Model {
             None => None,
             Some(_) => super::rotation::rotation(physics, law, drive)?,
         };
+        #[cfg(feature = "weighted")]
         if let SchemeModel::Weighted(w) = scheme {
             weighted_fits(physics, w)?;
         }
@@ -150,6 +151,7 @@ impl Model {
     /// times `n` (room for the particles collisions create, [`crate::particles::Particles::weighted`]).
     pub fn capacity(&self) -> usize {
         match self.scheme {
+            #[cfg(feature = "weighted")]
             SchemeModel::Weighted(w) => w.capacity(self.n),
             SchemeModel::NoSplitting | SchemeModel::Splitting(..) | SchemeModel::TimeStepped(_) => {
                 self.n
@@ -159,7 +161,14 @@ impl Model {
 
     /// Whether the scheme runs weighted particles.
     pub fn weighted(&self) -> bool {
-        matches!(self.scheme, SchemeModel::Weighted(_))
+        #[cfg(feature = "weighted")]
+        {
+            matches!(self.scheme, SchemeModel::Weighted(_))
+        }
+        #[cfg(not(feature = "weighted"))]
+        {
+            false
+        }
     }
 
     /// The exact schemes' candidate rate of `n` particles whose relative speeds stay below
@@ -200,6 +209,7 @@ impl Model {
     }
 }
 
+#[cfg(feature = "weighted")]
 /// The weighted scheme's rules against the rest of `physics`: smooth particles of one species,
 /// and buffers of `capacity n` particles that memory can address.
 fn weighted_fits(physics: &Physics, w: super::parts::WeightedModel) -> Result<(), PhysicsError> {

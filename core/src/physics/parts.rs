@@ -200,12 +200,14 @@ pub(super) enum SchemeModel {
     NoSplitting,
     Splitting(SplittingOrder, Real),
     TimeStepped(Real),
+    #[cfg(feature = "weighted")]
     Weighted(WeightedModel),
 }
 
 /// The validated weighted scheme: its transfer, and its buffers' room and the reduction's aim
 /// in multiples of the particles a run starts with.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(not(feature = "weighted"), allow(dead_code))]
 pub(super) struct WeightedModel {
     pub(super) transfer: crate::weighted::Transfer,
     pub(super) capacity: Real,
@@ -219,6 +221,7 @@ const WEIGHTED_SHELLS: usize = 32;
 
 impl WeightedModel {
     /// The particles the buffers of a run of `n` hold.
+    #[cfg_attr(not(feature = "weighted"), allow(dead_code))]
     pub(super) fn capacity(&self, n: usize) -> usize {
         libm::ceil(self.capacity * n as Real) as usize
     }
@@ -395,6 +398,16 @@ pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, Phy
         SchemeChoice::Euler(dt) => SchemeModel::Splitting(SplittingOrder::Euler, step(dt)?),
         SchemeChoice::Strang(dt) => SchemeModel::Splitting(SplittingOrder::Strang, step(dt)?),
         SchemeChoice::TimeStepped(f) => SchemeModel::TimeStepped(step(f)?),
+        // A build without the weighted loop refuses the scheme by name here, and keeps its
+        // rules out of the smallest firmware (the micro:bit's 64 KiB).
+        #[cfg(not(feature = "weighted"))]
+        SchemeChoice::Weighted(_) => {
+            return err(
+                Param::Scheme,
+                Problem::DoesNotFit("needs feature `weighted`"),
+            );
+        }
+        #[cfg(feature = "weighted")]
         SchemeChoice::Weighted([kappa, tail_kappa, tail_speed, capacity, target, exponent]) => {
             if let Some(why) = d.kind().stepped_only() {
                 return err(Param::Scheme, Problem::DoesNotFit(why));
