@@ -165,11 +165,9 @@ fn species_hosts<B: BackgroundKernel, G: Geometry>(
     Ok(hosts)
 }
 
-#[cfg(feature = "weighted")]
-/// What the weighted scheme's validation refused before a rough gas or a mixture could reach
-/// its scheme level.
+#[cfg(feature = "weighted")] // validation refused a rough gas or a mixture before this
 const WEIGHTED_SMOOTH: EngineError =
-    EngineError::Invariant("validated: weighted runs one smooth species");
+    EngineError::Invariant("validated: weighted: 1 smooth species");
 
 /// An engine started, with its observables at the start.
 pub(super) type Begun<E> = Result<(E, Observables), EngineError>;
