@@ -191,7 +191,15 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     // largest transfer (docs/weighted.md); each particle's record and weight.
     let (weighted_events, bytes_per_particle) = match p.scheme {
         SchemeChoice::Weighted(v) => {
-            let (tail_kappa, capacity) = (v[1], v[3]);
+            let named = |key| {
+                gdsmc_core::declared::named(
+                    gdsmc_core::physics::SchemeKind::Weighted.params(),
+                    &v,
+                    key,
+                )
+                .unwrap_or(1.0)
+            };
+            let (tail_kappa, capacity) = (named("tail_kappa"), named("capacity"));
             ((1.0 + tail_kappa) * capacity * capacity, 40.0 * capacity)
         }
         SchemeChoice::NoSplitting
