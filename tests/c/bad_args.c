@@ -62,8 +62,11 @@ static void config_errors(void) {
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.kernel = 7");
     c = base(); c.drive = 99;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.drive = 99");
-    c = base(); c.scheme = 4;
-    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 4");
+    c = base(); c.scheme = 99;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 99");
+    c = base(); c.scheme = GDSMC_SCHEME_WEIGHTED;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
+           "config.scheme = GDSMC_SCHEME_WEIGHTED: the weighted scheme");
     c = base(); c.dimension = 4;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
            "config.dimension must be 2 (disks) or 3 (spheres), got 4");
