@@ -23,6 +23,14 @@ pub trait Restitution: Copy + core::fmt::Debug {
     /// clamping; BRS (9) itself): the rough particles' map, which draws the impact direction `n`
     /// and so knows `g . n` without BRS (10).
     fn at_normal_speed(&self, speed: Real) -> Real;
+    /// The same law for velocities stored in new units, `scale` times which are the velocities
+    /// this law takes (a cooling gas stored rescaled, [`crate::engine::frame::Frame`]): its
+    /// coefficient at a stored impact speed is this law's at `scale` times it. A law that does
+    /// not depend on the speed is itself, as is every law at `scale = 1`; successive changes
+    /// compose to rounding (`in_stored_units(a).in_stored_units(b)` is
+    /// `in_stored_units(a b)` to a few ulps).
+    #[must_use]
+    fn in_stored_units(&self, scale: Real) -> Self;
 }
 
 /// The impact-speed law BRS (9)-(10): `1 - e = 2 beta_0 |g . n|^delta`, with the normal impact
@@ -98,6 +106,15 @@ impl Restitution for ImpactSpeed {
         }
         1.0 - 2.0 * self.beta0 * powf(speed, self.delta)
     }
+
+    /// `1 - 2 beta_0 (scale s)^delta = 1 - 2 (beta_0 scale^delta) s^delta`: the law of
+    /// `beta_0 scale^delta` (`pow(1, y) = 1` exactly, IEEE 754: `scale = 1` changes no bit).
+    fn in_stored_units(&self, scale: Real) -> Self {
+        ImpactSpeed {
+            beta0: self.beta0 * powf(scale, self.delta),
+            delta: self.delta,
+        }
+    }
 }
 
 /// The domain of a restitution coefficient `alpha` (GRW (3)): the words every message uses.
@@ -149,5 +166,9 @@ impl Restitution for Constant {
     #[inline(always)]
     fn at_normal_speed(&self, _speed: Real) -> Real {
         self.0
+    }
+    #[inline(always)]
+    fn in_stored_units(&self, _scale: Real) -> Self {
+        *self
     }
 }

@@ -53,6 +53,13 @@ pub trait CollisionMap: Copy + core::fmt::Debug {
         counts: &mut Counts,
     ) -> (Vec3, Vec3);
 
+    /// The same map for velocities stored in new units, `scale` times which are the ones this
+    /// map takes (a cooling gas stored rescaled, [`super::frame`]): its restitution law's
+    /// [`Restitution::in_stored_units`], so that an impact-speed law keeps taking the physical
+    /// impact speed.
+    #[must_use]
+    fn stored_map(&self, scale: Real) -> Self;
+
     /// The rotational observables of `p` (stored with rim velocities `w_phys = scale w`) in
     /// dimension `dim`; `None` for smooth particles.
     fn rough(
@@ -96,6 +103,11 @@ impl<A: Restitution> CollisionMap for A {
     ) -> (Vec3, Vec3) {
         let e = scattering_direction_from_impact(vi - vj, n);
         collide_along(self, p, (i, j), (vi, vj), e, counts)
+    }
+
+    #[inline(always)]
+    fn stored_map(&self, scale: Real) -> Self {
+        self.in_stored_units(scale)
     }
 }
 

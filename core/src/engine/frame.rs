@@ -68,20 +68,25 @@ impl Frame {
 
     /// The caller replaced the velocities with physical ones between calls: the frame becomes
     /// the identity, and rim velocities (`spins`: a rough gas's, left as stored) are converted
-    /// to physical units.
-    pub fn reset(&mut self, p: &mut Particles<'_>, spins: bool) {
+    /// to physical units. Returns the factor `1/scale` from the new stored (physical)
+    /// velocities to the old stored ones (a map's [`super::CollisionMap::stored_map`] takes it).
+    #[must_use]
+    pub fn reset(&mut self, p: &mut Particles<'_>, spins: bool) -> Real {
+        let back = 1.0 / self.scale;
         if spins && self.scale != 1.0 {
             for w in p.spins_mut() {
                 *w = Spin::new(self.scale * w.rim_velocity());
             }
         }
         *self = Frame::IDENTITY;
+        back
     }
 
     /// Stores a cooling gas rescaled (module docs) when its temperature `obs.t_bulk` (stored
     /// units) has fallen below `below` times `max(1, |V|^2)`: the stored peculiar velocities
     /// (and the rim velocities with `spins`) at unit temperature; `obs` becomes the stored
-    /// system's (in `d` dimensions). True when it rescaled.
+    /// system's (in `d` dimensions). When it rescaled, the factor `sqrt(T)` from the new stored
+    /// velocities to the old ones (a map's [`super::CollisionMap::stored_map`] takes it).
     pub fn rescale(
         &mut self,
         p: &mut Particles<'_>,
@@ -89,7 +94,7 @@ impl Frame {
         below: Real,
         d: usize,
         spins: bool,
-    ) -> bool {
+    ) -> Option<Real> {
         self.rescale_with(p, obs, (below, spins), |p| Observables::of_dim(p, d))
     }
 
@@ -101,9 +106,9 @@ impl Frame {
         obs: &mut Observables,
         (below, spins): (Real, bool),
         observe: impl FnOnce(&Particles<'_>) -> Observables,
-    ) -> bool {
+    ) -> Option<Real> {
         if !rescale_due(obs.t_bulk, obs.bulk, below) {
-            return false;
+            return None;
         }
         let s = 1.0 / sqrt(obs.t_bulk);
         for q in p.as_mut_slice() {
@@ -118,7 +123,7 @@ impl Frame {
         self.offset += self.scale * obs.bulk;
         self.scale /= s;
         *obs = observe(p);
-        true
+        Some(1.0 / s)
     }
 
     /// `<|v|^6>` of a gas stored rescaled about a bulk velocity cannot be rebuilt from the

@@ -170,7 +170,11 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> 
     /// becomes the current time and `V`, `Umax` are recomputed. Returns the observables.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
         // The caller's velocities are physical (a rough gas's spins are left as stored).
-        self.frame.reset(p, A::SPINS);
+        let back = self.frame.reset(p, A::SPINS);
+        if !D::ACTS {
+            // Only a gas with no drive is ever stored rescaled.
+            self.c.map = self.c.map.stored_map(back);
+        }
         p.reset_kick_times(self.t);
         self.synchronized(p)
     }
@@ -184,12 +188,14 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> 
         if A::SPINS {
             spins_finite(p)?;
         }
-        if !D::ACTS
-            && self
-                .frame
-                .rescale(p, &mut obs, self.rescale_below, d, A::SPINS)
+        if D::ACTS {
+            // A driven gas is never stored rescaled.
+        } else if let Some(f) = self
+            .frame
+            .rescale(p, &mut obs, self.rescale_below, d, A::SPINS)
         {
             self.c.counts.rescales += 1;
+            self.c.map = self.c.map.stored_map(f);
         }
         self.c.synchronized(&obs);
         Ok(self.frame.observables(&obs, d))

@@ -194,6 +194,7 @@ impl<A: Restitution> SumNoSplitting<A> {
 
     /// Re-synchronizes after the caller changed the velocities (physical ones).
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
+        self.restitution = self.restitution.in_stored_units(1.0 / self.frame.scale);
         self.frame = Frame::IDENTITY;
         p.reset_kick_times(self.t);
         self.ready = false;
@@ -208,8 +209,9 @@ impl<A: Restitution> SumNoSplitting<A> {
         in_run: bool,
     ) -> Result<Observables, EngineError> {
         let mut obs = observables(p)?;
-        if self.frame.rescale(p, &mut obs, RESCALE_BELOW, 3, false) {
+        if let Some(f) = self.frame.rescale(p, &mut obs, RESCALE_BELOW, 3, false) {
             self.counts.rescales += 1;
+            self.restitution = self.restitution.in_stored_units(f);
         }
         self.counts.observations += 1;
         self.mean_c = obs.c1;

@@ -93,6 +93,15 @@ impl<A: Restitution> MassMap<A> {
 impl<A: Restitution> CollisionMap for MassMap<A> {
     const SPINS: bool = false;
 
+    /// The restitution law's [`Restitution::in_stored_units`].
+    #[inline(always)]
+    fn stored_map(&self, scale: Real) -> Self {
+        MassMap {
+            law: self.law.in_stored_units(scale),
+            ..*self
+        }
+    }
+
     /// The scattering direction of `G`, the law's clamped coefficient and
     /// [`MassRatio::collide`] (GRW (3) in the centre-of-mass frame; module docs).
     #[inline(always)]

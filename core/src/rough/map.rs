@@ -314,6 +314,15 @@ impl<A: Restitution> crate::engine::collision_map::Inertia for RoughMap<A> {
 impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
     const SPINS: bool = true;
 
+    /// The normal restitution law's [`Restitution::in_stored_units`].
+    #[inline(always)]
+    fn stored_map(&self, scale: Real) -> Self {
+        RoughMap {
+            law: self.law.in_stored_units(scale),
+            ..*self
+        }
+    }
+
     /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughMap::collide`] on the
     /// velocities and rim velocities; with `beta = -1` the smooth collision itself
     /// ([`smooth_limit`]).

@@ -207,6 +207,15 @@ impl<A: Restitution> RoughPair<A> {
 impl<A: Restitution> CollisionMap for RoughPair<A> {
     const SPINS: bool = true;
 
+    /// The normal restitution law's [`Restitution::in_stored_units`].
+    #[inline(always)]
+    fn stored_map(&self, scale: Real) -> Self {
+        RoughPair {
+            smooth: self.smooth.stored_map(scale),
+            ..*self
+        }
+    }
+
     /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughPair::collide`]; with
     /// `beta = -1` the smooth pair's own code (the smooth
     /// limit of [`super::map`]), so a rough mixture with `beta = -1` has the smooth mixture's

@@ -20,9 +20,21 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
     /// every last-kick time becomes the current time, the majorants are recomputed.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<MixtureObservables, EngineError> {
         // The caller's velocities are physical (a rough mixture's spins are left as stored).
-        self.frame.reset(p, L::Map::SPINS);
+        let back = self.frame.reset(p, L::Map::SPINS);
+        if !D::ACTS {
+            // Only a mixture with no drive is ever stored rescaled.
+            self.stored_maps(back);
+        }
         p.reset_kick_times(self.t);
         self.synchronized(p)
+    }
+
+    /// Every pair type's map in new stored units, `scale` times which are the old ones
+    /// ([`CollisionMap::stored_map`]: an impact-speed law at the physical impact speed).
+    fn stored_maps(&mut self, scale: crate::math::Real) {
+        for m in &mut self.maps {
+            *m = m.stored_map(scale);
+        }
     }
 
     /// The map `v_phys = offset + scale v` from stored to physical velocities.
@@ -51,13 +63,15 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
         }
         let mut all = obs.all;
         let d = G::CHOICE.d();
-        if !D::ACTS
-            && self.rescale
-            && self
-                .frame
+        let rescaled = if !D::ACTS && self.rescale {
+            self.frame
                 .rescale(p, &mut all, RESCALE_BELOW, d, L::Map::SPINS)
-        {
+        } else {
+            None
+        };
+        if let Some(f) = rescaled {
             self.counts.rescales += 1;
+            self.stored_maps(f);
             obs = MixtureObservables::of_dim(p.as_slice(), &self.sp, G::CHOICE);
         }
         self.counts.observations += 1;

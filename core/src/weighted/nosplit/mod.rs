@@ -262,8 +262,8 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             self.counts.fictitious += 1;
         } else {
             let e = G::scattering::<K, R>(u, rng);
-            // The law at the physical impact velocity (the map itself is linear).
-            let alpha = clamped_coefficient(&self.law, self.frame.scale * u, e, &mut self.counts);
+            // The law in stored units: at the physical impact velocity (the map is linear).
+            let alpha = clamped_coefficient(&self.law, u, e, &mut self.counts);
             let (a, b) = inelastic(vi, vj, e, alpha);
             let Some(kappa) = self.outcome_kappa((a, b), rng) else {
                 // This outcome's rate is (1 + kappa)/(1 + kappa_max) of the majorant's.

@@ -36,7 +36,11 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     /// last-kick time becomes the current time and the bounds are made exact. Returns the
     /// observables.
     pub fn resync(&mut self, p: &mut Particles<'_>) -> Result<Observables, EngineError> {
-        self.frame.reset(p, false);
+        let back = self.frame.reset(p, false);
+        if !D::ACTS {
+            // Only a gas with no drive is ever stored rescaled.
+            self.law = self.law.in_stored_units(back);
+        }
         p.reset_kick_times(self.t);
         self.refresh(p)?;
         let o = observables(p, G::CHOICE.d());
@@ -94,12 +98,14 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         o: &mut Observables,
     ) -> Result<(), EngineError> {
         let d = G::CHOICE.d();
-        if !D::ACTS
-            && self
-                .frame
-                .rescale_with(sys, o, (RESCALE_BELOW, false), |p| observables(p, d))
+        if D::ACTS {
+            // A driven gas is never stored rescaled.
+        } else if let Some(f) = self
+            .frame
+            .rescale_with(sys, o, (RESCALE_BELOW, false), |p| observables(p, d))
         {
             self.counts.rescales += 1;
+            self.law = self.law.in_stored_units(f);
             self.refresh(sys)?;
         }
         Ok(())
