@@ -47,6 +47,11 @@ MS=(scenes/ms-constant-force.toml --n 512 --ensembles 30 --set observe.collision
 $G run "${MS[@]}" --out "$W/ms-one" > /dev/null
 "${MPIRUN[@]}" $G run "${MS[@]}" --threads 1 --out "$W/ms-mpi" | tail -1
 same "$W/ms-one" "$W/ms-mpi"
+# The weighted scheme (issue 56): weights, reductions and the weighted tail, one per rank.
+WT=(scenes/grw-example3-weighted.toml --ensembles 16)
+$G run "${WT[@]}" --out "$W/wt-one" > /dev/null
+"${MPIRUN[@]}" $G run "${WT[@]}" --threads 1 --out "$W/wt-mpi" | tail -1
+same "$W/wt-one" "$W/wt-mpi"
 
 # Killed in the middle (SIGTERM to mpirun, which ends the ranks), then run again.
 BIG=(scenes/grw-example3.toml --n 40000 --ensembles 80)
