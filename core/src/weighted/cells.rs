@@ -47,15 +47,16 @@ pub(crate) fn reduce_cells<R: Rng + ?Sized>(
         }
         return;
     }
-    let spread = |k: usize| {
-        let (lo, hi) =
-            (buf[a..b].iter()).fold((Real::INFINITY, Real::NEG_INFINITY), |(l, h), p| {
-                let x = component(p, k);
-                (l.min(x), h.max(x))
-            });
-        hi - lo
-    };
-    let axis = (1..dim.d()).fold(0, |best, k| if spread(k) > spread(best) { k } else { best });
+    // Every component's range in one pass over the cell.
+    let (mut lo, mut hi) = ([Real::INFINITY; 3], [Real::NEG_INFINITY; 3]);
+    for p in &buf[a..b] {
+        for (k, x) in [p.vx, p.vy, p.vz].into_iter().enumerate() {
+            lo[k] = lo[k].min(x);
+            hi[k] = hi[k].max(x);
+        }
+    }
+    let spread = [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]];
+    let axis = (1..dim.d()).fold(0, |best, k| if spread[k] > spread[best] { k } else { best });
     let mid = a + (b - a) / 2;
     buf[a..b].select_nth_unstable_by(mid - a, |p, q| {
         component(p, axis).total_cmp(&component(q, axis))
