@@ -98,3 +98,51 @@ fn weighted_collisions_per_particle_are_the_physical_rate() {
         );
     }
 }
+
+/// The weighted gas reaches the Maxwell cooling state's scaled distribution (alpha = 1/2, the
+/// reduced-speed shells of `c = |v - V|/sqrt(2 T)` below 3.5 averaged over t in [10, 20],
+/// where `T` falls five decades and the run reduces many times): each shell's weight within
+/// the joint 99.9% interval (Bonferroni over the 14 shells, Student-t at the smaller run's
+/// degrees of freedom) of equal weights' at n = 4096. The deterministic replacement a
+/// reduction first used (two points `V +- sigma e` keeping each cell's momentum and energy)
+/// failed here by 10-40% per shell (chi^2 per shell 240-400 at `n0 = 256`); the sampled
+/// cells of core/src/weighted/group.rs pass. At `n0 = 1024`: at 256 a finite-`n0` residual
+/// of a few percent shows in the shells beyond 2 (docs/weighted.md).
+#[test]
+fn the_weighted_cooling_state_has_the_equal_weight_distribution() {
+    let set = [
+        "observe.t_end=20",
+        "observe.intervals=20",
+        "observe.spacing=linear",
+        "observe.steady_from=10",
+        "reduced_histogram.shells=20",
+        "reduced_histogram.radius=5",
+    ];
+    let equal = run(&shipped_set("hcs-maxwell", &set, 4096, 400, 81));
+    let mut weighted_set = set.to_vec();
+    weighted_set.push("scheme.kind=weighted");
+    let weighted = run(&shipped_set("hcs-maxwell", &weighted_set, 1024, 50, 82));
+    let (e, w) = (
+        equal.reduced.as_ref().unwrap(),
+        weighted.reduced.as_ref().unwrap(),
+    );
+    let shells = 14;
+    let f = gdsmc_stats::family(shells, gdsmc_stats::dof(weighted.ensembles));
+    let mut worst: f64 = 0.0;
+    for k in 0..shells {
+        let (a, ca) = (e.weights.mean(k), e.weights.ci(k));
+        let (b, cb) = (w.weights.mean(k), w.weights.ci(k));
+        let z = (a - b).abs() / (ca * ca + cb * cb).sqrt();
+        worst = worst.max(z);
+        assert!(
+            z <= f,
+            "shell {k}: weighted {b} +- {cb}, equal weights {a} +- {ca} ({z:.2} > {f:.2} half-widths)"
+        );
+    }
+    // The verdict can fail: equal weights' intervals are a few percent of each shell.
+    assert!(
+        e.weights.ci(4) < 0.02 * e.weights.mean(4),
+        "shell 4 resolved"
+    );
+    eprintln!("worst shell {worst:.2} of {f:.2} joint half-widths");
+}

@@ -1,16 +1,14 @@
 //! Cells of nearby velocities for a reduction: a run of particles split at the median of its
 //! widest velocity component, recursively and in place (a k-d partition), until a cell is
-//! small; each cell of 3 or more particles is then replaced by two ([`reduce_group`]). Grouping
-//! by the velocity vector keeps a reduction local: a group's two particles lie within its
-//! cell's spread of where its particles were (grouping by speed alone mixes directions, and
-//! the replacements' speeds then spread over the whole shell: repeated, that heats the tail).
+//! small; each cell of 3 or more particles is then replaced by a sample of two of its own
+//! velocities ([`Tally::replace`]). Grouping by the velocity vector keeps a reduction local: a
+//! cell's sample lies where its particles were (grouping by speed alone mixes directions).
 
-use super::group::reduce_group;
+use super::group::Tally;
 use crate::geometry::DimensionChoice;
 use crate::math::Real;
 use crate::particles::Particle;
 use crate::rng::Rng;
-use crate::vec3::Vec3;
 
 /// Component `k` of a particle's velocity.
 fn component(p: &Particle, k: usize) -> Real {
@@ -21,8 +19,8 @@ fn component(p: &Particle, k: usize) -> Real {
     }
 }
 
-/// Reduces the packed records `buf[a..b]` ([`super::packed`]) cell by cell (module docs; the flow velocity `flow` is
-/// the system's, [`reduce_group`]'s), writing what is left from
+/// Reduces the packed records `buf[a..b]` ([`super::packed`]) cell by cell (module docs; each
+/// cell's sample marked and counted in `tally`, [`Tally::replace`]), writing what is left from
 /// `buf[*out]` on (`*out <= a`: what a call writes never passes what it has read) and
 /// advancing `*out`. A cell is small when `small(cell)` holds or it has at most 2 particles.
 pub(crate) fn reduce_cells<R: Rng + ?Sized>(
@@ -30,15 +28,18 @@ pub(crate) fn reduce_cells<R: Rng + ?Sized>(
     (a, b): (usize, usize),
     out: &mut usize,
     small: &impl Fn(&[Particle]) -> bool,
-    (flow, dim, rng): (Vec3, DimensionChoice, &mut R),
+    (tally, dim, rng): (&mut Tally, DimensionChoice, &mut R),
 ) {
     debug_assert!(*out <= a);
     if b - a <= 2 || small(&buf[a..b]) {
         if b - a >= 3 {
-            let two = reduce_group(&buf[a..b], flow, dim, rng);
-            buf[*out] = two[0];
-            buf[*out + 1] = two[1];
-            *out += 2;
+            let (first, second) = tally.replace(&buf[a..b], rng);
+            buf[*out] = first;
+            *out += 1;
+            if let Some(p) = second {
+                buf[*out] = p;
+                *out += 1;
+            }
         } else {
             for k in a..b {
                 buf[*out] = buf[k];
@@ -61,6 +62,6 @@ pub(crate) fn reduce_cells<R: Rng + ?Sized>(
     buf[a..b].select_nth_unstable_by(mid - a, |p, q| {
         component(p, axis).total_cmp(&component(q, axis))
     });
-    reduce_cells(buf, (a, mid), out, small, (flow, dim, &mut *rng));
-    reduce_cells(buf, (mid, b), out, small, (flow, dim, rng));
+    reduce_cells(buf, (a, mid), out, small, (&mut *tally, dim, &mut *rng));
+    reduce_cells(buf, (mid, b), out, small, (tally, dim, rng));
 }

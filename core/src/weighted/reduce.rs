@@ -1,10 +1,12 @@
-//! The reduction of weighted particles (Rjasanow and Wagner 1996): groups of particles close in
-//! velocity replaced by two each, keeping each group's weight, momentum and energy, so the
-//! particle number the collisions grow stays bounded. Every particle must be at the time `t`
+//! The reduction of weighted particles (Rjasanow and Wagner 1996): cells of particles close in
+//! velocity replaced by a sample of two of their own velocities each (unbiased: the expected
+//! measure is the cell's), the replaced set's weight, momentum and energy kept by one affine
+//! correction (super::group), so the particle number the collisions grow stays bounded. Every particle must be at the time `t`
 //! a reduction is given (the loop kicks them there first): the replacements are last kicked
 //! then.
 
 use super::cells::reduce_cells;
+use super::group::Tally;
 use super::moments::momentum;
 use super::packed::{pack, unpack, weight};
 use crate::geometry::DimensionChoice;
@@ -14,8 +16,9 @@ use crate::rng::Rng;
 
 /// Reduces the weighted particles `p` (all at time `t`) cell by cell: split at the median of
 /// the widest velocity component, recursively, into cells of at most `group` (at least 3),
-/// each replaced by two (super::group, super::cells). Returns the particles left, about
-/// `2 len / group`.
+/// each replaced by a sample of two of its velocities, the replaced set's weight, momentum and
+/// energy kept (super::group, super::cells). Returns the particles left, at most
+/// `2 len / group` or so.
 pub fn reduce<R: Rng + ?Sized>(
     p: &mut Particles<'_>,
     t: Real,
@@ -27,10 +30,18 @@ pub fn reduce<R: Rng + ?Sized>(
     let mut out = 0;
     let small = |c: &[Particle]| c.len() <= group;
     let flow = (1.0 / p.mass()) * momentum(p);
+    let mut tally = Tally::new(flow);
     let (buf, len) = pack(p);
-    reduce_cells(buf, (0, len), &mut out, &small, (flow, dim, rng));
-    unpack(p, out.max(2), t);
-    out.max(2)
+    reduce_cells(
+        buf,
+        (0, len),
+        &mut out,
+        &small,
+        (&mut tally, dim, &mut *rng),
+    );
+    tally.conserve(buf, &mut out, dim, rng);
+    unpack(p, out, t);
+    out
 }
 
 /// A cell of an allocated reduction is small when it weighs at most this many times the
@@ -47,7 +58,7 @@ pub const MAX_SHELLS: usize = 64;
 /// How a weighted loop reduces its particles when the buffer is full.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Reduction {
-    /// Every cell of at most `group` nearby velocities by two ([`reduce`]): the particles
+    /// Every cell of at most `group` nearby velocities by a sample of two ([`reduce`]): the particles
     /// keep the shape of the distribution's mass.
     Cells {
         /// Particles per cell (at least 3).
@@ -108,9 +119,9 @@ impl Reduction {
 /// given
 /// `K_s = target W_s^q / sum W^q` particles (`q` the `exponent`), so each particle it keeps
 /// weighs about `w_s = W_s / K_s`; its particles are split into cells of nearby velocities
-/// (super::cells) until a cell weighs at most [`CELL_WEIGHT`] `w_s`, and each cell of 3 or more becomes two
-/// ([`super::reduce_group`]; a cell of 1 or 2 is kept as it is). Keeps every group's weight, momentum and energy. Returns the
-/// particles left.
+/// (super::cells) until a cell weighs at most [`CELL_WEIGHT`] `w_s`, and each cell of 3 or
+/// more becomes a sample of two of its velocities (a cell of 1 or 2 is kept as it is), the
+/// replaced set's weight, momentum and energy kept (super::group). Returns the particles left.
 pub fn reduce_allocated<R: Rng + ?Sized>(
     p: &mut Particles<'_>,
     t: Real,
@@ -120,6 +131,7 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
 ) -> usize {
     let shells = shells.clamp(1, MAX_SHELLS);
     let flow = (1.0 / p.mass()) * momentum(p);
+    let mut tally = Tally::new(flow);
     let (buf, len) = pack(p);
     // Shells of equal width in speed up to the fastest particle, their bounds and weights
     // taken before any is rewritten.
@@ -146,10 +158,11 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
         let keep = target as Real * libm::pow(ws, q) / norm;
         let each = ws / keep;
         let small = |c: &[Particle]| c.iter().map(weight).sum::<Real>() <= CELL_WEIGHT * each;
-        reduce_cells(buf, (a, b), &mut out, &small, (flow, dim, &mut *rng));
+        reduce_cells(buf, (a, b), &mut out, &small, (&mut tally, dim, &mut *rng));
     }
-    unpack(p, out.max(2), t);
-    out.max(2)
+    tally.conserve(buf, &mut out, dim, rng);
+    unpack(p, out, t);
+    out
 }
 
 /// Orders `buf` by shell (`shell_of`, below `shells`) in place, in linear time (a counting sort
