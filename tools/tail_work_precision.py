@@ -43,10 +43,9 @@ EQUAL = ['scheme={kind="no-splitting"}']
 CONFIGS = [
     ("equal n=1024", 1024, 100000, EQUAL),
     ("equal n=4096", 4096, 25000, EQUAL),
-    ("weighted n0=256", 256, 200, []),
-    ("weighted n0=256 cap 8", 256, 200, ["scheme.capacity=8"]),
-    ("weighted n0=256 cap 16", 256, 200, ["scheme.capacity=16"]),
-    ("weighted n0=1024", 1024, 50, []),
+    ("weighted n0=256", 256, 1000, []),
+    ("weighted n0=256 tail_kappa 3", 256, 1000, ["scheme.tail_kappa=3"]),
+    ("weighted n0=1024", 1024, 250, []),
 ]
 
 
@@ -97,21 +96,22 @@ def svg(points, path):
     ly = [math.log10(p[3]) for p in pts]
     x0, x1 = math.floor(min(lx)), math.ceil(max(lx))
     y0, y1 = math.floor(min(ly)), math.ceil(max(ly))
-    w, h, m = 640, 420, 70
-    sx = lambda v: m + (v - x0) / max(x1 - x0, 1) * (w - 2 * m)
+    w, h, m, legend = 820, 420, 70, 240
+    sx = lambda v: m + (v - x0) / max(x1 - x0, 1) * (w - legend - 2 * m)
     sy = lambda v: h - m - (v - y0) / max(y1 - y0, 1) * (h - 2 * m)
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" '
            'font-family="sans-serif" font-size="12">',
            f'<rect width="{w}" height="{h}" fill="white"/>',
-           f'<text x="{w / 2}" y="20" text-anchor="middle">P(|c| &gt; 8 thermal speeds), GRW '
-           'Example 3: standard error against CPU time</text>']
+           f'<text x="{(w - legend) / 2}" y="20" text-anchor="middle">P(|c| &gt; 8 thermal '
+           'speeds), GRW Example 3: standard error against CPU time</text>']
     for e in range(x0, x1 + 1):
         out.append(f'<line x1="{sx(e)}" y1="{sy(y0)}" x2="{sx(e)}" y2="{sy(y1)}" stroke="#ddd"/>')
         out.append(f'<text x="{sx(e)}" y="{h - m + 18}" text-anchor="middle">1e{e}</text>')
     for e in range(y0, y1 + 1):
         out.append(f'<line x1="{sx(x0)}" y1="{sy(e)}" x2="{sx(x1)}" y2="{sy(e)}" stroke="#ddd"/>')
         out.append(f'<text x="{m - 6}" y="{sy(e) + 4}" text-anchor="end">1e{e}</text>')
-    out.append(f'<text x="{w / 2}" y="{h - 20}" text-anchor="middle">CPU seconds</text>')
+    out.append(f'<text x="{(w - legend) / 2}" y="{h - 20}" text-anchor="middle">CPU seconds '
+               '(one point a run; lower left is better)</text>')
     out.append(f'<text x="16" y="{h / 2}" transform="rotate(-90 16 {h / 2})" '
                'text-anchor="middle">standard error of the mean</text>')
     for k, lab in enumerate(labels):
@@ -120,8 +120,8 @@ def svg(points, path):
             if p[0] == lab:
                 out.append(f'<circle cx="{sx(math.log10(p[2])):.1f}" '
                            f'cy="{sy(math.log10(p[3])):.1f}" r="4" fill="{col}"/>')
-        out.append(f'<circle cx="{w - m - 150}" cy="{m + 16 * k}" r="4" fill="{col}"/>')
-        out.append(f'<text x="{w - m - 140}" y="{m + 16 * k + 4}">{lab}</text>')
+        out.append(f'<circle cx="{w - legend}" cy="{m + 16 * k}" r="4" fill="{col}"/>')
+        out.append(f'<text x="{w - legend + 10}" y="{m + 16 * k + 4}">{lab}</text>')
     out.append("</svg>")
     open(path, "w").write("\n".join(out) + "\n")
 

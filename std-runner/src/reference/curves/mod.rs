@@ -4,7 +4,7 @@
 
 use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
 use crate::run::{initial_sampler, initial_temperature};
-use crate::scene::{BackgroundKernel, DriveChoice, DriveKind, KernelKind, Scene, SchemeChoice};
+use crate::scene::{BackgroundKernel, DriveChoice, KernelKind, Scene, SchemeChoice};
 
 mod cooling;
 pub mod holds;
@@ -143,23 +143,22 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroMode
     Some([m(Closure::LocalEquilibrium), m(Closure::Grad)])
 }
 
-/// The Boltzmann limit of `a2(t)` of the smooth one-species Maxwell gas without white noise
-/// (`reference/maxwell_cumulant.rs`), cooling or under the Gaussian thermostat (which leaves
-/// it as it is), when the scene is one; not for MS's time-stepped scheme, whose collisions
-/// are not the Maxwell process's.
+/// The Boltzmann limit of `a2(t)` of the smooth one-species Maxwell gas
+/// (`reference/maxwell_cumulant.rs`) under every drive that heats linearly: cooling, white
+/// noise, the Gaussian thermostat (which leaves it as cooling has it) and the Langevin
+/// thermostat, when the scene is one; not for MS's time-stepped scheme, whose collisions are
+/// not the Maxwell process's.
 pub fn maxwell_cumulant(
     scene: &Scene,
 ) -> Option<crate::reference::maxwell_cumulant::MaxwellCumulant> {
     use crate::reference::maxwell_cumulant::{MaxwellCumulant, moment_ratio};
     let (alpha, gamma, c) = smooth_maxwell(scene)?;
-    if !matches!(
-        scene.physics().drive.kind(),
-        DriveKind::None | DriveKind::Gaussian
-    ) || matches!(scene.physics().scheme, SchemeChoice::TimeStepped(_))
-    {
+    if matches!(scene.physics().scheme, SchemeChoice::TimeStepped(_)) {
         return None;
     }
+    let heating = scene.model().heating()?;
     let d = scene.dimension();
     let r0 = moment_ratio(&initial_sampler(scene), d);
-    Some(MaxwellCumulant::new(d, alpha, gamma, c, r0))
+    let t0 = initial_temperature(scene);
+    MaxwellCumulant::heated(d, alpha, (gamma, c), (t0, r0), heating)
 }

@@ -211,7 +211,7 @@ pub const REFERENCES: &[Reference] = &[
             particles: Particles::SmoothTranslation,
             kernels: MAXWELL,
             laws: CONSTANT,
-            drives: COOLING,
+            drives: LINEAR,
             schemes: BOLTZMANN,
             dimensions: ANY_D,
             when: None,
