@@ -75,14 +75,23 @@ def run_one(gdsmc, label, n, m, sets, seed, workdir):
     if status != 0:
         sys.exit(f"{label}: gdsmc run failed ({status}): {err}")
     cpu = usage.ru_utime + usage.ru_stime
-    rows = list(csv.DictReader(open(os.path.join(out, "reduced.csv"))))
+    return cpu, tails_of(list(csv.DictReader(open(os.path.join(out, "reduced.csv")))))
+
+
+def tails_of(rows):
+    """`{c: (P(|c| > c thermal speeds), its half-width or a bound, exact)}` from the rows of a
+    reduced.csv with 4 shells to `8/sqrt(2)` and the bin beyond: the bins from the one that
+    starts at `c/sqrt(2)` on (the half-widths summed: a bound unless it is the last bin)."""
+    edges = [float(r["c_lo"]) for r in rows]
     f = [float(r["f"]) for r in rows]
     ci = [float(r["f_ci"]) for r in rows]
     tails = {}
-    for k, c in enumerate(THERMAL):
-        first = k + 2  # bins 0..3 are [0,2), [2,4), [4,6), [6,8) thermal speeds; bin 4 beyond
+    for c in THERMAL:
+        first = min(range(len(edges)), key=lambda k: abs(edges[k] - c / math.sqrt(2.0)))
+        if abs(edges[first] - c / math.sqrt(2.0)) > 1e-9 * c:
+            sys.exit(f"no bin starts at {c} thermal speeds: {edges}")
         tails[c] = (sum(f[first:]), sum(ci[first:]), first == len(f) - 1)
-    return cpu, tails
+    return tails
 
 
 def svg(points, path):
