@@ -33,7 +33,7 @@ pub(crate) fn reduce_cells<R: Rng + ?Sized>(
     debug_assert!(*out <= a);
     if b - a <= 2 || small(&buf[a..b]) {
         if b - a >= 3 {
-            let (first, second) = tally.replace(&buf[a..b], rng);
+            let (first, second) = tally.replace(&mut buf[a..b], rng);
             buf[*out] = first;
             *out += 1;
             if let Some(p) = second {

@@ -3,7 +3,8 @@
 //! replaced (Rjasanow and Wagner 1996's reduction step, made unbiased).
 //!
 //! A cell of weight `W` becomes two particles of weight `W/2` at the velocities of two of its
-//! members drawn by systematic sampling, each member `2 g_k / W` times on average (one
+//! members drawn by systematic sampling in order of their speed about the flow (one from the
+//! slower half of the weight, one from the faster), each member `2 g_k / W` times on average (one
 //! particle of weight `W` when a member heavier than half is drawn twice), so the expected
 //! measure after the draw is the cell's measure: `E[W/2 (phi(v_i) + phi(v_j))] = sum_k g_k phi(v_k)` for every `phi`, the
 //! histograms and the tail included. The draw keeps each cell's weight exactly, its momentum
@@ -78,14 +79,22 @@ impl Tally {
 
     /// The sample in place of `group` (at least one packed record, each weight positive):
     /// one or two packed records, their weights negated to mark them for [`Tally::conserve`];
-    /// `None` in the second slot when the same member was drawn twice.
+    /// `None` in the second slot when the same member was drawn twice. The members are put in
+    /// order of speed about the flow first, so the systematic sample takes one from the slower
+    /// half of the weight and one from the faster (a sample stratified by speed, as unbiased
+    /// as any order, with less noise in what depends on the speed: the tail probabilities).
     pub(crate) fn replace<R: Rng + ?Sized>(
         &mut self,
-        group: &[Particle],
+        group: &mut [Particle],
         rng: &mut R,
     ) -> (Particle, Option<Particle>) {
+        let flow = self.flow;
+        group.sort_unstable_by(|p, q| {
+            let speed2 = |x: &Particle| (x.velocity() - flow).norm2();
+            speed2(p).total_cmp(&speed2(q))
+        });
         let w: Real = group.iter().map(weight).sum();
-        for p in group {
+        for p in group.iter() {
             let c = p.velocity() - self.flow;
             self.before.0 += weight(p) * c;
             self.before.1 += weight(p) * c.norm2();
@@ -184,7 +193,7 @@ mod tests {
         let mut got = [0.0; 4];
         let mut tally = Tally::new(Vec3::ZERO);
         for _ in 0..m {
-            let (a, b) = tally.replace(&group, &mut rng);
+            let (a, b) = tally.replace(&mut group.clone(), &mut rng);
             for p in [Some(a), b].into_iter().flatten() {
                 got[p.vx as usize] += -weight(&p);
             }
@@ -235,7 +244,7 @@ mod tests {
                 let mut buf = [Particle::default(); 8];
                 let mut len = 0;
                 for c in set {
-                    let (a, b) = tally.replace(c, &mut rng);
+                    let (a, b) = tally.replace(&mut c.clone(), &mut rng);
                     for p in [Some(a), b].into_iter().flatten() {
                         buf[len] = p;
                         len += 1;
