@@ -39,13 +39,21 @@ THERMAL = (4, 6, 8)
 RADIUS = 8.0 / math.sqrt(2.0)
 
 EQUAL = ['scheme={kind="no-splitting"}']
-# label, particles, ensembles, --set values (the scene's weighted keys unless replaced).
+# The tail transfer without windows (the scene's settings before the windows), every key set
+# here so that a change of the scene does not change what a label runs.
+TAIL = ["scheme.tail_kappa=7", "scheme.tail_speed=2.5", "scheme.exponent=0.5", "scheme.split=0"]
+# The weight windows (scenes/grw-example3-weighted.toml), likewise.
+WINDOWS = ["scheme.tail_kappa=0", "scheme.exponent=0.25", "scheme.split=2"]
+# label, particles, ensembles, --set values.
 CONFIGS = [
     ("equal n=1024", 1024, 100000, EQUAL),
     ("equal n=4096", 4096, 25000, EQUAL),
-    ("weighted n0=256", 256, 1000, []),
-    ("weighted n0=256 tail_kappa 3", 256, 1000, ["scheme.tail_kappa=3"]),
-    ("weighted n0=1024", 1024, 250, []),
+    ("tail transfer n0=1024", 1024, 250, TAIL),
+    ("windows n0=1024", 1024, 250, WINDOWS),
+    ("windows n0=1024 q=0", 1024, 250, WINDOWS + ["scheme.exponent=0"]),
+    ("windows n0=1024 target 4", 1024, 250, WINDOWS + ["scheme.target=4", "scheme.capacity=8"]),
+    ("windows and tail transfer n0=1024 q=0", 1024, 250,
+     TAIL + ["scheme.split=2", "scheme.exponent=0"]),
 ]
 
 
@@ -179,7 +187,7 @@ def main():
     for c in THERMAL:
         eq = [med[(l, c)] for l, *_ in configs if l.startswith("equal") and med[(l, c)] > 0]
         for l, *_ in configs:
-            if l.startswith("weighted") and eq and med[(l, c)] > 0:
+            if not l.startswith("equal") and eq and med[(l, c)] > 0:
                 print(f"c = {c}: best equal weights / {l}: {min(eq) / med[(l, c)]:.1f}x")
 
 

@@ -45,7 +45,7 @@ fn start<G: gdsmc_core::geometry::Geometry>(
 fn ratios<G: gdsmc_core::geometry::Geometry>(
     (ensembles, cap): (usize, usize),
     seed: u64,
-    (transfer, reduction): (Transfer, Reduction),
+    (transfer, reduction, split): (Transfer, Reduction, f64),
 ) -> (Vec<[f64; 3]>, usize, u64) {
     let n0 = 64;
     // gamma C = 1/(4 pi): int B de = 1.
@@ -65,7 +65,9 @@ fn ratios<G: gdsmc_core::geometry::Geometry>(
             &mut sys,
             0.0,
         )
-        .unwrap();
+        .unwrap()
+        .with_windows(split);
+        e.resync(&mut sys).unwrap();
         let mut r = [0.0; 3];
         for (k, &t) in TIMES.iter().enumerate() {
             let o = e.advance_to(&mut sys, t, &mut rng).unwrap();
@@ -83,7 +85,11 @@ fn check<G: gdsmc_core::geometry::Geometry>(seed: u64, reduction: Reduction) {
     check_with::<G>(seed, (Transfer::new(1.0).unwrap(), reduction));
 }
 
-fn check_with<G: gdsmc_core::geometry::Geometry>(seed: u64, how: (Transfer, Reduction)) {
+fn check_with<G: gdsmc_core::geometry::Geometry>(seed: u64, (t, r): (Transfer, Reduction)) {
+    check_split::<G>(seed, (t, r, 0.0));
+}
+
+fn check_split<G: gdsmc_core::geometry::Geometry>(seed: u64, how: (Transfer, Reduction, f64)) {
     let (r, most, reductions) = ratios::<G>((400, 256), seed, how);
     assert!(
         most > 64 && reductions > 0,
@@ -134,6 +140,24 @@ fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
     check_with::<Disks>(35, (tail, Reduction::Cells { group: 4 }));
 }
 
+/// With weight windows (`weighted::windows`: a particle heavier than twice its speed shell's
+/// share split into pieces of the share, after the event that touched it and at every
+/// observation) the process keeps GRW's exact rate: a split keeps the measure itself, and it
+/// is a change of state after an event, the next waiting time drawn at the new rate. Equal
+/// weights with whole transfers: only the windows make particles (every shell given the same
+/// number, so the few fast particles of the start are split at once), in d = 3 and 2.
+#[test]
+fn the_windowed_maxwell_gas_cools_at_grws_exact_rate() {
+    let equal_shells = Reduction::Allocated {
+        target: 96,
+        shells: 16,
+        exponent: 0.0,
+    };
+    let whole = Transfer::new(0.0).unwrap();
+    check_split::<Spheres>(36, (whole, equal_shells, 2.0));
+    check_split::<Disks>(37, (whole, equal_shells, 2.0));
+}
+
 /// A reduction is a change of state at an instant, after the collision that filled the buffer,
 /// not an event of the majorant: a first version reduced in place of the next candidate and so
 /// dropped one event of the old rate each time, and the gas cooled too slowly. With room for
@@ -143,7 +167,11 @@ fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
 #[test]
 fn a_reduction_drops_no_event() {
     for (seed, d3) in [(81, true), (82, false)] {
-        let how = (Transfer::new(0.0).unwrap(), Reduction::Cells { group: 4 });
+        let how = (
+            Transfer::new(0.0).unwrap(),
+            Reduction::Cells { group: 4 },
+            0.0,
+        );
         let (r, _, reductions) = if d3 {
             ratios::<Spheres>((4000, 65), seed, how)
         } else {

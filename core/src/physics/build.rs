@@ -77,7 +77,8 @@ impl Model {
                         w.reduction(self.n()),
                         p,
                         t0,
-                    )?;
+                    )?
+                    .with_windows(w.split);
                     let obs = e.resync(p)?;
                     Ok((e, obs))
                 };

@@ -76,8 +76,8 @@ pub use crate::mixture::{MAX_PAIRS, MAX_SPECIES};
 pub const DEFAULT_STEP_FACTOR: Real = 0.01;
 
 /// The parameters of the weighted scheme (`[scheme]` keys `kappa`, `tail_kappa`, `tail_speed`,
-/// `capacity`, `target`, `exponent`; [`SchemeKind::params`]): the most any scheme has.
-pub const WEIGHTED_PARAMS: usize = 6;
+/// `capacity`, `target`, `exponent`, `split`; [`SchemeKind::params`]): the most any scheme has.
+pub const WEIGHTED_PARAMS: usize = 7;
 
 /// Most components an initial mixture of Maxwellians may have (BRS (35)).
 pub const MAX_COMPONENTS: usize = 16;

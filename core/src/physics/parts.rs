@@ -213,6 +213,8 @@ pub(super) struct WeightedModel {
     pub(super) capacity: Real,
     pub(super) target: Real,
     pub(super) exponent: Real,
+    /// The weight windows' split ([`crate::weighted::windows`]; 0: none).
+    pub(super) split: Real,
 }
 
 /// The speed shells of the weighted scheme's reduction (`exponent`'s words say 32).
@@ -408,7 +410,17 @@ pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, Phy
             );
         }
         #[cfg(feature = "weighted")]
-        SchemeChoice::Weighted([kappa, tail_kappa, tail_speed, capacity, target, exponent]) => {
+        SchemeChoice::Weighted(
+            [
+                kappa,
+                tail_kappa,
+                tail_speed,
+                capacity,
+                target,
+                exponent,
+                split,
+            ],
+        ) => {
             if let Some(why) = d.kind().stepped_only() {
                 return err(Param::Scheme, Problem::DoesNotFit(why));
             }
@@ -437,6 +449,7 @@ pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, Phy
                 capacity,
                 target,
                 exponent,
+                split,
             })
         }
     })

@@ -92,6 +92,15 @@ const WEIGHTED: [ParamSpec; WEIGHTED_PARAMS] = [
         default: Some(0.5),
         example: 0.5,
     },
+    ParamSpec {
+        name: "split",
+        rule: Rule::AtLeastZero,
+        words: "a particle heavier than this times its speed shell's share is split into \
+                pieces of the share (0: never)",
+        unit: "1",
+        default: Some(0.0),
+        example: 2.0,
+    },
 ];
 
 impl SchemeKind {

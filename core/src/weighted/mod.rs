@@ -24,6 +24,7 @@ pub mod nosplit;
 mod packed;
 pub mod reduce;
 pub mod transfer;
+pub mod windows;
 
 pub use reduce::{Reduction, reduce, reduce_allocated};
 pub use transfer::{Transfer, collide, collide_with};

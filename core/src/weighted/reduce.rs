@@ -9,6 +9,7 @@ use super::cells::reduce_cells;
 use super::group::Tally;
 use super::moments::momentum;
 use super::packed::{pack, unpack, weight};
+use super::windows::Allocation;
 use crate::geometry::DimensionChoice;
 use crate::math::{Real, sqrt};
 use crate::particles::{Particle, Particles};
@@ -52,8 +53,7 @@ pub fn reduce<R: Rng + ?Sized>(
 /// `2 w_s` left about 1.45 `K_s`, and reductions came 1.8 times as often as they need to).
 pub const CELL_WEIGHT: Real = 2.0 / core::f64::consts::LN_2;
 
-/// The most speed shells an allocated reduction cuts ([`reduce_allocated`]).
-pub const MAX_SHELLS: usize = 64;
+pub use super::windows::MAX_SHELLS;
 
 /// How a weighted loop reduces its particles when the buffer is full.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -129,34 +129,22 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
     dim: DimensionChoice,
     rng: &mut R,
 ) -> usize {
-    let shells = shells.clamp(1, MAX_SHELLS);
     let flow = (1.0 / p.mass()) * momentum(p);
     let mut tally = Tally::new(flow);
     let (buf, len) = pack(p);
     // Shells of equal width in speed up to the fastest particle, their bounds and weights
     // taken before any is rewritten.
-    let speed = |p: &Particle| sqrt((p.velocity() - flow).norm2());
-    let top = buf[..len].iter().map(speed).fold(0.0, crate::math::max);
-    let per = if top > 0.0 { shells as Real / top } else { 0.0 };
-    let shell_of = |p: &Particle| ((speed(p) * per) as usize).min(shells - 1);
+    let alloc = Allocation::of_packed(&buf[..len], flow, (target, shells, q));
+    let shells = alloc.shells;
+    let shell_of = |p: &Particle| alloc.shell(sqrt((p.velocity() - flow).norm2()));
     let edges = by_shell(&mut buf[..len], shells, &shell_of);
-    let mut weights = [0.0; MAX_SHELLS];
-    for s in 0..shells {
-        weights[s] = buf[edges[s]..edges[s + 1]].iter().map(weight).sum();
-    }
-    let norm: Real = (weights[..shells].iter())
-        .filter(|&&w| w > 0.0)
-        .map(|&w| libm::pow(w, q))
-        .sum();
     let mut out = 0;
     for s in 0..shells {
         let (a, b) = (edges[s], edges[s + 1]);
-        let ws = weights[s];
         if a == b {
             continue;
         }
-        let keep = target as Real * libm::pow(ws, q) / norm;
-        let each = ws / keep;
+        let each = alloc.each[s];
         let small = |c: &[Particle]| c.iter().map(weight).sum::<Real>() <= CELL_WEIGHT * each;
         reduce_cells(buf, (a, b), &mut out, &small, (&mut tally, dim, &mut *rng));
     }

@@ -39,6 +39,7 @@ mod report;
 use super::moments::{momentum, observables};
 use super::reduce::Reduction;
 use super::transfer::{Transfer, collide_with};
+use super::windows::{Allocation, Windows};
 use crate::collision::inelastic;
 use crate::drive::Drive;
 use crate::engine::collision_map::clamped_coefficient;
@@ -84,6 +85,13 @@ pub struct WeightedNoSplitting<K, A, D, G> {
     frame: Frame,
     counts: Counts,
     reductions: u64,
+    /// A particle heavier than this times its shell's share is split (0: never;
+    /// [`super::windows`]).
+    split: Real,
+    /// The windows of the last refresh (with an allocated reduction and `split > 0`).
+    windows: Option<Windows>,
+    /// The copies the splits made.
+    splits: u64,
     dim: core::marker::PhantomData<G>,
 }
 
@@ -130,10 +138,52 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             frame: Frame::IDENTITY,
             counts: Counts::default(),
             reductions: 0,
+            split: 0.0,
+            windows: None,
+            splits: 0,
             dim: core::marker::PhantomData,
         };
         s.refresh(sys)?;
         Ok(s)
+    }
+
+    /// The loop with weight windows ([`super::windows`]): after every event a particle the
+    /// event touched that is heavier than `split` times its speed shell's share (the allocated
+    /// reduction's, measured at every refresh of the bounds) is split into pieces of about
+    /// the share. `split = 0` never splits; a reduction by cells has no shares and never
+    /// splits. The windows are measured at the next refresh (the run's resync).
+    #[must_use]
+    pub fn with_windows(mut self, split: Real) -> Self {
+        self.split = split;
+        self
+    }
+
+    /// The copies the weight windows have made so far.
+    pub fn splits(&self) -> u64 {
+        self.splits
+    }
+
+    /// Particle `i` split by the windows (module docs of [`super::windows`]) into copies at
+    /// its velocity and last-kick time, as many as half the free room beyond a collision's two
+    /// allows.
+    fn split(&mut self, sys: &mut Particles<'_>, i: usize) {
+        let Some(w) = &self.windows else {
+            return;
+        };
+        let (q, g) = (sys.as_slice()[i], sys.weight(i));
+        // Half the free room beyond the two a collision's particles need.
+        let room = (sys.capacity() - sys.len()).saturating_sub(2) / 2;
+        let m = w.pieces(q.velocity(), g).min(room + 1);
+        if m < 2 {
+            return;
+        }
+        let piece = g / m as Real;
+        sys.set_weight(i, piece);
+        for _ in 1..m {
+            // Room was counted above.
+            let _ = sys.push(q.velocity(), piece, q.t_kick);
+        }
+        self.splits += (m - 1) as u64;
     }
 
     /// Particle `i` kicked from its last-kick time to now (a drive that acts only).
@@ -178,6 +228,20 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             return Err(EngineError::NonFinite(
                 "a weighted particle's velocity or weight",
             ));
+        }
+        if let (
+            true,
+            Reduction::Allocated {
+                target,
+                shells,
+                exponent,
+            },
+        ) = (self.split > 0.0, self.reduction)
+        {
+            let speeds = (sys.as_slice().iter().zip(sys.weights()))
+                .map(|(p, &w)| (sqrt((p.velocity() - vref).norm2()), w));
+            let a = Allocation::measure(speeds, vref, sqrt(c2), (target, shells, exponent));
+            self.windows = Some(Windows::new(a, self.split));
         }
         self.vref = vref;
         self.umax = 2.0 * sqrt(c2);
@@ -230,6 +294,12 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         self.synchronize(sys, rng);
         let mut o = observables(sys, G::CHOICE.d());
         self.rescale(sys, &mut o)?;
+        // Every particle through the windows (the measure, and so what was observed, is kept).
+        if self.windows.is_some() {
+            for i in 0..sys.len() {
+                self.split(sys, i);
+            }
+        }
         self.physical(sys, &o)
     }
 
@@ -242,24 +312,32 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     ) -> Result<(), EngineError> {
         self.counts.candidates += 1;
         let (i, j) = uniform_pair(rng, sys.len());
+        let (gi, gj) = (sys.weight(i), sys.weight(j));
+        let heavier = if gi > gj { gi } else { gj };
+        // The weights' thinning first: a pair it refuses is neither kicked nor split (a lazy
+        // kick covers the whole time since the last one, whenever it comes).
+        if uniform01(rng) * self.gmax >= heavier {
+            self.counts.fictitious += 1;
+            return self.count_refresh(sys, rng);
+        }
         self.kick(sys, i, rng);
         self.kick(sys, j, rng);
         let (vi, vj) = (sys.velocity(i), sys.velocity(j));
-        let (gi, gj) = (sys.weight(i), sys.weight(j));
         let u = vi - vj;
-        let heavier = if gi > gj { gi } else { gj };
         let speed = u.norm();
         if K::USES_UMAX && speed > self.umax {
             // A drive moved the pair past the bound that drew this waiting time: the kernel
             // is truncated there (RW (19)); the bound then covers the kicked velocities.
             self.counts.overshoots += 1;
         }
-        let accept = heavier / self.gmax * self.kernel.acceptance(speed, self.umax);
         if D::ACTS {
             self.cover([vi, vj]);
         }
-        if uniform01(rng) >= accept {
+        // The kernel's acceptance (GRW (20); 1 for the Maxwell kernel, which draws nothing).
+        if K::USES_UMAX && uniform01(rng) >= self.kernel.acceptance(speed, self.umax) {
             self.counts.fictitious += 1;
+            self.split(sys, i);
+            self.split(sys, j);
         } else {
             let e = G::scattering::<K, R>(u, rng);
             // The law in stored units: at the physical impact velocity (the map is linear).
@@ -268,8 +346,11 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             let Some(kappa) = self.outcome_kappa((a, b), rng) else {
                 // This outcome's rate is (1 + kappa)/(1 + kappa_max) of the majorant's.
                 self.counts.fictitious += 1;
+                self.split(sys, i);
+                self.split(sys, j);
                 return self.count_refresh(sys, rng);
             };
+            let before = sys.len();
             let gamma =
                 collide_with(sys, (i, j), ((a, b), self.t), kappa).map_err(|e| match e {
                     ParticlesError::Full => EngineError::Invariant("a reduction makes room first"),
@@ -279,6 +360,10 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             self.counts.collisions += 1;
             // Cover the new velocities: no pair overshoots the bound in a collision.
             self.cover([a, b]);
+            // The windows: a change of state after the collision, at its instant.
+            for k in [i, j].into_iter().chain(before..sys.len()) {
+                self.split(sys, k);
+            }
             if sys.len() + 2 > sys.capacity() {
                 self.reduce(sys, rng)?;
             }

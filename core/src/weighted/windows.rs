@@ -1,0 +1,197 @@
+//! Weight windows: a particle heavier than its speed shell's share is split into pieces of
+//! about the share, so that the thin tail is carried by many light particles however a
+//! particle got there (a collision, or a drive's kicks), the splitting of Monte Carlo
+//! transport's weight windows (Booth, "A weight window/importance generator for Monte Carlo
+//! streaming problems", LA-UR 1983; Rjasanow and Wagner 2001's rare events ask the same of
+//! the particle system: particles where the quantity of interest is, lighter).
+//!
+//! The shares are the allocated reduction's ([`super::reduce::reduce_allocated`]): the speed
+//! shells of equal width about the flow up to the fastest particle, shell `s` of weight `W_s`
+//! given `K_s = target W_s^q / sum W^q` particles, each about `w_s = W_s / K_s`. Splitting a
+//! particle of weight `g` into `m` copies of `g/m` at its velocity keeps the measure `sum g
+//! delta_v` itself (not only in expectation): every weighted sum, the mass, momentum and
+//! energy, to rounding. The copies then part by their own collisions and kicks. A split is a
+//! change of state at an event's instant, after the event (the next waiting time is drawn at
+//! the new rate, as after a reduction), so the process stays exact.
+
+use super::packed::weight;
+use crate::math::{Real, sqrt};
+use crate::particles::Particle;
+use crate::vec3::Vec3;
+
+/// The most speed shells an allocation cuts ([`Allocation`]).
+pub const MAX_SHELLS: usize = 64;
+
+/// The most pieces one split makes (a particle still heavier than its window is split again
+/// when it is next touched).
+pub const MAX_PIECES: usize = 64;
+
+/// The allocated reduction's shells and each shell's particle weight `w_s = W_s / K_s`
+/// (module docs), measured from one set of particles.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Allocation {
+    /// The flow the speeds are taken about.
+    pub flow: Vec3,
+    /// Shells per unit of speed (0 when every particle sits at the flow).
+    pub per: Real,
+    /// The shells in use (at most [`MAX_SHELLS`]).
+    pub shells: usize,
+    /// Each shell's weight `W_s`.
+    pub weights: [Real; MAX_SHELLS],
+    /// Each shell's particle weight `w_s` (an empty shell: the nearest slower shell's, or the
+    /// nearest faster one's below the slowest occupied shell).
+    pub each: [Real; MAX_SHELLS],
+}
+
+impl Allocation {
+    /// The allocation of `target` particles over `shells` shells (at most [`MAX_SHELLS`]) by
+    /// the weights to the power `q` (module docs), of the packed records `buf`
+    /// ([`super::packed`]) about `flow`.
+    pub(crate) fn of_packed(
+        buf: &[Particle],
+        flow: Vec3,
+        (target, shells, q): (usize, usize, Real),
+    ) -> Self {
+        let speed = |p: &Particle| sqrt((p.velocity() - flow).norm2());
+        let top = buf.iter().map(speed).fold(0.0, crate::math::max);
+        Self::measure(
+            buf.iter().map(|p| (speed(p), weight(p))),
+            flow,
+            top,
+            (target, shells, q),
+        )
+    }
+
+    /// The allocation of the `(speed about flow, weight)` of every particle, the fastest `top`.
+    pub(crate) fn measure(
+        particles: impl Iterator<Item = (Real, Real)>,
+        flow: Vec3,
+        top: Real,
+        (target, shells, q): (usize, usize, Real),
+    ) -> Self {
+        let shells = shells.clamp(1, MAX_SHELLS);
+        let per = if top > 0.0 { shells as Real / top } else { 0.0 };
+        let mut a = Allocation {
+            flow,
+            per,
+            shells,
+            weights: [0.0; MAX_SHELLS],
+            each: [0.0; MAX_SHELLS],
+        };
+        for (c, g) in particles {
+            a.weights[a.shell(c)] += g;
+        }
+        let norm: Real = (a.weights[..shells].iter())
+            .filter(|&&w| w > 0.0)
+            .map(|&w| libm::pow(w, q))
+            .sum();
+        let mut last = None;
+        for s in 0..shells {
+            let ws = a.weights[s];
+            if ws > 0.0 {
+                let keep = target as Real * libm::pow(ws, q) / norm;
+                a.each[s] = ws / keep;
+                last = Some(a.each[s]);
+            } else if let Some(w) = last {
+                a.each[s] = w;
+            }
+        }
+        // Empty shells below the slowest occupied one take its share.
+        if let Some(first) = (0..shells).find(|&s| a.weights[s] > 0.0) {
+            let w = a.each[first];
+            a.each[..first].fill(w);
+        }
+        a
+    }
+
+    /// The shell of speed `c` (the last beyond the fastest).
+    #[inline(always)]
+    pub fn shell(&self, c: Real) -> usize {
+        ((c * self.per) as usize).min(self.shells - 1)
+    }
+}
+
+/// The weight windows of a weighted loop: a particle heavier than `split` times its shell's
+/// share ([`Allocation::each`]) is cut into `round(g / w_s)` pieces (module docs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Windows {
+    allocation: Allocation,
+    split: Real,
+}
+
+impl Windows {
+    /// Windows of the allocation `allocation`, splitting a particle heavier than `split > 0`
+    /// times its shell's share.
+    pub fn new(allocation: Allocation, split: Real) -> Self {
+        Windows { allocation, split }
+    }
+
+    /// The pieces a particle of velocity `v` and weight `g` is to be cut into (1: kept whole),
+    /// at most [`MAX_PIECES`].
+    #[inline(always)]
+    pub fn pieces(&self, v: Vec3, g: Real) -> usize {
+        let a = &self.allocation;
+        let c = sqrt((v - a.flow).norm2());
+        let w = a.each[a.shell(c)];
+        // `w > 0` for every shell (an occupied one's weight, or a neighbour's share).
+        if g <= self.split * w {
+            return 1;
+        }
+        let m = libm::round(g / w);
+        if m >= MAX_PIECES as Real {
+            MAX_PIECES
+        } else {
+            m as usize
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Shells of width 1 (4 up to speed 4): weights 8, 0, 2, 1 (the fastest particle in the
+    /// last shell). At `q = 0` every occupied shell is given `target / 3` particles, so its
+    /// share is its weight over that; the empty shell takes the slower neighbour's. At `q = 1`
+    /// every share is `sum W / target`, as equal weights have.
+    #[test]
+    fn the_shares_are_the_allocated_reductions() {
+        let parts = [(0.5, 8.0), (2.5, 2.0), (4.0, 1.0)];
+        let a = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (6, 4, 0.0));
+        assert_eq!(a.per, 1.0);
+        assert_eq!(&a.weights[..4], &[8.0, 0.0, 2.0, 1.0]);
+        assert_eq!(&a.each[..4], &[4.0, 4.0, 1.0, 0.5]);
+        let b = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (11, 4, 1.0));
+        for s in [0, 2, 3] {
+            assert!((b.each[s] - 1.0).abs() < 1e-15, "{s}: {}", b.each[s]);
+        }
+        // Empty shells below the slowest occupied one take its share.
+        let c = Allocation::measure([(3.5, 1.0)].into_iter(), Vec3::ZERO, 4.0, (2, 4, 0.0));
+        assert_eq!(&c.each[..4], &[0.5; 4]);
+    }
+
+    /// A particle is split when heavier than `split` times its shell's share, into
+    /// `round(g / w_s)` pieces, at most [`MAX_PIECES`]; the speed is taken about the flow.
+    #[test]
+    fn a_particle_heavier_than_its_window_is_cut_to_its_share() {
+        let flow = Vec3::new(10.0, 0.0, 0.0);
+        let parts = [(0.5, 8.0), (2.5, 2.0), (4.0, 1.0)];
+        let w = Windows::new(
+            Allocation::measure(parts.into_iter(), flow, 4.0, (6, 4, 0.0)),
+            2.0,
+        );
+        let at = |c: Real| flow + Vec3::new(0.0, c, 0.0);
+        assert_eq!(w.pieces(at(0.5), 8.0), 1, "8 = 2 shares: not above");
+        assert_eq!(w.pieces(at(0.5), 8.5), 2);
+        assert_eq!(w.pieces(at(2.5), 2.0), 1);
+        assert_eq!(w.pieces(at(2.5), 3.0), 3);
+        assert_eq!(
+            w.pieces(at(9.0), 3.0),
+            6,
+            "beyond the fastest: the last shell's share"
+        );
+        assert_eq!(w.pieces(at(3.2), 1e6), MAX_PIECES);
+        // 0.5 from zero is 9.5 from the flow: the last shell's share, not the first's.
+        assert_eq!(w.pieces(Vec3::new(0.5, 0.0, 0.0), 3.0), 6, "about the flow");
+    }
+}
