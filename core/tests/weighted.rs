@@ -131,6 +131,7 @@ fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
         target: 96,
         shells: 16,
         exponent: 0.0,
+        floor: 0.0,
     };
     check::<Spheres>(33, equal_shells);
     // A transfer that moves whole weights in the core and an eighth of the lighter partner's
@@ -152,6 +153,7 @@ fn the_windowed_maxwell_gas_cools_at_grws_exact_rate() {
         target: 96,
         shells: 16,
         exponent: 0.0,
+        floor: 0.0,
     };
     let whole = Transfer::new(0.0).unwrap();
     check_split::<Spheres>(36, (whole, equal_shells, 2.0));

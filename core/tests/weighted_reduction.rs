@@ -113,7 +113,7 @@ fn an_allocated_reduction_keeps_the_sums_and_feeds_the_tail() {
         let left = reduce_allocated(
             &mut sys,
             0.0,
-            (100, 10, q),
+            (100, 10, q, 0.0),
             DimensionChoice::Three,
             &mut rng,
         );
@@ -159,6 +159,7 @@ fn repeated_reductions_keep_a_maxwellians_tail() {
             target: 4000,
             shells: 32,
             exponent: 0.0,
+            floor: 0.0,
         },
     ];
     for (r, red) in reductions.iter().enumerate() {
@@ -225,7 +226,7 @@ fn an_allocated_reduction_leaves_the_particles_it_aims_at() {
             total += reduce_allocated(
                 &mut sys,
                 0.0,
-                (1000, 10, q),
+                (1000, 10, q, 0.0),
                 DimensionChoice::Three,
                 &mut rng,
             );

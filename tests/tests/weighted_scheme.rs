@@ -12,11 +12,12 @@ use gdsmc_runner::run::columns::name;
 use gdsmc_validation::*;
 
 /// The weight windows of the shipped heated scene (core/src/weighted/windows.rs): a particle
-/// heavier than twice its speed shell's share split, whole transfers, shells given particles
-/// as their weight to the power 1/4.
-const WINDOWS: [&str; 3] = [
+/// heavier than twice its speed shell's share split, whole transfers, shells given a quarter
+/// of the particles equally and the rest as their weight to the power 1/4.
+const WINDOWS: [&str; 4] = [
     "scheme.split=2",
     "scheme.tail_kappa=0",
+    "scheme.floor=0.25",
     "scheme.exponent=0.25",
 ];
 

@@ -220,8 +220,7 @@ pub(super) trait Build {
     fn model(&self) -> &Model;
     /// The drive `d` as the family's loops take it (every species the same).
     fn each<D: Drive>(&self, d: D) -> Self::Drives<D>;
-    /// The family's white noise, when the physics has it (a rough gas's on translation or
-    /// rotation, a mixture's per species).
+    /// The family's white noise, if any (a rough gas's on translation or rotation, per species).
     fn noise(&self) -> Option<Self::Drives<<Self::F as Family>::Noise>>;
     /// The host medium `h` in the family's dimension, as each species meets it.
     fn host<B: BackgroundKernel>(

@@ -56,6 +56,7 @@ mod parts;
 mod rotation;
 mod schemes;
 mod species;
+mod weighted_scheme;
 
 pub use drives::{BackgroundKernel, DriveChoice, DriveParams};
 pub use engine::Engine;
@@ -76,8 +77,8 @@ pub use crate::mixture::{MAX_PAIRS, MAX_SPECIES};
 pub const DEFAULT_STEP_FACTOR: Real = 0.01;
 
 /// The parameters of the weighted scheme (`[scheme]` keys `kappa`, `tail_kappa`, `tail_speed`,
-/// `capacity`, `target`, `exponent`, `split`; [`SchemeKind::params`]): the most any scheme has.
-pub const WEIGHTED_PARAMS: usize = 7;
+/// `capacity`, `target`, `exponent`, `floor`, `split`; [`SchemeKind::params`]): the most any scheme has.
+pub const WEIGHTED_PARAMS: usize = 8;
 
 /// Most components an initial mixture of Maxwellians may have (BRS (35)).
 pub const MAX_COMPONENTS: usize = 16;

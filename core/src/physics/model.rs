@@ -212,7 +212,10 @@ impl Model {
 #[cfg(feature = "weighted")]
 /// The weighted scheme's rules against the rest of `physics`: smooth particles of one species,
 /// and buffers of `capacity n` particles that memory can address.
-fn weighted_fits(physics: &Physics, w: super::parts::WeightedModel) -> Result<(), PhysicsError> {
+fn weighted_fits(
+    physics: &Physics,
+    w: super::weighted_scheme::WeightedModel,
+) -> Result<(), PhysicsError> {
     use super::error::{Param, Problem};
     let refuse = |why| {
         Err(PhysicsError {

@@ -201,42 +201,7 @@ pub(super) enum SchemeModel {
     Splitting(SplittingOrder, Real),
     TimeStepped(Real),
     #[cfg(feature = "weighted")]
-    Weighted(WeightedModel),
-}
-
-/// The validated weighted scheme: its transfer, and its buffers' room and the reduction's aim
-/// in multiples of the particles a run starts with.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(not(feature = "weighted"), allow(dead_code))]
-pub(super) struct WeightedModel {
-    pub(super) transfer: crate::weighted::Transfer,
-    pub(super) capacity: Real,
-    pub(super) target: Real,
-    pub(super) exponent: Real,
-    /// The weight windows' split ([`crate::weighted::windows`]; 0: none).
-    pub(super) split: Real,
-}
-
-/// The speed shells of the weighted scheme's reduction (`exponent`'s words say 32).
-#[cfg_attr(not(feature = "weighted"), allow(dead_code))]
-const WEIGHTED_SHELLS: usize = 32;
-
-impl WeightedModel {
-    /// The particles the buffers of a run of `n` hold.
-    #[cfg_attr(not(feature = "weighted"), allow(dead_code))]
-    pub(super) fn capacity(&self, n: usize) -> usize {
-        libm::ceil(self.capacity * n as Real) as usize
-    }
-
-    /// The reduction of a run of `n` particles.
-    #[cfg_attr(not(feature = "weighted"), allow(dead_code))]
-    pub(super) fn reduction(&self, n: usize) -> crate::weighted::Reduction {
-        crate::weighted::Reduction::Allocated {
-            target: (libm::round(self.target * n as Real) as usize).max(2),
-            shells: WEIGHTED_SHELLS,
-            exponent: self.exponent,
-        }
-    }
+    Weighted(super::weighted_scheme::WeightedModel),
 }
 
 fn err<T>(param: Param, problem: Problem) -> Result<T, PhysicsError> {
@@ -410,47 +375,8 @@ pub(super) fn scheme(s: SchemeChoice, d: DriveChoice) -> Result<SchemeModel, Phy
             );
         }
         #[cfg(feature = "weighted")]
-        SchemeChoice::Weighted(
-            [
-                kappa,
-                tail_kappa,
-                tail_speed,
-                capacity,
-                target,
-                exponent,
-                split,
-            ],
-        ) => {
-            if let Some(why) = d.kind().stepped_only() {
-                return err(Param::Scheme, Problem::DoesNotFit(why));
-            }
-            if d.kind() == DriveKind::HostMedium {
-                return err(
-                    Param::Scheme,
-                    Problem::DoesNotFit(
-                        "runs drives that act on each particle in closed form, not the host \
-                         medium's collisions",
-                    ),
-                );
-            }
-            let transfer = crate::weighted::Transfer::with_tail(kappa, tail_kappa, tail_speed)
-                .ok_or(PhysicsError {
-                    param: Param::Step(kind, 1),
-                    problem: Problem::DoesNotFit("must be at least kappa"),
-                })?;
-            if target >= capacity {
-                return err(
-                    Param::Step(kind, 4),
-                    Problem::DoesNotFit("must be below capacity"),
-                );
-            }
-            SchemeModel::Weighted(WeightedModel {
-                transfer,
-                capacity,
-                target,
-                exponent,
-                split,
-            })
+        SchemeChoice::Weighted(values) => {
+            SchemeModel::Weighted(super::weighted_scheme::validate(values, d)?)
         }
     })
 }

@@ -93,6 +93,19 @@ const WEIGHTED: [ParamSpec; WEIGHTED_PARAMS] = [
         example: 0.5,
     },
     ParamSpec {
+        name: "floor",
+        rule: Rule::Within {
+            lo: 0.0,
+            hi: 0.95,
+            range: "[0, 0.95]",
+        },
+        words: "the share of a reduction's particles given equally to every occupied speed \
+                shell, the rest by weight to the exponent",
+        unit: "1",
+        default: Some(0.0),
+        example: 0.25,
+    },
+    ParamSpec {
         name: "split",
         rule: Rule::AtLeastZero,
         words: "a particle heavier than this times its speed shell's share is split into \

@@ -76,6 +76,9 @@ pub enum Reduction {
         shells: usize,
         /// The exponent `q` in [0, 1].
         exponent: Real,
+        /// The share `phi` in [0, 1) of `target` given equally to every occupied shell, the
+        /// rest by `W_s^q` ([`super::windows::Allocation`]).
+        floor: Real,
     },
 }
 
@@ -98,8 +101,9 @@ impl Reduction {
                 target,
                 shells,
                 exponent,
+                floor,
             } => {
-                reduce_allocated(p, t, (target, shells, exponent), dim, rng);
+                reduce_allocated(p, t, (target, shells, exponent, floor), dim, rng);
             }
         }
         // Cells of at most 4 (a k-d split halves a run of 2^k particles down to pairs, which
@@ -116,8 +120,8 @@ impl Reduction {
 
 /// Reduces the weighted particles `p` (all at time `t`) toward `target` particles: sorted by speed about the flow and cut into
 /// `shells` shells of equal width in speed up to the fastest, shell `s` of weight `W_s` is
-/// given
-/// `K_s = target W_s^q / sum W^q` particles (`q` the `exponent`), so each particle it keeps
+/// given `K_s = target (phi / S + (1 - phi) W_s^q / sum W^q)` particles (`q` the `exponent`,
+/// `phi` the `floor`, `S` the occupied shells; super::windows::Allocation), so each particle it keeps
 /// weighs about `w_s = W_s / K_s`; its particles are split into cells of nearby velocities
 /// (super::cells) until a cell weighs at most [`CELL_WEIGHT`] `w_s`, and each cell of 3 or
 /// more becomes a sample of two of its velocities (a cell of 1 or 2 is kept as it is), the
@@ -125,7 +129,7 @@ impl Reduction {
 pub fn reduce_allocated<R: Rng + ?Sized>(
     p: &mut Particles<'_>,
     t: Real,
-    (target, shells, q): (usize, usize, Real),
+    (target, shells, q, floor): (usize, usize, Real, Real),
     dim: DimensionChoice,
     rng: &mut R,
 ) -> usize {
@@ -134,7 +138,7 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
     let (buf, len) = pack(p);
     // Shells of equal width in speed up to the fastest particle, their bounds and weights
     // taken before any is rewritten.
-    let alloc = Allocation::of_packed(&buf[..len], flow, (target, shells, q));
+    let alloc = Allocation::of_packed(&buf[..len], flow, (target, shells, q, floor));
     let shells = alloc.shells;
     let shell_of = |p: &Particle| alloc.shell(sqrt((p.velocity() - flow).norm2()));
     let edges = by_shell(&mut buf[..len], shells, &shell_of);

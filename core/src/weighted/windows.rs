@@ -7,7 +7,10 @@
 //!
 //! The shares are the allocated reduction's ([`super::reduce::reduce_allocated`]): the speed
 //! shells of equal width about the flow up to the fastest particle, shell `s` of weight `W_s`
-//! given `K_s = target W_s^q / sum W^q` particles, each about `w_s = W_s / K_s`. Splitting a
+//! given `K_s = target (phi / S + (1 - phi) W_s^q / sum W^q)` particles (`S` the occupied
+//! shells: a share `phi` of the particles spread equally, so that the thin tail keeps some
+//! however light it is, the rest by a power of the weight, so that the core keeps most),
+//! each about `w_s = W_s / K_s`. Splitting a
 //! particle of weight `g` into `m` copies of `g/m` at its velocity keeps the measure `sum g
 //! delta_v` itself (not only in expectation): every weighted sum, the mass, momentum and
 //! energy, to rounding. The copies then part by their own collisions and kicks. A split is a
@@ -44,13 +47,13 @@ pub struct Allocation {
 }
 
 impl Allocation {
-    /// The allocation of `target` particles over `shells` shells (at most [`MAX_SHELLS`]) by
-    /// the weights to the power `q` (module docs), of the packed records `buf`
-    /// ([`super::packed`]) about `flow`.
+    /// The allocation of `target` particles over `shells` shells (at most [`MAX_SHELLS`]), a
+    /// share `floor` equally and the rest by the weights to the power `q` (module docs), of
+    /// the packed records `buf` ([`super::packed`]) about `flow`.
     pub(crate) fn of_packed(
         buf: &[Particle],
         flow: Vec3,
-        (target, shells, q): (usize, usize, Real),
+        (target, shells, q, floor): (usize, usize, Real, Real),
     ) -> Self {
         let speed = |p: &Particle| sqrt((p.velocity() - flow).norm2());
         let top = buf.iter().map(speed).fold(0.0, crate::math::max);
@@ -58,7 +61,7 @@ impl Allocation {
             buf.iter().map(|p| (speed(p), weight(p))),
             flow,
             top,
-            (target, shells, q),
+            (target, shells, q, floor),
         )
     }
 
@@ -67,7 +70,7 @@ impl Allocation {
         particles: impl Iterator<Item = (Real, Real)>,
         flow: Vec3,
         top: Real,
-        (target, shells, q): (usize, usize, Real),
+        (target, shells, q, floor): (usize, usize, Real, Real),
     ) -> Self {
         let shells = shells.clamp(1, MAX_SHELLS);
         let per = if top > 0.0 { shells as Real / top } else { 0.0 };
@@ -85,11 +88,16 @@ impl Allocation {
             .filter(|&&w| w > 0.0)
             .map(|&w| libm::pow(w, q))
             .sum();
+        let occupied = a.weights[..shells].iter().filter(|&&w| w > 0.0).count() as Real;
+        let (even, by_weight) = (
+            floor * target as Real / occupied,
+            (1.0 - floor) * target as Real,
+        );
         let mut last = None;
         for s in 0..shells {
             let ws = a.weights[s];
             if ws > 0.0 {
-                let keep = target as Real * libm::pow(ws, q) / norm;
+                let keep = even + by_weight * libm::pow(ws, q) / norm;
                 a.each[s] = ws / keep;
                 last = Some(a.each[s]);
             } else if let Some(w) = last {
@@ -157,16 +165,23 @@ mod tests {
     #[test]
     fn the_shares_are_the_allocated_reductions() {
         let parts = [(0.5, 8.0), (2.5, 2.0), (4.0, 1.0)];
-        let a = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (6, 4, 0.0));
+        let a = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (6, 4, 0.0, 0.0));
         assert_eq!(a.per, 1.0);
         assert_eq!(&a.weights[..4], &[8.0, 0.0, 2.0, 1.0]);
         assert_eq!(&a.each[..4], &[4.0, 4.0, 1.0, 0.5]);
-        let b = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (11, 4, 1.0));
+        let b = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (11, 4, 1.0, 0.0));
         for s in [0, 2, 3] {
             assert!((b.each[s] - 1.0).abs() < 1e-15, "{s}: {}", b.each[s]);
         }
+        // A floor of 1/2 at q = 1: 11/2 particles by weight (each shell's share of them
+        // 11/2 W_s/11) and 11/6 to each occupied shell: K = 4 + 11/6, 11/6, 1/2 + 11/6.
+        let f = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (11, 4, 1.0, 0.5));
+        let k = [4.0 + 11.0 / 6.0, 1.0 + 11.0 / 6.0, 0.5 + 11.0 / 6.0];
+        for (s, (w, k)) in [(0, (8.0, k[0])), (2, (2.0, k[1])), (3, (1.0, k[2]))] {
+            assert!((f.each[s] - w / k).abs() < 1e-14, "{s}: {}", f.each[s]);
+        }
         // Empty shells below the slowest occupied one take its share.
-        let c = Allocation::measure([(3.5, 1.0)].into_iter(), Vec3::ZERO, 4.0, (2, 4, 0.0));
+        let c = Allocation::measure([(3.5, 1.0)].into_iter(), Vec3::ZERO, 4.0, (2, 4, 0.0, 0.0));
         assert_eq!(&c.each[..4], &[0.5; 4]);
     }
 
@@ -177,7 +192,7 @@ mod tests {
         let flow = Vec3::new(10.0, 0.0, 0.0);
         let parts = [(0.5, 8.0), (2.5, 2.0), (4.0, 1.0)];
         let w = Windows::new(
-            Allocation::measure(parts.into_iter(), flow, 4.0, (6, 4, 0.0)),
+            Allocation::measure(parts.into_iter(), flow, 4.0, (6, 4, 0.0, 0.0)),
             2.0,
         );
         let at = |c: Real| flow + Vec3::new(0.0, c, 0.0);

@@ -235,12 +235,13 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
                 target,
                 shells,
                 exponent,
+                floor,
             },
         ) = (self.split > 0.0, self.reduction)
         {
             let speeds = (sys.as_slice().iter().zip(sys.weights()))
                 .map(|(p, &w)| (sqrt((p.velocity() - vref).norm2()), w));
-            let a = Allocation::measure(speeds, vref, sqrt(c2), (target, shells, exponent));
+            let a = Allocation::measure(speeds, vref, sqrt(c2), (target, shells, exponent, floor));
             self.windows = Some(Windows::new(a, self.split));
         }
         self.vref = vref;
