@@ -74,7 +74,7 @@
 // MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS kernels), step `step_factor` mean free paths over the thermal speed.
 #define GDSMC_SCHEME_TIME_STEPPED 3
 
-// The exact no-splitting scheme on weighted particles (Rjasanow and Wagner's SWPM): the tails resolved by many light particles, reductions keeping the number bounded.
+// The exact no-splitting scheme on weighted particles (Rjasanow and Wagner's SWPM): the tails resolved by many light particles, reductions keeping the number bounded. Its parameters in `scheme_params`: GDSMC_WEIGHTED_KAPPA, GDSMC_WEIGHTED_TAIL_KAPPA, GDSMC_WEIGHTED_TAIL_SPEED, GDSMC_WEIGHTED_CAPACITY, GDSMC_WEIGHTED_TARGET, GDSMC_WEIGHTED_EXPONENT, GDSMC_WEIGHTED_FLOOR, GDSMC_WEIGHTED_SPLIT.
 #define GDSMC_SCHEME_WEIGHTED 4
 
 // Most parameters a kernel has beyond gamma and C: the length of
@@ -99,6 +99,34 @@
 
 // `drive_params[1]` of GDSMC_DRIVE_LANGEVIN: the bath temperature T_b the noise brings every grain to (0: drag alone) (temperature, a finite number >= 0).
 #define GDSMC_LANGEVIN_TEMPERATURE 1
+
+// Most parameters a scheme has in `scheme_params`: the length of
+// `gdsmc_config.scheme_params`.
+#define GDSMC_MAX_SCHEME_PARAMS 8
+
+// `scheme_params[0]` of GDSMC_SCHEME_WEIGHTED: the core's weight transfer: min(g_i, g_j)/(1 + kappa) moves (1, a finite number >= 0; default 0).
+#define GDSMC_WEIGHTED_KAPPA 0
+
+// `scheme_params[1]` of GDSMC_SCHEME_WEIGHTED: the transfer of a collision into the tail (at least kappa) (1, a finite number >= 0; default 7).
+#define GDSMC_WEIGHTED_TAIL_KAPPA 1
+
+// `scheme_params[2]` of GDSMC_SCHEME_WEIGHTED: where the tail starts, in thermal speeds sqrt(T) (1, a finite number > 0; default 3).
+#define GDSMC_WEIGHTED_TAIL_SPEED 2
+
+// `scheme_params[3]` of GDSMC_SCHEME_WEIGHTED: the particles the buffers hold, times particles.n (1, a number in [2, 64]; default 4).
+#define GDSMC_WEIGHTED_CAPACITY 3
+
+// `scheme_params[4]` of GDSMC_SCHEME_WEIGHTED: the particles a reduction aims at, times particles.n (1, a number in (0, 64]; default 2).
+#define GDSMC_WEIGHTED_TARGET 4
+
+// `scheme_params[5]` of GDSMC_SCHEME_WEIGHTED: shells share the particles as their weight to this power (1, a number in [0, 1]; default 0.5).
+#define GDSMC_WEIGHTED_EXPONENT 5
+
+// `scheme_params[6]` of GDSMC_SCHEME_WEIGHTED: the share of a reduction's particles given equally to every occupied speed shell, the rest by weight to the exponent (1, a number in [0, 0.95]; default 0).
+#define GDSMC_WEIGHTED_FLOOR 6
+
+// `scheme_params[7]` of GDSMC_SCHEME_WEIGHTED: a particle heavier than this times its speed shell's share is split into pieces of the share (0: never) (1, a finite number >= 0; default 0).
+#define GDSMC_WEIGHTED_SPLIT 7
 
 // Host-medium kernel `B_1 = C_1` (BRS (11)).
 #define GDSMC_BACKGROUND_MAXWELL 0
@@ -351,6 +379,10 @@ typedef struct {
     // scheme: one species), one species or a mixture, with the start and
     // background drifts in the plane.
     uint32_t dimension;
+    // The parameters of GDSMC_SCHEME_WEIGHTED in its order (`GDSMC_WEIGHTED_<PARAMETER>` is
+    // each one's place, e.g. `scheme_params[GDSMC_WEIGHTED_SPLIT]`; the defaults are the
+    // scene's); the other schemes' are `dt` and `step_factor`.
+    double scheme_params[GDSMC_MAX_SCHEME_PARAMS];
 } gdsmc_config;
 
 #ifdef __cplusplus
@@ -396,7 +428,10 @@ gdsmc_status gdsmc_sim_species(gdsmc_sim *sim, uint32_t k, gdsmc_species_observa
 // gdsmc_rotation_observables.
 gdsmc_status gdsmc_sim_rotation(gdsmc_sim *sim, gdsmc_rotation_observables *out);
 
-// The number of particles in `*n`.
+// The number of particles in `*n`: the particles in use, which under GDSMC_SCHEME_WEIGHTED
+// change as it runs (collisions make particles, reductions merge them; at most
+// `scheme_params[GDSMC_WEIGHTED_CAPACITY]` times `config.n`): size the buffers of the
+// velocity and weight copies from it after each advance.
 //
 // # Safety
 // `sim` must be NULL or a handle from gdsmc; `n` NULL or writable for one uint64_t.
@@ -409,6 +444,15 @@ gdsmc_status gdsmc_sim_particle_count(gdsmc_sim *sim, uint64_t *n);
 // # Safety
 // `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
 gdsmc_status gdsmc_sim_get_velocities(gdsmc_sim *sim, double *out, size_t len);
+
+// Copies the particles' weights out, `out[i]` = particle i's, for `len >=` the particle count
+// (gdsmc_sim_particle_count; GDSMC_BUFFER_TOO_SMALL otherwise): under GDSMC_SCHEME_WEIGHTED
+// the weights of Rjasanow and Wagner's SWPM, which sum to `config.n`; 1 each otherwise.
+// Every moment gdsmc reports is the weighted mean `sum g_i phi(v_i) / sum g_i`.
+//
+// # Safety
+// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
+gdsmc_status gdsmc_sim_get_weights(gdsmc_sim *sim, double *out, size_t len);
 
 // Copies a rough gas's rim velocities `w = (sigma/2) omega` out, in the layout of
 // gdsmc_sim_get_velocities (`len >= 3 n`); GDSMC_INVALID_ARGUMENT for smooth particles.

@@ -45,17 +45,26 @@ TAIL = ["scheme.tail_kappa=7", "scheme.tail_speed=2.5", "scheme.exponent=0.5", "
         "scheme.split=0"]
 # The weight windows (scenes/grw-example3-weighted.toml), likewise.
 WINDOWS = ["scheme.tail_kappa=0", "scheme.exponent=0.25", "scheme.floor=0.25", "scheme.split=2"]
+
+
+def over(base, *changes):
+    """`base` with each `key=value` of `changes` in place of the same key's setting."""
+    keys = {c.split("=")[0] for c in changes}
+    return [b for b in base if b.split("=")[0] not in keys] + list(changes)
+
+
 # label, particles, ensembles, --set values.
 CONFIGS = [
     ("equal n=1024", 1024, 100000, EQUAL),
     ("equal n=4096", 4096, 25000, EQUAL),
     ("tail transfer n0=1024", 1024, 250, TAIL),
     ("windows n0=1024", 1024, 250, WINDOWS),
-    ("windows no floor n0=1024", 1024, 250, WINDOWS + ["scheme.floor=0"]),
-    ("windows n0=1024 q=0", 1024, 250, WINDOWS + ["scheme.exponent=0", "scheme.floor=0"]),
-    ("windows n0=1024 target 4", 1024, 250, WINDOWS + ["scheme.target=4", "scheme.capacity=8"]),
+    ("windows no floor n0=1024", 1024, 250, over(WINDOWS, "scheme.floor=0")),
+    ("windows n0=1024 q=0", 1024, 250, over(WINDOWS, "scheme.exponent=0", "scheme.floor=0")),
+    ("windows n0=1024 target 4", 1024, 250,
+     over(WINDOWS, "scheme.target=4", "scheme.capacity=8")),
     ("windows and tail transfer n0=1024 q=0", 1024, 250,
-     TAIL + ["scheme.split=2", "scheme.exponent=0"]),
+     over(TAIL, "scheme.split=2", "scheme.exponent=0")),
 ]
 
 

@@ -302,3 +302,54 @@ fn the_weighted_cooling_rate_is_the_maxwell_gas_exact_one() {
     );
     assert!(!s.admits(equal, 1), "the equal-weight {equal} not refused");
 }
+
+/// A cooling gas of hard spheres on weighted particles (alpha = 0.3, `n0 = 128`, `kappa` 1 in
+/// the core and 7 beyond 3 thermal speeds, the allocated reduction) runs to t = 20, where its
+/// temperature has fallen 2500-fold, with every velocity and weight finite and no weight
+/// below [`LIGHTEST`]`/(1 + kappa_max)`. It failed in every one of 20 seeds before (t = 4-28):
+/// a light particle at a few thermal speeds, halved by each of its ever more frequent
+/// collisions, fell below 1e-300 and to 0, and the global scale of a reduction's correction
+/// walked such particles out to overflow.
+#[test]
+fn a_weighted_hard_sphere_gas_cools_without_overflow() {
+    use gdsmc_core::kernel::HardSpheres;
+    use gdsmc_core::weighted::nosplit::LIGHTEST;
+    let kernel = HardSpheres::new(1.0, 1.0).unwrap();
+    let law = Constant::new(0.3).unwrap();
+    let transfer = Transfer::with_tail(1.0, 7.0, 3.0).unwrap();
+    let floor = LIGHTEST / (1.0 + transfer.kappa_max());
+    let mut streams = Streams::new(91);
+    for _ in 0..4 {
+        let mut rng = streams.next().unwrap();
+        let (mut buf, mut g) = start::<Spheres>(128, 384, &mut rng);
+        let mut sys = Particles::weighted(&mut buf, &mut g, 128).unwrap();
+        let t0 = observables(&sys, 3).t_bulk;
+        let reduction = Reduction::Allocated {
+            target: 192,
+            shells: 32,
+            exponent: 0.5,
+            floor: 0.0,
+        };
+        let mut e = WeightedNoSplitting::<_, _, _, Spheres>::start(
+            (kernel, law, NoDrive),
+            transfer,
+            reduction,
+            &mut sys,
+            0.0,
+        )
+        .unwrap();
+        let mut lightest = f64::INFINITY;
+        let mut t_bulk = t0;
+        for k in 1..=40 {
+            let o = e.advance_to(&mut sys, 0.5 * k as f64, &mut rng).unwrap();
+            lightest = sys.weights().iter().fold(lightest, |m, &w| m.min(w));
+            t_bulk = o.t_bulk;
+        }
+        assert!(e.reductions() > 100, "reduced: {}", e.reductions());
+        assert!(lightest >= floor, "a weight {lightest:e} below {floor:e}");
+        assert!(
+            t_bulk.is_finite() && t_bulk < t0 / 1000.0,
+            "T_bulk {t_bulk} from {t0}"
+        );
+    }
+}

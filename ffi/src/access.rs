@@ -48,10 +48,10 @@ pub unsafe extern "C" fn gdsmc_sim_advance(
         }
         let mut rng = s.rng.clone();
         let mut p = particles_of(s);
-        let o = s
-            .engine
-            .advance_to(&mut p, t, &mut rng)
-            .map_err(engine_error)?;
+        let o = s.engine.advance_to(&mut p, t, &mut rng);
+        // The weighted scheme's particles in use, as the engine left them (even on an error).
+        s.n = p.len();
+        let o = o.map_err(engine_error)?;
         s.rng = rng;
         s.last = o;
         if !out.is_null() {
@@ -159,7 +159,10 @@ pub unsafe extern "C" fn gdsmc_sim_rotation(
     })
 }
 
-/// The number of particles in `*n`.
+/// The number of particles in `*n`: the particles in use, which under GDSMC_SCHEME_WEIGHTED
+/// change as it runs (collisions make particles, reductions merge them; at most
+/// `scheme_params[GDSMC_WEIGHTED_CAPACITY]` times `config.n`): size the buffers of the
+/// velocity and weight copies from it after each advance.
 ///
 /// # Safety
 /// `sim` must be NULL or a handle from gdsmc; `n` NULL or writable for one uint64_t.
@@ -200,6 +203,38 @@ pub unsafe extern "C" fn gdsmc_sim_get_velocities(
         for (d, q) in dst.chunks_exact_mut(3).zip(p.as_slice()) {
             let v = frame.physical(q.velocity());
             d.copy_from_slice(&[v.x, v.y, v.z]);
+        }
+        Ok(())
+    })
+}
+
+/// Copies the particles' weights out, `out[i]` = particle i's, for `len >=` the particle count
+/// (gdsmc_sim_particle_count; GDSMC_BUFFER_TOO_SMALL otherwise): under GDSMC_SCHEME_WEIGHTED
+/// the weights of Rjasanow and Wagner's SWPM, which sum to `config.n`; 1 each otherwise.
+/// Every moment gdsmc reports is the weighted mean `sum g_i phi(v_i) / sum g_i`.
+///
+/// # Safety
+/// `sim` must be NULL or a handle from gdsmc; `out` NULL or writable for `len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gdsmc_sim_get_weights(
+    sim: *mut gdsmc_sim,
+    out: *mut f64,
+    len: usize,
+) -> gdsmc_status {
+    guard(|| {
+        let s = live(sim)?;
+        check_ptr(out, "out")?;
+        if len < s.n {
+            return fail(
+                gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
+                msg!("`len` = {len} < the {} particles in use", s.n),
+            );
+        }
+        // SAFETY: `out` is non-null, aligned and has `len >= n` doubles.
+        let dst = unsafe { core::slice::from_raw_parts_mut(out, s.n) };
+        let p = particles_of(s);
+        for (i, d) in dst.iter_mut().enumerate() {
+            *d = p.weight(i);
         }
         Ok(())
     })

@@ -48,7 +48,7 @@ pub const GDSMC_SCHEME_STRANG: u32 = 2;
 /// MS's time-stepped scheme (MS Section 3; Bird's no-time-counter form for the Maxwell and VHS kernels), step `step_factor` mean free paths over the thermal speed.
 pub const GDSMC_SCHEME_TIME_STEPPED: u32 = 3;
 
-/// The exact no-splitting scheme on weighted particles (Rjasanow and Wagner's SWPM): the tails resolved by many light particles, reductions keeping the number bounded.
+/// The exact no-splitting scheme on weighted particles (Rjasanow and Wagner's SWPM): the tails resolved by many light particles, reductions keeping the number bounded. Its parameters in `scheme_params`: GDSMC_WEIGHTED_KAPPA, GDSMC_WEIGHTED_TAIL_KAPPA, GDSMC_WEIGHTED_TAIL_SPEED, GDSMC_WEIGHTED_CAPACITY, GDSMC_WEIGHTED_TARGET, GDSMC_WEIGHTED_EXPONENT, GDSMC_WEIGHTED_FLOOR, GDSMC_WEIGHTED_SPLIT.
 pub const GDSMC_SCHEME_WEIGHTED: u32 = 4;
 
 /// Most parameters a kernel has beyond gamma and C: the length of
@@ -73,3 +73,31 @@ pub const GDSMC_LANGEVIN_FRICTION: usize = 0;
 
 /// `drive_params[1]` of GDSMC_DRIVE_LANGEVIN: the bath temperature T_b the noise brings every grain to (0: drag alone) (temperature, a finite number >= 0).
 pub const GDSMC_LANGEVIN_TEMPERATURE: usize = 1;
+
+/// Most parameters a scheme has in `scheme_params`: the length of
+/// `gdsmc_config.scheme_params`.
+pub const GDSMC_MAX_SCHEME_PARAMS: usize = 8;
+
+/// `scheme_params[0]` of GDSMC_SCHEME_WEIGHTED: the core's weight transfer: min(g_i, g_j)/(1 + kappa) moves (1, a finite number >= 0; default 0).
+pub const GDSMC_WEIGHTED_KAPPA: usize = 0;
+
+/// `scheme_params[1]` of GDSMC_SCHEME_WEIGHTED: the transfer of a collision into the tail (at least kappa) (1, a finite number >= 0; default 7).
+pub const GDSMC_WEIGHTED_TAIL_KAPPA: usize = 1;
+
+/// `scheme_params[2]` of GDSMC_SCHEME_WEIGHTED: where the tail starts, in thermal speeds sqrt(T) (1, a finite number > 0; default 3).
+pub const GDSMC_WEIGHTED_TAIL_SPEED: usize = 2;
+
+/// `scheme_params[3]` of GDSMC_SCHEME_WEIGHTED: the particles the buffers hold, times particles.n (1, a number in [2, 64]; default 4).
+pub const GDSMC_WEIGHTED_CAPACITY: usize = 3;
+
+/// `scheme_params[4]` of GDSMC_SCHEME_WEIGHTED: the particles a reduction aims at, times particles.n (1, a number in (0, 64]; default 2).
+pub const GDSMC_WEIGHTED_TARGET: usize = 4;
+
+/// `scheme_params[5]` of GDSMC_SCHEME_WEIGHTED: shells share the particles as their weight to this power (1, a number in [0, 1]; default 0.5).
+pub const GDSMC_WEIGHTED_EXPONENT: usize = 5;
+
+/// `scheme_params[6]` of GDSMC_SCHEME_WEIGHTED: the share of a reduction's particles given equally to every occupied speed shell, the rest by weight to the exponent (1, a number in [0, 0.95]; default 0).
+pub const GDSMC_WEIGHTED_FLOOR: usize = 6;
+
+/// `scheme_params[7]` of GDSMC_SCHEME_WEIGHTED: a particle heavier than this times its speed shell's share is split into pieces of the share (0: never) (1, a finite number >= 0; default 0).
+pub const GDSMC_WEIGHTED_SPLIT: usize = 7;

@@ -137,6 +137,10 @@ pub struct gdsmc_config {
     /// scheme: one species), one species or a mixture, with the start and
     /// background drifts in the plane.
     pub dimension: u32,
+    /// The parameters of GDSMC_SCHEME_WEIGHTED in its order (`GDSMC_WEIGHTED_<PARAMETER>` is
+    /// each one's place, e.g. `scheme_params[GDSMC_WEIGHTED_SPLIT]`; the defaults are the
+    /// scene's); the other schemes' are `dt` and `step_factor`.
+    pub scheme_params: [f64; GDSMC_MAX_SCHEME_PARAMS],
 }
 
 /// Most species a mixture may have (the core's `mixture::MAX_SPECIES`, written out for the
@@ -155,6 +159,17 @@ const _: () = assert!(
 /// tangential restitution -1: switching `rough` on alone gives the smooth gas with spins.
 const SMOOTH: gdsmc_core::physics::RotationChoice =
     gdsmc_core::physics::RotationChoice::spheres(-1.0);
+
+/// The weighted scheme's declared defaults in `scheme_params`' order (zeros in a build
+/// without it).
+fn scheme_defaults() -> [f64; GDSMC_MAX_SCHEME_PARAMS] {
+    let mut v = [0.0; GDSMC_MAX_SCHEME_PARAMS];
+    let params = gdsmc_core::physics::SchemeKind::Weighted.params();
+    for (x, p) in v.iter_mut().zip(params) {
+        *x = p.default.unwrap_or(p.example);
+    }
+    v
+}
 
 impl gdsmc_config {
     /// GRW Example 3 with 1024 particles.
@@ -206,6 +221,7 @@ impl gdsmc_config {
             pair_tangential_restitution_set: 0,
             pair_tangential_restitution: [SMOOTH.beta; GDSMC_MAX_PAIRS],
             dimension: 3,
+            scheme_params: scheme_defaults(),
         }
     }
 }

@@ -36,15 +36,6 @@ fn decode<K>(
     )
 }
 
-/// The refusal of the weighted scheme, whose particle number changes as it runs: its buffers
-/// (records with room, and the weights) are not in the C ABI's handles yet.
-fn weighted_not_in_c() -> Msg {
-    msg!(
-        "config.scheme = GDSMC_SCHEME_WEIGHTED: the weighted scheme runs from the gdsmc command \
-         and Python, not yet through the C ABI"
-    )
-}
-
 /// The C field that holds a physics parameter.
 fn field(p: Param) -> &'static str {
     match p {
@@ -67,7 +58,8 @@ fn field(p: Param) -> &'static str {
         Param::BackgroundDrift => "background_drift",
         Param::Step(SchemeKind::Euler | SchemeKind::Strang, _) => "dt",
         Param::Step(SchemeKind::TimeStepped, _) => "step_factor",
-        Param::Step(SchemeKind::NoSplitting | SchemeKind::Weighted, _) => "scheme",
+        Param::Step(SchemeKind::Weighted, _) => "scheme_params",
+        Param::Step(SchemeKind::NoSplitting, _) => "scheme",
         Param::Scheme => "scheme",
         Param::Species => "species",
         Param::SpeciesCount(_) => "species_count",
@@ -100,7 +92,7 @@ fn index(p: Param, species: usize) -> Option<usize> {
         | Param::SpeciesInertia(k)
         | Param::SpeciesRotationTemperature(k)
         | Param::SpeciesRotationNoise(k) => Some(k),
-        Param::Drive(_, i) | Param::Kernel(_, i) => Some(i),
+        Param::Drive(_, i) | Param::Kernel(_, i) | Param::Step(SchemeKind::Weighted, i) => Some(i),
         Param::PairRestitution(s, t) | Param::PairTangentialRestitution(s, t) => {
             Some(gdsmc_core::mixture::pair_index(species, s, t))
         }
@@ -189,7 +181,13 @@ impl gdsmc_config {
             SchemeKind::Euler => SchemeChoice::Euler(self.dt),
             SchemeKind::Strang => SchemeChoice::Strang(self.dt),
             SchemeKind::TimeStepped => SchemeChoice::TimeStepped(self.step_factor),
-            SchemeKind::Weighted => return invalid(weighted_not_in_c()),
+            SchemeKind::Weighted => SchemeChoice::new(SchemeKind::Weighted, &self.scheme_params)
+                .ok_or_else(|| {
+                    Failure(
+                        gdsmc_status::GDSMC_INVALID_ARGUMENT,
+                        msg!("config.scheme = GDSMC_SCHEME_WEIGHTED needs feature `weighted`"),
+                    )
+                })?,
         };
         let mut physics = Physics::new(n, kernel, restitution, drive, scheme);
         physics.initial[0] = Component {
@@ -381,7 +379,7 @@ impl gdsmc_config {
             SchemeChoice::NoSplitting => {}
             SchemeChoice::Euler(dt) | SchemeChoice::Strang(dt) => cfg.dt = dt,
             SchemeChoice::TimeStepped(f) => cfg.step_factor = f,
-            SchemeChoice::Weighted(_) => return invalid(weighted_not_in_c()),
+            SchemeChoice::Weighted(v) => cfg.scheme_params = v,
         }
         Ok(cfg)
     }

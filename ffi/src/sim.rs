@@ -7,7 +7,7 @@ use crate::status::{Failure, engine_error, fail, gdsmc_status, msg};
 use core::ffi::c_void;
 use core::mem::{align_of, size_of};
 use gdsmc_core::moments::Observables;
-use gdsmc_core::particles::{Particle, Particles, Spin};
+use gdsmc_core::particles::{Particle, Particles, ParticlesError, Spin};
 use gdsmc_core::physics::{Engine, Model, Physics};
 use gdsmc_core::rng::{Xoshiro256PlusPlus, stream};
 
@@ -23,8 +23,15 @@ pub struct gdsmc_sim {
     /// Made by gdsmc_sim_create (freed by destroy); never true in the no_std build.
     #[cfg_attr(not(feature = "std"), allow(dead_code))]
     pub(crate) owned: bool,
+    /// The particles in use (the weighted scheme's number changes as it runs).
     pub(crate) n: usize,
+    /// The 32-byte records the handle owns or was given ([`slots`]).
+    #[cfg_attr(not(feature = "std"), allow(dead_code))]
+    pub(crate) records: usize,
     pub(crate) particles: *mut Particle,
+    /// The weighted scheme's room: its particle records and weights (NULL: equal weights).
+    pub(crate) cap: usize,
+    pub(crate) weights: *mut f64,
     /// A rough gas's spins, the `n` records after the particles (NULL: smooth particles).
     pub(crate) spins: *mut Spin,
     pub(crate) engine: Engine,
@@ -39,31 +46,69 @@ const _: () = assert!(
     size_of::<Spin>() == size_of::<Particle>() && align_of::<Spin>() == align_of::<Particle>()
 );
 
+// The weighted scheme's weights live in the records after its particles, four to a record.
+const WEIGHTS_PER_RECORD: usize = size_of::<Particle>() / size_of::<f64>();
+const _: () = assert!(
+    WEIGHTS_PER_RECORD * size_of::<f64>() == size_of::<Particle>()
+        && align_of::<Particle>() >= align_of::<f64>()
+);
+
 /// The 32-byte records a simulation of `model` needs: `n` particles, and for a rough gas `n`
-/// spins after them.
+/// spins after them; for the weighted scheme its `capacity` particles
+/// ([`Model::capacity`]) and their weights after them.
 pub(crate) fn slots(model: &Model) -> usize {
     if model.rotates() {
         2 * model.n()
+    } else if model.weighted() {
+        let cap = model.capacity();
+        cap + cap.div_ceil(WEIGHTS_PER_RECORD)
     } else {
         model.n()
     }
 }
 
-/// The particles (and spins) of a live handle. The returned view must not outlive the handle's
-/// borrow by its caller (each exported function makes one view and drops it before returning).
+/// The particles of a handle's memory: `n` in use at `particles`, a rough gas's spins at
+/// `spins` (else NULL), the weighted scheme's `cap` records and their weights at `weights`
+/// (else NULL).
+///
+/// # Safety
+/// `particles` must point to `cap` (weighted) or `n` initialized records, `spins` (non-null)
+/// to `n` initialized spins, `weights` (non-null) to `cap` initialized weights, none of them
+/// overlapping, and nothing else may touch them while the view lives.
+unsafe fn view<'a>(
+    particles: *mut Particle,
+    (n, cap): (usize, usize),
+    spins: *mut Spin,
+    weights: *mut f64,
+) -> Result<Particles<'a>, ParticlesError> {
+    // SAFETY: the caller's promise above, for each branch's slices.
+    unsafe {
+        if !weights.is_null() {
+            Particles::weighted(
+                core::slice::from_raw_parts_mut(particles, cap),
+                core::slice::from_raw_parts_mut(weights, cap),
+                n,
+            )
+        } else if spins.is_null() {
+            Particles::new(core::slice::from_raw_parts_mut(particles, n))
+        } else {
+            Particles::with_spins(
+                core::slice::from_raw_parts_mut(particles, n),
+                core::slice::from_raw_parts_mut(spins, n),
+            )
+        }
+    }
+}
+
+/// The particles (and spins, or weights) of a live handle. The returned view must not outlive
+/// the handle's borrow by its caller (each exported function makes one view and drops it
+/// before returning).
 pub(crate) fn particles_of<'a>(s: &gdsmc_sim) -> Particles<'a> {
-    // SAFETY: a live handle's `particles` points to `n` initialized particles owned by it (a
-    // boxed slice, or the caller's memory behind the header), and a non-null `spins` to `n`
-    // initialized spins after them; only this view touches them.
-    let slice = unsafe { core::slice::from_raw_parts_mut(s.particles, s.n) };
-    let view = if s.spins.is_null() {
-        Particles::new(slice)
-    } else {
-        // SAFETY: as above, the n records after the particles.
-        let spins = unsafe { core::slice::from_raw_parts_mut(s.spins, s.n) };
-        Particles::with_spins(slice, spins)
-    };
-    view.expect("n >= 2 and the spins checked at creation")
+    // SAFETY: a live handle's pointers are its own memory as `view` asks (a boxed slice, or
+    // the caller's memory behind the header), written at creation and kept by the engine
+    // (every weight in use > 0); only this view touches them.
+    unsafe { view(s.particles, (s.n, s.cap), s.spins, s.weights) }
+        .expect("n >= 2, the spins and weights checked at creation")
 }
 
 /// Fills the particles from the initial distribution and starts the engine (the core's one
@@ -76,35 +121,46 @@ pub(crate) fn build(
     owned: bool,
 ) -> Result<gdsmc_sim, Failure> {
     let mut rng = stream(c.seed, c.stream);
-    // SAFETY: `particles` points to room for `slots(model)` records (see callers); every one is
-    // written here before any is read.
-    let (slice, spins) = unsafe {
-        for i in 0..slots(model) {
-            particles.add(i).write(Particle::default());
+    let records = slots(model);
+    for i in 0..records {
+        // SAFETY: `particles` points to room for `slots(model)` records (see callers); every
+        // one is written here before any is read.
+        unsafe { particles.add(i).write(Particle::default()) };
+    }
+    let (cap, weights) = if model.weighted() {
+        let cap = model.capacity();
+        // SAFETY: the records after the `cap` particles, written above, hold `cap` weights
+        // (aligned: a record's alignment is a double's); each starts at 1.
+        let weights = unsafe { particles.add(cap).cast::<f64>() };
+        for i in 0..cap {
+            // SAFETY: as above.
+            unsafe { weights.add(i).write(1.0) };
         }
-        let spins = if slots(model) > n {
-            particles.add(n).cast::<Spin>()
-        } else {
-            core::ptr::null_mut()
-        };
-        (core::slice::from_raw_parts_mut(particles, n), spins)
-    };
-    let mut p = if spins.is_null() {
-        Particles::new(slice)
+        (cap, weights)
     } else {
+        (n, core::ptr::null_mut())
+    };
+    let spins = if model.rotates() {
         // SAFETY: the n records after the particles, written above as default particles,
         // which are default spins (the same four zero doubles).
-        Particles::with_spins(slice, unsafe { core::slice::from_raw_parts_mut(spins, n) })
-    }
-    .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg!("{e}")))?;
+        unsafe { particles.add(n).cast::<Spin>() }
+    } else {
+        core::ptr::null_mut()
+    };
+    // SAFETY: the records, spins and weights written above, apart, used by this view alone.
+    let mut p = unsafe { view(particles, (n, cap), spins, weights) }
+        .map_err(|e| Failure(gdsmc_status::GDSMC_INVALID_ARGUMENT, msg!("{e}")))?;
     #[cfg(feature = "fault-injection")]
     crate::guard::fault::check();
     let (engine, last) = model.launch(&mut p, 0.0, &mut rng).map_err(engine_error)?;
     Ok(gdsmc_sim {
         magic: ALIVE,
         owned,
-        n,
+        n: p.len(),
+        records,
         particles,
+        cap,
+        weights,
         spins,
         engine,
         rng,
@@ -283,7 +339,7 @@ pub unsafe extern "C" fn gdsmc_sim_init_in(
             return fail(
                 gdsmc_status::GDSMC_BUFFER_TOO_SMALL,
                 msg!(
-                    "`memory` holds {size} bytes; n = {n} needs {need} (gdsmc_sim_footprint, or gdsmc_config_footprint for rough particles)"
+                    "`memory` holds {size} bytes; n = {n} needs {need} (gdsmc_sim_footprint, or gdsmc_config_footprint for rough or weighted particles)"
                 ),
             );
         }
@@ -332,11 +388,10 @@ pub unsafe extern "C" fn gdsmc_sim_destroy(sim: *mut *mut gdsmc_sim) -> gdsmc_st
 #[cfg(feature = "std")]
 fn free(h: *mut gdsmc_sim) {
     // SAFETY: an owned handle was made by gdsmc_sim_create: the header by Box::new and the
-    // particles (and a rough gas's spins after them) by a boxed slice of n (2n) records; the
-    // caller marked it dead and uses neither again.
+    // particles (and a rough gas's spins or the weighted scheme's weights after them) by a
+    // boxed slice of `records` records; the caller marked it dead and uses neither again.
     unsafe {
-        let (ptr, n) = ((*h).particles, (*h).n);
-        let records = if (*h).spins.is_null() { n } else { 2 * n };
+        let (ptr, records) = ((*h).particles, (*h).records);
         drop(Box::from_raw(h));
         drop(Box::from_raw(std::ptr::slice_from_raw_parts_mut(
             ptr, records,

@@ -135,6 +135,18 @@ fn constants(out: &mut String, axis: &str, kind: &str, params: &[ParamSpec], arr
     }
 }
 
+/// The parameters of scheme `k` that live in `scheme_params` (the splittings' `dt` and the
+/// time-stepped scheme's `step_factor` have fields of their own; a new scheme says here).
+fn in_scheme_params(k: SchemeKind) -> &'static [ParamSpec] {
+    match k {
+        SchemeKind::Weighted => k.params(),
+        SchemeKind::NoSplitting
+        | SchemeKind::Euler
+        | SchemeKind::Strang
+        | SchemeKind::TimeStepped => &[],
+    }
+}
+
 /// The file the declarations give.
 fn generated() -> String {
     let mut out = String::from(
@@ -184,7 +196,10 @@ fn generated() -> String {
         "SCHEME",
         SchemeKind::ALL
             .iter()
-            .map(|k| (format!("{k:?}"), k.c_code(), k.doc(), String::new()))
+            .map(|k| {
+                let extra = places(&format!("{k:?}"), in_scheme_params(*k), "scheme_params");
+                (format!("{k:?}"), k.c_code(), k.doc(), extra)
+            })
             .collect(),
     );
     let kernels = KernelKind::ALL
@@ -204,6 +219,15 @@ fn generated() -> String {
         ("DRIVE", "drive_params", "a drive declared by its type has"),
         MAX_DRIVE_PARAMS,
         drives.collect(),
+    );
+    let schemes = SchemeKind::ALL
+        .iter()
+        .map(|&k| (format!("{k:?}"), in_scheme_params(k)));
+    array(
+        &mut out,
+        ("SCHEME", "scheme_params", "a scheme has in `scheme_params`"),
+        gdsmc_core::physics::WEIGHTED_PARAMS,
+        schemes.collect(),
     );
     out
 }

@@ -64,9 +64,11 @@ static void config_errors(void) {
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.drive = 99");
     c = base(); c.scheme = 99;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme = 99");
-    c = base(); c.scheme = GDSMC_SCHEME_WEIGHTED;
+    c = base(); c.scheme = GDSMC_SCHEME_WEIGHTED; c.scheme_params[GDSMC_WEIGHTED_CAPACITY] = 1.0;
+    STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT, "config.scheme_params[3]");
+    c = base(); c.scheme = GDSMC_SCHEME_WEIGHTED; c.scheme_params[GDSMC_WEIGHTED_TARGET] = 5.0;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
-           "config.scheme = GDSMC_SCHEME_WEIGHTED: the weighted scheme");
+           "config.scheme_params[4] must be below capacity");
     c = base(); c.dimension = 4;
     STATUS(gdsmc_sim_create(&c, &sim), GDSMC_INVALID_ARGUMENT,
            "config.dimension must be 2 (disks) or 3 (spheres), got 4");

@@ -57,14 +57,63 @@ fn draw_two<R: Rng + ?Sized>(group: &[Particle], w: Real, rng: &mut R) -> (usize
     (found[0], found[1])
 }
 
+/// Marked records farther than this many standard deviations of the draws from their mean
+/// keep their velocities, and the rest carry the correction ([`Tally::conserve`]): a global
+/// scale about the mean moves a far, light record by its distance times `lambda - 1`, and
+/// repeated reductions walked such records of a cooling hard-sphere gas (a light particle
+/// at a few times the thermal speed, kept there by the weight transfer) out to overflow.
+const FAR: Real = 3.0;
+
+/// A weighted mean and spread accumulated one point at a time (West's weighted form of
+/// Welford's update, Comm. ACM 22 (1979) 532): the weight `w`, the mean `mean` and `m2 = sum
+/// g |c - mean|^2`, without the cancellation of `sum g |c|^2 - w |mean|^2` (which, for a set
+/// whose spread is far below its distance from the flow, left rounding noise as the spread of
+/// the draws: a scale factor of 1e4-1e7, and a cooling gas of hard spheres blew up).
+#[derive(Clone, Copy, Debug, Default)]
+struct Spread {
+    w: Real,
+    mean: Vec3,
+    m2: Real,
+}
+
+impl Spread {
+    /// The point `c` of weight `g > 0` added.
+    fn add(&mut self, g: Real, c: Vec3) {
+        self.w += g;
+        let d = c - self.mean;
+        self.mean += (g / self.w) * d;
+        self.m2 += g * d.dot(c - self.mean);
+    }
+
+    /// Adds every point of `o` (Chan, Golub and LeVeque's pairwise update).
+    fn merge(&mut self, o: &Spread) {
+        let w = self.w + o.w;
+        if o.w <= 0.0 || w <= 0.0 {
+            return;
+        }
+        let d = o.mean - self.mean;
+        self.m2 += o.m2 + self.w * o.w / w * d.norm2();
+        self.mean += (o.w / w) * d;
+        self.w = w;
+    }
+
+    /// The spread `m2 / w` (0 for nothing, never below 0).
+    fn s2(&self) -> Real {
+        if self.w > 0.0 && self.m2 > 0.0 {
+            self.m2 / self.w
+        } else {
+            0.0
+        }
+    }
+}
+
 /// What one reduction replaced and what it drew in its place, about the system's flow: the
-/// weight, and the weighted sums of `c = v - flow` and `|c|^2` before and after.
+/// weight, mean and spread of `c = v - flow` before and after.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Tally {
     flow: Vec3,
-    weight: Real,
-    before: (Vec3, Real),
-    after: (Vec3, Real),
+    before: Spread,
+    after: Spread,
 }
 
 impl Tally {
@@ -72,9 +121,8 @@ impl Tally {
     pub(crate) fn new(flow: Vec3) -> Self {
         Tally {
             flow,
-            weight: 0.0,
-            before: (Vec3::ZERO, 0.0),
-            after: (Vec3::ZERO, 0.0),
+            before: Spread::default(),
+            after: Spread::default(),
         }
     }
 
@@ -96,17 +144,12 @@ impl Tally {
         });
         let w: Real = group.iter().map(weight).sum();
         for p in group.iter() {
-            let c = p.velocity() - self.flow;
-            self.before.0 += weight(p) * c;
-            self.before.1 += weight(p) * c.norm2();
+            self.before.add(weight(p), p.velocity() - self.flow);
         }
-        self.weight += w;
         let (i, j) = draw_two(group, w, rng);
         let (a, b) = (group[i].velocity(), group[j].velocity());
         for v in [a, b] {
-            let c = v - self.flow;
-            self.after.0 += (0.5 * w) * c;
-            self.after.1 += (0.5 * w) * c.norm2();
+            self.after.add(0.5 * w, v - self.flow);
         }
         if i == j {
             (packed(a, -w), None)
@@ -119,7 +162,7 @@ impl Tally {
     /// map and unmarks them, so that together they have the weight, momentum and energy of
     /// what they replaced. When the draws have no spread to scale (every marked record at
     /// one velocity: a single cell drawn to one member) while the replaced set had one, the
-    /// last of them is split into two of half its weight symmetric about it along a uniform
+    /// heaviest of them is split into two of half its weight symmetric about it along a uniform
     /// direction (written at `buf[*len]`, which the reduction has freed), as far apart as
     /// keeps the energy.
     pub(crate) fn conserve<R: Rng + ?Sized>(
@@ -129,28 +172,63 @@ impl Tally {
         dim: DimensionChoice,
         rng: &mut R,
     ) {
-        if self.weight <= 0.0 {
+        if self.before.w <= 0.0 {
             return;
         }
-        let inv = 1.0 / self.weight;
-        let (u, u1) = (inv * self.before.0, inv * self.after.0);
-        let s2 = inv * self.before.1 - u.norm2();
-        let s2_drawn = inv * self.after.1 - u1.norm2();
+        // About the drawn mean `u1`: the replaced set's mean `du` and spread `s2`.
+        let u1 = self.after.mean;
+        let (du, s2) = (self.before.mean - u1, self.before.s2());
         let spread = s2 > 0.0 && s2.is_finite();
-        let lambda = if spread && s2_drawn > 1e-24 * s2 {
-            sqrt(s2 / s2_drawn)
-        } else {
-            0.0
-        };
-        let mut last = None;
-        for (k, q) in buf[..*len].iter_mut().enumerate() {
-            if weight(q) < 0.0 {
-                let c = q.velocity() - self.flow;
-                *q = packed(self.flow + u + lambda * (c - u1), -weight(q));
-                last = Some(k);
+        let marked = |q: &Particle| (weight(q) < 0.0).then(|| (-weight(q), q.velocity()));
+        let radius2 = FAR * FAR * self.after.s2();
+        let (mut near, mut far) = (Spread::default(), Spread::default());
+        for (g, v) in buf[..*len].iter().filter_map(marked) {
+            let c = v - self.flow - u1;
+            if c.norm2() > radius2 {
+                far.add(g, c);
+            } else {
+                near.add(g, c);
             }
         }
-        if let (true, true, Some(k)) = (spread, lambda == 0.0, last) {
+        // The map of the near records `c -> m + lambda (c - near.mean)`, the far ones kept:
+        // the near records' mean and spread that give the whole set its momentum and energy.
+        let fit = |near: &Spread, far: &Spread| {
+            let w_near = self.before.w - far.w;
+            let m = (1.0 / w_near) * (self.before.w * du - far.w * far.mean);
+            let energy = self.before.w * (s2 + du.norm2()) - far.m2 - far.w * far.mean.norm2();
+            let s2_near = energy / w_near - m.norm2();
+            (s2_near > 0.0 && near.s2() > 0.0 && s2_near.is_finite())
+                .then(|| (m, sqrt(s2_near / near.s2()), near.mean))
+        };
+        let every = {
+            let mut all = near;
+            all.merge(&far);
+            all
+        };
+        let (m, lambda, center, keep_far) = match (far.w > 0.0, near.w > 0.0) {
+            (true, true) => fit(&near, &far).map(|(m, l, c)| (m, l, c, true)),
+            _ => None,
+        }
+        .or_else(|| fit(&every, &Spread::default()).map(|(m, l, c)| (m, l, c, false)))
+        .unwrap_or((du, 0.0, every.mean, false));
+        // The heaviest marked record (the one the degenerate case below splits: the lightest
+        // would have to move farthest to carry the spread).
+        let mut heaviest: Option<(usize, Real)> = None;
+        for (k, q) in buf[..*len].iter_mut().enumerate() {
+            if let Some((g, v)) = marked(q) {
+                let c = v - self.flow - u1;
+                let v = if keep_far && c.norm2() > radius2 {
+                    v
+                } else {
+                    self.flow + u1 + m + lambda * (c - center)
+                };
+                *q = packed(v, g);
+                if heaviest.is_none_or(|(_, h)| g > h) {
+                    heaviest = Some((k, g));
+                }
+            }
+        }
+        if let (true, true, Some((k, _))) = (spread, lambda == 0.0, heaviest) {
             // One record (all marked ones coincide): two at U +- sigma e.
             let e = match dim {
                 DimensionChoice::Three => unit_sphere(rng),
@@ -158,7 +236,7 @@ impl Tally {
             };
             let (v, g) = (buf[k].velocity(), 0.5 * weight(&buf[k]));
             // 2 g |d|^2 = W s^2: the replaced set's spread, whatever share of it this is.
-            let d = sqrt(s2 * self.weight / (2.0 * g)) * e;
+            let d = sqrt(s2 * self.before.w / (2.0 * g)) * e;
             buf[k] = packed(v + d, g);
             buf[*len] = packed(v - d, g);
             *len += 1;

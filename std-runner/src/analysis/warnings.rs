@@ -298,10 +298,13 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
         });
     }
     // Stored velocities keep about 16 digits of v = V + c; when |c| << |V| the peculiar
-    // velocities, and with them T_bulk, a2, a3 and crit, lose digits. The no-splitting
-    // scheme without drive stores a cooling gas rescaled about V and keeps every digit.
-    let rescaled = scene.physics().scheme == SchemeChoice::NoSplitting
-        && scene.physics().drive == DriveChoice::None;
+    // velocities, and with them T_bulk, a2, a3 and crit, lose digits. The exact schemes (no
+    // splitting, on equal or weighted particles) without drive store a cooling gas rescaled
+    // about V and keep every digit.
+    let rescaled = matches!(
+        scene.physics().scheme,
+        SchemeChoice::NoSplitting | SchemeChoice::Weighted(_)
+    ) && scene.physics().drive == DriveChoice::None;
     let (Some(tb), Some(vn), false) = (stats.col(name::T_BULK), stats.col(name::V_NORM), rescaled)
     else {
         return w;
@@ -314,7 +317,7 @@ pub fn check(scene: &Scene, stats: &RunStats) -> Vec<Warning> {
             w.push(Warning {
                 code: "precision",
                 message: format!(
-                    "at t = {t}: T_bulk = {temp:.3e} beside a bulk speed {v:.3e}: the peculiar velocities are below {PRECISION_RATIO:e} of the stored velocities (or underflowed), so T_bulk, a2, a3 and crit have lost digits from here on. The no-splitting scheme rescales a cooling gas (exact over any number of decades); the splitting schemes do not."
+                    "at t = {t}: T_bulk = {temp:.3e} beside a bulk speed {v:.3e}: the peculiar velocities are below {PRECISION_RATIO:e} of the stored velocities (or underflowed), so T_bulk, a2, a3 and crit have lost digits from here on. The exact schemes (no-splitting, weighted) rescale a cooling gas (exact over any number of decades); the splitting schemes do not."
                 ),
             });
             break;

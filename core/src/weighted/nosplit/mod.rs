@@ -35,6 +35,7 @@
 //! its own term, each particle's alone, as GRW (13) has it.
 
 mod report;
+mod split;
 
 use super::moments::{momentum, observables};
 use super::reduce::Reduction;
@@ -54,6 +55,15 @@ use crate::restitution::Restitution;
 use crate::rng::{Rng, uniform_pair, uniform01};
 use crate::sample::standard_exponential;
 use crate::vec3::Vec3;
+
+/// A pair whose lighter partner weighs less than this (a particle of the start weighs 1)
+/// moves it whole (`kappa = 0`, at its rate: the outcome thinned by `1/(1 + kappa_max)`), so
+/// no lineage of ever lighter remainders is left at one velocity: a light particle of a
+/// cooling hard-sphere gas at a few thermal speeds, halved by every collision it had
+/// (`kappa = 1`), fell to 1e-170 and below, collided ever more often for its speed, and its
+/// weight underflowed to 0 (a non-finite mean followed). Far below any weight that counts:
+/// `n0` sums to 16 digits.
+pub const LIGHTEST: Real = 1e-12;
 
 /// The weighted exact loop for kernel `K`, restitution law `A`, drive `D`, dimension `G`
 /// (module docs).
@@ -145,45 +155,6 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         };
         s.refresh(sys)?;
         Ok(s)
-    }
-
-    /// The loop with weight windows ([`super::windows`]): after every event a particle the
-    /// event touched that is heavier than `split` times its speed shell's share (the allocated
-    /// reduction's, measured at every refresh of the bounds) is split into pieces of about
-    /// the share. `split = 0` never splits; a reduction by cells has no shares and never
-    /// splits. The windows are measured at the next refresh (the run's resync).
-    #[must_use]
-    pub fn with_windows(mut self, split: Real) -> Self {
-        self.split = split;
-        self
-    }
-
-    /// The copies the weight windows have made so far.
-    pub fn splits(&self) -> u64 {
-        self.splits
-    }
-
-    /// Particle `i` split by the windows (module docs of [`super::windows`]) into copies at
-    /// its velocity and last-kick time, as many as half the free room beyond a collision's two
-    /// allows.
-    fn split(&mut self, sys: &mut Particles<'_>, i: usize) {
-        let Some(w) = &self.windows else {
-            return;
-        };
-        let (q, g) = (sys.as_slice()[i], sys.weight(i));
-        // Half the free room beyond the two a collision's particles need.
-        let room = (sys.capacity() - sys.len()).saturating_sub(2) / 2;
-        let m = w.pieces(q.velocity(), g).min(room + 1);
-        if m < 2 {
-            return;
-        }
-        let piece = g / m as Real;
-        sys.set_weight(i, piece);
-        for _ in 1..m {
-            // Room was counted above.
-            let _ = sys.push(q.velocity(), piece, q.t_kick);
-        }
-        self.splits += (m - 1) as u64;
     }
 
     /// Particle `i` kicked from its last-kick time to now (a drive that acts only).
@@ -344,7 +315,8 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             // The law in stored units: at the physical impact velocity (the map is linear).
             let alpha = clamped_coefficient(&self.law, u, e, &mut self.counts);
             let (a, b) = inelastic(vi, vj, e, alpha);
-            let Some(kappa) = self.outcome_kappa((a, b), rng) else {
+            let lighter = if gi < gj { gi } else { gj };
+            let Some(kappa) = self.outcome_kappa((a, b), lighter, rng) else {
                 // This outcome's rate is (1 + kappa)/(1 + kappa_max) of the majorant's.
                 self.counts.fictitious += 1;
                 self.split(sys, i);
@@ -390,18 +362,24 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     }
 
     /// The `kappa` of the outcome `(a, b)` ([`Transfer::with_tail`]: the tail's when a partner
-    /// lands beyond its speed from `vref`, in thermal speeds of the last refresh), or `None`
-    /// when the outcome is thinned away, with probability `1 - (1 + kappa)/(1 + kappa_max)`.
-    fn outcome_kappa<R: Rng + ?Sized>(&self, (a, b): (Vec3, Vec3), rng: &mut R) -> Option<Real> {
-        let Some((tail, speed)) = self.transfer.tail() else {
-            return Some(self.transfer.kappa());
+    /// lands beyond its speed from `vref`, in thermal speeds of the last refresh; 0 for a pair
+    /// whose lighter partner weighs less than [`LIGHTEST`]), or `None` when the outcome is
+    /// thinned away, with probability `1 - (1 + kappa)/(1 + kappa_max)`.
+    fn outcome_kappa<R: Rng + ?Sized>(
+        &self,
+        (a, b): (Vec3, Vec3),
+        lighter: Real,
+        rng: &mut R,
+    ) -> Option<Real> {
+        let far =
+            |v: Vec3, (_, speed): (Real, Real)| (v - self.vref).norm2() > speed * speed * self.tref;
+        let kappa = match self.transfer.tail() {
+            _ if lighter < LIGHTEST => 0.0,
+            Some(tail) if far(a, tail) || far(b, tail) => tail.0,
+            Some(_) | None => self.transfer.kappa(),
         };
-        let edge = speed * speed * self.tref;
-        if (a - self.vref).norm2() > edge || (b - self.vref).norm2() > edge {
-            return Some(tail);
-        }
-        let kappa = self.transfer.kappa();
-        (uniform01(rng) * (1.0 + tail) < 1.0 + kappa).then_some(kappa)
+        let max = self.transfer.kappa_max();
+        (kappa == max || uniform01(rng) * (1.0 + max) < 1.0 + kappa).then_some(kappa)
     }
 
     /// Counts a candidate toward the next refresh of the bounds, and refreshes them when due.
