@@ -84,6 +84,13 @@ public:
         check(gdsmc_sim_get_velocities(sim_, v.data(), v.size()), "gdsmc_sim_get_velocities");
         return v;
     }
+    // The particles' weights (1 each unless config.scheme = GDSMC_SCHEME_WEIGHTED, whose
+    // number of particles, size(), changes as it runs).
+    std::vector<double> weights() const {
+        std::vector<double> w(size());
+        check(gdsmc_sim_get_weights(sim_, w.data(), w.size()), "gdsmc_sim_get_weights");
+        return w;
+    }
     void set_velocities(const std::vector<double> &v) {
         check(gdsmc_sim_set_velocities(sim_, v.data(), v.size()), "gdsmc_sim_set_velocities");
     }

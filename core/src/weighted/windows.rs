@@ -121,9 +121,14 @@ impl Allocation {
 
 /// The weight windows of a weighted loop: a particle heavier than `split` times its shell's
 /// share ([`Allocation::each`]) is cut into `round(g / w_s)` pieces (module docs).
+/// Only the shares are kept (not the shells' weights: a loop holds one, and the C ABI's
+/// handles and the firmwares hold the loop).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Windows {
-    allocation: Allocation,
+    flow: Vec3,
+    per: Real,
+    shells: usize,
+    each: [Real; MAX_SHELLS],
     split: Real,
 }
 
@@ -131,16 +136,28 @@ impl Windows {
     /// Windows of the allocation `allocation`, splitting a particle heavier than `split > 0`
     /// times its shell's share.
     pub fn new(allocation: Allocation, split: Real) -> Self {
-        Windows { allocation, split }
+        let Allocation {
+            flow,
+            per,
+            shells,
+            each,
+            ..
+        } = allocation;
+        Windows {
+            flow,
+            per,
+            shells,
+            each,
+            split,
+        }
     }
 
     /// The pieces a particle of velocity `v` and weight `g` is to be cut into (1: kept whole),
     /// at most [`MAX_PIECES`].
     #[inline(always)]
     pub fn pieces(&self, v: Vec3, g: Real) -> usize {
-        let a = &self.allocation;
-        let c = sqrt((v - a.flow).norm2());
-        let w = a.each[a.shell(c)];
+        let c = sqrt((v - self.flow).norm2());
+        let w = self.each[((c * self.per) as usize).min(self.shells - 1)];
         // `w > 0` for every shell (an occupied one's weight, or a neighbour's share).
         if g <= self.split * w {
             return 1;
