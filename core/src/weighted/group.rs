@@ -85,18 +85,6 @@ impl Spread {
         self.m2 += g * d.dot(c - self.mean);
     }
 
-    /// Adds every point of `o` (Chan, Golub and LeVeque's pairwise update).
-    fn merge(&mut self, o: &Spread) {
-        let w = self.w + o.w;
-        if o.w <= 0.0 || w <= 0.0 {
-            return;
-        }
-        let d = o.mean - self.mean;
-        self.m2 += o.m2 + self.w * o.w / w * d.norm2();
-        self.mean += (o.w / w) * d;
-        self.w = w;
-    }
-
     /// The spread `m2 / w` (0 for nothing, never below 0).
     fn s2(&self) -> Real {
         if self.w > 0.0 && self.m2 > 0.0 {
@@ -181,9 +169,11 @@ impl Tally {
         let spread = s2 > 0.0 && s2.is_finite();
         let marked = |q: &Particle| (weight(q) < 0.0).then(|| (-weight(q), q.velocity()));
         let radius2 = FAR * FAR * self.after.s2();
-        let (mut near, mut far) = (Spread::default(), Spread::default());
+        let (mut near, mut far, mut every) =
+            (Spread::default(), Spread::default(), Spread::default());
         for (g, v) in buf[..*len].iter().filter_map(marked) {
             let c = v - self.flow - u1;
+            every.add(g, c);
             if c.norm2() > radius2 {
                 far.add(g, c);
             } else {
@@ -199,11 +189,6 @@ impl Tally {
             let s2_near = energy / w_near - m.norm2();
             (s2_near > 0.0 && near.s2() > 0.0 && s2_near.is_finite())
                 .then(|| (m, sqrt(s2_near / near.s2()), near.mean))
-        };
-        let every = {
-            let mut all = near;
-            all.merge(&far);
-            all
         };
         let (m, lambda, center, keep_far) = match (far.w > 0.0, near.w > 0.0) {
             (true, true) => fit(&near, &far).map(|(m, l, c)| (m, l, c, true)),

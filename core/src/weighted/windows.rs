@@ -115,8 +115,14 @@ impl Allocation {
     /// The shell of speed `c` (the last beyond the fastest).
     #[inline(always)]
     pub fn shell(&self, c: Real) -> usize {
-        ((c * self.per) as usize).min(self.shells - 1)
+        shell_of(c, self.per, self.shells)
     }
+}
+
+/// The shell of speed `c` among `shells` of `per` to the unit of speed (the last beyond).
+#[inline(always)]
+fn shell_of(c: Real, per: Real, shells: usize) -> usize {
+    ((c * per) as usize).min(shells - 1)
 }
 
 /// The weight windows of a weighted loop: a particle heavier than `split` times its shell's
@@ -157,7 +163,7 @@ impl Windows {
     #[inline(always)]
     pub fn pieces(&self, v: Vec3, g: Real) -> usize {
         let c = sqrt((v - self.flow).norm2());
-        let w = self.each[((c * self.per) as usize).min(self.shells - 1)];
+        let w = self.each[shell_of(c, self.per, self.shells)];
         // `w > 0` for every shell (an occupied one's weight, or a neighbour's share).
         if g <= self.split * w {
             return 1;
