@@ -66,13 +66,15 @@ fn marginal_of_a_stationary_maxwellian() {
     assert!(m.outside.0 < 1e-3 && m.outside.1 < 1e-3);
 }
 
-/// An elastic hard-sphere gas is at equilibrium: f/phi = 1 in every shell of c = |v - V|/v0
-/// up to c = 3 (30 shells, z = 4.2: 0.001 / 30 per shell), averaged over the steady points.
-#[test]
-fn reduced_distribution_of_an_elastic_gas_is_phi() {
+/// The reduced distribution of an elastic hard-sphere gas in dimension `d` (at equilibrium),
+/// 30 shells to c = 3 averaged over the steady points, each f/phi = 1 (z = 4.2: 0.001 / 30
+/// per shell).
+fn elastic_reduced(d: usize, seed: u64) -> gdsmc_runner::analysis::distribution::Reduced {
+    let dim = format!("particles.dimension={d}");
     let s = shipped(
         "hcs-hard-spheres",
         &[
+            dim.as_str(),
             "collisions.restitution=1.0",
             "observe.t_end=4.0",
             "observe.intervals=8",
@@ -83,23 +85,47 @@ fn reduced_distribution_of_an_elastic_gas_is_phi() {
         ],
         2000,
         32,
-        8,
+        seed,
     );
     let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
     let r = reduced(&s, &st).expect("asked for");
     assert_eq!(r.shells.len(), 31);
-    assert_eq!(r.tail.map(|t| t.equation), Some("MS (42)"));
     let z = 4.2 / multiplier(32);
     for sh in &r.shells[..30] {
         assert!(
             (sh.ratio.0 - 1.0).abs() <= z * sh.ratio.1,
-            "shell [{}, {}): f/phi = {} +- {}",
+            "d = {d}, shell [{}, {}): f/phi = {} +- {}",
             sh.c_lo,
             sh.c_hi,
             sh.ratio.0,
             sh.ratio.1
         );
     }
+    r
+}
+
+/// An elastic hard-sphere gas is at equilibrium: f/phi = 1 in every shell of c = |v - V|/v0
+/// up to c = 3, and MS (42) is its tail law.
+#[test]
+fn reduced_distribution_of_an_elastic_gas_is_phi() {
+    let r = elastic_reduced(3, 8);
+    assert_eq!(r.tail.map(|t| t.equation), Some("MS (42)"));
+}
+
+/// Elastic hard disks are at equilibrium too: f/phi = 1 with the planar Maxwellian `phi(c) =
+/// exp(-c^2)/pi` in every ring (`v0 = sqrt(2 T)`, T of two degrees of freedom), and Delta's
+/// Sonine polynomial is the planar one; MS's tail laws are for spheres.
+#[test]
+fn reduced_distribution_of_elastic_disks_is_the_planar_phi() {
+    let r = elastic_reduced(2, 9);
+    assert_eq!(r.tail, None);
+    // S_2(x) = x^2/2 - 2x + 1 in the plane (its zeros 2 -+ sqrt 2).
+    let off = |sh: &gdsmc_runner::analysis::distribution::ReducedShell| {
+        let mid = 0.5 * (sh.c_lo + sh.c_hi);
+        let x = mid * mid;
+        (sh.s2 - (0.5 * x * x - 2.0 * x + 1.0)).abs()
+    };
+    assert!(r.shells[..30].iter().all(|sh| off(sh) < 1e-12));
 }
 
 /// MS Figures 2 and 3 (white noise, alpha = 0.5): Delta(c) follows the Sonine shape, and the

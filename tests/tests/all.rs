@@ -19,6 +19,7 @@ mod maxwell_relaxation;
 mod mixture;
 mod mixture_steady;
 mod mutated_scenes;
+mod power_tail;
 mod rough;
 mod source_sizes;
 mod splitting;

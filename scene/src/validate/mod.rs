@@ -88,26 +88,27 @@ impl<'a> Ctx<'a> {
 const SPHERES_ONLY: &str =
     "is written for spheres (d = 3); disks (particles.dimension = 2) do not have it";
 
+/// The histograms a scene asks for that disks refuse: (a reduced one, a marginal one). Only
+/// the marginal one now: the reduced distribution is measured in any dimension.
+type Histograms = (bool, bool);
+
 /// The scene's rules that depend on the physics, for a physics changed after the file was
 /// read ([`crate::Scene::with_physics`]): the scheme's grid against the observation `times`
-/// and what disks refuse (`histograms`: a reduced, a marginal one). The
+/// and what disks refuse (`histograms`: a reduced one, allowed, and a marginal one). The
 /// key and what is wrong, or `None`. The file's validation applies the same rules with the
 /// value's line.
 pub(crate) fn physics_rules(
     physics: &gdsmc_core::physics::Physics,
     times: &[f64],
-    histograms: (bool, bool),
+    histograms: Histograms,
 ) -> Option<(&'static str, String)> {
     if let Some(m) = scheme::grid_problem(physics.scheme, times) {
         return Some(("scheme.dt", m));
     }
     if physics.dimension == gdsmc_core::physics::DimensionChoice::Two {
-        let key = match histograms {
-            (true, _) => Some("reduced_histogram"),
-            (_, true) => Some("marginal_histogram"),
-            _ => None,
-        };
-        return key.map(|k| (k, SPHERES_ONLY.to_string()));
+        return histograms
+            .1
+            .then(|| ("marginal_histogram", SPHERES_ONLY.to_string()));
     }
     None
 }
@@ -118,15 +119,13 @@ impl SceneFile {
         sweep::sweep(&Ctx::new(path, text), &self.sweep)
     }
 
-    /// Disks (`particles.dimension = 2`) run, observe their moments and speed shells (ring
-    /// areas) and compare with the references written for any dimension; MS's reduced
-    /// distribution with its tail laws and BRS's marginal distribution are written for spheres, and are refused at their key rather than computed with the
-    /// wrong volume.
+    /// Disks (`particles.dimension = 2`) run, observe their moments, speed shells (ring
+    /// areas) and reduced distribution (the planar Maxwellian and Sonine polynomial beside it;
+    /// MS's hard-sphere tail laws are for spheres) and compare with the references written
+    /// for any dimension; BRS's marginal distribution is written for spheres, and is refused
+    /// at its key rather than computed with the wrong volume.
     fn spheres_only(&self, ctx: &Ctx<'_>) -> Result<(), Error> {
         let why = SPHERES_ONLY;
-        if let Some(h) = &self.reduced_histogram {
-            return ctx.invalid(h.shells.span(), "reduced_histogram", why);
-        }
         if let Some(h) = &self.marginal_histogram {
             return ctx.invalid(h.axis.span(), "marginal_histogram", why);
         }

@@ -74,8 +74,11 @@ pub struct Reduced {
 /// The tail law of MS for this scene, with `mu_2` from the run (pairs) or, without pairs,
 /// the first Sonine approximation `mu_2^(0) (1 + 3 a2 / 16)` (MS (26), (28)).
 pub fn tail_law(scene: &Scene, stats: &RunStats, a2: f64) -> Option<TailLaw> {
-    if scene.physics().kernel.kind() != KernelKind::HardSpheres || !scene.translation_is_smooth() {
-        return None;
+    if scene.physics().kernel.kind() != KernelKind::HardSpheres
+        || !scene.translation_is_smooth()
+        || scene.dimension() != 3
+    {
+        return None; // MS's laws: smooth hard spheres
     }
     // MS's tail laws assume a constant restitution coefficient.
     let alpha = scene.physics().restitution.constant()?;
@@ -113,6 +116,7 @@ pub fn reduced(scene: &Scene, stats: &RunStats) -> Option<Reduced> {
     let a2 = settled(stats, name::A2)?;
     let tail = tail_law(scene, stats, a2.0);
     let k = h.len() - 1;
+    let d = stats.dimension;
     let shells = (0..=k)
         .map(|i| {
             let c_lo = c_max * i as f64 / k as f64;
@@ -121,8 +125,8 @@ pub fn reduced(scene: &Scene, stats: &RunStats) -> Option<Reduced> {
             } else {
                 c_max * (i + 1) as f64 / k as f64
             };
-            let vol = tail::shell_volume(c_lo, c_hi);
-            let w_phi = tail::phi_shell(c_lo, c_hi);
+            let vol = tail::shell_volume_in(d, c_lo, c_hi);
+            let w_phi = tail::phi_shell_in(d, c_lo, c_hi);
             let f = (h.mean(i), h.ci(i));
             let bounded = vol.is_finite();
             let density = if bounded { f.0 / vol } else { 0.0 };
@@ -144,7 +148,7 @@ pub fn reduced(scene: &Scene, stats: &RunStats) -> Option<Reduced> {
                 phi,
                 ratio,
                 delta: ((ratio.0 - 1.0) / a2.0, ratio.1 / a2.0.abs()),
-                s2: tail::sonine_s2(mid * mid),
+                s2: tail::sonine_s2_in(d, mid * mid),
                 g,
                 g_maxwell,
             }

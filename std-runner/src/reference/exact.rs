@@ -242,7 +242,14 @@ pub mod tail {
     /// The Sonine polynomial `S_2(x) = x^2/2 - 5x/2 + 15/8` (`d = 3`), MS (24)-(25); MS plot
     /// `Delta(c)` against `S_2(c^2)`.
     pub fn sonine_s2(x: f64) -> f64 {
-        0.5 * x * x - 2.5 * x + 15.0 / 8.0
+        sonine_s2_in(3, x)
+    }
+
+    /// The Sonine polynomial of `d` dimensions, `S_2(x) = x^2/2 - (d + 2) x/2 + d (d + 2)/8`
+    /// (MS (24) with `d/2 - 1` for `1/2`; disks: `x^2/2 - 2 x + 1`).
+    pub fn sonine_s2_in(d: usize, x: f64) -> f64 {
+        let d = d as f64;
+        0.5 * x * x - 0.5 * (d + 2.0) * x + d * (d + 2.0) / 8.0
     }
 
     /// `phi(c) = pi^{-3/2} exp(-c^2)`, the reduced Maxwellian of MS.

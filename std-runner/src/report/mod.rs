@@ -80,7 +80,8 @@ pub fn histograms_csv(
 }
 
 /// The files of a run besides the charts, by name, as bytes: observables.csv, summary.json,
-/// and histograms.csv, reduced.csv, marginal.csv when the scene asks for them. The command
+/// and histograms.csv, reduced.csv (with power_tail.csv), marginal.csv when the scene asks for
+/// them. The command
 /// writes them ([`write_all`]); the Python package hands them over as they are.
 pub fn tables(
     scene: &Scene,
@@ -106,6 +107,10 @@ pub fn tables(
     if let Some(r) = crate::analysis::distribution::reduced(scene, stats) {
         let bytes = reduced_csv(&r).map_err(|e| csv_err("reduced.csv", e))?;
         out.push(("reduced.csv".into(), bytes));
+    }
+    if let Some(t) = crate::analysis::power_tail::measure(scene, stats) {
+        let bytes = power_tail_csv(&t).map_err(|e| csv_err("power_tail.csv", e))?;
+        out.push(("power_tail.csv".into(), bytes));
     }
     if let Some(m) = crate::analysis::distribution::marginal(stats) {
         let bytes = marginal_csv(&m).map_err(|e| csv_err("marginal.csv", e))?;
@@ -158,6 +163,42 @@ pub fn commit_run(
         "ensembles": stats.ensembles,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
     }))
+}
+
+/// power_tail.csv: the reduced tail's local slopes
+/// ([`crate::analysis::power_tail`]), a row per window `[from, to = 2 from]`: `beyond,
+/// beyond_ci` (`P(c >= to)` and its 99.9% half-width), `slope, slope_ci`, `resolved` (1 when
+/// `P(c >= to)` is resolved), `measured` (1 on the window whose slope is the measured
+/// exponent), `exact` (the exact exponent, empty without one).
+pub fn power_tail_csv(t: &crate::analysis::power_tail::PowerTail) -> Result<Vec<u8>, csv::Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "from",
+        "to",
+        "beyond",
+        "beyond_ci",
+        "slope",
+        "slope_ci",
+        "resolved",
+        "measured",
+        "exact",
+    ])?;
+    let exact = t.exact.map_or(String::new(), |s| format!("{s:?}"));
+    for sl in &t.slopes {
+        let measured = t.measured.is_some_and(|m| m.from == sl.from);
+        w.write_record([
+            format!("{:?}", sl.from),
+            format!("{:?}", sl.to),
+            format!("{:?}", sl.beyond.0),
+            format!("{:?}", sl.beyond.1),
+            format!("{:?}", sl.value),
+            format!("{:?}", sl.ci),
+            u8::from(sl.resolved).to_string(),
+            u8::from(measured).to_string(),
+            exact.clone(),
+        ])?;
+    }
+    w.into_inner().map_err(|e| e.into_error().into())
 }
 
 /// reduced.csv: MS's reduced distribution per shell of `c = |v - V| / v0`: `c_lo, c_hi, f,

@@ -44,6 +44,8 @@ pub struct Summary {
     pub tail: Option<Tail>,
     /// MS's reduced distribution, when the scene asks for it.
     pub reduced_distribution: Option<Reduced>,
+    /// The reduced tail's power law, when the reduced histogram has one to measure.
+    pub power_tail: Option<PowerTail>,
     /// The Gaussian thermostat's balance, for a thermostatted scene.
     pub thermostat: Option<Thermostat>,
     /// Warnings: what fired, how large the error is expected to be, what to do.
@@ -171,6 +173,24 @@ pub struct Reduced {
     pub file: &'static str,
 }
 
+/// The reduced tail's measured power law ([`crate::analysis::power_tail`]).
+#[derive(Clone, Debug, Serialize)]
+pub struct PowerTail {
+    /// The farthest resolved window `[x, 2x]`, when one is.
+    pub window: Option<[f64; 2]>,
+    /// Its slope: the measured exponent `s` of `P(c >= x) ~ x^-s`.
+    pub exponent: Option<f64>,
+    /// Its 99.9% half-width.
+    pub exponent_ci: Option<f64>,
+    /// The exact exponent, when the scene's model has one.
+    pub exact: Option<f64>,
+    /// The verdict: the exact root within the interval (none without both or when the
+    /// interval is as wide as the value).
+    pub agrees: Option<bool>,
+    /// The file holding every window's slope.
+    pub file: &'static str,
+}
+
 /// A tail law of MS (69), (71) or (77).
 #[derive(Clone, Debug, Serialize)]
 pub struct TailLaw {
@@ -251,6 +271,14 @@ impl Summary {
                     }),
                     file: "reduced.csv",
                 }
+            }),
+            power_tail: crate::analysis::power_tail::measure(scene, stats).map(|t| PowerTail {
+                window: t.measured.map(|m| [m.from, m.to]),
+                exponent: t.measured.map(|m| m.value),
+                exponent_ci: t.measured.map(|m| m.ci),
+                exact: t.exact,
+                agrees: t.agrees(),
+                file: "power_tail.csv",
             }),
             thermostat: crate::reference::thermostat::GaussianBalance::of(scene).map(|b| {
                 Thermostat {

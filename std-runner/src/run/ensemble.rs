@@ -202,8 +202,8 @@ fn observe<E: EventLoop>(
         // diagnostics reduced by v0 (exact for a gas stored rescaled, whose physical
         // temperature may have underflowed).
         let wants_reduced = scene.reduced_histogram().is_some() && ti >= reduced_from;
-        let stored =
-            (wants_reduced || scene.collisional_pairs() > 0).then(|| stored_bulk_temperature(p));
+        let stored = (wants_reduced || scene.collisional_pairs() > 0)
+            .then(|| stored_bulk_temperature(p, scene.dimension()));
         if let (Some(shells), true, Some((bulk, t_bulk))) =
             (scene.reduced_histogram(), wants_reduced, stored)
         {
@@ -311,9 +311,9 @@ fn cooling_rates(
     v
 }
 
-/// Bulk velocity and temperature (about it) of the velocities as stored (weighted particles:
-/// weighted means).
-fn stored_bulk_temperature(p: &Particles<'_>) -> (Vec3, f64) {
+/// Bulk velocity and temperature (about it, `d` degrees of freedom: disks' velocities have no
+/// third component) of the velocities as stored (weighted particles: weighted means).
+fn stored_bulk_temperature(p: &Particles<'_>, d: usize) -> (Vec3, f64) {
     let n = p.mass();
     let mut v = Vec3::ZERO;
     for (i, q) in p.as_slice().iter().enumerate() {
@@ -324,5 +324,5 @@ fn stored_bulk_temperature(p: &Particles<'_>) -> (Vec3, f64) {
     for (i, q) in p.as_slice().iter().enumerate() {
         s += p.weight(i) * (q.velocity() - bulk).norm2();
     }
-    (bulk, s / (3.0 * n))
+    (bulk, s / (d as f64 * n))
 }

@@ -329,6 +329,7 @@ pub fn stats_of(scene: &Scene, totals: Totals, timing: Timing) -> RunStats {
         acc,
         steady: st,
         hist,
+        tail,
         counts,
         ensembles,
         ..
@@ -369,6 +370,7 @@ pub fn stats_of(scene: &Scene, totals: Totals, timing: Timing) -> RunStats {
         steady,
         histogram,
         reduced,
+        reduced_tail: tail,
         marginal,
     }
 }

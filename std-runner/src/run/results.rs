@@ -76,6 +76,9 @@ pub struct RunStats {
     /// The reduced-speed histogram of `c = |v - V| / v0` (its radius `c_max`), each
     /// ensemble's averaged over the steady observations.
     pub reduced: Option<ShellHistogram>,
+    /// The reduced histogram's cumulative tail `P(c >= c_k)` at each shell's inner edge with
+    /// its covariances, for at most [`crate::run::totals::TAIL_EDGES`] shells.
+    pub reduced_tail: Option<gdsmc_stats::Covariance>,
     /// The marginal histogram at the first and at the last observation.
     pub marginal: Option<MarginalHistogram>,
 }

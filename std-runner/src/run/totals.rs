@@ -7,7 +7,7 @@
 use crate::run::columns::names;
 use crate::scene::Scene;
 use gdsmc_core::engine::Counts;
-use gdsmc_stats::Accumulator;
+use gdsmc_stats::{Accumulator, Covariance};
 
 /// The statistics of the ensembles folded so far (a prefix of a range of ensembles).
 #[derive(Clone, Debug)]
@@ -18,6 +18,10 @@ pub struct Totals {
     pub steady: Accumulator,
     /// Statistics of the histogram values each ensemble appends after its observables.
     pub hist: Accumulator,
+    /// Statistics of the reduced histogram's cumulative tail `P(c >= c_k)` at each shell's
+    /// inner edge, with their covariances (the tail exponent's interval), when the scene asks
+    /// for at most [`TAIL_EDGES`] reduced shells.
+    pub tail: Option<Covariance>,
     /// Event counts summed.
     pub counts: Counts,
     /// Ensembles folded.
@@ -25,7 +29,13 @@ pub struct Totals {
     ncol: usize,
     times: usize,
     first: usize,
+    /// Where the reduced histogram's weights start in the histogram values.
+    reduced_at: usize,
 }
+
+/// The most reduced shells (with the one beyond) whose cumulative tail is folded with its
+/// covariances: `TAIL_EDGES^2` co-moments (half a mebibyte).
+pub const TAIL_EDGES: usize = 257;
 
 impl Totals {
     /// No ensemble yet, shaped for `scene`.
@@ -36,11 +46,16 @@ impl Totals {
             acc: Accumulator::new(times * ncol),
             steady: Accumulator::new(ncol),
             hist: Accumulator::new(scene.extra_len()),
+            tail: scene
+                .reduced_histogram()
+                .filter(|h| h.weights() <= TAIL_EDGES)
+                .map(|h| Covariance::new(h.weights())),
             counts: Counts::default(),
             ensembles: 0,
             ncol,
             times,
             first: scene.steady_from().unwrap_or(0),
+            reduced_at: scene.histogram().map_or(0, |h| h.weights()),
         }
     }
 
@@ -69,6 +84,16 @@ impl Totals {
         let mut hi = Accumulator::new(h.len());
         hi.push(h);
         self.hist.merge(&hi);
+        if let Some(tail) = &mut self.tail {
+            let shells = &h[self.reduced_at..self.reduced_at + tail.len()];
+            let mut beyond = vec![0.0; shells.len()];
+            let mut sum = 0.0;
+            for (b, w) in beyond.iter_mut().zip(shells).rev() {
+                sum += w;
+                *b = sum;
+            }
+            tail.push(&beyond);
+        }
         self.counts = self.counts.add(counts);
         self.ensembles += 1;
     }
