@@ -34,8 +34,14 @@ pub trait Drive: Copy + core::fmt::Debug {
     /// compiled (the engine's `Exact` level), and the validation refuses the scheme first.
     const EXACT: bool = true;
 
+    /// True for a drive that reads the observables ([`Drive::observe`] does something): a loop
+    /// may skip computing them for a drive that does not (the weighted loop's synchronizations
+    /// before a reduction).
+    const OBSERVES: bool = false;
+
     /// Called by the event loops whenever every particle is at one time, with the observables
-    /// there (drives that act about the bulk velocity take it from here). Default: nothing.
+    /// there (drives that act about the bulk velocity take it from here; they set
+    /// [`Drive::OBSERVES`]). Default: nothing.
     #[inline(always)]
     fn observe(&mut self, _obs: &Observables) {}
 
@@ -145,5 +151,31 @@ pub trait Drive: Copy + core::fmt::Debug {
                 self.kick(p, i, t, rng);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A drive's observation changes it exactly when it declares [`Drive::OBSERVES`] (a loop
+    /// that skips the observables for a drive that does not would otherwise lose its state).
+    fn observes_as_declared<D: Drive + PartialEq>(d: D) {
+        let mut seen = d;
+        let obs = Observables {
+            bulk: Vec3::new(0.5, -0.25, 2.0),
+            ..Observables::default()
+        };
+        seen.observe(&obs);
+        assert_eq!(seen != d, D::OBSERVES, "{d:?}");
+    }
+
+    #[test]
+    fn every_drive_that_reads_the_observables_says_so() {
+        observes_as_declared(NoDrive);
+        observes_as_declared(WhiteNoise::new(1.0).unwrap());
+        observes_as_declared(PlanarWhiteNoise::new(1.0).unwrap());
+        observes_as_declared(GaussianThermostat::new(0.5).unwrap());
+        observes_as_declared(ConstantForce::new(0.5).unwrap());
     }
 }

@@ -50,6 +50,7 @@ impl GaussianThermostat {
 
 impl Drive for GaussianThermostat {
     const ACTS: bool = true;
+    const OBSERVES: bool = true;
     fn observe(&mut self, obs: &Observables) {
         self.center = obs.bulk;
     }
@@ -97,6 +98,7 @@ impl ConstantForce {
 
 impl Drive for ConstantForce {
     const ACTS: bool = true;
+    const OBSERVES: bool = true;
     const COUPLES: bool = true;
     const EXACT: bool = <Self as Declared>::STEPPED_ONLY.is_none();
     fn observe(&mut self, obs: &Observables) {

@@ -178,7 +178,9 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
             for i in 0..sys.len() {
                 self.kick(sys, i, rng);
             }
-            self.drive.observe(&observables(sys, G::CHOICE.d()));
+            if D::OBSERVES {
+                self.drive.observe(&observables(sys, G::CHOICE.d()));
+            }
         }
     }
 
