@@ -91,8 +91,8 @@ class Result:
             (Student-t quantile for the ensembles run; 3.2 sigma for many).
         references: the reference columns (e.g. ``T_exact``, ``T_mean_n``), per name.
         table: every column of observables.csv in order (``t``, ``NAME``, ``NAME_ci``, ...).
-        histograms: the other tables the scene asks for (``histograms``, ``reduced``,
-            ``marginal``), each a dict of columns.
+        histograms: the other tables the scene asks for (``histograms``, ``reduced`` with
+            ``power_tail``, ``marginal``), each a dict of columns.
         summary: summary.json as a dict (sizes, seed, timing, counts, errors against the
             references, steady averages, the tail exponent, warnings).
         samples: with ``run(..., samples=True)``, per observable every ensemble's own values,

@@ -229,7 +229,8 @@ impl RunResult {
     }
 
     /// The files `gdsmc run` writes besides the charts, as text: observables.csv,
-    /// summary.json, and histograms.csv, reduced.csv, marginal.csv when the scene has them.
+    /// summary.json, and histograms.csv, reduced.csv (with power_tail.csv), marginal.csv when
+    /// the scene has them.
     fn tables(&self) -> PyResult<Vec<(String, String)>> {
         let refs = self.refs();
         let files = report::tables(self.scene.scene(), &self.stats, &refs).map_err(to_py)?;
