@@ -69,6 +69,7 @@ fn every_chart_of_every_shipped_scene_is_readable() {
         let refs = gdsmc_runner::reference::curves::for_scene(&s);
         let reduced = gdsmc_runner::analysis::distribution::reduced(&s, &st);
         let marginal = gdsmc_runner::analysis::distribution::marginal(&st);
+        let power = gdsmc_runner::analysis::power_tail::measure(&s, &st);
         let title = charts::title(&s, st.ensembles);
         let all = charts::all(
             &title,
@@ -77,6 +78,7 @@ fn every_chart_of_every_shipped_scene_is_readable() {
             &refs,
             reduced.as_ref(),
             marginal.as_ref(),
+            power.as_ref(),
         );
         for &col in &st.names {
             assert!(

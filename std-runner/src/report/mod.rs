@@ -133,6 +133,7 @@ pub fn write_all(
     }
     let reduced = crate::analysis::distribution::reduced(scene, stats);
     let marginal = crate::analysis::distribution::marginal(stats);
+    let power = crate::analysis::power_tail::measure(scene, stats);
     let title = charts::title(scene, stats.ensembles);
     let all = charts::all(
         &title,
@@ -141,6 +142,7 @@ pub fn write_all(
         refs,
         reduced.as_ref(),
         marginal.as_ref(),
+        power.as_ref(),
     );
     charts::write(dir, &all, formats)?;
     Ok(())

@@ -6,6 +6,7 @@ pub mod distribution;
 pub mod export;
 pub mod frame;
 pub mod geometry;
+pub mod power_tail;
 pub mod profile;
 pub mod tail;
 pub mod time;
@@ -13,6 +14,7 @@ pub mod time;
 pub use distribution::distribution_charts;
 pub use export::Formats;
 pub use frame::Chart;
+pub use power_tail::power_tail;
 pub use profile::{Residuals, Series, Style, profile, profile_with_residuals};
 pub use tail::tail;
 
@@ -32,6 +34,7 @@ pub fn all(
     refs: &[ReferenceCurve],
     reduced: Option<&crate::analysis::distribution::Reduced>,
     marginal: Option<&crate::analysis::distribution::Marginal>,
+    power: Option<&crate::analysis::power_tail::PowerTail>,
 ) -> Vec<(String, Result<Chart, String>)> {
     let mut out = time::charts(title, stats, (axis, species), refs);
     if let Some(crate::run::ShellHistogram { radius, weights: h }) = &stats.histogram
@@ -44,6 +47,9 @@ pub fn all(
         ));
     }
     out.extend(distribution_charts(title, stats, reduced, marginal));
+    if let Some(t) = power {
+        out.push(("power_tail".into(), power_tail(title, t)));
+    }
     out
 }
 
