@@ -57,3 +57,35 @@ fn the_cooling_states_tail_exponent_is_the_exact_root() {
         );
     }
 }
+
+/// A sweep's points carry the exact root as a reference of `tail_exponent` (shown beside the
+/// measured exponent) where the scene has a reduced histogram and the model has a root: not
+/// for hard spheres, not under white noise, not without the histogram.
+#[test]
+fn a_sweep_shows_the_exact_root_where_it_holds() {
+    use gdsmc_runner::analysis::power_tail::{EXACT, EXPONENT};
+    use gdsmc_runner::sweep::point::references;
+    let root = |s: &gdsmc_runner::scene::Scene| {
+        references(s)
+            .into_iter()
+            .find(|r| r.name == EXACT)
+            .map(|r| (r.of, r.value))
+    };
+    for d in [3, 2] {
+        let s = cooling_state(0.3, d, 1);
+        assert_eq!(root(&s), Some((EXPONENT, tail_exponent(d, 0.3))), "d = {d}");
+    }
+    const SHELLS: [&str; 2] = ["reduced_histogram.shells=80", "reduced_histogram.radius=20"];
+    let hard = shipped_set("hcs-hard-spheres", &SHELLS, 64, 2, 1);
+    assert_eq!(root(&hard), None, "hard spheres have no power-law tail");
+    let heated = shipped_set(
+        "grw-example3",
+        &[SHELLS[0], SHELLS[1], "observe.steady_from=4"],
+        64,
+        2,
+        1,
+    );
+    assert_eq!(root(&heated), None, "white noise: no power-law tail");
+    let plain = shipped_set("hcs-maxwell", &[], 64, 2, 1);
+    assert_eq!(root(&plain), None, "nothing measured without the histogram");
+}

@@ -17,6 +17,16 @@ use crate::run::RunStats;
 use crate::scene::Scene;
 use gdsmc_stats::Covariance;
 
+/// The measured exponent's name where it stands beside the columns (a sweep's points).
+pub const EXPONENT: &str = "tail_exponent";
+
+/// Its exact root's name there.
+pub const EXACT: &str = "tail_exponent_exact";
+
+/// Where the exact root comes from.
+pub const EXACT_SOURCE: &str =
+    "Ernst and Brito 2002, the root of lambda_s = s lambda_2 / 2 (reference/maxwell_cumulant.rs)";
+
 /// The largest 99.9% half-width over the mean of a resolved tail weight.
 pub const RESOLVED: f64 = 0.2;
 

@@ -339,6 +339,9 @@ pub fn axis_label_in(name: &str, species: &[String]) -> String {
         "nu" => ("collision frequency nu = ds/dt", "(1/scene time unit)"),
         "zeta" => ("cooling rate zeta = -(dE/dt)_coll/E", "(1/scene time unit)"),
         "zeta_star" => ("reduced cooling rate zeta* = zeta/nu", NONE),
+        crate::analysis::power_tail::EXPONENT => {
+            ("power-law tail exponent s of P(c >= x) ~ x^-s", NONE)
+        }
         _ => return species_label(name, species).unwrap_or_else(|| name.to_string()),
     };
     format!("{words} {unit}")

@@ -165,9 +165,20 @@ pub fn charts(
         .collect();
     let common = common_title(points);
     let x_label = super::words::key_label(xkey, &base.scene);
+    // An observable some points lack (the power-law exponent where no window is resolved)
+    // is drawn where at least two points have it.
     let names = super::table::observable_names(results);
+    let drawn = |name: &&'static str| {
+        let has = |r: &&PointResult| {
+            r.observables
+                .iter()
+                .any(|o| o.0 == *name && o.1.is_finite())
+        };
+        results.iter().filter(has).count() >= 2
+    };
     names
         .into_iter()
+        .filter(drawn)
         .map(|name| {
             let mut series = Vec::new();
             let mut residuals = Vec::new();

@@ -133,11 +133,15 @@ pub fn window(scene: &crate::scene::Scene) -> (Window, std::ops::Range<usize>) {
     }
 }
 
-/// Each reference that applies to `scene`, averaged over its window ([`window`]).
+/// Each reference that applies to `scene`, averaged over its window ([`window`]); with a
+/// reduced histogram, the exact root of its power-law tail where one holds (shown, not
+/// judged: the root is the asymptote the measured local slope reaches,
+/// analysis/power_tail.rs).
 pub fn references(scene: &crate::scene::Scene) -> Vec<ReferenceValue> {
+    use crate::analysis::power_tail as power;
     let (_, span) = window(scene);
     let times = &scene.times()[span];
-    for_scene(scene)
+    let mut all: Vec<ReferenceValue> = for_scene(scene)
         .into_iter()
         .map(|r| ReferenceValue {
             name: r.name,
@@ -146,18 +150,29 @@ pub fn references(scene: &crate::scene::Scene) -> Vec<ReferenceValue> {
             source: r.source,
             value: times.iter().map(|&t| (r.curve)(t)).sum::<f64>() / times.len() as f64,
         })
-        .collect()
+        .collect();
+    let exact = power::exact_exponent(scene).filter(|_| scene.reduced_histogram().is_some());
+    all.extend(exact.map(|s| ReferenceValue {
+        name: power::EXACT,
+        of: power::EXPONENT,
+        kind: Kind::Limit,
+        source: power::EXACT_SOURCE,
+        value: s,
+    }));
+    all
 }
 
 impl PointResult {
     /// The window averages of a finished point's statistics: the steady-state window when
     /// the scene has one (each ensemble's average over it, then the mean over ensembles with
     /// its interval, as summary.json's `steady_state`), else the last observation; and each
-    /// reference averaged over the same observation times.
+    /// reference averaged over the same observation times. With a reduced histogram, the
+    /// measured power-law exponent (`tail_exponent`) and its exact root where one holds
+    /// (`tail_exponent_exact`, analysis/power_tail.rs).
     pub fn of(p: &PointScene, stats: &RunStats) -> Self {
         let last = stats.times.len() - 1;
         let (window, _) = window(&p.source.scene);
-        let observables = stats
+        let mut observables: Vec<(&'static str, f64, f64)> = stats
             .names
             .iter()
             .enumerate()
@@ -170,6 +185,11 @@ impl PointResult {
             })
             .collect();
         let references = references(&p.source.scene);
+        // The reduced tail's measured exponent (its exact root is among the references).
+        use crate::analysis::power_tail as power;
+        if let Some(m) = power::measure(&p.source.scene, stats).and_then(|t| t.measured) {
+            observables.push((power::EXPONENT, m.value, m.ci));
+        }
         PointResult {
             index: p.index,
             values: p.values.clone(),
