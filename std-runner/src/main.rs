@@ -200,10 +200,11 @@ enum Bench {
     ///
     /// Every rate is per CPU second of the measuring thread (the first line says
     /// clock=thread-cpu-time); --seconds is CPU time. One line per case:
-    ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y> acceptance=<a> of_pair_reference=<f> of_rng=<g> [background_per_s=<b>] [choice_reads_per_candidate=<r> choice_reads_per_collision=<q>]
-    ///   case=<name> n=<n> particles_per_s=<x>
+    ///   case=<name> kernel=<maxwell|hard-spheres|vhs> n=<n> collisions_per_s=<x> attempts_per_s=<y> acceptance=<a> of_pair_reference=<f> of_rng=<g> spread=<s> [background_per_s=<b>] [choice_reads_per_candidate=<r> choice_reads_per_collision=<q>]
+    ///   case=<name> n=<n> particles_per_s=<x> spread=<s>
     /// of_pair_reference: candidates per second over case=reference-pair-update's pairs per
-    /// second (a reference rate, not a bound).
+    /// second (a reference rate, not a bound), timed again before each round of the loop.
+    /// Every figure is the median of five rounds; spread: their range over the median.
     #[command(verbatim_doc_comment)]
     Throughput {
         /// Particle numbers of the event-loop cases (comma-separated).

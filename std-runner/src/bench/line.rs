@@ -16,8 +16,11 @@ pub enum Line {
 }
 
 /// An event loop's line: `case=<name> kernel=<k> n=<n> collisions_per_s=<x>
-/// attempts_per_s=<y> acceptance=<a> of_pair_reference=<f> of_rng=<g> [background_per_s=<b>]
-/// [choice_reads_per_candidate=<r> choice_reads_per_collision=<q>]`.
+/// attempts_per_s=<y> acceptance=<a> of_pair_reference=<f> of_rng=<g> spread=<s>
+/// [background_per_s=<b>] [choice_reads_per_candidate=<r> choice_reads_per_collision=<q>]`:
+/// each rate the median of the bench's rounds, `f` the median of each round's candidates over
+/// the pair reference timed just before it, `s` the rounds' range of candidates per second
+/// over their median.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LoopLine {
     /// The case (loop, drive, restitution).
@@ -26,10 +29,15 @@ pub struct LoopLine {
     pub kernel: &'static str,
     /// Particles.
     pub n: usize,
-    /// Real collisions per second.
+    /// Real collisions per second (the rounds' median).
     pub collisions_per_s: f64,
-    /// Candidates (events of the majorant process) per second.
+    /// Candidates (events of the majorant process) per second (the rounds' median).
     pub attempts_per_s: f64,
+    /// The rounds' median of candidates per second over the pair reference's pairs per
+    /// second timed just before each round.
+    pub of_pair_reference: f64,
+    /// The rounds' range of candidates per second over their median.
+    pub spread: f64,
     /// The limits at this `n` the line is set against.
     pub limits: Limits,
     /// A host medium's grain-background collisions per second (BRS (26)); `None` for the
@@ -44,8 +52,8 @@ pub struct LoopLine {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Limits {
     /// The reference rate of random pairs read and written per CPU second at this `n`
-    /// (`case=reference-pair-update`; the best of short timings of one swap loop, not a
-    /// bound).
+    /// (`case=reference-pair-update`: short timings of one swap loop at its best lookahead,
+    /// not a bound), the median of its timings between the loop's rounds.
     pub pairs: f64,
     /// Raw xoshiro256++ numbers per second (`case=limit-xoshiro256pp`).
     pub numbers: f64,
@@ -56,12 +64,6 @@ impl LoopLine {
     #[must_use]
     pub fn acceptance(&self) -> f64 {
         self.collisions_per_s / self.attempts_per_s
-    }
-
-    /// Candidates per second as a fraction of the pair-update reference rate at this `n`.
-    #[must_use]
-    pub fn of_pair_reference(&self) -> f64 {
-        self.attempts_per_s / self.limits.pairs
     }
 
     /// Candidates per second as a fraction of the generator's raw rate (a candidate needs
@@ -99,7 +101,8 @@ impl Unit {
 }
 
 /// A batch kernel's or a limit's line: `case=<name> [n=<n>] <unit>_per_s=<x>
-/// [lookahead=<l>]`.
+/// [lookahead=<l>] spread=<s>`: the rate the median of the bench's rounds, `s` their range over
+/// it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RateLine {
     /// The case.
@@ -112,6 +115,8 @@ pub struct RateLine {
     pub per_s: f64,
     /// The pair limit's best lookahead.
     pub lookahead: Option<usize>,
+    /// The rounds' range over their median.
+    pub spread: f64,
 }
 
 impl fmt::Display for Line {
@@ -121,15 +126,16 @@ impl fmt::Display for Line {
             Line::Loop(l) => {
                 write!(
                     f,
-                    "case={} kernel={} n={} collisions_per_s={:.4e} attempts_per_s={:.4e} acceptance={:.3} of_pair_reference={:.3} of_rng={:.4}",
+                    "case={} kernel={} n={} collisions_per_s={:.4e} attempts_per_s={:.4e} acceptance={:.3} of_pair_reference={:.3} of_rng={:.4} spread={:.3}",
                     l.case,
                     l.kernel,
                     l.n,
                     l.collisions_per_s,
                     l.attempts_per_s,
                     l.acceptance(),
-                    l.of_pair_reference(),
-                    l.of_rng()
+                    l.of_pair_reference,
+                    l.of_rng(),
+                    l.spread
                 )?;
                 if let Some(b) = l.background_per_s {
                     write!(f, " background_per_s={b:.4e}")?;
@@ -152,7 +158,7 @@ impl fmt::Display for Line {
                 if let Some(l) = r.lookahead {
                     write!(f, " lookahead={l}")?;
                 }
-                Ok(())
+                write!(f, " spread={:.3}", r.spread)
             }
         }
     }

@@ -8,13 +8,16 @@
 //! batch kernels and the limits. Each loop line ends with `of_pair_reference`, its candidates
 //! per second as a fraction of a reference rate for that memory traffic at the same n
 //! (`case=reference-pair-update`: random pairs read and written, drawn ahead and prefetched at
-//! the best lookahead, in the run's huge-page buffer; the best of short timings of one swap
-//! loop, not a bound: a loop can exceed it), and `of_rng`, the same as a fraction of the
-//! generator's raw rate (`case=limit-xoshiro256pp`); the host medium's line adds
-//! `background_per_s`, its grain-background collisions (BRS (26)), which are most of its work,
-//! and the sum-form line `choice_reads_per_candidate` and `choice_reads_per_collision`, the
-//! random particle reads its weighted choice of `i` makes (its memory traffic beyond the
-//! pair's).
+//! the best lookahead, in the run's huge-page buffer; not a bound: a loop can exceed it),
+//! timed again just before each of the loop's rounds so that both see the same machine, and
+//! `of_rng`, the same as a fraction of the generator's raw rate (`case=limit-xoshiro256pp`);
+//! the host medium's line adds `background_per_s`, its grain-background collisions (BRS
+//! (26)), which are most of its work, and the sum-form line `choice_reads_per_candidate` and
+//! `choice_reads_per_collision`, the random particle reads its weighted choice of `i` makes
+//! (its memory traffic beyond the pair's).
+//!
+//! Every figure is the median of [`ROUNDS`] timed rounds and every line says their `spread`
+//! (range over median): a round slowed by other work moves the spread, not the figure.
 //!
 //! Every rate is per CPU second of the measuring thread (`cpu_time::ThreadTime`), and every
 //! budget is CPU time: a machine busy with other work slows the bench's wall clock, not its
@@ -23,9 +26,10 @@
 mod timed;
 
 pub use timed::LOOKAHEADS;
+pub use timed::ROUNDS;
 use timed::{
-    event_loop, pair_reference, rate, rng_limit, rough_loop, sum_form_loop, system,
-    timed_with_background,
+    PairReference, Rounds, event_loop, median, rates, rng_limit, rough_loop, spread, sum_form_loop,
+    system, timed,
 };
 
 use super::line::{Limits, Line, LoopLine, RateLine, Unit};
@@ -61,40 +65,47 @@ impl Default for Options {
     }
 }
 
-/// ([`pair_reference`], [`rng_limit`]), no background and no weighted choice.
+/// An event loop's line from its rounds, against the generator's raw rate `numbers`: the
+/// medians, the pair reference's ratio round by round, the spread of the candidates; the
+/// background where a drive has one; no weighted choice.
 fn loop_line(
-    case: &'static str,
-    kernel: &'static str,
+    (case, kernel): (&'static str, &'static str),
     n: usize,
-    coll: f64,
-    att: f64,
-    lim: Limits,
+    r: &Rounds,
+    numbers: f64,
 ) -> LoopLine {
+    let background = median(&r.background);
     LoopLine {
         case,
         kernel,
         n,
-        collisions_per_s: coll,
-        attempts_per_s: att,
-        limits: lim,
-        background_per_s: None,
+        collisions_per_s: median(&r.collisions),
+        attempts_per_s: median(&r.attempts),
+        of_pair_reference: median(&r.of_pairs()),
+        spread: spread(&r.attempts),
+        limits: Limits {
+            pairs: median(&r.pairs),
+            numbers,
+        },
+        background_per_s: (background > 0.0).then_some(background),
         choice_reads_per_candidate: None,
     }
 }
 
-/// A rate line.
-fn rate_line(case: &'static str, n: Option<usize>, unit: Unit, per_s: f64) -> Line {
+/// A rate line from its rounds.
+fn rate_line(case: &'static str, n: Option<usize>, unit: Unit, rounds: &[f64]) -> Line {
     Line::Rate(RateLine {
         case,
         n,
         unit,
-        per_s,
+        per_s: median(rounds),
         lookahead: None,
+        spread: spread(rounds),
     })
 }
 
-/// One event-loop case: `(alpha, heated)` to (collisions, attempts) per second.
-type LoopCase<'a> = dyn Fn(f64, bool) -> (f64, f64) + 'a;
+/// One event-loop case: `(alpha, heated)` and the pair reference to its rounds.
+type LoopCase<'a> = dyn Fn(f64, bool, &mut PairReference) -> Rounds + 'a;
 
 /// Every case, as output lines, handed to `line` as they are measured.
 pub fn run(o: &Options, mut line: impl FnMut(Line)) {
@@ -106,39 +117,42 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
         "limit-xoshiro256pp",
         None,
         Unit::Numbers,
-        numbers,
+        &numbers,
     ));
+    let numbers = median(&numbers);
+    let b = o.budget;
     for &n in &o.sizes {
-        let (pairs, lookahead) = pair_reference(n, o.budget);
+        let (mut reference, pairs) = PairReference::new(n, b);
         line(Line::Rate(RateLine {
             case: "reference-pair-update",
             n: Some(n),
             unit: Unit::Pairs,
-            per_s: pairs,
-            lookahead: Some(lookahead),
+            per_s: median(&pairs),
+            lookahead: Some(reference.lookahead()),
+            spread: spread(&pairs),
         }));
-        let limit = Limits { pairs, numbers };
+        let reference = &mut reference;
         let kernels: [(&str, &LoopCase); 3] = [
-            ("maxwell", &|a, heated| {
+            ("maxwell", &|a, heated, r| {
                 let k = Maxwell::new(g, c).expect("valid");
                 if heated {
-                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
+                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, (b, r))
                 } else {
-                    event_loop(k, NoDrive, a, n, o.budget)
+                    event_loop(k, NoDrive, a, n, (b, r))
                 }
             }),
-            ("hard-spheres", &|a, heated| {
+            ("hard-spheres", &|a, heated, r| {
                 let k = HardSpheres::new(g, c).expect("valid");
                 // With no drive: the sum form's own line below.
                 assert!(heated, "the elastic hard-sphere case is the sum form's");
-                event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
+                event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, (b, r))
             }),
-            ("vhs", &|a, heated| {
+            ("vhs", &|a, heated, r| {
                 let k = Vhs::new(g, c, 0.5).expect("valid");
                 if heated {
-                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, o.budget)
+                    event_loop(k, WhiteNoise::new(1.0).expect("valid"), a, n, (b, r))
                 } else {
-                    event_loop(k, NoDrive, a, n, o.budget)
+                    event_loop(k, NoDrive, a, n, (b, r))
                 }
             }),
         ];
@@ -151,68 +165,51 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
             HardSphereBackground,
         );
         let k = HardSpheres::new(1.0, 0.125).expect("valid");
-        let (coll, att, bg) = {
+        let rounds = {
             let mut buf = system(n, 1);
             let mut p = Particles::new(&mut buf).expect("n >= 2");
             let law = Constant::new(0.5).expect("alpha in (0, 1]");
             let (mut e, _) = NoSplitting::start(k, hm, law, &mut p, 0.0).expect("finite start");
-            timed_with_background(&mut e, &mut p, o.budget)
+            timed(&mut e, &mut p, b, reference)
         };
-        line(Line::Loop(LoopLine {
-            case: "nosplit-host-medium-alpha0.5",
-            kernel: "hard-spheres",
+        line(Line::Loop(loop_line(
+            ("nosplit-host-medium-alpha0.5", "hard-spheres"),
             n,
-            collisions_per_s: coll,
-            attempts_per_s: att,
-            limits: limit,
-            background_per_s: Some(bg),
-            choice_reads_per_candidate: None,
-        }));
+            &rounds,
+            numbers,
+        )));
         // Hard spheres with no drive on the Umax majorant (GRW step 1.4), the loop before the
         // sum form: the comparison for the elastic hard-sphere line below.
-        let (coll, att) = event_loop(
+        let rounds = event_loop(
             HardSpheres::new(g, c).expect("valid"),
             NoDrive,
             1.0,
             n,
-            o.budget,
+            (b, reference),
         );
         line(Line::Loop(loop_line(
-            "nosplit-umax-elastic-alpha1",
-            "hard-spheres",
+            ("nosplit-umax-elastic-alpha1", "hard-spheres"),
             n,
-            coll,
-            att,
-            limit,
+            &rounds,
+            numbers,
         )));
         // Rough hard spheres (uniform spheres): the elastic perfectly rough gas and the heated
         // one with beta = 0 (both translation and rotation kicked).
-        for (case, coll_att) in [
-            (
-                "nosplit-rough-elastic-alpha1-beta1",
-                rough_loop(NoDrive, 1.0, 1.0, n, o.budget),
-            ),
-            (
-                "nosplit-rough-white-noise-alpha0.5-beta0",
-                rough_loop(
-                    RoughNoise::new(Some(1.0), 1.0, 0.4).expect("valid"),
-                    0.5,
-                    0.0,
-                    n,
-                    o.budget,
-                ),
-            ),
-        ] {
-            let (coll, att) = coll_att;
-            line(Line::Loop(loop_line(
-                case,
-                "hard-spheres",
-                n,
-                coll,
-                att,
-                limit,
-            )));
-        }
+        let rough = rough_loop(NoDrive, (1.0, 1.0), n, (b, reference));
+        line(Line::Loop(loop_line(
+            ("nosplit-rough-elastic-alpha1-beta1", "hard-spheres"),
+            n,
+            &rough,
+            numbers,
+        )));
+        let noise = RoughNoise::new(Some(1.0), 1.0, 0.4).expect("valid");
+        let rough = rough_loop(noise, (0.5, 0.0), n, (b, reference));
+        line(Line::Loop(loop_line(
+            ("nosplit-rough-white-noise-alpha0.5-beta0", "hard-spheres"),
+            n,
+            &rough,
+            numbers,
+        )));
         for (name, f) in kernels {
             for (case, alpha, heated) in [
                 ("nosplit-white-noise-alpha0.5", 0.5, true),
@@ -220,15 +217,15 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
             ] {
                 if name == "hard-spheres" && !heated {
                     let k = HardSpheres::new(g, c).expect("valid");
-                    let (coll, att, reads) = sum_form_loop(k, alpha, n, o.budget);
+                    let (rounds, reads) = sum_form_loop(k, alpha, n, (b, reference));
                     line(Line::Loop(LoopLine {
                         choice_reads_per_candidate: Some(reads),
-                        ..loop_line(case, name, n, coll, att, limit)
+                        ..loop_line((case, name), n, &rounds, numbers)
                     }));
                     continue;
                 }
-                let (coll, att) = f(alpha, heated);
-                line(Line::Loop(loop_line(case, name, n, coll, att, limit)));
+                let rounds = f(alpha, heated, reference);
+                line(Line::Loop(loop_line((case, name), n, &rounds, numbers)));
             }
         }
     }
@@ -237,39 +234,39 @@ pub fn run(o: &Options, mut line: impl FnMut(Line)) {
         let mut p = Particles::new(&mut buf).expect("n >= 2");
         let mut rng = seeded(4);
         let mut t = 0.0;
-        let r = rate(o.budget, n, || {
+        let r = rates(o.budget, n, || {
             t += 1e-3;
             kick::white_noise_kick_all(2.0, &mut p, t, &mut rng);
         });
-        line(rate_line("kick-white-noise", Some(n), Unit::Particles, r));
+        line(rate_line("kick-white-noise", Some(n), Unit::Particles, &r));
         let buf = system(n, 5);
-        let r = rate(o.budget, n, || {
+        let r = rates(o.budget, n, || {
             black_box(sums::accumulate(&buf));
         });
-        line(rate_line("moment-sums", Some(n), Unit::Particles, r));
+        line(rate_line("moment-sums", Some(n), Unit::Particles, &r));
     }
     // The machine's other limits for the loops above.
     let mut rng = seeded(6);
-    let r = rate(o.budget, 1 << 16, || {
+    let r = rates(o.budget, 1 << 16, || {
         let mut x = 0.0;
         for _ in 0..1 << 16 {
             x += standard_normal(&mut rng);
         }
         black_box(x);
     });
-    line(rate_line("limit-normal-ziggurat", None, Unit::Numbers, r));
+    line(rate_line("limit-normal-ziggurat", None, Unit::Numbers, &r));
     for n in [1_000usize, 10_000_000] {
         let buf = system(n, 7);
         // Independent random reads (the addresses do not depend on earlier loads), as the
         // event loop's pair choice: bounded by memory-level parallelism, not latency alone.
-        let r = rate(o.budget, 1 << 16, || {
+        let r = rates(o.budget, 1 << 16, || {
             let mut x = 0.0;
             for _ in 0..1 << 16 {
                 x += buf[uniform_index(&mut rng, n)].vx;
             }
             black_box(x);
         });
-        line(rate_line("limit-random-read", Some(n), Unit::Reads, r));
+        line(rate_line("limit-random-read", Some(n), Unit::Reads, &r));
     }
 }
 
@@ -312,6 +309,7 @@ mod tests {
                     "acceptance",
                     "of_pair_reference",
                     "of_rng",
+                    "spread",
                     if l.background_per_s.is_some() {
                         "background_per_s"
                     } else {
@@ -331,6 +329,8 @@ mod tests {
             assert!(l.attempts_per_s >= l.collisions_per_s, "{text}");
             assert!(l.collisions_per_s > 0.0, "{text}");
             assert!(l.of_rng() > 0.0, "{text}");
+            // The figures are medians of the rounds, each ratio a round's own.
+            assert!(l.spread >= 0.0 && l.of_pair_reference > 0.0, "{text}");
             // Only the sum form (elastic hard spheres with no drive) has a weighted choice;
             // it draws at least once per candidate.
             let sum_form = l.kernel == "hard-spheres" && l.case == "nosplit-elastic-alpha1";
