@@ -386,7 +386,7 @@ fn power_tail(s: &mut String, t: &crate::analysis::power_tail::PowerTail) {
     let Some(m) = t.measured else {
         let _ = writeln!(
             s,
-            "  power-law tail: no window [x, 2x] with P(c >= 2x) resolved to {:.0}%{exact} (power_tail.csv)",
+            "  the tail's local slope: no window [x, 2x] with P(c >= 2x) resolved to {:.0}%{exact} (power_tail.csv)",
             100.0 * crate::analysis::power_tail::RESOLVED
         );
         return;
@@ -397,11 +397,21 @@ fn power_tail(s: &mut String, t: &crate::analysis::power_tail::PowerTail) {
         (None, Some(_)) => ": uninformative (the interval is as wide as the value)".into(),
         _ => String::new(),
     };
-    let _ = writeln!(
-        s,
-        "  power-law tail P(c >= x) ~ x^-s: s = {:.3} +- {:.2} over [{}, {}] (the farthest window with P(c >= 2x) resolved, and every nearer one; every window in power_tail.csv){exact}{verdict}",
-        m.value, m.ci, m.from, m.to
-    );
+    if t.exact.is_some() {
+        let _ = writeln!(
+            s,
+            "  power-law tail P(c >= x) ~ x^-s: s = {:.3} +- {:.2} over [{}, {}] (the farthest window with P(c >= 2x) resolved, and every nearer one; every window in power_tail.csv){exact}{verdict}",
+            m.value, m.ci, m.from, m.to
+        );
+    } else {
+        // No power law is known here: the slope is a description, which grows with x for
+        // a tail that falls faster than any power.
+        let _ = writeln!(
+            s,
+            "  the tail's local slope ln(P(c >= x)/P(c >= 2x))/ln 2 = {:.3} +- {:.2} over [{}, {}] (the farthest window resolved with every nearer one; constant only for a power-law tail; every window in power_tail.csv)",
+            m.value, m.ci, m.from, m.to
+        );
+    }
 }
 
 fn num(x: f64) -> String {

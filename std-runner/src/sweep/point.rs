@@ -166,9 +166,9 @@ impl PointResult {
     /// The window averages of a finished point's statistics: the steady-state window when
     /// the scene has one (each ensemble's average over it, then the mean over ensembles with
     /// its interval, as summary.json's `steady_state`), else the last observation; and each
-    /// reference averaged over the same observation times. With a reduced histogram, the
-    /// measured power-law exponent (`tail_exponent`) and its exact root where one holds
-    /// (`tail_exponent_exact`, analysis/power_tail.rs).
+    /// reference averaged over the same observation times. With a reduced histogram of a
+    /// model with a power-law tail, its measured exponent (`tail_exponent`) beside the exact
+    /// root (`tail_exponent_exact`, analysis/power_tail.rs).
     pub fn of(p: &PointScene, stats: &RunStats) -> Self {
         let last = stats.times.len() - 1;
         let (window, _) = window(&p.source.scene);
@@ -185,9 +185,11 @@ impl PointResult {
             })
             .collect();
         let references = references(&p.source.scene);
-        // The reduced tail's measured exponent (its exact root is among the references).
+        // The reduced tail's measured exponent where the model has a power-law tail (its
+        // exact root is among the references; elsewhere the local slope is no exponent).
         use crate::analysis::power_tail as power;
-        if let Some(m) = power::measure(&p.source.scene, stats).and_then(|t| t.measured) {
+        let measured = power::measure(&p.source.scene, stats).filter(|t| t.exact.is_some());
+        if let Some(m) = measured.and_then(|t| t.measured) {
             observables.push((power::EXPONENT, m.value, m.ci));
         }
         PointResult {

@@ -33,7 +33,7 @@ pub fn power_tail(scene: &str, t: &PowerTail) -> Result<Chart, String> {
         });
     }
     profile(
-        &format!("power-law tail P(c >= x) ~ x^-s of the reduced speed\n{scene}"),
+        &format!("local slope of the reduced tail P(c >= x) (s for a power law x^-s)\n{scene}"),
         "window start x = c (the window is [x, 2x]; c = |v - V| / v0)",
         "local slope s(x) (dimensionless)",
         false,
