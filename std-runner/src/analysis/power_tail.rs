@@ -69,6 +69,40 @@ impl PowerTail {
     }
 }
 
+impl PowerTail {
+    /// The summary's line: the measured exponent and its verdict against the exact root, or,
+    /// where no power law is known, the local slope as a description (it grows with `x` for a
+    /// tail that falls faster than any power).
+    #[must_use]
+    pub fn words(&self) -> String {
+        let exact = self.exact.map_or(String::new(), |e| {
+            format!("; exact root (Ernst and Brito 2002, reference/maxwell_cumulant.rs) {e:.4}")
+        });
+        let Some(m) = self.measured else {
+            return format!(
+                "the tail's local slope: no window [x, 2x] with P(c >= 2x) resolved to {:.0}%{exact} (power_tail.csv)",
+                100.0 * RESOLVED
+            );
+        };
+        let Some(e) = self.exact else {
+            return format!(
+                "the tail's local slope ln(P(c >= x)/P(c >= 2x))/ln 2 = {:.3} +- {:.2} over [{}, {}] (the farthest window resolved with every nearer one; constant only for a power-law tail; every window in power_tail.csv)",
+                m.value, m.ci, m.from, m.to
+            );
+        };
+        let off = 100.0 * (m.value / e - 1.0);
+        let verdict = match self.agrees() {
+            Some(true) => format!(": agrees ({off:+.1}%)"),
+            Some(false) => format!(": DISAGREES ({off:+.1}%)"),
+            None => ": uninformative (the interval is as wide as the value)".into(),
+        };
+        format!(
+            "power-law tail P(c >= x) ~ x^-s: s = {:.3} +- {:.2} over [{}, {}] (the farthest window with P(c >= 2x) resolved, and every nearer one; every window in power_tail.csv){exact}{verdict}",
+            m.value, m.ci, m.from, m.to
+        )
+    }
+}
+
 /// The exact tail exponent of the scene, when its reduced distribution has one: the smooth
 /// one-species Maxwell gas with a constant restitution whose drive heats no temperature of
 /// its own (cooling, or a scaling of every velocity alike), by the exact process (not MS's

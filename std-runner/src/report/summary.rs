@@ -185,7 +185,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         }
     }
     if let Some(t) = crate::analysis::power_tail::measure(scene, stats) {
-        power_tail(&mut s, &t);
+        let _ = writeln!(s, "  {}", t.words());
     }
     if let Some(m) = crate::analysis::distribution::marginal(stats) {
         let _ = writeln!(
@@ -378,42 +378,6 @@ verdict    each mean against the reference that applies at this n, at all {nt} o
 /// A figure of the summary: six decimals where that keeps six significant digits' worth
 /// (`1e-3 <= |x| < 1e7`, or 0), scientific notation otherwise (a cooling gas's `T = 3e-12`
 /// would print as 0.000000).
-/// The reduced tail's power law: the measured exponent and its verdict against the exact root.
-fn power_tail(s: &mut String, t: &crate::analysis::power_tail::PowerTail) {
-    let exact = t.exact.map_or(String::new(), |e| {
-        format!("; exact root (Ernst and Brito 2002, reference/maxwell_cumulant.rs) {e:.4}")
-    });
-    let Some(m) = t.measured else {
-        let _ = writeln!(
-            s,
-            "  the tail's local slope: no window [x, 2x] with P(c >= 2x) resolved to {:.0}%{exact} (power_tail.csv)",
-            100.0 * crate::analysis::power_tail::RESOLVED
-        );
-        return;
-    };
-    let verdict = match (t.agrees(), t.exact) {
-        (Some(true), Some(e)) => format!(": agrees ({:+.1}%)", 100.0 * (m.value / e - 1.0)),
-        (Some(false), Some(e)) => format!(": DISAGREES ({:+.1}%)", 100.0 * (m.value / e - 1.0)),
-        (None, Some(_)) => ": uninformative (the interval is as wide as the value)".into(),
-        _ => String::new(),
-    };
-    if t.exact.is_some() {
-        let _ = writeln!(
-            s,
-            "  power-law tail P(c >= x) ~ x^-s: s = {:.3} +- {:.2} over [{}, {}] (the farthest window with P(c >= 2x) resolved, and every nearer one; every window in power_tail.csv){exact}{verdict}",
-            m.value, m.ci, m.from, m.to
-        );
-    } else {
-        // No power law is known here: the slope is a description, which grows with x for
-        // a tail that falls faster than any power.
-        let _ = writeln!(
-            s,
-            "  the tail's local slope ln(P(c >= x)/P(c >= 2x))/ln 2 = {:.3} +- {:.2} over [{}, {}] (the farthest window resolved with every nearer one; constant only for a power-law tail; every window in power_tail.csv)",
-            m.value, m.ci, m.from, m.to
-        );
-    }
-}
-
 fn num(x: f64) -> String {
     if x == 0.0 || (x.abs() >= 1e-3 && x.abs() < 1e7) || !x.is_finite() {
         format!("{x:.6}")
