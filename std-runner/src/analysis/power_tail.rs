@@ -136,7 +136,15 @@ pub fn measure(scene: &Scene, stats: &RunStats) -> Option<PowerTail> {
 /// not the mean's: the rare heavy lineages that make the mean there were not seen).
 #[must_use]
 pub fn measured(slopes: &[Slope]) -> Option<Slope> {
-    slopes.iter().take_while(|s| s.resolved).last().copied()
+    resolved(slopes).last().copied()
+}
+
+/// The windows resolved with every nearer one: the leading run of `slopes` (ordered by `x`)
+/// whose `P(c >= 2x)` is resolved; [`measured`] is its last.
+#[must_use]
+pub fn resolved(slopes: &[Slope]) -> &[Slope] {
+    let k = slopes.iter().take_while(|s| s.resolved).count();
+    &slopes[..k]
 }
 
 /// Every window `[x, 2x]` of the edges `c_max i / k` (`tail` holding `P(c >= c_i)` for `i` in

@@ -9,10 +9,8 @@ use plotters::prelude::*;
 /// The chart `power_tail`: the local slopes against the window's start `x`, the exact root as
 /// a dashed line; an error when no window is resolved.
 pub fn power_tail(scene: &str, t: &PowerTail) -> Result<Chart, String> {
-    let shown: Vec<(f64, f64, f64)> = t
-        .slopes
+    let shown: Vec<(f64, f64, f64)> = crate::analysis::power_tail::resolved(&t.slopes)
         .iter()
-        .take_while(|s| s.resolved)
         .map(|s| (s.from, s.value, s.ci))
         .collect();
     let (Some(first), Some(last)) = (shown.first(), shown.last()) else {
