@@ -29,6 +29,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+// The version of the random streams (`gdsmc_core::rng::STREAM_VERSION`): a simulation
+// is a pure function of its configuration, seed and this version.
+#define GDSMC_STREAM_VERSION 2
+
 // Maxwell pseudo-molecules, `B = gamma C` (GRW (2), `lambda = 0`).
 #define GDSMC_KERNEL_MAXWELL 0
 

@@ -25,7 +25,9 @@
 use crate::kernel::Kernel;
 use crate::math::{Real, sqrt};
 use crate::rng::{Rng, uniform01};
-use crate::sample::{standard_normal, standard_normal3, unit_circle, unit_sphere};
+use crate::sample::{
+    standard_normal, standard_normal_pair, standard_normal3, unit_circle, unit_sphere,
+};
 use crate::vec3::Vec3;
 
 /// The choice of dimension as plain data (a front end's `dimension = 2`).
@@ -185,8 +187,8 @@ impl Geometry for Disks {
 
     #[inline(always)]
     fn normal<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
-        let x = standard_normal(rng);
-        Vec3::new(x, standard_normal(rng), 0.0)
+        let (x, y) = standard_normal_pair(rng);
+        Vec3::new(x, y, 0.0)
     }
 
     #[inline(always)]

@@ -8,6 +8,21 @@ use crate::math::Real;
 pub use rand_core::{Rng, SeedableRng};
 pub use rand_xoshiro::Xoshiro256PlusPlus;
 
+/// The version of the random streams: which draws a run makes from its generator, and how.
+/// A run is a pure function of (scene, seed, stream version); outputs, journals and the C ABI
+/// state it, and a journal of another version is refused.
+///
+/// - 1: every sampler took whole 64-bit words.
+/// - 2: a candidate pair from one word (two 32-bit Lemire draws, [`uniform_pair`]); a direction
+///   on the sphere or the circle from one word per try (two 32-bit coordinates,
+///   [`signed_unit32`]); two normals from one word (two 32-bit ziggurat draws,
+///   [`crate::sample::standard_normal_pair`]); the undriven Maxwell gas's events counted per
+///   interval by a Poisson draw instead of one waiting time each.
+pub const STREAM_VERSION: u32 = 2;
+
+/// 2^-32, the spacing of [`signed_unit32`]'s values divided by 2.
+const TWO_POW_M31: Real = 1.0 / 2_147_483_648.0;
+
 /// 2^-53, the spacing of the doubles produced by [`uniform01`].
 const TWO_POW_M53: Real = 1.0 / 9_007_199_254_740_992.0;
 /// 2^-52, the spacing of the doubles produced by [`uniform_open01`].
@@ -65,6 +80,53 @@ pub fn uniform01<R: Rng + ?Sized>(rng: &mut R) -> Real {
     (rng.next_u64() >> 11) as Real * TWO_POW_M53
 }
 
+/// The high and low 32-bit halves of one generator word: two independent uniform 32-bit
+/// integers.
+#[inline(always)]
+pub fn halves(bits: u64) -> (u32, u32) {
+    ((bits >> 32) as u32, bits as u32)
+}
+
+/// A uniform double in the open interval (-1, 1) from a uniform 32-bit `h`: `(h + 1/2) 2^-31 - 1`,
+/// the midpoints of 2^32 equal cells, symmetric about 0 (a coordinate of Marsaglia's point in
+/// the disk, [`crate::sample::unit_sphere`]).
+#[inline(always)]
+pub fn signed_unit32(h: u32) -> Real {
+    (h as Real + 0.5) * TWO_POW_M31 - 1.0
+}
+
+/// A uniform integer in `0..n` (`1 <= n <= 2^32`) from a uniform 32-bit `h`, exactly uniform:
+/// Lemire's multiply-and-reject on 32 bits, a rejected `h` replaced by the high half of a fresh
+/// word.
+#[inline(always)]
+fn index_from_half<R: Rng + ?Sized>(rng: &mut R, h: u32, n: u64) -> usize {
+    let mut m = (h as u64) * n;
+    if ((m as u32) as u64) < n {
+        let threshold = (1u64 << 32) % n;
+        while ((m as u32) as u64) < threshold {
+            m = (rng.next_u64() >> 32) * n;
+        }
+    }
+    (m >> 32) as usize
+}
+
+/// Two independent uniform integers in `0..n1` and `0..n2` (`n1, n2 >= 1`), each exactly
+/// uniform, from one generator word when both are at most 2^32 (its halves,
+/// [`index_from_half`]; a rejection, with probability below `n/2^32`, draws again), else
+/// from [`uniform_index`] twice.
+#[inline(always)]
+pub fn uniform_index2<R: Rng + ?Sized>(rng: &mut R, n1: usize, n2: usize) -> (usize, usize) {
+    debug_assert!(n1 >= 1 && n2 >= 1);
+    const LIMIT: u64 = 1 << 32;
+    if n1 as u64 > LIMIT || n2 as u64 > LIMIT {
+        let i = uniform_index(rng, n1);
+        return (i, uniform_index(rng, n2));
+    }
+    let (hi, lo) = halves(rng.next_u64());
+    let i = index_from_half(rng, hi, n1 as u64);
+    (i, index_from_half(rng, lo, n2 as u64))
+}
+
 /// A uniform integer in `0..n` (`n >= 1`), exactly uniform: Lemire's multiply-and-reject.
 #[inline(always)]
 pub fn uniform_index<R: Rng + ?Sized>(rng: &mut R, n: usize) -> usize {
@@ -81,11 +143,11 @@ pub fn uniform_index<R: Rng + ?Sized>(rng: &mut R, n: usize) -> usize {
 }
 
 /// An ordered pair `(i, j)` uniform on `{0 <= i != j < n}` (`n >= 2`): GRW Section 3 steps
-/// 2.3-2.4, with `j` drawn from the `n - 1` others directly instead of by repetition.
+/// 2.3-2.4, with `j` drawn from the `n - 1` others directly instead of by repetition; both
+/// from one generator word ([`uniform_index2`]).
 #[inline(always)]
 pub fn uniform_pair<R: Rng + ?Sized>(rng: &mut R, n: usize) -> (usize, usize) {
-    let i = uniform_index(rng, n);
-    let mut j = uniform_index(rng, n - 1);
+    let (i, mut j) = uniform_index2(rng, n, n - 1);
     if j >= i {
         j += 1;
     }

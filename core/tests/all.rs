@@ -25,6 +25,7 @@ mod rough_maps;
 mod rough_mixture;
 mod rough_mixture_equipartition;
 mod samplers;
+mod stream_v2;
 mod sum_majorant;
 mod weighted;
 mod weighted_reduction;

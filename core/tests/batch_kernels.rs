@@ -216,3 +216,60 @@ fn bulk_temperature_keeps_its_digits_under_a_large_drift() {
         o.t_bulk
     );
 }
+
+/// The raw sums `sum v v^T`, `sum v |v|^2`, `sum |v|^4`, `sum |v|^6` that the kernels rebuild
+/// from the central ones ([`raw_from_central`]) against the same sums taken directly, for a gas
+/// at rest and one drifting at 30 thermal speeds, both kernels: each within a rounding bound
+/// (1e-13 of the sum of the terms' magnitudes per particle). A wrong coefficient in the
+/// expansion is off by a fraction of the sum itself.
+#[test]
+fn raw_sums_follow_from_central_ones() {
+    let mut rng = seeded(37);
+    for drift in [Vec3::ZERO, Vec3::new(30.0, -20.0, 10.0)] {
+        let mx = Maxwellian::new(1.0, 1.0, drift).unwrap();
+        let n = 1001;
+        let q: Vec<Particle> = (0..n)
+            .map(|_| Particle::new(mx.sample(&mut rng), 0.0))
+            .collect();
+        let (mut s2, mut s3, mut s4, mut s6) = ([0.0; 6], [0.0; 3], 0.0, 0.0);
+        let (mut m2, mut m3, mut m4, mut m6) = ([0.0; 6], [0.0; 3], 0.0, 0.0);
+        for p in &q {
+            let v = [p.vx, p.vy, p.vz];
+            let v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+            for (k, (a, b)) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)]
+                .into_iter()
+                .enumerate()
+            {
+                s2[k] += v[a] * v[b];
+                m2[k] += (v[a] * v[b]).abs();
+            }
+            for a in 0..3 {
+                s3[a] += v[a] * v2;
+                m3[a] += (v[a] * v2).abs();
+            }
+            (s4, m4) = (s4 + v2 * v2, m4 + v2 * v2);
+            (s6, m6) = (s6 + v2 * v2 * v2, m6 + v2 * v2 * v2);
+        }
+        for sums in [accumulate_simd(&q), accumulate_scalar(&q)] {
+            let bound = |m: f64| 1e-13 * n as f64 * m;
+            for k in 0..6 {
+                assert!(
+                    (sums.s2[k] - s2[k]).abs() <= bound(m2[k]),
+                    "s2[{k}] {drift:?}"
+                );
+            }
+            for a in 0..3 {
+                assert!(
+                    (sums.s3[a] - s3[a]).abs() <= bound(m3[a]),
+                    "s3[{a}] {drift:?}"
+                );
+            }
+            assert!(
+                (sums.s4 - s4).abs() <= bound(m4),
+                "s4 {drift:?}: {} {s4}",
+                sums.s4
+            );
+            assert!((sums.s6 - s6).abs() <= bound(m6), "s6 {drift:?}");
+        }
+    }
+}

@@ -3,6 +3,10 @@
 //! parameters); do not edit. `GDSMC_UPDATE_CODES=1 cargo test --release -p gdsmc-ffi
 //! --test kinds` rewrites it.
 
+/// The version of the random streams (`gdsmc_core::rng::STREAM_VERSION`): a simulation
+/// is a pure function of its configuration, seed and this version.
+pub const GDSMC_STREAM_VERSION: u32 = 2;
+
 /// Maxwell pseudo-molecules, `B = gamma C` (GRW (2), `lambda = 0`).
 pub const GDSMC_KERNEL_MAXWELL: u32 = 0;
 

@@ -155,6 +155,13 @@ fn generated() -> String {
          //! parameters); do not edit. `GDSMC_UPDATE_CODES=1 cargo test --release -p gdsmc-ffi\n\
          //! --test kinds` rewrites it.\n",
     );
+    let _ = writeln!(
+        out,
+        "\n/// The version of the random streams (`gdsmc_core::rng::STREAM_VERSION`): a simulation\n\
+         /// is a pure function of its configuration, seed and this version.\n\
+         pub const GDSMC_STREAM_VERSION: u32 = {};",
+        gdsmc_core::rng::STREAM_VERSION
+    );
     let mut family = |axis: &str, rows: Vec<(String, u32, &str, String)>| {
         for (name, code, doc, extra) in rows {
             let _ = writeln!(out, "\n/// {}{extra}", doc.trim());

@@ -29,7 +29,7 @@ import numpy as np
 
 from . import _gdsmc, _plot, _state
 from ._progress import _progress, _set_total, _TextBar  # noqa: F401 (the tests use them)
-from ._gdsmc import RunError, Scene, SceneError, __version__
+from ._gdsmc import STREAM_VERSION, RunError, Scene, SceneError, __version__
 from ._state import State, read_state
 
 __all__ = [
@@ -46,6 +46,7 @@ __all__ = [
     "Swept",
     "reproduce",
     "__version__",
+    "STREAM_VERSION",
 ]
 
 

@@ -4,6 +4,8 @@ from os import PathLike
 from typing import Any, Callable, List, Optional, Tuple, Union
 
 __version__: str
+# The version of the random streams: a run is a pure function of (scene, seed, STREAM_VERSION).
+STREAM_VERSION: int
 
 class SceneError(ValueError):
     """A scene that cannot be read, parsed or validated (file, line and key named)."""

@@ -60,6 +60,7 @@ fn _gdsmc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SceneError", m.py().get_type::<SceneError>())?;
     m.add("RunError", m.py().get_type::<RunError>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add("STREAM_VERSION", gdsmc_runner::STREAM_VERSION)?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<result::RunResult>()?;
     m.add_function(wrap_pyfunction!(result::run, m)?)?;

@@ -30,3 +30,5 @@ pub mod terminal;
 pub use gdsmc_scene as scene;
 
 pub use error::Error;
+/// The version of the random streams every run draws from (outputs and journals state it).
+pub use gdsmc_core::rng::STREAM_VERSION;

@@ -1,6 +1,10 @@
-//! Moment sums over all particles, accumulated with SIMD: the raw moments GRW (6)-(9) and
-//! `|v|^4`, `|v|^6` in one pass, then the central `|c|^4`, `|c|^6` and `max |c|^2`
-//! (`c = v - V`) in a second pass once the bulk velocity `V` is known.
+//! Moment sums over all particles, accumulated with SIMD: the bulk velocity `V` (GRW (7)) in
+//! a light first pass (four particles' rows added as they lie, no transposition), then in one
+//! pass every central sum about `V` (`c = v - V`: `sum c`, `c c^T`, `c |c|^2`, `|c|`, `|c|^3`,
+//! `|c|^4`, `|c|^6`, `max |c|^2`) and `sum |v|^6`. The raw sums GRW (6), (8), (9) and
+//! `sum |v|^4` follow from the central ones exactly in algebra ([`raw_from_central`]; the
+//! binomial expansion of `v = V + c`, with the rounding residual `sum c` kept), so an
+//! observation reads the particles twice, and the first time lightly.
 //!
 //! Sums are taken lane-wise over blocks of four particles and reduced at the end, in a fixed
 //! order, so results depend only on the particle values.
@@ -40,6 +44,40 @@ pub struct Sums {
     pub c6: Real,
     /// `max |v - V|^2`.
     pub max_c2: Real,
+    /// `sum (v - V)`: zero but for rounding, kept so that the raw sums follow from the central
+    /// ones exactly in algebra.
+    pub s1c: [Real; 3],
+}
+
+/// The raw sums `s2`, `s3`, `s4` of `s` from its central ones and the bulk velocity `bulk`
+/// (`v = V + c`, `S = sum c`, `C = sum c c^T`, `Q = tr C`, `n` particles):
+/// `sum v v^T = C + V S^T + S V^T + n V V^T`,
+/// `sum v |v|^2 = sum c|c|^2 + 2 C V + |V|^2 S + Q V + 2 (S.V) V + n |V|^2 V`,
+/// `sum |v|^4 = sum |c|^4 + 4 (sum c|c|^2).V + 4 V.C V + 2 |V|^2 Q + 4 |V|^2 S.V + n |V|^4`.
+pub fn raw_from_central(s: &mut Sums, bulk: Vec3) {
+    let n = s.n as Real;
+    let v = bulk.to_array();
+    let sc = s.s1c;
+    // The symmetric C as a matrix from its upper triangle [xx, yy, zz, xy, xz, yz].
+    let c = [
+        [s.c2[0], s.c2[3], s.c2[4]],
+        [s.c2[3], s.c2[1], s.c2[5]],
+        [s.c2[4], s.c2[5], s.c2[2]],
+    ];
+    let cv: [Real; 3] = core::array::from_fn(|a| c[a][0] * v[0] + c[a][1] * v[1] + c[a][2] * v[2]);
+    let v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    let q = s.c2[0] + s.c2[1] + s.c2[2];
+    let sv = sc[0] * v[0] + sc[1] * v[1] + sc[2] * v[2];
+    const UPPER: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
+    for (k, &(a, b)) in UPPER.iter().enumerate() {
+        s.s2[k] = c[a][b] + v[a] * sc[b] + sc[a] * v[b] + n * v[a] * v[b];
+    }
+    for a in 0..3 {
+        s.s3[a] = s.c3[a] + 2.0 * cv[a] + v2 * sc[a] + q * v[a] + 2.0 * sv * v[a] + n * v2 * v[a];
+    }
+    let c3v = s.c3[0] * v[0] + s.c3[1] * v[1] + s.c3[2] * v[2];
+    let vcv = v[0] * cv[0] + v[1] * cv[1] + v[2] * cv[2];
+    s.s4 = s.c4 + 4.0 * c3v + 4.0 * vcv + 2.0 * v2 * q + 4.0 * v2 * sv + n * v2 * v2;
 }
 
 /// The sums over the particles `q` (at least one): SIMD unless the `scalar` feature is on.
@@ -51,31 +89,17 @@ pub fn accumulate(q: &[Particle]) -> Sums {
     }
 }
 
-/// Adds one particle's raw moments.
-#[inline(always)]
-fn add_raw(s: &mut Sums, x: Real, y: Real, z: Real) {
-    let v2 = x * x + y * y + z * z;
-    s.s1[0] += x;
-    s.s1[1] += y;
-    s.s1[2] += z;
-    s.s2[0] += x * x;
-    s.s2[1] += y * y;
-    s.s2[2] += z * z;
-    s.s2[3] += x * y;
-    s.s2[4] += x * z;
-    s.s2[5] += y * z;
-    s.s3[0] += x * v2;
-    s.s3[1] += y * v2;
-    s.s3[2] += z * v2;
-    s.s4 += v2 * v2;
-    s.s6 += v2 * v2 * v2;
-}
-
 /// Adds one particle's central moments about `bulk`.
 #[inline(always)]
 fn add_central(s: &mut Sums, p: &Particle, bulk: Vec3) {
-    let c = p.velocity() - bulk;
+    let v = p.velocity();
+    let v2 = v.norm2();
+    s.s6 += v2 * v2 * v2;
+    let c = v - bulk;
     let c2 = c.norm2();
+    s.s1c[0] += c.x;
+    s.s1c[1] += c.y;
+    s.s1c[2] += c.z;
     s.c2[0] += c.x * c.x;
     s.c2[1] += c.y * c.y;
     s.c2[2] += c.z * c.z;
@@ -100,12 +124,15 @@ pub fn accumulate_scalar(q: &[Particle]) -> Sums {
         ..Sums::default()
     };
     for p in q {
-        add_raw(&mut s, p.vx, p.vy, p.vz);
+        s.s1[0] += p.vx;
+        s.s1[1] += p.vy;
+        s.s1[2] += p.vz;
     }
     let bulk = bulk_of(&s);
     for p in q {
         add_central(&mut s, p, bulk);
     }
+    raw_from_central(&mut s, bulk);
     s
 }
 
@@ -119,46 +146,25 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
     let n = q.len();
     let blocks = n / 4;
     let z = RealX4::ZERO;
-    let (mut a1, mut a2, mut a3) = (z, z, z);
-    let (mut xx, mut yy, mut zz, mut xy, mut xz, mut yz) = (z, z, z, z, z, z);
-    let (mut b1, mut b2, mut b3, mut q4, mut q6) = (z, z, z, z, z);
+    // The bulk velocity: each of four accumulators takes one particle of each block as its
+    // row `[vx, vy, vz, t]`.
+    let mut rows = [z; 4];
     for b in 0..blocks {
-        let [x, y, w, _] = load4(&q[4 * b..]);
-        let v2 = x * x + y * y + w * w;
-        a1 += x;
-        a2 += y;
-        a3 += w;
-        xx += x * x;
-        yy += y * y;
-        zz += w * w;
-        xy += x * y;
-        xz += x * w;
-        yz += y * w;
-        b1 += x * v2;
-        b2 += y * v2;
-        b3 += w * v2;
-        let v4 = v2 * v2;
-        q4 += v4;
-        q6 += v4 * v2;
+        for (k, r) in rows.iter_mut().enumerate() {
+            let p = &q[4 * b + k];
+            *r += RealX4::from([p.vx, p.vy, p.vz, p.t_kick]);
+        }
     }
+    let [r0, r1, r2, r3] = rows.map(|r| r.to_array());
     let mut s = Sums {
         n,
-        s1: [a1.reduce_add(), a2.reduce_add(), a3.reduce_add()],
-        s2: [
-            xx.reduce_add(),
-            yy.reduce_add(),
-            zz.reduce_add(),
-            xy.reduce_add(),
-            xz.reduce_add(),
-            yz.reduce_add(),
-        ],
-        s3: [b1.reduce_add(), b2.reduce_add(), b3.reduce_add()],
-        s4: q4.reduce_add(),
-        s6: q6.reduce_add(),
+        s1: core::array::from_fn(|a| (r0[a] + r1[a]) + (r2[a] + r3[a])),
         ..Sums::default()
     };
     for p in &q[4 * blocks..] {
-        add_raw(&mut s, p.vx, p.vy, p.vz);
+        s.s1[0] += p.vx;
+        s.s1[1] += p.vy;
+        s.s1[2] += p.vz;
     }
     let bulk = bulk_of(&s);
     let (bx, by, bz) = (
@@ -170,9 +176,15 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
     let (mut e1, mut e3) = (z, z);
     let (mut cxx, mut cyy, mut czz, mut cxy, mut cxz, mut cyz) = (z, z, z, z, z, z);
     let (mut d1, mut d2, mut d3) = (z, z, z);
+    let (mut g1, mut g2, mut g3, mut q6) = (z, z, z, z);
     for b in 0..blocks {
         let [x, y, w, _] = load4(&q[4 * b..]);
+        let v2 = x * x + y * y + w * w;
+        q6 += v2 * v2 * v2;
         let (x, y, w) = (x - bx, y - by, w - bz);
+        g1 += x;
+        g2 += y;
+        g3 += w;
         let c2 = x * x + y * y + w * w;
         cxx += x * x;
         cyy += y * y;
@@ -205,8 +217,11 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
     s.c4 = c4.reduce_add();
     s.c6 = c6.reduce_add();
     s.max_c2 = m2.to_array().into_iter().fold(0.0, max);
+    s.s1c = [g1.reduce_add(), g2.reduce_add(), g3.reduce_add()];
+    s.s6 = q6.reduce_add();
     for p in &q[4 * blocks..] {
         add_central(&mut s, p, bulk);
     }
+    raw_from_central(&mut s, bulk);
     s
 }

@@ -33,7 +33,7 @@ use crate::kernel::Kernel;
 use crate::math::{Real, min, sqrt};
 use crate::observe::MixtureObservables;
 use crate::particles::Particles;
-use crate::rng::{Rng, uniform_index, uniform_pair};
+use crate::rng::{Rng, uniform_index2, uniform_pair};
 use crate::species::{MAX_PAIRS, MAX_SPECIES, Species};
 
 /// MS's time-stepped scheme for a mixture: kernel `K`, drive `D` (one per species), pair law
@@ -174,10 +174,10 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureTimeStepped<K, D, L, G
                         let (a, b) = uniform_pair(rng, sp.count(s));
                         (sp.offset(s) + a, sp.offset(s) + b)
                     } else {
-                        (
-                            sp.offset(s) + uniform_index(rng, sp.count(s)),
-                            sp.offset(t) + uniform_index(rng, sp.count(t)),
-                        )
+                        {
+                            let (a, b) = uniform_index2(rng, sp.count(s), sp.count(t));
+                            (sp.offset(s) + a, sp.offset(t) + b)
+                        }
                     };
                     self.stages[k].candidate(&map, p, pair, rng, &mut self.counts);
                 }

@@ -10,10 +10,12 @@
 //! `dt` (the kick solves the heat equation of its part), so the lazy kicks of the no-splitting
 //! loop keep it exact.
 
+use crate::batch::kick::white_noise_kick_all;
 use crate::drive::Drive;
 use crate::geometry::{Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
+use crate::physics::DimensionChoice;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
@@ -99,5 +101,21 @@ impl<G: Geometry> Drive for RoughNoise<G> {
             p.set_spin(i, w);
         }
         p.get_mut(i).t_kick = t;
+    }
+
+    /// Brings every particle to `t`. With no rotational noise on spheres, the smooth white
+    /// noise's batch kick ([`white_noise_kick_all`]: its normals drawn for blocks of four), so
+    /// that the translational draws stay the smooth gas's; else particle by particle.
+    fn kick_all<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
+        match self.tr {
+            Some(tr) if self.rot == 0.0 && G::CHOICE == DimensionChoice::Three => {
+                white_noise_kick_all(tr, p, t, rng);
+            }
+            _ => {
+                for i in 0..p.len() {
+                    self.kick(p, i, t, rng);
+                }
+            }
+        }
     }
 }

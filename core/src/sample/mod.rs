@@ -11,6 +11,7 @@ pub mod maxwellian;
 pub mod mixture;
 pub mod normal;
 pub mod partner;
+pub mod poisson;
 pub mod sphere;
 mod squeeze;
 #[allow(missing_docs)]
@@ -21,8 +22,9 @@ pub use exponential::standard_exponential;
 pub use impact::impact_direction;
 pub use maxwellian::Maxwellian;
 pub use mixture::MaxwellianMixture;
-pub use normal::{standard_normal, standard_normal3};
+pub use normal::{standard_normal, standard_normal_pair, standard_normal3, standard_normal3x4};
 pub use partner::BackgroundPartner;
+pub use poisson::poisson;
 pub use sphere::unit_sphere;
 
 /// A parameter of a sampler that is out of its domain.

@@ -164,6 +164,7 @@ pub fn commit_run(
         "n": scene.n(),
         "ensembles": stats.ensembles,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
+        "stream_version": gdsmc_core::rng::STREAM_VERSION,
     }))
 }
 

@@ -18,10 +18,11 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
     }
     let _ = writeln!(
         s,
-        "run        n = {}, ensembles = {}, seed = {}, threads = {}, wall = {:.2} s, cpu = {:.2} s",
+        "run        n = {}, ensembles = {}, seed = {} (streams v{}), threads = {}, wall = {:.2} s, cpu = {:.2} s",
         scene.n(),
         stats.ensembles,
         scene.seed(),
+        gdsmc_core::rng::STREAM_VERSION,
         stats.threads,
         stats.wall.as_secs_f64(),
         stats.cpu.as_secs_f64()

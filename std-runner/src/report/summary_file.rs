@@ -14,6 +14,10 @@ use std::collections::BTreeMap;
 pub struct Summary {
     /// The gdsmc version that wrote it.
     pub gdsmc_version: &'static str,
+    /// The version of the random streams the run drew from
+    /// ([`gdsmc_core::rng::STREAM_VERSION`]): the same scene and seed give the same numbers
+    /// only under the same stream version.
+    pub stream_version: u32,
     /// The scene's name.
     pub scene: String,
     /// The scene's description.
@@ -234,6 +238,7 @@ impl Summary {
         let c = stats.counts;
         Summary {
             gdsmc_version: env!("CARGO_PKG_VERSION"),
+            stream_version: gdsmc_core::rng::STREAM_VERSION,
             scene: scene.name().to_string(),
             description: scene.description().to_string(),
             n: scene.n(),

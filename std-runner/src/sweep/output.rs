@@ -76,6 +76,7 @@ pub(super) fn write(
         "sweep": base.scene.name(),
         "points": results.len(),
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
+        "stream_version": gdsmc_core::rng::STREAM_VERSION,
     }))
 }
 

@@ -112,6 +112,7 @@ pub fn json(
         "combine": match combine { Combine::Grid => "grid", Combine::Zip => "zip" },
         "complete": complete,
         "gdsmc_version": env!("CARGO_PKG_VERSION"),
+        "stream_version": gdsmc_core::rng::STREAM_VERSION,
         "verdict": super::verdict::checks(points).iter().map(|c| json!({
             "of": c.of,
             "reference": c.reference,

@@ -25,6 +25,7 @@
 //! below [`crate::engine::pairs::PREFETCH_FROM`] particles (no pair-type draw for one type; pairs
 //! drawn when used) and gives its results to the last bit.
 
+mod events;
 mod observe;
 
 use super::StartError;
@@ -40,7 +41,7 @@ use crate::kernel::Kernel;
 use crate::math::{Real, max};
 use crate::observe::MixtureObservables;
 use crate::particles::Particles;
-use crate::rng::{Rng, uniform_index, uniform_pair, uniform01};
+use crate::rng::Rng;
 use crate::sample::standard_exponential;
 use crate::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 
@@ -267,7 +268,6 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
             return Err(EngineError::TimeBackwards);
         }
         let n = p.len();
-        let types = self.sp.pair_types();
         let mut rate = self.rates();
         self.refresh.restart();
         loop {
@@ -286,36 +286,17 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
                 self.refresh
                     .refreshed(before, self.frame.scale * self.bound(), n);
             }
+            if !D::ACTS && !K::USES_UMAX {
+                self.counted(p, t_end, rate, rng)?;
+                break;
+            }
             let t_next = self.t + standard_exponential(rng) / rate;
             if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
                 break;
             }
             self.t = t_next;
-            let k = if types == 1 {
-                0
-            } else {
-                let x = uniform01(rng) * rate;
-                let mut k = 0;
-                while k < self.last && x >= self.cumulative[k] {
-                    k += 1;
-                }
-                k
-            };
-            let (s, t) = self.pair_of[k];
-            let (i, j) = if s == t {
-                let (a, b) = uniform_pair(rng, self.sp.count(s));
-                (self.sp.offset(s) + a, self.sp.offset(s) + b)
-            } else {
-                (
-                    self.sp.offset(s) + uniform_index(rng, self.sp.count(s)),
-                    self.sp.offset(t) + uniform_index(rng, self.sp.count(t)),
-                )
-            };
-            let background = &mut self.counts.background;
-            self.drives[s].kick_counting(p, i, t_next, rng, background);
-            self.drives[t].kick_counting(p, j, t_next, rng, background);
             let before = self.counts.fictitious;
-            if self.candidate(p, k, i, j, rng) {
+            if self.event(p, t_next, rate, rng) {
                 rate = self.rates();
             }
             self.refresh.record(self.counts.fictitious - before);
@@ -328,48 +309,6 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
     /// The largest species majorant (for the refresh rule's "did it gain" test).
     fn bound(&self) -> Real {
         (0..self.sp.len()).fold(0.0, |m, s| max(m, self.maj[s].umax))
-    }
-
-    /// The candidate `(i, j)` of pair type `k`, both at the event time: the fictitious test
-    /// against `U_k` (GRW (20)), else the collision. True when a majorant changed.
-    #[inline(always)]
-    fn candidate<R: Rng + ?Sized>(
-        &mut self,
-        p: &mut Particles<'_>,
-        k: usize,
-        i: usize,
-        j: usize,
-        rng: &mut R,
-    ) -> bool {
-        let (s, t) = self.pair_of[k];
-        let (vi, vj) = (p.velocity(i), p.velocity(j));
-        let u = vi - vj;
-        self.counts.candidates += 1;
-        let (before_s, before_t) = (self.maj[s].umax, self.maj[t].umax);
-        if K::USES_UMAX {
-            let umax_event = self.pair_umax(k);
-            let u2 = u.norm2();
-            if u2 > umax_event * umax_event {
-                self.counts.overshoots += 1;
-            }
-            if D::ACTS {
-                self.maj[s].cover(vi);
-                self.maj[t].cover(vj);
-            }
-            if !self.kernels[k].accepts(u2, umax_event, uniform01(rng)) {
-                self.counts.fictitious += 1;
-                return self.maj[s].umax != before_s || self.maj[t].umax != before_t;
-            }
-        }
-        let (a, b) =
-            self.maps[k].collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, &mut self.counts);
-        self.counts.collisions += 1;
-        self.pair_collisions[k] += 1;
-        if K::USES_UMAX {
-            self.maj[s].cover(a);
-            self.maj[t].cover(b);
-        }
-        self.maj[s].umax != before_s || self.maj[t].umax != before_t
     }
 
     /// Brings every particle to `t`, species by species with its drive.

@@ -45,11 +45,23 @@ const MAX_HEADER: usize = 16 << 20;
 /// Most values per ensemble a header may state: the most a run may have.
 const MAX_ROW: usize = crate::run::estimate::MAX_ROW_VALUES;
 
+/// The version a journal records: the package's and the random streams'
+/// ([`gdsmc_core::rng::STREAM_VERSION`]), as `0.1.0 (streams v2)`. A journal, shard or rank of
+/// another is refused: its ensembles were drawn otherwise.
+pub fn version() -> String {
+    format!(
+        "{} (streams v{})",
+        env!("CARGO_PKG_VERSION"),
+        gdsmc_core::rng::STREAM_VERSION
+    )
+}
+
 /// What a journal is of: enough to rebuild the scene and to tell journals of different runs
 /// apart.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Header {
-    /// The gdsmc version that wrote it (another version may draw other numbers).
+    /// The gdsmc version that wrote it and its stream version ([`version`]: another may draw
+    /// other numbers).
     pub gdsmc_version: String,
     /// The scene file as given on the command line (for messages).
     pub scene_path: String,
@@ -84,7 +96,7 @@ impl Header {
     ) -> Self {
         let scene = &source.scene;
         Header {
-            gdsmc_version: env!("CARGO_PKG_VERSION").into(),
+            gdsmc_version: version(),
             scene_path: source.path.display().to_string(),
             scene_text: source.text.clone(),
             overrides: source
@@ -112,7 +124,7 @@ impl Header {
                 assignment: assignment.clone(),
             })
             .collect();
-        let ours = env!("CARGO_PKG_VERSION");
+        let ours = version();
         // Written by this gdsmc, the text gives the scene it records; if not, the file was
         // changed after gdsmc wrote it. Written by another, this one may read it differently.
         let why = if self.gdsmc_version == ours {
