@@ -95,6 +95,13 @@ pub fn signed_unit32(h: u32) -> Real {
     (h as Real + 0.5) * TWO_POW_M31 - 1.0
 }
 
+/// A uniform double in the open interval (0, 1) from a uniform 32-bit `h`: `(h + 1/2) 2^-32`,
+/// the midpoints of 2^32 equal cells (the exact loops' acceptance uniform, stream version 2).
+#[inline(always)]
+pub fn unit_open32(h: u32) -> Real {
+    (h as Real + 0.5) * (0.5 * TWO_POW_M31)
+}
+
 /// A uniform integer in `0..n` (`1 <= n <= 2^32`) from a uniform 32-bit `h`, exactly uniform:
 /// Lemire's multiply-and-reject on 32 bits, a rejected `h` replaced by the high half of a fresh
 /// word.

@@ -1,16 +1,20 @@
 //! Stream version 2's draws (`gdsmc_core::rng::STREAM_VERSION`) against version 1's, which are
 //! kept here as the reference, and against the exact laws: a candidate pair from one word,
 //! a direction on the sphere or the circle from one word per try, two normals from one word,
-//! and the undriven Maxwell gas's events counted by a Poisson draw per interval. Each check is
+//! an event's waiting time and acceptance uniform from one word, and the undriven Maxwell
+//! gas's events counted by a Poisson draw per interval. Each check is
 //! two-sample (Kolmogorov-Smirnov or a chi-square test of homogeneity) at sizes of 2^20 to
 //! 2^22 draws per side, so a difference in a CDF of about 2e-3 (a cell's probability off by
 //! about 1%) would fail it; the checks of one test hold together at the 99.9% level
 //! (Bonferroni, `gdsmc_stats::joint`). Fixed seeds.
 
 use crate::common::{ks_statistic, normal_cdf};
-use gdsmc_core::rng::{Rng, seeded, uniform_index, uniform_index2, uniform_pair, uniform01};
+use gdsmc_core::rng::{
+    Rng, halves, seeded, uniform_index, uniform_index2, uniform_pair, uniform01, unit_open32,
+};
 use gdsmc_core::sample::{
-    poisson, standard_exponential, standard_normal, standard_normal_pair, unit_circle, unit_sphere,
+    exponential_from_half, poisson, standard_exponential, standard_normal, standard_normal_pair,
+    unit_circle, unit_sphere,
 };
 use gdsmc_core::vec3::Vec3;
 use gdsmc_stats::{KNOWN, joint, miss, quantile_t};
@@ -166,6 +170,49 @@ fn normals_two_per_word_have_the_law_of_one_per_word() {
         d2 < ks_two_critical(2 * M, 2 * M, k),
         "two-sample KS D = {d2}"
     );
+}
+
+#[test]
+fn waiting_times_and_acceptance_uniforms_from_one_word_have_version_1s_laws() {
+    // The exact loops' event word: the waiting time from its low half, the acceptance uniform
+    // from its high half. Two-sample KS of each against version 1's (a whole word each), the
+    // one-sample KS of each against its law, and their independence (the correlation of the
+    // uniform with the waiting time's CDF, r sqrt(M) standard normal when independent).
+    const M: usize = 1 << 21;
+    let mut rng = seeded(206);
+    let (mut wait, mut unif): (Vec<f64>, Vec<f64>) = (0..M)
+        .map(|_| {
+            let (hi, lo) = halves(rng.next_u64());
+            (exponential_from_half(&mut rng, lo), unit_open32(hi))
+        })
+        .unzip();
+    let k = 5;
+    let r = wait
+        .iter()
+        .zip(&unif)
+        .map(|(&w, &u)| ((1.0 - (-w).exp()) - 0.5) * (u - 0.5))
+        .sum::<f64>()
+        / (M as f64 / 12.0);
+    assert!(
+        r.abs() * (M as f64).sqrt() < joint(k, KNOWN),
+        "correlation {r}"
+    );
+    let mut old_wait: Vec<f64> = (0..M).map(|_| standard_exponential(&mut rng)).collect();
+    let mut old_unif: Vec<f64> = (0..M).map(|_| uniform01(&mut rng)).collect();
+    let d = ks_two_sample(&mut wait.clone(), &mut old_wait);
+    assert!(
+        d < ks_two_critical(M, M, k),
+        "waiting times: two-sample KS D = {d}"
+    );
+    let d = ks_two_sample(&mut unif.clone(), &mut old_unif);
+    assert!(
+        d < ks_two_critical(M, M, k),
+        "uniforms: two-sample KS D = {d}"
+    );
+    let d = ks_statistic(&mut wait, |x| 1.0 - (-x).exp());
+    assert!(d < ks_critical(M, k), "waiting times: KS D = {d}");
+    let d = ks_statistic(&mut unif, |x| x);
+    assert!(d < ks_critical(M, k), "uniforms: KS D = {d}");
 }
 
 #[test]

@@ -115,6 +115,22 @@ pub trait Drive: Copy + core::fmt::Debug {
         }
     }
 
+    /// Brings the two partners `i` and `j` of a candidate to `t`, adding the drive's events to
+    /// `events`. Default: [`Drive::kick_counting`] for `i`, then for `j`; the white noise on
+    /// spheres draws both partners' six normals from three words (stream version 2).
+    #[inline(always)]
+    fn kick_pair_counting<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        t: Real,
+        rng: &mut R,
+        events: &mut u64,
+    ) {
+        self.kick_counting(p, i, t, rng, events);
+        self.kick_counting(p, j, t, rng, events);
+    }
+
     /// As [`Drive::kick_all`], adding the drive's events to `events`.
     fn kick_all_counting<R: Rng + ?Sized>(
         &self,

@@ -8,7 +8,7 @@ use crate::geometry::{Disks, Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
 use crate::rng::Rng;
-use crate::sample::standard_normal3;
+use crate::sample::{standard_normal_pair, standard_normal3};
 use crate::vec3::Vec3;
 
 /// White noise of strength `beta >= 0` (GRW (1)).
@@ -42,6 +42,39 @@ impl Drive for WhiteNoise {
 
     fn kick_all<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
         white_noise_kick_all(2.0 * self.beta, p, t, rng);
+    }
+
+    #[inline(always)]
+    fn kick_pair_counting<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        pair: (usize, usize),
+        t: Real,
+        rng: &mut R,
+        _events: &mut u64,
+    ) {
+        white_noise_kick_pair(2.0 * self.beta, p, pair, t, rng);
+    }
+}
+
+/// Kicks the partners `i` and `j` to `t` with strength `two_beta = 2 beta` (GRW (18)): six
+/// normals from three words ([`standard_normal_pair`]), `i`'s three first.
+#[inline(always)]
+pub fn white_noise_kick_pair<R: Rng + ?Sized>(
+    two_beta: Real,
+    p: &mut Particles<'_>,
+    (i, j): (usize, usize),
+    t: Real,
+    rng: &mut R,
+) {
+    let (a, b) = standard_normal_pair(rng);
+    let (c, d) = standard_normal_pair(rng);
+    let (e, f) = standard_normal_pair(rng);
+    for (k, g) in [(i, Vec3::new(a, b, c)), (j, Vec3::new(d, e, f))] {
+        let q = p.get_mut(k);
+        let v = q.velocity() + sqrt(two_beta * (t - q.t_kick)) * g;
+        q.set_velocity(v);
+        q.t_kick = t;
     }
 }
 

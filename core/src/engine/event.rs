@@ -13,7 +13,7 @@ use crate::kernel::Kernel;
 use crate::math::{Real, max, sqrt};
 use crate::moments::Observables;
 use crate::particles::Particles;
-use crate::rng::{Rng, uniform01};
+use crate::rng::Rng;
 use crate::vec3::Vec3;
 
 /// The adaptive majorant `Umax` of the relative speed and the reference velocity `V` it is
@@ -122,9 +122,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Collider<K, D, A, G> {
     ) -> (usize, usize) {
         let (i, j) = self.pairs.next(p, rng);
         self.drive
-            .kick_counting(p, i, t, rng, &mut self.counts.background);
-        self.drive
-            .kick_counting(p, j, t, rng, &mut self.counts.background);
+            .kick_pair_counting(p, (i, j), t, rng, &mut self.counts.background);
         (i, j)
     }
 
@@ -141,6 +139,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Collider<K, D, A, G> {
         i: usize,
         j: usize,
         cover_kicked: bool,
+        accept: Real,
         rng: &mut R,
     ) -> bool {
         let (vi, vj) = (p.velocity(i), p.velocity(j));
@@ -149,10 +148,9 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Collider<K, D, A, G> {
             &self.kernel,
             &mut self.maj,
             &mut self.counts,
-            vi,
-            vj,
+            (vi, vj),
             cover_kicked,
-            rng,
+            accept,
         ) {
             return self.maj.umax != umax_event;
         }
@@ -183,17 +181,17 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Collider<K, D, A, G> {
 /// time, against the majorant that generated the event (GRW (20)): counts the candidate (and
 /// an overshoot of the majorant, after which the kernel is truncated, RW (19)), lets the
 /// majorant cover the kicked velocities when `cover_kicked` (RW (21)), and returns whether
-/// the pair collides for real (counting a fictitious one). Kernels with no `Umax` always
-/// collide. Every Markov-jump loop's candidates pass through here.
+/// the pair collides for real (counting a fictitious one) when the uniform `accept` in (0, 1)
+/// falls below the kernel's ratio. Kernels with no `Umax` always collide (and `accept` is not
+/// read). Every Markov-jump loop's candidates pass through here.
 #[inline(always)]
-pub fn admits<K: Kernel, R: Rng + ?Sized>(
+pub fn admits<K: Kernel>(
     kernel: &K,
     maj: &mut Majorant,
     counts: &mut Counts,
-    vi: Vec3,
-    vj: Vec3,
+    (vi, vj): (Vec3, Vec3),
     cover_kicked: bool,
-    rng: &mut R,
+    accept: Real,
 ) -> bool {
     counts.candidates += 1;
     if !K::USES_UMAX {
@@ -208,7 +206,7 @@ pub fn admits<K: Kernel, R: Rng + ?Sized>(
         maj.cover(vi);
         maj.cover(vj);
     }
-    if !kernel.accepts(u2, umax_event, uniform01(rng)) {
+    if !kernel.accepts(u2, umax_event, accept) {
         counts.fictitious += 1;
         return false;
     }

@@ -14,8 +14,8 @@ use super::event::RefreshWindow;
 use super::{Counts, EngineError};
 use crate::math::Real;
 use crate::particles::Particles;
-use crate::rng::Rng;
-use crate::sample::{poisson, standard_exponential};
+use crate::rng::{Rng, halves, unit_open32};
+use crate::sample::{exponential_from_half, poisson, standard_exponential};
 
 /// An exact event loop as the skeleton sees it.
 pub(crate) trait Jumps {
@@ -40,9 +40,16 @@ pub(crate) trait Jumps {
     /// Makes the majorant exact with every particle at the current time (and rescales a
     /// cooling gas), without counting an observation.
     fn resynchronize(&mut self, p: &mut Particles<'_>) -> Result<(), EngineError>;
-    /// One event at time `t`: a candidate pair, its kicks, the fictitious test and the map.
-    /// True when the majorant changed (the rate is then recomputed).
-    fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool;
+    /// One event at time `t`: a candidate pair, its kicks, the fictitious test (against the
+    /// uniform `accept` in (0, 1), drawn with the event's waiting time) and the map. True when
+    /// the majorant changed (the rate is then recomputed).
+    fn step<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t: Real,
+        accept: Real,
+        rng: &mut R,
+    ) -> bool;
     /// One event at time `t` of a loop with no `Umax`, which always collides: a pair, its
     /// kicks and the map, counted as a candidate and a collision. [`run_events`] calls it
     /// only when not `USES_UMAX`; a loop with a `Umax` may run [`Jumps::step`] here.
@@ -116,14 +123,17 @@ pub(crate) fn run_events<J: Jumps, R: Rng + ?Sized>(
             j.window().record_collisions(done);
             return Ok(());
         }
-        let t_next = j.now() + standard_exponential(rng) / rate;
+        // One word for the waiting time (its low half) and the candidate's acceptance uniform
+        // (its high half; stream version 2).
+        let (hi, lo) = halves(rng.next_u64());
+        let t_next = j.now() + exponential_from_half(rng, lo) / rate;
         // Not `t_next >= t_end` alone: a zero rate with a zero draw gives NaN, which stops too.
         if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
             return Ok(());
         }
         j.set_now(t_next);
         let before = j.tally().fictitious;
-        if j.step(p, t_next, rng) {
+        if j.step(p, t_next, unit_open32(hi), rng) {
             rate = j.rate(n);
         }
         let wasted = j.tally().fictitious - before;

@@ -294,9 +294,15 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Jumps for NoSplitting<K,
         Ok(())
     }
     #[inline(always)]
-    fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) -> bool {
+    fn step<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        t: Real,
+        accept: Real,
+        rng: &mut R,
+    ) -> bool {
         let (i, j) = self.c.kicked_pair(p, t, rng);
-        self.c.candidate(p, i, j, D::ACTS, rng)
+        self.c.candidate(p, i, j, D::ACTS, accept, rng)
     }
     #[inline(always)]
     fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {

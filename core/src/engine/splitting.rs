@@ -24,7 +24,7 @@ use crate::math::Real;
 use crate::moments::Observables;
 use crate::observe::RoughObservables;
 use crate::particles::Particles;
-use crate::rng::Rng;
+use crate::rng::{Rng, uniform01};
 use crate::sample::standard_exponential;
 
 /// Which splitting: RW Algorithm 1 or 2.
@@ -170,7 +170,8 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> Splitting<K, D, A, G> {
                 return;
             }
             let (i, j) = self.c.pairs.next(p, rng);
-            if self.c.candidate(p, i, j, false, rng) {
+            let accept = if K::USES_UMAX { uniform01(rng) } else { 0.0 };
+            if self.c.candidate(p, i, j, false, accept, rng) {
                 rate = self.c.rate(n, 1.0);
             }
         }

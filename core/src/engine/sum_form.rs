@@ -275,7 +275,13 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
     /// others, accepted with probability `|u| / (|c_i| + |c_j|)` (tested without a square
     /// root); then a uniform direction, GRW (3), and the two `|c|` and their sum updated.
     #[inline(always)]
-    fn step<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, _t: Real, rng: &mut R) -> bool {
+    fn step<R: Rng + ?Sized>(
+        &mut self,
+        p: &mut Particles<'_>,
+        _t: Real,
+        accept: Real,
+        rng: &mut R,
+    ) -> bool {
         let mut trials = 0u32;
         let i = loop {
             let i = self.uniform(p, rng);
@@ -302,7 +308,7 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
         let (ci, cj) = (p.kick_time(i), p.kick_time(j));
         self.counts.candidates += 1;
         let u = vi - vj;
-        let r = uniform01(rng) * (ci + cj);
+        let r = accept * (ci + cj);
         if r * r >= u.norm2() {
             self.counts.fictitious += 1;
             return false;
@@ -322,7 +328,8 @@ impl<A: Restitution> Jumps for SumNoSplitting<A> {
     }
     /// Never reached (the sum form has a bound that goes loose): one step.
     fn collide<R: Rng + ?Sized>(&mut self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
-        self.step(p, t, rng);
+        let accept = uniform01(rng);
+        self.step(p, t, accept, rng);
     }
 }
 

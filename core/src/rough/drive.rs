@@ -12,6 +12,7 @@
 
 use crate::batch::kick::white_noise_kick_all;
 use crate::drive::Drive;
+use crate::drive::white_noise::white_noise_kick_pair;
 use crate::geometry::{Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
@@ -101,6 +102,29 @@ impl<G: Geometry> Drive for RoughNoise<G> {
             p.set_spin(i, w);
         }
         p.get_mut(i).t_kick = t;
+    }
+
+    /// Brings a candidate's partners to `t`. With no rotational noise on spheres, the smooth
+    /// white noise's pair kick ([`white_noise_kick_pair`]: the translational draws stay the
+    /// smooth gas's); else partner by partner.
+    #[inline(always)]
+    fn kick_pair_counting<R: Rng + ?Sized>(
+        &self,
+        p: &mut Particles<'_>,
+        (i, j): (usize, usize),
+        t: Real,
+        rng: &mut R,
+        _events: &mut u64,
+    ) {
+        match self.tr {
+            Some(tr) if self.rot == 0.0 && G::CHOICE == DimensionChoice::Three => {
+                white_noise_kick_pair(tr, p, (i, j), t, rng);
+            }
+            _ => {
+                self.kick(p, i, t, rng);
+                self.kick(p, j, t, rng);
+            }
+        }
     }
 
     /// Brings every particle to `t`. With no rotational noise on spheres, the smooth white

@@ -28,6 +28,22 @@ pub fn standard_exponential<R: Rng + ?Sized>(rng: &mut R) -> Real {
     exponential_rejection(rng, i, x)
 }
 
+/// One standard exponential variate from a uniform 32-bit `h` (stream version 2: the exact
+/// loops' waiting time shares its generator word with the candidate's acceptance uniform,
+/// [`crate::engine`]): layer `h & 0xff`, abscissa from the high 24 bits on a grid of 2^24
+/// points; the rejection path as [`standard_exponential`]'s (fresh 64-bit draws).
+#[inline(always)]
+pub fn exponential_from_half<R: Rng + ?Sized>(rng: &mut R, h: u32) -> Real {
+    let i = (h & 0xff) as usize;
+    // `1 + k 2^-24` for the high 24 bits `k`, from its bits (exact); `u = k 2^-24`.
+    let u = f64::from_bits(((h >> 8) as u64) << 28 | 0x3ff0_0000_0000_0000) - 1.0;
+    let x = u * EXP_X[i];
+    if x < EXP_X[i + 1] {
+        return x;
+    }
+    exponential_rejection(rng, i, x)
+}
+
 /// Layer `i >= 1`'s wedge `x in [x_{i+1}, x_i]` of `exp(-x)` ([`Wedge`]): convex, so squeezed
 /// between its tangents and its chord.
 #[inline(always)]

@@ -18,7 +18,7 @@ mod squeeze;
 pub mod ziggurat_tables;
 
 pub use circle::unit_circle;
-pub use exponential::standard_exponential;
+pub use exponential::{exponential_from_half, standard_exponential};
 pub use impact::impact_direction;
 pub use maxwellian::Maxwellian;
 pub use mixture::MaxwellianMixture;

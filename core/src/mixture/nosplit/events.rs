@@ -37,7 +37,7 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
             }
             let k = left.min(self.refresh.until_synchronization(n));
             for _ in 0..k {
-                self.event(p, self.t, rate, rng);
+                self.event(p, self.t, rate, 0.0, rng);
             }
             self.refresh.record_collisions(k);
             left -= k;
@@ -46,13 +46,15 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
     }
 
     /// One event at `t`: a pair type by its share of `rate`, a pair of it, both kicked, the
-    /// candidate. True when a majorant changed.
+    /// candidate (against the acceptance uniform `accept`, unread with no `Umax`). True when a
+    /// majorant changed.
     #[inline(always)]
     pub(super) fn event<R: Rng + ?Sized>(
         &mut self,
         p: &mut Particles<'_>,
         t: Real,
         rate: Real,
+        accept: Real,
         rng: &mut R,
     ) -> bool {
         let k = if self.sp.pair_types() == 1 {
@@ -74,20 +76,26 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
             (self.sp.offset(s) + a, self.sp.offset(u) + b)
         };
         let background = &mut self.counts.background;
-        self.drives[s].kick_counting(p, i, t, rng, background);
-        self.drives[u].kick_counting(p, j, t, rng, background);
-        self.candidate(p, k, i, j, rng)
+        if s == u {
+            // One species' drive: its pair kick, as the one-species loop's.
+            self.drives[s].kick_pair_counting(p, (i, j), t, rng, background);
+        } else {
+            self.drives[s].kick_counting(p, i, t, rng, background);
+            self.drives[u].kick_counting(p, j, t, rng, background);
+        }
+        self.candidate(p, k, (i, j), accept, rng)
     }
 
     /// The candidate `(i, j)` of pair type `k`, both at the event time: the fictitious test
-    /// against `U_k` (GRW (20)), else the collision. True when a majorant changed.
+    /// against `U_k` (GRW (20)) with the uniform `accept`, else the collision. True when a
+    /// majorant changed.
     #[inline(always)]
     fn candidate<R: Rng + ?Sized>(
         &mut self,
         p: &mut Particles<'_>,
         k: usize,
-        i: usize,
-        j: usize,
+        (i, j): (usize, usize),
+        accept: Real,
         rng: &mut R,
     ) -> bool {
         let (s, t) = self.pair_of[k];
@@ -105,7 +113,7 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
                 self.maj[s].cover(vi);
                 self.maj[t].cover(vj);
             }
-            if !self.kernels[k].accepts(u2, umax_event, uniform01(rng)) {
+            if !self.kernels[k].accepts(u2, umax_event, accept) {
                 self.counts.fictitious += 1;
                 return self.maj[s].umax != before_s || self.maj[t].umax != before_t;
             }

@@ -41,8 +41,8 @@ use crate::kernel::Kernel;
 use crate::math::{Real, max};
 use crate::observe::MixtureObservables;
 use crate::particles::Particles;
-use crate::rng::Rng;
-use crate::sample::standard_exponential;
+use crate::rng::{Rng, halves, unit_open32};
+use crate::sample::{exponential_from_half, standard_exponential};
 use crate::species::{MAX_PAIRS, MAX_SPECIES, MixtureError, Species, pair_index};
 
 /// The physics of one pair type `(s, t)`: kernel and particle model (a restitution law, or
@@ -290,13 +290,22 @@ impl<K: Kernel, D: Drive, L: PairLaw, G: Geometry> MixtureNoSplitting<K, D, L, G
                 self.counted(p, t_end, rate, rng)?;
                 break;
             }
-            let t_next = self.t + standard_exponential(rng) / rate;
+            // With a `Umax`, the waiting time and the acceptance uniform from one word; without,
+            // the waiting time from a word of its own: as the one-species loop's (stream
+            // version 2).
+            let (wait, accept) = if K::USES_UMAX {
+                let (hi, lo) = halves(rng.next_u64());
+                (exponential_from_half(rng, lo), unit_open32(hi))
+            } else {
+                (standard_exponential(rng), 0.0)
+            };
+            let t_next = self.t + wait / rate;
             if t_next.partial_cmp(&t_end) != Some(core::cmp::Ordering::Less) {
                 break;
             }
             self.t = t_next;
             let before = self.counts.fictitious;
-            if self.event(p, t_next, rate, rng) {
+            if self.event(p, t_next, rate, accept, rng) {
                 rate = self.rates();
             }
             self.refresh.record(self.counts.fictitious - before);
