@@ -57,12 +57,6 @@ pub fn powf(x: Real, y: Real) -> Real {
     libm::pow(x, y)
 }
 
-/// `ln Gamma(x)` for `x > 0`.
-#[inline(always)]
-pub fn ln_gamma(x: Real) -> Real {
-    libm::lgamma(x)
-}
-
 /// Sine and cosine of `x`.
 #[inline(always)]
 pub fn sin_cos(x: Real) -> (Real, Real) {

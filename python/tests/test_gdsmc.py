@@ -106,7 +106,10 @@ def test_same_numbers_as_the_command(tmp_path, name, args):
     expected = {p.stem for p in out.glob("*.csv")} - {"observables"}
     assert set(r.histograms) == expected
     with open(out / "summary.json") as f:
-        assert strip_timing(r.summary) == strip_timing(json.load(f))
+        written = json.load(f)
+        assert strip_timing(r.summary) == strip_timing(written)
+    # The streams the numbers were drawn from, stated alike.
+    assert written["stream_version"] == gdsmc.STREAM_VERSION
     # The views agree with the table.
     assert np.array_equal(r.times, r.table["t"])
     assert np.array_equal(r.mean["T"], r.table["T"])

@@ -1,9 +1,9 @@
 //! Moment sums over all particles, accumulated with SIMD: the bulk velocity `V` (GRW (7)) in
 //! a light first pass (four particles' rows added as they lie, no transposition), then in one
-//! pass every central sum about `V` (`c = v - V`: `sum c`, `c c^T`, `c |c|^2`, `|c|`, `|c|^3`,
+//! pass every central sum about `V` (`c = v - V`: `c c^T`, `c |c|^2`, `|c|`, `|c|^3`,
 //! `|c|^4`, `|c|^6`, `max |c|^2`) and `sum |v|^6`. The raw sums GRW (6), (8), (9) and
-//! `sum |v|^4` follow from the central ones exactly in algebra ([`raw_from_central`]; the
-//! binomial expansion of `v = V + c`, with the rounding residual `sum c` kept), so an
+//! `sum |v|^4` follow from the central ones ([`raw_from_central`]: the binomial expansion of
+//! `v = V + c` with `sum c = 0`, which holds to rounding, a few ulps of the sums), so an
 //! observation reads the particles twice, and the first time lightly.
 //!
 //! Sums are taken lane-wise over blocks of four particles and reduced at the end, in a fixed
@@ -44,20 +44,17 @@ pub struct Sums {
     pub c6: Real,
     /// `max |v - V|^2`.
     pub max_c2: Real,
-    /// `sum (v - V)`: zero but for rounding, kept so that the raw sums follow from the central
-    /// ones exactly in algebra.
-    pub s1c: [Real; 3],
 }
 
 /// The raw sums `s2`, `s3`, `s4` of `s` from its central ones and the bulk velocity `bulk`
-/// (`v = V + c`, `S = sum c`, `C = sum c c^T`, `Q = tr C`, `n` particles):
-/// `sum v v^T = C + V S^T + S V^T + n V V^T`,
-/// `sum v |v|^2 = sum c|c|^2 + 2 C V + |V|^2 S + Q V + 2 (S.V) V + n |V|^2 V`,
-/// `sum |v|^4 = sum |c|^4 + 4 (sum c|c|^2).V + 4 V.C V + 2 |V|^2 Q + 4 |V|^2 S.V + n |V|^4`.
+/// (`v = V + c`, `sum c = 0` to rounding, `C = sum c c^T`, `Q = tr C`, `n` particles):
+/// `sum v v^T = C + n V V^T`, `sum v |v|^2 = sum c|c|^2 + 2 C V + Q V + n |V|^2 V`,
+/// `sum |v|^4 = sum |c|^4 + 4 (sum c|c|^2).V + 4 V.C V + 2 |V|^2 Q + n |V|^4`.
+// Once per observation: out of line (the micro:bit's firmware is built for size).
+#[inline(never)]
 pub fn raw_from_central(s: &mut Sums, bulk: Vec3) {
     let n = s.n as Real;
     let v = bulk.to_array();
-    let sc = s.s1c;
     // The symmetric C as a matrix from its upper triangle [xx, yy, zz, xy, xz, yz].
     let c = [
         [s.c2[0], s.c2[3], s.c2[4]],
@@ -67,17 +64,16 @@ pub fn raw_from_central(s: &mut Sums, bulk: Vec3) {
     let cv: [Real; 3] = core::array::from_fn(|a| c[a][0] * v[0] + c[a][1] * v[1] + c[a][2] * v[2]);
     let v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
     let q = s.c2[0] + s.c2[1] + s.c2[2];
-    let sv = sc[0] * v[0] + sc[1] * v[1] + sc[2] * v[2];
     const UPPER: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
     for (k, &(a, b)) in UPPER.iter().enumerate() {
-        s.s2[k] = c[a][b] + v[a] * sc[b] + sc[a] * v[b] + n * v[a] * v[b];
+        s.s2[k] = c[a][b] + n * v[a] * v[b];
     }
     for a in 0..3 {
-        s.s3[a] = s.c3[a] + 2.0 * cv[a] + v2 * sc[a] + q * v[a] + 2.0 * sv * v[a] + n * v2 * v[a];
+        s.s3[a] = s.c3[a] + 2.0 * cv[a] + q * v[a] + n * v2 * v[a];
     }
     let c3v = s.c3[0] * v[0] + s.c3[1] * v[1] + s.c3[2] * v[2];
     let vcv = v[0] * cv[0] + v[1] * cv[1] + v[2] * cv[2];
-    s.s4 = s.c4 + 4.0 * c3v + 4.0 * vcv + 2.0 * v2 * q + 4.0 * v2 * sv + n * v2 * v2;
+    s.s4 = s.c4 + 4.0 * c3v + 4.0 * vcv + 2.0 * v2 * q + n * v2 * v2;
 }
 
 /// The sums over the particles `q` (at least one): SIMD unless the `scalar` feature is on.
@@ -97,9 +93,6 @@ fn add_central(s: &mut Sums, p: &Particle, bulk: Vec3) {
     s.s6 += v2 * v2 * v2;
     let c = v - bulk;
     let c2 = c.norm2();
-    s.s1c[0] += c.x;
-    s.s1c[1] += c.y;
-    s.s1c[2] += c.z;
     s.c2[0] += c.x * c.x;
     s.c2[1] += c.y * c.y;
     s.c2[2] += c.z * c.z;
@@ -176,15 +169,12 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
     let (mut e1, mut e3) = (z, z);
     let (mut cxx, mut cyy, mut czz, mut cxy, mut cxz, mut cyz) = (z, z, z, z, z, z);
     let (mut d1, mut d2, mut d3) = (z, z, z);
-    let (mut g1, mut g2, mut g3, mut q6) = (z, z, z, z);
+    let mut q6 = z;
     for b in 0..blocks {
         let [x, y, w, _] = load4(&q[4 * b..]);
         let v2 = x * x + y * y + w * w;
         q6 += v2 * v2 * v2;
         let (x, y, w) = (x - bx, y - by, w - bz);
-        g1 += x;
-        g2 += y;
-        g3 += w;
         let c2 = x * x + y * y + w * w;
         cxx += x * x;
         cyy += y * y;
@@ -217,7 +207,6 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
     s.c4 = c4.reduce_add();
     s.c6 = c6.reduce_add();
     s.max_c2 = m2.to_array().into_iter().fold(0.0, max);
-    s.s1c = [g1.reduce_add(), g2.reduce_add(), g3.reduce_add()];
     s.s6 = q6.reduce_add();
     for p in &q[4 * blocks..] {
         add_central(&mut s, p, bulk);

@@ -22,7 +22,9 @@ pub use exponential::{exponential_from_half, standard_exponential};
 pub use impact::impact_direction;
 pub use maxwellian::Maxwellian;
 pub use mixture::MaxwellianMixture;
-pub use normal::{standard_normal, standard_normal_pair, standard_normal3, standard_normal3x4};
+pub use normal::{
+    standard_normal, standard_normal_pair, standard_normal3, standard_normal3x4, standard_normals,
+};
 pub use partner::BackgroundPartner;
 pub use poisson::poisson;
 pub use sphere::unit_sphere;
