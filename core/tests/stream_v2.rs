@@ -53,7 +53,8 @@ fn ks_critical(n: usize, k: usize) -> f64 {
 }
 
 /// The chi-square quantile with `dof` degrees of freedom exceeded with probability
-/// `miss / k` (Wilson-Hilferty: within 1% of the exact quantile from 10 degrees of freedom).
+/// `miss / k` (Wilson-Hilferty: within 1% of the exact quantile from 10 degrees of freedom;
+/// at 2 a few percent above it, 17.4 against 16.8 at the residues' level: conservative).
 fn chi2_critical(dof: usize, k: usize) -> f64 {
     let z = quantile_t(KNOWN / 2, 1.0 - 2.0 * miss() / k as f64);
     let v = dof as f64;
