@@ -76,6 +76,17 @@ impl<G: Geometry> RoughNoise<G> {
     }
 }
 
+impl<G: Geometry> RoughNoise<G> {
+    /// `2 beta` when this noise is the smooth white noise on spheres (translation driven, no
+    /// rotational noise): its kicks then draw as [`crate::drive::WhiteNoise`]'s, so a rough
+    /// gas with `beta = -1` is the smooth gas to the bit.
+    #[inline(always)]
+    fn smooth_noise(&self) -> Option<Real> {
+        self.tr
+            .filter(|_| self.rot == 0.0 && G::CHOICE == DimensionChoice::Three)
+    }
+}
+
 impl<G: Geometry> Drive for RoughNoise<G> {
     const ACTS: bool = true;
 
@@ -116,8 +127,8 @@ impl<G: Geometry> Drive for RoughNoise<G> {
         rng: &mut R,
         _events: &mut u64,
     ) {
-        match self.tr {
-            Some(tr) if self.rot == 0.0 && G::CHOICE == DimensionChoice::Three => {
+        match self.smooth_noise() {
+            Some(tr) => {
                 white_noise_kick_pair(tr, p, (i, j), t, rng);
             }
             _ => {
@@ -131,8 +142,8 @@ impl<G: Geometry> Drive for RoughNoise<G> {
     /// noise's batch kick ([`white_noise_kick_all`]: its normals drawn for blocks of four), so
     /// that the translational draws stay the smooth gas's; else particle by particle.
     fn kick_all<R: Rng + ?Sized>(&self, p: &mut Particles<'_>, t: Real, rng: &mut R) {
-        match self.tr {
-            Some(tr) if self.rot == 0.0 && G::CHOICE == DimensionChoice::Three => {
+        match self.smooth_noise() {
+            Some(tr) => {
                 white_noise_kick_all(tr, p, t, rng);
             }
             _ => {
