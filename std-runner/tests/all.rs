@@ -19,6 +19,7 @@ mod output_set;
 mod reproduce_verdicts;
 mod state;
 mod steady_summary;
+mod stepped;
 mod sweep;
 mod sweep_charts;
 mod sweep_shards;

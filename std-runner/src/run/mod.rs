@@ -21,6 +21,7 @@ pub mod pages;
 pub mod results;
 pub mod shard;
 pub mod state;
+pub mod stepped;
 pub mod totals;
 
 pub use ensemble::{
@@ -41,7 +42,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use totals::Totals;
 
 /// Ensembles handed to the workers at once (bounds the generators held; independent of the
@@ -88,35 +89,53 @@ impl EnsembleJob<'_> {
             let rngs: Vec<Xoshiro256PlusPlus> =
                 (&mut streams).take((last - start) as usize).collect();
             let next = AtomicUsize::new(0);
-            let (tx, rx) = mpsc::channel::<(usize, Done)>();
             let mut failed = None;
-            std::thread::scope(|s| {
-                for _ in 0..self.threads.min(rngs.len()) {
-                    let (tx, rngs, next, halt) = (tx.clone(), &rngs, &next, &halt);
-                    s.spawn(move || self.work(start, rngs, next, halt, tx));
-                }
-                drop(tx);
-                let mut pending = BTreeMap::new();
-                let mut k = 0usize;
-                for (i, done) in rx {
-                    pending.insert(i, done);
-                    while let Some(done) = pending.remove(&k) {
-                        let e = start + k as u64;
-                        let folded = done.and_then(|(row, c)| {
-                            on_row(e, &row, &c)?;
-                            totals.push(&row, &c);
-                            Ok(())
-                        });
-                        if let Err(err) = folded {
-                            halt.store(true, Ordering::SeqCst);
-                            failed.get_or_insert(err);
-                            pending.clear();
-                            break;
-                        }
-                        k += 1;
+            let mut pending = BTreeMap::new();
+            let mut k = 0usize;
+            // Folds the finished prefix of the batch in ensemble order.
+            let mut take = |i: usize, done: Done| {
+                pending.insert(i, done);
+                while let Some(done) = pending.remove(&k) {
+                    let e = start + k as u64;
+                    let folded = done.and_then(|(row, c)| {
+                        on_row(e, &row, &c)?;
+                        totals.push(&row, &c);
+                        Ok(())
+                    });
+                    if let Err(err) = folded {
+                        halt.store(true, Ordering::SeqCst);
+                        failed.get_or_insert(err);
+                        pending.clear();
+                        break;
                     }
+                    k += 1;
                 }
-            });
+            };
+            if self.threads <= 1 {
+                // One thread: each ensemble run and folded on this one (a browser has no
+                // threads to spawn), so the journal holds each as soon as it is done.
+                let mut particles = None;
+                for (i, rng) in rngs.iter().enumerate() {
+                    if self.stop.load(Ordering::Relaxed) || halt.load(Ordering::Relaxed) {
+                        break;
+                    }
+                    let done = self.one(start + i as u64, rng, &mut particles);
+                    (self.progress)(1);
+                    take(i, done);
+                }
+            } else {
+                let (tx, rx) = mpsc::channel::<(usize, Done)>();
+                std::thread::scope(|s| {
+                    for _ in 0..self.threads.min(rngs.len()) {
+                        let (tx, rngs, next, halt) = (tx.clone(), &rngs, &next, &halt);
+                        s.spawn(move || self.work(start, rngs, next, halt, tx));
+                    }
+                    drop(tx);
+                    for (i, done) in rx {
+                        take(i, done);
+                    }
+                });
+            }
             if let Some(err) = failed {
                 return Err(err);
             }
@@ -126,6 +145,20 @@ impl EnsembleJob<'_> {
             start = last;
         }
         Ok(())
+    }
+
+    /// Ensemble `k` from its generator, on the worker's particle buffer (made at its first).
+    fn one(
+        &self,
+        k: u64,
+        rng: &Xoshiro256PlusPlus,
+        particles: &mut Option<ensemble::SystemBuffer>,
+    ) -> Done {
+        match particles {
+            Some(buf) => Ok(buf),
+            None => system_buffer(self.model).map(|b| particles.insert(b)),
+        }
+        .and_then(|buf| run_ensemble(self.scene, self.model, rng.clone(), buf, (k, &self.state)))
     }
 
     /// One worker: takes the next ensemble of the batch until none is left or the run stops.
@@ -144,14 +177,7 @@ impl EnsembleJob<'_> {
             }
             let i = next.fetch_add(1, Ordering::Relaxed);
             let Some(rng) = rngs.get(i) else { return };
-            let done = match &mut particles {
-                Some(buf) => Ok(buf),
-                None => system_buffer(self.model).map(|b| particles.insert(b)),
-            }
-            .and_then(|buf| {
-                let k = start + i as u64;
-                run_ensemble(self.scene, self.model, rng.clone(), buf, (k, &self.state))
-            });
+            let done = self.one(start + i as u64, rng, &mut particles);
             (self.progress)(1);
             if tx.send((i, done)).is_err() {
                 return;
@@ -160,16 +186,9 @@ impl EnsembleJob<'_> {
     }
 }
 
-/// Runs `f` with the job of the scene's ensembles (on the scene's validated model).
-fn job<T>(
-    scene: &Scene,
-    threads: usize,
-    progress: &(dyn Fn(u64) + Sync),
-    stop: &AtomicBool,
-    state: StateIo<'_>,
-    f: impl FnOnce(&EnsembleJob) -> Result<T, Error>,
-) -> Result<T, Error> {
-    // `steady_from` is a public index: one set by hand past the times is refused, not run.
+/// Refuses a `steady_from` (a public index) set by hand past the scene's times, before anything
+/// runs.
+fn check_steady(scene: &Scene) -> Result<(), Error> {
     if let Some(k) = scene.steady_from()
         && k + 2 > scene.times().len()
     {
@@ -182,6 +201,19 @@ fn job<T>(
             ),
         });
     }
+    Ok(())
+}
+
+/// Runs `f` with the job of the scene's ensembles (on the scene's validated model).
+fn job<T>(
+    scene: &Scene,
+    threads: usize,
+    progress: &(dyn Fn(u64) + Sync),
+    stop: &AtomicBool,
+    state: StateIo<'_>,
+    f: impl FnOnce(&EnsembleJob) -> Result<T, Error>,
+) -> Result<T, Error> {
+    check_steady(scene)?;
     f(&EnsembleJob {
         scene,
         model: scene.model(),
@@ -194,8 +226,7 @@ fn job<T>(
 
 /// Wall and CPU time of a run from its start.
 struct Clock {
-    start: Instant,
-    cpu0: Option<cpu_time::ProcessTime>,
+    watch: crate::clock::Stopwatch,
     threads: usize,
 }
 
@@ -207,16 +238,15 @@ impl Clock {
             threads
         };
         Clock {
-            start: Instant::now(),
-            cpu0: cpu_time::ProcessTime::try_now().ok(),
+            watch: crate::clock::Stopwatch::start(),
             threads,
         }
     }
 
     fn timing(&self) -> Timing {
         Timing {
-            wall: self.start.elapsed().as_secs_f64(),
-            cpu: self.cpu0.map_or(0.0, |c| c.elapsed().as_secs_f64()),
+            wall: self.watch.wall(),
+            cpu: self.watch.cpu(),
             threads: self.threads as u64,
         }
     }

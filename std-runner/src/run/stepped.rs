@@ -1,0 +1,80 @@
+//! A run advanced a few ensembles at a time on the caller's thread: the browser's worker
+//! (web/), which must return to its event loop between steps to hear "stop" and to draw the
+//! statistics so far. The ensembles are the same (ensemble `k` from the seed's stream jumped
+//! `k` times) and are folded in the same order, so its statistics are the command's to the bit.
+
+use super::journal::Timing;
+use super::{SystemBuffer, Totals, check_steady, run_ensemble, stats_of, system_buffer};
+use crate::Error;
+use crate::clock::Stopwatch;
+use crate::run::{RunStats, StateIo};
+use crate::scene::Scene;
+use gdsmc_core::rng::Streams;
+
+/// A run of a scene's ensembles, advanced by [`Stepped::advance`].
+pub struct Stepped {
+    scene: Scene,
+    streams: Streams,
+    totals: Totals,
+    particles: Option<SystemBuffer>,
+    watch: Stopwatch,
+}
+
+impl Stepped {
+    /// A run of `scene` with no ensemble run yet. Refuses what the command refuses before it
+    /// runs (a `steady_from` past the times); the work limit is [`crate::run::estimate::check`].
+    pub fn new(scene: Scene) -> Result<Self, Error> {
+        check_steady(&scene)?;
+        Ok(Stepped {
+            streams: Streams::new(scene.seed()),
+            totals: Totals::new(&scene),
+            particles: None,
+            watch: Stopwatch::start(),
+            scene,
+        })
+    }
+
+    /// The scene.
+    #[must_use]
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// Ensembles finished and folded.
+    #[must_use]
+    pub fn done(&self) -> u64 {
+        self.totals.ensembles
+    }
+
+    /// Runs and folds the next `k` ensembles (fewer at the scene's last); returns the number
+    /// finished in all. An ensemble that fails ends the run with its error; the ones before it
+    /// stay folded.
+    pub fn advance(&mut self, k: u64) -> Result<u64, Error> {
+        let end = (self.done() + k).min(self.scene.ensembles());
+        while self.done() < end {
+            let e = self.done();
+            let rng = self.streams.next().expect("the streams are endless");
+            let model = self.scene.model();
+            let buf = match &mut self.particles {
+                Some(buf) => buf,
+                None => self.particles.insert(system_buffer(model)?),
+            };
+            let (row, counts) =
+                run_ensemble(&self.scene, model, rng, buf, (e, &StateIo::default()))?;
+            self.totals.push(&row, &counts);
+        }
+        Ok(self.done())
+    }
+
+    /// The statistics of the ensembles finished so far (those of a run of that many; its
+    /// timing zero where the platform has no clocks, [`crate::clock`]).
+    #[must_use]
+    pub fn stats(&self) -> RunStats {
+        let timing = Timing {
+            wall: self.watch.wall(),
+            cpu: self.watch.cpu(),
+            threads: 1,
+        };
+        stats_of(&self.scene, self.totals.clone(), timing)
+    }
+}
