@@ -51,7 +51,8 @@ pub use gdsmc_core::physics::{
 };
 pub use histograms::{Marginal, Shells};
 pub use overrides::{
-    Override, Sourced, load_with, load_with_overrides, parse_with, parse_with_overrides,
+    Override, Sourced, load_with, load_with_overrides, merged_text, parse_with,
+    parse_with_overrides,
 };
 pub(crate) use read::toml_of;
 pub use read::{MAX_SCENE_BYTES, load, parse, read, sweep_plan};

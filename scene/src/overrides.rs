@@ -92,12 +92,55 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
     if overrides.is_empty() {
         return Ok(scene);
     }
-    let bad = |o: Option<&Override>, key: &str, message: String| Error::Invalid {
+    let merged = merge(path, text, overrides)?;
+    parse(Path::new("--set"), &merged).map_err(|e| match e {
+        Error::Invalid { key, message, .. } => {
+            let source = overrides.iter().rev().find(|o| o.key() == key);
+            bad(source, &key, message)
+        }
+        Error::Parse { message, .. } => {
+            let first = message.lines().last().unwrap_or("").trim().to_string();
+            // The override that breaks the schema: the first whose prefix of the overrides no
+            // longer reads (only on this error path), else the last; named alone, by its source.
+            let k = (1..overrides.len())
+                .find(|&k| {
+                    matches!(
+                        parse_with(path, text, &overrides[..k]),
+                        Err(Error::Invalid { ref key, ref message, .. })
+                            if key == overrides[k - 1].key() && message.starts_with(SCHEMA)
+                    )
+                })
+                .unwrap_or(overrides.len());
+            let o = &overrides[k - 1];
+            bad(Some(o), o.key(), format!("{SCHEMA}: {first}"))
+        }
+        other => other,
+    })
+}
+
+/// The scene text that [`parse_with`] validates: `text` itself without overrides (its comments
+/// kept), else the file's keys with the overrides put in, as TOML. `gdsmc run` of it alone is
+/// the run of `text` with `overrides` (the browser page offers it for download).
+pub fn merged_text(path: &Path, text: &str, overrides: &[Override]) -> Result<String, Error> {
+    parse_with(path, text, overrides)?;
+    if overrides.is_empty() {
+        return Ok(text.to_string());
+    }
+    merge(path, text, overrides)
+}
+
+/// An error of the override `o` (or of `--set`) at `key`.
+fn bad(o: Option<&Override>, key: &str, message: String) -> Error {
+    Error::Invalid {
         path: PathBuf::from(o.map_or("--set", |o| o.source.as_str())),
         line: 0,
         key: key.to_string(),
         message,
-    };
+    }
+}
+
+/// The file's keys with the overrides put in, as TOML (not yet validated).
+fn merge(path: &Path, text: &str, overrides: &[Override]) -> Result<String, Error> {
     // A key given twice (`--n 64 --set particles.n=nan`, or a table and a key in it) would have
     // the later value replace the earlier before either is checked: refused, naming both.
     for (i, a) in overrides.iter().enumerate() {
@@ -184,32 +227,9 @@ pub fn parse_with(path: &Path, text: &str, overrides: &[Override]) -> Result<Sce
             table.insert(parts[parts.len() - 1].to_string(), value);
         }
     }
-    let merged = toml::to_string(&doc).map_err(|e| Error::Parse {
+    toml::to_string(&doc).map_err(|e| Error::Parse {
         path: path.to_path_buf(),
         message: e.to_string(),
-    })?;
-    parse(Path::new("--set"), &merged).map_err(|e| match e {
-        Error::Invalid { key, message, .. } => {
-            let source = overrides.iter().rev().find(|o| o.key() == key);
-            bad(source, &key, message)
-        }
-        Error::Parse { message, .. } => {
-            let first = message.lines().last().unwrap_or("").trim().to_string();
-            // The override that breaks the schema: the first whose prefix of the overrides no
-            // longer reads (only on this error path), else the last; named alone, by its source.
-            let k = (1..overrides.len())
-                .find(|&k| {
-                    matches!(
-                        parse_with(path, text, &overrides[..k]),
-                        Err(Error::Invalid { ref key, ref message, .. })
-                            if key == overrides[k - 1].key() && message.starts_with(SCHEMA)
-                    )
-                })
-                .unwrap_or(overrides.len());
-            let o = &overrides[k - 1];
-            bad(Some(o), o.key(), format!("{SCHEMA}: {first}"))
-        }
-        other => other,
     })
 }
 

@@ -355,3 +355,33 @@ fn spacing_and_first_are_checked() {
         "bad.toml:13: `observe.first` must be > 0, got 0",
     );
 }
+
+/// The merged text (what the browser page offers for download) is the scene the overrides
+/// make: read alone it validates to the same scene, and without overrides it is the file's own
+/// text; an override the rules refuse is refused there too, with the same words.
+#[test]
+fn the_merged_text_is_the_overridden_scene() {
+    use gdsmc_scene::{Override, merged_text, parse_with};
+    let sets = [
+        Override::set("particles.n=128"),
+        Override::set("collisions.restitution=0.7"),
+        Override::flag("seed", "run.seed", 9),
+    ];
+    let path = Path::new("good.toml");
+    let merged = merged_text(path, GOOD, &sets).unwrap();
+    let direct = parse_with(path, GOOD, &sets).unwrap();
+    let alone = parse(Path::new("merged.toml"), &merged).unwrap();
+    assert_eq!(alone.n(), 128);
+    assert_eq!(alone.seed(), 9);
+    assert_eq!(
+        format!("{:?}", alone.physics()),
+        format!("{:?}", direct.physics())
+    );
+    assert_eq!(alone.times(), direct.times());
+    assert_eq!(merged_text(path, GOOD, &[]).unwrap(), GOOD);
+    let bad = [Override::set("particles.n=1")];
+    assert_eq!(
+        merged_text(path, GOOD, &bad).unwrap_err().to_string(),
+        parse_with(path, GOOD, &bad).unwrap_err().to_string()
+    );
+}

@@ -3,14 +3,14 @@
 //! a run's timing reads zero, and the page times its runs on its own side.
 
 /// Whether this build has clocks (every target but WebAssembly without an operating system).
-pub const HAS_CLOCKS: bool = !cfg!(all(target_family = "wasm", target_os = "unknown"));
+pub const HAS_CLOCKS: bool = !cfg!(target_family = "wasm");
 
 /// The wall and CPU time since it was started, where the platform has them.
 #[derive(Clone, Copy, Debug)]
 pub struct Stopwatch {
-    #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+    #[cfg(not(target_family = "wasm"))]
     wall: std::time::Instant,
-    #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+    #[cfg(not(target_family = "wasm"))]
     cpu: Option<cpu_time::ProcessTime>,
 }
 
@@ -19,9 +19,9 @@ impl Stopwatch {
     #[must_use]
     pub fn start() -> Self {
         Stopwatch {
-            #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+            #[cfg(not(target_family = "wasm"))]
             wall: std::time::Instant::now(),
-            #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+            #[cfg(not(target_family = "wasm"))]
             cpu: cpu_time::ProcessTime::try_now().ok(),
         }
     }
@@ -29,18 +29,18 @@ impl Stopwatch {
     /// Seconds of wall time since the start (0 without a clock).
     #[must_use]
     pub fn wall(&self) -> f64 {
-        #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+        #[cfg(not(target_family = "wasm"))]
         return self.wall.elapsed().as_secs_f64();
-        #[cfg(all(target_family = "wasm", target_os = "unknown"))]
+        #[cfg(target_family = "wasm")]
         0.0
     }
 
     /// Seconds of the process's CPU time since the start (0 without a clock).
     #[must_use]
     pub fn cpu(&self) -> f64 {
-        #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+        #[cfg(not(target_family = "wasm"))]
         return self.cpu.map_or(0.0, |c| c.elapsed().as_secs_f64());
-        #[cfg(all(target_family = "wasm", target_os = "unknown"))]
+        #[cfg(target_family = "wasm")]
         0.0
     }
 }

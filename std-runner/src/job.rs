@@ -215,12 +215,7 @@ impl Job {
             let name = run::state::snapshot_name(j);
             let _ = writeln!(text, "velocity snapshot at t = {}: {name}", sc.times()[ti]);
         }
-        let _ = writeln!(
-            text,
-            "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)",
-            work.total(),
-            stats.counts.candidates as f64 + stats.counts.kicks(sc.n()) as f64
-        );
+        text.push_str(&work_line(work.total(), sc, &stats));
         if complete {
             // The outputs hold everything now; the journal is no longer needed.
             let _ = std::fs::remove_file(&file);
@@ -428,4 +423,14 @@ pub fn commit(
     format: Formats,
 ) -> Result<Vec<String>, Error> {
     report::commit_run(set, scene, stats, &for_scene(scene), format)
+}
+
+/// The summary's last line: the work estimated before the run (`estimated`, events and
+/// particle updates) beside the work done.
+pub fn work_line(estimated: f64, scene: &Scene, stats: &RunStats) -> String {
+    format!(
+        "work estimated before the run: {:.1e} events and particle updates ({:.1e} done)\n",
+        estimated,
+        stats.counts.candidates as f64 + stats.counts.kicks(scene.n()) as f64
+    )
 }

@@ -17,7 +17,7 @@
 
 pub mod analysis;
 // The bench times loops by the thread's CPU clock, which a browser does not have.
-#[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+#[cfg(not(target_family = "wasm"))]
 pub mod bench;
 pub mod clock;
 pub mod error;

@@ -131,11 +131,22 @@ pub fn write_all(
     for (name, bytes) in tables(scene, stats, refs)? {
         write_atomic(&dir.join(name), &bytes)?;
     }
+    charts::write(dir, &all_charts(scene, stats, refs), formats)?;
+    Ok(())
+}
+
+/// Every chart of a run, by stem, as SVG (or why it is not drawn): those [`write_all`] writes,
+/// and the browser page shows.
+pub fn all_charts(
+    scene: &Scene,
+    stats: &RunStats,
+    refs: &[ReferenceCurve],
+) -> Vec<(String, Result<charts::Chart, String>)> {
     let reduced = crate::analysis::distribution::reduced(scene, stats);
     let marginal = crate::analysis::distribution::marginal(stats);
     let power = crate::analysis::power_tail::measure(scene, stats);
     let title = charts::title(scene, stats.ensembles);
-    let all = charts::all(
+    charts::all(
         &title,
         stats,
         (scene.time_axis(), scene.species_names()),
@@ -143,9 +154,7 @@ pub fn write_all(
         reduced.as_ref(),
         marginal.as_ref(),
         power.as_ref(),
-    );
-    charts::write(dir, &all, formats)?;
-    Ok(())
+    )
 }
 
 /// Writes a run's whole output set into the prepared `set` ([`write_all`]) and commits it with

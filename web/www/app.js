@@ -1,0 +1,206 @@
+// The page: picks a scene, gathers the keys the user set (as `gdsmc run --set` would take
+// them), runs it in the worker (worker.js), draws the command's own charts as the ensembles
+// come in, and shows the command's summary with its verdicts and the files to download.
+"use strict";
+
+const $ = (id) => document.getElementById(id);
+const worker = new Worker("worker.js");
+let scenes = [];
+let kinds = null;
+let listeners = []; // test mode: who waits for the next "done" or "error"
+
+// --- the scene and the keys -----------------------------------------------------------
+
+function selectedScene() {
+  return scenes.find((s) => s.name === $("scene").value);
+}
+
+function showScene() {
+  const s = selectedScene();
+  $("toml").value = s.text;
+  const d = s.text.match(/^description\s*=\s*"(.*)"\s*$/m);
+  $("description").textContent = d ? d[1] : "";
+}
+
+// Inputs for the declared parameters of the chosen kernel or drive (their rule and words
+// from the core's declarations, as the scene's validation has them).
+function showParams(select, table, prefix, target) {
+  target.textContent = "";
+  const kind = (kinds ? kinds[table] : []).find((k) => k.name === select.value);
+  if (!kind) return;
+  select.title = kind.doc;
+  for (const p of kind.params || []) {
+    const label = document.createElement("label");
+    label.title = `${p.words} (${p.rule}${p.unit ? ", " + p.unit : ""})`;
+    label.innerHTML = `${p.name} <code>${prefix}.${p.name}</code>`;
+    const input = document.createElement("input");
+    input.dataset.key = `${prefix}.${p.name}`;
+    input.placeholder = p.default === null ? `e.g. ${p.example}` : `${p.default}`;
+    label.append(input);
+    target.append(label);
+  }
+}
+
+// The overrides in the order the form shows them, then the free lines: what the command's
+// `--set` would get, one a line.
+function overrides() {
+  const sets = [];
+  for (const el of $("keys").querySelectorAll("[data-key]")) {
+    const v = el.value.trim();
+    if (v === "") continue;
+    const quoted = el.tagName === "SELECT" ? JSON.stringify(v) : v;
+    sets.push(`${el.dataset.key}=${quoted}`);
+  }
+  if ($("distribution").checked && !/^\s*\[reduced_histogram\]/m.test($("toml").value)) {
+    sets.push("reduced_histogram.shells=40", "reduced_histogram.radius=4");
+  }
+  for (const line of $("sets").value.split("\n")) if (line.trim()) sets.push(line.trim());
+  return sets;
+}
+
+// --- running --------------------------------------------------------------------------
+
+function start() {
+  const s = selectedScene();
+  $("error").hidden = true;
+  $("result").hidden = true;
+  $("run").disabled = true;
+  $("stop").disabled = false;
+  $("progress").value = 0;
+  $("status").textContent = "starting";
+  for (const i of [0, 1, 2]) $(`chart-${i}`).textContent = "";
+  worker.postMessage({ type: "run", name: s.path, text: $("toml").value, sets: overrides().join("\n") });
+}
+
+// The charts shown live: the temperature, a2 and the distribution when there is one.
+function liveStems(charts) {
+  const want = ["T", "a2", "reduced", "T_bulk", "v4"];
+  const stems = want.filter((s) => s in charts);
+  for (const s of Object.keys(charts)) if (stems.length < 3 && !stems.includes(s)) stems.push(s);
+  return stems.slice(0, 3);
+}
+
+function drawLive(charts) {
+  liveStems(charts).forEach((stem, i) => { $(`chart-${i}`).innerHTML = charts[stem]; });
+}
+
+function download(name, text, type) {
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(new Blob([text], { type }));
+  a.download = name;
+  a.textContent = name;
+  return a;
+}
+
+function finished(m) {
+  $("run").disabled = false;
+  $("stop").disabled = true;
+  $("result").hidden = false;
+  $("progress").value = m.done / m.info.ensembles;
+  $("status").textContent = m.stopped
+    ? `stopped: ${m.done} of ${m.info.ensembles} ensembles (the statistics are those of a run of ${m.done})`
+    : `${m.done} ensembles`;
+  $("summary").textContent = m.summary;
+  const rate = m.collisions / Math.max(m.engine_seconds, 1e-9);
+  $("speed").textContent = `${m.collisions.toLocaleString("en")} collisions in ` +
+    `${m.engine_seconds.toFixed(2)} s of the worker's time: ${rate.toExponential(3)} collisions/s ` +
+    `(one thread, WebAssembly).`;
+  const links = $("downloads");
+  links.textContent = "";
+  links.append(download(`${m.info.scene}.toml`, m.info.toml, "application/toml"));
+  links.append(download("summary.txt", m.summary, "text/plain"));
+  for (const [name, text] of Object.entries(m.files)) {
+    links.append(download(name, text, name.endsWith(".json") ? "application/json" : "text/csv"));
+  }
+  $("reproduce").innerHTML = `<code>gdsmc run ${m.info.scene}.toml</code> with the scene file above ` +
+    `reproduces these numbers to the last bit (streams v${m.info.stream_version}).`;
+}
+
+worker.onmessage = (e) => {
+  const m = e.data;
+  if (m.type === "kinds") {
+    kinds = m.kinds;
+    $("version").textContent = `${kinds.version} (streams v${kinds.stream_version})`;
+    for (const [sel, table] of [["kernel", "kernels"], ["drive", "drives"]]) {
+      for (const k of kinds[table]) {
+        const o = document.createElement("option");
+        o.value = k.name;
+        o.textContent = k.name;
+        o.title = k.doc;
+        $(sel).append(o);
+      }
+    }
+  } else if (m.type === "prepared") {
+    $("status").textContent = `0 of ${m.info.ensembles} ensembles of n = ${m.info.n}`;
+  } else if (m.type === "progress") {
+    $("progress").value = m.done / m.ensembles;
+    $("status").textContent = `${m.done} of ${m.ensembles} ensembles`;
+    if (m.charts) drawLive(m.charts);
+  } else if (m.type === "done") {
+    drawLive(m.charts);
+    finished(m);
+    $("more").innerHTML = Object.values(m.charts).join("");
+  } else if (m.type === "error") {
+    $("run").disabled = false;
+    $("stop").disabled = true;
+    $("status").textContent = "";
+    $("error").hidden = false;
+    $("error").textContent = m.message;
+  }
+  if (m.type === "done" || m.type === "error") {
+    const waiting = listeners;
+    listeners = [];
+    for (const l of waiting) l(m);
+  }
+};
+
+$("scene").onchange = showScene;
+$("kernel").onchange = () => showParams($("kernel"), "kernels", "collisions", $("kernel-params"));
+$("drive").onchange = () => showParams($("drive"), "drives", "drive", $("drive-params"));
+$("run").onclick = start;
+$("stop").onclick = () => worker.postMessage({ type: "stop" });
+
+// --- test mode (web/test/browser.py): #test runs the cases of cases.json through the form
+// and posts what the page showed to /report -----------------------------------------------
+
+async function runTests() {
+  const cases = await (await fetch("cases.json")).json();
+  const results = [];
+  for (const c of cases) {
+    $("scene").value = c.scene;
+    showScene();
+    for (const el of $("keys").querySelectorAll("[data-key]")) el.value = "";
+    for (const [id, v] of Object.entries(c.fields || {})) $(id).value = v;
+    $("distribution").checked = c.distribution !== false;
+    $("sets").value = (c.sets || []).join("\n");
+    const done = new Promise((resolve) => listeners.push(resolve));
+    $("run").click();
+    const m = await done;
+    results.push({
+      name: c.name,
+      sets: overrides(),
+      error: m.type === "error" ? $("error").textContent : null,
+      summary: m.type === "done" ? $("summary").textContent : null,
+      files: m.files || null,
+      toml: m.info ? m.info.toml : null,
+      collisions: m.collisions || 0,
+      engine_seconds: m.engine_seconds || 0,
+      charts_live: [0, 1, 2].map((i) => $(`chart-${i}`).innerHTML.startsWith("<svg")),
+    });
+  }
+  await fetch("report", { method: "POST", body: JSON.stringify(results) });
+}
+
+(async () => {
+  scenes = await (await fetch("scenes.json")).json();
+  for (const s of scenes) {
+    const o = document.createElement("option");
+    o.value = s.name;
+    o.textContent = s.name;
+    $("scene").append(o);
+  }
+  $("scene").value = scenes.some((s) => s.name === "grw-example3") ? "grw-example3" : scenes[0].name;
+  showScene();
+  worker.postMessage({ type: "kinds" });
+  if (location.hash === "#test") runTests();
+})();
