@@ -116,13 +116,13 @@ impl Vary {
                         "a logarithmic range needs start > 0 and stop > 0".into(),
                     ));
                 }
-                let (la, lb) = (a.ln(), b.ln());
+                let (la, lb) = (libm::log(a), libm::log(b));
                 finite(
                     spec,
                     (0..k).map(|i| match i {
                         0 => a,
                         _ if i == k - 1 => b,
-                        _ => (la + (lb - la) * i as f64 / (k - 1) as f64).exp(),
+                        _ => libm::exp(la + (lb - la) * i as f64 / (k - 1) as f64),
                     }),
                 )?
             }

@@ -65,7 +65,7 @@ impl Sample {
     /// the number of standard errors of the difference between them. NaN when a spread is.
     #[must_use]
     pub fn z_from(&self, other: &Sample) -> f64 {
-        (self.mean - other.mean) / self.se().hypot(other.se())
+        (self.mean - other.mean) / libm::hypot(self.se(), other.se())
     }
 }
 

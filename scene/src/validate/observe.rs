@@ -185,12 +185,12 @@ pub fn log_times(t0: f64, span: f64, first: f64, k: usize) -> Vec<f64> {
         out.push(t0 + span);
         return out;
     }
-    let ratio = (span / first).ln();
+    let ratio = libm::log(span / first);
     out.extend((0..k).map(|i| {
         if i + 1 == k {
             t0 + span
         } else {
-            t0 + first * (ratio * i as f64 / (k - 1) as f64).exp()
+            t0 + first * libm::exp(ratio * i as f64 / (k - 1) as f64)
         }
     }));
     out

@@ -135,7 +135,7 @@ pub fn reduced(scene: &Scene, stats: &RunStats) -> Option<Reduced> {
             let mid = if bounded { 0.5 * (c_lo + c_hi) } else { c_lo };
             let (g, g_maxwell) = match tail {
                 Some(t) if bounded => {
-                    let e = (t.amplitude * mid.powf(t.power)).exp();
+                    let e = libm::exp(t.amplitude * libm::pow(mid, t.power));
                     (e * density, e * phi)
                 }
                 _ => (f64::NAN, f64::NAN),

@@ -164,7 +164,7 @@ pub fn slopes(tail: &Covariance, c_max: f64) -> Vec<Slope> {
                 from: c_max * i as f64 / k as f64,
                 to: c_max * (2 * i) as f64 / k as f64,
                 beyond: (far, far_ci),
-                value: (near / far).ln() / ln2,
+                value: libm::log(near / far) / ln2,
                 ci: tail.ci_of(&[(i, 1.0 / (near * ln2)), (2 * i, -1.0 / (far * ln2))]),
                 resolved: far_ci <= RESOLVED * far,
             })
@@ -198,7 +198,7 @@ mod tests {
         for _ in 0..ensembles {
             let mut shells = vec![0.0; k + 1];
             for _ in 0..count {
-                let c = uniform().powf(-1.0 / s);
+                let c = libm::pow(uniform(), -1.0 / s);
                 let i = ((c / c_max * k as f64) as usize).min(k);
                 shells[i] += 1.0 / count as f64;
             }

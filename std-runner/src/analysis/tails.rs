@@ -58,7 +58,13 @@ pub fn tail_points(radius: f64, hist: &Accumulator, d: usize) -> Vec<(usize, f64
         .filter_map(|k| {
             let (f, ci) = (hist.mean(k - 1) / vol(k), hist.ci(k - 1) / vol(k));
             let resolved = f > 0.0 && f < f1 && (ci.is_nan() || ci < 0.5 * f);
-            resolved.then(|| (k, ((k - 1) as f64 * h).ln(), (f1.ln() - f.ln()).ln()))
+            resolved.then(|| {
+                (
+                    k,
+                    libm::log((k - 1) as f64 * h),
+                    libm::log(libm::log(f1) - libm::log(f)),
+                )
+            })
         })
         .collect()
 }

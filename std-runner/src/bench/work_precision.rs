@@ -184,8 +184,10 @@ pub fn cost_at(points: &[Point], scheme: &str, target: f64) -> Option<f64> {
         return Some(v[0].cpu);
     }
     let (a, b) = (v[i - 1], v[i]);
-    let f = (target.ln() - a.error.ln()) / (b.error.ln() - a.error.ln());
-    Some((a.cpu.ln() + f * (b.cpu.ln() - a.cpu.ln())).exp())
+    let f = (libm::log(target) - libm::log(a.error)) / (libm::log(b.error) - libm::log(a.error));
+    Some(libm::exp(
+        libm::log(a.cpu) + f * (libm::log(b.cpu) - libm::log(a.cpu)),
+    ))
 }
 
 /// The CSV of the points.
@@ -235,7 +237,7 @@ pub fn chart(title: &str, points: &[Point]) -> Result<String, String> {
         let pts = |v: &[Point]| -> Vec<(f64, f64, f64)> {
             v.iter()
                 .filter(|p| p.cpu > 0.0)
-                .map(|p| (p.cpu.log10(), p.error, 0.0))
+                .map(|p| (libm::log10(p.cpu), p.error, 0.0))
                 .collect()
         };
         let all: Vec<Point> = points
@@ -277,7 +279,7 @@ pub fn reachable_target(points: &[Point]) -> Option<f64> {
     for scheme in SCHEMES {
         worst = worst.max(best_error(points, scheme)?);
     }
-    let unit = 10f64.powf(worst.log10().floor() - 1.0);
+    let unit = libm::pow(10f64, libm::log10(worst).floor() - 1.0);
     Some((worst / unit).ceil() * unit)
 }
 

@@ -33,7 +33,7 @@ pub struct HostMediumMaxwell {
 impl HostMediumMaxwell {
     /// The bulk velocity BRS (14): `u^B + (u_0 - u^B) exp(-4 pi alpha s t)`.
     pub fn bulk(&self, t: f64) -> [f64; 3] {
-        let f = (-4.0 * std::f64::consts::PI * self.alpha * self.s * t).exp();
+        let f = libm::exp(-4.0 * std::f64::consts::PI * self.alpha * self.s * t);
         std::array::from_fn(|k| self.ub[k] + (self.u0[k] - self.ub[k]) * f)
     }
 
@@ -57,11 +57,13 @@ impl HostMediumMaxwell {
         let (a, b, c, d) = self.coefficients();
         let x = self.s * t;
         let temperature = if (b - c).abs() < 1e-12 * b.abs().max(c.abs()) {
-            self.t0 * (-b * x).exp() + d / b * (1.0 - (-b * x).exp()) + a * x * (-b * x).exp()
+            self.t0 * libm::exp(-b * x)
+                + d / b * (1.0 - libm::exp(-b * x))
+                + a * x * libm::exp(-b * x)
         } else {
-            self.t0 * (-c * x).exp()
-                + d / c * (1.0 - (-c * x).exp())
-                + a / (c - b) * ((-b * x).exp() - (-c * x).exp())
+            self.t0 * libm::exp(-c * x)
+                + d / c * (1.0 - libm::exp(-c * x))
+                + a / (c - b) * (libm::exp(-b * x) - libm::exp(-c * x))
         };
         mutated(Reference::HostMediumTemperature, temperature)
     }
@@ -122,7 +124,7 @@ impl HostMediumMaxwell {
         let half_trace = 0.5 * (m[0][0] + m[1][1]);
         let root = (half_trace * half_trace - det).max(0.0).sqrt();
         let (l1, l2) = (half_trace + root, half_trace - root);
-        let (e1, e2) = ((l1 * t).exp(), (l2 * t).exp());
+        let (e1, e2) = (libm::exp(l1 * t), libm::exp(l2 * t));
         let apply = |row: usize| -> f64 {
             let mut out = 0.0;
             for (col, dv) in dev.iter().enumerate() {
@@ -254,7 +256,7 @@ pub mod tail {
 
     /// `phi(c) = pi^{-3/2} exp(-c^2)`, the reduced Maxwellian of MS.
     pub fn phi(c: f64) -> f64 {
-        (-c * c).exp() / PI.powf(1.5)
+        libm::exp(-c * c) / libm::pow(PI, 1.5)
     }
 
     /// The volume of the spherical shell `a <= |v| < b`, `(4/3) pi (b^3 - a^3)`.
@@ -276,7 +278,7 @@ pub mod tail {
     /// [`phi_shell`] for 3, `exp(-a^2) - exp(-b^2)` for 2 (density `exp(-c^2)/pi`).
     pub fn phi_shell_in(d: usize, a: f64, b: f64) -> f64 {
         if d == 2 {
-            (-a * a).exp() - (-b * b).exp()
+            libm::exp(-a * a) - libm::exp(-b * b)
         } else {
             phi_shell(a, b)
         }
@@ -289,7 +291,7 @@ pub mod tail {
             if c.is_infinite() {
                 1.0
             } else {
-                libm::erf(c) - 2.0 * c * (-c * c).exp() / PI.sqrt()
+                libm::erf(c) - 2.0 * c * libm::exp(-c * c) / PI.sqrt()
             }
         };
         f(b) - f(a)

@@ -56,7 +56,7 @@ impl HydroModel {
                     * ((a + a * t / (3.0 * d)) * w2 * w2 / 5.0
                         + 4.0 * d / a * (a - a * t / (3.0 * d)) * w2
                         + 8.0 * (d / a) * (d / a) * (a - a * t / d))
-                    - 64.0 / 3.0 * pi.sqrt() * inel * t.powf(1.5);
+                    - 64.0 / 3.0 * pi.sqrt() * inel * libm::pow(t, 1.5);
                 (f, dt)
             }
             Closure::Grad => {
@@ -68,7 +68,7 @@ impl HydroModel {
                         * pi.sqrt()
                         * inel
                         * (x * x / 3.0 + 8.0 * (3.0 * t - self.tb) / self.tb)
-                        * self.tb.powf(1.5);
+                        * libm::pow(self.tb, 1.5);
                 (f, dt)
             }
         };

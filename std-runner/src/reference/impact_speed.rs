@@ -52,7 +52,7 @@ impl Impacts {
             Impacts::Spheres => x,
             Impacts::HardDisks => 1.0 - x * x,
             Impacts::IsotropicDisks => {
-                let h = (0.5 * std::f64::consts::PI * x).sin();
+                let h = libm::sin(0.5 * std::f64::consts::PI * x);
                 h * h
             }
         }
@@ -117,7 +117,7 @@ impl InitialCooling {
             if self.beta0 == 0.0 {
                 1.0
             } else {
-                (1.0 - 2.0 * self.beta0 * speed.powf(self.delta)).clamp(0.0, 1.0)
+                (1.0 - 2.0 * self.beta0 * libm::pow(speed, self.delta)).clamp(0.0, 1.0)
             }
         };
         // The mean energy change at relative speed r over the law of s.
@@ -132,12 +132,12 @@ impl InitialCooling {
         };
         // The density of rho = |g| / sqrt(2 T0): chi with d degrees of freedom.
         let density = |rho: f64| match self.d {
-            2 => rho * (-0.5 * rho * rho).exp(),
-            _ => (2.0 / std::f64::consts::PI).sqrt() * rho * rho * (-0.5 * rho * rho).exp(),
+            2 => rho * libm::exp(-0.5 * rho * rho),
+            _ => (2.0 / std::f64::consts::PI).sqrt() * rho * rho * libm::exp(-0.5 * rho * rho),
         };
         let mean = simpson(nr, 0.0, 14.0, |rho| {
             let r = scale * rho;
-            density(rho) * r.powf(self.lambda) * over_x(r)
+            density(rho) * libm::pow(r, self.lambda) * over_x(r)
         });
         let (n, d) = (self.n as f64, self.d as f64);
         self.k * (n - 1.0) / (d * n) * mean
@@ -178,7 +178,7 @@ mod tests {
     #[test]
     fn a_constant_coefficient_has_its_closed_form() {
         let g3 = |d: usize| {
-            let c = 2f64.powf(1.5);
+            let c = libm::pow(2f64, 1.5);
             if d == 3 {
                 8.0 * (2.0 / std::f64::consts::PI).sqrt() * c
             } else {

@@ -99,13 +99,13 @@ pub fn asymptotic_rate(d: usize, alpha: f64, p: f64) -> f64 {
         let x = (i as f64 + 0.5) / CELLS as f64;
         // e uniform: the cosine is uniform on a sphere, the angle on a circle.
         let cos = if d == 2 {
-            (std::f64::consts::PI * x).cos()
+            libm::cos(std::f64::consts::PI * x)
         } else {
             2.0 * x - 1.0
         };
         let r1 = a * a + b * b + 2.0 * a * b * cos;
         let r2 = (2.0 * b * b * (1.0 - cos)).max(0.0);
-        sum += r1.powf(p / 2.0) + r2.powf(p / 2.0);
+        sum += libm::pow(r1, p / 2.0) + libm::pow(r2, p / 2.0);
     }
     2.0 * (1.0 - sum / CELLS as f64)
 }
@@ -206,12 +206,12 @@ impl MaxwellCumulant {
         let r = if m == 0.0 {
             let sum: f64 = (self.mu4.iter())
                 .filter(|(c, _)| *c != 0.0)
-                .map(|(c, r)| c * (-(r - 2.0 * k) * t).exp())
+                .map(|(c, r)| c * libm::exp(-(r - 2.0 * k) * t))
                 .sum();
             sum / (delta * delta)
         } else {
-            let mu2 = m + delta * (-k * t).exp();
-            let sum: f64 = (self.mu4.iter()).map(|(c, r)| c * (-r * t).exp()).sum();
+            let mu2 = m + delta * libm::exp(-k * t);
+            let sum: f64 = (self.mu4.iter()).map(|(c, r)| c * libm::exp(-r * t)).sum();
             sum / (mu2 * mu2)
         };
         self.d * r / (self.d + 2.0) - 1.0

@@ -62,7 +62,7 @@ impl MaxwellTemperature {
         let x = if r == 0.0 {
             self.t0 + self.heating.a * t
         } else {
-            let e = (-r * t).exp();
+            let e = libm::exp(-r * t);
             self.t0 * e + self.heating.a / r * (1.0 - e)
         };
         mutated(Reference::MaxwellTemperature, x)
@@ -108,7 +108,7 @@ impl MaxwellTemperature {
         let u = if p == 0.0 {
             self.t0 + a * t
         } else {
-            let e = (p * t).exp_m1();
+            let e = libm::expm1(p * t);
             self.t0 + self.t0 * e + a / p * e
         };
         mutated(Reference::BulkToRaw, u / n as f64)
@@ -117,7 +117,7 @@ impl MaxwellTemperature {
     /// The factor `e^{p t}` by which the drive carries the square of an initial drift
     /// ([`Heating`]: 1 but for a drag on the whole velocity).
     pub fn drift_factor(&self, t: f64) -> f64 {
-        (self.heating.p * t).exp()
+        libm::exp(self.heating.p * t)
     }
 
     /// The exact ensemble mean of `T_bulk` of the splitting schemes (RW Algorithms 1 and 2)
@@ -142,16 +142,16 @@ impl MaxwellTemperature {
         let added = if hb == 0.0 {
             6.0 * (nf - 1.0) * (ha / 2.0) * dt
         } else {
-            3.0 * (nf - 1.0) * (ha / hb * (hb * dt).exp_m1())
+            3.0 * (nf - 1.0) * (ha / hb * libm::expm1(hb * dt))
         };
         let b = added
             * if strang {
-                (-0.5 * self.k * dt).exp()
+                libm::exp(-0.5 * self.k * dt)
             } else {
                 1.0
             };
-        let a = (-self.rate() * dt).exp();
-        let am = a.powf(m);
+        let a = libm::exp(-self.rate() * dt);
+        let am = libm::pow(a, m);
         let geometric = if self.rate() == 0.0 {
             m
         } else {

@@ -63,12 +63,12 @@ impl GaussianBalance {
     /// (none for the Maxwell kernel, or for `zeta <= 0`).
     pub fn steady_temperature(&self) -> Option<f64> {
         (self.lambda > 0.0 && self.zeta > 0.0)
-            .then(|| (2.0 * self.zeta / self.kappa).powf(2.0 / self.lambda))
+            .then(|| libm::pow(2.0 * self.zeta / self.kappa, 2.0 / self.lambda))
     }
 
     /// The `zeta` that holds the initial temperature: `kappa T0^(lambda/2) / 2`.
     pub fn holding_zeta(&self) -> f64 {
-        0.5 * self.kappa * self.t0.powf(0.5 * self.lambda)
+        0.5 * self.kappa * libm::pow(self.t0, 0.5 * self.lambda)
     }
 
     /// One sentence for the summary: what the thermostat does to `T` and which `zeta` holds it.
@@ -131,7 +131,7 @@ mod tests {
         assert!((b.kappa - kappa).abs() < 1e-12 * kappa);
         let ts = b.steady_temperature().expect("hard spheres balance");
         // At T*, heating equals cooling.
-        assert!((2.0 * 0.25 * ts - kappa * ts.powf(1.5)).abs() < 1e-12 * ts);
+        assert!((2.0 * 0.25 * ts - kappa * libm::pow(ts, 1.5)).abs() < 1e-12 * ts);
         // The holding zeta gives T* = T0.
         let mut hold = b;
         hold.zeta = b.holding_zeta();

@@ -136,7 +136,7 @@ pub const COLUMNS: &[Column] = &[
     Column {
         name: name::C3,
         doc: "<c^3> with c = |v - V| / v0 (MS (4); enters MS (44))",
-        get: |o| o.c3 / (2.0 * o.t_bulk).powf(1.5),
+        get: |o| o.c3 / libm::pow(2.0 * o.t_bulk, 1.5),
     },
     Column {
         name: name::LOG10_T_BULK,

@@ -129,7 +129,7 @@ impl CoolingRates {
                         };
                         let u = p.velocity(i) - p.velocity(j);
                         let u2 = u.norm2();
-                        let rate = pair.strength * u2.sqrt().powf(self.lambda);
+                        let rate = pair.strength * libm::pow(u2.sqrt(), self.lambda);
                         g += rate
                             * (-2.0 * mu * pair.a * (p.velocity(i) - u_flow).dot(u)
                                 + 2.0 * mu * mu * pair.a * pair.a * u2);

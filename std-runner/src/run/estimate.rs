@@ -144,7 +144,10 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
                 2.0 * heating / (gc * PI * dissipation)
             } else {
                 // 3 beta = (1 - alpha^2)/4 nu T, nu = 4 pi gamma C <|u|>, <|u|> = 4 sqrt(T/pi).
-                (3.0 * heating / (dissipation * 4.0 * PI.sqrt() * gc)).powf(2.0 / 3.0)
+                libm::pow(
+                    3.0 * heating / (dissipation * 4.0 * PI.sqrt() * gc),
+                    2.0 / 3.0,
+                )
             };
             // No dissipation at all: the energy bound (every unit of noise kept).
             let bound = t0 + t_rot0 + 2.0 * heating * t_end;
@@ -171,7 +174,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) thermal speeds. The rates are the core's
     // (its majorant and background bounds), from the validated physics.
     let model = scene.model();
-    let umax = 2.0 * (temperature * (2.0 * n.ln() + 3.0)).sqrt();
+    let umax = 2.0 * (temperature * (2.0 * libm::log(n) + 3.0)).sqrt();
     let rate = model.majorant_rate(p.n, umax);
     // A gas with no drive cools (Haff's law for hard spheres): with the cooling rate
     // zeta0 = (1 - alpha^2)/4 nu0 and the rate going as T^(lambda/2), T = T0 (1 + s zeta0
@@ -180,7 +183,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     // heating 2 zeta T against the cooling).
     let effective_time = match p.drive {
         DriveChoice::None if !heated && s * zeta0 * t_end > 1e-6 => {
-            (s * zeta0 * t_end).ln_1p() / (s * zeta0)
+            libm::log1p(s * zeta0 * t_end) / (s * zeta0)
         }
         DriveChoice::Declared(_) => work.map_or(t_end, |(_, time)| time),
         DriveChoice::None | DriveChoice::WhiteNoise(_) | DriveChoice::HostMedium { .. } => t_end,
@@ -233,7 +236,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
 /// nu_0` of the temperature at `t0` (`nu_0 = 4 pi gamma C <|u|>^lambda`, `<|u|> = 4
 /// sqrt(T/pi)`), so that `dT/dt = -zeta_0 (T/T0)^s T`.
 fn haff(t0: f64, gc: f64, lambda: f64, alpha: f64) -> (f64, f64) {
-    let nu0 = 4.0 * PI * gc * (4.0 * (t0 / PI).sqrt()).powf(lambda);
+    let nu0 = 4.0 * PI * gc * libm::pow(4.0 * (t0 / PI).sqrt(), lambda);
     (0.5 * lambda, 0.25 * (1.0 - alpha * alpha) * nu0)
 }
 

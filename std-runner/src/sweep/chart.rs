@@ -37,7 +37,7 @@ fn grid(lo: f64, hi: f64, log: bool) -> Vec<f64> {
         .map(|i| {
             let f = i as f64 / (FINE - 1) as f64;
             if log {
-                (lo.ln() + (hi.ln() - lo.ln()) * f).exp()
+                libm::exp(libm::log(lo) + (libm::log(hi) - libm::log(lo)) * f)
             } else {
                 lo + (hi - lo) * f
             }
@@ -104,7 +104,7 @@ fn dodge(x: f64, gi: usize, groups: usize, (lo, hi): (f64, f64), log: bool) -> f
     if groups < 2 {
         x
     } else if log {
-        x * (hi / lo).powf(0.006 * k)
+        x * libm::pow(hi / lo, 0.006 * k)
     } else {
         x + 0.006 * k * (hi - lo)
     }

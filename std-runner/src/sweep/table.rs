@@ -158,7 +158,7 @@ pub fn json(
 /// Decimals that show a half-width `ci` to two significant digits.
 fn decimals(ci: f64) -> usize {
     if ci.is_finite() && ci > 0.0 {
-        (1 - ci.log10().floor() as i64).clamp(0, 12) as usize
+        (1 - libm::log10(ci).floor() as i64).clamp(0, 12) as usize
     } else {
         6
     }
@@ -179,7 +179,7 @@ impl Digits {
         if !small && mean.abs() < 1e6 {
             return Digits::Fixed(decimals(ci));
         }
-        let exp = |x: f64| x.abs().log10().floor() as i64;
+        let exp = |x: f64| libm::log10(x.abs()).floor() as i64;
         let k = if ci.is_finite() && ci > 0.0 && mean != 0.0 {
             (exp(mean) - exp(ci) + 1).clamp(1, 12) as usize
         } else {

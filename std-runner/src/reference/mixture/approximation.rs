@@ -45,7 +45,7 @@ impl MaxwellianApproximation {
         let ns = self.masses.len();
         // M_k = 2^{k/2} Gamma((3 + k)/2) / Gamma(3/2).
         let k = 2.0 + self.lambda;
-        let moment = 2f64.powf(k / 2.0) * libm::tgamma((3.0 + k) / 2.0) / libm::tgamma(1.5);
+        let moment = libm::pow(2f64, k / 2.0) * libm::tgamma((3.0 + k) / 2.0) / libm::tgamma(1.5);
         (0..ns)
             .map(|s| {
                 let mut d = 0.0;
@@ -57,7 +57,7 @@ impl MaxwellianApproximation {
                     d += self.fractions[t]
                         * self.kappa[p]
                         * moment
-                        * sigma2.powf(self.lambda / 2.0)
+                        * libm::pow(sigma2, self.lambda / 2.0)
                         * (-2.0 * mu * a * theta[s] + 2.0 * mu * mu * a * a * sigma2);
                 }
                 d / 3.0 + 2.0 * self.beta[s]

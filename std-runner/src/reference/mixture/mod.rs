@@ -254,7 +254,7 @@ fn expm(m: &[Vec<f64>], t: f64) -> Vec<Vec<f64>> {
         .fold(0.0, f64::max)
         * t.abs();
     let squarings = if norm > 0.5 {
-        (norm / 0.5).log2().ceil() as u32
+        libm::log2(norm / 0.5).ceil() as u32
     } else {
         0
     };

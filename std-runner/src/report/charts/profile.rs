@@ -125,7 +125,7 @@ pub fn profile_with_residuals(
     if has_points {
         // Points at the ends of the range keep their error bars off the axes.
         if log_x {
-            let f = (x1 / x0).powf(0.02);
+            let f = libm::pow(x1 / x0, 0.02);
             // Unpadded when padding would leave the range of f64 (a range of ~300 decades).
             if log_axis(x0 / f, x1 * f) {
                 (x0, x1) = (x0 / f, x1 * f);

@@ -66,7 +66,7 @@ impl Scale {
         if !self.log {
             v
         } else if v > 0.0 {
-            v.log10()
+            libm::log10(v)
         } else {
             f64::NAN
         }
@@ -285,7 +285,7 @@ pub fn chart(
                     .collect()
             } else {
                 let n = 400;
-                let time = |c: f64| if xs.log { 10f64.powf(c) } else { c };
+                let time = |c: f64| if xs.log { libm::pow(10f64, c) } else { c };
                 (0..=n)
                     .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
                     .map(|c| (c, ys.at((r.curve)(time(c)))))

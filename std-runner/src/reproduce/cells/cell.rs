@@ -228,7 +228,7 @@ pub fn percent(r: f64) -> String {
     } else if p >= 1.0 {
         1
     } else {
-        (1.0 - p.log10().floor()).clamp(1.0, 6.0) as usize
+        (1.0 - libm::log10(p).floor()).clamp(1.0, 6.0) as usize
     };
     format!("{p:.decimals$}%")
 }
@@ -239,5 +239,5 @@ pub fn rounding(x: f64) -> f64 {
     if x == 0.0 || !x.is_finite() {
         return 0.0;
     }
-    0.5 * 10f64.powf(x.abs().log10().floor() - 2.0)
+    0.5 * libm::pow(10f64, libm::log10(x.abs()).floor() - 2.0)
 }

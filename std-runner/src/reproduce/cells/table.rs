@@ -170,7 +170,7 @@ impl Table {
             p_chi2: ChiSquared::new(k as f64).map_or(f64::NAN, |c| c.sf(chi2)),
             mean_z: z.iter().sum::<f64>() / k as f64,
             max_z,
-            p_max: -f64::exp_m1(k as f64 * f64::ln_1p(-one)),
+            p_max: -libm::expm1(k as f64 * libm::log1p(-one)),
             zeros: z.iter().filter(|x| **x == 0.0).count(),
         })
     }
