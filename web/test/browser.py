@@ -25,8 +25,9 @@ GDSMC = ROOT / "target" / "release" / "gdsmc"
 
 # GRW Example 3 at a small n (the heated Maxwell gas, exact T(t) and a2(t)), cooling hard
 # spheres (a second loop and the distribution's references), a rough disk mixture (rough
-# particles, species, d = 2), and bad input: a key's rule, a scene's schema, a kernel's
-# declared parameter.
+# particles, species, d = 2), a run stopped by the page's Stop (its statistics must be those
+# of a run of the ensembles it finished), and bad input: a key's rule, a scene's schema, a
+# kernel's declared parameter.
 CASES = [
     {"name": "grw-example3", "scene": "grw-example3",
      "fields": {"n": "256", "ensembles": "24"}},
@@ -34,10 +35,20 @@ CASES = [
      "fields": {"n": "200", "ensembles": "10", "seed": "7"}},
     {"name": "rough-disk-mixture", "scene": "rough-disk-mixture-white-noise",
      "fields": {"n": "96", "ensembles": "6"}, "distribution": False},
+    {"name": "stopped", "scene": "grw-example3", "fields": {"n": "1024", "ensembles": "500"},
+     "stop": 2},
     {"name": "bad n", "scene": "grw-example3", "fields": {"n": "1"}},
     {"name": "bad key", "scene": "grw-example3", "sets": ["collisions.alpha=0.5"]},
     {"name": "bad kernel parameter", "scene": "grw-example3",
      "fields": {"kernel": "vhs"}, "sets": ["collisions.lambda=2"]},
+]
+
+# The speed figures: runs long enough (seconds) for the browser's optimizing compiler.
+SPEED = [
+    {"name": "grw-example3 speed", "scene": "grw-example3",
+     "fields": {"n": "4096", "ensembles": "16"}, "distribution": False},
+    {"name": "hcs-hard-spheres speed", "scene": "hcs-hard-spheres",
+     "fields": {"n": "4096", "ensembles": "8"}, "distribution": False},
 ]
 
 
@@ -128,12 +139,15 @@ def main():
     ap.add_argument("--chromium", default=shutil.which("chromium") or "/usr/bin/chromium")
     ap.add_argument("--keep", help="keep the command's outputs here")
     ap.add_argument("--timeout", type=float, default=600)
+    ap.add_argument("--speed", action="store_true",
+                    help="longer runs for the speed figures (docs/web.md), compared as well")
     a = ap.parse_args()
+    cases = SPEED if a.speed else CASES
     for need in [DIST / "gdsmc_web.wasm", GDSMC]:
         if not need.exists():
             sys.exit(f"{need} is missing: run web/build.sh and cargo build --release first")
     reports = []
-    server = serve(DIST, CASES, reports)
+    server = serve(DIST, cases, reports)
     url = f"http://127.0.0.1:{server.server_address[1]}/index.html#test"
     page = browse(a.chromium, url, reports, a.timeout)
     server.shutdown()
@@ -143,9 +157,13 @@ def main():
     work = pathlib.Path(a.keep or tempfile.mkdtemp(prefix="gdsmc-browser-"))
     work.mkdir(parents=True, exist_ok=True)
     failures = []
-    for case, got in zip(CASES, page):
+    for case, got in zip(cases, page):
         name = case["name"]
         out = work / name.replace(" ", "-") / "run"
+        if case.get("stop"):
+            # The command's run of the ensembles the page finished.
+            got["sets"] = [x for x in got["sets"] if not x.startswith("run.ensembles=")]
+            got["sets"].append(f"run.ensembles={got['done']}")
         code, err, text = native(got, scenes[case["scene"]], out)
         if got["error"] is not None or code != 0:
             want = next((l for l in err.splitlines() if l.startswith("error:")), err.strip())
@@ -159,7 +177,12 @@ def main():
         same = []
         for file, body in got["files"].items():
             mine = (out / file).read_text()
-            if file == "summary.json":
+            if file == "summary.json" and case.get("stop"):
+                # The stopped run asked for more ensembles than it finished, the command's not.
+                drop = ["ensembles_requested", "interrupted"]
+                ok = ({k: v for k, v in without_timing(body).items() if k not in drop}
+                      == {k: v for k, v in without_timing(mine).items() if k not in drop})
+            elif file == "summary.json":
                 ok = without_timing(body) == without_timing(mine)
             else:
                 ok = body == mine
@@ -171,31 +194,36 @@ def main():
         missing = {p.name for p in out.glob("*.csv")} - set(got["files"])
         if missing:
             failures.append(f"{name}: the page lacks {sorted(missing)}")
-        if summary_lines(got["summary"]) != summary_lines(text):
+        if case.get("stop"):
+            asked = int(case["fields"]["ensembles"])
+            if not got["stopped"] or not 0 < got["done"] < asked or "stopped" not in got["status"]:
+                failures.append(f"{name}: Stop did not stop the run ({got['done']} of {asked}: {got['status']})")
+        elif summary_lines(got["summary"]) != summary_lines(text):
             (out.parent / "page-summary.txt").write_text(got["summary"])
             failures.append(f"{name}: the summary differs from the command's (page-summary.txt)")
         if not all(got["charts_live"][:2]):
             failures.append(f"{name}: the live charts were not drawn")
         # The command's merged scene file reproduces the page's run: parsed, it is the same.
-        merged = out.parent / "merged.toml"
-        merged.write_text(got["toml"])
-        again = out.parent / "from-toml"
-        code2, err2, _ = native({"sets": []}, str(merged), again)
-        if code2 != 0 or (again / "observables.csv").read_text() != (out / "observables.csv").read_text():
-            failures.append(f"{name}: the downloaded scene file does not reproduce the run: {err2}")
+        if not case.get("stop"):
+            merged = out.parent / "merged.toml"
+            merged.write_text(got["toml"])
+            again = out.parent / "from-toml"
+            code2, err2, _ = native({"sets": []}, str(merged), again)
+            if code2 != 0 or (again / "observables.csv").read_text() != (out / "observables.csv").read_text():
+                failures.append(f"{name}: the downloaded scene file does not reproduce the run: {err2}")
         theirs = json.loads((out / "summary.json").read_text())
         native_rate = theirs["counts"]["collisions"] / max(theirs["cpu_seconds"], 1e-9)
         page_rate = got["collisions"] / max(got["engine_seconds"], 1e-9)
         print(f"ok   {name}: {', '.join(same)} equal to the command's; the summary equal; "
               f"{got['collisions']} collisions, page {page_rate:.3e}/s, command {native_rate:.3e}/s (one thread each)")
-    if len(page) != len(CASES):
-        failures.append(f"the page reported {len(page)} of {len(CASES)} cases")
+    if len(page) != len(cases):
+        failures.append(f"the page reported {len(page)} of {len(cases)} cases")
     if failures:
         print("\n".join("FAIL " + f for f in failures))
         sys.exit(1)
     if not a.keep:
         shutil.rmtree(work)
-    print(f"browser: {len(CASES)} cases as the command has them")
+    print(f"browser: {len(cases)} cases as the command has them")
 
 
 if __name__ == "__main__":

@@ -8,6 +8,7 @@ const worker = new Worker("worker.js");
 let scenes = [];
 let kinds = null;
 let listeners = []; // test mode: who waits for the next "done" or "error"
+let onProgress = null; // test mode: sees each progress message
 
 // --- the scene and the keys -----------------------------------------------------------
 
@@ -136,6 +137,7 @@ worker.onmessage = (e) => {
     $("progress").value = m.done / m.ensembles;
     $("status").textContent = `${m.done} of ${m.ensembles} ensembles`;
     if (m.charts) drawLive(m.charts);
+    if (onProgress) onProgress(m);
   } else if (m.type === "done") {
     drawLive(m.charts);
     finished(m);
@@ -174,8 +176,11 @@ async function runTests() {
     $("distribution").checked = c.distribution !== false;
     $("sets").value = (c.sets || []).join("\n");
     const done = new Promise((resolve) => listeners.push(resolve));
+    // A case with `stop` presses Stop once that many ensembles are done.
+    onProgress = c.stop ? (p) => { if (p.done >= c.stop) { onProgress = null; $("stop").click(); } } : null;
     $("run").click();
     const m = await done;
+    onProgress = null;
     results.push({
       name: c.name,
       sets: overrides(),
@@ -183,6 +188,9 @@ async function runTests() {
       summary: m.type === "done" ? $("summary").textContent : null,
       files: m.files || null,
       toml: m.info ? m.info.toml : null,
+      done: m.done || 0,
+      stopped: Boolean(m.stopped),
+      status: $("status").textContent,
       collisions: m.collisions || 0,
       engine_seconds: m.engine_seconds || 0,
       charts_live: [0, 1, 2].map((i) => $(`chart-${i}`).innerHTML.startsWith("<svg")),

@@ -285,7 +285,10 @@ mod tests {
         let cells: [[Particle; 3]; 3] = core::array::from_fn(|c| {
             core::array::from_fn(|k| {
                 let x = (3 * c + k) as Real;
-                packed(Vec3::new(libm::sin(x), libm::cos(x), 0.1 * x), 0.2 + 0.1 * k as Real)
+                packed(
+                    Vec3::new(libm::sin(x), libm::cos(x), 0.1 * x),
+                    0.2 + 0.1 * k as Real,
+                )
             })
         });
         let heavy = [[

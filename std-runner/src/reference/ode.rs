@@ -318,7 +318,11 @@ mod tests {
         .unwrap();
         let worst = p
             .iter()
-            .map(|(x, y)| (y[0] - libm::sin(*x)).abs().max((y[1] - libm::cos(*x)).abs()))
+            .map(|(x, y)| {
+                (y[0] - libm::sin(*x))
+                    .abs()
+                    .max((y[1] - libm::cos(*x)).abs())
+            })
             .fold(0.0, f64::max);
         assert!(worst < 1e-8, "worst {worst}");
         // And a loose tolerance is looser: the test could fail.
