@@ -17,7 +17,8 @@ pub struct Stepped {
     streams: Streams,
     totals: Totals,
     particles: Option<SystemBuffer>,
-    watch: Stopwatch,
+    /// Seconds of wall and CPU time spent in [`Stepped::advance`].
+    busy: (f64, f64),
 }
 
 impl Stepped {
@@ -29,7 +30,7 @@ impl Stepped {
             streams: Streams::new(scene.seed()),
             totals: Totals::new(&scene),
             particles: None,
-            watch: Stopwatch::start(),
+            busy: (0.0, 0.0),
             scene,
         })
     }
@@ -50,7 +51,15 @@ impl Stepped {
     /// finished in all. An ensemble that fails ends the run with its error; the ones before it
     /// stay folded.
     pub fn advance(&mut self, k: u64) -> Result<u64, Error> {
-        let end = (self.done() + k).min(self.scene.ensembles());
+        let watch = Stopwatch::start();
+        let ran = self.run_to((self.done() + k).min(self.scene.ensembles()));
+        self.busy.0 += watch.wall();
+        self.busy.1 += watch.cpu();
+        ran
+    }
+
+    /// Runs and folds the ensembles up to `end`.
+    fn run_to(&mut self, end: u64) -> Result<u64, Error> {
         while self.done() < end {
             let e = self.done();
             let rng = self.streams.next().expect("the streams are endless");
@@ -66,13 +75,13 @@ impl Stepped {
         Ok(self.done())
     }
 
-    /// The statistics of the ensembles finished so far (those of a run of that many; its
-    /// timing zero where the platform has no clocks, [`crate::clock`]).
+    /// The statistics of the ensembles finished so far (those of a run of that many); its
+    /// timing is the time spent in [`Stepped::advance`] ([`crate::clock`]).
     #[must_use]
     pub fn stats(&self) -> RunStats {
         let timing = Timing {
-            wall: self.watch.wall(),
-            cpu: self.watch.cpu(),
+            wall: self.busy.0,
+            cpu: self.busy.1,
             threads: 1,
         };
         stats_of(&self.scene, self.totals.clone(), timing)
