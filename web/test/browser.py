@@ -25,7 +25,7 @@ GDSMC = ROOT / "target" / "release" / "gdsmc"
 
 # GRW Example 3 at a small n (the heated Maxwell gas, exact T(t) and a2(t)), cooling hard
 # spheres (a second loop and the distribution's references), a rough disk mixture (rough
-# particles, species, d = 2), a run stopped by the page's Stop (its statistics must be those
+# particles, species, d = 2; its inertia and a species' mass set in the form's fields), a run stopped by the page's Stop (its statistics must be those
 # of a run of the ensembles it finished), and bad input: a key's rule, a scene's schema, a
 # kernel's declared parameter.
 CASES = [
@@ -34,7 +34,8 @@ CASES = [
     {"name": "hcs-hard-spheres", "scene": "hcs-hard-spheres",
      "fields": {"n": "200", "ensembles": "10", "seed": "7"}},
     {"name": "rough-disk-mixture", "scene": "rough-disk-mixture-white-noise",
-     "fields": {"n": "96", "ensembles": "6"}, "distribution": False},
+     "fields": {"n": "96", "ensembles": "6", "kappa": "0.4", "mass0": "3"},
+     "distribution": False},
     {"name": "stopped", "scene": "grw-example3", "fields": {"n": "1024", "ensembles": "500"},
      "stop": 2},
     {"name": "bad n", "scene": "grw-example3", "fields": {"n": "1"}},
