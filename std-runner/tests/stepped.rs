@@ -50,3 +50,35 @@ fn steps_give_the_threaded_run_bit_for_bit() {
         assert_eq!(csv(&one), csv(&threaded), "{name}: 1 thread against 3");
     }
 }
+
+/// Ensembles run one by one elsewhere, in any order (the browser's helper workers), carried as
+/// journal words and folded in order by another run: the threaded run's bits. A row of
+/// another length is refused.
+#[test]
+fn ensembles_run_apart_and_folded_in_order_give_the_run() {
+    use gdsmc_runner::run::journal::{ensemble_from_words, ensemble_words};
+    let full = scene("grw-example3", 7).scene;
+    let refs = for_scene(&full);
+    let mut helpers = [
+        Stepped::new(full.clone()).unwrap(),
+        Stepped::new(full.clone()).unwrap(),
+    ];
+    let mut words = vec![Vec::new(); 7];
+    for (i, e) in [5u64, 2, 0, 6, 1, 3, 4].into_iter().enumerate() {
+        let (row, counts) = helpers[i % 2].run_one(e).unwrap();
+        words[e as usize] = ensemble_words(&row, &counts);
+    }
+    let mut folder = Stepped::new(full.clone()).unwrap();
+    for (e, w) in words.iter().enumerate() {
+        let (row, counts) = ensemble_from_words(w).unwrap();
+        assert_eq!(folder.push(&row, &counts).unwrap(), e as u64 + 1);
+    }
+    let threaded = gdsmc_runner::run::run(&full, 2, &|_| {}).unwrap();
+    assert_eq!(
+        observables_csv(&folder.stats(), &refs).unwrap(),
+        observables_csv(&threaded, &refs).unwrap()
+    );
+    let (row, counts) = ensemble_from_words(&words[0]).unwrap();
+    assert!(folder.push(&row[1..], &counts).is_err());
+    assert!(ensemble_from_words(&[1, 2]).is_none());
+}

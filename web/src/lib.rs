@@ -30,9 +30,14 @@ pub const NO_RUN: i32 = 2;
 
 /// Puts `text` in the output buffer; returns `status`.
 fn answer(status: i32, text: &str) -> i32 {
+    answer_bytes(status, text.as_bytes())
+}
+
+/// Puts `bytes` in the output buffer; returns `status`.
+fn answer_bytes(status: i32, bytes: &[u8]) -> i32 {
     OUTPUT.with_borrow_mut(|o| {
         o.clear();
-        o.extend_from_slice(text.as_bytes());
+        o.extend_from_slice(bytes);
     });
     status
 }
@@ -137,4 +142,39 @@ pub extern "C" fn gdsmc_web_panic() -> u32 {
 #[unsafe(no_mangle)]
 pub extern "C" fn gdsmc_web_kinds() -> i32 {
     answer(OK, &session::kinds().to_string())
+}
+
+/// Runs ensemble `k` of the prepared run alone ([`Session::ensemble`]): [`OK`] with its bytes
+/// (not JSON) for the worker that folds.
+// SAFETY: the name is exported once, for the page.
+#[unsafe(no_mangle)]
+pub extern "C" fn gdsmc_web_ensemble(k: u32) -> i32 {
+    match SESSION.with_borrow_mut(|slot| slot.as_mut().map(|s| s.ensemble(u64::from(k)))) {
+        None => answer(NO_RUN, "no run is prepared"),
+        Some(Ok(bytes)) => answer_bytes(OK, &bytes),
+        Some(Err(e)) => answer(REFUSED, &e),
+    }
+}
+
+/// Folds the next ensemble from the input's first `len` bytes ([`Session::fold`]): [`OK`]
+/// with `{"done": ...}`.
+// SAFETY: the name is exported once, for the page.
+#[unsafe(no_mangle)]
+pub extern "C" fn gdsmc_web_fold(len: u32) -> i32 {
+    let bytes = INPUT.with_borrow(|b| b[..(len as usize).min(b.len())].to_vec());
+    match SESSION.with_borrow_mut(|slot| slot.as_mut().map(|s| s.fold(&bytes))) {
+        None => answer(NO_RUN, "no run is prepared"),
+        Some(Ok(d)) => answer(OK, &serde_json::json!({ "done": d }).to_string()),
+        Some(Err(e)) => answer(REFUSED, &e),
+    }
+}
+
+/// Adds the helper workers' wall and CPU seconds to the prepared run's time.
+// SAFETY: the name is exported once, for the page.
+#[unsafe(no_mangle)]
+pub extern "C" fn gdsmc_web_add_time(wall: f64, cpu: f64) -> i32 {
+    match SESSION.with_borrow_mut(|slot| slot.as_mut().map(|s| s.add_time(wall, cpu))) {
+        None => answer(NO_RUN, "no run is prepared"),
+        Some(()) => answer(OK, "{}"),
+    }
 }

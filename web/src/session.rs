@@ -5,6 +5,7 @@
 use gdsmc_runner::reference::curves::{ReferenceCurve, for_scene};
 use gdsmc_runner::report;
 use gdsmc_runner::run::estimate;
+use gdsmc_runner::run::journal::{ensemble_from_words, ensemble_words};
 use gdsmc_runner::run::stepped::Stepped;
 use gdsmc_runner::scene::{Override, merged_text, parse_with};
 use serde_json::{Value, json};
@@ -63,6 +64,34 @@ impl Session {
     /// Runs the next `k` ensembles; the number finished in all.
     pub fn advance(&mut self, k: u64) -> Result<u64, String> {
         self.stepped.advance(k).map_err(words)
+    }
+
+    /// Ensemble `k` run alone, not folded ([`Stepped::run_one`]): its journal words
+    /// (`run::journal::ensemble_words`) as little-endian bytes, for the worker that folds.
+    pub fn ensemble(&mut self, k: u64) -> Result<Vec<u8>, String> {
+        let (row, counts) = self.stepped.run_one(k).map_err(words)?;
+        Ok(ensemble_words(&row, &counts)
+            .iter()
+            .flat_map(|w| w.to_le_bytes())
+            .collect())
+    }
+
+    /// Folds the next ensemble from the bytes [`Session::ensemble`] gave (run by another
+    /// worker); the number folded in all.
+    pub fn fold(&mut self, bytes: &[u8]) -> Result<u64, String> {
+        let w: Vec<u64> = bytes
+            .chunks_exact(8)
+            .map(|c| u64::from_le_bytes(c.try_into().expect("8 bytes")))
+            .collect();
+        let (row, counts) = ensemble_from_words(&w)
+            .filter(|_| bytes.len() % 8 == 0)
+            .ok_or_else(|| words("an ensemble's bytes are cut short"))?;
+        self.stepped.push(&row, &counts).map_err(words)
+    }
+
+    /// Adds the helper workers' time (wall and CPU seconds, as the page timed them).
+    pub fn add_time(&mut self, wall: f64, cpu: f64) {
+        self.stepped.add_time(wall, cpu);
     }
 
     /// The charts of the ensembles so far (every chart the command draws, by stem, as SVG),

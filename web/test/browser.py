@@ -215,8 +215,10 @@ def main():
         theirs = json.loads((out / "summary.json").read_text())
         native_rate = theirs["counts"]["collisions"] / max(theirs["cpu_seconds"], 1e-9)
         page_rate = got["collisions"] / max(got["engine_seconds"], 1e-9)
+        page_wall = got["collisions"] / max(got["wall_seconds"], 1e-9)
         print(f"ok   {name}: {', '.join(same)} equal to the command's; the summary equal; "
-              f"{got['collisions']} collisions, page {page_rate:.3e}/s, command {native_rate:.3e}/s (one thread each)")
+              f"{got['collisions']} collisions; page {page_wall:.3e}/s on {got['workers']} "
+              f"workers ({page_rate:.3e} per worker-second), command {native_rate:.3e} per CPU second")
     if len(page) != len(cases):
         failures.append(f"the page reported {len(page)} of {len(cases)} cases")
     if failures:

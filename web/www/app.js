@@ -102,10 +102,11 @@ function finished(m) {
     ? `stopped: ${m.done} of ${m.info.ensembles} ensembles (the statistics are those of a run of ${m.done})`
     : `${m.done} ensembles`;
   $("summary").textContent = m.summary;
-  const rate = m.collisions / Math.max(m.engine_seconds, 1e-9);
+  const rate = m.collisions / Math.max(m.wall_seconds, 1e-9);
+  const each = m.collisions / Math.max(m.engine_seconds, 1e-9);
   $("speed").textContent = `${m.collisions.toLocaleString("en")} collisions in ` +
-    `${m.engine_seconds.toFixed(2)} s of the worker's time: ${rate.toExponential(3)} collisions/s ` +
-    `(one thread, WebAssembly).`;
+    `${m.wall_seconds.toFixed(2)} s: ${rate.toExponential(3)} collisions/s on ${m.workers} ` +
+    `worker${m.workers > 1 ? "s" : ""} (WebAssembly; ${each.toExponential(3)} per worker-second).`;
   const links = $("downloads");
   links.textContent = "";
   links.append(download(`${m.info.scene}.toml`, m.info.toml, "application/toml"));
@@ -193,6 +194,8 @@ async function runTests() {
       status: $("status").textContent,
       collisions: m.collisions || 0,
       engine_seconds: m.engine_seconds || 0,
+      wall_seconds: m.wall_seconds || 0,
+      workers: m.workers || 0,
       charts_live: [0, 1, 2].map((i) => $(`chart-${i}`).innerHTML.startsWith("<svg")),
     });
   }

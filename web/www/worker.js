@@ -100,6 +100,14 @@ function prepare(name, text, sets) {
 let stopAsked = false;
 const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
 
+// Helpers: as many workers as the machine has cores (at most 16), when a worker may start
+// workers; else this worker runs every ensemble itself.
+function helperCount(ensembles) {
+  const cores = (self.navigator && navigator.hardwareConcurrency) || 1;
+  if (typeof Worker === "undefined" || cores < 2) return 0;
+  return Math.min(cores, 16, ensembles);
+}
+
 async function run({ name, text, sets }) {
   stopAsked = false;
   if (!gdsmc) await load();
@@ -107,6 +115,8 @@ async function run({ name, text, sets }) {
   if (status !== 0) return postMessage({ type: "error", message: answer });
   const info = JSON.parse(answer);
   postMessage({ type: "prepared", info });
+  const helpers = helperCount(info.ensembles);
+  if (helpers > 0) return runWithHelpers(info, { name, text, sets }, helpers);
   // Chunks of ensembles sized to take about a tenth of a second, so "stop" is heard soon.
   let chunk = 1;
   let done = 0;
@@ -129,6 +139,11 @@ async function run({ name, text, sets }) {
     }
     await yieldToEvents();
   }
+  finish(info, { engine_seconds: busy / 1000, wall_seconds: busy / 1000, workers: 1 });
+}
+
+// The end of a run: the summary, tables and charts of the ensembles folded.
+function finish(info, timing) {
   const [s, a] = call("gdsmc_web_finish");
   if (s !== 0) return postMessage({ type: "error", message: a });
   const result = JSON.parse(a);
@@ -138,15 +153,120 @@ async function run({ name, text, sets }) {
     type: "done",
     info,
     stopped: stopAsked && result.done < info.ensembles,
-    engine_seconds: busy / 1000,
+    ...timing,
     ...result,
   });
 }
 
+// The run spread over helper workers: each prepares the same scene and runs the ensembles it
+// is handed (ensemble k from the seed's stream jumped k times, as the command's threads do);
+// this worker folds them in ensemble order as they come back (the command's fold, so its
+// bits), draws, and hands out more. Stop ends the hand-out and the helpers at once: the
+// ensembles folded are an unbroken prefix, a run of that many.
+function runWithHelpers(info, scene, count) {
+  const start = performance.now();
+  const waiting = new Map(); // ensemble -> its bytes, until its turn to be folded
+  let next = 0; // the next ensemble to hand out
+  let done = 0; // folded
+  let seconds = 0; // the helpers' time in the engine
+  let lastDraw = 0;
+  let ended = false;
+  const pool = [];
+  const end = (error) => {
+    if (ended) return;
+    ended = true;
+    for (const h of pool) h.worker.terminate();
+    if (error) return postMessage({ type: "error", message: error });
+    const wall = (performance.now() - start) / 1000;
+    call("gdsmc_web_add_time", wall, seconds);
+    finish(info, { engine_seconds: seconds, wall_seconds: wall, workers: count });
+  };
+  const handOut = (h) => {
+    if (stopAsked || next >= info.ensembles) {
+      h.busy = false;
+      if (stopAsked || pool.every((p) => !p.busy)) end();
+      return;
+    }
+    const n = Math.min(h.batch, info.ensembles - next);
+    h.worker.postMessage({ type: "ensembles", from: next, count: n });
+    h.busy = true;
+    next += n;
+  };
+  const fold = () => {
+    while (waiting.has(done)) {
+      const bytes = new Uint8Array(waiting.get(done));
+      waiting.delete(done);
+      new Uint8Array(memory.buffer, gdsmc.gdsmc_web_input(bytes.length), bytes.length).set(bytes);
+      const [s, a] = call("gdsmc_web_fold", bytes.length);
+      if (s !== 0) return end(a);
+      done = JSON.parse(a).done;
+    }
+    if (performance.now() - lastDraw > 400) {
+      const [cs, charts] = call("gdsmc_web_charts");
+      if (cs === 0) postMessage({ type: "progress", done, ...JSON.parse(charts) });
+      lastDraw = performance.now();
+    } else {
+      postMessage({ type: "progress", done, ensembles: info.ensembles });
+    }
+  };
+  stopHook = () => end();
+  for (let i = 0; i < count; i++) {
+    const h = { worker: new Worker("worker.js"), batch: 1, busy: true };
+    pool.push(h);
+    h.worker.onmessage = (e) => {
+      const m = e.data;
+      if (ended) return;
+      if (m.type === "ready") return handOut(h);
+      if (m.type === "error") return end(m.message);
+      // m.type === "rows": a batch done; the next sized to take about a tenth of a second.
+      seconds += m.seconds;
+      h.batch = Math.max(1, Math.min(1024, Math.round((m.rows.length * 0.1) / Math.max(m.seconds, 1e-3))));
+      m.rows.forEach((r, k) => waiting.set(m.from + k, r));
+      fold();
+      if (!ended) handOut(h);
+    };
+    h.worker.onerror = (e) => end(`a helper worker failed: ${e.message}`);
+    h.worker.postMessage({ type: "helper", ...scene });
+  }
+}
+let stopHook = null;
+
+// A helper: the scene prepared once, then the ensembles it is handed, each run alone.
+async function help(m) {
+  if (m.type === "helper") {
+    if (!gdsmc) await load();
+    const [status, answer] = prepare(m.name, m.text, m.sets);
+    return postMessage(status === 0 ? { type: "ready" } : { type: "error", message: answer });
+  }
+  const t0 = performance.now();
+  const rows = [];
+  for (let k = m.from; k < m.from + m.count; k++) {
+    const [s, a] = callBytes("gdsmc_web_ensemble", k);
+    if (s !== 0) return postMessage({ type: "error", message: a });
+    rows.push(a);
+  }
+  const seconds = (performance.now() - t0) / 1000;
+  postMessage({ type: "rows", from: m.from, rows, seconds }, rows);
+}
+
+// As `call`, for an answer in bytes: [status, ArrayBuffer] (or the error's words).
+function callBytes(name, ...args) {
+  const [status, text] = call(name, ...args);
+  if (status !== 0) return [status, text];
+  const ptr = gdsmc.gdsmc_web_output();
+  const len = gdsmc.gdsmc_web_output_len();
+  return [status, memory.buffer.slice(ptr, ptr + len)];
+}
+
 onmessage = async (e) => {
   const m = e.data;
-  if (m.type === "stop") stopAsked = true;
-  else if (m.type === "run") await run(m);
+  if (m.type === "stop") {
+    stopAsked = true;
+    if (stopHook) stopHook();
+  } else if (m.type === "run") {
+    stopHook = null;
+    await run(m);
+  } else if (m.type === "helper" || m.type === "ensembles") await help(m);
   else if (m.type === "kinds") {
     if (!gdsmc) await load();
     const [, k] = call("gdsmc_web_kinds");

@@ -9,7 +9,8 @@ use crate::Error;
 use crate::clock::Stopwatch;
 use crate::run::{RunStats, StateIo};
 use crate::scene::Scene;
-use gdsmc_core::rng::Streams;
+use gdsmc_core::engine::Counts;
+use gdsmc_core::rng::{Streams, Xoshiro256PlusPlus};
 
 /// A run of a scene's ensembles, advanced by [`Stepped::advance`].
 pub struct Stepped {
@@ -63,16 +64,62 @@ impl Stepped {
         while self.done() < end {
             let e = self.done();
             let rng = self.streams.next().expect("the streams are endless");
-            let model = self.scene.model();
-            let buf = match &mut self.particles {
-                Some(buf) => buf,
-                None => self.particles.insert(system_buffer(model)?),
-            };
-            let (row, counts) =
-                run_ensemble(&self.scene, model, rng, buf, (e, &StateIo::default()))?;
+            let (row, counts) = self.run_with(e, rng)?;
             self.totals.push(&row, &counts);
         }
         Ok(self.done())
+    }
+
+    /// Ensemble `e` from `rng` on this run's particle buffer.
+    fn run_with(&mut self, e: u64, rng: Xoshiro256PlusPlus) -> Result<(Vec<f64>, Counts), Error> {
+        let model = self.scene.model();
+        let buf = match &mut self.particles {
+            Some(buf) => buf,
+            None => self.particles.insert(system_buffer(model)?),
+        };
+        run_ensemble(&self.scene, model, rng, buf, (e, &StateIo::default()))
+    }
+
+    /// Runs ensemble `e` alone (from the seed's stream jumped `e` times) without folding it:
+    /// the browser's helper workers run ensembles this way for the one that folds them
+    /// ([`Stepped::push`]). Its time counts as this run's.
+    pub fn run_one(&mut self, e: u64) -> Result<(Vec<f64>, Counts), Error> {
+        let watch = Stopwatch::start();
+        let mut streams = Streams::new(self.scene.seed());
+        for _ in 0..e {
+            streams.next();
+        }
+        let rng = streams.next().expect("the streams are endless");
+        let ran = self.run_with(e, rng);
+        self.busy.0 += watch.wall();
+        self.busy.1 += watch.cpu();
+        ran
+    }
+
+    /// Folds the next ensemble (number [`Stepped::done`]) from its row and counts, as
+    /// [`Stepped::run_one`] gave them elsewhere; the ensembles after it are then run from
+    /// their own streams. Refuses a row of another length than this scene's.
+    pub fn push(&mut self, row: &[f64], counts: &Counts) -> Result<u64, Error> {
+        if row.len() != self.totals.row_len() {
+            return Err(Error::Argument {
+                flag: "ensemble".into(),
+                message: format!(
+                    "a row of {} values where this scene's ensembles give {}",
+                    row.len(),
+                    self.totals.row_len()
+                ),
+            });
+        }
+        self.totals.push(row, counts);
+        self.streams.next();
+        Ok(self.done())
+    }
+
+    /// Adds wall and CPU seconds spent for this run elsewhere (the browser's helper workers,
+    /// timed by the page) to the time its statistics state.
+    pub fn add_time(&mut self, wall: f64, cpu: f64) {
+        self.busy.0 += wall;
+        self.busy.1 += cpu;
     }
 
     /// The statistics of the ensembles finished so far (those of a run of that many); its

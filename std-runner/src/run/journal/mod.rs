@@ -356,7 +356,9 @@ mod record;
 mod writer;
 
 pub use read::{Contents, read, read_file};
-pub use record::{Timing, end_record, ensemble_record, header_bytes};
+pub use record::{
+    Timing, end_record, ensemble_from_words, ensemble_record, ensemble_words, header_bytes,
+};
 pub use writer::Writer;
 
 #[cfg(test)]

@@ -77,11 +77,25 @@ fn record_bytes(key: u32, ensemble: u64, words: &[u64]) -> Vec<u8> {
 
 /// One ensemble's record in a file of the run whose key is `key` ([`Header::key`]).
 pub fn ensemble_record(key: u32, ensemble: u64, row: &[f64], counts: &Counts) -> Vec<u8> {
-    let words: Vec<u64> = counts_words(counts)
+    record_bytes(key, ensemble, &ensemble_words(row, counts))
+}
+
+/// A finished ensemble as a record holds it: its counts, then its row's bits (the browser's
+/// workers hand ensembles to the one that folds them this way).
+pub fn ensemble_words(row: &[f64], counts: &Counts) -> Vec<u64> {
+    counts_words(counts)
         .into_iter()
         .chain(row.iter().map(|x| x.to_bits()))
-        .collect();
-    record_bytes(key, ensemble, &words)
+        .collect()
+}
+
+/// The row and counts of [`ensemble_words`] (`None`: fewer words than the counts take).
+pub fn ensemble_from_words(words: &[u64]) -> Option<(Vec<f64>, Counts)> {
+    let (counts, row) = (words.get(..COUNT_WORDS)?, &words[COUNT_WORDS..]);
+    Some((
+        row.iter().map(|&x| f64::from_bits(x)).collect(),
+        counts_of(counts),
+    ))
 }
 
 /// How the ensembles of a finished file were run.
