@@ -84,7 +84,7 @@ impl Session {
             .map(|c| u64::from_le_bytes(c.try_into().expect("8 bytes")))
             .collect();
         let (row, counts) = ensemble_from_words(&w)
-            .filter(|_| bytes.len() % 8 == 0)
+            .filter(|_| bytes.len().is_multiple_of(8))
             .ok_or_else(|| words("an ensemble's bytes are cut short"))?;
         self.stepped.push(&row, &counts).map_err(words)
     }
