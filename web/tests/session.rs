@@ -81,3 +81,30 @@ fn every_declared_kind_is_offered() {
     assert_eq!(names("drives"), drives);
     assert_eq!(k["stream_version"], gdsmc_runner::STREAM_VERSION);
 }
+
+/// Ensembles run by helper sessions (the page's helper workers) and folded by another, in
+/// order, from their bytes: the library run's observables. Cut bytes are refused.
+#[test]
+fn helpers_ensembles_folded_give_the_run() {
+    let sets = "particles.n=64\nrun.ensembles=4\n";
+    let name = "scenes/grw-example3.toml";
+    let (mut folder, _) = Session::prepare(name, GRW3, sets).unwrap();
+    let (mut helper, _) = Session::prepare(name, GRW3, sets).unwrap();
+    let mut bytes: Vec<Vec<u8>> = [3u64, 1, 0, 2]
+        .into_iter()
+        .map(|k| (k, helper.ensemble(k).unwrap()))
+        .collect::<std::collections::BTreeMap<_, _>>()
+        .into_values()
+        .collect();
+    let cut = bytes[0][..bytes[0].len() - 3].to_vec();
+    assert!(folder.fold(&cut).is_err());
+    for (k, b) in bytes.drain(..).enumerate() {
+        assert_eq!(folder.fold(&b).unwrap(), k as u64 + 1);
+    }
+    let (mut alone, _) = Session::prepare(name, GRW3, sets).unwrap();
+    alone.advance(4).unwrap();
+    assert_eq!(
+        folder.finish().unwrap()["files"]["observables.csv"],
+        alone.finish().unwrap()["files"]["observables.csv"]
+    );
+}
