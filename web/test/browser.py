@@ -111,9 +111,10 @@ def browse(chromium, url, reports, timeout):
     return reports[0]
 
 
-def native(case, scene_path, out):
-    """The command's run of a case: (exit code, stderr, output directory)."""
-    args = [str(GDSMC), "run", scene_path, "--threads", "1", "--out", str(out), "--format", "svg"]
+def native(case, scene_path, out, threads=1):
+    """The command's run of a case: (exit code, stderr, stdout)."""
+    args = [str(GDSMC), "run", scene_path, "--threads", str(threads), "--out", str(out),
+            "--format", "svg"]
     for s in case["sets"]:
         args += ["--set", s]
     p = subprocess.run(args, cwd=ROOT, capture_output=True, text=True)
@@ -216,6 +217,13 @@ def main():
         native_rate = theirs["counts"]["collisions"] / max(theirs["cpu_seconds"], 1e-9)
         page_rate = got["collisions"] / max(got["engine_seconds"], 1e-9)
         page_wall = got["collisions"] / max(got["wall_seconds"], 1e-9)
+        if a.speed:
+            # The command on every core, for the page's wall rate on every core.
+            native(got, scenes[case["scene"]], out.parent / "all-cores", threads=0)
+            every = json.loads((out.parent / "all-cores" / "summary.json").read_text())
+            print(f"     {name}: page {page_wall:.3e}/s on {got['workers']} workers, command "
+                  f"{every['counts']['collisions'] / every['wall_seconds']:.3e}/s on "
+                  f"{every['threads']} threads (wall)")
         print(f"ok   {name}: {', '.join(same)} equal to the command's; the summary equal; "
               f"{got['collisions']} collisions; page {page_wall:.3e}/s on {got['workers']} "
               f"workers ({page_rate:.3e} per worker-second), command {native_rate:.3e} per CPU second")
