@@ -70,7 +70,9 @@ function start() {
   $("progress").value = 0;
   $("status").textContent = "starting";
   for (const i of [0, 1, 2]) $(`chart-${i}`).textContent = "";
-  worker.postMessage({ type: "run", name: s.path, text: $("toml").value, sets: overrides().join("\n") });
+  // An edited file is named as such in errors (its lines are not the shipped file's).
+  const name = $("toml").value === s.text ? s.path : `${s.path} (edited)`;
+  worker.postMessage({ type: "run", name, text: $("toml").value, sets: overrides().join("\n") });
 }
 
 // The charts shown live: the temperature, a2 and the distribution when there is one.

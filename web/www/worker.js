@@ -52,9 +52,11 @@ const imports = {
 };
 
 let gdsmc = null;
+let compiled = null; // the module, compiled once and handed to the helpers
 
-async function load() {
-  const { instance } = await WebAssembly.instantiateStreaming(fetch("gdsmc_web.wasm"), imports);
+async function load(module) {
+  compiled = module || compiled || (await WebAssembly.compileStreaming(fetch("gdsmc_web.wasm")));
+  const instance = await WebAssembly.instantiate(compiled, imports);
   gdsmc = instance.exports;
   memory = gdsmc.memory;
   if (gdsmc._initialize) gdsmc._initialize();
@@ -226,7 +228,7 @@ function runWithHelpers(info, scene, count) {
       if (!ended) handOut(h);
     };
     h.worker.onerror = (e) => end(`a helper worker failed: ${e.message}`);
-    h.worker.postMessage({ type: "helper", ...scene });
+    h.worker.postMessage({ type: "helper", module: compiled, ...scene });
   }
 }
 let stopHook = null;
@@ -234,7 +236,7 @@ let stopHook = null;
 // A helper: the scene prepared once, then the ensembles it is handed, each run alone.
 async function help(m) {
   if (m.type === "helper") {
-    if (!gdsmc) await load();
+    if (!gdsmc) await load(m.module);
     const [status, answer] = prepare(m.name, m.text, m.sets);
     return postMessage(status === 0 ? { type: "ready" } : { type: "error", message: answer });
   }
