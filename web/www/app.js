@@ -71,8 +71,33 @@ function start() {
   $("status").textContent = "starting";
   for (const i of [0, 1, 2]) $(`chart-${i}`).textContent = "";
   // An edited file is named as such in errors (its lines are not the shipped file's).
-  const name = $("toml").value === s.text ? s.path : `${s.path} (edited)`;
-  worker.postMessage({ type: "run", name, text: $("toml").value, sets: overrides().join("\n") });
+  const edited = $("toml").value !== s.text;
+  const name = edited ? `${s.path} (edited)` : s.path;
+  const sets = overrides();
+  worker.postMessage({ type: "run", name, text: $("toml").value, sets: sets.join("\n") });
+  if (location.hash !== "#test") history.replaceState(null, "", link(s.name, sets, edited));
+}
+
+// The page's address for this run: the scene, its keys and an edited file, so that a link
+// opens the page set up for the same run (the seed is a key like any other).
+function link(scene, sets, edited) {
+  const q = new URLSearchParams({ scene });
+  for (const x of sets) q.append("set", x);
+  if (edited) q.append("text", $("toml").value);
+  return `#${q.toString()}`;
+}
+
+// Sets the page up from an address made by `link`: the scene, its file if edited, and every
+// key as a line of "More keys".
+function fromLink() {
+  const q = new URLSearchParams(location.hash.slice(1));
+  const s = scenes.find((x) => x.name === q.get("scene"));
+  if (!s) return;
+  $("scene").value = s.name;
+  showScene();
+  if (q.has("text")) $("toml").value = q.get("text");
+  $("distribution").checked = false;
+  $("sets").value = q.getAll("set").join("\n");
 }
 
 // The charts shown live: the temperature, a2 and the distribution when there is one.
@@ -117,7 +142,8 @@ function finished(m) {
     links.append(download(name, text, name.endsWith(".json") ? "application/json" : "text/csv"));
   }
   $("reproduce").innerHTML = `<code>gdsmc run ${m.info.scene}.toml</code> with the scene file above ` +
-    `reproduces these numbers to the last bit (streams v${m.info.stream_version}).`;
+    `reproduces these numbers to the last bit (streams v${m.info.stream_version}); ` +
+    `<a href="${location.href}">this page's address</a> opens it set up for the same run.`;
 }
 
 worker.onmessage = (e) => {
@@ -216,4 +242,5 @@ async function runTests() {
   showScene();
   worker.postMessage({ type: "kinds" });
   if (location.hash === "#test") runTests();
+  else if (location.hash.startsWith("#scene=")) fromLink();
 })();
