@@ -54,8 +54,18 @@ const imports = {
 let gdsmc = null;
 let compiled = null; // the module, compiled once and handed to the helpers
 
+// Compiles the module as it downloads; a server that does not call it application/wasm gets
+// it compiled after the download instead.
+async function compile() {
+  try {
+    return await WebAssembly.compileStreaming(fetch("gdsmc_web.wasm"));
+  } catch (_) {
+    return WebAssembly.compile(await (await fetch("gdsmc_web.wasm")).arrayBuffer());
+  }
+}
+
 async function load(module) {
-  compiled = module || compiled || (await WebAssembly.compileStreaming(fetch("gdsmc_web.wasm")));
+  compiled = module || compiled || (await compile());
   const instance = await WebAssembly.instantiate(compiled, imports);
   gdsmc = instance.exports;
   memory = gdsmc.memory;
