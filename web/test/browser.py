@@ -92,6 +92,7 @@ def browse(chromium, url, reports, timeout):
         args = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
                 "--no-first-run", "--disable-background-networking",
                 "--disable-component-update", "--disable-sync", "--mute-audio",
+                "--disable-dev-shm-usage",
                 f"--user-data-dir={profile}", "--remote-debugging-port=0", url]
         p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         try:
