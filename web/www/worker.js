@@ -78,10 +78,16 @@ const decoder = new TextDecoder();
 // Calls an export; returns [status, text of the answer]. A trap (a panic) becomes an error
 // with the panic's message, and the module is loaded afresh for the next run.
 function call(name, ...args) {
+  return callAs(false, name, ...args);
+}
+
+// As `call`, the answer as bytes (an ArrayBuffer) when `binary` and the call succeeded.
+function callAs(binary, name, ...args) {
   try {
     const status = gdsmc[name](...args);
     const ptr = gdsmc.gdsmc_web_output();
     const len = gdsmc.gdsmc_web_output_len();
+    if (binary && status === 0) return [status, memory.buffer.slice(ptr, ptr + len)];
     return [status, decoder.decode(new Uint8Array(memory.buffer, ptr, len))];
   } catch (e) {
     let message = String(e);
@@ -133,7 +139,7 @@ async function run({ name, text, sets }) {
   let chunk = 1;
   let done = 0;
   let busy = 0; // milliseconds spent in the engine (the worker's thread does nothing else)
-  let lastDraw = 0;
+  let nextDraw = 0;
   while (done < info.ensembles && !stopAsked) {
     const t0 = performance.now();
     const [s, a] = call("gdsmc_web_advance", chunk);
@@ -142,16 +148,24 @@ async function run({ name, text, sets }) {
     if (s !== 0) return postMessage({ type: "error", message: a });
     done = JSON.parse(a).done;
     chunk = Math.max(1, Math.min(1024, Math.round((chunk * 100) / Math.max(took, 1))));
-    if (performance.now() - lastDraw > 400 || done === info.ensembles) {
-      const [cs, charts] = call("gdsmc_web_charts");
-      if (cs === 0) postMessage({ type: "progress", done, ...JSON.parse(charts) });
-      lastDraw = performance.now();
+    if (performance.now() > nextDraw || done === info.ensembles) {
+      nextDraw = draw(done);
     } else {
       postMessage({ type: "progress", done, ensembles: info.ensembles });
     }
     await yieldToEvents();
   }
   finish(info, { engine_seconds: busy / 1000, wall_seconds: busy / 1000, workers: 1 });
+}
+
+// Posts the charts of the ensembles folded so far; returns when to draw next: after 0.4 s, or
+// ten times as long as drawing took, so that drawing costs at most a tenth of this worker.
+function draw(done) {
+  const t0 = performance.now();
+  const [cs, charts] = call("gdsmc_web_charts");
+  if (cs === 0) postMessage({ type: "progress", done, ...JSON.parse(charts) });
+  const took = performance.now() - t0;
+  return performance.now() + Math.max(400, 10 * took);
 }
 
 // The end of a run: the summary, tables and charts of the ensembles folded.
@@ -181,7 +195,7 @@ function runWithHelpers(info, scene, count) {
   let next = 0; // the next ensemble to hand out
   let done = 0; // folded
   let seconds = 0; // the helpers' time in the engine
-  let lastDraw = 0;
+  let nextDraw = 0;
   let ended = false;
   const pool = [];
   const end = (error) => {
@@ -213,10 +227,8 @@ function runWithHelpers(info, scene, count) {
       if (s !== 0) return end(a);
       done = JSON.parse(a).done;
     }
-    if (performance.now() - lastDraw > 400) {
-      const [cs, charts] = call("gdsmc_web_charts");
-      if (cs === 0) postMessage({ type: "progress", done, ...JSON.parse(charts) });
-      lastDraw = performance.now();
+    if (performance.now() > nextDraw) {
+      nextDraw = draw(done);
     } else {
       postMessage({ type: "progress", done, ensembles: info.ensembles });
     }
@@ -263,11 +275,7 @@ async function help(m) {
 
 // As `call`, for an answer in bytes: [status, ArrayBuffer] (or the error's words).
 function callBytes(name, ...args) {
-  const [status, text] = call(name, ...args);
-  if (status !== 0) return [status, text];
-  const ptr = gdsmc.gdsmc_web_output();
-  const len = gdsmc.gdsmc_web_output_len();
-  return [status, memory.buffer.slice(ptr, ptr + len)];
+  return callAs(true, name, ...args);
 }
 
 onmessage = async (e) => {

@@ -20,6 +20,8 @@ pub struct Stepped {
     particles: Option<SystemBuffer>,
     /// Seconds of wall and CPU time spent in [`Stepped::advance`].
     busy: (f64, f64),
+    /// For [`Stepped::run_one`]: the ensemble its streams give next, and those streams.
+    alone: Option<(u64, Streams)>,
 }
 
 impl Stepped {
@@ -32,6 +34,7 @@ impl Stepped {
             totals: Totals::new(&scene),
             particles: None,
             busy: (0.0, 0.0),
+            alone: None,
             scene,
         })
     }
@@ -85,11 +88,18 @@ impl Stepped {
     /// ([`Stepped::push`]). Its time counts as this run's.
     pub fn run_one(&mut self, e: u64) -> Result<(Vec<f64>, Counts), Error> {
         let watch = Stopwatch::start();
-        let mut streams = Streams::new(self.scene.seed());
-        for _ in 0..e {
+        // The streams from the last ensemble run alone when `e` lies ahead of it (a helper is
+        // handed increasing ensembles): a jump per ensemble between, not `e` of them.
+        let (mut at, mut streams) = match self.alone.take() {
+            Some((at, streams)) if at <= e => (at, streams),
+            _ => (0, Streams::new(self.scene.seed())),
+        };
+        while at < e {
             streams.next();
+            at += 1;
         }
         let rng = streams.next().expect("the streams are endless");
+        self.alone = Some((e + 1, streams));
         let ran = self.run_with(e, rng);
         self.busy.0 += watch.wall();
         self.busy.1 += watch.cpu();
