@@ -27,7 +27,8 @@ GDSMC = ROOT / "target" / "release" / "gdsmc"
 # spheres (a second loop and the distribution's references), a rough disk mixture (rough
 # particles, species, d = 2; its inertia and a species' mass set in the form's fields), a run stopped by the page's Stop (its statistics must be those
 # of a run of the ensembles it finished), and bad input: a key's rule, a scene's schema, a
-# kernel's declared parameter.
+# kernel's declared parameter. Each run's address is opened again and must set the page up
+# for the same keys.
 CASES = [
     {"name": "grw-example3", "scene": "grw-example3",
      "fields": {"n": "256", "ensembles": "24"}},
@@ -204,6 +205,8 @@ def main():
         elif summary_lines(got["summary"]) != summary_lines(text):
             (out.parent / "page-summary.txt").write_text(got["summary"])
             failures.append(f"{name}: the summary differs from the command's (page-summary.txt)")
+        if not got["link_ok"]:
+            failures.append(f"{name}: the run's address does not set the page up for the same keys")
         if not all(got["charts_live"][:2]):
             failures.append(f"{name}: the live charts were not drawn")
         # The command's merged scene file reproduces the page's run: parsed, it is the same.

@@ -96,6 +96,9 @@ function fromLink() {
   $("scene").value = s.name;
   showScene();
   if (q.has("text")) $("toml").value = q.get("text");
+  for (const el of $("keys").querySelectorAll("[data-key]")) el.value = "";
+  $("kernel-params").textContent = "";
+  $("drive-params").textContent = "";
   $("distribution").checked = false;
   $("sets").value = q.getAll("set").join("\n");
 }
@@ -210,9 +213,18 @@ async function runTests() {
     $("run").click();
     const m = await done;
     onProgress = null;
+    // The run's address, opened again, sets the page up for the same keys.
+    const sets = overrides();
+    const edited = $("toml").value !== selectedScene().text;
+    const saved = location.hash;
+    history.replaceState(null, "", link(c.scene, sets, edited));
+    fromLink();
+    const linked = { scene: $("scene").value, sets: overrides() };
+    history.replaceState(null, "", saved);
     results.push({
       name: c.name,
-      sets: overrides(),
+      link_ok: linked.scene === c.scene && JSON.stringify(linked.sets) === JSON.stringify(sets),
+      sets,
       error: m.type === "error" ? $("error").textContent : null,
       summary: m.type === "done" ? $("summary").textContent : null,
       files: m.files || null,
