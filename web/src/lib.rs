@@ -1,7 +1,7 @@
 //! # gdsmc-web
 //!
-//! gdsmc in the browser. Built for `wasm32-unknown-unknown` (web/build.sh), this crate is the
-//! page's whole engine: the runner's scene rules, ensembles, statistics, references, summary,
+//! gdsmc in the browser. Built for `wasm32-wasip1` (web/build.sh; docs/web.md says why not
+//! `wasm32-unknown-unknown`), this crate is the page's whole engine: the runner's scene rules, ensembles, statistics, references, summary,
 //! tables and charts ([`session`]), with the command's bits and words. The page's worker
 //! (web/www/worker.js) drives it through the functions below, exchanging bytes through two
 //! buffers the module owns: it writes its input where [`gdsmc_web_input`] says, calls, and
