@@ -1,13 +1,14 @@
 //! # gdsmc-web
 //!
 //! gdsmc in the browser. Built for `wasm32-wasip1` (web/build.sh; docs/web.md says why not
-//! `wasm32-unknown-unknown`), this crate is the page's whole engine: the runner's scene rules, ensembles, statistics, references, summary,
-//! tables and charts ([`session`]), with the command's bits and words. The page's worker
-//! (web/www/worker.js) drives it through the functions below, exchanging bytes through two
-//! buffers the module owns: it writes its input where [`gdsmc_web_input`] says, calls, and
-//! reads the answer (JSON, or the error's words) at [`gdsmc_web_output`]. Nothing here is
-//! `unsafe` but the exported names, each one of a kind; a panic traps, and its message is kept
-//! for [`gdsmc_web_panic`].
+//! `wasm32-unknown-unknown`), this crate is the page's whole engine: the runner's scene rules,
+//! ensembles, statistics, references, summary, tables and charts ([`session`]), with the
+//! command's bits and words. The page's workers (web/www/worker.js) drive it through the
+//! functions below, exchanging bytes through two buffers the module owns: a worker writes its
+//! input where [`gdsmc_web_input`] says, calls, and reads the answer (JSON, an ensemble's
+//! bytes, or the error's words) at [`gdsmc_web_output`]. Nothing here is `unsafe` but the
+//! exported names, each one of a kind; a panic traps, and its message is kept for
+//! [`gdsmc_web_panic`].
 
 pub mod session;
 
