@@ -113,6 +113,22 @@ pub struct StateIo<'a> {
     pub snapshots: &'a [StateWriter],
 }
 
+/// [`run_ensemble`] on `particles`, made by [`system_buffer`] at its first use and kept
+/// between the ensembles of one worker (a thread, or a stepped run).
+pub fn run_on_buffer(
+    scene: &Scene,
+    model: &Model,
+    rng: Xoshiro256PlusPlus,
+    particles: &mut Option<SystemBuffer>,
+    at: (u64, &StateIo<'_>),
+) -> Result<(Vec<f64>, Counts), crate::Error> {
+    let buf = match particles {
+        Some(buf) => buf,
+        None => particles.insert(system_buffer(model)?),
+    };
+    run_ensemble(scene, model, rng, buf, at)
+}
+
 /// Runs ensemble `k` of `scene` (whose physics `model` is) from the generator `rng` in the
 /// buffers `buf` (from [`system_buffer`]; their contents are overwritten), from the scene's
 /// initial distribution or the state `io.initial`, saving its last particles to `io.save`:

@@ -26,7 +26,7 @@ pub mod totals;
 
 pub use ensemble::{
     StateIo, SystemBuffer, initial_sampler, initial_temperature, particle_buffer, run_ensemble,
-    system_buffer,
+    run_on_buffer, system_buffer,
 };
 pub use memory::{run, run_in_memory, run_interruptible, run_with_samples};
 pub use results::{MarginalHistogram, RunStats, ShellHistogram, SteadyStats};
@@ -154,11 +154,13 @@ impl EnsembleJob<'_> {
         rng: &Xoshiro256PlusPlus,
         particles: &mut Option<ensemble::SystemBuffer>,
     ) -> Done {
-        match particles {
-            Some(buf) => Ok(buf),
-            None => system_buffer(self.model).map(|b| particles.insert(b)),
-        }
-        .and_then(|buf| run_ensemble(self.scene, self.model, rng.clone(), buf, (k, &self.state)))
+        run_on_buffer(
+            self.scene,
+            self.model,
+            rng.clone(),
+            particles,
+            (k, &self.state),
+        )
     }
 
     /// One worker: takes the next ensemble of the batch until none is left or the run stops.

@@ -4,7 +4,7 @@
 //! `k` times) and are folded in the same order, so its statistics are the command's to the bit.
 
 use super::journal::Timing;
-use super::{SystemBuffer, Totals, check_steady, run_ensemble, stats_of, system_buffer};
+use super::{SystemBuffer, Totals, check_steady, run_on_buffer, stats_of};
 use crate::Error;
 use crate::clock::Stopwatch;
 use crate::run::{RunStats, StateIo};
@@ -75,12 +75,14 @@ impl Stepped {
 
     /// Ensemble `e` from `rng` on this run's particle buffer.
     fn run_with(&mut self, e: u64, rng: Xoshiro256PlusPlus) -> Result<(Vec<f64>, Counts), Error> {
-        let model = self.scene.model();
-        let buf = match &mut self.particles {
-            Some(buf) => buf,
-            None => self.particles.insert(system_buffer(model)?),
-        };
-        run_ensemble(&self.scene, model, rng, buf, (e, &StateIo::default()))
+        let at = (e, &StateIo::default());
+        run_on_buffer(
+            &self.scene,
+            self.scene.model(),
+            rng,
+            &mut self.particles,
+            at,
+        )
     }
 
     /// Runs ensemble `e` alone (from the seed's stream jumped `e` times) without folding it:
