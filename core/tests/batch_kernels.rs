@@ -273,3 +273,41 @@ fn raw_sums_follow_from_central_ones() {
         }
     }
 }
+
+/// The AVX loop of the moment sums (chosen at run time on x86_64) against the portable one,
+/// lane by lane to the bit: the Maxwellian about a far bulk velocity, a cold gas, spreads over
+/// ten decades. Where the processor has no AVX there is nothing to compare (and nothing runs
+/// it).
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn avx_lanes_are_the_portable_lanes_to_the_bit() {
+    use gdsmc_core::batch::lanes_avx;
+    if !lanes_avx::available() {
+        eprintln!("no AVX here: the AVX lanes are not run");
+        return;
+    }
+    let mut rng = seeded(41);
+    for (t, drift) in [
+        (1.0, Vec3::new(0.3, -0.2, 1.0)),
+        (1e-12, Vec3::new(1e3, 0.0, -2.0)),
+        (1e8, Vec3::new(0.0, 0.0, 0.0)),
+    ] {
+        let mx = Maxwellian::new(1.0, t, drift).unwrap();
+        for n in [0usize, 4, 8, 64, 1000] {
+            let q: Vec<Particle> = (0..n)
+                .map(|k| Particle::new((1.0 + k as f64) * mx.sample(&mut rng), 0.5))
+                .collect();
+            let bulk = Vec3::new(0.25, -1.0, 3.0);
+            let a = lanes_avx::central_lanes(&q, bulk).unwrap();
+            let b = central_lanes(&q, bulk);
+            let bits = |l: &Lanes| -> Vec<u64> {
+                let mut v: Vec<f64> = l.c2.iter().chain(&l.c3).flatten().copied().collect();
+                for x in [l.c1, l.c3n, l.c4, l.c6, l.max_c2, l.s6] {
+                    v.extend(x);
+                }
+                v.into_iter().map(f64::to_bits).collect()
+            };
+            assert_eq!(bits(&a), bits(&b), "n = {n}, T = {t}");
+        }
+    }
+}

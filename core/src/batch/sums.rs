@@ -160,18 +160,90 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
         s.s1[2] += p.vz;
     }
     let bulk = bulk_of(&s);
+    #[cfg(target_arch = "x86_64")]
+    let lanes = super::lanes_avx::central_lanes(&q[..4 * blocks], bulk)
+        .unwrap_or_else(|| central_lanes(&q[..4 * blocks], bulk));
+    #[cfg(not(target_arch = "x86_64"))]
+    let lanes = central_lanes(&q[..4 * blocks], bulk);
+    // Each sum the lanes' `(l0 + l1) + (l2 + l3)`, as `wide::f64x4::reduce_add` adds them on
+    // SSE2 (the default target's).
+    let sum = |l: [Real; 4]| (l[0] + l[1]) + (l[2] + l[3]);
+    s.c2 = lanes.c2.map(sum);
+    s.c3 = lanes.c3.map(sum);
+    s.c1 = sum(lanes.c1);
+    s.c3n = sum(lanes.c3n);
+    s.c4 = sum(lanes.c4);
+    s.c6 = sum(lanes.c6);
+    s.max_c2 = lanes.max_c2.into_iter().fold(0.0, max);
+    s.s6 = sum(lanes.s6);
+    for p in &q[4 * blocks..] {
+        add_central(&mut s, p, bulk);
+    }
+    raw_from_central(&mut s, bulk);
+    s
+}
+
+/// The four lanes of each central sum over whole blocks of four particles (lane `k` sums the
+/// particles `4 b + k`), before they are added.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lanes {
+    /// `sum c c^T`, upper triangle `[xx, yy, zz, xy, xz, yz]`.
+    pub c2: [[Real; 4]; 6],
+    /// `sum c |c|^2`.
+    pub c3: [[Real; 4]; 3],
+    /// `sum |c|`.
+    pub c1: [Real; 4],
+    /// `sum |c|^3`.
+    pub c3n: [Real; 4],
+    /// `sum |c|^4`.
+    pub c4: [Real; 4],
+    /// `sum |c|^6`.
+    pub c6: [Real; 4],
+    /// `max |c|^2` (0 and above).
+    pub max_c2: [Real; 4],
+    /// `sum |v|^6`.
+    pub s6: [Real; 4],
+}
+
+impl Lanes {
+    /// The lanes out of a kernel's registers `out` reads: `c c^T`'s six, `c |c|^2`'s three,
+    /// then `|c|`, `|c|^3`, `|c|^4`, `|c|^6`, `max |c|^2` and `|v|^6`.
+    #[inline(always)]
+    pub fn from_registers<T>(
+        c2: [T; 6],
+        c3: [T; 3],
+        [c1, c3n, c4, c6, max_c2, s6]: [T; 6],
+        out: impl Fn(T) -> [Real; 4],
+    ) -> Lanes {
+        Lanes {
+            c2: c2.map(&out),
+            c3: c3.map(&out),
+            c1: out(c1),
+            c3n: out(c3n),
+            c4: out(c4),
+            c6: out(c6),
+            max_c2: out(max_c2),
+            s6: out(s6),
+        }
+    }
+}
+
+/// The central lanes of `q` (whole blocks of four) about `bulk` in `wide::f64x4` (the
+/// portable kernel; x86_64 with AVX runs [`super::lanes_avx`], bit for bit the same).
+pub fn central_lanes(q: &[Particle], bulk: Vec3) -> Lanes {
     let (bx, by, bz) = (
         RealX4::splat(bulk.x),
         RealX4::splat(bulk.y),
         RealX4::splat(bulk.z),
     );
+    let z = RealX4::ZERO;
     let (mut c4, mut c6, mut m2) = (z, z, z);
     let (mut e1, mut e3) = (z, z);
     let (mut cxx, mut cyy, mut czz, mut cxy, mut cxz, mut cyz) = (z, z, z, z, z, z);
     let (mut d1, mut d2, mut d3) = (z, z, z);
     let mut q6 = z;
-    for b in 0..blocks {
-        let [x, y, w, _] = load4(&q[4 * b..]);
+    for block in q.chunks_exact(4) {
+        let [x, y, w, _] = load4(block);
         let v2 = x * x + y * y + w * w;
         q6 += v2 * v2 * v2;
         let (x, y, w) = (x - bx, y - by, w - bz);
@@ -193,24 +265,11 @@ pub fn accumulate_simd(q: &[Particle]) -> Sums {
         c6 += c4v * c2;
         m2 = m2.max(c2);
     }
-    s.c2 = [
-        cxx.reduce_add(),
-        cyy.reduce_add(),
-        czz.reduce_add(),
-        cxy.reduce_add(),
-        cxz.reduce_add(),
-        cyz.reduce_add(),
-    ];
-    s.c3 = [d1.reduce_add(), d2.reduce_add(), d3.reduce_add()];
-    s.c1 = e1.reduce_add();
-    s.c3n = e3.reduce_add();
-    s.c4 = c4.reduce_add();
-    s.c6 = c6.reduce_add();
-    s.max_c2 = m2.to_array().into_iter().fold(0.0, max);
-    s.s6 = q6.reduce_add();
-    for p in &q[4 * blocks..] {
-        add_central(&mut s, p, bulk);
-    }
-    raw_from_central(&mut s, bulk);
-    s
+    let out = |v: RealX4| v.to_array();
+    Lanes::from_registers(
+        [cxx, cyy, czz, cxy, cxz, cyz],
+        [d1, d2, d3],
+        [e1, e3, c4, c6, m2, q6],
+        out,
+    )
 }

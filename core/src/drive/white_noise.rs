@@ -8,7 +8,7 @@ use crate::geometry::{Disks, Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
 use crate::rng::Rng;
-use crate::sample::{standard_normal_pair, standard_normal3, standard_normals};
+use crate::sample::{standard_normal_pairs, standard_normal3, standard_normals};
 use crate::vec3::Vec3;
 
 /// White noise of strength `beta >= 0` (GRW (1)).
@@ -58,7 +58,7 @@ impl Drive for WhiteNoise {
 }
 
 /// Kicks the partners `i` and `j` to `t` with strength `two_beta = 2 beta` (GRW (18)): six
-/// normals from three words ([`standard_normals`]), `i`'s three first.
+/// normals from three words ([`standard_normal_pairs`]), `i`'s three first.
 #[inline(always)]
 pub fn white_noise_kick_pair<R: Rng + ?Sized>(
     two_beta: Real,
@@ -68,12 +68,10 @@ pub fn white_noise_kick_pair<R: Rng + ?Sized>(
     rng: &mut R,
 ) {
     let g: [Real; 6] = if cfg!(target_os = "none") {
-        // A loop in a firmware built for size; on hosts the three pairs written out.
+        // A loop in a firmware built for size; on hosts one block of three pairs.
         standard_normals(rng)
     } else {
-        let (a, b) = standard_normal_pair(rng);
-        let (c, d) = standard_normal_pair(rng);
-        let (e, f) = standard_normal_pair(rng);
+        let [(a, b), (c, d), (e, f)] = standard_normal_pairs(rng);
         [a, b, c, d, e, f]
     };
     for (k, g) in [
