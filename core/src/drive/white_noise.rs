@@ -8,7 +8,8 @@ use crate::geometry::{Disks, Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
 use crate::rng::Rng;
-use crate::sample::{standard_normal_pairs, standard_normal3, standard_normals};
+use crate::sample::normal_block::NormalWords;
+use crate::sample::{standard_normal3, standard_normals};
 use crate::vec3::Vec3;
 
 /// White noise of strength `beta >= 0` (GRW (1)).
@@ -58,7 +59,7 @@ impl Drive for WhiteNoise {
 }
 
 /// Kicks the partners `i` and `j` to `t` with strength `two_beta = 2 beta` (GRW (18)): six
-/// normals from three words ([`standard_normal_pairs`]), `i`'s three first.
+/// normals from three words ([`NormalWords`]), `i`'s three first.
 #[inline(always)]
 pub fn white_noise_kick_pair<R: Rng + ?Sized>(
     two_beta: Real,
@@ -71,7 +72,10 @@ pub fn white_noise_kick_pair<R: Rng + ?Sized>(
         // A loop in a firmware built for size; on hosts one block of three pairs.
         standard_normals(rng)
     } else {
-        let [(a, b), (c, d), (e, f)] = standard_normal_pairs(rng);
+        let mut words = NormalWords::<R, 3>::new(rng);
+        let (a, b) = words.pair_at(0);
+        let (c, d) = words.pair_at(1);
+        let (e, f) = words.pair_at(2);
         [a, b, c, d, e, f]
     };
     for (k, g) in [

@@ -18,7 +18,7 @@
 //! assert!(x.is_finite());
 //! ```
 
-use super::normal_block::standard_normal_pairs;
+use super::normal_block::NormalWords;
 use super::squeeze::{Shape, Wedge};
 use super::ziggurat_tables::{NORM_F, NORM_R, NORM_X};
 use crate::math::{Real, abs, exp, ln, one_to_two};
@@ -77,7 +77,7 @@ pub fn standard_normal_pair<R: Rng + ?Sized>(rng: &mut R) -> (Real, Real) {
 /// The ziggurat on a 32-bit half `h`: layer `h & 0xff`, abscissa `u` in (-1, 1) from the high
 /// 24 bits at the midpoints of 2^24 cells.
 #[inline(always)]
-pub(super) fn normal_from_half<R: Rng + ?Sized>(rng: &mut R, h: u32) -> Real {
+fn normal_from_half<R: Rng + ?Sized>(rng: &mut R, h: u32) -> Real {
     let (x, inside, i, m) = half_fast(h);
     if inside {
         return x;
@@ -109,7 +109,7 @@ pub(super) fn half_fast(h: u32) -> (Real, bool, usize, i32) {
 }
 
 /// 2^-24, the spacing of a half's abscissa integer `m` ([`half_fast`]).
-const TWO_POW_M24: Real = 1.0 / 16_777_216.0;
+pub(super) const TWO_POW_M24: Real = 1.0 / 16_777_216.0;
 /// 2^-51, the spacing of a word's abscissa integer ([`standard_normal`]).
 const TWO_POW_M51: Real = 1.0 / 2_251_799_813_685_248.0;
 
@@ -136,7 +136,7 @@ static NORM_X_WORD: [Real; 257] = scaled(TWO_POW_M51);
 /// base strip's tail, or the wedge test, then fresh draws as [`standard_normal`] makes them.
 #[cold]
 #[inline(never)]
-fn normal_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, u: Real, x: Real) -> Real {
+pub(super) fn normal_rejection<R: Rng + ?Sized>(rng: &mut R, i: usize, u: Real, x: Real) -> Real {
     let (mut i, mut u, mut x) = (i, u, x);
     loop {
         if i == 0 {
@@ -205,7 +205,7 @@ pub fn standard_normal3<R: Rng + ?Sized>(rng: &mut R) -> Vec3 {
 }
 
 /// Four vectors of three independent standard normal variates, in order, from six pairs
-/// ([`standard_normal_pair`], drawn as a block on hosts: [`standard_normal_pairs`]): the
+/// ([`standard_normal_pair`], drawn as a block on hosts: [`NormalWords`]): the
 /// normals of a block of four particles' kicks.
 #[inline(always)]
 pub fn standard_normal3x4<R: Rng + ?Sized>(rng: &mut R) -> [Vec3; 4] {
@@ -214,7 +214,13 @@ pub fn standard_normal3x4<R: Rng + ?Sized>(rng: &mut R) -> [Vec3; 4] {
         let g: [Real; 12] = standard_normals(rng);
         return core::array::from_fn(|k| Vec3::new(g[3 * k], g[3 * k + 1], g[3 * k + 2]));
     }
-    let [(a, b), (c, d), (e, f), (g, h), (i, j), (k, l)] = standard_normal_pairs(rng);
+    let mut words = NormalWords::<R, 6>::new(rng);
+    let (a, b) = words.pair_at(0);
+    let (c, d) = words.pair_at(1);
+    let (e, f) = words.pair_at(2);
+    let (g, h) = words.pair_at(3);
+    let (i, j) = words.pair_at(4);
+    let (k, l) = words.pair_at(5);
     [
         Vec3::new(a, b, c),
         Vec3::new(d, e, f),

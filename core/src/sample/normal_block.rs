@@ -22,87 +22,96 @@
 //! assert_eq!(a, b);
 //! ```
 
-use super::normal::{half_fast, normal_from_half};
+use super::normal::{TWO_POW_M24, half_fast, normal_rejection};
 use crate::math::Real;
 use crate::rng::{Rng, halves};
 use core::convert::Infallible;
 
 /// `W` pairs of independent standard normal variates, the same values and the same words as
-/// `W` calls of [`super::standard_normal_pair`] in a row (module docs).
+/// `W` calls of [`super::standard_normal_pair`] in a row (module docs). Hot call sites take
+/// the pairs one by one from a [`NormalWords`] instead: an array of pairs made here may be
+/// assembled in memory, and the loads that read it back as other lanes then stall.
 #[inline(always)]
 pub fn standard_normal_pairs<R: Rng + ?Sized, const W: usize>(rng: &mut R) -> [(Real, Real); W] {
-    let words: [u64; W] = core::array::from_fn(|_| rng.next_u64());
-    let mut out = [(0.0, 0.0); W];
-    let mut inside = true;
-    for (o, &w) in out.iter_mut().zip(&words) {
-        let (hi, lo) = halves(w);
-        let (a, a_in, ..) = half_fast(lo);
-        let (b, b_in, ..) = half_fast(hi);
-        *o = (a, b);
-        inside &= a_in & b_in;
-    }
-    if !inside {
-        resume(rng, words, &mut out);
-    }
-    out
+    let mut block = NormalWords::<R, W>::new(rng);
+    core::array::from_fn(|k| block.pair_at(k))
 }
 
-/// The block from its first half outside its rectangle on, as the pairs drawn one by one
-/// would make it: that half's rejection path reads the words after its own from [`Replay`];
-/// the words it took are gone, so the later pairs take the words after them (and fresh ones
-/// at the end) and their fast paths are evaluated again, until no half is outside.
-#[cold]
-#[inline(never)]
-fn resume<R: Rng + ?Sized, const W: usize>(
-    rng: &mut R,
-    mut words: [u64; W],
-    out: &mut [(Real, Real); W],
-) {
-    let outside = |w: u64| {
-        let (hi, lo) = halves(w);
-        (!half_fast(lo).1, !half_fast(hi).1)
-    };
-    let Some(mut first) = (0..W).find_map(|k| match outside(words[k]) {
-        (true, _) => Some(2 * k),
-        (false, true) => Some(2 * k + 1),
-        _ => None,
-    }) else {
-        return;
-    };
-    loop {
-        let k = first / 2;
-        let mut replay = Replay {
-            ahead: &words[k + 1..],
+/// A block of `W` generator words drawn ahead for normal pairs (module docs): pair `k` of
+/// the block, asked for in order (`k = 0, 1, ..., W - 1`), is the pair the `k`-th call of
+/// [`super::standard_normal_pair`] would give.
+pub struct NormalWords<'a, R: ?Sized, const W: usize> {
+    words: [u64; W],
+    /// The words the rejection paths took so far: pair `k` reads word `k + lag` (of the block
+    /// while there is one, then the generator's).
+    lag: usize,
+    rng: &'a mut R,
+}
+
+impl<'a, R: Rng + ?Sized, const W: usize> NormalWords<'a, R, W> {
+    /// Draws the block's `W` words, one after another.
+    #[inline(always)]
+    pub fn new(rng: &'a mut R) -> Self {
+        NormalWords {
+            words: core::array::from_fn(|_| rng.next_u64()),
+            lag: 0,
             rng,
-        };
-        // The pair of `words[k]`: its low half kept if it was inside (`first` is the high one).
-        let (hi, lo) = halves(words[k]);
-        let a = if first % 2 == 0 {
-            normal_from_half(&mut replay, lo)
+        }
+    }
+
+    /// Pair `k` (asked for in order, module docs): the fast path on the halves of its word, a
+    /// half outside its rectangle by its rejection path from the words after it. Written out
+    /// with constant `k`, the word is read at a fixed place until a rejection took words.
+    #[inline(always)]
+    pub fn pair_at(&mut self, k: usize) -> (Real, Real) {
+        let w = if self.lag == 0 {
+            self.words[k]
         } else {
-            out[k].0
+            self.shifted_word(k)
         };
-        out[k] = (a, normal_from_half(&mut replay, hi));
-        let taken = (W - k - 1) - replay.ahead.len();
-        let mut next = None;
-        for j in k + 1..W {
-            words[j] = if j + taken < W {
-                words[j + taken]
-            } else {
-                rng.next_u64()
-            };
-            let (hi, lo) = halves(words[j]);
-            let (a, a_in, ..) = half_fast(lo);
-            let (b, b_in, ..) = half_fast(hi);
-            out[j] = (a, b);
-            if next.is_none() && !(a_in && b_in) {
-                next = Some(2 * j + usize::from(a_in));
-            }
+        let (hi, lo) = halves(w);
+        let a = self.half(k, lo);
+        (a, self.half(k, hi))
+    }
+
+    /// Word `k + lag` once a rejection path took words.
+    #[cold]
+    #[inline(never)]
+    fn shifted_word(&mut self, k: usize) -> u64 {
+        match self.words.get(k + self.lag) {
+            Some(&w) => w,
+            None => self.rng.next_u64(),
         }
-        match next {
-            Some(f) => first = f,
-            None => return,
+    }
+
+    /// A half of pair `k`'s word: the fast path, or the rejection path.
+    #[inline(always)]
+    fn half(&mut self, k: usize, h: u32) -> Real {
+        let (x, inside, i, m) = half_fast(h);
+        if inside {
+            return x;
         }
+        self.reject(k, (i, m, x))
+    }
+
+    /// The rejection path of a half of pair `k` outside its rectangle (layer `i`, abscissa
+    /// integer `m`, draw `x`), its words from [`Replay`]: the block's after pair `k`'s, then
+    /// the generator's.
+    #[cold]
+    #[inline(never)]
+    fn reject(&mut self, k: usize, (i, m, x): (usize, i32, Real)) -> Real {
+        let from = (k + 1 + self.lag).min(W);
+        let ahead = &self.words[from..];
+        let mut replay = Replay {
+            ahead,
+            rng: &mut *self.rng,
+            drawn: 0,
+        };
+        let x = normal_rejection(&mut replay, i, m as Real * TWO_POW_M24, x);
+        // The words it drew past the block are the generator's own: counted too, since the
+        // later pairs then read the generator.
+        self.lag += ahead.len() - replay.ahead.len() + replay.drawn;
+        x
     }
 }
 
@@ -111,6 +120,8 @@ fn resume<R: Rng + ?Sized, const W: usize>(
 struct Replay<'a, R: ?Sized> {
     ahead: &'a [u64],
     rng: &'a mut R,
+    /// Words drawn from `rng`.
+    drawn: usize,
 }
 
 impl<R: Rng + ?Sized> rand_core::TryRng for Replay<'_, R> {
@@ -126,7 +137,10 @@ impl<R: Rng + ?Sized> rand_core::TryRng for Replay<'_, R> {
                 self.ahead = rest;
                 w
             }
-            None => self.rng.next_u64(),
+            None => {
+                self.drawn += 1;
+                self.rng.next_u64()
+            }
         })
     }
     fn try_fill_bytes(&mut self, dst: &mut [u8]) -> Result<(), Infallible> {
