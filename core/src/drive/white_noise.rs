@@ -8,8 +8,7 @@ use crate::geometry::{Disks, Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
 use crate::rng::Rng;
-use crate::sample::normal_block::NormalWords;
-use crate::sample::{standard_normal3, standard_normals};
+use crate::sample::{standard_normal_pair, standard_normal3, standard_normals};
 use crate::vec3::Vec3;
 
 /// White noise of strength `beta >= 0` (GRW (1)).
@@ -59,7 +58,7 @@ impl Drive for WhiteNoise {
 }
 
 /// Kicks the partners `i` and `j` to `t` with strength `two_beta = 2 beta` (GRW (18)): six
-/// normals from three words ([`NormalWords`]), `i`'s three first.
+/// normals from three words ([`standard_normals`]), `i`'s three first.
 #[inline(always)]
 pub fn white_noise_kick_pair<R: Rng + ?Sized>(
     two_beta: Real,
@@ -69,13 +68,12 @@ pub fn white_noise_kick_pair<R: Rng + ?Sized>(
     rng: &mut R,
 ) {
     let g: [Real; 6] = if cfg!(target_os = "none") {
-        // A loop in a firmware built for size; on hosts one block of three pairs.
+        // A loop in a firmware built for size; on hosts the three pairs written out.
         standard_normals(rng)
     } else {
-        let mut words = NormalWords::<R, 3>::new(rng);
-        let (a, b) = words.pair_at(0);
-        let (c, d) = words.pair_at(1);
-        let (e, f) = words.pair_at(2);
+        let (a, b) = standard_normal_pair(rng);
+        let (c, d) = standard_normal_pair(rng);
+        let (e, f) = standard_normal_pair(rng);
         [a, b, c, d, e, f]
     };
     for (k, g) in [

@@ -10,7 +10,6 @@ pub mod impact;
 pub mod maxwellian;
 pub mod mixture;
 pub mod normal;
-pub mod normal_block;
 pub mod partner;
 pub mod poisson;
 pub mod sphere;
@@ -26,7 +25,6 @@ pub use mixture::MaxwellianMixture;
 pub use normal::{
     standard_normal, standard_normal_pair, standard_normal3, standard_normal3x4, standard_normals,
 };
-pub use normal_block::standard_normal_pairs;
 pub use partner::BackgroundPartner;
 pub use poisson::poisson;
 pub use sphere::unit_sphere;
