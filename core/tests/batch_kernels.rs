@@ -3,6 +3,7 @@
 use crate::common;
 use common::*;
 use gdsmc_core::batch::kick::*;
+use gdsmc_core::batch::lanes::{Lanes, central_lanes};
 use gdsmc_core::batch::sums::*;
 use gdsmc_core::batch::sync::*;
 use gdsmc_core::moments::Observables;

@@ -3,13 +3,13 @@
 //! `wide::f64x4` is two halves and the loop's 15 four-lane accumulators spill).
 //!
 //! The same lanes, the same operations in the same order, no fused multiply-add: lane `k` sums
-//! particles `4 b + k`, each lane's value is the one [`super::sums::central_lanes`] computes,
+//! particles `4 b + k`, each lane's value is the one [`super::lanes::central_lanes`] computes,
 //! bit for bit (tested against it). Detection is CPUID's AVX and OSXSAVE bits and XCR0's SSE
 //! and AVX state bits (the operating system saves the registers), read once.
 
 #![allow(unsafe_code)]
 
-use super::sums::Lanes;
+use super::lanes::Lanes;
 use crate::particles::Particle;
 use crate::vec3::Vec3;
 use core::arch::x86_64::{

@@ -8,6 +8,7 @@
 //! ([`lanes_avx`]), with the same bits.
 
 pub mod kick;
+pub mod lanes;
 #[cfg(target_arch = "x86_64")]
 pub mod lanes_avx;
 pub mod sums;
