@@ -110,6 +110,7 @@ fn half_fast(h: u32) -> (Real, bool, usize, i32) {
 /// 2^-24, the spacing of a half's abscissa integer `m` ([`half_fast`]).
 const TWO_POW_M24: Real = 1.0 / 16_777_216.0;
 /// 2^-51, the spacing of a word's abscissa integer ([`standard_normal`]).
+#[cfg(not(target_os = "none"))]
 const TWO_POW_M51: Real = 1.0 / 2_251_799_813_685_248.0;
 
 /// `NORM_X` times `scale` (a power of two: exact), at compile time.
