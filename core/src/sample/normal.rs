@@ -94,17 +94,23 @@ fn normal_from_half<R: Rng + ?Sized>(rng: &mut R, h: u32) -> Real {
 fn half_fast(h: u32) -> (Real, bool, usize, i32) {
     let i = (h & 0xff) as usize;
     let m = (((h ^ 0x8000_0000) as i32) >> 7) | 1;
-    // A firmware builds `u` from the half's bits (`2 (1 + (k + 1/2) 2^-24) - 3`, exact) and
-    // multiplies it by `X_i`: the same product without the scaled table, which would not fit
-    // the micro:bit's flash.
+    // A firmware multiplies `X_i` by `u` built from the half's bits: the same product without
+    // the scaled table, which would not fit the micro:bit's flash.
     #[cfg(target_os = "none")]
-    let x = {
-        let f = f64::from_bits(((h >> 8) as u64) << 28 | 1 << 27 | 0x3ff0_0000_0000_0000);
-        (2.0 * f - 3.0) * NORM_X[i]
-    };
+    let x = half_abscissa_from_bits(h) * NORM_X[i];
     #[cfg(not(target_os = "none"))]
     let x = m as Real * NORM_X_HALF[i];
     (x, abs(x) < NORM_X[i + 1], i, m)
+}
+
+/// A half's abscissa `u = 2 (1 + (k + 1/2) 2^-24) - 3` for its high 24 bits `k`, built from
+/// the bits of `1 + (k + 1/2) 2^-24` (exact): the written form the firmware keeps, and the
+/// tests' reference for [`half_fast`]'s integer.
+#[cfg(any(target_os = "none", test))]
+#[inline(always)]
+fn half_abscissa_from_bits(h: u32) -> Real {
+    let f = f64::from_bits(((h >> 8) as u64) << 28 | 1 << 27 | 0x3ff0_0000_0000_0000);
+    2.0 * f - 3.0
 }
 
 /// 2^-24, the spacing of a half's abscissa integer `m` ([`half_fast`]).
@@ -246,11 +252,10 @@ mod tests {
     use super::*;
     use crate::rng::{Rng, seeded};
 
-    /// The fast path as stream version 2 first wrote it: `u = 2 f - 3` from the bits of
-    /// `f = 1 + (k + 1/2) 2^-24`, then `u X_i`.
+    /// The fast path as stream version 2 first wrote it: `u` from the half's bits, then
+    /// `u X_i`.
     fn half_as_written(h: u32) -> Real {
-        let f = f64::from_bits(((h >> 8) as u64) << 28 | 1 << 27 | 0x3ff0_0000_0000_0000);
-        (2.0 * f - 3.0) * NORM_X[(h & 0xff) as usize]
+        half_abscissa_from_bits(h) * NORM_X[(h & 0xff) as usize]
     }
 
     fn word_as_written(bits: u64) -> Real {
@@ -261,8 +266,7 @@ mod tests {
         let (x, inside, i, m) = half_fast(h);
         assert_eq!(x.to_bits(), half_as_written(h).to_bits(), "{h:#x}");
         assert_eq!(inside, abs(half_as_written(h)) < NORM_X[i + 1]);
-        let f = f64::from_bits(((h >> 8) as u64) << 28 | 1 << 27 | 0x3ff0_0000_0000_0000);
-        assert_eq!(m as Real * TWO_POW_M24, 2.0 * f - 3.0);
+        assert_eq!(m as Real * TWO_POW_M24, half_abscissa_from_bits(h));
     }
 
     #[test]
