@@ -5,6 +5,7 @@
 //! cell's sample lies where its particles were (grouping by speed alone mixes directions).
 
 use super::group::Tally;
+use super::packed::weight;
 use crate::geometry::DimensionChoice;
 use crate::math::Real;
 use crate::particles::Particle;
@@ -22,16 +23,31 @@ fn component(p: &Particle, k: usize) -> Real {
 /// Reduces the packed records `buf[a..b]` ([`super::packed`]) cell by cell (module docs; each
 /// cell's sample marked and counted in `tally`, [`Tally::replace`]), writing what is left from
 /// `buf[*out]` on (`*out <= a`: what a call writes never passes what it has read) and
-/// advancing `*out`. A cell is small when `small(cell)` holds or it has at most 2 particles.
+/// advancing `*out`. A cell is small when `small(len, weight)` holds of its number of
+/// particles and their weight (summed in order), or it has at most 2 particles.
 pub(crate) fn reduce_cells<R: Rng + ?Sized>(
     buf: &mut [Particle],
     (a, b): (usize, usize),
     out: &mut usize,
-    small: &impl Fn(&[Particle]) -> bool,
+    small: &impl Fn(usize, Real) -> bool,
     (tally, dim, rng): (&mut Tally, DimensionChoice, &mut R),
 ) {
     debug_assert!(*out <= a);
-    if b - a <= 2 || small(&buf[a..b]) {
+    // Every component's range and the weight in one pass over the cell (a comparison each,
+    // not `f64::min`'s NaN handling: no velocity is NaN).
+    let (mut lo, mut hi, mut w) = ([Real::INFINITY; 3], [Real::NEG_INFINITY; 3], 0.0);
+    for p in &buf[a..b] {
+        for (k, x) in [p.vx, p.vy, p.vz].into_iter().enumerate() {
+            if x < lo[k] {
+                lo[k] = x;
+            }
+            if x > hi[k] {
+                hi[k] = x;
+            }
+        }
+        w += weight(p);
+    }
+    if b - a <= 2 || small(b - a, w) {
         if b - a >= 3 {
             let (first, second) = tally.replace(&mut buf[a..b], rng);
             buf[*out] = first;
@@ -47,14 +63,6 @@ pub(crate) fn reduce_cells<R: Rng + ?Sized>(
             }
         }
         return;
-    }
-    // Every component's range in one pass over the cell.
-    let (mut lo, mut hi) = ([Real::INFINITY; 3], [Real::NEG_INFINITY; 3]);
-    for p in &buf[a..b] {
-        for (k, x) in [p.vx, p.vy, p.vz].into_iter().enumerate() {
-            lo[k] = lo[k].min(x);
-            hi[k] = hi[k].max(x);
-        }
     }
     let spread = [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]];
     let axis = (1..dim.d()).fold(0, |best, k| if spread[k] > spread[best] { k } else { best });

@@ -57,6 +57,33 @@ fn draw_two<R: Rng + ?Sized>(group: &[Particle], w: Real, rng: &mut R) -> (usize
     (found[0], found[1])
 }
 
+/// Puts `group` in order of speed about `flow` (ties as they were): a cell of at most 20 by
+/// an insertion sort on the squared speeds computed once (the order the standard library's
+/// unstable sort gives such short slices, by the same comparison), a longer one by that sort.
+fn by_speed(group: &mut [Particle], flow: Vec3) {
+    const SHORT: usize = 20;
+    let speed2 = |x: &Particle| (x.velocity() - flow).norm2();
+    if group.len() > SHORT {
+        group.sort_unstable_by(|p, q| speed2(p).total_cmp(&speed2(q)));
+        return;
+    }
+    let mut keys = [0.0; SHORT];
+    for (k, p) in keys.iter_mut().zip(group.iter()) {
+        *k = speed2(p);
+    }
+    for i in 1..group.len() {
+        let (key, record) = (keys[i], group[i]);
+        let mut j = i;
+        while j > 0 && key.total_cmp(&keys[j - 1]).is_lt() {
+            keys[j] = keys[j - 1];
+            group[j] = group[j - 1];
+            j -= 1;
+        }
+        keys[j] = key;
+        group[j] = record;
+    }
+}
+
 /// Marked records farther than this many standard deviations of the draws from their mean
 /// keep their velocities, and the rest carry the correction ([`Tally::conserve`]): a global
 /// scale about the mean moves a far, light record by its distance times `lambda - 1`, and
@@ -125,11 +152,7 @@ impl Tally {
         group: &mut [Particle],
         rng: &mut R,
     ) -> (Particle, Option<Particle>) {
-        let flow = self.flow;
-        group.sort_unstable_by(|p, q| {
-            let speed2 = |x: &Particle| (x.velocity() - flow).norm2();
-            speed2(p).total_cmp(&speed2(q))
-        });
+        by_speed(group, self.flow);
         let w: Real = group.iter().map(weight).sum();
         for p in group.iter() {
             self.before.add(weight(p), p.velocity() - self.flow);
@@ -272,6 +295,39 @@ mod tests {
                 "member {k}: {mean} vs {}",
                 g[k]
             );
+        }
+    }
+
+    /// [`by_speed`] orders a cell as the standard library's unstable sort by the same
+    /// comparison does (the order the reduction had before it computed each speed once), for
+    /// every length up to past the insertion sort's 20, with ties: copies at one velocity (the
+    /// windows' pieces) and records of one speed in different directions. A sort that was not
+    /// stable on ties, or a comparison of the wrong speed, fails.
+    #[test]
+    fn cells_are_ordered_as_the_library_sort_orders_them() {
+        let mut rng = Streams::new(13).next().unwrap();
+        let flow = Vec3::new(0.25, -0.5, 0.125);
+        for len in 1..=26 {
+            for _ in 0..200 {
+                let mut cell = [Particle::default(); 26];
+                for (k, record) in cell[..len].iter_mut().enumerate() {
+                    let x = (uniform01(&mut rng) * 4.0) as usize as Real;
+                    *record = match (uniform01(&mut rng) * 3.0) as usize {
+                        // Speed x about the flow along x or along y: a tie of speeds.
+                        0 => packed(flow + Vec3::new(x, 0.0, 0.0), k as Real + 1.0),
+                        1 => packed(flow + Vec3::new(0.0, x, 0.0), k as Real + 1.0),
+                        _ => packed(flow + Vec3::new(x, 0.5, 0.0), k as Real + 1.0),
+                    };
+                }
+                let mut ours = cell;
+                by_speed(&mut ours[..len], flow);
+                let mut library = cell;
+                library[..len].sort_unstable_by(|p, q| {
+                    let s = |x: &Particle| (x.velocity() - flow).norm2();
+                    s(p).total_cmp(&s(q))
+                });
+                assert_eq!(&ours[..len], &library[..len], "length {len}");
+            }
         }
     }
 

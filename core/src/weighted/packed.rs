@@ -22,14 +22,15 @@ pub(crate) fn packed(v: Vec3, g: Real) -> Particle {
     Particle::new(v, g)
 }
 
-/// Each weighted particle's weight into its record's last-kick slot; the records in use.
-pub(crate) fn pack<'b>(p: &'b mut Particles<'_>) -> (&'b mut [Particle], usize) {
+/// Each weighted particle's weight into its record's last-kick slot: the records, the
+/// weights' slice (free until [`unpack`]: scratch, one number a record) and the records in use.
+pub(crate) fn pack<'b>(p: &'b mut Particles<'_>) -> (&'b mut [Particle], &'b mut [Real], usize) {
     let len = p.len();
     let (records, weights) = p.buffers_mut();
     for (q, &g) in records[..len].iter_mut().zip(&weights[..len]) {
         q.t_kick = g;
     }
-    (records, len)
+    (records, weights, len)
 }
 
 /// Keeps the first `len` packed records, their weights back in their slice, every last-kick

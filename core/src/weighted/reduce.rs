@@ -29,10 +29,10 @@ pub fn reduce<R: Rng + ?Sized>(
 ) -> usize {
     let group = group.max(3);
     let mut out = 0;
-    let small = |c: &[Particle]| c.len() <= group;
+    let small = |len: usize, _| len <= group;
     let flow = (1.0 / p.mass()) * momentum(p);
     let mut tally = Tally::new(flow);
-    let (buf, len) = pack(p);
+    let (buf, _, len) = pack(p);
     reduce_cells(
         buf,
         (0, len),
@@ -135,13 +135,25 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
 ) -> usize {
     let flow = (1.0 / p.mass()) * momentum(p);
     let mut tally = Tally::new(flow);
-    let (buf, len) = pack(p);
-    // Shells of equal width in speed up to the fastest particle, their bounds and weights
-    // taken before any is rewritten.
-    let alloc = Allocation::of_packed(&buf[..len], flow, (target, shells, q, floor));
+    let (buf, scratch, len) = pack(p);
+    let (records, keys) = (&mut buf[..len], &mut scratch[..len]);
+    // Each record's speed about the flow once (the scratch slot), the shells of equal width up
+    // to the fastest and their weights from them, before any record is rewritten; then each
+    // record's shell in the same slot, the key of the counting sort.
+    for (c, q) in keys.iter_mut().zip(records.iter()) {
+        *c = sqrt((q.velocity() - flow).norm2());
+    }
+    let top = keys.iter().copied().fold(0.0, crate::math::max);
+    let speeds = keys
+        .iter()
+        .zip(records.iter())
+        .map(|(&c, q)| (c, weight(q)));
+    let alloc = Allocation::measure(speeds, flow, top, (target, shells, q, floor));
     let shells = alloc.shells;
-    let shell_of = |p: &Particle| alloc.shell(sqrt((p.velocity() - flow).norm2()));
-    let edges = by_shell(&mut buf[..len], shells, &shell_of);
+    for c in keys.iter_mut() {
+        *c = alloc.shell(*c) as Real;
+    }
+    let edges = by_shell(records, keys, shells);
     let mut out = 0;
     for s in 0..shells {
         let (a, b) = (edges[s], edges[s + 1]);
@@ -149,7 +161,7 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
             continue;
         }
         let each = alloc.each[s];
-        let small = |c: &[Particle]| c.iter().map(weight).sum::<Real>() <= CELL_WEIGHT * each;
+        let small = |_, w: Real| w <= CELL_WEIGHT * each;
         reduce_cells(buf, (a, b), &mut out, &small, (&mut tally, dim, &mut *rng));
     }
     tally.conserve(buf, &mut out, dim, rng);
@@ -157,18 +169,14 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
     out
 }
 
-/// Orders `buf` by shell (`shell_of`, below `shells`) in place, in linear time (a counting sort
-/// that permutes in cycles: each record is moved at most once into its shell's run); the
-/// order within a shell is left as it falls. Returns the runs' bounds: shell `s` is
-/// `edges[s]..edges[s + 1]`.
-fn by_shell(
-    buf: &mut [Particle],
-    shells: usize,
-    shell_of: &impl Fn(&Particle) -> usize,
-) -> [usize; MAX_SHELLS + 1] {
+/// Orders `buf` by shell in place (`keys[i]` the shell of `buf[i]`, below `shells`, as a
+/// number; permuted along), in linear time (a counting sort that permutes in cycles: each
+/// record is moved at most once into its shell's run); the order within a shell is left as
+/// it falls. Returns the runs' bounds: shell `s` is `edges[s]..edges[s + 1]`.
+fn by_shell(buf: &mut [Particle], keys: &mut [Real], shells: usize) -> [usize; MAX_SHELLS + 1] {
     let mut edges = [0; MAX_SHELLS + 1];
-    for p in buf.iter() {
-        edges[shell_of(p) + 1] += 1;
+    for &k in keys.iter() {
+        edges[k as usize + 1] += 1;
     }
     for s in 0..shells {
         edges[s + 1] += edges[s];
@@ -176,11 +184,12 @@ fn by_shell(
     let mut next = edges;
     for s in 0..shells {
         while next[s] < edges[s + 1] {
-            let k = shell_of(&buf[next[s]]);
+            let k = keys[next[s]] as usize;
             if k == s {
                 next[s] += 1;
             } else {
                 buf.swap(next[s], next[k]);
+                keys.swap(next[s], next[k]);
                 next[k] += 1;
             }
         }

@@ -17,9 +17,7 @@
 //! change of state at an event's instant, after the event (the next waiting time is drawn at
 //! the new rate, as after a reduction), so the process stays exact.
 
-use super::packed::weight;
 use crate::math::{Real, sqrt};
-use crate::particles::Particle;
 use crate::vec3::Vec3;
 
 /// The most speed shells an allocation cuts ([`Allocation`]).
@@ -47,24 +45,6 @@ pub struct Allocation {
 }
 
 impl Allocation {
-    /// The allocation of `target` particles over `shells` shells (at most [`MAX_SHELLS`]), a
-    /// share `floor` equally and the rest by the weights to the power `q` (module docs), of
-    /// the packed records `buf` ([`super::packed`]) about `flow`.
-    pub(crate) fn of_packed(
-        buf: &[Particle],
-        flow: Vec3,
-        (target, shells, q, floor): (usize, usize, Real, Real),
-    ) -> Self {
-        let speed = |p: &Particle| sqrt((p.velocity() - flow).norm2());
-        let top = buf.iter().map(speed).fold(0.0, crate::math::max);
-        Self::measure(
-            buf.iter().map(|p| (speed(p), weight(p))),
-            flow,
-            top,
-            (target, shells, q, floor),
-        )
-    }
-
     /// The allocation of the `(speed about flow, weight)` of every particle, the fastest `top`.
     pub(crate) fn measure(
         particles: impl Iterator<Item = (Real, Real)>,
