@@ -143,7 +143,7 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
     for (c, q) in keys.iter_mut().zip(records.iter()) {
         *c = sqrt((q.velocity() - flow).norm2());
     }
-    let top = keys.iter().copied().fold(0.0, crate::math::max);
+    let top = (keys.iter()).fold(0.0, |top, &c| if c > top { c } else { top });
     let speeds = keys
         .iter()
         .zip(records.iter())
