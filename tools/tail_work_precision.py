@@ -63,6 +63,8 @@ CONFIGS = [
     ("windows n0=1024 q=0", 1024, 250, over(WINDOWS, "scheme.exponent=0", "scheme.floor=0")),
     ("windows n0=1024 target 4", 1024, 250,
      over(WINDOWS, "scheme.target=4", "scheme.capacity=8")),
+    ("windows n0=1024 capacity 8", 1024, 250, over(WINDOWS, "scheme.capacity=8")),
+    ("windows n0=1024 capacity 16", 1024, 250, over(WINDOWS, "scheme.capacity=16")),
     ("windows and tail transfer n0=1024 q=0", 1024, 250,
      over(TAIL, "scheme.split=2", "scheme.exponent=0")),
 ]
