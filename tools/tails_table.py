@@ -3,7 +3,8 @@
 
 Usage: python3 tools/tails_table.py DIR6 DIR7 DIR8
 Each DIR is the output directory of `gdsmc run scenes/grw-exampleK.toml --n 10000000
---ensembles 100` (summary.json, observables.csv). Prints one Markdown row per example that
+--ensembles 100` (summary.json, observables.csv, histograms.csv: the shells' width is the
+run's own). Prints one Markdown row per example that
 has finished: the fitted exponent (GRW Section 4.3, k0 = 1) with its 99.9% interval, the
 slopes of the fit's inner and outer halves, GRW (16)'s asymptote 1 + lambda/2, the final
 temperature, the speed range of the fitted shells in thermal units, and the cost.
@@ -15,8 +16,6 @@ import os
 import sys
 
 LAMBDA = {"6": 0.0, "7": 1.0, "8": 0.5}
-RADIUS = {"6": 40.0, "7": 16.0, "8": 24.0}
-SHELLS = 128
 
 
 def row(ex, d):
@@ -24,7 +23,10 @@ def row(ex, d):
     t = s["tail"]
     obs = list(csv.DictReader(open(os.path.join(d, "observables.csv"))))
     temp = float(obs[-1]["T"])
-    h = RADIUS[ex] / SHELLS
+    # The run's own shells (a run may set histogram.radius or shells): the finite edges.
+    edges = [float(r["r_hi"]) for r in csv.DictReader(open(os.path.join(d, "histograms.csv")))
+             if math.isfinite(float(r["r_hi"]))]
+    h = max(edges) / len(edges)
     inner, outer = t["halves"]["inner"], t["halves"]["outer"]
     k_lo, k_hi = inner["shells"][0], outer["shells"][1]
     # Shell k (1-based, GRW (31)) ends at r_k = k h.

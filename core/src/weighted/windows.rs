@@ -15,7 +15,9 @@
 //! delta_v` itself (not only in expectation): every weighted sum, the mass, momentum and
 //! energy, to rounding. The copies then part by their own collisions and kicks. A split is a
 //! change of state at an event's instant, after the event (the next waiting time is drawn at
-//! the new rate, as after a reduction), so the process stays exact.
+//! the new rate, as after a reduction), so the process stays exact. The loop also passes every
+//! particle through the windows at every refresh, where they are measured again
+//! ([`super::nosplit`]'s `split` module).
 
 use crate::math::{Real, sqrt};
 use crate::vec3::Vec3;

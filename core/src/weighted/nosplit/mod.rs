@@ -269,11 +269,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         let mut o = observables(sys, G::CHOICE.d());
         self.rescale(sys, &mut o)?;
         // Every particle through the windows (the measure, and so what was observed, is kept).
-        if self.windows.is_some() {
-            for i in 0..sys.len() {
-                self.split(sys, i);
-            }
-        }
+        self.split_all(sys);
         self.physical(sys, &o)
     }
 
@@ -397,6 +393,8 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
                 self.synchronize(sys, rng);
             }
             self.refresh(sys)?;
+            // Every particle through the new windows ([`split`]: the shares moved).
+            self.split_all(sys);
             // A cooling gas between observations: its temperature about vref from the refresh.
             if !D::ACTS && rescale_due(self.tref, self.vref, RESCALE_BELOW) {
                 let mut o = observables(sys, G::CHOICE.d());
