@@ -119,7 +119,8 @@ impl Reduction {
 }
 
 /// Reduces the weighted particles `p` (all at time `t`) toward `target` particles: sorted by speed about the flow and cut into
-/// `shells` shells of equal width in speed up to the fastest, shell `s` of weight `W_s` is
+/// `shells` shells of equal width in speed up to the fastest (or to
+/// [`super::windows::REACH`] thermal speeds, the last shell holding the particles beyond), shell `s` of weight `W_s` is
 /// given `K_s = target (phi / S + (1 - phi) W_s^q / sum W^q)` particles (`q` the `exponent`,
 /// `phi` the `floor`, `S` the occupied shells; super::windows::Allocation), so each particle it keeps
 /// weighs about `w_s = W_s / K_s`; its particles are split into cells of nearby velocities
@@ -138,17 +139,23 @@ pub fn reduce_allocated<R: Rng + ?Sized>(
     let (buf, scratch, len) = pack(p);
     let (records, keys) = (&mut buf[..len], &mut scratch[..len]);
     // Each record's speed about the flow once (the scratch slot), the shells of equal width up
-    // to the fastest and their weights from them, before any record is rewritten; then each
+    // to the fastest (or the reach) and their weights from them, before any record is rewritten; then each
     // record's shell in the same slot, the key of the counting sort.
     for (c, q) in keys.iter_mut().zip(records.iter()) {
         *c = sqrt((q.velocity() - flow).norm2());
     }
-    let top = (keys.iter()).fold(0.0, |top, &c| if c > top { c } else { top });
+    let (mut top, mut s2, mut mass) = (0.0, 0.0, 0.0);
+    for (&c, q) in keys.iter().zip(records.iter()) {
+        top = if c > top { c } else { top };
+        s2 += weight(q) * c * c;
+        mass += weight(q);
+    }
+    let thermal = sqrt(s2 / (mass * dim.d() as Real));
     let speeds = keys
         .iter()
         .zip(records.iter())
         .map(|(&c, q)| (c, weight(q)));
-    let alloc = Allocation::measure(speeds, flow, top, (target, shells, q, floor));
+    let alloc = Allocation::measure(speeds, flow, (top, thermal), (target, shells, q, floor));
     let shells = alloc.shells;
     for c in keys.iter_mut() {
         *c = alloc.shell(*c) as Real;

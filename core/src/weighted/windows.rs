@@ -6,7 +6,8 @@
 //! the particle system: particles where the quantity of interest is, lighter).
 //!
 //! The shares are the allocated reduction's ([`super::reduce::reduce_allocated`]): the speed
-//! shells of equal width about the flow up to the fastest particle, shell `s` of weight `W_s`
+//! shells of equal width about the flow up to the fastest particle (or to [`REACH`] thermal
+//! speeds, the last shell holding every particle beyond), shell `s` of weight `W_s`
 //! given `K_s = target (phi / S + (1 - phi) W_s^q / sum W^q)` particles (`S` the occupied
 //! shells: a share `phi` of the particles spread equally, so that the thin tail keeps some
 //! however light it is, the rest by a power of the weight, so that the core keeps most),
@@ -24,6 +25,23 @@ use crate::vec3::Vec3;
 
 /// The most speed shells an allocation cuts ([`Allocation`]).
 pub const MAX_SHELLS: usize = 64;
+
+/// How far the speed shells reach about the flow, in thermal speeds `sqrt(<|v - V|^2>/d)`
+/// (the weighted mean): the shells are of equal width up to the fastest particle or to this,
+/// whichever is nearer, and a particle beyond is in the last shell.
+///
+/// Up to the fastest alone, the shells were as wide as the tail was long. In the inelastic
+/// Maxwell gas's cooling state, whose tail is a power law `c^-(d + s)` (Ernst and Brito 2002),
+/// the light particles the windows make reach far beyond the speeds a run observes (the weight
+/// beyond 28 thermal speeds was about 3e-10 of the whole), and the 32 shells then put the
+/// tail's first decades of probability into one or two shells of one share each: the local
+/// slope over `[x, 2x]` was resolved only to `x = 3` (`c = |v - V|/sqrt(2 T)`; at alpha = 1/2,
+/// d = 3), 8% below the exact root, and 30-80 times less efficient than equal weights. Up to
+/// 32 thermal speeds (the shells a thermal speed wide) it is resolved to `x = 10` within 0.3%
+/// of the root (docs/weighted.md "The cooling state's tail exponent"). Runs whose fastest
+/// particle stays within 32 thermal speeds (the heated gases' tails, which fall faster than
+/// any power) are unchanged bit for bit.
+pub const REACH: Real = 32.0;
 
 /// The most pieces one split makes (a particle still heavier than its window is split again
 /// when it is next touched).
@@ -47,13 +65,17 @@ pub struct Allocation {
 }
 
 impl Allocation {
-    /// The allocation of the `(speed about flow, weight)` of every particle, the fastest `top`.
+    /// The allocation of the `(speed about flow, weight)` of every particle, the fastest at
+    /// `fastest` and their thermal speed `thermal` (the shells reach the nearer of `fastest`
+    /// and [`REACH`] `thermal`).
     pub(crate) fn measure(
         particles: impl Iterator<Item = (Real, Real)>,
         flow: Vec3,
-        top: Real,
+        (fastest, thermal): (Real, Real),
         (target, shells, q, floor): (usize, usize, Real, Real),
     ) -> Self {
+        let reach = REACH * thermal;
+        let top = if fastest > reach { reach } else { fastest };
         let shells = shells.clamp(1, MAX_SHELLS);
         let per = if top > 0.0 { shells as Real / top } else { 0.0 };
         let mut a = Allocation {
@@ -170,24 +192,58 @@ mod tests {
     #[test]
     fn the_shares_are_the_allocated_reductions() {
         let parts = [(0.5, 8.0), (2.5, 2.0), (4.0, 1.0)];
-        let a = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (6, 4, 0.0, 0.0));
+        let a = Allocation::measure(parts.into_iter(), Vec3::ZERO, (4.0, 1.0), (6, 4, 0.0, 0.0));
         assert_eq!(a.per, 1.0);
         assert_eq!(&a.weights[..4], &[8.0, 0.0, 2.0, 1.0]);
         assert_eq!(&a.each[..4], &[4.0, 4.0, 1.0, 0.5]);
-        let b = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (11, 4, 1.0, 0.0));
+        let b = Allocation::measure(parts.into_iter(), Vec3::ZERO, (4.0, 1.0), (11, 4, 1.0, 0.0));
         for s in [0, 2, 3] {
             assert!((b.each[s] - 1.0).abs() < 1e-15, "{s}: {}", b.each[s]);
         }
         // A floor of 1/2 at q = 1: 11/2 particles by weight (each shell's share of them
         // 11/2 W_s/11) and 11/6 to each occupied shell: K = 4 + 11/6, 11/6, 1/2 + 11/6.
-        let f = Allocation::measure(parts.into_iter(), Vec3::ZERO, 4.0, (11, 4, 1.0, 0.5));
+        let f = Allocation::measure(parts.into_iter(), Vec3::ZERO, (4.0, 1.0), (11, 4, 1.0, 0.5));
         let k = [4.0 + 11.0 / 6.0, 1.0 + 11.0 / 6.0, 0.5 + 11.0 / 6.0];
         for (s, (w, k)) in [(0, (8.0, k[0])), (2, (2.0, k[1])), (3, (1.0, k[2]))] {
             assert!((f.each[s] - w / k).abs() < 1e-14, "{s}: {}", f.each[s]);
         }
         // Empty shells below the slowest occupied one take its share.
-        let c = Allocation::measure([(3.5, 1.0)].into_iter(), Vec3::ZERO, 4.0, (2, 4, 0.0, 0.0));
+        let c = Allocation::measure(
+            [(3.5, 1.0)].into_iter(),
+            Vec3::ZERO,
+            (4.0, 1.0),
+            (2, 4, 0.0, 0.0),
+        );
         assert_eq!(&c.each[..4], &[0.5; 4]);
+    }
+
+    /// The shells reach [`REACH`] thermal speeds when the fastest particle is farther: a light
+    /// particle far out no longer widens every shell, and it shares the last shell's share.
+    #[test]
+    fn the_shells_reach_so_many_thermal_speeds() {
+        let parts = [(0.5, 8.0), (2.5, 2.0), (4.0, 1.0), (1000.0, 1e-9)];
+        let a = Allocation::measure(
+            parts.into_iter(),
+            Vec3::ZERO,
+            (1000.0, 1.0),
+            (6, 32, 0.0, 0.0),
+        );
+        assert_eq!(a.per, 32.0 / REACH, "shells of a thermal speed");
+        assert_eq!(a.shell(2.5), 2);
+        assert_eq!(a.shell(1000.0), 31, "beyond the reach: the last shell");
+        assert_eq!(a.weights[31], 1e-9);
+        let near = Allocation::measure(
+            parts.into_iter(),
+            Vec3::ZERO,
+            (1000.0, 100.0),
+            (6, 32, 0.0, 0.0),
+        );
+        assert_eq!(
+            near.per,
+            32.0 / 1000.0,
+            "within the reach: up to the fastest"
+        );
+        assert_eq!(near.shell(4.0), 0);
     }
 
     /// A particle is split when heavier than `split` times its shell's share, into
@@ -197,7 +253,7 @@ mod tests {
         let flow = Vec3::new(10.0, 0.0, 0.0);
         let parts = [(0.5, 8.0), (2.5, 2.0), (4.0, 1.0)];
         let w = Windows::new(
-            Allocation::measure(parts.into_iter(), flow, 4.0, (6, 4, 0.0, 0.0)),
+            Allocation::measure(parts.into_iter(), flow, (4.0, 1.0), (6, 4, 0.0, 0.0)),
             2.0,
         );
         let at = |c: Real| flow + Vec3::new(0.0, c, 0.0);

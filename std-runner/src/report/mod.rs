@@ -181,7 +181,9 @@ pub fn commit_run(
 /// ([`crate::analysis::power_tail`]), a row per window `[from, to = 2 from]`: `beyond,
 /// beyond_ci` (`P(c >= to)` and its 99.9% half-width), `slope, slope_ci`, `resolved` (1 when
 /// `P(c >= to)` is resolved), `measured` (1 on the window whose slope is the measured
-/// exponent), `exact` (the exact exponent, empty without one).
+/// exponent), `extrapolated, extrapolated_ci` (`s(x) + (s(x) - s(x/2))/3` from this window's
+/// slope and that of `[from/2, from]`, empty where `from/2` is no edge), `judged` (1 on the
+/// window whose extrapolation is judged), `exact` (the exact exponent, empty without one).
 pub fn power_tail_csv(t: &crate::analysis::power_tail::PowerTail) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
@@ -193,11 +195,20 @@ pub fn power_tail_csv(t: &crate::analysis::power_tail::PowerTail) -> Result<Vec<
         "slope_ci",
         "resolved",
         "measured",
+        "extrapolated",
+        "extrapolated_ci",
+        "judged",
         "exact",
     ])?;
     let exact = t.exact.map_or(String::new(), |s| format!("{s:?}"));
     for sl in &t.slopes {
         let measured = t.measured.is_some_and(|m| m.from == sl.from);
+        let judged = t.judged.is_some_and(|m| m.from == sl.from);
+        let (e, e_ci) = sl
+            .extrapolated
+            .map_or((String::new(), String::new()), |(v, ci)| {
+                (format!("{v:?}"), format!("{ci:?}"))
+            });
         w.write_record([
             format!("{:?}", sl.from),
             format!("{:?}", sl.to),
@@ -207,6 +218,9 @@ pub fn power_tail_csv(t: &crate::analysis::power_tail::PowerTail) -> Result<Vec<
             format!("{:?}", sl.ci),
             u8::from(sl.resolved).to_string(),
             u8::from(measured).to_string(),
+            e,
+            e_ci,
+            u8::from(judged).to_string(),
             exact.clone(),
         ])?;
     }

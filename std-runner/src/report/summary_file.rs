@@ -186,10 +186,18 @@ pub struct PowerTail {
     pub exponent: Option<f64>,
     /// Its 99.9% half-width.
     pub exponent_ci: Option<f64>,
+    /// The exponent extrapolated from the local slopes of the farthest resolved window `[x,
+    /// 2x]` whose `x/2` is an edge and of `[x/2, x]`: `s(x) + (s(x) - s(x/2))/3` (their `x^-2`
+    /// approach removed).
+    pub extrapolated: Option<f64>,
+    /// Its 99.9% half-width.
+    pub extrapolated_ci: Option<f64>,
+    /// Its outer window `[x, 2x]`.
+    pub extrapolated_window: Option<[f64; 2]>,
     /// The exact exponent, when the scene's model has one.
     pub exact: Option<f64>,
-    /// The verdict: the exact root within the interval (none without both or when the
-    /// interval is as wide as the value).
+    /// The verdict: the exact root within the extrapolated exponent's interval (none without
+    /// both or when the interval is as wide as the value).
     pub agrees: Option<bool>,
     /// The file holding every window's slope.
     pub file: &'static str,
@@ -281,6 +289,9 @@ impl Summary {
                 window: t.measured.map(|m| [m.from, m.to]),
                 exponent: t.measured.map(|m| m.value),
                 exponent_ci: t.measured.map(|m| m.ci),
+                extrapolated: t.exponent().map(|e| e.0),
+                extrapolated_ci: t.exponent().map(|e| e.1),
+                extrapolated_window: t.judged.map(|j| [j.from, j.to]),
                 exact: t.exact,
                 agrees: t.agrees(),
                 file: "power_tail.csv",

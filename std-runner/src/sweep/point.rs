@@ -135,8 +135,8 @@ pub fn window(scene: &crate::scene::Scene) -> (Window, std::ops::Range<usize>) {
 
 /// Each reference that applies to `scene`, averaged over its window ([`window`]); with a
 /// reduced histogram, the exact root of its power-law tail where one holds (shown, not
-/// judged: the root is the asymptote the measured local slope reaches,
-/// analysis/power_tail.rs).
+/// judged: the root is the asymptote the local slopes reach, from which the measured exponent
+/// is extrapolated, analysis/power_tail.rs).
 pub fn references(scene: &crate::scene::Scene) -> Vec<ReferenceValue> {
     use crate::analysis::power_tail as power;
     let (_, span) = window(scene);
@@ -167,7 +167,7 @@ impl PointResult {
     /// the scene has one (each ensemble's average over it, then the mean over ensembles with
     /// its interval, as summary.json's `steady_state`), else the last observation; and each
     /// reference averaged over the same observation times. With a reduced histogram of a
-    /// model with a power-law tail, its measured exponent (`tail_exponent`) beside the exact
+    /// model with a power-law tail, its extrapolated exponent (`tail_exponent`) beside the exact
     /// root (`tail_exponent_exact`, analysis/power_tail.rs).
     pub fn of(p: &PointScene, stats: &RunStats) -> Self {
         let last = stats.times.len() - 1;
@@ -189,8 +189,8 @@ impl PointResult {
         // exact root is among the references; elsewhere the local slope is no exponent).
         use crate::analysis::power_tail as power;
         let measured = power::measure(&p.source.scene, stats).filter(|t| t.exact.is_some());
-        if let Some(m) = measured.and_then(|t| t.measured) {
-            observables.push((power::EXPONENT, m.value, m.ci));
+        if let Some((v, ci)) = measured.and_then(|t| t.exponent()) {
+            observables.push((power::EXPONENT, v, ci));
         }
         PointResult {
             index: p.index,

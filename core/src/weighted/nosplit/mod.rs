@@ -214,7 +214,8 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
         {
             let speeds = (sys.as_slice().iter().zip(sys.weights()))
                 .map(|(p, &w)| (sqrt((p.velocity() - vref).norm2()), w));
-            let a = Allocation::measure(speeds, vref, sqrt(c2), (target, shells, exponent, floor));
+            let extent = (sqrt(c2), sqrt(self.tref));
+            let a = Allocation::measure(speeds, vref, extent, (target, shells, exponent, floor));
             self.windows = Some(Windows::new(a, self.split));
         }
         self.vref = vref;
