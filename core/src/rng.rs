@@ -119,7 +119,7 @@ fn index_from_half<R: Rng + ?Sized>(rng: &mut R, h: u32, n: u64) -> usize {
 
 /// Two independent uniform integers in `0..n1` and `0..n2` (`n1, n2 >= 1`), each exactly
 /// uniform, from one generator word when both are at most 2^32 (its halves,
-/// [`index_from_half`]; a rejection, with probability below `n/2^32`, draws again), else
+/// `index_from_half`; a rejection, with probability below `n/2^32`, draws again), else
 /// from [`uniform_index`] twice.
 #[inline(always)]
 pub fn uniform_index2<R: Rng + ?Sized>(rng: &mut R, n1: usize, n2: usize) -> (usize, usize) {

@@ -5,12 +5,12 @@
 //! references and output files. The `gdsmc` command is a thin shell over this library.
 //!
 //! The modules depend on each other in one direction:
-//! [`run`] (ensembles, statistics) <- [`reference`] (exact and hydrodynamic curves) <-
+//! [`run`] (ensembles, statistics) <- [`mod@reference`] (exact and hydrodynamic curves) <-
 //! [`analysis`] (tails, distributions, warnings) <- [`report`] (output sets, charts, summary)
-//! <- [`bench`] (speed), [`job`] (a run from the loaded scene to the written outputs: journal,
+//! <- [`mod@bench`] (speed), [`job`] (a run from the loaded scene to the written outputs: journal,
 //! shards, MPI, output set; the command's `run` and `merge` and the Python package call it)
 //! <- [`sweep`] (a parameter study: many journaled runs into one table);
-//! [`reproduce`] (the papers' tables) needs [`run`] and [`reference`] only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
+//! [`reproduce`] (the papers' tables) needs [`run`] and [`mod@reference`] only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
 //! never over what gdsmc did not write).
 
 #![deny(unsafe_code)]

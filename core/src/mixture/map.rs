@@ -7,7 +7,7 @@
 //! ```
 //!
 //! with `mu_s = m_s / (m_s + m_t)`, `mu_t = m_t / (m_s + m_t)`: momentum `m_s v + m_t w` is
-//! kept, and for equal masses this is GRW (3) itself (then [`inelastic`] is used, so a
+//! kept, and for equal masses this is GRW (3) itself (then [`fn@inelastic`] is used, so a
 //! one-species mixture has the one-species bits). With `e = u_hat - 2 (u_hat . s) s` it is the
 //! impact form `v' = v - mu_t (1 + alpha) (u . s) s` of inelastic hard-sphere mixtures
 //! (Garzó and Dufty 1999, (2)), as [`crate::collision::scattering_direction_from_impact`]

@@ -29,7 +29,7 @@ use core::marker::PhantomData;
 impl Model {
     /// Draws every particle's velocity from the initial distribution (one uniform for the
     /// component, then the Maxwellian; particle by particle) and sets its last-kick time to
-    /// `t0`; rough particles' rim velocities come from the spin stream ([`spin_stream`]), so
+    /// `t0`; rough particles' rim velocities come from the spin stream (`spin_stream`), so
     /// `rng` advances exactly as for smooth particles. Fails with
     /// [`EngineError::ParticleCount`] unless `p` holds `n` particles.
     pub fn initialize(

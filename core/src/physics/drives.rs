@@ -51,7 +51,7 @@ pub struct DriveParams {
 impl DriveParams {
     /// The drive `kind` with `values` for its parameters in their order; `None` unless `kind`
     /// is declared by its type and `values` holds a value for each parameter (the rest are
-    /// ignored). The rules are checked by [`Physics::validate`].
+    /// ignored). The rules are checked by [`super::Physics::validate`].
     #[must_use]
     pub fn new(kind: DriveKind, values: &[Real]) -> Option<Self> {
         let values = crate::declared::fill(kind.params()?, values)?;

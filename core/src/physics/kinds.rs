@@ -83,7 +83,7 @@ macro_rules! kernel_kind {
 
         impl KernelKind {
             /// Its parameters beyond `gamma` and `C`, in the order of their values
-            /// (`kernel_params` in C, [`KernelChoice::values`]).
+            /// (`kernel_params` in C, [`super::KernelChoice::values`]).
             #[must_use]
             pub fn params(self) -> &'static [ParamSpec] {
                 match self {

@@ -188,7 +188,7 @@ impl Model {
 
     /// The candidate rate of one grain's background events, a grain of speed `speed` taken
     /// as far from the background's drift as it can be (`|v - u^B| <= speed + |u^B|`): a host
-    /// medium's bound, `4 pi C_1 rho^B` (BRS (11)) or BRS (28) ([`Drive::event_rate`]); 0
+    /// medium's bound, `4 pi C_1 rho^B` (BRS (11)) or BRS (28) ([`crate::drive::Drive::event_rate`]); 0
     /// without a host medium.
     pub fn background_rate(&self, speed: Real) -> Real {
         self.drive.event_rate(speed)

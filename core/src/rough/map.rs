@@ -325,7 +325,7 @@ impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
 
     /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughMap::collide`] on the
     /// velocities and rim velocities; with `beta = -1` the smooth collision itself
-    /// ([`smooth_limit`]).
+    /// (`smooth_limit`).
     #[inline(always)]
     fn collide_pair<K: crate::kernel::Kernel, G: Geometry, R: Rng + ?Sized>(
         &self,

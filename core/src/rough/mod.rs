@@ -4,7 +4,7 @@
 //!
 //! The collision map and the impact direction ([`map`]: the particle model's
 //! [`crate::engine::CollisionMap`]), white noise on translation and rotation ([`drive`]: a
-//! [`crate::drive::Drive`]) and the rotational observables ([`observables`]). A rough gas runs
+//! [`crate::drive::Drive`]) and the rotational observables (`observables`). A rough gas runs
 //! in the one exact loop, [`crate::engine::NoSplitting`], with the rough map as its collision
 //! map. The spins live beside the particles ([`crate::particles::Spin`],
 //! [`crate::particles::Particles::with_spins`]).

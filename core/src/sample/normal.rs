@@ -1,7 +1,7 @@
 //! The standard normal distribution, density `exp(-x^2/2) / sqrt(2 pi)`, by the ziggurat method
 //! of Marsaglia and Tsang (2000) with 256 layers: one 64-bit draw and one table comparison in
 //! about 98.8% of cases; the wedges are resolved by exact rejection (squeezed: `exp` only near
-//! the wedge's bounds, [`super::squeeze`]) and the tail beyond `R = 3.654...` by Marsaglia's
+//! the wedge's bounds, `super::squeeze`) and the tail beyond `R = 3.654...` by Marsaglia's
 //! exact tail method. Used for the white-noise kicks GRW (18).
 //!
 //! [`standard_normal_pair`] makes two variates from one 64-bit word (stream version 2): each

@@ -13,7 +13,7 @@
 //! Boltzmann collision operator of GRW (1) on the weighted measure; with `kappa = 0` and equal
 //! weights it is GRW's process itself. With `kappa > 0` every collision leaves lighter copies
 //! behind, so the particle number grows and the sparse tails fill with light particles; a
-//! reduction ([`reduce`]) replaces cells of nearby velocities by a sample of two of their own
+//! reduction ([`mod@reduce`]) replaces cells of nearby velocities by a sample of two of their own
 //! velocities each (unbiased: the expected measure is the cell's), the replaced particles'
 //! weight, momentum and energy kept together by one affine correction.
 

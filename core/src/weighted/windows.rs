@@ -36,11 +36,11 @@ pub const MAX_SHELLS: usize = 64;
 /// beyond 28 thermal speeds was about 3e-10 of the whole), and the 32 shells then put the
 /// tail's first decades of probability into one or two shells of one share each: the local
 /// slope over `[x, 2x]` was resolved only to `x = 3` (`c = |v - V|/sqrt(2 T)`; at alpha = 1/2,
-/// d = 3), 8% below the exact root, and 30-80 times less efficient than equal weights. Up to
-/// 32 thermal speeds (the shells a thermal speed wide) it is resolved to `x = 10` within 0.3%
-/// of the root (docs/weighted.md "The cooling state's tail exponent"). Runs whose fastest
-/// particle stays within 32 thermal speeds (the heated gases' tails, which fall faster than
-/// any power) are unchanged bit for bit.
+/// d = 3), 8% below the exact root, and 15-80 times less efficient than equal weights. Up to
+/// 32 thermal speeds (the shells a thermal speed wide) it is resolved to `x = 10`, and the
+/// exponent extrapolated from it is within 0.3% of the root (docs/weighted.md "The cooling
+/// state's tail exponent"). Runs whose fastest particle stays within 32 thermal speeds are
+/// unchanged bit for bit (GRW Example 3's heated tail; Example 6's reaches beyond).
 pub const REACH: Real = 32.0;
 
 /// The most pieces one split makes (a particle still heavier than its window is split again

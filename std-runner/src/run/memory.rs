@@ -38,7 +38,7 @@ pub fn run_interruptible(
 
 /// As [`run_interruptible`], keeping every ensemble's own observables: `samples` receives,
 /// per ensemble in order (the finished prefix when stopped), its values at every observation
-/// time, row-major (`times x columns`, the columns of [`columns::names`]): what an analysis
+/// time, row-major (`times x columns`, the columns of [`super::columns::names`]): what an analysis
 /// beyond the mean and its interval needs (a bootstrap, the spread of a fitted exponent).
 pub fn run_with_samples(
     scene: &Scene,

@@ -309,8 +309,8 @@ impl Sweep {
     /// finished, which a rerun keeps).
     ///
     /// With `--shard K/S`, only that task's points (or shards of points) run, journaled
-    /// ([`shard`]); under mpirun (the `mpi` feature) rank r runs task r of the ranks and rank 0
-    /// assembles ([`mpi`]).
+    /// (`shard`); under mpirun (the `mpi` feature) rank r runs task r of the ranks and rank 0
+    /// assembles (`mpi`).
     pub fn run(&self, watch: &dyn Watch) -> Result<Outcome, Error> {
         let points = self.checked_points()?;
         if let Some(spec) = &self.shard {

@@ -13,7 +13,7 @@
 //! drive the bound covers every velocity a collision makes (`Umax` grows to cover it, `g_max`
 //! never grows in a collision), so no pair overshoots and the process has no time-step error.
 //! When after a collision the buffer could not take the next one's particles, the system is
-//! reduced at once ([`super::reduce`]) and the bounds are made exact again (the next waiting
+//! reduced at once ([`mod@super::reduce`]) and the bounds are made exact again (the next waiting
 //! time is then drawn at the new rate); every `2 n` candidates they are made exact too.
 //!
 //! A drive acts as in the equal-weight loop ([`crate::engine::NoSplitting`]): each partner is
