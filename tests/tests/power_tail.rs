@@ -11,7 +11,7 @@
 //! seeds. Each check is the verdict's own 99.9% interval; the two dimensions' checks of a test
 //! together are at 99.8%.
 
-use gdsmc_runner::analysis::power_tail::measure;
+use gdsmc_runner::analysis::power_tail::{PowerTail, measure};
 use gdsmc_runner::reference::maxwell_cumulant::tail_exponent;
 use gdsmc_validation::*;
 
@@ -32,6 +32,23 @@ fn cooling_state(alpha: f64, d: usize, seed: u64) -> gdsmc_runner::scene::Scene 
     shipped_set("hcs-maxwell", &set, 1 << 18, 40, seed)
 }
 
+/// The extrapolated exponent of `t` judged from a window `[x, 2x]` with `x >= from`, its
+/// interval under `rel` of the exact root of `(d, alpha)`, holds that root and refuses the
+/// other dimension's.
+fn assert_holds_the_root(t: &PowerTail, (d, alpha): (usize, f64), from: f64, rel: f64) {
+    let exact = tail_exponent(d, alpha);
+    let m = t.judged.expect("a resolved window with an extrapolation");
+    let (v, ci) = t.exponent().expect("the extrapolated exponent");
+    assert!(
+        m.from >= from,
+        "d = {d}: the window {m:?} is pre-asymptotic"
+    );
+    assert!(ci < rel * exact, "d = {d}: uninformative {m:?}");
+    assert_eq!(t.agrees(), Some(true), "d = {d}: {m:?} against {exact}");
+    let other = tail_exponent(5 - d, alpha);
+    assert!((v - other).abs() > ci, "d = {d}: {m:?} holds {other} too");
+}
+
 /// At alpha = 0.3 the measured exponent holds the exact root (6.20 in d = 3, 5.36 in d = 2)
 /// with an interval under 6% of it, from a window from 5.5 on, and its interval refuses the
 /// other dimension's root.
@@ -48,13 +65,7 @@ fn the_cooling_states_tail_exponent_is_the_exact_root() {
             Some(exact),
             "the exact root is attached in d = {d}"
         );
-        let m = t.judged.expect("a resolved window with an extrapolation");
-        let (v, ci) = t.exponent().expect("the extrapolated exponent");
-        assert!(m.from >= 5.5, "d = {d}: the window {m:?} is pre-asymptotic");
-        assert!(ci < 0.06 * exact, "d = {d}: uninformative {m:?}");
-        assert_eq!(t.agrees(), Some(true), "d = {d}: {m:?} against {exact}");
-        let other = tail_exponent(5 - d, 0.3);
-        assert!((v - other).abs() > ci, "d = {d}: {m:?} holds {other} too");
+        assert_holds_the_root(&t, (d, 0.3), 5.5, 0.06);
     }
 }
 
@@ -76,14 +87,7 @@ fn the_weighted_cooling_state_reaches_the_exact_root() {
         let s = shipped_set("hcs-maxwell-tail-weighted", &set, 1024, 24, seed);
         let st = run(&s);
         let t = measure(&s, &st).expect("a reduced histogram of at most 256 shells");
-        let exact = tail_exponent(d, alpha);
-        let m = t.judged.expect("a resolved window with an extrapolation");
-        let (v, ci) = t.exponent().expect("the extrapolated exponent");
-        assert!(m.from >= 8.0, "d = {d}: the window {m:?} is pre-asymptotic");
-        assert!(ci < 0.03 * exact, "d = {d}: uninformative {m:?}");
-        assert_eq!(t.agrees(), Some(true), "d = {d}: {m:?} against {exact}");
-        let other = tail_exponent(5 - d, alpha);
-        assert!((v - other).abs() > ci, "d = {d}: {m:?} holds {other} too");
+        assert_holds_the_root(&t, (d, alpha), 8.0, 0.03);
     }
 }
 
