@@ -282,11 +282,21 @@ impl RunResult {
         let formats: report::charts::Formats = formats
             .parse()
             .map_err(|e: String| pyo3::exceptions::PyValueError::new_err(e))?;
-        py.detach(|| {
+        let (notes, written) = py.detach(|| {
             let set = report::set::OutputSet::prepare(&dir)?;
-            report::commit_run(set, self.scene.scene(), &self.stats, &self.refs(), formats)
+            let notes = set.notes().to_vec();
+            let written =
+                report::commit_run(set, self.scene.scene(), &self.stats, &self.refs(), formats);
+            Ok::<_, gdsmc_runner::Error>((notes, written))
         })
-        .map_err(to_py)
+        .map_err(to_py)?;
+        // A directory an earlier run's claim named but that is not proven gdsmc's: left, and
+        // said as a Python warning.
+        for n in notes {
+            let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+            pyo3::PyErr::warn(py, &category, &std::ffi::CString::new(n).unwrap_or_default(), 1)?;
+        }
+        written.map_err(to_py)
     }
 
     fn __repr__(&self) -> String {

@@ -138,6 +138,7 @@ impl Job {
         // The output place is prepared (and shown writable) before any simulation.
         let dir = self.dir(sc.name());
         let set = OutputSet::prepare(&dir)?;
+        set.notes().iter().for_each(|n| watch.note(n));
         let save = self
             .save_state
             .as_deref()
@@ -333,7 +334,11 @@ impl Job {
             || report::set::check_replaceable(&dir),
             |m| {
                 let set = OutputSet::prepare(&dir)?;
+                let notes = set.notes().join("\n");
                 text = write(set, &m.scene, &m.stats, &dir, self.format)?;
+                if !notes.is_empty() {
+                    text = format!("{notes}\n{text}");
+                }
                 let _ = writeln!(
                     text,
                     "{} MPI ranks, {} ensembles, {:.2} s from start to merged outputs",
@@ -367,7 +372,8 @@ pub fn merge(inputs: &[PathBuf], out: Option<PathBuf>, format: Formats) -> Resul
     let dir = out.unwrap_or_else(|| PathBuf::from("out").join(m.scene.name()));
     shard::check_output(&dir, &files)?;
     let set = OutputSet::prepare(&dir)?;
-    let mut text = write(set, &m.scene, &m.stats, &dir, format)?;
+    let notes: String = set.notes().iter().map(|n| format!("{n}\n")).collect();
+    let mut text = notes + &write(set, &m.scene, &m.stats, &dir, format)?;
     let _ = writeln!(
         text,
         "merged {} shards ({} ensembles) in {merge_s:.3} s; wall and cpu above: the slowest shard's wall, all shards' cpu",

@@ -20,6 +20,7 @@ mod job;
 mod limits;
 mod mutation;
 mod output_set;
+mod planted;
 mod reproduce_verdicts;
 mod state;
 mod steady_summary;

@@ -2,10 +2,14 @@
 //! set at `.../NAME` first takes the claim `.NAME.gdsmc-claim` beside it: an exclusive
 //! `flock` on that file, which the kernel releases when the process ends however it ends (a
 //! killed run leaves no stale claim), and in it the holder's process id, command line, start
-//! time and the staging directory it creates. A second process asking for the same place is
-//! refused at once, naming the holder; the next process after a killed one reads the
-//! staging directory the killed one recorded and removes that directory, and only that: gdsmc
-//! removes what it proves it created, never what merely has a name like its own.
+//! time, and the staging directory it creates with that directory's random token. A second
+//! process asking for the same place is refused at once, naming the holder.
+//!
+//! The next process after a killed one reads the staging directory and token the killed one
+//! recorded. What a claim file says is not trusted: anyone who can write beside the output
+//! directory can plant one. The directory it names is removed only when it is proven gdsmc's
+//! ([`super::staging::proven`]: this place's exact staging name, a directory and no link, this
+//! user's, holding the marker with the recorded token); anything else is left and named.
 //!
 //! The claim file is removed when the claim ends (while it is still locked; a process waiting
 //! on the removed file sees that it no longer names the place and opens the new one).
@@ -28,7 +32,17 @@ pub struct Claim {
     path: PathBuf,
     file: File,
     /// The staging directory a killed holder recorded, if one did.
-    left: Option<PathBuf>,
+    left: Option<Left>,
+}
+
+/// The staging directory a killed holder's claim records, as it says: to be proven before
+/// anything is done with it ([`super::staging::proven`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Left {
+    /// The directory, beside the output place (the recorded name holds no separator).
+    pub dir: PathBuf,
+    /// The token recorded with it, as written (checked by the proof).
+    pub token: Option<String>,
 }
 
 /// A claim file's fields as written (`key value` lines after the signature).
@@ -107,7 +121,12 @@ impl Claim {
             }
             let left = field(&text, "staging")
                 .filter(|s| !s.is_empty() && !s.contains(['/', '\\']) && *s != "..")
-                .and_then(|s| Some(target.parent()?.join(s)));
+                .and_then(|s| {
+                    Some(Left {
+                        dir: target.parent()?.join(s),
+                        token: field(&text, "token").map(str::to_string),
+                    })
+                });
             let mut claim = Claim { path, file, left };
             claim.write(None)?;
             return Ok(claim);
@@ -117,25 +136,25 @@ impl Claim {
         )))
     }
 
-    /// The staging directory a killed holder of this place recorded and left (gdsmc's: to be
-    /// removed), if one did.
-    pub fn left_behind(&self) -> Option<&Path> {
-        self.left.as_deref()
+    /// The staging directory a killed holder of this place recorded, as its claim says, if
+    /// it says one: not yet proven gdsmc's.
+    pub fn left_behind(&self) -> Option<&Left> {
+        self.left.as_ref()
     }
 
     /// Records the staging directory this process creates for the place (its file name,
-    /// beside the target), before creating it.
-    pub fn record_staging(&mut self, staging: &Path) -> Result<(), Error> {
+    /// beside the target) and its random `token`, before creating it.
+    pub fn record_staging(&mut self, staging: &Path, token: &str) -> Result<(), Error> {
         self.write(
             staging
                 .file_name()
-                .map(|n| n.to_string_lossy().into_owned()),
+                .map(|n| (n.to_string_lossy().into_owned(), token.to_string())),
         )
     }
 
     /// Writes the claim's fields: this process, its command, its start, and the staging
-    /// directory when given.
-    fn write(&mut self, staging: Option<String>) -> Result<(), Error> {
+    /// directory and its token when given.
+    fn write(&mut self, staging: Option<(String, String)>) -> Result<(), Error> {
         let command: Vec<String> = std::env::args().collect();
         let mut text = format!(
             "{SIGNATURE}\npid {}\ncommand {}\nsince {}\n",
@@ -143,8 +162,8 @@ impl Claim {
             command.join(" ").replace('\n', " "),
             now()
         );
-        if let Some(s) = staging {
-            text.push_str(&format!("staging {s}\n"));
+        if let Some((s, token)) = staging {
+            text.push_str(&format!("staging {s}\ntoken {token}\n"));
         }
         let path = self.path.clone();
         let werr = |source| Error::Write {
@@ -274,7 +293,9 @@ mod tests {
         )
         .unwrap();
         let c = Claim::take(&target).unwrap();
-        assert_eq!(c.left_behind(), Some(dir.join(".res.partial-7").as_path()));
+        let left = c.left_behind().unwrap();
+        assert_eq!(left.dir, dir.join(".res.partial-7"));
+        assert_eq!(left.token, None);
         // A recorded name that is a path is not followed.
         drop(c);
         std::fs::write(

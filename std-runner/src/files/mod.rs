@@ -16,6 +16,7 @@
 //! - [`sync_dir`] makes a rename in a directory durable (a power cut after it keeps it).
 
 pub mod claim;
+pub mod staging;
 
 use crate::error::Error;
 use std::fs::File;

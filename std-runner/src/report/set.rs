@@ -11,9 +11,12 @@
 //!
 //! One process at a time writes to a target: [`OutputSet::prepare`] takes the target's
 //! [`Claim`] (refused at once, naming the holder, while another process holds it) and records
-//! in it the staging directory before creating it. The staging directory of a killed run is
-//! removed by the next run at that target because the killed run's claim names it: a
-//! directory that merely has such a name (a user's) is never removed.
+//! in it the staging directory and a random token before creating the directory with the
+//! token in its marker file. The staging directory of a killed run is removed by the next run
+//! at that target only when it is proven gdsmc's ([`crate::files::staging::proven`]): a claim
+//! file is only a file (anyone may plant one), and a directory it names that is not this
+//! place's staging directory, this user's, with the token's marker, is left and named in a
+//! warning ([`OutputSet::notes`]).
 //!
 //! Only what gdsmc wrote is ever replaced ([`check_replaceable`], before the run and again just
 //! before the swap): the target must be absent, an empty directory, or a whole gdsmc set that
@@ -22,6 +25,7 @@
 
 use crate::error::Error;
 use crate::files::claim::Claim;
+use crate::files::staging;
 use std::path::{Path, PathBuf};
 
 /// The file that closes a set.
@@ -49,6 +53,8 @@ pub struct OutputSet {
     target: PathBuf,
     staging: PathBuf,
     committed: bool,
+    /// Warnings for the user from preparing the set (a staging directory left as it is).
+    notes: Vec<String>,
     /// The target's claim, held until the set is committed or dropped (after the staging
     /// directory is gone).
     _claim: Claim,
@@ -164,12 +170,24 @@ impl OutputSet {
         };
         std::fs::create_dir_all(&parent).map_err(write_err(&parent))?;
         let mut claim = Claim::take(target)?;
-        // The staging directory a killed run recorded in its claim is gdsmc's: removed. A
-        // directory of that name that is a link, or absent, is left.
+        let prefix = staging_prefix(target);
+        let mut notes = Vec::new();
+        // The staging directory a killed run recorded in its claim is removed only when it is
+        // proven gdsmc's; anything else the claim names is left and named.
         if let Some(left) = claim.left_behind()
-            && std::fs::symlink_metadata(left).is_ok_and(|m| m.is_dir())
+            && std::fs::symlink_metadata(&left.dir).is_ok()
         {
-            let _ = std::fs::remove_dir_all(left);
+            match staging::proven(&left.dir, &prefix, left.token.as_deref()) {
+                Ok(()) => {
+                    let _ = std::fs::remove_dir_all(&left.dir);
+                }
+                Err(why) => notes.push(format!(
+                    "warning: {} names {} as the staging directory of an earlier run, but {why}: \
+                     it is not proven gdsmc's and is left as it is",
+                    crate::files::claim::path_of(target).display(),
+                    left.dir.display()
+                )),
+            }
         }
         let prefix = staging_prefix(target);
         let pid = std::process::id();
@@ -186,14 +204,34 @@ impl OutputSet {
                     "no free name for a staging directory beside the output directory",
                 ))
             })?;
-        claim.record_staging(&staging)?;
+        let token = staging::token().map_err(|e| write_err(&staging)(std::io::Error::other(e)))?;
+        claim.record_staging(&staging, &token)?;
         std::fs::create_dir(&staging).map_err(write_err(&staging))?;
-        Ok(OutputSet {
+        let set = OutputSet {
             target: target.to_path_buf(),
             staging,
             committed: false,
+            notes,
             _claim: claim,
-        })
+        };
+        // Created exclusively: the directory is new, so nothing else can be at its name.
+        let marker = set.staging.join(staging::MARKER);
+        std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&marker)
+            .and_then(|mut f| {
+                std::io::Write::write_all(&mut f, staging::marker_text(&token).as_bytes())?;
+                f.sync_data()
+            })
+            .map_err(write_err(&marker))?;
+        Ok(set)
+    }
+
+    /// Warnings from preparing the set, for the user (a directory a claim named that was not
+    /// proven gdsmc's, left as it is).
+    pub fn notes(&self) -> &[String] {
+        &self.notes
     }
 
     /// Where the files go until [`OutputSet::commit`].
@@ -205,6 +243,10 @@ impl OutputSet {
     /// describing the run) and puts the set in place of the previous one. Returns the names of
     /// the files written (the manifest last).
     pub fn commit(mut self, run: serde_json::Value) -> Result<Vec<String>, Error> {
+        // The marker is no file of the set; without it a staging directory a kill leaves from
+        // here on proves nothing and is only named, never removed, by the next run.
+        let marker = self.staging.join(staging::MARKER);
+        std::fs::remove_file(&marker).map_err(write_err(&marker))?;
         let mut files = Vec::new();
         let mut written = Vec::new();
         let mut names: Vec<PathBuf> = std::fs::read_dir(&self.staging)

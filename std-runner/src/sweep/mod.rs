@@ -329,6 +329,7 @@ impl Sweep {
     fn assemble(&self, points: Vec<PointScene>, watch: &dyn Watch) -> Result<Outcome, Error> {
         let dir = self.dir();
         let set = OutputSet::prepare(&dir)?;
+        set.notes().iter().for_each(|n| watch.note(n));
         let Ran {
             results,
             notes,
