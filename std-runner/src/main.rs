@@ -29,8 +29,9 @@ enum Command {
     /// the 99.9% half-width of T, T_bulk, V, p, q, a2, a3, crit, ... and the reference
     /// columns), summary.json (scene, seed, version, timing, collision counts, errors against
     /// the references, steady-state averages, tail exponent), histograms.csv when the scene
-    /// asks for it, and SVG charts. Files are replaced atomically. Ctrl-C finishes the running
-    /// ensembles and writes the results of those completed (exit code 130). Finished ensembles
+    /// asks for it, and SVG charts. Files are replaced atomically. Ctrl-C, SIGTERM (a
+    /// scheduler's time limit) and SIGHUP finish the running ensembles and write the results of
+    /// those completed (exit code 130, 143, 129: 128 + the signal). Finished ensembles
     /// are kept as they finish in DIR's journal (.NAME.run.gdsmc-ensembles beside it): the same
     /// command continues an interrupted or killed run to the same results. Under mpirun (a
     /// build with the mpi feature) the ranks share the ensembles and rank 0 writes.
@@ -253,7 +254,9 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(gdsmc_runner::Error::Interrupted) => ExitCode::from(130),
+        Err(gdsmc_runner::Error::Interrupted) => {
+            ExitCode::from(gdsmc_runner::terminal::exit_code())
+        }
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE

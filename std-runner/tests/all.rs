@@ -22,6 +22,7 @@ mod mutation;
 mod output_set;
 mod planted;
 mod reproduce_verdicts;
+mod signals;
 mod state;
 mod steady_summary;
 mod stepped;
