@@ -54,6 +54,17 @@ pub(crate) fn to_py(e: gdsmc_runner::Error) -> PyErr {
     }
 }
 
+/// Says each of the runner's warnings `notes` (a note of a state file, a directory a claim
+/// named and gdsmc left) as a Python `UserWarning`.
+pub(crate) fn warn_all(py: Python<'_>, notes: &[String]) -> PyResult<()> {
+    let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+    for n in notes {
+        let text = std::ffi::CString::new(python_words(n)).unwrap_or_default();
+        PyErr::warn(py, &category, &text, 1)?;
+    }
+    Ok(())
+}
+
 /// The extension module.
 #[pymodule]
 fn _gdsmc(m: &Bound<'_, PyModule>) -> PyResult<()> {

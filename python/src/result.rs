@@ -145,6 +145,7 @@ pub fn run(
         .map_err(to_py)?;
     if let Some(r) = &initial {
         r.check(s.scene()).map_err(to_py)?;
+        crate::warn_all(py, &r.notes)?;
     }
     let save = save_state
         .as_deref()
@@ -292,10 +293,7 @@ impl RunResult {
         .map_err(to_py)?;
         // A directory an earlier run's claim named but that is not proven gdsmc's: left, and
         // said as a Python warning.
-        for n in notes {
-            let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
-            pyo3::PyErr::warn(py, &category, &std::ffi::CString::new(n).unwrap_or_default(), 1)?;
-        }
+        crate::warn_all(py, &notes)?;
         written.map_err(to_py)
     }
 

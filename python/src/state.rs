@@ -19,6 +19,7 @@ pub type StateBytes<'py> = (String, Bound<'py, pyo3::types::PyBytes>, (usize, us
 #[pyfunction]
 pub fn read_state(py: Python<'_>, path: PathBuf) -> PyResult<StateBytes<'_>> {
     let r = StateReader::open(&path).map_err(to_py)?;
+    crate::warn_all(py, &r.notes)?;
     let header = serde_json::to_string(&r.header).expect("a header serializes");
     let mut bytes = Vec::new();
     let mut width = 0;

@@ -55,7 +55,7 @@ pub use overrides::{
     parse_with_overrides,
 };
 pub(crate) use read::toml_of;
-pub use read::{MAX_SCENE_BYTES, load, parse, read, sweep_plan};
+pub use read::{MAX_LINE_CHARS, MAX_SCENE_BYTES, cut_lines, load, parse, read, sweep_plan};
 pub use schema::SceneFile;
 pub use validate::DEFAULT_STEP_FACTOR;
 

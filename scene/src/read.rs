@@ -15,7 +15,8 @@ fn too_large(path: &Path, len: usize) -> Error {
     Error::Parse {
         path: path.to_path_buf(),
         message: format!(
-            "is {len} bytes or more, above the {} KiB a scene may have (a scene is a few KiB):              is this the scene file?",
+            "is {len} bytes or more, above the {} KiB a scene may have (a scene is a few KiB): \
+             is this the scene file?",
             MAX_SCENE_BYTES >> 10
         ),
     }
@@ -28,8 +29,26 @@ pub(crate) fn toml_of<T: serde::de::DeserializeOwned>(path: &Path, text: &str) -
     }
     toml::from_str(text).map_err(|e| Error::Parse {
         path: PathBuf::from(path),
-        message: e.to_string().trim_end().to_string(),
+        message: cut_lines(e.to_string().trim_end(), MAX_LINE_CHARS),
     })
+}
+
+/// Most characters of one line of a message: the parser quotes the scene's line and the key
+/// it does not know, and a 1 MB line was echoed three times over (3 MB of standard error).
+pub const MAX_LINE_CHARS: usize = 160;
+
+/// `text` with every line longer than `most` characters cut there, saying how much was left
+/// out.
+pub fn cut_lines(text: &str, most: usize) -> String {
+    let cut = |line: &str| match line.char_indices().nth(most) {
+        None => line.to_string(),
+        Some((at, _)) => format!(
+            "{}... ({} more characters)",
+            &line[..at],
+            line[at..].chars().count()
+        ),
+    };
+    text.lines().map(cut).collect::<Vec<_>>().join("\n")
 }
 
 /// Parses and validates scene text; `path` names the source in errors.
@@ -53,9 +72,26 @@ pub fn read(path: &Path) -> Result<String, Error> {
         path: path.to_path_buf(),
         source,
     };
+    // Only a regular file (a link to one included): a FIFO would block the open itself, and a
+    // device or directory is no scene. Told by its type before it is opened, and again of
+    // what was opened.
+    let regular = |m: std::fs::Metadata| {
+        if m.is_file() {
+            Ok(())
+        } else {
+            Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidInput,
+                "not a regular file (a FIFO, device or directory): a scene is a TOML file",
+            ))
+        }
+    };
+    std::fs::metadata(path).and_then(regular).map_err(err)?;
     let mut bytes = Vec::new();
     std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_SCENE_BYTES as u64 + 1).read_to_end(&mut bytes))
+        .and_then(|f| {
+            regular(f.metadata()?)?;
+            f.take(MAX_SCENE_BYTES as u64 + 1).read_to_end(&mut bytes)
+        })
         .map_err(err)?;
     if bytes.len() > MAX_SCENE_BYTES {
         return Err(too_large(path, bytes.len()));

@@ -134,6 +134,7 @@ impl Job {
             .transpose()?;
         if let Some(r) = &initial {
             r.check(sc)?;
+            r.notes.iter().for_each(|n| watch.note(n));
         }
         // The output place is prepared (and shown writable) before any simulation.
         let dir = self.dir(sc.name());

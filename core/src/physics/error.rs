@@ -5,6 +5,25 @@
 
 use crate::math::Real;
 
+/// A number as a message shows it: the shortest text that reads back to the same `f64`
+/// (Rust's `Display`), in scientific notation when plain digits would be long (magnitudes
+/// from 10^16 on or below 10^-5), so `1e300` is `1e300`, not 301 digits. Every message that
+/// shows a user's number (a parameter's rule, a scene key's, a state file's) shows it so.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shown(pub Real);
+
+impl core::fmt::Display for Shown {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let x = self.0;
+        let a = if x < 0.0 { -x } else { x };
+        if x.is_finite() && x != 0.0 && !(1e-5..1e16).contains(&a) {
+            write!(f, "{x:e}")
+        } else {
+            write!(f, "{x}")
+        }
+    }
+}
+
 /// A parameter of [`super::Physics`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Param {
@@ -188,10 +207,12 @@ pub enum Problem {
 impl core::fmt::Display for Problem {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match *self {
-            Problem::NotFinite(x) => write!(f, "must be a finite number, got {x}"),
-            Problem::NotPositive(x) => write!(f, "must be > 0, got {x}"),
-            Problem::Negative(x) => write!(f, "must be >= 0, got {x}"),
-            Problem::OutOfRange { value, range } => write!(f, "must lie in {range}, got {value}"),
+            Problem::NotFinite(x) => write!(f, "must be a finite number, got {}", Shown(x)),
+            Problem::NotPositive(x) => write!(f, "must be > 0, got {}", Shown(x)),
+            Problem::Negative(x) => write!(f, "must be >= 0, got {}", Shown(x)),
+            Problem::OutOfRange { value, range } => {
+                write!(f, "must lie in {range}, got {}", Shown(value))
+            }
             Problem::NotFiniteVector => f.write_str("must be three finite numbers"),
             Problem::TooFewParticles(n) => {
                 write!(f, "must be >= 2 (a pair is needed to collide), got {n}")
@@ -204,15 +225,19 @@ impl core::fmt::Display for Problem {
             Problem::AllWeightsZero => f.write_str("weights must not all be 0"),
             Problem::Strength(s) => write!(
                 f,
-                "makes the rate constant gamma * C = {s}, which must be finite and > 0"
+                "makes the rate constant gamma * C = {}, which must be finite and > 0",
+                Shown(s)
             ),
             Problem::ThermalSpeed(t) => write!(
                 f,
-                "= {t} is too large for its mass: 2 temperature / mass overflows"
+                "= {} is too large for its mass: 2 temperature / mass overflows",
+                Shown(t)
             ),
             Problem::LongerThanSpan { value, span } => write!(
                 f,
-                "must be at most the run's span {span} (not one step would be taken), got {value}"
+                "must be at most the run's span {} (not one step would be taken), got {}",
+                Shown(span),
+                Shown(value)
             ),
             Problem::DoesNotFit(why) => f.write_str(why),
         }
@@ -235,3 +260,32 @@ impl core::fmt::Display for PhysicsError {
 }
 
 impl core::error::Error for PhysicsError {}
+
+#[cfg(test)]
+mod tests {
+    use super::Shown;
+    extern crate std;
+    use std::format;
+
+    #[test]
+    fn numbers_are_shown_short_and_read_back() {
+        for (x, text) in [
+            (1e300, "1e300"),
+            (-2.5e-300, "-2.5e-300"),
+            (5e-324, "5e-324"),
+            (0.1, "0.1"),
+            (1234.5, "1234.5"),
+            (1e15, "1000000000000000"),
+            (1e16, "1e16"),
+            (0.0, "0"),
+            (f64::NAN, "NaN"),
+            (f64::INFINITY, "inf"),
+        ] {
+            let shown = format!("{}", Shown(x));
+            assert_eq!(shown, text);
+            if x.is_finite() {
+                assert_eq!(shown.parse::<f64>().unwrap(), x, "{shown} reads back");
+            }
+        }
+    }
+}

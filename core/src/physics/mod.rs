@@ -60,7 +60,7 @@ mod weighted_scheme;
 
 pub use drives::{BackgroundKernel, DriveChoice, DriveParams};
 pub use engine::Engine;
-pub use error::{Param, PhysicsError, Problem};
+pub use error::{Param, PhysicsError, Problem, Shown};
 pub use kernels::KernelChoice;
 pub use kinds::{DriveKind, KernelKind, LawKind, SchemeKind};
 pub use laws::MAX_LAW_PARAMS;

@@ -5,6 +5,7 @@ use super::Ctx;
 use crate::error::Error;
 use crate::schema::{HistogramSpec, ObserveSpec, RunSpec, SceneFile};
 use crate::{Marginal, Shells};
+use gdsmc_core::physics::Shown;
 use toml::Spanned;
 
 // The rules of observing, each once: the file's validation (with its spans) and the scene's
@@ -12,12 +13,12 @@ use toml::Spanned;
 
 /// A finite number: what is wrong with `x`, or `None`.
 fn finite_problem(x: f64) -> Option<String> {
-    (!x.is_finite()).then(|| format!("must be a finite number, got {x}"))
+    (!x.is_finite()).then(|| format!("must be a finite number, got {}", Shown(x)))
 }
 
 /// A finite number > 0 (a histogram's radius): what is wrong with `x`, or `None`.
 pub(crate) fn positive_problem(x: f64) -> Option<String> {
-    finite_problem(x).or_else(|| (x <= 0.0).then(|| format!("must be > 0, got {x}")))
+    finite_problem(x).or_else(|| (x <= 0.0).then(|| format!("must be > 0, got {}", Shown(x))))
 }
 
 /// A bin or shell count in 1..=100000: what is wrong with `k`, or `None`.
@@ -39,8 +40,9 @@ pub(crate) fn steady_index(times: &[f64], x: f64) -> Result<usize, String> {
     match times.iter().position(|&t| t >= x - 1e-12 * (1.0 + x.abs())) {
         Some(i) if i + 1 < times.len() => Ok(i),
         _ => Err(format!(
-            "must leave at least two observation times at or after it (t_end = {}), got {x}",
-            times[times.len() - 1]
+            "must leave at least two observation times at or after it (t_end = {}), got {}",
+            Shown(times[times.len() - 1]),
+            Shown(x)
         )),
     }
 }
@@ -56,8 +58,9 @@ pub(crate) fn snapshot_index(times: &[f64], x: f64) -> Result<usize, String> {
         .position(|&t| t >= x - 1e-12 * (1.0 + x.abs()))
         .ok_or_else(|| {
             format!(
-                "each time must be at most the last observation time t_end = {}, got {x}",
-                times[times.len() - 1]
+                "each time must be at most the last observation time t_end = {}, got {}",
+                Shown(times[times.len() - 1]),
+                Shown(x)
             )
         })
 }
@@ -110,7 +113,7 @@ pub(super) fn times(ctx: &Ctx<'_>, o: &ObserveSpec) -> Result<Vec<f64>, Error> {
                 return ctx.invalid(
                     s.span(),
                     "observe.t_start",
-                    format!("must be >= 0, got {x}"),
+                    format!("must be >= 0, got {}", Shown(x)),
                 );
             }
             x
@@ -122,7 +125,11 @@ pub(super) fn times(ctx: &Ctx<'_>, o: &ObserveSpec) -> Result<Vec<f64>, Error> {
         return ctx.invalid(
             o.t_end.span(),
             "observe.t_end",
-            format!("must be later than observe.t_start = {t0}, got {t1}"),
+            format!(
+                "must be later than observe.t_start = {}, got {}",
+                Shown(t0),
+                Shown(t1)
+            ),
         );
     }
     let k = match &o.intervals {
@@ -164,17 +171,50 @@ pub(super) fn times(ctx: &Ctx<'_>, o: &ObserveSpec) -> Result<Vec<f64>, Error> {
                 return ctx.invalid(
                     f.span(),
                     "observe.first",
-                    format!("must be below t_end - t_start = {span}, got {x}"),
+                    format!(
+                        "must be below t_end - t_start = {}, got {}",
+                        Shown(span),
+                        Shown(x)
+                    ),
                 );
             }
             x
         }
     };
-    Ok(if log {
+    let times = if log {
         log_times(t0, span, first, k)
     } else {
         (0..=k).map(|i| t0 + span * i as f64 / k as f64).collect()
-    })
+    };
+    // The times must be numbers, each later than the one before: a `first` so small that
+    // `span / first` overflows (5e-324; 1e-300 with t_end = 1e300) made them NaN, and a span
+    // too short for its start in f64 makes two times equal.
+    if let Some(i) = times
+        .windows(2)
+        .position(|w| !(w[1].is_finite() && w[1] > w[0]))
+    {
+        let (key, at) = match (&o.first, log) {
+            (Some(f), true) => ("observe.first", f.span()),
+            _ => ("observe.intervals", o.t_end.span()),
+        };
+        return ctx.invalid(
+            at,
+            key,
+            format!(
+                "makes observation time {} equal {}, not a number later than the time before \
+                 it ({}): {}",
+                i + 1,
+                Shown(times[i + 1]),
+                Shown(times[i]),
+                if log {
+                    "choose a larger observe.first (t_end / first must be a finite number)"
+                } else {
+                    "choose fewer observe.intervals or a longer span"
+                }
+            ),
+        );
+    }
+    Ok(times)
 }
 
 /// The start `t0`, then `k` times evenly spaced in `log(t - t0)` from `t0 + first` to

@@ -7,7 +7,7 @@ use super::Ctx;
 use crate::error::Error;
 use crate::schema::{InitialKind, SceneFile};
 use gdsmc_core::physics::DriveKind;
-use gdsmc_core::physics::{MAX_PAIRS, MAX_SPECIES, Param, SpeciesChoice};
+use gdsmc_core::physics::{MAX_PAIRS, MAX_SPECIES, Param, Shown, SpeciesChoice};
 use toml::Spanned;
 
 /// The species and the per-pair restitution of a scene.
@@ -109,7 +109,7 @@ pub(super) fn mixture(ctx: &mut Ctx<'_>, file: &SceneFile, n: usize) -> Result<M
             return ctx.invalid(
                 s.fraction.span(),
                 &format!("species[{k}].fraction"),
-                format!("must be a finite number > 0, got {x}"),
+                format!("must be a finite number > 0, got {}", Shown(x)),
             );
         }
         fractions.push(x);
@@ -246,8 +246,9 @@ fn matrix(
                     m.span(),
                     key,
                     format!(
-                        "must be symmetric: row {a} column {b} is {x}, row {b} column {a} is {}",
-                        rows[b][a]
+                        "must be symmetric: row {a} column {b} is {}, row {b} column {a} is {}",
+                        Shown(x),
+                        Shown(rows[b][a])
                     ),
                 );
             }

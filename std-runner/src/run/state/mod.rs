@@ -1,20 +1,26 @@
 //! A run's particle state: saved at its last observation (`gdsmc run --save-state FILE`) and
 //! read to continue it (`--initial-state FILE`). docs/state.md describes the format; it is
-//! versioned and every read is checked (magic, version, size, the scene it may continue).
+//! versioned, checksummed ([`layout`]: format 2; format 1, without checksums, is read with a
+//! warning) and nothing of it is acted on before it is checked: the header's checksum, every
+//! header field's bounds ([`checks::header`]), the size the header implies, and every record's
+//! checksum and values ([`checks::record`]), each refusal naming the file and the record.
 //!
-//! The file: the 16 bytes `GDSMC-STATE\0v001`, a header of [`HEADER_BYTES`] bytes holding one
-//! JSON object ([`StateHeader`], padded with spaces), then one record per ensemble in
-//! ensemble order: its collisions per particle so far (`s`, one little-endian f64), its `n`
-//! physical velocities (`3 n` little-endian f64, particle `i`'s `x, y, z` at `3 i`), then for
-//! rough particles its `n` rim velocities likewise. Velocities are physical (a cooling gas
-//! stored rescaled is written in the scene's units).
+//! The records: one per ensemble in ensemble order: its collisions per particle so far (`s`,
+//! one little-endian f64), its `n` physical velocities (`3 n` little-endian f64, particle
+//! `i`'s `x, y, z` at `3 i`), then for rough particles its `n` rim velocities likewise, then
+//! (format 2) its checksum. Velocities are physical (a cooling gas stored rescaled is written
+//! in the scene's units).
 //!
 //! A continuation starts ensemble `k` at the state's time from record `k`, with the seed's
 //! stream of ensemble `k` long-jumped `2 (segment + 1)` times (Xoshiro256++'s long jump: 2^192
 //! draws; a run's ensembles and their diagnostics use the first two of these blocks), so no
 //! segment repeats another's random numbers: a continuation is a pure function of the scene,
-//! the seed and the state file. It is not bit for bit one longer run: the engine starts again
-//! at the state's time (its majorant from the velocities, GRW step 1).
+//! the seed and the state file. The segment is at most [`checks::MAX_SEGMENT`], so the jumps
+//! are bounded. It is not bit for bit one longer run: the engine starts again at the state's
+//! time (its majorant from the velocities, GRW step 1).
+
+pub mod checks;
+pub mod layout;
 
 use crate::Error;
 use crate::scene::Scene;
@@ -27,16 +33,14 @@ use std::io::{Read, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
-/// The first bytes of every state file: the name and the format's version.
-pub const MAGIC: &[u8; 16] = b"GDSMC-STATE\0v001";
-
-/// The header's fixed size in bytes (its JSON padded with spaces).
-pub const HEADER_BYTES: usize = 4096;
+use layout::Layout;
+pub use layout::{HEADER_BYTES, MAGIC};
 
 /// What a state file holds, as its JSON header says.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StateHeader {
-    /// The format's version (1).
+    /// The format's version ([`layout::VERSION`] when written; 1 in files of the first
+    /// format).
     pub version: u32,
     /// The scene's name.
     pub scene: String,
@@ -78,7 +82,7 @@ impl StateHeader {
             Some(h) => (h.segment + 1, "none".to_string()),
         };
         StateHeader {
-            version: 1,
+            version: layout::VERSION,
             scene: scene.name().to_string(),
             seed: scene.seed(),
             segment,
@@ -103,23 +107,35 @@ impl StateHeader {
         StateHeader { time, ..self }
     }
 
-    /// A record's size in bytes.
-    fn record_bytes(&self) -> u64 {
-        (8 + self.n * 3 * 8 * if self.spins { 2 } else { 1 }) as u64
+    /// The bytes of a record's values (without its checksum).
+    fn payload_bytes(&self) -> Option<u64> {
+        let per = if self.spins { 2 } else { 1 };
+        (self.n as u64).checked_mul(3 * 8 * per)?.checked_add(8)
     }
 
-    /// The file's size in bytes.
-    fn file_bytes(&self) -> u64 {
-        (MAGIC.len() + HEADER_BYTES) as u64 + self.ensembles * self.record_bytes()
+    /// The layout of this header's format version (a written header: the current one).
+    fn layout(&self) -> Layout {
+        Layout::of(self.version).unwrap_or(Layout {
+            version: layout::VERSION,
+        })
     }
 
-    /// The magic and the padded JSON.
+    /// The file's size in bytes, `None` when a (forged) header's numbers overflow.
+    fn file_bytes(&self) -> Option<u64> {
+        self.layout()
+            .file_bytes(self.ensembles, self.payload_bytes()?)
+    }
+
+    /// The magic, the padded JSON and the header's checksum (a written header: the current
+    /// format).
     fn bytes(&self) -> Vec<u8> {
         let mut b = MAGIC.to_vec();
         let json = serde_json::to_vec(self).expect("a header serializes");
         assert!(json.len() <= HEADER_BYTES, "a state header fits its bytes");
         b.extend(json);
         b.resize(MAGIC.len() + HEADER_BYTES, b' ');
+        let sum = layout::header_sum(&b);
+        b.extend(sum);
         b
     }
 }
@@ -168,9 +184,32 @@ impl StateWriter {
     /// there that gdsmc did not write (a state file is its own: it starts with [`MAGIC`]).
     pub fn create(path: &Path, header: StateHeader) -> Result<Self, Error> {
         crate::files::check_own(path, "GDSMC-STATE")?;
+        // A directory that is not there is said so (not "removed while gdsmc was writing").
+        let dir = match path.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        if !dir.is_dir() {
+            return Err(Error::Refused {
+                path: dir.to_path_buf(),
+                message: format!(
+                    "{}, so the state file {} cannot be written there: create the directory \
+                     first",
+                    if dir.exists() {
+                        "is not a directory"
+                    } else {
+                        "does not exist"
+                    },
+                    path.display()
+                ),
+            });
+        }
         let (mut file, tmp) = crate::files::create_temporary(path)?;
+        let size = header.file_bytes().ok_or_else(|| {
+            crate::files::write_err(path)(std::io::Error::other("a state too large to address"))
+        })?;
         file.write_all(&header.bytes())
-            .and_then(|()| file.set_len(header.file_bytes()))
+            .and_then(|()| file.set_len(size))
             .map_err(crate::files::write_err(path))?;
         Ok(StateWriter {
             file: Mutex::new(file),
@@ -191,7 +230,11 @@ impl StateWriter {
         if self.header.spins {
             bytes.extend(vectors((0..n).map(|i| frame.scale * p.spin(i))));
         }
-        let at = (MAGIC.len() + HEADER_BYTES) as u64 + k * self.header.record_bytes();
+        let sum = layout::record_sum(k, &bytes);
+        bytes.extend(sum);
+        let at = Layout::of(layout::VERSION)
+            .expect("the current format")
+            .record_at(k, bytes.len() as u64 - layout::SUM_BYTES as u64);
         let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
         f.seek(SeekFrom::Start(at))
             .and_then(|_| f.write_all(&bytes))
@@ -206,10 +249,11 @@ impl StateWriter {
             ..self.header
         };
         let mut f = self.file.into_inner().unwrap_or_else(|e| e.into_inner());
+        let size = header.file_bytes().unwrap_or(0);
         let done = f
             .seek(SeekFrom::Start(0))
             .and_then(|_| f.write_all(&header.bytes()))
-            .and_then(|()| f.set_len(header.file_bytes()))
+            .and_then(|()| f.set_len(size))
             .and_then(|()| f.sync_all())
             .and_then(|()| {
                 drop(f);
@@ -265,16 +309,22 @@ pub fn finish_all(writers: Vec<StateWriter>, ensembles: Option<u64>) -> Result<(
     first
 }
 
-/// A state file opened to continue from, its header checked against its size.
+/// A state file opened to continue from, checked whole before anything acts on it (module
+/// docs).
 pub struct StateReader {
     file: Mutex<File>,
     path: PathBuf,
+    layout: Layout,
     /// What it holds.
     pub header: StateHeader,
+    /// Warnings for the user (a file of the first format, whose bytes carry no checksums).
+    pub notes: Vec<String>,
 }
 
 impl StateReader {
-    /// Opens and checks `path`: its magic, version and size.
+    /// Opens and checks `path`: its magic and version, its header's checksum and fields, its
+    /// size, and every record's checksum and values. The refusal names the file and, for a
+    /// record, the ensemble and its byte offset.
     pub fn open(path: &Path) -> Result<Self, Error> {
         let bad = |why: String| Error::Argument {
             flag: "--initial-state".into(),
@@ -284,30 +334,58 @@ impl StateReader {
         let mut head = vec![0u8; MAGIC.len() + HEADER_BYTES];
         file.read_exact(&mut head)
             .map_err(|_| bad("too short to be a gdsmc state file".into()))?;
-        if &head[..MAGIC.len()] != MAGIC {
-            return Err(bad(if head.starts_with(b"GDSMC-STATE") {
-                "a gdsmc state file of another format version (this gdsmc reads v001)".into()
+        let layout = Layout::of_magic(&head[..MAGIC.len()]).ok_or_else(|| {
+            bad(if head.starts_with(b"GDSMC-STATE") {
+                "a gdsmc state file of another format version (this gdsmc reads v001 and v002)"
+                    .into()
             } else {
                 "not a gdsmc state file (it does not start with GDSMC-STATE)".into()
-            }));
+            })
+        })?;
+        let mut notes = Vec::new();
+        if layout.summed() {
+            let mut sum = [0u8; layout::SUM_BYTES];
+            file.read_exact(&mut sum)
+                .map_err(|_| bad("too short to be a gdsmc state file".into()))?;
+            if sum != layout::header_sum(&head) {
+                return Err(bad(
+                    "its header does not match its checksum: damaged or edited".into(),
+                ));
+            }
+        } else {
+            notes.push(format!(
+                "warning: {} is a state file of format v001, which has no checksums: its bytes \
+                 are checked for sense, not for damage (a run with --save-state writes v002)",
+                path.display()
+            ));
         }
         let header: StateHeader = serde_json::from_slice(head[MAGIC.len()..].trim_ascii_end())
             .map_err(|e| bad(format!("its header is not readable: {e}")))?;
+        checks::header(&header, layout).map_err(&bad)?;
         let size = file.metadata().map_err(|e| bad(e.to_string()))?.len();
-        if size != header.file_bytes() {
+        let want = header.file_bytes();
+        if want != Some(size) {
             return Err(bad(format!(
                 "holds {size} bytes, but its header ({} ensembles of {} particles) makes {}: \
                  cut short or damaged",
                 header.ensembles,
                 header.n,
-                header.file_bytes()
+                want.map_or("more than a file can hold".into(), |w| w.to_string())
             )));
         }
-        Ok(StateReader {
+        let reader = StateReader {
             file: Mutex::new(file),
             path: path.to_path_buf(),
+            layout,
             header,
-        })
+            notes,
+        };
+        // Every record, before any run starts from one (a damaged record must not be found
+        // mid-run, blaming the run).
+        for k in 0..reader.header.ensembles {
+            reader.record(k)?;
+        }
+        Ok(reader)
     }
 
     /// Whether `scene` may continue from this state: the same particles (count, dimension,
@@ -382,22 +460,43 @@ impl StateReader {
     }
 
     /// Ensemble `k`'s record as f64s: its collisions per particle so far, then `3 n`
-    /// velocity components, then (rough particles) `3 n` rim-velocity components.
+    /// velocity components, then (rough particles) `3 n` rim-velocity components; its checksum
+    /// and values checked (again: the file may have changed since it was opened).
     pub fn record(&self, k: u64) -> Result<Vec<f64>, Error> {
         let h = &self.header;
-        let mut bytes = vec![0u8; h.record_bytes() as usize];
-        let at = (MAGIC.len() + HEADER_BYTES) as u64 + k * h.record_bytes();
-        let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
-        f.seek(SeekFrom::Start(at))
-            .and_then(|_| f.read_exact(&mut bytes))
-            .map_err(|e| Error::Argument {
-                flag: "--initial-state".into(),
-                message: format!("{}: {e}", self.path.display()),
-            })?;
-        Ok(bytes
+        let payload = h.payload_bytes().expect("checked at open") as usize;
+        let at = self.layout.record_at(k, payload as u64);
+        let bad = |why: String| Error::Argument {
+            flag: "--initial-state".into(),
+            message: format!(
+                "{}: record {k} (ensemble {k}, at byte {at}): {why}",
+                self.path.display()
+            ),
+        };
+        let sum = if self.layout.summed() {
+            layout::SUM_BYTES
+        } else {
+            0
+        };
+        let mut bytes = vec![0u8; payload + sum];
+        {
+            let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
+            f.seek(SeekFrom::Start(at))
+                .and_then(|_| f.read_exact(&mut bytes))
+                .map_err(|e| bad(e.to_string()))?;
+        }
+        let (values, stored) = bytes.split_at(payload);
+        if sum > 0 && stored != layout::record_sum(k, values) {
+            return Err(bad(
+                "its bytes do not match its checksum: damaged or edited".into(),
+            ));
+        }
+        let x: Vec<f64> = values
             .chunks_exact(8)
             .map(|b| f64::from_le_bytes(b.try_into().expect("8 bytes")))
-            .collect())
+            .collect();
+        checks::record(&x, h).map_err(bad)?;
+        Ok(x)
     }
 
     /// Sets `p` to ensemble `k`'s particles; returns its collisions per particle so far.
