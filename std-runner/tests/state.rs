@@ -121,6 +121,70 @@ fn a_continuation_starts_where_the_saved_run_stopped() {
     }
 }
 
+/// docs/state.md's own commands at n = 64: a cooling gas followed to T_bulk = 1e-10 is stored
+/// rescaled about its bulk velocity, and a state holds physical velocities, whose peculiar
+/// parts beside the bulk velocity `V` keep only their leading digits: a relative rounding of
+/// `delta = eps |V| / sqrt(T_bulk)`. So the continuation's first observation is the saved run's
+/// last to within that rounding (not to the bit; docs/state.md says so): each observed mean
+/// within `6 delta` relatively (the highest moment, `v6`, is of order 6), the dimensionless
+/// reduced ones (`a2`, `a3`, `c1`, `c3`, `crit`) within `16 delta` absolutely (their terms are
+/// at most 15). Every value is a number (before: `v6` was NaN there).
+#[test]
+fn a_rescaled_cooling_gas_continues_within_its_rounding() {
+    let r = root("rescaled");
+    let saved = r.join("hcs.gdsmc-state");
+    job("hcs-hard-spheres", &[], &r.join("a"), (None, Some(&saved)))
+        .run(&Quiet::default())
+        .unwrap();
+    let (ha, a) = table(&r.join("a"));
+    let last = &a[a.len() - 1];
+    let t_end = last[0].clone();
+    let later = [
+        format!("observe.t_start={t_end}"),
+        "observe.t_end=200000".to_string(),
+    ];
+    let later: Vec<&str> = later.iter().map(String::as_str).collect();
+    job(
+        "hcs-hard-spheres",
+        &later,
+        &r.join("b"),
+        (Some(&saved), None),
+    )
+    .run(&Quiet::default())
+    .unwrap();
+    let (hb, b) = table(&r.join("b"));
+    let (x, y) = (observed(&ha, last), observed(&hb, &b[0]));
+    let value = |cells: &[(String, String)], name: &str| -> f64 {
+        cells
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap()
+            .1
+            .parse()
+            .unwrap()
+    };
+    let t_bulk = value(&x, "T_bulk");
+    assert!(
+        t_bulk < 1e-8,
+        "the gas was not stored rescaled (T_bulk = {t_bulk})"
+    );
+    let delta = f64::EPSILON * value(&x, "V_norm") / t_bulk.sqrt();
+    let reduced = ["a2", "a3", "c1", "c3", "crit"];
+    for ((name, u), (_, v)) in x.iter().zip(&y) {
+        let (u, v): (f64, f64) = (u.parse().unwrap(), v.parse().unwrap());
+        assert!(v.is_finite(), "{name} is {v} at the continuation's start");
+        let bound = if reduced.contains(&name.as_str()) {
+            16.0 * delta
+        } else {
+            6.0 * delta * u.abs()
+        };
+        assert!(
+            (u - v).abs() <= bound,
+            "{name}: {u} then {v} (bound {bound:e})"
+        );
+    }
+}
+
 #[test]
 fn a_continuation_is_the_same_for_any_thread_count_and_drops_foreign_references() {
     let r = root("threads");

@@ -162,8 +162,7 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> 
         self.c
             .drive
             .kick_all_counting(p, t_end, rng, &mut self.c.counts.background);
-        let obs = self.synchronized(p)?;
-        Ok(self.frame.with_raw_v6(p.as_slice(), obs))
+        self.synchronized(p)
     }
 
     /// Re-synchronizes after the caller changed velocities between calls: every last-kick time
@@ -198,7 +197,12 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> 
             self.c.map = self.c.map.stored_map(f);
         }
         self.c.synchronized(&obs);
-        Ok(self.frame.observables(&obs, d))
+        // `v6` of a gas stored rescaled summed from the physical velocities here, at every
+        // synchronization (the start of a continuation's cooling gas included: it was NaN
+        // there, issue 77).
+        Ok(self
+            .frame
+            .with_raw_v6(p.as_slice(), self.frame.observables(&obs, d)))
     }
 
     /// Sets the stored temperature below which a gas with no drive is rescaled (default

@@ -188,8 +188,7 @@ impl<A: Restitution> SumNoSplitting<A> {
         // The t_kick slots are the caller's again.
         p.reset_kick_times(t_end);
         self.ready = false;
-        let obs = self.synchronized(p, false)?;
-        Ok(self.frame.with_raw_v6(p.as_slice(), obs))
+        self.synchronized(p, false)
     }
 
     /// Re-synchronizes after the caller changed the velocities (physical ones).
@@ -218,7 +217,10 @@ impl<A: Restitution> SumNoSplitting<A> {
         if in_run {
             self.prepare(p, obs.bulk);
         }
-        Ok(self.frame.observables(&obs, 3))
+        // `v6` of a gas stored rescaled, at every synchronization (the start included).
+        Ok(self
+            .frame
+            .with_raw_v6(p.as_slice(), self.frame.observables(&obs, 3)))
     }
 
     /// The next uniform index in `0..n`: drawn [`AHEAD`] uses ago and prefetched at large `n`.
