@@ -77,6 +77,41 @@ fn state_refused(how: &str) -> Error {
     }
 }
 
+/// Refuses a `--save-state` path that is one of the run's own files: its journal `journal`
+/// (the finished run removes it: the state would go with it), its claim, or a place inside
+/// its output directory `dir` (the new output set replaces that directory).
+fn save_place_free(path: &Path, dir: &Path, journal: &Path) -> Result<(), Error> {
+    // Where a path is: its parent made absolute and free of links (when it exists), and its
+    // name.
+    let place = |p: &Path| -> Option<PathBuf> {
+        let parent = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        Some(std::fs::canonicalize(parent).ok()?.join(p.file_name()?))
+    };
+    let refuse = |what: &str| Error::Argument {
+        flag: "--save-state".into(),
+        message: format!(
+            "{} is {what}, which gdsmc removes or replaces: choose a file of its own",
+            path.display()
+        ),
+    };
+    let Some(state) = place(path) else {
+        return Ok(());
+    };
+    if place(journal).is_some_and(|j| j == state) {
+        return Err(refuse("the run's own journal"));
+    }
+    if place(&crate::files::claim::path_of(dir)).is_some_and(|c| c == state) {
+        return Err(refuse("the run's claim on its output directory"));
+    }
+    if place(dir).is_some_and(|d| state.starts_with(&d)) {
+        return Err(refuse("inside the run's output directory"));
+    }
+    Ok(())
+}
+
 /// What a job did, for the caller to show.
 #[derive(Clone, Debug)]
 pub struct Outcome {
@@ -138,6 +173,10 @@ impl Job {
         }
         // The output place is prepared (and shown writable) before any simulation.
         let dir = self.dir(sc.name());
+        let file = run::journal::beside(&dir, run::journal::Of::Run);
+        if let Some(p) = &self.save_state {
+            save_place_free(p, &dir, &file)?;
+        }
         let set = OutputSet::prepare(&dir)?;
         set.notes().iter().for_each(|n| watch.note(n));
         let save = self
@@ -156,27 +195,32 @@ impl Job {
             save: save.as_ref(),
             snapshots: &snapshots,
         };
-        let file = run::journal::beside(&dir, run::journal::Of::Run);
-        if states {
-            watch.note(
-                "note: a run with a state file starts anew (its journal records no state and \
-                 is not continued)",
-            );
-        }
-        let r = self.journaled(&file, None, 0..sc.ensembles(), (io, states), watch);
+        let r = self.journaled(&file, None, 0..sc.ensembles(), (io, false), watch);
         let kept = r.as_ref().ok().map(|r| r.stats.ensembles);
         run::state::finish_all(snapshots, kept)?;
+        // The state: renamed into place when the run is complete; an interrupted run's first
+        // ensembles written beside, its partial file kept for the journal's continuation
+        // (the same command takes both up); dropped when nothing is left to continue.
+        let mut saved = None;
         let r = match (r, save) {
-            (Ok(r), Some(w)) if r.stats.ensembles > 0 => {
+            (Ok(r), Some(w)) if r.stats.ensembles == sc.ensembles() => {
+                saved = Some((w.path().to_path_buf(), r.stats.ensembles));
                 w.finish(r.stats.ensembles)?;
                 r
             }
-            (r, w) => {
-                if let Some(w) = w {
+            (r, Some(w)) => {
+                if let Ok(r) = &r
+                    && r.stats.ensembles > 0
+                {
+                    w.save_prefix(r.stats.ensembles)?;
+                    saved = Some((w.path().to_path_buf(), r.stats.ensembles));
+                }
+                if !file.exists() {
                     w.abandon();
                 }
                 r?
             }
+            (r, None) => r?,
         };
         let stats = r.stats;
         let complete = stats.ensembles == sc.ensembles();
@@ -213,6 +257,14 @@ impl Job {
             _ => for_scene(sc),
         };
         let mut text = write_with(set, sc, &stats, &dir, self.format, &refs)?;
+        if let Some((path, m)) = saved {
+            let _ = writeln!(
+                text,
+                "wrote the state of {m} ensembles at t = {} into {}",
+                sc.times()[sc.times().len() - 1],
+                path.display()
+            );
+        }
         for (j, &ti) in sc.snapshots().iter().enumerate() {
             let name = run::state::snapshot_name(j);
             let _ = writeln!(text, "velocity snapshot at t = {}: {name}", sc.times()[ti]);
@@ -245,7 +297,8 @@ impl Job {
     ) -> Result<run::JournalRun, Error> {
         let job = Journaled {
             scene: &self.source.scene,
-            header: run::journal::Header::new(&self.source, shard, range.clone()),
+            header: run::journal::Header::new(&self.source, shard, range.clone())
+                .from_state(state.initial.map(|r| r.identity.clone())),
             path: file,
             threads: self.threads,
             fresh: self.fresh || fresh,

@@ -26,6 +26,7 @@ mod reproduce_verdicts;
 mod signals;
 mod state;
 mod state_checks;
+mod state_continue;
 mod steady_summary;
 mod stepped;
 mod sweep;

@@ -41,6 +41,12 @@ impl Held {
     }
 }
 
+impl From<Child> for Held {
+    fn from(c: Child) -> Self {
+        Held(Some(c))
+    }
+}
+
 impl Drop for Held {
     fn drop(&mut self) {
         if let Some(mut c) = self.0.take() {

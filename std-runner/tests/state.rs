@@ -4,6 +4,7 @@
 //! it is not, is the same for any thread count, and bad or foreign files are refused by name.
 
 use gdsmc_runner::job::{Job, Quiet};
+use gdsmc_runner::run::columns::name;
 use gdsmc_runner::run::state::{MAGIC, StateReader};
 use gdsmc_runner::scene::{Override, Sourced};
 use std::path::{Path, PathBuf};
@@ -163,24 +164,24 @@ fn a_rescaled_cooling_gas_continues_within_its_rounding() {
             .parse()
             .unwrap()
     };
-    let t_bulk = value(&x, "T_bulk");
+    let t_bulk = value(&x, name::T_BULK);
     assert!(
         t_bulk < 1e-8,
         "the gas was not stored rescaled (T_bulk = {t_bulk})"
     );
-    let delta = f64::EPSILON * value(&x, "V_norm") / t_bulk.sqrt();
-    let reduced = ["a2", "a3", "c1", "c3", "crit"];
-    for ((name, u), (_, v)) in x.iter().zip(&y) {
+    let delta = f64::EPSILON * value(&x, name::V_NORM) / t_bulk.sqrt();
+    let reduced = [name::A2, name::A3, name::C1, name::C3, name::CRIT];
+    for ((column, u), (_, v)) in x.iter().zip(&y) {
         let (u, v): (f64, f64) = (u.parse().unwrap(), v.parse().unwrap());
-        assert!(v.is_finite(), "{name} is {v} at the continuation's start");
-        let bound = if reduced.contains(&name.as_str()) {
+        assert!(v.is_finite(), "{column} is {v} at the continuation's start");
+        let bound = if reduced.contains(&column.as_str()) {
             16.0 * delta
         } else {
             6.0 * delta * u.abs()
         };
         assert!(
             (u - v).abs() <= bound,
-            "{name}: {u} then {v} (bound {bound:e})"
+            "{column}: {u} then {v} (bound {bound:e})"
         );
     }
 }

@@ -10,6 +10,9 @@
 //! - [`samplers`]: every sampler at extreme parameters: no NaN, no infinity, no endless loop.
 //! - [`scene_reader`], [`scene_structured`]: arbitrary bytes and structure-aware TOML: an error
 //!   or a valid scene whose physics validates, never a panic.
+//! - [`state_reader`]: arbitrary bytes as a state file (`--initial-state`), and valid state files
+//!   changed in one byte: a refusal naming the file, or a state within its bounds; a changed
+//!   file always refused.
 //! - [`c_abi`]: arbitrary configurations, sizes and enumeration integers through the C ABI: a
 //!   status code, never a crash (under ASan in the fuzz build).
 
@@ -18,12 +21,14 @@ mod maps;
 mod rough;
 mod samplers;
 mod scene;
+mod state;
 
 pub use cabi::{MOST_KINDS, c_abi};
 pub use maps::collision_maps;
 pub use rough::rough_maps;
 pub use samplers::samplers;
 pub use scene::{KEYS, WORDS, scene_reader, scene_structured};
+pub use state::state_reader;
 
 use arbitrary::Unstructured;
 

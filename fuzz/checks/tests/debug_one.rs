@@ -13,6 +13,7 @@ fn one() {
         Ok("samplers") => gdsmc_fuzz_checks::samplers(&data),
         Ok("scene_reader") => gdsmc_fuzz_checks::scene_reader(&data),
         Ok("scene_structured") => gdsmc_fuzz_checks::scene_structured(&data),
+        Ok("state_reader") => gdsmc_fuzz_checks::state_reader(&data),
         _ => gdsmc_fuzz_checks::c_abi(&data),
     }
 }

@@ -55,3 +55,8 @@ fn scene_structured() {
 fn c_abi() {
     replay("c_abi", gdsmc_fuzz_checks::c_abi);
 }
+
+#[test]
+fn state_reader() {
+    replay("state_reader", gdsmc_fuzz_checks::state_reader);
+}

@@ -14,9 +14,12 @@
 //!
 //! A process writes the token into its claim (flushed) before it creates the directory, and
 //! the marker into the directory at once after: a killed run leaves a claim and a directory
-//! whose tokens agree. The marker is removed when the set is committed (it is no file of the
-//! set), so a run killed during its final writes may leave a staging directory that proves
-//! nothing: it is named in a warning, never removed.
+//! whose tokens agree. The marker is no file of the set: the manifest does not list it. When
+//! the set is swapped in, the previous set gets a marker of the same token before the two
+//! directories are exchanged (so the staging name, now holding the previous set, still proves
+//! itself if a kill comes before it is removed), and the new set's marker is removed after.
+//! A marker left in an output set by a kill at that moment is recognized ([`is_marker`]) and
+//! not taken for a user's file.
 
 use std::path::Path;
 
@@ -45,6 +48,39 @@ pub fn is_token(text: &str) -> bool {
 /// The marker file's contents for `token`.
 pub fn marker_text(token: &str) -> String {
     format!("{SIGNATURE}\ntoken {token}\n")
+}
+
+/// Whether the directory entry `name` in `dir` is a marker file of gdsmc's: named [`MARKER`],
+/// a regular file (not a link) holding a marker's text for some token. An output set may hold
+/// one for a moment while it is swapped in (the previous set carries it to the staging name,
+/// so that a kill there leaves a directory the next run can prove); it is no file of the set.
+pub fn is_marker(dir: &Path, name: &str) -> bool {
+    if name != MARKER {
+        return false;
+    }
+    let path = dir.join(name);
+    if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+        return false;
+    }
+    let mut text = String::new();
+    super::open_regular(&path)
+        .and_then(|f| std::io::Read::read_to_string(&mut std::io::Read::take(f, 256), &mut text))
+        .is_ok()
+        && text
+            .strip_prefix(SIGNATURE)
+            .and_then(|t| t.strip_prefix("\ntoken "))
+            .and_then(|t| t.strip_suffix('\n'))
+            .is_some_and(is_token)
+}
+
+/// Writes the marker of `token` into `dir` (a new file: an existing one is refused).
+pub fn mark(dir: &Path, token: &str) -> std::io::Result<()> {
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(dir.join(MARKER))?;
+    std::io::Write::write_all(&mut f, marker_text(token).as_bytes())?;
+    f.sync_data()
 }
 
 /// Whether `name` is a staging name of the place whose staging names begin with `prefix`

@@ -55,6 +55,8 @@ pub struct OutputSet {
     committed: bool,
     /// Warnings for the user from preparing the set (a staging directory left as it is).
     notes: Vec<String>,
+    /// The random token of the staging directory's marker (and its claim's).
+    token: String,
     /// The target's claim, held until the set is committed or dropped (after the staging
     /// directory is gone).
     _claim: Claim,
@@ -105,8 +107,12 @@ pub fn check_replaceable(target: &Path) -> Result<(), Error> {
                 (name, file)
             })
         })
-        .collect::<Result<_, _>>()
-        .map_err(write_err(target))?;
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(write_err(target))?
+        .into_iter()
+        // A staging marker a kill left during the swap is gdsmc's, no file of the set.
+        .filter(|(n, _)| !staging::is_marker(target, n))
+        .collect();
     if entries.is_empty() {
         return Ok(());
     }
@@ -212,19 +218,11 @@ impl OutputSet {
             staging,
             committed: false,
             notes,
+            token: token.clone(),
             _claim: claim,
         };
         // Created exclusively: the directory is new, so nothing else can be at its name.
-        let marker = set.staging.join(staging::MARKER);
-        std::fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&marker)
-            .and_then(|mut f| {
-                std::io::Write::write_all(&mut f, staging::marker_text(&token).as_bytes())?;
-                f.sync_data()
-            })
-            .map_err(write_err(&marker))?;
+        staging::mark(&set.staging, &token).map_err(write_err(&set.staging))?;
         Ok(set)
     }
 
@@ -243,15 +241,12 @@ impl OutputSet {
     /// describing the run) and puts the set in place of the previous one. Returns the names of
     /// the files written (the manifest last).
     pub fn commit(mut self, run: serde_json::Value) -> Result<Vec<String>, Error> {
-        // The marker is no file of the set; without it a staging directory a kill leaves from
-        // here on proves nothing and is only named, never removed, by the next run.
-        let marker = self.staging.join(staging::MARKER);
-        std::fs::remove_file(&marker).map_err(write_err(&marker))?;
         let mut files = Vec::new();
         let mut written = Vec::new();
         let mut names: Vec<PathBuf> = std::fs::read_dir(&self.staging)
             .map_err(write_err(&self.staging))?
             .flatten()
+            .filter(|e| e.file_name() != staging::MARKER)
             .map(|e| e.path())
             .collect();
         names.sort();
@@ -290,16 +285,30 @@ impl OutputSet {
         let (staging, target) = (&self.staging, &self.target);
         check_replaceable(target)?;
         let parent = staging.parent().unwrap_or(Path::new("."));
+        // The new set's marker goes once the set is in place (a kill before leaves it there,
+        // recognized as gdsmc's: `staging::is_marker`).
+        let unmark = || {
+            let _ = std::fs::remove_file(target.join(staging::MARKER));
+        };
         if std::fs::symlink_metadata(target).is_err() {
             std::fs::rename(staging, target).map_err(write_err(target))?;
+            unmark();
             return crate::files::sync_dir(parent);
         }
+        // The previous set carries this run's token to the staging name, so that a kill before
+        // it is removed leaves a directory the next run proves gdsmc's and removes.
+        if staging::is_marker(target, staging::MARKER) {
+            // An earlier run's, left by a kill during its swap.
+            let _ = std::fs::remove_file(target.join(staging::MARKER));
+        }
+        staging::mark(target, &self.token).map_err(write_err(target))?;
         #[cfg(target_os = "linux")]
         {
             use rustix::fs::{CWD, RenameFlags, renameat_with};
             // One atomic step: the staging directory now holds the previous set.
             renameat_with(CWD, staging, CWD, target, RenameFlags::EXCHANGE)
                 .map_err(|e| write_err(target)(e.into()))?;
+            unmark();
             crate::files::sync_dir(parent)?;
             let _ = std::fs::remove_dir_all(staging);
             Ok(())
@@ -309,6 +318,7 @@ impl OutputSet {
             let old = staging.with_extension("old");
             std::fs::rename(target, &old).map_err(write_err(target))?;
             std::fs::rename(staging, target).map_err(write_err(target))?;
+            unmark();
             crate::files::sync_dir(parent)?;
             let _ = std::fs::remove_dir_all(&old);
             Ok(())

@@ -321,6 +321,26 @@ impl Journaled<'_> {
             Err(why) if !self.fresh => discarded = Some(why),
             Err(_) => {}
         }
+        // The journal's ensembles are taken only when every state file the run writes holds
+        // their records (written before each was journaled): else the particles they ended
+        // with are lost, and the run starts anew.
+        if kept.is_some() {
+            let writers = self.state.save.into_iter().chain(self.state.snapshots);
+            let done = self.header.start..self.header.start + totals.ensembles;
+            if let Some(w) = writers
+                .into_iter()
+                .find(|w| !done.clone().all(|k| w.holds(k)))
+            {
+                discarded = Some(format!(
+                    "the particles of its {} finished ensembles are not all in {}",
+                    totals.ensembles,
+                    crate::run::state::partial_of(w.path()).display()
+                ));
+                totals = Totals::new(scene);
+                kept = None;
+                damage = None;
+            }
+        }
         match kept {
             Some(len) => writer.keep(len)?,
             None => writer.restart(&self.header)?,

@@ -84,6 +84,11 @@ pub struct Header {
     pub end: u64,
     /// Values per ensemble (observables and histograms).
     pub row_len: usize,
+    /// The identity of the state file the run starts from
+    /// ([`crate::run::state::StateReader::identity`]); `None` for a run from the scene's
+    /// initial distribution (and in every journal written before it was recorded).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub initial_state: Option<String>,
 }
 
 impl Header {
@@ -111,6 +116,17 @@ impl Header {
             start: range.start,
             end: range.end,
             row_len: crate::run::totals::Totals::row_len_of(scene),
+            initial_state: None,
+        }
+    }
+
+    /// The same header for a run from the state file whose identity is `initial` (none: from
+    /// the scene's initial distribution).
+    #[must_use]
+    pub fn from_state(self, initial: Option<String>) -> Self {
+        Header {
+            initial_state: initial,
+            ..self
         }
     }
 
@@ -168,6 +184,12 @@ impl Header {
             self.end,
             self.row_len
         );
+        // A run from a state file is bound to it too (a run from the scene keeps the key
+        // every earlier journal has).
+        let id = match &self.initial_state {
+            Some(state) => format!("{id}\nfrom state {state}"),
+            None => id,
+        };
         crc32fast::hash(id.as_bytes())
     }
 
@@ -231,6 +253,7 @@ impl Header {
             && self.ensembles == other.ensembles
             && self.shard.map(|s| s.1) == other.shard.map(|s| s.1)
             && self.row_len == other.row_len
+            && self.initial_state == other.initial_state
     }
 
     /// What differs from `other`, in words (the first difference found), for the message that
@@ -257,6 +280,16 @@ impl Header {
             format!(
                 "{} ensembles in all, not {}",
                 self.ensembles, other.ensembles
+            )
+        } else if self.initial_state != other.initial_state {
+            let words = |s: &Option<String>| match s {
+                Some(id) => format!("the state {id}"),
+                None => "the scene's initial distribution".into(),
+            };
+            format!(
+                "a run from {}, not from {}",
+                words(&self.initial_state),
+                words(&other.initial_state)
             )
         } else if self.shard.map(|s| s.1) != other.shard.map(|s| s.1) {
             format!(

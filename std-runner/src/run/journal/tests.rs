@@ -17,6 +17,7 @@ fn header() -> Header {
         start: 3,
         end: 6,
         row_len: 3,
+        initial_state: None,
     }
 }
 

@@ -170,18 +170,66 @@ fn vectors(it: impl Iterator<Item = Vec3>) -> Vec<u8> {
         .collect()
 }
 
-/// A state file being written: records put as ensembles finish (from any thread), renamed
-/// into place by [`StateWriter::finish`]; until then it is a temporary file beside `path`.
+/// A state file being written: records put as ensembles finish (from any thread) into its
+/// partial file beside `path` ([`partial_of`], locked while written), renamed into place by
+/// [`StateWriter::finish`]. The partial file's name is fixed, not a process's: a run killed
+/// (a job's time limit) leaves one file, which the same command continues (the records of the
+/// ensembles its journal holds are kept, [`StateWriter::holds`]) and removes when it ends.
 pub struct StateWriter {
     file: Mutex<File>,
-    tmp: PathBuf,
+    partial: PathBuf,
     path: PathBuf,
     header: StateHeader,
 }
 
+/// The partial file of a state being written to `path`: `.NAME.gdsmc-state-partial` beside it.
+pub fn partial_of(path: &Path) -> PathBuf {
+    let name = path
+        .file_name()
+        .map_or("state".into(), |n| n.to_string_lossy());
+    path.with_file_name(format!(".{name}.gdsmc-state-partial"))
+}
+
+/// Record `k`'s values from the open state `file` of layout `layout` and header `h`, its
+/// checksum and values checked: the refusal in words.
+fn read_record(
+    file: &Mutex<File>,
+    layout: Layout,
+    h: &StateHeader,
+    k: u64,
+) -> Result<Vec<f64>, String> {
+    let payload = h.payload_bytes().ok_or("a record too large to address")? as usize;
+    let sum = if layout.summed() {
+        layout::SUM_BYTES
+    } else {
+        0
+    };
+    let mut bytes = vec![0u8; payload + sum];
+    {
+        let mut f = file.lock().unwrap_or_else(|e| e.into_inner());
+        f.seek(SeekFrom::Start(layout.record_at(k, payload as u64)))
+            .and_then(|_| f.read_exact(&mut bytes))
+            .map_err(|e| e.to_string())?;
+    }
+    let (values, stored) = bytes.split_at(payload);
+    if sum > 0 && stored != layout::record_sum(k, values) {
+        return Err("its bytes do not match its checksum: damaged or edited".into());
+    }
+    let x: Vec<f64> = values
+        .chunks_exact(8)
+        .map(|b| f64::from_le_bytes(b.try_into().expect("8 bytes")))
+        .collect();
+    checks::record(&x, h)?;
+    Ok(x)
+}
+
 impl StateWriter {
     /// Starts the state of `header.ensembles` ensembles at `path`: refused when a file is
-    /// there that gdsmc did not write (a state file is its own: it starts with [`MAGIC`]).
+    /// there that gdsmc did not write (a state file is its own: it starts with [`MAGIC`]), when
+    /// its directory does not exist, or while another process writes the same state. A
+    /// partial file of this same state (its header's bytes this one's: the same scene, seed,
+    /// segment, time and size) is continued, its records kept for [`StateWriter::holds`];
+    /// any other partial file of gdsmc's at that name is started anew.
     pub fn create(path: &Path, header: StateHeader) -> Result<Self, Error> {
         crate::files::check_own(path, "GDSMC-STATE")?;
         // A directory that is not there is said so (not "removed while gdsmc was writing").
@@ -204,19 +252,59 @@ impl StateWriter {
                 ),
             });
         }
-        let (mut file, tmp) = crate::files::create_temporary(path)?;
-        let size = header.file_bytes().ok_or_else(|| {
-            crate::files::write_err(path)(std::io::Error::other("a state too large to address"))
-        })?;
-        file.write_all(&header.bytes())
-            .and_then(|()| file.set_len(size))
-            .map_err(crate::files::write_err(path))?;
+        let partial = partial_of(path);
+        let werr = crate::files::write_err(&partial);
+        crate::files::check_own(&partial, "GDSMC-STATE")?;
+        let mut file = crate::files::open_own(&partial)?;
+        match file.try_lock() {
+            Ok(()) => {}
+            Err(std::fs::TryLockError::WouldBlock) => {
+                let who = crate::files::claim::flock_holder(&file)
+                    .map_or(String::new(), |pid| format!(" (process {pid})"));
+                return Err(Error::Refused {
+                    path: path.to_path_buf(),
+                    message: format!(
+                        "another gdsmc process{who} is writing this state file: wait for it, \
+                         or choose another --save-state"
+                    ),
+                });
+            }
+            Err(std::fs::TryLockError::Error(e)) => return Err(werr(e)),
+        }
+        let size = header
+            .file_bytes()
+            .ok_or_else(|| werr(std::io::Error::other("a state too large to address")))?;
+        let head = header.bytes();
+        let mut have = Vec::new();
+        (&mut file)
+            .take(head.len() as u64)
+            .read_to_end(&mut have)
+            .map_err(&werr)?;
+        let same = have == head && file.metadata().map_err(&werr)?.len() == size;
+        if !same {
+            file.set_len(0)
+                .and_then(|()| file.rewind())
+                .and_then(|()| file.write_all(&head))
+                .and_then(|()| file.set_len(size))
+                .map_err(&werr)?;
+        }
         Ok(StateWriter {
             file: Mutex::new(file),
-            tmp,
+            partial: partial.clone(),
             path: path.to_path_buf(),
             header,
         })
+    }
+
+    /// The file the state goes to when the run ends.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Whether the partial file holds ensemble `k`'s record whole (its checksum and values
+    /// check): the record a run killed after journaling ensemble `k` wrote before it.
+    pub fn holds(&self, k: u64) -> bool {
+        read_record(&self.file, self.header.layout(), &self.header, k).is_ok()
     }
 
     /// Writes ensemble `k`'s particles `p` (stored velocities mapped by `frame` to physical
@@ -232,43 +320,71 @@ impl StateWriter {
         }
         let sum = layout::record_sum(k, &bytes);
         bytes.extend(sum);
-        let at = Layout::of(layout::VERSION)
-            .expect("the current format")
+        let at = self
+            .header
+            .layout()
             .record_at(k, bytes.len() as u64 - layout::SUM_BYTES as u64);
         let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
         f.seek(SeekFrom::Start(at))
             .and_then(|_| f.write_all(&bytes))
-            .map_err(crate::files::write_err(&self.path))
+            .map_err(crate::files::write_err(&self.partial))
     }
 
-    /// Finishes the file with the first `ensembles` records (those of the statistics: an
-    /// interrupted run keeps its finished prefix) and renames it into place.
+    /// Finishes the file with the first `ensembles` records (those of the statistics) and
+    /// renames it into place.
     pub fn finish(self, ensembles: u64) -> Result<(), Error> {
         let header = StateHeader {
             ensembles,
             ..self.header
         };
-        let mut f = self.file.into_inner().unwrap_or_else(|e| e.into_inner());
         let size = header.file_bytes().unwrap_or(0);
+        let mut f = self.file.into_inner().unwrap_or_else(|e| e.into_inner());
         let done = f
             .seek(SeekFrom::Start(0))
             .and_then(|_| f.write_all(&header.bytes()))
             .and_then(|()| f.set_len(size))
             .and_then(|()| f.sync_all())
-            .and_then(|()| {
-                drop(f);
-                std::fs::rename(&self.tmp, &self.path)
-            });
+            .and_then(|()| std::fs::rename(&self.partial, &self.path));
         if let Err(e) = done {
-            let _ = std::fs::remove_file(&self.tmp);
+            let _ = std::fs::remove_file(&self.partial);
             return Err(crate::files::write_err(&self.path)(e));
         }
         Ok(())
     }
 
-    /// Drops the unfinished file.
+    /// Writes the state of the first `ensembles` records (an interrupted run's: those of its
+    /// statistics) to the target through a temporary file, and keeps the partial file for the
+    /// run's continuation.
+    pub fn save_prefix(&self, ensembles: u64) -> Result<(), Error> {
+        let header = StateHeader {
+            ensembles,
+            ..self.header.clone()
+        };
+        let layout = self.header.layout();
+        let payload = self.header.payload_bytes().unwrap_or(0);
+        let (mut out, tmp) = crate::files::create_temporary(&self.path)?;
+        let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
+        let copy = |f: &mut File, out: &mut File| -> std::io::Result<()> {
+            out.write_all(&header.bytes())?;
+            f.seek(SeekFrom::Start(layout.data_start()))?;
+            let records = ensembles * layout.record_bytes(payload).unwrap_or(0);
+            std::io::copy(&mut f.take(records), out)?;
+            out.sync_all()
+        };
+        let done = copy(&mut f, &mut out).and_then(|()| {
+            drop(out);
+            std::fs::rename(&tmp, &self.path)
+        });
+        if let Err(e) = done {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(crate::files::write_err(&self.path)(e));
+        }
+        Ok(())
+    }
+
+    /// Drops the partial file (nothing of it is to be continued).
     pub fn abandon(self) {
-        let _ = std::fs::remove_file(&self.tmp);
+        let _ = std::fs::remove_file(&self.partial);
     }
 }
 
@@ -319,6 +435,10 @@ pub struct StateReader {
     pub header: StateHeader,
     /// Warnings for the user (a file of the first format, whose bytes carry no checksums).
     pub notes: Vec<String>,
+    /// What tells this state from another: the CRC-32 of its header and every record's values,
+    /// and its size, in hex. A run's journal records it, so that a journal of a run from
+    /// another state is not continued.
+    pub identity: String,
 }
 
 impl StateReader {
@@ -373,18 +493,24 @@ impl StateReader {
                 want.map_or("more than a file can hold".into(), |w| w.to_string())
             )));
         }
-        let reader = StateReader {
+        let mut reader = StateReader {
             file: Mutex::new(file),
             path: path.to_path_buf(),
             layout,
             header,
             notes,
+            identity: String::new(),
         };
         // Every record, before any run starts from one (a damaged record must not be found
         // mid-run, blaming the run).
+        let mut id = crc32fast::Hasher::new();
+        id.update(&head);
         for k in 0..reader.header.ensembles {
-            reader.record(k)?;
+            for x in reader.record(k)? {
+                id.update(&x.to_le_bytes());
+            }
         }
+        reader.identity = format!("{:08x}-{size}", id.finalize());
         Ok(reader)
     }
 
@@ -463,40 +589,17 @@ impl StateReader {
     /// velocity components, then (rough particles) `3 n` rim-velocity components; its checksum
     /// and values checked (again: the file may have changed since it was opened).
     pub fn record(&self, k: u64) -> Result<Vec<f64>, Error> {
-        let h = &self.header;
-        let payload = h.payload_bytes().expect("checked at open") as usize;
-        let at = self.layout.record_at(k, payload as u64);
-        let bad = |why: String| Error::Argument {
-            flag: "--initial-state".into(),
-            message: format!(
-                "{}: record {k} (ensemble {k}, at byte {at}): {why}",
-                self.path.display()
-            ),
-        };
-        let sum = if self.layout.summed() {
-            layout::SUM_BYTES
-        } else {
-            0
-        };
-        let mut bytes = vec![0u8; payload + sum];
-        {
-            let mut f = self.file.lock().unwrap_or_else(|e| e.into_inner());
-            f.seek(SeekFrom::Start(at))
-                .and_then(|_| f.read_exact(&mut bytes))
-                .map_err(|e| bad(e.to_string()))?;
-        }
-        let (values, stored) = bytes.split_at(payload);
-        if sum > 0 && stored != layout::record_sum(k, values) {
-            return Err(bad(
-                "its bytes do not match its checksum: damaged or edited".into(),
-            ));
-        }
-        let x: Vec<f64> = values
-            .chunks_exact(8)
-            .map(|b| f64::from_le_bytes(b.try_into().expect("8 bytes")))
-            .collect();
-        checks::record(&x, h).map_err(bad)?;
-        Ok(x)
+        read_record(&self.file, self.layout, &self.header, k).map_err(|why| {
+            let payload = self.header.payload_bytes().unwrap_or(0);
+            Error::Argument {
+                flag: "--initial-state".into(),
+                message: format!(
+                    "{}: record {k} (ensemble {k}, at byte {}): {why}",
+                    self.path.display(),
+                    self.layout.record_at(k, payload)
+                ),
+            }
+        })
     }
 
     /// Sets `p` to ensemble `k`'s particles; returns its collisions per particle so far.
