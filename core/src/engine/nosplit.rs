@@ -197,12 +197,16 @@ impl<K: Kernel, D: Drive, A: CollisionMap, G: Geometry> NoSplitting<K, D, A, G> 
             self.c.map = self.c.map.stored_map(f);
         }
         self.c.synchronized(&obs);
+        let obs = self.frame.observables(&obs, d);
+        if D::ACTS {
+            // A driven gas is never stored rescaled: its `v6` is the central moments' (and no
+            // code for the sum is built into a driven engine: the micro:bit's 64 KiB).
+            return Ok(obs);
+        }
         // `v6` of a gas stored rescaled summed from the physical velocities here, at every
         // synchronization (the start of a continuation's cooling gas included: it was NaN
         // there, issue 77).
-        Ok(self
-            .frame
-            .with_raw_v6(p.as_slice(), self.frame.observables(&obs, d)))
+        Ok(self.frame.with_raw_v6(p.as_slice(), obs))
     }
 
     /// Sets the stored temperature below which a gas with no drive is rescaled (default

@@ -127,8 +127,17 @@ impl Claim {
                         token: field(&text, "token").map(str::to_string),
                     })
                 });
+            // The new claim keeps naming the directory left behind (with its token) until this
+            // process has removed it and records its own: a kill in between must not leave a
+            // staging directory no claim names.
+            let keep = left.as_ref().and_then(|l| {
+                Some((
+                    l.dir.file_name()?.to_string_lossy().into_owned(),
+                    l.token.clone()?,
+                ))
+            });
             let mut claim = Claim { path, file, left };
-            claim.write(None)?;
+            claim.write(keep)?;
             return Ok(claim);
         }
         Err(werr(std::io::Error::other(
@@ -296,6 +305,32 @@ mod tests {
         let left = c.left_behind().unwrap();
         assert_eq!(left.dir, dir.join(".res.partial-7"));
         assert_eq!(left.token, None);
+        drop(c);
+        // With its token, the new claim keeps naming it until the new holder records its own
+        // (a kill in between must not orphan it).
+        let token = "0123456789abcdef0123456789abcdef";
+        std::fs::write(
+            path_of(&target),
+            format!("{SIGNATURE}\npid 1\nstaging .res.partial-7\ntoken {token}\n"),
+        )
+        .unwrap();
+        let mut c = Claim::take(&target).unwrap();
+        let text = std::fs::read_to_string(path_of(&target)).unwrap();
+        assert!(
+            text.contains(&format!("staging .res.partial-7\ntoken {token}\n")),
+            "{text}"
+        );
+        assert!(
+            text.contains(&format!("pid {}", std::process::id())),
+            "{text}"
+        );
+        c.record_staging(
+            &dir.join(".res.partial-8"),
+            "ffffffffffffffffffffffffffffffff",
+        )
+        .unwrap();
+        let text = std::fs::read_to_string(path_of(&target)).unwrap();
+        assert!(text.contains("staging .res.partial-8\n") && !text.contains("partial-7"));
         // A recorded name that is a path is not followed.
         drop(c);
         std::fs::write(
