@@ -420,12 +420,14 @@ impl Scene {
         })
     }
 
-    /// Whether the translation follows the smooth gas's law: smooth particles, or rough ones
-    /// with `tangential_restitution = -1` (no collision touches the rotation, and the
-    /// translation's collisions are the smooth ones). The smooth gas's exact solutions and
-    /// tail laws apply only then.
+    /// Whether the translation follows the smooth gas's law, as the engine decides it
+    /// ([`gdsmc_core::physics::Physics::translation_is_smooth`]): smooth particles, or rough
+    /// ones with `tangential_restitution = -1` whose collisions the engine makes the smooth
+    /// ones (hard particles, or spheres of any kernel; rough pseudo-Maxwell disks collide with
+    /// the hard-disk impact law). The smooth gas's exact solutions and tail laws apply only
+    /// then.
     pub fn translation_is_smooth(&self) -> bool {
-        self.physics.rotation.is_none_or(|r| r.beta == -1.0)
+        self.physics.translation_is_smooth()
     }
 
     /// Whether the particles are disks (`particles.dimension = 2`).

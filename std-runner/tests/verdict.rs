@@ -69,3 +69,41 @@ fn a_reference_off_by_three_percent_is_a_disagreement() {
         &out[out.find("\nverdict").unwrap()..]
     );
 }
+
+/// Rough particles with `beta = -1` get the smooth gas's exact references only where the engine
+/// collides them as the smooth gas (`gdsmc_core::rough::collides_smooth`): rough Maxwell
+/// spheres do (and agree with GRW (13)-(14) at their n), rough Maxwell disks do not (the engine
+/// collides rough disks of any kernel with the hard-disk impact law). Against 03e7324 the
+/// disks got `T_bulk_mean_n` and a verdict "T_bulk DISAGREES" on a correct run (-12% at t = 2).
+#[test]
+fn rough_maxwell_disks_get_no_smooth_gas_verdict() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/rough-disks-hcs.toml");
+    for (dimension, smooth) in [(2, false), (3, true)] {
+        let s = scene::parse_with(
+            &path,
+            &std::fs::read_to_string(&path).unwrap(),
+            &[
+                scene::Override::set("collisions.kernel=maxwell"),
+                scene::Override::set("rotation.tangential_restitution=-1"),
+                scene::Override::set(format!("particles.dimension={dimension}")),
+                scene::Override::set("rotation.inertia=0.4"),
+                scene::Override::set("particles.n=256"),
+                scene::Override::set("run.ensembles=40"),
+            ],
+        )
+        .unwrap();
+        assert_eq!(s.translation_is_smooth(), smooth, "d = {dimension}");
+        let refs = for_scene(&s);
+        let exact = refs.iter().any(|r| r.name == "T_bulk_mean_n");
+        assert_eq!(
+            exact, smooth,
+            "d = {dimension}: T_bulk_mean_n attached: {exact}"
+        );
+        let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
+        let out = text(&s, &st, &refs);
+        assert!(!out.contains("DISAGREES"), "d = {dimension}:\n{out}");
+        if smooth {
+            assert!(out.contains("agrees with T_bulk_mean_n ("), "{out}");
+        }
+    }
+}

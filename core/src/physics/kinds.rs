@@ -99,6 +99,16 @@ macro_rules! kernel_kind {
                 }
             }
 
+            /// Whether it is the hard-sphere (hard-disk) kernel (`Kernel::HARD`): a rough gas
+            /// of it collides with the impact law in every dimension
+            /// ([`crate::rough::collides_smooth`]).
+            #[must_use]
+            pub fn hard(self) -> bool {
+                match self {
+                    $(KernelKind::$v => <$t as crate::kernel::Kernel>::HARD,)*
+                }
+            }
+
             /// The exponent `lambda` of `|u|^lambda` these values of its parameters give.
             #[must_use]
             pub fn exponent(self, values: &[Real]) -> Real {

@@ -303,6 +303,22 @@ pub struct Physics {
 }
 
 impl Physics {
+    /// Whether the particles translate as the smooth gas does, bit for bit: no rotation, or
+    /// rough particles whose every collision the engine makes the smooth one
+    /// ([`crate::rough::collides_smooth`]: `beta = -1`, and a hard kernel or `d = 3`; rough
+    /// pseudo-Maxwell disks collide with the hard-disk impact law, not GRW (3)'s isotropic
+    /// scattering). A reference of the smooth gas holds for the translation exactly here.
+    #[must_use]
+    pub fn translation_is_smooth(&self) -> bool {
+        self.rotation.is_none_or(|r| {
+            crate::rough::collides_smooth(
+                self.kernel.kind().hard(),
+                self.dimension,
+                crate::rough::spin_transfer(r.beta, r.kappa),
+            )
+        })
+    }
+
     /// A description with the standard Maxwellian GRW (27) as initial distribution.
     pub fn new(
         n: usize,

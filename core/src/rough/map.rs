@@ -132,7 +132,7 @@ impl RoughMap<Constant> {
             beta,
             kappa,
             eta_n: 0.5 * (1.0 + alpha),
-            eta_t: 0.5 * (1.0 + beta) * kappa / (1.0 + kappa),
+            eta_t: spin_transfer(beta, kappa),
             eta_w: 0.5 * (1.0 + beta) / (1.0 + kappa),
         })
     }
@@ -301,7 +301,26 @@ pub(crate) fn store(
 /// isotropic, while rough disks of any kernel collide with the hard-disk impact law.
 #[inline(always)]
 pub(crate) fn smooth_limit<K: crate::kernel::Kernel, G: Geometry>(eta_t: Real) -> bool {
-    eta_t == 0.0 && (K::HARD || G::CHOICE == DimensionChoice::Three)
+    collides_smooth(K::HARD, G::CHOICE, eta_t)
+}
+
+/// The rule of [`smooth_limit`] for a kernel that is `hard` (hard spheres or disks) in
+/// `dimension`: the one statement of where a rough gas's translation is the smooth gas's, for
+/// the engine (above, at compile time) and for whatever must know it at run time (a reference
+/// of the smooth gas holds for a rough gas exactly here: `Physics::translation_is_smooth`).
+#[inline(always)]
+#[must_use]
+pub const fn collides_smooth(hard: bool, dimension: DimensionChoice, eta_t: Real) -> bool {
+    eta_t == 0.0 && (hard || matches!(dimension, DimensionChoice::Three))
+}
+
+/// The spin transfer `eta_t = (1 + beta)/2 kappa/(1 + kappa)` of tangential restitution `beta`
+/// and reduced moment of inertia `kappa` (module docs; Huthmann and Zippelius 1997): 0 exactly
+/// when `beta = -1`.
+#[inline(always)]
+#[must_use]
+pub fn spin_transfer(beta: Real, kappa: Real) -> Real {
+    0.5 * (1.0 + beta) * kappa / (1.0 + kappa)
 }
 
 impl<A: Restitution> crate::engine::collision_map::Inertia for RoughMap<A> {

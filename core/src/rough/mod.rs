@@ -16,5 +16,5 @@ pub mod pair;
 pub use crate::observe::RoughObservables;
 pub use crate::sample::impact_direction;
 pub use drive::RoughNoise;
-pub use map::{RoughError, RoughMap};
+pub use map::{RoughError, RoughMap, collides_smooth, spin_transfer};
 pub use pair::{RoughPair, RoughPairLaw};

@@ -6,7 +6,7 @@
 //! combination, and the tests hold each builder to its declaration (every combination it
 //! declares gets its curves) and each shipped scene's description to what its run attaches.
 
-pub use super::holds::{Holds, Particles};
+pub use super::holds::{Drives, Holds, Particles};
 use super::{Kind, ReferenceCurve, cooling, mixture, rough, single, sonine};
 use crate::scene::Scene;
 use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind, SchemeKind as S};
@@ -53,25 +53,21 @@ const ANY_D: &[usize] = &[2, 3];
 const CONSTANT: &[LawKind] = &[LawKind::Constant];
 const MAXWELL: &[KernelKind] = &[KernelKind::Maxwell];
 const HARD: &[KernelKind] = &[KernelKind::HardSpheres];
-/// The drives that heat linearly (the core's [`gdsmc_core::drive::Heating`]).
-const LINEAR: &[DriveKind] = &[
-    DriveKind::None,
-    DriveKind::WhiteNoise,
-    DriveKind::Gaussian,
-    DriveKind::Langevin,
-];
+/// The drives that heat linearly: those that declare it (the core's
+/// [`gdsmc_core::drive::Heating`]), not a list of kinds.
+const LINEAR: Drives = Drives::Linear;
 /// The schemes whose exact means at n are known: the no-splitting process and its splittings.
 const EXACT_MEANS: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang];
 /// The schemes whose n -> infinity limit is the Boltzmann equation's solution.
 const BOLTZMANN: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang, S::Weighted];
 /// Every scheme but the weighted one (whose finite-n means carry `sum g^2`).
 const EQUAL_WEIGHTS: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang, S::TimeStepped];
-/// The cooling state: no drive, or the Gaussian thermostat (its steady state in reduced units,
-/// MS Section 2.2).
-const COOLING: &[DriveKind] = &[DriveKind::None, DriveKind::Gaussian];
+/// The cooling state: a drive that only rescales the velocities (no drive, the Gaussian
+/// thermostat: its steady state in reduced units, MS Section 2.2), as the drive declares it.
+const COOLING: Drives = Drives::Rescaling;
 
 /// A one-species smooth gas's axes with the constant restitution of the Sonine estimates.
-const fn hard_smooth(drives: &'static [DriveKind], dimensions: &'static [usize]) -> Holds {
+const fn hard_smooth(drives: Drives, dimensions: &'static [usize]) -> Holds {
     Holds {
         particles: Particles::Smooth,
         kernels: HARD,
@@ -88,7 +84,7 @@ const MAXWELL_HOST: Holds = Holds {
     particles: Particles::SmoothTranslation,
     kernels: MAXWELL,
     laws: CONSTANT,
-    drives: &[DriveKind::HostMedium],
+    drives: Drives::Kinds(&[DriveKind::HostMedium]),
     schemes: ANY_SCHEME,
     dimensions: ANY_D,
     when: Some("a Maxwell host medium"),
@@ -115,7 +111,7 @@ const fn smooth_cooling(kernels: &'static [KernelKind], schemes: &'static [Schem
         particles: Particles::Smooth,
         kernels,
         laws: CONSTANT,
-        drives: DriveKind::ALL,
+        drives: Drives::Kinds(DriveKind::ALL),
         schemes,
         dimensions: ANY_D,
         when: Some("observe.collisional_pairs > 0"),
@@ -175,7 +171,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (10)",
         kind: Kind::Approximation,
-        holds: hard_smooth(&[DriveKind::WhiteNoise], ANY_D),
+        holds: hard_smooth(Drives::Kinds(&[DriveKind::WhiteNoise]), ANY_D),
         columns: &["a2_ms10"],
         cites: &[],
         curves: sonine::a2_ms10,
@@ -183,7 +179,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (32)",
         kind: Kind::Approximation,
-        holds: hard_smooth(&[DriveKind::WhiteNoise], ANY_D),
+        holds: hard_smooth(Drives::Kinds(&[DriveKind::WhiteNoise]), ANY_D),
         columns: &["a2_ms32"],
         cites: &[],
         curves: sonine::a2_ms32,
@@ -191,7 +187,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (50)",
         kind: Kind::Approximation,
-        holds: hard_smooth(&[DriveKind::ConstantForce], ANY_D),
+        holds: hard_smooth(Drives::Kinds(&[DriveKind::ConstantForce]), ANY_D),
         columns: &["a2_ms50"],
         cites: &[],
         curves: sonine::a2_ms50,
@@ -199,7 +195,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (76)",
         kind: Kind::Approximation,
-        holds: hard_smooth(&[DriveKind::ConstantForce], &[3]),
+        holds: hard_smooth(Drives::Kinds(&[DriveKind::ConstantForce]), &[3]),
         columns: &["a2_ms76"],
         cites: &[],
         curves: sonine::a2_ms76,
@@ -227,7 +223,7 @@ pub const REFERENCES: &[Reference] = &[
             particles: Particles::SmoothTranslation,
             kernels: HARD,
             laws: CONSTANT,
-            drives: &[DriveKind::HostMedium],
+            drives: Drives::Kinds(&[DriveKind::HostMedium]),
             schemes: ANY_SCHEME,
             dimensions: &[3],
             when: Some("a hard-sphere host medium"),
@@ -292,7 +288,7 @@ pub const REFERENCES: &[Reference] = &[
             particles: Particles::SmoothMixture,
             kernels: ANY_KERNEL,
             laws: CONSTANT,
-            drives: &[DriveKind::None, DriveKind::WhiteNoise, DriveKind::Gaussian],
+            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise, DriveKind::Gaussian]),
             schemes: ANY_SCHEME,
             dimensions: &[3],
             when: None,
@@ -313,7 +309,7 @@ pub const REFERENCES: &[Reference] = &[
             particles: Particles::SmoothMixture,
             kernels: MAXWELL,
             laws: CONSTANT,
-            drives: &[DriveKind::None, DriveKind::WhiteNoise],
+            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise]),
             schemes: EXACT_MEANS,
             dimensions: &[3],
             when: None,
@@ -335,7 +331,7 @@ pub const REFERENCES: &[Reference] = &[
             particles: Particles::SmoothMixture,
             kernels: MAXWELL,
             laws: CONSTANT,
-            drives: &[DriveKind::None, DriveKind::WhiteNoise],
+            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise]),
             schemes: ANY_SCHEME,
             dimensions: &[3],
             when: None,
@@ -356,7 +352,7 @@ pub const REFERENCES: &[Reference] = &[
             particles: Particles::RoughMixture,
             kernels: ANY_KERNEL,
             laws: CONSTANT,
-            drives: &[DriveKind::None, DriveKind::WhiteNoise],
+            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise]),
             schemes: ANY_SCHEME,
             dimensions: ANY_D,
             when: None,
@@ -427,7 +423,7 @@ mod tests {
             for axis in [
                 r.holds.kernels.is_empty(),
                 r.holds.laws.is_empty(),
-                r.holds.drives.is_empty(),
+                matches!(r.holds.drives, Drives::Kinds(k) if k.is_empty()),
                 r.holds.schemes.is_empty(),
                 r.holds.dimensions.is_empty(),
                 r.columns.is_empty(),
