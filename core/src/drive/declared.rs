@@ -12,7 +12,7 @@
 use super::Drive;
 pub use crate::declared::{ParamSpec, Rule};
 use crate::geometry::Geometry;
-use crate::math::{Real, exp_m1};
+use crate::math::{Real, exp, exp_m1};
 
 /// Most parameters a declared drive has (the C ABI's `drive_params`).
 pub const MAX_DRIVE_PARAMS: usize = 4;
@@ -51,15 +51,29 @@ pub struct Heating {
 }
 
 impl Heating {
-    /// `y(t)` of `y' = a + rate y`, `y(0) = y0`, in closed form.
+    /// `y(t)` of `y' = a + rate y`, `y(0) = y0`, in closed form: `y0 e^(rate t) + a
+    /// growth(rate, t)`, accurate at every rate ([`Heating::growth`]: a rate of `1e-300` gives
+    /// `y0 + a t`, where `a/rate (1 - e^(-rate t))` cancelled to `y0`, issue 78).
     #[must_use]
     pub fn evolve(&self, y0: Real, rate: Real, t: Real) -> Real {
-        if rate == 0.0 {
-            y0 + self.a * t
+        // `y0 e^x` directly: `y0 + y0 (e^x - 1)` cancels where the gas decays far (x = -38).
+        y0 * exp(rate * t) + self.a * Self::growth(rate, t)
+    }
+
+    /// `(e^(rate t) - 1)/rate` (`t` at rate 0), computed as `t (e^x - 1)/x` with `x = rate t`:
+    /// never a division by a rate that cancelled or underflowed, and exact to rounding where
+    /// `x` is tiny (its Taylor series to `x^2`, whose remainder `x^3/24` is below `1e-24` there).
+    #[must_use]
+    pub fn growth(rate: Real, t: Real) -> Real {
+        let x = rate * t;
+        let g = if x == 0.0 {
+            1.0
+        } else if x.abs() < 1e-8 {
+            1.0 + x / 2.0 + x * x / 6.0
         } else {
-            let e = exp_m1(rate * t);
-            y0 + y0 * e + self.a / rate * e
-        }
+            exp_m1(x) / x
+        };
+        t * g
     }
 }
 
@@ -99,5 +113,47 @@ pub trait Declared: Drive + PartialEq + 'static {
             None => w.t0,
         };
         (w.t0.max(heated), w.t_end)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Heating;
+
+    /// `growth` and `evolve` at rates where the plain closed form cancels or overflows: a rate
+    /// of 1e-300 (and a subnormal one) gives `y0 + a t` to rounding (the plain `a/r (1 - e^(-r
+    /// t))` gave `y0`); ordinary rates agree with the plain form to a few ulps.
+    #[test]
+    fn the_closed_form_holds_at_every_rate() {
+        let h = Heating {
+            a: 2.0,
+            b: 0.0,
+            p: 0.0,
+        };
+        for rate in [0.0, 1e-300, -1e-300, 5e-324, 1e-12] {
+            let y = h.evolve(1.0, rate, 8.0);
+            assert!((y - 17.0).abs() <= 17.0 * 1e-10, "rate {rate}: {y}");
+        }
+        for rate in [-0.5, 0.3, -7.0] {
+            let plain = libm::exp(rate * 8.0) + 2.0 / rate * libm::expm1(rate * 8.0);
+            let y = h.evolve(1.0, rate, 8.0);
+            assert!(
+                (y - plain).abs() <= 8.0 * f64::EPSILON * plain.abs(),
+                "{rate}: {y} {plain}"
+            );
+        }
+        assert_eq!(Heating::growth(0.0, 3.0), 3.0);
+        // A far decay keeps its digits: e^-38 relative to rounding (1 + (e^-38 - 1) did not).
+        let cooling = Heating {
+            a: 0.0,
+            b: 0.0,
+            p: 0.0,
+        };
+        let y = cooling.evolve(1.0, -0.19, 200.0);
+        let exact = libm::exp(-38.0);
+        assert!(
+            (y - exact).abs() <= 4.0 * f64::EPSILON * exact,
+            "{y} {exact}"
+        );
     }
 }

@@ -58,13 +58,8 @@ impl MaxwellTemperature {
 
     /// `T(t)`; for `alpha = 1` (`k = 0`) the limit `T_0 + 2 beta t` (RW, after (25)).
     pub fn at(&self, t: f64) -> f64 {
-        let r = self.rate();
-        let x = if r == 0.0 {
-            self.t0 + self.heating.a * t
-        } else {
-            let e = libm::exp(-r * t);
-            self.t0 * e + self.heating.a / r * (1.0 - e)
-        };
+        // `T' = a - r T`: `Heating::evolve` at rate `-r`, accurate at every rate.
+        let x = self.heating.evolve(self.t0, -self.rate(), t);
         mutated(Reference::MaxwellTemperature, x)
     }
 
@@ -104,13 +99,8 @@ impl MaxwellTemperature {
     /// `U = E|P|^2/(d n)` obeys `U' = a + p U` ([`Heating`]; the Langevin bath's drag makes `P`
     /// decay), and this is `U(t)/n`.
     pub fn bulk_to_raw(&self, n: usize, t: f64) -> f64 {
-        let (a, p) = (self.heating.a, self.heating.p);
-        let u = if p == 0.0 {
-            self.t0 + a * t
-        } else {
-            let e = libm::expm1(p * t);
-            self.t0 + self.t0 * e + a / p * e
-        };
+        // `U' = a + p U`, accurate at every rate.
+        let u = self.heating.evolve(self.t0, self.heating.p, t);
         mutated(Reference::BulkToRaw, u / n as f64)
     }
 
@@ -139,23 +129,21 @@ impl MaxwellTemperature {
         // `b = 0`); the scaling `e^{b dt}` is folded into the step's factor below.
         // (`6 (n - 1) (a/2) dt` for `b = 0`: RW's white noise, `a = 2 beta`, as written there.)
         let (ha, hb) = (self.heating.a, self.heating.b);
-        let added = if hb == 0.0 {
-            6.0 * (nf - 1.0) * (ha / 2.0) * dt
-        } else {
-            3.0 * (nf - 1.0) * (ha / hb * libm::expm1(hb * dt))
-        };
+        let added = 3.0 * (nf - 1.0) * ha * Heating::growth(hb, dt);
         let b = added
             * if strang {
                 libm::exp(-0.5 * self.k * dt)
             } else {
                 1.0
             };
-        let a = libm::exp(-self.rate() * dt);
-        let am = libm::pow(a, m);
-        let geometric = if self.rate() == 0.0 {
+        // `a = e^x` per step; the sum of `a^j` for `j < m`, `(a^m - 1)/(a - 1)`, as a ratio of
+        // `expm1`s: no cancellation where the rate is tiny.
+        let x = -self.rate() * dt;
+        let am = libm::exp(m * x);
+        let geometric = if x == 0.0 {
             m
         } else {
-            (1.0 - am) / (1.0 - a)
+            libm::expm1(m * x) / libm::expm1(x)
         };
         mutated(
             Reference::SplittingBulk,

@@ -306,8 +306,38 @@ verdict    each mean against the reference that applies at this n, at all {nt} o
     );
     // The joint interval: the Student-t quantile of the family over the per-time one.
     let widen = joint(nt, stats.ensembles - 1) / multiplier(stats.ensembles);
+    // The times where a reference is not a number: its closed form left the range of f64 at
+    // these parameters (a rate that cancels or overflows). Flagged, never judged or shown as a
+    // number (issue 78).
+    let not_computable = |r: &ReferenceCurve| -> Vec<f64> {
+        (stats.times.iter().copied())
+            .filter(|&t| !(r.curve)(t).is_finite())
+            .collect()
+    };
+    let at = |times: &[f64]| {
+        let shown: Vec<String> = times.iter().take(3).map(|t| num(*t)).collect();
+        format!(
+            "{}{}",
+            shown.join(", "),
+            if times.len() > 3 { ", ..." } else { "" }
+        )
+    };
     for r in refs.iter().filter(|r| r.kind == Kind::MeanAtN) {
         let Some(col) = stats.col(r.of) else { continue };
+        let flagged = not_computable(r);
+        if !flagged.is_empty() {
+            let _ = writeln!(
+                s,
+                "  {:<8} NOT JUDGED: {} ({}) is not computable here (at t = {}, {} of {nt} times: its \
+                 closed form leaves the range of f64 at these parameters)",
+                r.of,
+                r.name,
+                r.source,
+                at(&flagged),
+                flagged.len()
+            );
+            continue;
+        }
         let (mut inside, mut off) = (0, Vec::new());
         for (ti, &t) in stats.times.iter().enumerate() {
             let (m, ci, e) = (stats.mean(ti, col), stats.ci(ti, col), (r.curve)(t));
@@ -351,10 +381,26 @@ verdict    each mean against the reference that applies at this n, at all {nt} o
             "  no reference is the exact mean at this n: nothing is judged"
         );
     }
+    for r in refs.iter().filter(|r| r.kind != Kind::MeanAtN) {
+        let flagged = not_computable(r);
+        if !flagged.is_empty() {
+            let _ = writeln!(
+                s,
+                "  not computable here: {} ({}) at t = {} ({} of {nt} times: its closed form leaves \
+                 the range of f64 at these parameters; the column holds NaN there)",
+                r.name,
+                r.source,
+                at(&flagged),
+                flagged.len()
+            );
+        }
+    }
     for kind in [Kind::Limit, Kind::Approximation] {
         // Grouped by source: `T_exact, T_bulk_exact (GRW (13)-(14))`.
         let mut groups: Vec<(&str, Vec<&str>)> = Vec::new();
-        for r in refs.iter().filter(|r| r.kind == kind) {
+        // A reference not computable at any time is flagged above, not listed as shown.
+        let shown = |r: &&ReferenceCurve| r.kind == kind && not_computable(r).len() < nt;
+        for r in refs.iter().filter(shown) {
             match groups.iter_mut().find(|(src, _)| *src == r.source) {
                 Some((_, names)) if !names.contains(&r.name) => names.push(r.name),
                 Some(_) => {}
