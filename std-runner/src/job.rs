@@ -9,39 +9,9 @@ use crate::reference::curves::for_scene;
 use crate::report::{self, charts::Formats, set::OutputSet};
 use crate::run::{self, Journaled, RunStats, shard};
 use crate::scene::{Scene, Sourced};
+pub use crate::watch::{Quiet, Watch};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::AtomicBool;
-
-/// What the caller sees of a running job and how it stops one.
-pub trait Watch: Sync {
-    /// The job is about to run towards `total` ensembles (those a journal already holds
-    /// included).
-    fn begin(&self, total: u64);
-    /// `k` more ensembles finished.
-    fn advance(&self, k: u64);
-    /// The ensembles are done or stopped; notes and the outcome follow.
-    fn end(&self);
-    /// Set when the user asks the job to stop: the running ensembles finish, the rest are
-    /// skipped, and what is done is kept.
-    fn stop(&self) -> &AtomicBool;
-    /// A line for the user beside the results (the command's standard error).
-    fn note(&self, line: &str);
-}
-
-/// A [`Watch`] that shows nothing and never stops (tests, scripts).
-#[derive(Debug, Default)]
-pub struct Quiet(AtomicBool);
-
-impl Watch for Quiet {
-    fn begin(&self, _: u64) {}
-    fn advance(&self, _: u64) {}
-    fn end(&self) {}
-    fn stop(&self) -> &AtomicBool {
-        &self.0
-    }
-    fn note(&self, _: &str) {}
-}
 
 /// A run as `gdsmc run` takes it.
 #[derive(Clone, Debug)]
@@ -75,41 +45,6 @@ fn state_refused(how: &str) -> Error {
             "are not supported with {how} yet: run the state's ensembles in one process"
         ),
     }
-}
-
-/// Refuses a `--save-state` path that is one of the run's own files: its journal `journal`
-/// (the finished run removes it: the state would go with it), its claim, or a place inside
-/// its output directory `dir` (the new output set replaces that directory).
-fn save_place_free(path: &Path, dir: &Path, journal: &Path) -> Result<(), Error> {
-    // Where a path is: its parent made absolute and free of links (when it exists), and its
-    // name.
-    let place = |p: &Path| -> Option<PathBuf> {
-        let parent = match p.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
-        Some(std::fs::canonicalize(parent).ok()?.join(p.file_name()?))
-    };
-    let refuse = |what: &str| Error::Argument {
-        flag: "--save-state".into(),
-        message: format!(
-            "{} is {what}, which gdsmc removes or replaces: choose a file of its own",
-            path.display()
-        ),
-    };
-    let Some(state) = place(path) else {
-        return Ok(());
-    };
-    if place(journal).is_some_and(|j| j == state) {
-        return Err(refuse("the run's own journal"));
-    }
-    if place(&crate::files::claim::path_of(dir)).is_some_and(|c| c == state) {
-        return Err(refuse("the run's claim on its output directory"));
-    }
-    if place(dir).is_some_and(|d| state.starts_with(&d)) {
-        return Err(refuse("inside the run's output directory"));
-    }
-    Ok(())
 }
 
 /// What a job did, for the caller to show.
@@ -175,7 +110,7 @@ impl Job {
         let dir = self.dir(sc.name());
         let file = run::journal::beside(&dir, run::journal::Of::Run);
         if let Some(p) = &self.save_state {
-            save_place_free(p, &dir, &file)?;
+            run::state::check_place(p, &dir, &file)?;
         }
         let set = OutputSet::prepare(&dir)?;
         set.notes().iter().for_each(|n| watch.note(n));

@@ -11,7 +11,8 @@
 //! shards, MPI, output set; the command's `run` and `merge` and the Python package call it)
 //! <- [`sweep`] (a parameter study: many journaled runs into one table);
 //! [`reproduce`] (the papers' tables) needs [`run`] and [`mod@reference`] only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
-//! never over what gdsmc did not write).
+//! never over what gdsmc did not write), and [`watch`]: what the caller sees of a running job
+//! and how it stops one.
 
 #![deny(unsafe_code)]
 
@@ -30,6 +31,7 @@ pub mod run;
 pub mod sweep;
 #[cfg(feature = "cli")]
 pub mod terminal;
+pub mod watch;
 pub use gdsmc_scene as scene;
 
 pub use error::Error;

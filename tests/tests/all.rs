@@ -19,6 +19,7 @@ mod hard_spheres;
 mod host_medium;
 mod impact_speed;
 mod langevin;
+mod linear_heating;
 mod maxwell_relaxation;
 mod mixture;
 mod mixture_steady;

@@ -29,7 +29,7 @@ const T_END: f64 = 0.5;
 
 /// The kernels of the matrix: every kernel the core declares, `gamma = 1`, `C = 0.1` and its
 /// own parameters' example values (from its declaration), named by its title ("hard-sphere").
-fn kernels() -> Vec<(&'static str, KernelChoice)> {
+pub(super) fn kernels() -> Vec<(&'static str, KernelChoice)> {
     KernelKind::ALL
         .iter()
         .map(|&k| {
@@ -39,7 +39,7 @@ fn kernels() -> Vec<(&'static str, KernelChoice)> {
         .collect()
 }
 
-const LAWS: [(&str, RestitutionLaw); 2] = [
+pub(super) const LAWS: [(&str, RestitutionLaw); 2] = [
     ("constant", RestitutionLaw::Constant(0.8)),
     (
         "impact speed",
@@ -53,7 +53,7 @@ const LAWS: [(&str, RestitutionLaw); 2] = [
 /// The drives of the matrix: the cooling gas, white noise, every drive declared by its type
 /// with its parameters' example values (from its declaration in the core, named by its title),
 /// the host medium last.
-fn drives() -> Vec<(&'static str, DriveChoice)> {
+pub(super) fn drives() -> Vec<(&'static str, DriveChoice)> {
     let mut drives = vec![
         ("none", DriveChoice::None),
         ("white noise", DriveChoice::WhiteNoise(0.5)),
@@ -116,10 +116,10 @@ fn the_matrix_holds_every_kind() {
 
 /// One block of the table: particle model, species, dimension.
 #[derive(Clone, Copy)]
-struct Block {
-    rough: bool,
-    mixture: bool,
-    dim: DimensionChoice,
+pub(super) struct Block {
+    pub(super) rough: bool,
+    pub(super) mixture: bool,
+    pub(super) dim: DimensionChoice,
 }
 
 impl Block {
@@ -139,7 +139,7 @@ impl Block {
         )
     }
 
-    fn physics(
+    pub(super) fn physics(
         &self,
         kernel: KernelChoice,
         law: RestitutionLaw,
@@ -209,7 +209,7 @@ fn outcome(ph: &Physics, what: &str) -> Result<(), String> {
 
 /// GRW Example 3's scene given the physics `ph` (its 17 observation times over [0, 8], no
 /// steady window), or `None` where the scene's rules refuse it.
-fn scene_of(ph: &Physics) -> Option<gdsmc_runner::scene::Scene> {
+pub(super) fn scene_of(ph: &Physics) -> Option<gdsmc_runner::scene::Scene> {
     let mut s = gdsmc_validation::shipped("grw-example3", N, 1, 1);
     s.set_steady_from(None).expect("no steady window");
     s.with_physics(|p| *p = ph.clone()).ok()?;
@@ -442,46 +442,4 @@ fn every_reference_of_every_combination_is_a_number() {
         checked >= 900,
         "only {checked} combinations reached the runner"
     );
-}
-
-/// Every drive the matrix runs gets the Maxwell gas's exact temperature references (GRW
-/// (13)-(14), at finite n and n -> infinity) exactly when it declares a linear temperature law
-/// (`Model::heating`), in d = 2 and 3: the registry asks the drive, it keeps no list of kinds
-/// (issue 78: a drag drive that declared its heating as Langevin does got nothing until a hand
-/// list was edited).
-#[test]
-fn every_drive_that_declares_linear_heating_gets_the_exact_temperature() {
-    let maxwell = kernels()
-        .into_iter()
-        .find(|(_, k)| k.kind() == KernelKind::Maxwell)
-        .expect("the Maxwell kernel")
-        .1;
-    for dim in [DimensionChoice::Three, DimensionChoice::Two] {
-        let b = Block {
-            rough: false,
-            mixture: false,
-            dim,
-        };
-        for (name, drive) in drives() {
-            let ph = b.physics(maxwell, LAWS[0].1, drive, SchemeChoice::NoSplitting);
-            let (Ok(model), Some(s)) = (ph.validate(), scene_of(&ph)) else {
-                continue;
-            };
-            let ids: Vec<&str> = REFERENCES
-                .iter()
-                .filter(|r| r.holds.of(&s) && !(r.curves)(&s).is_empty())
-                .map(|r| r.id)
-                .collect();
-            let linear = model.heating().is_some();
-            for id in ["GRW (13)-(14)", "GRW (13)-(14) at finite n"] {
-                assert_eq!(
-                    ids.contains(&id),
-                    linear,
-                    "{name} in d = {}: {id} attached {}, heating declared {linear}",
-                    dim.d(),
-                    ids.contains(&id)
-                );
-            }
-        }
-    }
 }

@@ -304,7 +304,7 @@ pub(crate) fn smooth_limit<K: crate::kernel::Kernel, G: Geometry>(eta_t: Real) -
     collides_smooth(K::HARD, G::CHOICE, eta_t)
 }
 
-/// The rule of [`smooth_limit`] for a kernel that is `hard` (hard spheres or disks) in
+/// The rule of the engine's `smooth_limit` for a kernel that is `hard` (hard spheres or disks) in
 /// `dimension`: the one statement of where a rough gas's translation is the smooth gas's, for
 /// the engine (above, at compile time) and for whatever must know it at run time (a reference
 /// of the smooth gas holds for a rough gas exactly here: `Physics::translation_is_smooth`).

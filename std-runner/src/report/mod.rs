@@ -6,6 +6,7 @@ pub mod charts;
 pub mod set;
 pub mod summary;
 pub mod summary_file;
+mod verdict;
 
 use crate::error::Error;
 use crate::files::write_atomic;
