@@ -283,14 +283,15 @@ impl RunResult {
         let formats: report::charts::Formats = formats
             .parse()
             .map_err(|e: String| pyo3::exceptions::PyValueError::new_err(e))?;
-        let (notes, written) = py.detach(|| {
-            let set = report::set::OutputSet::prepare(&dir)?;
-            let notes = set.notes().to_vec();
-            let written =
-                report::commit_run(set, self.scene.scene(), &self.stats, &self.refs(), formats);
-            Ok::<_, gdsmc_runner::Error>((notes, written))
-        })
-        .map_err(to_py)?;
+        let (notes, written) = py
+            .detach(|| {
+                let set = report::set::OutputSet::prepare(&dir)?;
+                let notes = set.notes().to_vec();
+                let written =
+                    report::commit_run(set, self.scene.scene(), &self.stats, &self.refs(), formats);
+                Ok::<_, gdsmc_runner::Error>((notes, written))
+            })
+            .map_err(to_py)?;
         // A directory an earlier run's claim named but that is not proven gdsmc's: left, and
         // said as a Python warning.
         crate::warn_all(py, &notes)?;

@@ -13,10 +13,9 @@
 use crate::batch::kick::white_noise_kick_all;
 use crate::drive::Drive;
 use crate::drive::white_noise::white_noise_kick_pair;
-use crate::geometry::{Geometry, Spheres};
+use crate::geometry::{DimensionChoice, Geometry, Spheres};
 use crate::math::{Real, sqrt};
 use crate::particles::Particles;
-use crate::physics::DimensionChoice;
 use crate::rng::Rng;
 use crate::vec3::Vec3;
 
