@@ -130,7 +130,7 @@ impl Job {
             save: save.as_ref(),
             snapshots: &snapshots,
         };
-        let r = self.journaled(&file, None, 0..sc.ensembles(), (io, false), watch);
+        let r = self.journaled(&file, None, 0..sc.ensembles(), io, watch);
         let kept = r.as_ref().ok().map(|r| r.stats.ensembles);
         run::state::finish_all(snapshots, kept)?;
         // The state: renamed into place when the run is complete; an interrupted run's first
@@ -219,15 +219,15 @@ impl Job {
             .unwrap_or_else(|| PathBuf::from("out").join(name))
     }
 
-    /// Runs ensembles `range` (shard `shard`, or the whole run) journaled in `file` (anew when
-    /// `fresh`), from and to the state files of `state`, and tells the watcher what the
+    /// Runs ensembles `range` (shard `shard`, or the whole run) journaled in `file` (anew with
+    /// `--fresh`), from and to the state files of `state`, and tells the watcher what the
     /// journal held.
     fn journaled(
         &self,
         file: &Path,
         shard: Option<(u64, u64)>,
         range: std::ops::Range<u64>,
-        (state, fresh): (run::StateIo<'_>, bool),
+        state: run::StateIo<'_>,
         watch: &dyn Watch,
     ) -> Result<run::JournalRun, Error> {
         let job = Journaled {
@@ -236,7 +236,7 @@ impl Job {
                 .from_state(state.initial.map(|r| r.identity.clone())),
             path: file,
             threads: self.threads,
-            fresh: self.fresh || fresh,
+            fresh: self.fresh,
             state,
         };
         watch.begin(range.end - range.start);

@@ -73,6 +73,22 @@ pub(super) fn long_run(args: &[&str]) -> Held {
     ))
 }
 
+/// Sends `signal` (`INT`, `TERM`, `HUP`, `KILL`) to the run `held` once its journal `journal`
+/// is past its header (an ensemble journaled), and waits for its output.
+pub(super) fn signalled_after_an_ensemble(held: Held, journal: &Path, signal: &str) -> Output {
+    wait_for("an ensemble in the journal", || {
+        std::fs::metadata(journal).is_ok_and(|m| m.len() > 4096)
+    });
+    assert!(
+        Command::new("kill")
+            .args([&format!("-{signal}"), &held.id().to_string()])
+            .status()
+            .unwrap()
+            .success()
+    );
+    held.output()
+}
+
 /// Whether `dir` holds an entry whose name contains `part`.
 pub(super) fn holds(dir: &Path, part: &str) -> bool {
     std::fs::read_dir(dir)

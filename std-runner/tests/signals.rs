@@ -4,8 +4,7 @@
 //! nothing was written (the test failed at its first exit code: the signal's, not 143).
 
 use super::command::{root, s};
-use super::faults::{holds, long_run, wait_for};
-use std::process::Command;
+use super::faults::{holds, long_run, signalled_after_an_ensemble};
 
 /// For each of SIGINT, SIGTERM and SIGHUP: a long run stopped by it once an ensemble is
 /// journaled writes a whole partial set (its manifest verifies, its summary says
@@ -20,20 +19,8 @@ fn sigterm_and_sighup_keep_what_is_finished_as_ctrl_c_does() {
     ] {
         let r = root(&format!("signal-{signal}"));
         let out = r.join("res");
-        let child = long_run(&["--out", s(&out)]);
         let journal = r.join(".res.run.gdsmc-ensembles");
-        // Past its header: at least one ensemble journaled.
-        wait_for("an ensemble in the journal", || {
-            std::fs::metadata(&journal).is_ok_and(|m| m.len() > 4096)
-        });
-        assert!(
-            Command::new("kill")
-                .args([&format!("-{signal}"), &child.id().to_string()])
-                .status()
-                .unwrap()
-                .success()
-        );
-        let o = child.output();
+        let o = signalled_after_an_ensemble(long_run(&["--out", s(&out)]), &journal, signal);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(code), "SIG{signal}: {err}");
         assert!(err.contains(words), "SIG{signal}: {err}");

@@ -24,9 +24,11 @@ fn root(name: &str) -> PathBuf {
     r
 }
 
-/// GRW Example 3 at n = 64, 4 ensembles, run to t = 1 with `sets`, its state saved at
-/// `saved`.
-fn saved_state(r: &Path, sets: &[&str], saved: &Path) {
+/// A scratch directory `name`, and in it the state GRW Example 3 leaves at n = 64, 4 ensembles,
+/// run to t = 1 with `sets`: the directory, the state file and its bytes.
+fn saved_state(name: &str, sets: &[&str]) -> (PathBuf, PathBuf, Vec<u8>) {
+    let r = root(name);
+    let saved = r.join("s.state");
     let mut o: Vec<Override> = ["observe.t_end=1"]
         .iter()
         .chain(sets)
@@ -43,10 +45,12 @@ fn saved_state(r: &Path, sets: &[&str], saved: &Path) {
         fresh: false,
         format: "svg".parse().unwrap(),
         initial_state: None,
-        save_state: Some(saved.to_path_buf()),
+        save_state: Some(saved.clone()),
     }
     .run(&Quiet::default())
     .unwrap();
+    let bytes = std::fs::read(&saved).unwrap();
+    (r, saved, bytes)
 }
 
 /// Where the records start in a v2 file.
@@ -80,10 +84,7 @@ fn refusal(path: &Path, bytes: &[u8]) -> String {
 
 #[test]
 fn a_flipped_bit_anywhere_is_refused_naming_the_record() {
-    let r = root("flipped");
-    let saved = r.join("s.state");
-    saved_state(&r, &[], &saved);
-    let good = std::fs::read(&saved).unwrap();
+    let (r, saved, good) = saved_state("flipped", &[]);
     let h = StateReader::open(&saved).unwrap().header;
     let record = 8 + 24 * h.n + SUM_BYTES;
     let bad = r.join("bad.state");
@@ -114,10 +115,7 @@ fn a_flipped_bit_anywhere_is_refused_naming_the_record() {
 
 #[test]
 fn a_forged_header_is_refused_by_its_bounds() {
-    let r = root("forged");
-    let saved = r.join("s.state");
-    saved_state(&r, &[], &saved);
-    let good = std::fs::read(&saved).unwrap();
+    let (r, _, good) = saved_state("forged", &[]);
     let bad = r.join("bad.state");
     // Not re-summed: the checksum tells it.
     let b = forge(
@@ -178,10 +176,7 @@ fn a_forged_header_is_refused_by_its_bounds() {
 /// record and the particle.
 #[test]
 fn records_that_are_not_velocities_are_refused_at_load() {
-    let r = root("values");
-    let saved = r.join("s.state");
-    saved_state(&r, &["particles.dimension=2"], &saved);
-    let good = std::fs::read(&saved).unwrap();
+    let (r, saved, good) = saved_state("values", &["particles.dimension=2"]);
     let h = StateReader::open(&saved).unwrap().header;
     let payload = 8 + 24 * h.n;
     let record = payload + SUM_BYTES;
@@ -222,10 +217,7 @@ fn records_that_are_not_velocities_are_refused_at_load() {
 /// are not verified, and a run continues from it to what the v2 file gives.
 #[test]
 fn a_first_format_file_is_read_with_a_warning() {
-    let r = root("v1");
-    let saved = r.join("s.state");
-    saved_state(&r, &[], &saved);
-    let good = std::fs::read(&saved).unwrap();
+    let (r, saved, good) = saved_state("v1", &[]);
     let v2 = StateReader::open(&saved).unwrap();
     assert!(v2.notes.is_empty());
     let payload = 8 + 24 * v2.header.n;

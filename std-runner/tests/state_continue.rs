@@ -5,7 +5,7 @@
 //! name exited 0 without a state file.
 
 use super::command::{gdsmc, refused, root, s, scene};
-use super::faults::wait_for;
+use super::faults::{Held, signalled_after_an_ensemble};
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
@@ -41,18 +41,7 @@ fn stopped(args: &[String], journal: &Path, signal: &str) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let held = super::faults::Held::from(child);
-    wait_for("an ensemble in the journal", || {
-        std::fs::metadata(journal).is_ok_and(|m| m.len() > 4096)
-    });
-    assert!(
-        Command::new("kill")
-            .args([&format!("-{signal}"), &held.id().to_string()])
-            .status()
-            .unwrap()
-            .success()
-    );
-    held.output()
+    signalled_after_an_ensemble(Held::from(child), journal, signal)
 }
 
 /// The names in `dir` that gdsmc leaves only while a run is unfinished.

@@ -55,22 +55,26 @@ pub fn marker_text(token: &str) -> String {
 /// one for a moment while it is swapped in (the previous set carries it to the staging name,
 /// so that a kill there leaves a directory the next run can prove); it is no file of the set.
 pub fn is_marker(dir: &Path, name: &str) -> bool {
-    if name != MARKER {
-        return false;
+    name == MARKER && marker_token(dir).is_ok()
+}
+
+/// The token of the marker file in `dir`: a regular file (not a link), a few bytes, holding a
+/// marker's text ([`marker_text`]); `Err` says what is there instead, in words for the warning.
+fn marker_token(dir: &Path) -> Result<String, String> {
+    let path = dir.join(MARKER);
+    if std::fs::symlink_metadata(&path).is_ok_and(|m| !m.is_file()) {
+        return Err(format!("its {MARKER} is not a regular file"));
     }
-    let path = dir.join(name);
-    if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
-        return false;
-    }
+    let f = super::open_regular(&path).map_err(|_| format!("it holds no {MARKER}"))?;
     let mut text = String::new();
-    super::open_regular(&path)
-        .and_then(|f| std::io::Read::read_to_string(&mut std::io::Read::take(f, 256), &mut text))
-        .is_ok()
-        && text
-            .strip_prefix(SIGNATURE)
-            .and_then(|t| t.strip_prefix("\ntoken "))
-            .and_then(|t| t.strip_suffix('\n'))
-            .is_some_and(is_token)
+    std::io::Read::read_to_string(&mut std::io::Read::take(f, 256), &mut text)
+        .map_err(|e| format!("its {MARKER} cannot be read: {e}"))?;
+    text.strip_prefix(SIGNATURE)
+        .and_then(|t| t.strip_prefix("\ntoken "))
+        .and_then(|t| t.strip_suffix('\n'))
+        .filter(|t| is_token(t))
+        .map(str::to_string)
+        .ok_or_else(|| format!("its {MARKER} does not hold the claim's token"))
 }
 
 /// Writes the marker of `token` into `dir` (a new file: an existing one is refused).
@@ -130,16 +134,7 @@ fn proven_for(
     let token = token
         .filter(|t| is_token(t))
         .ok_or("the claim records no token for it")?;
-    let path = dir.join(MARKER);
-    // Not through a link, only a regular file; a few bytes at most.
-    if std::fs::symlink_metadata(&path).is_ok_and(|m| !m.is_file()) {
-        return Err(format!("its {MARKER} is not a regular file"));
-    }
-    let f = super::open_regular(&path).map_err(|_| format!("it holds no {MARKER}"))?;
-    let mut text = String::new();
-    std::io::Read::read_to_string(&mut std::io::Read::take(f, 256), &mut text)
-        .map_err(|e| format!("its {MARKER} cannot be read: {e}"))?;
-    if text != marker_text(token) {
+    if marker_token(dir)? != token {
         return Err(format!("its {MARKER} does not hold the claim's token"));
     }
     Ok(())

@@ -218,11 +218,11 @@ impl OutputSet {
             staging,
             committed: false,
             notes,
-            token: token.clone(),
+            token,
             _claim: claim,
         };
         // Created exclusively: the directory is new, so nothing else can be at its name.
-        staging::mark(&set.staging, &token).map_err(write_err(&set.staging))?;
+        staging::mark(&set.staging, &set.token).map_err(write_err(&set.staging))?;
         Ok(set)
     }
 
