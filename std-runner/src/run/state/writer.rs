@@ -35,7 +35,7 @@ pub fn partial_of(path: &Path) -> PathBuf {
 
 impl StateWriter {
     /// Starts the state of `header.ensembles` ensembles at `path`: refused when a file is
-    /// there that gdsmc did not write (a state file is its own: it starts with [`MAGIC`]), when
+    /// there that gdsmc did not write (a state file is its own: it starts with [`super::MAGIC`]), when
     /// its directory does not exist, or while another process writes the same state. A
     /// partial file of this same state (its header's bytes this one's: the same scene, seed,
     /// segment, time and size) is continued, its records kept for [`StateWriter::holds`];
