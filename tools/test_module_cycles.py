@@ -83,3 +83,50 @@ expect(
     1,
     "a::inner -> b -> a::inner",
 )
+expect(
+    "through a parent's use of its child: the runner's circle (run/columns.rs named "
+    "analysis::power_tail's constant, power_tail used run's types, run used columns)",
+    {
+        "lib.rs": "pub mod analysis;\npub mod run;\n",
+        "run/mod.rs": "pub mod columns;\npub struct RunStats;\npub fn go() { columns::names(); }\n",
+        "run/columns.rs": "pub fn names() { let _ = crate::analysis::power_tail::EXPONENT; }\n",
+        "analysis/mod.rs": "pub mod power_tail;\n",
+        "analysis/power_tail.rs": "use crate::run::RunStats;\npub const EXPONENT: &str = \"x\";\n",
+    },
+    1,
+    "analysis::power_tail -> run -> run::columns -> analysis::power_tail",
+)
+expect(
+    "a child taking its parent's own item while the parent calls the child",
+    {
+        "lib.rs": "pub mod sweep;\n",
+        "sweep/mod.rs": "mod shard;\npub struct Sweep;\nimpl Sweep { fn go(&self) { shard::merged(self) } }\n",
+        "sweep/shard.rs": "use super::Sweep;\npub fn merged(_: &Sweep) {}\n",
+    },
+    1,
+    "sweep -> sweep::shard -> sweep",
+)
+expect(
+    "no circle: the parent re-exports (grouped) what its child takes from a sibling",
+    {
+        "lib.rs": "pub mod sweep;\n",
+        "sweep/mod.rs": "mod shard;\nmod spec;\npub use spec::{Sweep};\n"
+        "impl Sweep { fn go(&self) { shard::merged(self) } }\n",
+        "sweep/spec.rs": "pub struct Sweep;\n",
+        "sweep/shard.rs": "use super::Sweep;\npub fn merged(_: &Sweep) {}\n",
+    },
+    0,
+)
+expect(
+    "no circle: a unit test checks a module against one that uses it; an inline module's "
+    "super stays in the file",
+    {
+        "lib.rs": "pub mod sample;\n",
+        "sample/mod.rs": "pub mod squeeze;\npub mod normal;\n",
+        "sample/squeeze.rs": "pub const W: u8 = 1;\n"
+        "#[cfg(test)]\nmod tests {\n    use super::super::normal::wedge;\n}\n"
+        "mod render {\n    use super::W;\n}\n",
+        "sample/normal.rs": "use super::squeeze::W;\npub fn wedge() {}\n",
+    },
+    0,
+)

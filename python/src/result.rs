@@ -4,7 +4,7 @@
 
 use crate::scene::Scene;
 use crate::to_py;
-use gdsmc_runner::reference::curves::for_scene;
+use gdsmc_theory::curves::for_scene;
 use gdsmc_runner::report;
 use gdsmc_runner::run::state::{StateHeader, StateReader, StateWriter};
 use gdsmc_runner::run::{self as runner, RunStats};
@@ -29,7 +29,7 @@ pub struct RunResult {
 
 impl RunResult {
     /// The references the run's tables and summary carry.
-    fn refs(&self) -> Vec<gdsmc_runner::reference::curves::ReferenceCurve> {
+    fn refs(&self) -> Vec<gdsmc_theory::curves::ReferenceCurve> {
         if self.references {
             for_scene(self.scene.scene())
         } else {

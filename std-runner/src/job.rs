@@ -5,11 +5,11 @@
 //! through [`Watch`]; the job returns the text to show.
 
 use crate::error::Error;
-use crate::reference::curves::for_scene;
 use crate::report::{self, charts::Formats, set::OutputSet};
 use crate::run::{self, Journaled, RunStats, shard};
 use crate::scene::{Scene, Sourced};
 pub use crate::watch::{Quiet, Watch};
+use gdsmc_theory::curves::for_scene;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -391,7 +391,7 @@ fn write_with(
     stats: &RunStats,
     dir: &Path,
     format: Formats,
-    refs: &[crate::reference::curves::ReferenceCurve],
+    refs: &[gdsmc_theory::curves::ReferenceCurve],
 ) -> Result<String, Error> {
     let files = report::commit_run(set, scene, stats, refs, format)?;
     let mut text = report::summary::text(scene, stats, refs);

@@ -24,7 +24,6 @@ pub mod clock;
 pub mod error;
 pub mod files;
 pub mod job;
-pub mod reference;
 pub mod report;
 pub mod reproduce;
 pub mod run;

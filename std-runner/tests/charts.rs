@@ -10,7 +10,7 @@ fn a_run_writes_csv_json_and_svg() {
     s.set_n(32).expect("a valid particle count");
     s.set_ensembles(10).unwrap();
     let st = gdsmc_runner::run::run(&s, 1, &|_| {}).unwrap();
-    let refs = gdsmc_runner::reference::curves::for_scene(&s);
+    let refs = gdsmc_theory::curves::for_scene(&s);
     let dir = std::env::temp_dir().join(format!("gdsmc-charts-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     gdsmc_runner::report::write_all(&dir, &s, &st, &refs, Default::default()).unwrap();
@@ -66,7 +66,7 @@ fn every_chart_of_every_shipped_scene_is_readable() {
         s.set_n(256).expect("a valid particle count");
         s.set_ensembles(4).unwrap();
         let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
-        let refs = gdsmc_runner::reference::curves::for_scene(&s);
+        let refs = gdsmc_theory::curves::for_scene(&s);
         let reduced = gdsmc_runner::analysis::distribution::reduced(&s, &st);
         let marginal = gdsmc_runner::analysis::distribution::marginal(&st);
         let power = gdsmc_runner::analysis::power_tail::measure(&s, &st);

@@ -5,10 +5,10 @@
 //! bins checked (z given per test).
 
 use gdsmc_runner::analysis::distribution::{marginal, reduced};
-use gdsmc_runner::reference::exact::tail::{a_white_noise_36, sonine_s2};
 use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene;
 use gdsmc_stats::multiplier;
+use gdsmc_theory::exact::tail::{a_white_noise_36, sonine_s2};
 use std::path::PathBuf;
 
 fn shipped(name: &str, set: &[&str], n: usize, m: u64, seed: u64) -> scene::Scene {

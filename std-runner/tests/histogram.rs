@@ -81,7 +81,7 @@ fn initial_shells_are_maxwellian() {
 /// area) against the reduced Maxwellian's weight over the same area (`phi_shell_in(2, ..)`).
 #[test]
 fn initial_shells_of_disks_are_the_planar_maxwellian() {
-    use gdsmc_runner::reference::exact::tail::{phi_shell_in, shell_volume_in};
+    use gdsmc_theory::exact::tail::{phi_shell_in, shell_volume_in};
     let st = initial_shells("disks-white-noise");
     assert_eq!(st.dimension, 2);
     let gdsmc_runner::run::ShellHistogram { radius, weights: h } = st.histogram.as_ref().unwrap();

@@ -2,11 +2,11 @@
 //! and 5, integrated to t = 20 (paper: 0.956 for both closures in Example 4; 0.743 (21) and
 //! 0.757 (22) in Example 5), to the paper's three digits; and u relaxes to u^B.
 
-use gdsmc_runner::reference::curves::hydro_models;
-use gdsmc_runner::reference::hydro::Trajectory;
+use gdsmc_theory::curves::hydro_models;
+use gdsmc_theory::hydro::Trajectory;
 use std::path::PathBuf;
 
-fn models(name: &str) -> [gdsmc_runner::reference::hydro::HydroModel; 2] {
+fn models(name: &str) -> [gdsmc_theory::hydro::HydroModel; 2] {
     let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("../scenes/{name}.toml"));
     hydro_models(&gdsmc_runner::scene::load(&p).unwrap()).unwrap()
 }

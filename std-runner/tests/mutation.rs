@@ -1,5 +1,5 @@
 //! The mutation check (issue 35): each exact reference `gdsmc reproduce` judges by is made
-//! wrong in turn (`reference::mutation`), by 5% and by 50%, every table of the quick report is
+//! wrong in turn (`gdsmc_theory::mutation`), by 5% and by 50%, every table of the quick report is
 //! built again from the same runs (`reproduce::with_cached_runs`), and every cell that
 //! reference serves must notice. (5% is the issue's amount; a reference that enters a cell
 //! only as a small term, as the raw temperature's finite-n term does, moves the cell by much
@@ -28,8 +28,8 @@
 //! agreeing, `POWER` infinite) the same assertion finds cells that agree though a reference
 //! under them is off and their figure moved by more than 2 POWER.
 
-use gdsmc_runner::reference::mutation::{self, Reference};
 use gdsmc_runner::reproduce::{self, Blame, Options, POWER, Side, Table, Verdict};
+use gdsmc_theory::mutation::{self, Reference};
 
 /// The mutations: each reference times these.
 const FACTORS: [f64; 2] = [1.05, 1.5];

@@ -3,10 +3,10 @@
 //! a freely cooling gas lists its scale-free quantities and no temperature, a heated gas its
 //! temperatures, and a reference beside a mean is the reference's mean over the same window.
 
-use gdsmc_runner::reference::curves::for_scene;
 use gdsmc_runner::report::summary::text;
 use gdsmc_runner::run::columns::{MIXTURE_TEMPERATURE, name};
 use gdsmc_runner::scene;
+use gdsmc_theory::curves::for_scene;
 use std::path::PathBuf;
 
 /// The steady block of the summary of `file` at n = 32, 4 ensembles.

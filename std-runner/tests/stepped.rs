@@ -1,10 +1,10 @@
 //! A run advanced a few ensembles at a time (`gdsmc_runner::run::stepped`, the browser's way)
 //! gives the statistics of the run the command makes, bit for bit, at every prefix.
 
-use gdsmc_runner::reference::curves::for_scene;
 use gdsmc_runner::report::observables_csv;
 use gdsmc_runner::run::stepped::Stepped;
 use gdsmc_runner::scene::{Override, Sourced};
+use gdsmc_theory::curves::for_scene;
 use std::path::PathBuf;
 
 fn scene(name: &str, ensembles: i64) -> Sourced {

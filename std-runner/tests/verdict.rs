@@ -2,10 +2,10 @@
 //! (the README's first run), the infinite-n curve is shown as what it is and not judged, and a
 //! reference moved off by a few percent is called a disagreement (the verdict can fail).
 
-use gdsmc_runner::reference::curves::{Kind, ReferenceCurve, for_scene};
 use gdsmc_runner::report::summary::text;
 use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene;
+use gdsmc_theory::curves::{Kind, ReferenceCurve, for_scene};
 use std::path::PathBuf;
 
 fn grw3() -> (scene::Scene, gdsmc_runner::run::RunStats) {

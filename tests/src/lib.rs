@@ -94,13 +94,8 @@ pub fn time_index(stats: &RunStats, t: f64) -> usize {
 pub fn assert_exact_maxwell_temperature(
     s: &Scene,
     what: &str,
-) -> (
-    gdsmc_runner::reference::exact::MaxwellTemperature,
-    RunStats,
-    f64,
-) {
-    let mt = gdsmc_runner::reference::curves::maxwell_temperature(s)
-        .expect("a Maxwell gas: GRW (13) applies");
+) -> (gdsmc_theory::exact::MaxwellTemperature, RunStats, f64) {
+    let mt = gdsmc_theory::curves::maxwell_temperature(s).expect("a Maxwell gas: GRW (13) applies");
     let n = s.n();
     let st = run(s);
     let f = gdsmc_stats::family(2 * st.times.len(), gdsmc_stats::dof(st.ensembles));

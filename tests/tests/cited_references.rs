@@ -3,8 +3,8 @@
 //! id, one of its columns or its words is given to that scene's run by some attached
 //! reference that answers to the same name, with at least one curve.
 
-use gdsmc_runner::reference::curves::registry::{REFERENCES, Reference, applicable, cites};
 use gdsmc_runner::scene;
+use gdsmc_theory::curves::registry::{REFERENCES, Reference, applicable, cites};
 
 /// Every shipped scene's name and the scene.
 fn shipped() -> Vec<(String, scene::Scene)> {

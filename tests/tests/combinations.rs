@@ -18,7 +18,7 @@ use gdsmc_core::physics::{
     SpeciesChoice,
 };
 use gdsmc_core::rng::stream;
-use gdsmc_runner::reference::curves::registry::REFERENCES;
+use gdsmc_theory::curves::registry::REFERENCES;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::Write as _;

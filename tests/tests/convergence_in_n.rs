@@ -8,8 +8,8 @@
 //! must be narrow enough to exclude first-order-in-sqrt(n) (factor 2) and second-order (16)
 //! behaviour.
 
-use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::run::columns::name;
+use gdsmc_theory::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 #[test]

@@ -7,9 +7,9 @@
 //! `xi = (1 - alpha^2) (16/3) sqrt(pi) gamma C (1 + 3 a2 / 16)` (the cooling rate of MS (27)-(28)
 //! with a2 of the homogeneous cooling state, MS (5)), checked decade by decade.
 
-use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene::{DriveChoice, KernelKind, SchemeChoice};
+use gdsmc_theory::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 #[test]

@@ -12,7 +12,7 @@
 //!   change of Huthmann and Zippelius (1997); `zeta*` is that over twice the energy per
 //!   particle, times `n/(n - 1)` (the energy about the flow of n particles);
 //! - BRS's impact-speed law at the initial Maxwellian: `zeta` is the exact initial cooling
-//!   rate of `reference::impact_speed` (in scene time units, so `nu` is checked too);
+//!   rate of `gdsmc_theory::impact_speed` (in scene time units, so `nu` is checked too);
 //! - a smooth mixture: `zeta` equals `zeta_mix`, the same rate estimated by run/cooling.rs from
 //!   the analytic average over the direction (Garzó and Dufty 1999's definition).
 //!
@@ -159,12 +159,12 @@ fn a_mixtures_cooling_rate_is_the_analytic_estimates() {
 }
 
 /// Under BRS's impact-speed law the collisions cool a Maxwellian at the exact initial rate of
-/// `reference::impact_speed` (derived over the impact parameter; exact at every n over the
+/// `gdsmc_theory::impact_speed` (derived over the impact parameter; exact at every n over the
 /// initial draw): `zeta = -(dT/dt)(0)/T0` times `n/(n - 1)` (the energy about the flow), in
 /// scene time units: the estimate's collision frequency is the physical one.
 #[test]
 fn the_impact_speed_law_cools_a_maxwellian_at_its_exact_rate() {
-    use gdsmc_runner::reference::impact_speed::{Impacts, InitialCooling};
+    use gdsmc_theory::impact_speed::{Impacts, InitialCooling};
     let n = 1000;
     let all = [
         "collisions.restitution=",

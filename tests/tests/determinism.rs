@@ -8,8 +8,7 @@ use gdsmc_validation::*;
 fn csv_bytes(name: &str, seed: u64, threads: usize) -> Vec<u8> {
     let s = shipped(name, 64, 50, seed);
     let st = gdsmc_runner::run::run(&s, threads, &|_| {}).unwrap();
-    gdsmc_runner::report::observables_csv(&st, &gdsmc_runner::reference::curves::for_scene(&s))
-        .unwrap()
+    gdsmc_runner::report::observables_csv(&st, &gdsmc_theory::curves::for_scene(&s)).unwrap()
 }
 
 #[test]
@@ -90,7 +89,7 @@ fn an_interrupted_run_keeps_a_prefix_equal_to_a_shorter_run() {
     let mut shorter = s.clone();
     shorter.set_ensembles(st.ensembles).unwrap();
     let full = gdsmc_runner::run::run(&shorter, 1, &|_| {}).unwrap();
-    let refs = gdsmc_runner::reference::curves::for_scene(&s);
+    let refs = gdsmc_theory::curves::for_scene(&s);
     assert_eq!(
         gdsmc_runner::report::observables_csv(&st, &refs).unwrap(),
         gdsmc_runner::report::observables_csv(&full, &refs).unwrap()

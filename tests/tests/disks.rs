@@ -3,9 +3,9 @@
 //! 99.9% jointly: Bonferroni over the time points), and the same check refuses hard disks,
 //! whose cooling is not GRW (13)'s. The scene's references say which apply.
 
-use gdsmc_runner::reference::curves::{for_scene, maxwell_temperature};
 use gdsmc_runner::run::columns::name;
 use gdsmc_stats::{dof, family};
+use gdsmc_theory::curves::{for_scene, maxwell_temperature};
 use gdsmc_validation::*;
 
 #[test]

@@ -6,8 +6,8 @@
 //! hard-sphere background, against a direct O(n) weighted choice in
 //! `core/tests/host_medium_choice.rs`.
 
-use gdsmc_runner::reference::curves::host_medium_maxwell;
 use gdsmc_runner::run::columns::name;
+use gdsmc_theory::curves::host_medium_maxwell;
 use gdsmc_validation::*;
 
 /// Grain-grain collisions keep momentum and each grain's background collisions change its
@@ -159,7 +159,7 @@ fn rough_grains_keep_the_exact_bulk_velocity_of_brs_14() {
     );
     let st = run(&s);
     let f = family(3 * st.times.len(), dof(st.ensembles));
-    let heavy = gdsmc_runner::reference::exact::HostMediumMaxwell {
+    let heavy = gdsmc_theory::exact::HostMediumMaxwell {
         alpha: 2.0 / 3.0,
         ..smooth
     };

@@ -1,5 +1,5 @@
 //! The impact-speed law BRS (9)-(10) in the engine: the exact initial cooling rate `dT/dt` at
-//! `t = 0` from a Maxwellian (`reference::impact_speed`, derived over the impact parameter)
+//! `t = 0` from a Maxwellian (`gdsmc_theory::impact_speed`, derived over the impact parameter)
 //! against the engine's, for smooth hard spheres, hard disks and pseudo-Maxwell disks, and for
 //! rough hard disks at beta = -0.999 beside the smooth hard disks they become at beta = -1.
 //!
@@ -19,8 +19,8 @@ use gdsmc_core::physics::{
     SchemeChoice,
 };
 use gdsmc_core::rng::Streams;
-use gdsmc_runner::reference::impact_speed::{Impacts, InitialCooling};
 use gdsmc_stats::Sample;
+use gdsmc_theory::impact_speed::{Impacts, InitialCooling};
 
 /// `C` with `4 pi gamma C = 1` at `gamma = 1`.
 const C: f64 = 1.0 / (4.0 * std::f64::consts::PI);

@@ -12,9 +12,9 @@
 //!   the flow velocity, `M` the total mass), at every time. A bath acting with the wrong mass
 //!   (variance `T_b` for every species) drives the heavy species to `m T_b`.
 
-use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::run::columns::name;
 use gdsmc_stats::{dof, family};
+use gdsmc_theory::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 /// A one-species Maxwell gas (GRW Example 3's kernel, alpha = 1/2: `k = 3/4`) in a bath of

@@ -4,7 +4,7 @@
 
 use super::combinations::{Block, LAWS, drives, kernels, scene_of};
 use gdsmc_core::physics::{DimensionChoice, KernelKind, SchemeChoice};
-use gdsmc_runner::reference::curves::registry::REFERENCES;
+use gdsmc_theory::curves::registry::REFERENCES;
 
 /// Every drive the matrix runs gets the Maxwell gas's exact temperature references (GRW
 /// (13)-(14), at finite n and n -> infinity) exactly when it declares a linear temperature law

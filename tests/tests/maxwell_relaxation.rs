@@ -4,8 +4,8 @@
 //! 99.9% confidence interval (3.2 standard errors, GRW (25)) of the ensemble mean. Several
 //! checks per test make a family; with a fixed seed the outcome is deterministic.
 
-use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::run::columns::name;
+use gdsmc_theory::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 /// For the Maxwell kernel the ensemble mean at finite n is known exactly
@@ -90,7 +90,7 @@ fn large_n_follows_grw_13() {
 /// precision.
 #[test]
 fn collisions_per_particle_have_the_maxwell_rate() {
-    use gdsmc_runner::reference::balance::collision_rate;
+    use gdsmc_theory::balance::collision_rate;
     let n = 16;
     let s = shipped("grw-example3", n, 4_000, 103);
     let st = run(&s);
@@ -118,7 +118,7 @@ fn collisions_per_particle_have_the_maxwell_rate() {
 /// white noise was added, is refused at the late times.
 #[test]
 fn heated_a2_follows_its_exact_solution() {
-    use gdsmc_runner::reference::curves::maxwell_cumulant;
+    use gdsmc_theory::curves::maxwell_cumulant;
     for (dim, seed) in [("3", 301), ("2", 302)] {
         let set = [format!("particles.dimension={dim}")];
         let set: Vec<&str> = set.iter().map(String::as_str).collect();
@@ -128,7 +128,7 @@ fn heated_a2_follows_its_exact_solution() {
         let times = [1.0, 2.0, 4.0, 8.0];
         let f = gdsmc_stats::family(times.len(), gdsmc_stats::dof(st.ensembles));
         let d: usize = dim.parse().unwrap();
-        let cooling = gdsmc_runner::reference::maxwell_cumulant::MaxwellCumulant::new(
+        let cooling = gdsmc_theory::maxwell_cumulant::MaxwellCumulant::new(
             d,
             0.5,
             4.0,

@@ -1,6 +1,6 @@
 //! Granular mixtures (`gdsmc_core::mixture`): a one-species mixture is the one-species loop to
 //! the last bit, and the inelastic Maxwell mixture's species temperatures follow the exact
-//! finite-N second moments (`gdsmc_runner::reference::mixture`) at every observation time.
+//! finite-N second moments (`gdsmc_theory::mixture`) at every observation time.
 
 use gdsmc_core::drive::{Drive, GaussianThermostat, NoDrive, WhiteNoise};
 use gdsmc_core::engine::NoSplitting;
@@ -16,8 +16,8 @@ use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::{Streams, stream};
 use gdsmc_core::sample::Maxwellian;
 use gdsmc_core::vec3::Vec3;
-use gdsmc_runner::reference::mixture::MaxwellMixture;
 use gdsmc_stats::{Sample, dof, joint};
+use gdsmc_theory::mixture::MaxwellMixture;
 
 /// Runs the one-species loop and the one-species mixture from the same start and seed and
 /// asserts equal observables (every field, to the bit) and counts at each time.

@@ -6,8 +6,8 @@ use super::mixture::{maxwell_mixture, mean_se};
 use gdsmc_core::math::PI;
 use gdsmc_core::particles::{Particle, Particles};
 use gdsmc_core::rng::Streams;
-use gdsmc_runner::reference::mixture::MaxwellMixture;
 use gdsmc_stats::{dof, family, joint};
+use gdsmc_theory::mixture::MaxwellMixture;
 
 /// The steady averages of `cols` of a scene run through the runner, each with its 99.9%
 /// half-width.

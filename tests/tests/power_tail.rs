@@ -12,7 +12,7 @@
 //! together are at 99.8%.
 
 use gdsmc_runner::analysis::power_tail::{PowerTail, measure};
-use gdsmc_runner::reference::maxwell_cumulant::tail_exponent;
+use gdsmc_theory::maxwell_cumulant::tail_exponent;
 use gdsmc_validation::*;
 
 /// The shipped Maxwell cooling scene at `alpha` in dimension `d`, its reduced tail in 80

@@ -5,9 +5,9 @@
 //! jointly (Bonferroni over their time points), and each shows it can fail: beta = 0 leaves
 //! GRW (13) at most times.
 
-use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::run::columns::name;
 use gdsmc_stats::{dof, family};
+use gdsmc_theory::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 const MAXWELL_SMOOTH: [&str; 6] = [

@@ -6,10 +6,10 @@
 //! value where the time-step error is resolved. The convergence factors of the temperature
 //! error in dt are then near 2 (Euler) and 4 (Strang), RW Table 2.
 
-use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene::{Scene, SchemeChoice};
 use gdsmc_stats::{dof, family};
+use gdsmc_theory::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 /// A shipped scene observed at `times` (set first: the scheme's grid is checked against them)

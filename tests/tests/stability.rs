@@ -139,7 +139,7 @@ fn extreme_dissipation() {
         1607,
     );
     assert!(w.is_empty(), "{w:?}");
-    let mt = gdsmc_runner::reference::curves::maxwell_temperature(&s).unwrap();
+    let mt = gdsmc_theory::curves::maxwell_temperature(&s).unwrap();
     let z = family(st.times.len(), dof(st.ensembles));
     for (ti, &t) in st.times.iter().enumerate() {
         let (m, ci) = at(&st, ti, name::T_BULK);
@@ -205,7 +205,7 @@ fn host_medium_extreme_mass_ratios() {
         let set: Vec<&str> = set.iter().map(|s| s.as_str()).collect();
         let (w, st, s) = warnings("brs-example2", &set, 64, 400, 1613 + k as u64);
         assert!(w.is_empty(), "{w:?}");
-        let h = gdsmc_runner::reference::curves::host_medium_maxwell(&s).unwrap();
+        let h = gdsmc_theory::curves::host_medium_maxwell(&s).unwrap();
         // 2 masses x 17 times x 2 quantities, jointly at 99.9%.
         let z = family(68, dof(st.ensembles));
         for (ti, &t) in st.times.iter().enumerate().step_by(32) {

@@ -8,9 +8,9 @@
 //! t: Euler 2 beta dt/(1 - e^{-k dt}), Strang (2 beta/k)(k dt/2)/sinh(k dt/2), times (1 - 1/n))
 //! and on RW's published T_inf within RW's Conf plus ours.
 
-use gdsmc_runner::reference::curves::maxwell_temperature;
 use gdsmc_runner::run::columns::name;
 use gdsmc_runner::scene::SchemeChoice;
+use gdsmc_theory::curves::maxwell_temperature;
 use gdsmc_validation::*;
 
 fn steady_t(name: &str, scheme: SchemeChoice, seed: u64) -> (f64, f64, f64) {

@@ -14,8 +14,8 @@
 //! - the constant force keeps a2 negative (MS Section 4.3), between the estimates (50) and (76)
 //!   widened by MS's 20% remark.
 
-use gdsmc_runner::reference::exact::sonine::*;
 use gdsmc_runner::run::columns::name;
+use gdsmc_theory::exact::sonine::*;
 use gdsmc_validation::*;
 
 /// A steady run at alpha with n = 2048 (24 ensembles), or n = 8192 (8 ensembles) at strong

@@ -132,8 +132,8 @@ fn time_stepped_rough_spheres_converge_to_no_splitting() {
 #[test]
 #[ignore = "long suite: cargo test --workspace --release -- --include-ignored (README, CI)"]
 fn time_stepped_maxwell_molecules_keep_the_exact_finite_n_mean() {
-    use gdsmc_runner::reference::curves::maxwell_temperature;
     use gdsmc_stats::{dof, family};
+    use gdsmc_theory::curves::maxwell_temperature;
     let times = vec![0.0, 0.25, 0.5, 1.0, 1.5, 2.0];
     let stepped = |n: usize, m: u64, f: f64, seed: u64| {
         let mut s = shipped("grw-example3", n, m, seed);

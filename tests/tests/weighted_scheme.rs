@@ -69,8 +69,7 @@ fn a_weighted_run_is_bit_identical_for_any_thread_count() {
     let bytes = |seed: u64, threads: usize| {
         let s = shipped("grw-example3-weighted", 64, 24, seed);
         let st = gdsmc_runner::run::run(&s, threads, &|_| {}).unwrap();
-        gdsmc_runner::report::observables_csv(&st, &gdsmc_runner::reference::curves::for_scene(&s))
-            .unwrap()
+        gdsmc_runner::report::observables_csv(&st, &gdsmc_theory::curves::for_scene(&s)).unwrap()
     };
     let one = bytes(3, 1);
     assert_eq!(one, bytes(3, 2));
@@ -181,7 +180,7 @@ fn the_weighted_cooling_gas_has_the_exact_a2() {
         let mut set = set.to_vec();
         set.extend_from_slice(windows);
         let s = shipped_set("hcs-maxwell", &set, 1024, 50, 84);
-        let exact = gdsmc_runner::reference::curves::maxwell_cumulant(&s).expect("a Maxwell gas");
+        let exact = gdsmc_theory::curves::maxwell_cumulant(&s).expect("a Maxwell gas");
         let st = run(&s);
         let times = [1.0, 2.0, 5.0, 10.0];
         let f = gdsmc_stats::family(times.len(), gdsmc_stats::dof(st.ensembles));
@@ -205,8 +204,8 @@ fn the_weighted_cooling_gas_has_the_exact_a2() {
 #[test]
 fn the_weighted_heated_gas_has_the_exact_a2() {
     let s = shipped("grw-example3-weighted", 1024, 100, 83);
-    let exact = gdsmc_runner::reference::curves::maxwell_cumulant(&s).expect("a Maxwell gas");
-    let cooling = gdsmc_runner::reference::maxwell_cumulant::MaxwellCumulant::new(
+    let exact = gdsmc_theory::curves::maxwell_cumulant(&s).expect("a Maxwell gas");
+    let cooling = gdsmc_theory::maxwell_cumulant::MaxwellCumulant::new(
         3,
         0.5,
         4.0,

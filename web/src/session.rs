@@ -2,12 +2,12 @@
 //! at a time ([`gdsmc_runner::run::stepped`]), its statistics, charts and files on demand. Each
 //! answer is JSON for the page; each error is the command's words.
 
-use gdsmc_runner::reference::curves::{ReferenceCurve, for_scene};
 use gdsmc_runner::report;
 use gdsmc_runner::run::estimate;
 use gdsmc_runner::run::journal::{ensemble_from_words, ensemble_words};
 use gdsmc_runner::run::stepped::Stepped;
 use gdsmc_runner::scene::{Override, merged_text, parse_with};
+use gdsmc_theory::curves::{ReferenceCurve, for_scene};
 use serde_json::{Value, json};
 use std::path::Path;
 

@@ -1,9 +1,9 @@
 //! The page's session on the host: the same statistics as the library's run, the command's
 //! words for bad input, and every kind the core declares offered.
 
-use gdsmc_runner::reference::curves::for_scene;
 use gdsmc_runner::report::observables_csv;
 use gdsmc_runner::scene::{Override, parse_with};
+use gdsmc_theory::curves::for_scene;
 use gdsmc_web::session::{Session, kinds};
 use std::path::Path;
 

@@ -92,6 +92,17 @@ impl DriveParams {
 }
 
 impl DriveChoice {
+    /// Which drive this is.
+    #[must_use]
+    pub const fn kind(&self) -> DriveKind {
+        match self {
+            DriveChoice::None => DriveKind::None,
+            DriveChoice::WhiteNoise(_) => DriveKind::WhiteNoise,
+            DriveChoice::HostMedium { .. } => DriveKind::HostMedium,
+            DriveChoice::Declared(d) => d.kind(),
+        }
+    }
+
     /// The declared drive `kind` with these values ([`DriveParams::new`]).
     #[must_use]
     pub fn declared(kind: DriveKind, values: &[Real]) -> Option<Self> {

@@ -6,11 +6,11 @@
 //! catch-all arm, so a new variant does not compile until it is decoded), its `GDSMC_*`
 //! constants are asserted equal to [`DriveKind::c_code`] at compile time, and the scene's
 //! names, the fuzzer's words and the combination matrix are tested to hold every kind
-//! ([`DriveKind::ALL`]). A choice tells its kind ([`DriveChoice::kind`]), matched exhaustively
+//! ([`DriveKind::ALL`]). A choice tells its kind ([`DriveChoice::kind`](super::DriveChoice::kind)), matched exhaustively
 //! too, so a variant of a choice without its row here does not compile.
 
 use super::axes::kernel_table;
-use super::{DriveChoice, RestitutionLaw, SchemeChoice};
+use super::{RestitutionLaw, SchemeChoice};
 use crate::drive::{Declared, ParamSpec};
 use crate::kernel::Declared as DeclaredKernel;
 use crate::math::Real;
@@ -234,19 +234,6 @@ impl RestitutionLaw {
         match self {
             RestitutionLaw::Constant(_) => LawKind::Constant,
             RestitutionLaw::ImpactSpeed { .. } => LawKind::ImpactSpeed,
-        }
-    }
-}
-
-impl DriveChoice {
-    /// Which drive this is.
-    #[must_use]
-    pub const fn kind(&self) -> DriveKind {
-        match self {
-            DriveChoice::None => DriveKind::None,
-            DriveChoice::WhiteNoise(_) => DriveKind::WhiteNoise,
-            DriveChoice::HostMedium { .. } => DriveKind::HostMedium,
-            DriveChoice::Declared(d) => d.kind(),
         }
     }
 }

@@ -359,12 +359,6 @@ impl Physics {
                 .all(|s| s.rotation_noise.is_none_or(|w| w == 0.0))
     }
 
-    /// Checks the particle count alone (`n >= 2`, addressable): for front ends that size
-    /// memory before they have a whole description.
-    pub fn check_n(n: usize) -> Result<(), PhysicsError> {
-        parts::particle_count(n)
-    }
-
     /// Checks every physical rule and returns the validated [`Model`], or the first
     /// parameter out of its domain.
     pub fn validate(&self) -> Result<Model, PhysicsError> {

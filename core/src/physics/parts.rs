@@ -228,6 +228,14 @@ fn negative(param: Param, x: Real) -> PhysicsError {
     PhysicsError { param, problem }
 }
 
+impl super::Physics {
+    /// Checks the particle count alone (`n >= 2`, addressable): for front ends that size
+    /// memory before they have a whole description.
+    pub fn check_n(n: usize) -> Result<(), PhysicsError> {
+        particle_count(n)
+    }
+}
+
 /// The rule for the particle count ([`check_count`]) as a physics error.
 pub(crate) fn particle_count(n: usize) -> Result<(), PhysicsError> {
     check_count(n).or_else(|e| match e {

@@ -5,6 +5,7 @@
 //! histograms, ensembles) are the scene's own and checked here.
 
 mod collisions;
+mod ctx;
 mod declared;
 mod drive;
 pub(crate) mod observe;
@@ -17,72 +18,11 @@ pub(crate) mod sweep;
 use crate::Scene;
 use crate::error::Error;
 use crate::schema::SceneFile;
-use gdsmc_core::physics::{Param, Physics, PhysicsError};
-use std::ops::Range;
+use gdsmc_core::physics::Physics;
 use std::path::Path;
 
+pub(crate) use ctx::Ctx;
 pub use scheme::DEFAULT_STEP_FACTOR;
-
-/// Where the values of a file are: turns spans into lines and parameters into keys.
-pub(crate) struct Ctx<'a> {
-    path: &'a Path,
-    text: &'a str,
-    keys: Vec<(Param, String, Range<usize>)>,
-}
-
-impl<'a> Ctx<'a> {
-    pub(crate) fn new(path: &'a Path, text: &'a str) -> Self {
-        Ctx {
-            path,
-            text,
-            keys: Vec::new(),
-        }
-    }
-
-    fn line(&self, span: &Range<usize>) -> usize {
-        if *span == (0..0) {
-            return 0;
-        }
-        self.text[..span.start.min(self.text.len())]
-            .bytes()
-            .filter(|&b| b == b'\n')
-            .count()
-            + 1
-    }
-
-    /// The error for the value at `span` of `key`.
-    pub(crate) fn error(&self, span: Range<usize>, key: &str, message: impl Into<String>) -> Error {
-        Error::Invalid {
-            path: self.path.to_path_buf(),
-            line: self.line(&span),
-            key: key.to_string(),
-            message: message.into(),
-        }
-    }
-
-    /// [`Ctx::error`] as a `Result`.
-    pub(crate) fn invalid<T>(
-        &self,
-        span: Range<usize>,
-        key: &str,
-        message: impl Into<String>,
-    ) -> Result<T, Error> {
-        Err(self.error(span, key, message))
-    }
-
-    /// Records that `key` (at `span`) holds the physics parameter `param`.
-    pub(crate) fn holds(&mut self, param: Param, key: impl Into<String>, span: Range<usize>) {
-        self.keys.push((param, key.into(), span));
-    }
-
-    /// The core's verdict on a parameter, at the key and line that hold it.
-    fn physics_error(&self, e: PhysicsError) -> Error {
-        match self.keys.iter().find(|(p, _, _)| *p == e.param) {
-            Some((_, key, span)) => self.error(span.clone(), key, e.problem.to_string()),
-            None => self.error(0..0, &e.param.to_string(), e.problem.to_string()),
-        }
-    }
-}
 
 /// Why an observable written for spheres is refused for disks.
 const SPHERES_ONLY: &str =
@@ -178,7 +118,7 @@ impl SceneFile {
             description: self.description.clone().unwrap_or_default(),
             physics,
             model,
-            keys: ctx.keys.iter().map(|(p, k, _)| (*p, k.clone())).collect(),
+            keys: ctx.keys(),
             times,
             steady_from: observe.0,
             collisional_pairs: observe.1,

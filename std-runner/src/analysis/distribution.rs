@@ -2,11 +2,11 @@
 //! `Delta(c)` (MS (45)) and `G(c)` (MS (69), (71), (77)), and BRS's marginal distribution
 //! `f_1(v_1)` (BRS Figure 4), from the histograms a scene asks for.
 
-use crate::reference::exact::sonine::mu2_maxwellian;
-use crate::reference::exact::tail;
 use crate::run::RunStats;
 use crate::run::columns::name;
 use crate::scene::{DriveKind, KernelKind, Scene};
+use gdsmc_theory::exact::sonine::mu2_maxwellian;
+use gdsmc_theory::exact::tail;
 
 /// Mean and 99.9% half-width of a column: the steady-state average when the scene has one,
 /// else the last observation.

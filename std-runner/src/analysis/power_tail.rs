@@ -11,7 +11,7 @@
 //! the smooth inelastic Maxwell gas cooling freely (or under a thermostat that scales every
 //! velocity alike: the Gaussian one, the Langevin drag with a bath at zero) the exponent is
 //! judged against the exact root `s(alpha)` of Ernst and Brito 2002
-//! ([`crate::reference::maxwell_cumulant::tail_exponent`]), extrapolated from the local
+//! ([`gdsmc_theory::maxwell_cumulant::tail_exponent`]), extrapolated from the local
 //! slopes. The slope approaches the root from below about as `x^-2` (measured on weighted
 //! particles, docs/weighted.md "The cooling state's tail exponent": `x^2 (s - s(x))` goes from
 //! 3.0 at `x = 2` to 2.4 at 8 for alpha = 0.1, d = 3, from 7.1 to 4.0 for alpha = 1/2), and
@@ -25,7 +25,7 @@ use crate::scene::Scene;
 use gdsmc_stats::Covariance;
 
 /// The measured exponent's name where it stands beside the columns (a sweep's points).
-pub const EXPONENT: &str = "tail_exponent";
+pub const EXPONENT: &str = gdsmc_theory::columns::name::TAIL_EXPONENT;
 
 /// Its exact root's name there.
 pub const EXACT: &str = "tail_exponent_exact";
@@ -143,11 +143,11 @@ impl PowerTail {
 #[must_use]
 pub fn exact_exponent(scene: &Scene) -> Option<f64> {
     // The same model as the exact a2 of reference/maxwell_cumulant.rs.
-    crate::reference::curves::maxwell_cumulant(scene)?;
+    gdsmc_theory::curves::maxwell_cumulant(scene)?;
     let heating = scene.model().heating()?;
     let alpha = scene.physics().restitution.constant()?;
     (heating.a == 0.0 && heating.p == 0.0)
-        .then(|| crate::reference::maxwell_cumulant::tail_exponent(scene.dimension(), alpha))
+        .then(|| gdsmc_theory::maxwell_cumulant::tail_exponent(scene.dimension(), alpha))
 }
 
 /// The local slopes of the run's reduced histogram, when it has one folded with covariances

@@ -39,11 +39,7 @@ pub fn tail_points(radius: f64, hist: &Accumulator, d: usize) -> Vec<(usize, f64
     let h = radius / kk as f64;
     let vol = |k: usize| {
         if d == 2 {
-            return crate::reference::exact::tail::shell_volume_in(
-                2,
-                (k - 1) as f64 * h,
-                k as f64 * h,
-            );
+            return gdsmc_theory::exact::tail::shell_volume_in(2, (k - 1) as f64 * h, k as f64 * h);
         }
         4.0 / 3.0
             * std::f64::consts::PI

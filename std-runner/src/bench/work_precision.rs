@@ -14,12 +14,12 @@
 
 use crate::error::Error;
 use crate::files::write_own;
-use crate::reference::curves::maxwell_temperature;
 use crate::report::charts::{Series, Style, profile};
 use crate::run;
 use crate::run::columns::name;
 use crate::scene::{Scene, SchemeChoice};
 use gdsmc_stats::LAMBDA_999;
+use gdsmc_theory::curves::maxwell_temperature;
 use plotters::style::{BLUE, GREEN, RED};
 use std::path::Path;
 

@@ -10,9 +10,9 @@ mod verdict;
 
 use crate::error::Error;
 use crate::files::write_atomic;
-use crate::reference::curves::ReferenceCurve;
 use crate::run::RunStats;
 use crate::scene::Scene;
+use gdsmc_theory::curves::ReferenceCurve;
 use std::path::Path;
 
 /// observables.csv: `t`, then `NAME` and `NAME_ci` for every observable, then the reference
@@ -61,7 +61,7 @@ pub fn histograms_csv(
         } else {
             radius * (i + 1) as f64 / k as f64
         };
-        let vol = crate::reference::exact::tail::shell_volume_in(d, lo, hi);
+        let vol = gdsmc_theory::exact::tail::shell_volume_in(d, lo, hi);
         w.write_record([
             format!("{lo:?}"),
             format!("{hi:?}"),

@@ -1,10 +1,10 @@
 //! The short text summary `gdsmc run` prints.
 
 use super::verdict::num;
-use crate::reference::curves::ReferenceCurve;
 use crate::run::RunStats;
 use crate::run::columns::name;
 use crate::scene::Scene;
+use gdsmc_theory::curves::ReferenceCurve;
 use std::fmt::Write;
 
 /// The summary: scene, sizes, timing, counts, and a table of T, T_bulk, a2 and crit at up to
@@ -197,7 +197,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             m.times.1
         );
     }
-    if let Some(b) = crate::reference::thermostat::GaussianBalance::of(scene) {
+    if let Some(b) = gdsmc_theory::thermostat::GaussianBalance::of(scene) {
         let _ = writeln!(s, "\ndrive: {}", b.describe());
     }
     if let Some(note) = crate::analysis::warnings::no_intervals(stats) {
@@ -291,7 +291,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
 
 /// The summary's line on units: the scene's, and the gas's own at the first observation (the
 /// thermal speed and, for one species, the Maxwellian collision rate and mean free time,
-/// `reference::balance::collision_rate`), and the collisions per particle by the last.
+/// `gdsmc_theory::balance::collision_rate`), and the collisions per particle by the last.
 fn units(scene: &Scene, stats: &RunStats) -> String {
     use crate::run::columns::name;
     let at = |c: &str, i: usize| stats.col(c).map(|k| stats.mean(i, k));
@@ -306,7 +306,7 @@ fn units(scene: &Scene, stats: &RunStats) -> String {
         ));
         if scene.physics().species.is_empty() {
             let (gc, lambda) = scene.physics().kernel.rate_constants();
-            let omega = crate::reference::balance::collision_rate(scene.dimension(), gc, lambda, t);
+            let omega = gdsmc_theory::balance::collision_rate(scene.dimension(), gc, lambda, t);
             line.push_str(&format!(
                 ", collision rate {omega:.4} per particle (Maxwellian), mean free time {:.4}",
                 1.0 / omega

@@ -3,9 +3,9 @@
 //! distribution, thermostat balance, warnings). Written with its keys in alphabetical order at
 //! every level (serde_json's map order), so the file's bytes do not depend on field order here.
 
-use crate::reference::curves::ReferenceCurve;
 use crate::run::RunStats;
 use crate::scene::Scene;
+use gdsmc_theory::curves::ReferenceCurve;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -296,14 +296,12 @@ impl Summary {
                 agrees: t.agrees(),
                 file: "power_tail.csv",
             }),
-            thermostat: crate::reference::thermostat::GaussianBalance::of(scene).map(|b| {
-                Thermostat {
-                    zeta: b.zeta,
-                    cooling_constant: b.kappa,
-                    steady_temperature: b.steady_temperature(),
-                    holding_zeta: b.holding_zeta(),
-                    note: b.describe(),
-                }
+            thermostat: gdsmc_theory::thermostat::GaussianBalance::of(scene).map(|b| Thermostat {
+                zeta: b.zeta,
+                cooling_constant: b.kappa,
+                steady_temperature: b.steady_temperature(),
+                holding_zeta: b.holding_zeta(),
+                note: b.describe(),
             }),
             warnings: crate::analysis::warnings::check(scene, stats)
                 .into_iter()

@@ -3,9 +3,9 @@
 //! the other references named as what they are, and a reference that is not computable at
 //! these parameters flagged, never judged.
 
-use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
 use gdsmc_stats::{joint, multiplier};
+use gdsmc_theory::curves::{Kind, ReferenceCurve};
 use std::fmt::Write;
 
 /// The verdict that ends the summary: each observable against the reference that applies at

@@ -55,7 +55,7 @@ pub fn sup_norm_range(s: f64, miss: f64) -> (f64, f64) {
             libm::exp((ln_moment - libm::log(half)) / p)
         })
         .fold(f64::INFINITY, f64::min);
-    use crate::reference::mutation::{Reference, mutated};
+    use gdsmc_theory::mutation::{Reference, mutated};
     (
         mutated(Reference::SupNormRange, s * lo),
         mutated(Reference::SupNormRange, s * hi),
@@ -88,7 +88,7 @@ pub fn grid_max_range(profile: &[f64], miss: f64) -> (f64, f64, f64) {
     let mut max = simulate_max(profile, PATHS, 1);
     max.sort_by(f64::total_cmp);
     let (lo, hi) = tail_order_statistics(&max, 0.5 * miss);
-    use crate::reference::mutation::{Reference, mutated};
+    use gdsmc_theory::mutation::{Reference, mutated};
     (
         mutated(Reference::SupNormRange, lo),
         mutated(Reference::SupNormRange, max[max.len() / 2]),
@@ -111,7 +111,7 @@ pub fn sup_norm_upper(v0: f64, miss: f64) -> f64 {
     max.sort_by(f64::total_cmp);
     let (_, hi) = tail_order_statistics(&max, 0.5 * miss);
     let overshoot = 2.0 * 0.5826 * ((1.0 - v0) / FINE_STEPS as f64).sqrt();
-    use crate::reference::mutation::{Reference, mutated};
+    use gdsmc_theory::mutation::{Reference, mutated};
     mutated(Reference::SupNormRange, hi + overshoot)
 }
 

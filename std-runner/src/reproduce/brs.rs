@@ -7,10 +7,10 @@ use super::cells::Cell;
 use super::judged::{MaxLaw, OurLargest, PaperNoise, against_paper, computed, max_error_exact};
 use super::{Entry, Options, Row, Table, go, largest, relative, scene};
 use crate::Error;
-use crate::reference::curves::{host_medium_maxwell, hydro_models};
-use crate::reference::hydro::Trajectory;
 use crate::run::columns::name;
-use crate::run::initial_sampler;
+use gdsmc_theory::curves::{host_medium_maxwell, hydro_models};
+use gdsmc_theory::hydro::Trajectory;
+use gdsmc_theory::initial::initial_sampler;
 
 /// BRS Table 1.
 pub const TABLE1: Entry = Entry {

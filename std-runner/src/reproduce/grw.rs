@@ -6,8 +6,8 @@ use super::figure::fmt;
 use super::judged::{MaxLaw, OurLargest, PaperNoise, max_error_exact};
 use super::{Entry, Options, Row, Table, at, ensembles, go, largest, relative, scene};
 use crate::Error;
-use crate::reference::curves::maxwell_temperature;
 use crate::run::columns::name;
+use gdsmc_theory::curves::maxwell_temperature;
 
 /// GRW Table 1 (Example 3, beta = 1).
 pub const TABLE1: Entry = Entry {

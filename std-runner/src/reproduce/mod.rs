@@ -18,6 +18,7 @@ mod bounds;
 mod brs;
 mod cells;
 mod command;
+mod entry;
 mod figure;
 mod grw;
 mod judged;
@@ -31,33 +32,13 @@ pub use cells::{
     Table, Verdict, percent, rounding,
 };
 pub use command::command;
+pub use entry::{Entry, Options};
 pub use figure::fmt;
 pub use report::{epilogue, markdown, text};
 pub use runs::with_cached_runs;
 pub(crate) use runs::{at, ensembles, go, largest, relative, scene, steady};
 
 use crate::Error;
-
-/// How to run the tables.
-#[derive(Clone, Copy, Debug)]
-pub struct Options {
-    /// Reduced sizes, for CI (minutes instead of hours).
-    pub quick: bool,
-    /// Worker threads (0: all cores).
-    pub threads: usize,
-    /// Base seed; row `k` of table `j` uses `seed + 1000 j + k`.
-    pub seed: u64,
-}
-
-/// A reproducible table: its name and how to make it.
-pub struct Entry {
-    /// Short name (`gdsmc reproduce NAME`).
-    pub name: &'static str,
-    /// One line.
-    pub title: &'static str,
-    /// Runs it.
-    pub run: fn(&Options, u64) -> Result<Table, Error>,
-}
 
 /// Every table, in paper order.
 pub const TABLES: &[Entry] = &[

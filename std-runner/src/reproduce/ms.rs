@@ -7,8 +7,8 @@ use super::figure::fmt;
 use super::judged::{against_paper, computed};
 use super::{Entry, Options, Row, Table, go, scene, steady};
 use crate::Error;
-use crate::reference::exact::sonine::{mu2_maxwellian, mu4_maxwellian};
 use crate::run::columns::name;
+use gdsmc_theory::exact::sonine::{mu2_maxwellian, mu4_maxwellian};
 
 /// MS Table 1.
 pub const TABLE1: Entry = Entry {

@@ -16,31 +16,11 @@
 //! pair (so its expectation over the pairs is the exact rate). The flow velocity `U` is kept by
 //! collisions, so the rate of `T_s` about it is the collisions' alone.
 
-use crate::scene::Physics;
 use gdsmc_core::mixture::Species;
 use gdsmc_core::particles::Particles;
 use gdsmc_core::rng::{Rng, uniform_index};
 use gdsmc_core::vec3::Vec3;
-
-/// Every pair type of a mixture physics (`species` its validated species), in the core's pair
-/// order: `(4 pi gamma C ((d_s + d_t)/2)^2, alpha_st)`, so that `int B_st de = strength
-/// |u|^lambda` (the description's kernel with the pair's cross section). The one place the
-/// runner turns the scene's diameters and coefficients into pair kernels (the references and
-/// the cooling-rate estimate use it). `None` when a coefficient is not constant.
-pub fn pair_kernels(ph: &Physics, species: &Species) -> Option<Vec<(f64, f64)>> {
-    let (strength, _) = ph.kernel.rate_constants();
-    (0..species.pair_types())
-        .map(|k| {
-            let (s, t) = species.pair(k);
-            let d = 0.5 * (ph.species[s].diameter + ph.species[t].diameter);
-            let alpha = match ph.pair_restitution.get(k) {
-                Some(&a) => a,
-                None => ph.restitution.constant()?,
-            };
-            Some((4.0 * std::f64::consts::PI * strength * d * d, alpha))
-        })
-        .collect()
-}
+use gdsmc_theory::pairs::pair_kernels;
 
 /// The collision data of one pair type.
 #[derive(Clone, Copy, Debug)]

@@ -10,23 +10,11 @@ use gdsmc_core::engine::{Counts, EngineError, EventLoop, Frame};
 use gdsmc_core::histogram::{component_bins, radial_shells_mapped};
 use gdsmc_core::moments::Observables;
 use gdsmc_core::particles::{Particle, Particles, Spin};
-use gdsmc_core::physics::{MAX_COMPONENTS, Model};
+use gdsmc_core::physics::Model;
 use gdsmc_core::rng::Xoshiro256PlusPlus;
-use gdsmc_core::sample::MaxwellianMixture;
 use gdsmc_core::vec3::Vec3;
 
 use super::state::{StateReader, StateWriter, continued};
-
-/// The initial distribution of a scene as a core sampler.
-pub fn initial_sampler(scene: &Scene) -> MaxwellianMixture<MAX_COMPONENTS> {
-    scene.model().initial().clone()
-}
-
-/// The temperature of a scene's initial distribution, per degree of freedom of its dimension
-/// (the drifts' spread counts over `d` components).
-pub fn initial_temperature(scene: &Scene) -> f64 {
-    initial_sampler(scene).temperature_in(scene.dimension())
-}
 
 /// Why an ensemble stopped: the engine's error and the observation time it was advancing to.
 #[derive(Clone, Copy, Debug, PartialEq)]

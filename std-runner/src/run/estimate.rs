@@ -104,7 +104,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     let n = p.n as f64;
     let t_end = scene.times().last().copied().unwrap_or(0.0);
     let m = scene.ensembles() as f64;
-    let t0 = crate::run::initial_temperature(scene);
+    let t0 = gdsmc_theory::initial::initial_temperature(scene);
     let (gc, lambda) = p.kernel.rate_constants();
     let alpha = typical_alpha(scene);
     // A rough gas: its noise on rotation heats it too (through the collisions), its start

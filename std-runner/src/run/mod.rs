@@ -25,8 +25,7 @@ pub mod stepped;
 pub mod totals;
 
 pub use ensemble::{
-    StateIo, SystemBuffer, initial_sampler, initial_temperature, particle_buffer, run_ensemble,
-    run_on_buffer, system_buffer,
+    StateIo, SystemBuffer, particle_buffer, run_ensemble, run_on_buffer, system_buffer,
 };
 pub use memory::{run, run_in_memory, run_interruptible, run_with_samples};
 pub use results::{MarginalHistogram, RunStats, ShellHistogram, SteadyStats};

@@ -5,9 +5,9 @@
 
 use super::point::{PointResult, PointScene, references};
 use super::vary::Vary;
-use crate::reference::curves::Kind;
 use crate::report::charts::{Chart, Residuals, Series, Style, profile_with_residuals};
 use crate::scene::{Override, Sourced};
+use gdsmc_theory::curves::Kind;
 use plotters::style::RGBColor;
 
 /// Colours of the series, one per combination of the other keys (dark enough for grey scale).

@@ -17,15 +17,17 @@ mod mpi;
 mod output;
 pub mod point;
 mod shard;
+mod spec;
 pub mod table;
 pub mod verdict;
 pub mod words;
 
 pub use crate::scene::vary;
+pub use spec::Sweep;
+pub(crate) use spec::point_journal;
 
 use crate::error::Error;
 use crate::job::{Outcome, Watch};
-use crate::report::charts::Formats;
 use crate::report::set::OutputSet;
 use crate::run::{self, Journaled, estimate};
 use crate::scene::Sourced;
@@ -34,32 +36,6 @@ use point::{PointResult, PointScene};
 use shard::{merged_point, point_shard_journals, stale_shards};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use vary::{Combine, Vary};
-
-/// A sweep as `gdsmc sweep` takes it.
-#[derive(Clone, Debug)]
-pub struct Sweep {
-    /// The base scene (with the command's `--set`, `--n`, `--ensembles`, `--seed`).
-    pub source: Sourced,
-    /// The varied keys.
-    pub vary: Vec<Vary>,
-    /// How several keys make points.
-    pub combine: Combine,
-    /// Worker threads per point (0: all cores).
-    pub threads: usize,
-    /// Run even when the summed work estimate is above the limit.
-    pub allow_long: bool,
-    /// The output directory (default out/NAME-sweep).
-    pub out: Option<PathBuf>,
-    /// Start every point anew instead of continuing its journal.
-    pub fresh: bool,
-    /// Chart formats.
-    pub format: Formats,
-    /// Run only shard K of S (`K/S`): the points `k` with `k mod S = K`, journaled where the
-    /// whole sweep looks for them; the same command without it then writes the sweep from the
-    /// journals.
-    pub shard: Option<String>,
-}
 
 /// What running a sweep's points gave.
 #[derive(Debug)]
@@ -99,24 +75,6 @@ pub fn plan(source: &Sourced, vary: &[String], zip: bool) -> Result<vary::Plan, 
             vary::Combine::Grid
         },
     })
-}
-
-/// The journal of point `k` of the sweep written to `dir`: beside it, as a run's; with
-/// `chunk = Some((c, C))`, the journal of the shard `c` of `C` of the point's ensembles
-/// (`.NAME.point-K-shard-c-of-C.gdsmc-ensembles`).
-pub(super) fn point_journal_of(dir: &Path, k: usize, chunk: Option<(u64, u64)>) -> PathBuf {
-    run::journal::beside(
-        dir,
-        match chunk {
-            None => run::journal::Of::Point(k),
-            Some((c, n)) => run::journal::Of::PointShard(k, c, n),
-        },
-    )
-}
-
-/// The journal of the whole point `k`.
-pub(super) fn point_journal(dir: &Path, k: usize) -> PathBuf {
-    point_journal_of(dir, k, None)
 }
 
 impl Sweep {

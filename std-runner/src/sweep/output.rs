@@ -1,8 +1,8 @@
 //! What a finished (or stopped) sweep writes and prints: sweep.csv, sweep.md, sweep.json and
 //! the charts as one output set, the terminal's table and its notes.
 
-use super::Sweep;
 use super::point::{PointResult, PointScene};
+use super::spec::Sweep;
 use super::table;
 use crate::error::Error;
 use crate::report::set::OutputSet;

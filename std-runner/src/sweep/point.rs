@@ -3,9 +3,9 @@
 
 use super::vary::Point;
 use crate::error::Error;
-use crate::reference::curves::{Kind, for_scene};
 use crate::run::RunStats;
 use crate::scene::{Override, Sourced};
+use gdsmc_theory::curves::{Kind, for_scene};
 
 /// A point's validated scene.
 #[derive(Clone, Debug)]

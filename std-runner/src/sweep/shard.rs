@@ -2,7 +2,8 @@
 //! points, or shards of points, task K runs, each journaled beside the output directory where
 //! the whole sweep (the same command without `--shard`) finds and merges them.
 
-use super::{PointScene, Sweep, point_journal, point_journal_of};
+use super::point::PointScene;
+use super::spec::{Sweep, point_journal, point_journal_of};
 use crate::error::Error;
 use crate::job::{Outcome, Watch};
 use crate::run::{self, Journaled};

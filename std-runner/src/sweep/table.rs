@@ -4,7 +4,7 @@
 
 use super::point::{PointResult, Window};
 use super::vary::{Combine, Vary};
-use crate::reference::curves::Kind;
+use gdsmc_theory::curves::Kind;
 use serde_json::{Value, json};
 
 /// The names of `items` of every point, in the order first met.

@@ -5,8 +5,8 @@
 //! time when the engine is right; a point outside is named.
 
 use super::point::PointResult;
-use crate::reference::curves::Kind;
 use gdsmc_stats::level::{dof, family};
+use gdsmc_theory::curves::Kind;
 
 /// One observable's joint check over the points.
 #[derive(Clone, Debug, PartialEq)]

@@ -3,9 +3,9 @@
 
 use super::frame::Chart;
 use super::profile::{Series, Style, profile};
-use crate::reference::exact::tail;
 use crate::run::RunStats;
 use crate::run::columns::name;
+use gdsmc_theory::exact::tail;
 use plotters::prelude::*;
 
 /// The distribution charts a run has, `(file stem, chart)`: histogram (speed density, log

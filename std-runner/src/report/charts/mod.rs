@@ -20,8 +20,8 @@ pub use tail::tail;
 
 use crate::error::Error;
 use crate::files::write_atomic;
-use crate::reference::curves::ReferenceCurve;
 use crate::run::RunStats;
+use gdsmc_theory::curves::ReferenceCurve;
 use std::path::Path;
 
 /// Every chart of a run, `(file stem, chart)`: one per observable, the tail plot when there is

@@ -8,11 +8,11 @@ use super::frame::{
     BAND_ALPHA, Chart, Entry, Frame, Geometry, LINE_WIDTH, Layer, Swatch, plot_rect,
 };
 use super::geometry::{MIN_BAND_PX, fit_label};
-use crate::reference::curves::{Kind, ReferenceCurve};
 use crate::run::RunStats;
 use crate::run::columns::name::S;
 use crate::run::columns::{COLLISIONS_LABEL, TIME_LABEL, axis_label_in};
 use crate::scene::TimeAxis;
+use gdsmc_theory::curves::{Kind, ReferenceCurve};
 use plotters::prelude::*;
 
 /// Colours and dashes of the reference curves, in order: each dash its own, each colour's

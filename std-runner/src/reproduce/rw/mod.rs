@@ -6,11 +6,11 @@ use super::cells::Cell;
 use super::judged::{MaxLaw, OurLargest, PaperNoise, max_error_exact};
 use super::{Entry, Options, Row, Table, ensembles, go, largest, relative, scene};
 use crate::Error;
-use crate::reference::curves::maxwell_temperature;
-use crate::reference::exact::MaxwellTemperature;
 use crate::run::columns::name;
 use crate::scene::Scene;
 use gdsmc_stats::LAMBDA_999;
+use gdsmc_theory::curves::maxwell_temperature;
+use gdsmc_theory::exact::MaxwellTemperature;
 
 /// RW's ensembles in Tables 1 and 2: "Unless indicated otherwise, the results are averaged over
 /// N = 10 000 independent ensembles" (RW Section 4.1).
@@ -21,11 +21,6 @@ const PAPER_ENSEMBLES: u64 = 10_000;
 /// confidence interval" (Section 4.2): a width, so the half-width is Conf / 2. RW refer to
 /// [RW05, Section 3.1.4] for the interval, the 3.2-sigma interval of GRW (25) (`LAMBDA_999`).
 const CONF_IS_A_WIDTH: &str = "RW's Conf is \"the width of the confidence interval\": half of it";
-
-/// How RW's steady-state figures are judged: with the scatter of the estimator itself.
-const ESTIMATOR_SCATTER: &str = "the estimator's own scatter: our half-width of the same \
-    estimator (one ensemble, the same n, scheme and points); RW's Conf, read as RW define it, \
-    is about half of it (the Conf cells)";
 
 /// RW Table 1.
 pub const TABLE1: Entry = Entry {
@@ -39,34 +34,6 @@ pub const TABLE2: Entry = Entry {
     name: "rw-table2",
     title: "RW Table 2: Euler and Strang splitting at n = 4096, E_max for K = 4 ... 32",
     run: table2,
-};
-
-/// RW Table 3.
-pub const TABLE3: Entry = Entry {
-    name: "rw-table3",
-    title: "RW Table 3: Euler splitting, steady temperature at n = 65536",
-    run: table3,
-};
-
-/// RW Table 4.
-pub const TABLE4: Entry = Entry {
-    name: "rw-table4",
-    title: "RW Table 4: Strang splitting, steady temperature at n = 65536",
-    run: table4,
-};
-
-/// RW Table 5.
-pub const TABLE5: Entry = Entry {
-    name: "rw-table5",
-    title: "RW Table 5: no-splitting scheme, steady temperature at n = 65536",
-    run: table5,
-};
-
-/// RW Table 6.
-pub const TABLE6: Entry = Entry {
-    name: "rw-table6",
-    title: "RW Table 6: example (30) (beta = 37.5, T_inf = 100), the three schemes at K = 32",
-    run: table6,
 };
 
 fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
@@ -285,4 +252,4 @@ fn exact_split(
 
 mod steady;
 
-use steady::{table3, table4, table5, table6};
+pub use steady::{TABLE3, TABLE4, TABLE5, TABLE6};

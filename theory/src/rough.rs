@@ -232,7 +232,7 @@ impl RoughTrajectory {
     /// `(T_tr, T_rot)` at `t`.
     pub fn at(&self, t: f64) -> (f64, f64) {
         let x = if self.scale_free { libm::log1p(t) } else { t };
-        let (i, f) = crate::reference::hydro::bracket(&self.points, |q| q.0, x);
+        let (i, f) = crate::hydro::bracket(&self.points, |q| q.0, x);
         let (a, b) = (&self.points[i - 1], &self.points[i]);
         let (p, q) = (a.1 + f * (b.1 - a.1), a.2 + f * (b.2 - a.2));
         if self.scale_free {

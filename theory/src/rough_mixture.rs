@@ -163,8 +163,8 @@ impl RoughMixtureApproximation {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::mixture::MaxwellianApproximation;
-    use crate::reference::rough::RoughApproximation;
+    use crate::mixture::MaxwellianApproximation;
+    use crate::rough::RoughApproximation;
     use gdsmc_core::geometry::{Disks, Geometry, Spheres};
     use gdsmc_core::mixture::PairLaw;
     use gdsmc_core::rng::seeded;

@@ -8,8 +8,8 @@
 
 pub use super::holds::{Drives, Holds, Particles};
 use super::{Kind, ReferenceCurve, cooling, mixture, rough, single, sonine};
-use crate::scene::Scene;
 use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind, SchemeKind as S};
+use gdsmc_scene::Scene;
 
 /// One reference: its declaration and the builder of its curves.
 pub struct Reference {

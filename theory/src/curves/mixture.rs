@@ -3,8 +3,8 @@
 //! smooth and the rough mixture.
 
 use super::{Kind, ReferenceCurve};
-use crate::reference::mixture::MaxwellMixture;
-use crate::scene::{DriveChoice, DriveKind, Scene, SchemeChoice};
+use crate::mixture::MaxwellMixture;
+use gdsmc_scene::{DriveChoice, DriveKind, Scene, SchemeChoice};
 use std::sync::Arc;
 
 /// Per species `k`: the exact finite-n mean of `T_sk` (Maxwell kernel, no drive), the
@@ -20,7 +20,7 @@ const SPECIES_REFERENCES: [[&str; 3]; gdsmc_core::mixture::MAX_SPECIES] = [
 /// The Maxwellian approximation of a mixture scene: its mole fractions, masses, the kernel
 /// strength `kappa_st = 4 pi gamma C ((d_s + d_t)/2)^2` and the restitution of every pair
 /// type, the kernel exponent, and each species' white noise.
-fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianApproximation> {
+fn approximation(scene: &Scene) -> Option<crate::mixture::MaxwellianApproximation> {
     let ph = &scene.physics();
     // Garzó and Dufty's approximation and the exact moments are those of smooth spheres: a
     // rough mixture or a mixture of disks has none of them (yet).
@@ -38,11 +38,9 @@ fn approximation(scene: &Scene) -> Option<crate::reference::mixture::MaxwellianA
     }
     let (_, lambda) = ph.kernel.rate_constants();
     let sp = scene.model().species()?;
-    let (kappa, alpha) = crate::run::cooling::pair_kernels(ph, sp)?
-        .into_iter()
-        .unzip();
+    let (kappa, alpha) = crate::pairs::pair_kernels(ph, sp)?.into_iter().unzip();
     let heated = matches!(ph.drive, DriveChoice::WhiteNoise(_));
-    Some(crate::reference::mixture::MaxwellianApproximation {
+    Some(crate::mixture::MaxwellianApproximation {
         fractions: (0..sp.len()).map(|s| sp.fraction(s)).collect(),
         masses: ph.species.iter().map(|s| s.mass).collect(),
         kappa,
@@ -66,7 +64,7 @@ const ROUGH_SPECIES_REFERENCES: [&str; gdsmc_core::mixture::MAX_SPECIES] =
 /// partners' kappa) and cross section, the kernel, each species' white noise.
 pub fn rough_mixture_approximation(
     scene: &Scene,
-) -> Option<crate::reference::rough_mixture::RoughMixtureApproximation> {
+) -> Option<crate::rough_mixture::RoughMixtureApproximation> {
     // The thermostat on translation alone moves the cooling state's theta, and a host medium
     // or the constant force every temperature: the approximation (noise and collisions) follows neither, so it
     // draws nothing there.
@@ -97,7 +95,7 @@ pub fn rough_mixture_approximation(
             .map(|s| noises.map_or(0.0, |n| f(&n[s], s)))
             .collect()
     };
-    Some(crate::reference::rough_mixture::RoughMixtureApproximation {
+    Some(crate::rough_mixture::RoughMixtureApproximation {
         d: scene.dimension(),
         fractions: (0..ns).map(|s| sp.fraction(s)).collect(),
         heating: heat(&|n, s| masses[s] * n.heating_tr()),
@@ -123,8 +121,8 @@ pub(super) fn rough_mixture_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     let src =
         "Maxwellian approximation of the cooling (or steady) state (Santos, Kremer and Garzó 2010)";
     let (cols, rough) = (
-        crate::run::columns::SPECIES_COLUMNS,
-        crate::run::columns::ROUGH_SPECIES_COLUMNS,
+        crate::columns::SPECIES_COLUMNS,
+        crate::columns::ROUGH_SPECIES_COLUMNS,
     );
     let Some((ratios, theta)) = ma.steady() else {
         eprintln!("{src}: not converged");
@@ -161,7 +159,7 @@ pub(super) fn garzo_dufty_curves(scene: &Scene) -> Vec<ReferenceCurve> {
         eprintln!("Garzó and Dufty's Maxwellian approximation: not converged");
         return Vec::new();
     };
-    let cols = crate::run::columns::SPECIES_COLUMNS;
+    let cols = crate::columns::SPECIES_COLUMNS;
     (0..scene.physics().species.len())
         .map(|s| {
             let r = approx[s];
@@ -210,7 +208,7 @@ pub(super) fn maxwell_mixture_means(scene: &Scene) -> Vec<ReferenceCurve> {
         Some((dt, strang)) => e.splitting_temperatures_at(t, dt, strang),
         None => e.temperatures_at(t, false),
     };
-    let cols = crate::run::columns::SPECIES_COLUMNS;
+    let cols = crate::columns::SPECIES_COLUMNS;
     let source = "exact ensemble mean at this n (closed second moments of the Maxwell mixture)";
     let mut out: Vec<ReferenceCurve> = (0..scene.physics().species.len())
         .map(|s| {
@@ -226,7 +224,7 @@ pub(super) fn maxwell_mixture_means(scene: &Scene) -> Vec<ReferenceCurve> {
         .collect();
     out.push(ReferenceCurve {
         name: "T_mix_mean_n",
-        of: crate::run::columns::MIXTURE_TEMPERATURE,
+        of: crate::columns::MIXTURE_TEMPERATURE,
         source,
         kind: Kind::MeanAtN,
         curve: Box::new(move |t| {
@@ -242,7 +240,7 @@ pub(super) fn maxwell_mixture_limits(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some((exact, fractions)) = maxwell_mixture(scene) else {
         return Vec::new();
     };
-    let cols = crate::run::columns::SPECIES_COLUMNS;
+    let cols = crate::columns::SPECIES_COLUMNS;
     (0..scene.physics().species.len())
         .map(|s| {
             let (e, x) = (exact.clone(), fractions.clone());

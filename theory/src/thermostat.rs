@@ -5,7 +5,7 @@
 //! point and `T` grows or decays exponentially).
 //!
 //! The cooling rate is a Maxwellian gas's, `dT/dt = -kappa T^(1 + lambda/2)`
-//! ([`crate::reference::balance::cooling_constant`], in `d = 2` and 3): `kappa = pi gamma C
+//! ([`crate::balance::cooling_constant`], in `d = 2` and 3): `kappa = pi gamma C
 //! (1 - alpha^2)` for Maxwell molecules (GRW (13)'s rate) and `9.45 gamma C (1 - alpha^2)` for
 //! hard spheres. The non-Gaussian correction (for hard particles `1 + 3 a2 / 16`, a fraction of
 //! a percent at MS's `a2`) is left out: the figures are estimates for choosing `zeta`, not
@@ -13,8 +13,8 @@
 //! none in any dimension: its exact `T` is GRW (13) times `e^{2 zeta t}`
 //! (`curves::maxwell_temperature`).
 
-use crate::reference::balance::cooling_constant;
-use crate::scene::{DriveKind, KernelKind, RestitutionLaw, Scene};
+use crate::balance::cooling_constant;
+use gdsmc_scene::{DriveKind, KernelKind, RestitutionLaw, Scene};
 
 /// The Gaussian thermostat of a scene against the collisional cooling of its kernel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,7 +39,7 @@ impl GaussianBalance {
         if !scene.translation_is_smooth() {
             return None;
         }
-        let t0 = crate::run::initial_temperature(scene);
+        let t0 = crate::initial::initial_temperature(scene);
         let zeta = scene
             .physics()
             .drive
@@ -109,7 +109,7 @@ mod tests {
         let text = format!(
             "name = \"t\"\n[particles]\nn = 64\n[collisions]\nkernel = \"{kernel}\"\ngamma = 1.0\nc = 0.07957747154594767\nrestitution = {alpha}\n[drive]\nkind = \"gaussian\"\nzeta = {zeta}\n[observe]\nt_end = 1.0\nintervals = 1\n"
         );
-        crate::scene::parse(std::path::Path::new("t.toml"), &text).expect("valid scene")
+        gdsmc_scene::parse(std::path::Path::new("t.toml"), &text).expect("valid scene")
     }
 
     #[test]

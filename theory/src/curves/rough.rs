@@ -2,12 +2,12 @@
 //! rotational temperatures.
 
 use super::{Kind, ReferenceCurve};
-use crate::run::columns::name;
-use crate::run::initial_temperature;
-use crate::scene::Scene;
+use crate::columns::name;
+use crate::initial::initial_temperature;
+use gdsmc_scene::Scene;
 
 /// The Maxwellian approximation of a rough gas (`reference/rough.rs`), when the scene is one.
-pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::RoughApproximation> {
+pub fn rough_approximation(scene: &Scene) -> Option<crate::rough::RoughApproximation> {
     let r = scene.physics().rotation?;
     let alpha = scene.physics().restitution.constant()?;
     let (strength, lambda) = scene.physics().kernel.rate_constants();
@@ -19,7 +19,7 @@ pub fn rough_approximation(scene: &Scene) -> Option<crate::reference::rough::Rou
     // `2 zeta T`, a Langevin bath both.
     let h = scene.model().heating()?;
     let (beta, zeta) = (h.a / 2.0, h.b / 2.0);
-    let mut ma = crate::reference::rough::RoughApproximation::in_dimension(
+    let mut ma = crate::rough::RoughApproximation::in_dimension(
         scene.dimension(),
         alpha,
         r.beta,
@@ -40,7 +40,7 @@ pub(super) fn rough_curves(scene: &Scene) -> Vec<ReferenceCurve> {
     };
     let t_end = scene.times().last().copied().unwrap_or(1.0);
     let src = "Maxwellian approximation (Huthmann and Zippelius 1997)";
-    match crate::reference::rough::RoughTrajectory::new(
+    match crate::rough::RoughTrajectory::new(
         &ma,
         [initial_temperature(scene), r.temperature],
         t_end,

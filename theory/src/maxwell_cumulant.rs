@@ -353,7 +353,7 @@ mod tests {
     /// steady state) are refused.
     #[test]
     fn the_heated_solution_solves_its_moment_equations() {
-        use crate::reference::maxwell_temperature::MaxwellTemperature;
+        use crate::maxwell_temperature::MaxwellTemperature;
         let (gamma, c0, alpha) = (4.0, 1.0 / (4.0 * std::f64::consts::PI), 0.5);
         let kk = 2.0 * std::f64::consts::PI * gamma * c0;
         for d in [2usize, 3] {

@@ -23,7 +23,7 @@
 //! not Maxwellian (`a2 != 0`), and a gas started from a Maxwellian reaches its state's `a2`
 //! only after some collisions per particle.
 
-use crate::reference::ode;
+use crate::ode;
 use gdsmc_core::drive::Heating;
 use statrs::function::gamma::gamma;
 use std::f64::consts::PI;
@@ -159,7 +159,7 @@ impl Trajectory {
             }
             Trajectory::Points(p) => {
                 let s = libm::log1p(t);
-                let (i, f) = crate::reference::hydro::bracket(p, |q| q.0, s);
+                let (i, f) = crate::hydro::bracket(p, |q| q.0, s);
                 libm::exp(p[i - 1].1 + f * (p[i].1 - p[i - 1].1))
             }
         }

@@ -5,9 +5,9 @@
 use super::{
     Kind, ReferenceCurve, host_medium_maxwell, hydro_models, maxwell_cumulant, maxwell_temperature,
 };
-use crate::run::columns::name;
-use crate::run::initial_sampler;
-use crate::scene::{Scene, SchemeChoice};
+use crate::columns::name;
+use crate::initial::initial_sampler;
+use gdsmc_scene::{Scene, SchemeChoice};
 use std::sync::Arc;
 
 /// The Boltzmann limit of the Maxwell gas's `a2(t)` (`a2_exact`).
@@ -39,12 +39,7 @@ pub(super) fn brs_hydro(scene: &Scene) -> Vec<ReferenceCurve> {
         ),
         ("T_bulk_hydro22", "V_y_hydro22", "BRS (22), Grad"),
     ]) {
-        match crate::reference::hydro::Trajectory::new(
-            model,
-            f0.mean().to_array(),
-            f0.temperature(),
-            t_end,
-        ) {
+        match crate::hydro::Trajectory::new(model, f0.mean().to_array(), f0.temperature(), t_end) {
             Ok(tr) => {
                 let tr = Arc::new(tr);
                 let tr2 = tr.clone();

@@ -13,7 +13,7 @@
 //!   Sonine correction moves it by `O(a2)`): shown, not judged.
 
 use super::{Kind, ReferenceCurve};
-use crate::scene::Scene;
+use gdsmc_scene::Scene;
 
 /// The constant curve `value` of `zeta_star`.
 fn constant(name: &'static str, source: &'static str, kind: Kind, value: f64) -> ReferenceCurve {
@@ -64,7 +64,7 @@ pub(super) fn hard_maxwellian(scene: &Scene) -> Vec<ReferenceCurve> {
 
 #[cfg(test)]
 mod tests {
-    use crate::reference::balance::{collision_rate, cooling_constant};
+    use crate::balance::{collision_rate, cooling_constant};
 
     /// The energy balance's Maxwellian cooling constant (reference/balance.rs, derived there
     /// from the scattering of GRW (3)) over its Maxwellian collision rate is the `zeta*` these

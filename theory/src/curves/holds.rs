@@ -1,8 +1,8 @@
 //! What physics a reference holds for ([`Holds`]): the particles and each axis' values, as
 //! [`super::registry`] declares them.
 
-use crate::scene::Scene;
 use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind};
+use gdsmc_scene::Scene;
 
 /// Which particles a reference holds for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

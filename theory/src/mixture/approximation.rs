@@ -78,7 +78,7 @@ impl MaxwellianApproximation {
                 .sum()
         };
         let heating: Vec<f64> = self.beta.iter().map(|b| 2.0 * b).collect();
-        crate::reference::steady::relax(
+        crate::steady::relax(
             self.masses.iter().map(|m| 1.0 / m).collect(),
             |theta| self.rates(theta),
             &heating,

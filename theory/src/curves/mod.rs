@@ -2,9 +2,9 @@
 //! declared once in [`registry`] with the physics it holds for; here the curve type and the
 //! exact solutions' parameters read from a scene.
 
-use crate::reference::exact::{HostMediumMaxwell, MaxwellTemperature};
-use crate::run::{initial_sampler, initial_temperature};
-use crate::scene::{BackgroundKernel, DriveChoice, KernelKind, Scene, SchemeChoice};
+use crate::exact::{HostMediumMaxwell, MaxwellTemperature};
+use crate::initial::{initial_sampler, initial_temperature};
+use gdsmc_scene::{BackgroundKernel, DriveChoice, KernelKind, Scene, SchemeChoice};
 
 mod cooling;
 pub mod holds;
@@ -106,14 +106,14 @@ pub fn host_medium_maxwell(scene: &Scene) -> Option<HostMediumMaxwell> {
 }
 
 /// The BRS (21), (22) closure models of a hard-sphere gas in a hard-sphere host medium.
-pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroModel; 2]> {
+pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
     if !scene.physics().species.is_empty() || !scene.translation_is_smooth() {
         return None; // a one-species solution
     }
     if scene.dimension() != 3 {
         return None; // BRS (21)-(22)'s coefficients are the spheres' integrals
     }
-    use crate::reference::hydro::{Closure, HydroModel};
+    use crate::hydro::{Closure, HydroModel};
     let k = scene.physics().kernel;
     if k.kind() != KernelKind::HardSpheres {
         return None;
@@ -148,10 +148,8 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::reference::hydro::HydroMode
 /// noise, the Gaussian thermostat (which leaves it as cooling has it) and the Langevin
 /// thermostat, when the scene is one; not for MS's time-stepped scheme, whose collisions are
 /// not the Maxwell process's.
-pub fn maxwell_cumulant(
-    scene: &Scene,
-) -> Option<crate::reference::maxwell_cumulant::MaxwellCumulant> {
-    use crate::reference::maxwell_cumulant::{MaxwellCumulant, moment_ratio};
+pub fn maxwell_cumulant(scene: &Scene) -> Option<crate::maxwell_cumulant::MaxwellCumulant> {
+    use crate::maxwell_cumulant::{MaxwellCumulant, moment_ratio};
     let (alpha, gamma, c) = smooth_maxwell(scene)?;
     if matches!(scene.physics().scheme, SchemeChoice::TimeStepped(_)) {
         return None;

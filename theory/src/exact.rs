@@ -1,7 +1,7 @@
 //! Exact reference solutions, each with its paper and equation.
 
-pub use crate::reference::maxwell_temperature::MaxwellTemperature;
-use crate::reference::mutation::{Reference, mutated};
+pub use crate::maxwell_temperature::MaxwellTemperature;
+use crate::mutation::{Reference, mutated};
 
 /// BRS (14)-(17): the exact bulk velocity and temperature of a Maxwell-kernel granular gas in
 /// a Maxwellian host medium (`B_1 = C_1`, `B_2 = C_2`, constant restitution `e`, unit grain mass,
@@ -203,7 +203,7 @@ pub mod sonine {
     /// `mu_2^(0) = pi^{(d-1)/2} / (sqrt(2) Gamma(d/2)) (1 - alpha^2) = sqrt(2 pi)(1 - alpha^2)`,
     /// MS (27).
     pub fn mu2_maxwellian(a: f64) -> f64 {
-        use crate::reference::mutation::{Reference, mutated};
+        use crate::mutation::{Reference, mutated};
         mutated(
             Reference::MaxwellianMoments,
             (2.0 * std::f64::consts::PI).sqrt() * (1.0 - a * a),

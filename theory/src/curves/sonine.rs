@@ -5,11 +5,11 @@
 //! builder of [`super::registry`], called where its declaration holds.
 
 use super::{Kind, ReferenceCurve};
-use crate::reference::balance::{EnergyBalance, cooling_constant, sonine_factor};
-use crate::reference::exact::sonine;
-use crate::run::columns::name;
-use crate::run::initial_temperature;
-use crate::scene::{DriveKind, KernelKind, Scene};
+use crate::balance::{EnergyBalance, cooling_constant, sonine_factor};
+use crate::columns::name;
+use crate::exact::sonine;
+use crate::initial::initial_temperature;
+use gdsmc_scene::{DriveKind, KernelKind, Scene};
 use std::sync::Arc;
 
 /// The first-Sonine `a2` of a hard-particle gas's steady state under its drive, with the

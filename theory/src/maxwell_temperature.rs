@@ -1,7 +1,7 @@
 //! GRW (13)-(14): the Maxwell gas's exact temperature under every drive that heats it linearly,
 //! and its exact means at finite n (no splitting, Euler and Strang splitting).
 
-use crate::reference::mutation::{Reference, mutated};
+use crate::mutation::{Reference, mutated};
 use gdsmc_core::drive::Heating;
 
 /// GRW (13)-(14) / RW (24)-(25): the temperature of the heated Maxwell gas, `B = gamma C_0`,

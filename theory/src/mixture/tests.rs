@@ -46,7 +46,7 @@ fn one_species_is_the_closed_form() {
 fn one_species_splitting_is_the_closed_form() {
     let (n, alpha, kappa, beta) = (20usize, 0.5, 2.0, 0.7);
     let mix = one_species(n, alpha, kappa, beta);
-    let mt = crate::reference::exact::MaxwellTemperature::new(
+    let mt = crate::exact::MaxwellTemperature::new(
         1.5,
         alpha,
         beta,
