@@ -56,7 +56,7 @@ fn the_maxwell_gas_loses_one_minus_alpha_squared_over_four_per_collision_in_ever
         // Power: the n -> infinity value (5% lower at n = 20) would be refused.
         let limit = exact * (n - 1.0) / n;
         assert!(times_outside(&st, "zeta_star", f, |_| limit) > 0, "{dim}");
-        let (gc, _) = s.physics().kernel.rate_constants();
+        let gc = s.physics().kernel.strength();
         let nu = (n - 1.0) / n * 4.0 * std::f64::consts::PI * gc;
         for ti in 0..st.times.len() {
             let (m, _) = at(&st, ti, "nu");
@@ -177,7 +177,7 @@ fn the_impact_speed_law_cools_a_maxwellian_at_its_exact_rate() {
         "observe.first=0.5",
     ];
     let s = shipped_set("hcs-hard-spheres", &all, n, 16, 760);
-    let (gc, lambda) = s.physics().kernel.rate_constants();
+    let (gc, lambda) = s.physics().kernel.power_law().expect("a power-law kernel");
     let exact = InitialCooling {
         n,
         d: 3,

@@ -95,7 +95,7 @@ fn collisions_per_particle_have_the_maxwell_rate() {
     let s = shipped("grw-example3", n, 4_000, 103);
     let st = run(&s);
     let last = st.times.len() - 1;
-    let (gc, lambda) = s.physics().kernel.rate_constants();
+    let (gc, lambda) = s.physics().kernel.power_law().expect("a power-law kernel");
     let t = st.times[last];
     let exact = collision_rate(3, gc, lambda, 1.0) * (n - 1) as f64 / n as f64 * t;
     let (mean, ci) = at(&st, last, name::S);

@@ -147,14 +147,13 @@ impl Trajectory {
         match self {
             Trajectory::Linear(e) => e.heating.evolve(e.t0, e.heating.b - e.kappa, t),
             Trajectory::Closed(e) => {
-                // u = T^(1 - q): u' = (1 - q)(b u - kappa).
+                // u = T^(1 - q): u' = r kappa - r b u (r = q - 1), so
+                // u = u0 e^(-r b t) + r kappa (1 - e^(-r b t))/(r b), the second term through
+                // `Heating::growth`: never `kappa/b` minus itself (at b = 2e-300, a Gaussian
+                // thermostat's zeta = 1e-300, that cancelled to u = 0 and T = inf).
                 let (b, k, r) = (e.heating.b, e.kappa, e.q - 1.0);
                 let u0 = libm::pow(e.t0, -r);
-                let u = if b == 0.0 {
-                    u0 + r * k * t
-                } else {
-                    k / b + (u0 - k / b) * libm::exp(-r * b * t)
-                };
+                let u = u0 * libm::exp(-r * b * t) + r * k * Heating::growth(-r * b, t);
                 libm::pow(u, -1.0 / r)
             }
             Trajectory::Points(p) => {
@@ -176,6 +175,40 @@ mod tests {
             kappa,
             q,
             heating: Heating { a, b, p: 0.0 },
+        }
+    }
+
+    /// Without constant heating the closed form is the balance integrated numerically, at a
+    /// heating rate of either sign, at none, and at `b = 2e-300` (a Gaussian thermostat's
+    /// `zeta = 1e-300`), where the old form `kappa/b + (u0 - kappa/b) e^(-r b t)` cancelled to
+    /// `T = inf`; there it is Haff's law (`b = 0`) to rounding. Tolerance: the integrator's
+    /// (1e-10 relative per step) over a few hundred steps, so 1e-7.
+    #[test]
+    fn the_closed_form_is_the_integrated_balance_at_every_rate() {
+        for b in [0.3, -0.2, 0.0, 2e-300] {
+            let e = cooling(0.7, 1.5, 0.0, b);
+            let Ok(Trajectory::Closed(_)) = e.solve(10.0) else {
+                panic!("no constant heating: the closed form");
+            };
+            let closed = e.solve(10.0).unwrap();
+            let f = |_: f64, y: &[f64; 1]| [b * y[0] - 0.7 * libm::pow(y[0], 1.5)];
+            let points = ode::solve(f, 0.0, 10.0, [1.0], ode::TOLERANCES, 20).unwrap();
+            for (t, y) in points {
+                let got = closed.at(t);
+                assert!(
+                    (got - y[0]).abs() <= 1e-7 * y[0],
+                    "b = {b}, t = {t}: {got} vs {}",
+                    y[0]
+                );
+            }
+        }
+        let tiny = cooling(0.7, 1.5, 0.0, 2e-300).solve(10.0).unwrap();
+        let haff = cooling(0.7, 1.5, 0.0, 0.0).solve(10.0).unwrap();
+        for t in [0.0, 1.0, 10.0] {
+            assert!(
+                (tiny.at(t) - haff.at(t)).abs() <= 1e-15 * haff.at(t),
+                "t = {t}"
+            );
         }
     }
 

@@ -11,7 +11,7 @@ use gdsmc_scene::Physics;
 /// gdsmc turns the scene's diameters and coefficients into pair kernels (the references and
 /// the cooling-rate estimate use it). `None` when a coefficient is not constant.
 pub fn pair_kernels(ph: &Physics, species: &Species) -> Option<Vec<(f64, f64)>> {
-    let (strength, _) = ph.kernel.rate_constants();
+    let strength = ph.kernel.strength();
     (0..species.pair_types())
         .map(|k| {
             let (s, t) = species.pair(k);

@@ -14,7 +14,7 @@
 //! (`curves::maxwell_temperature`).
 
 use crate::balance::cooling_constant;
-use gdsmc_scene::{DriveKind, KernelKind, RestitutionLaw, Scene};
+use gdsmc_scene::{DriveKind, RestitutionLaw, Scene};
 
 /// The Gaussian thermostat of a scene against the collisional cooling of its kernel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -48,8 +48,8 @@ impl GaussianBalance {
         let RestitutionLaw::Constant(alpha) = scene.physics().restitution else {
             return None;
         };
-        let (gc, lambda) = scene.physics().kernel.rate_constants();
-        let hard = scene.physics().kernel.kind() == KernelKind::HardSpheres;
+        let (gc, lambda) = scene.physics().kernel.power_law()?;
+        let hard = scene.physics().kernel.kind().hard();
         let kappa = cooling_constant(scene.dimension(), hard, gc, lambda, alpha);
         (kappa > 0.0 && t0 > 0.0).then_some(GaussianBalance {
             zeta,

@@ -26,8 +26,10 @@ pub trait Declared: Kernel + PartialEq + 'static {
     /// value makes it overflow.
     fn from_values(gamma: Real, c: Real, values: &[Real]) -> Result<Self, KernelError>;
 
-    /// The exponent `lambda` of `|u|^lambda` these values give ([`Kernel::lambda`] of the
-    /// kernel they build): what the references (Haff's law, GRW (13)) and a run's estimate
-    /// read before a kernel is built.
-    fn exponent(values: &[Real]) -> Real;
+    /// The exponent `lambda` of these values' kernel when it is the power law
+    /// `B = gamma C |u|^lambda` at every speed (GRW (5)); `None` for a kernel that is not one (a
+    /// capped or tabulated kernel). What the references read before a kernel is built: every
+    /// power-law result (Haff's law, the Sonine and Maxwellian approximations, GRW (16)) holds
+    /// only where this is `Some`, and nothing pretends an exponent for a kernel without one.
+    fn exponent(values: &[Real]) -> Option<Real>;
 }

@@ -62,7 +62,7 @@ impl Declared for HardSpheres {
     fn from_values(gamma: Real, c: Real, _values: &[Real]) -> Result<Self, KernelError> {
         HardSpheres::new(gamma, c)
     }
-    fn exponent(_values: &[Real]) -> Real {
-        1.0
+    fn exponent(_values: &[Real]) -> Option<Real> {
+        Some(1.0)
     }
 }

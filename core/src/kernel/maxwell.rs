@@ -50,7 +50,7 @@ impl Declared for Maxwell {
     fn from_values(gamma: Real, c: Real, _values: &[Real]) -> Result<Self, KernelError> {
         Maxwell::new(gamma, c)
     }
-    fn exponent(_values: &[Real]) -> Real {
-        0.0
+    fn exponent(_values: &[Real]) -> Option<Real> {
+        Some(0.0)
     }
 }

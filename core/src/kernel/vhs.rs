@@ -81,7 +81,7 @@ impl Declared for Vhs {
     fn from_values(gamma: Real, c: Real, values: &[Real]) -> Result<Self, KernelError> {
         Vhs::new(gamma, c, values[0])
     }
-    fn exponent(values: &[Real]) -> Real {
-        values[0]
+    fn exponent(values: &[Real]) -> Option<Real> {
+        Some(values[0])
     }
 }

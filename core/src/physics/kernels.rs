@@ -116,11 +116,25 @@ impl KernelChoice {
         declared::named(self.specs(), self.values(), name)
     }
 
-    /// `(gamma C, lambda)` of the kernel `B = gamma C |u|^lambda` (GRW (1), (2), (4), (5)):
-    /// its rate constant and its exponent (0 for Maxwell molecules, 1 for hard spheres).
+    /// `gamma C`: the kernel's strength (GRW (1), (2), (4), (5)).
     #[must_use]
-    pub fn rate_constants(&self) -> (Real, Real) {
-        (self.gamma * self.c, self.kind.exponent(self.values()))
+    pub fn strength(&self) -> Real {
+        self.gamma * self.c
+    }
+
+    /// The exponent `lambda` when the kernel is the power law `B = gamma C |u|^lambda` (0 for
+    /// Maxwell molecules, 1 for hard spheres, the VHS kernel's own); `None` for a kernel that
+    /// is not a power law ([`crate::kernel::Declared::exponent`]).
+    #[must_use]
+    pub fn exponent(&self) -> Option<Real> {
+        self.kind.exponent(self.values())
+    }
+
+    /// `(gamma C, lambda)` of a power-law kernel `B = gamma C |u|^lambda`: what every
+    /// power-law result reads; `None` for a kernel that is not one.
+    #[must_use]
+    pub fn power_law(&self) -> Option<(Real, Real)> {
+        Some((self.strength(), self.exponent()?))
     }
 }
 

@@ -109,9 +109,10 @@ macro_rules! kernel_kind {
                 }
             }
 
-            /// The exponent `lambda` of `|u|^lambda` these values of its parameters give.
+            /// The exponent `lambda` of `|u|^lambda` these values of its parameters give, when
+            /// the kernel is that power law (`None` for one that is not).
             #[must_use]
-            pub fn exponent(self, values: &[Real]) -> Real {
+            pub fn exponent(self, values: &[Real]) -> Option<Real> {
                 match self {
                     $(KernelKind::$v => <$t as DeclaredKernel>::exponent(values),)*
                 }
@@ -272,8 +273,9 @@ mod tests {
         }
     }
 
-    /// Checks each kernel of the table: the exponent its declaration states for its example
-    /// values is the one the kernel built from them has (`Kernel::lambda`).
+    /// Checks each kernel of the table: where its declaration states a power law for its
+    /// example values, the kernel built from them is that law (`Kernel::lambda`, and
+    /// `Kernel::pair_rate` growing as the power).
     macro_rules! exponents_agree {
         ($($v:ident($code:literal, $scene:literal, $t:ty, $feature:literal, $doc:literal)),* $(,)?) => {
             $({
@@ -281,12 +283,17 @@ mod tests {
                     crate::declared::examples(<$t as DeclaredKernel>::PARAMS);
                 let k = <$t as DeclaredKernel>::from_values(1.0, 0.1, &values)
                     .expect("the example values build the kernel");
-                assert_eq!(
-                    crate::kernel::Kernel::lambda(&k),
-                    <$t as DeclaredKernel>::exponent(&values),
-                    "{}",
-                    stringify!($v)
-                );
+                // A declared power law is the built kernel's: its exponent, and its pair rate
+                // growing as that power of the speed.
+                if let Some(l) = <$t as DeclaredKernel>::exponent(&values) {
+                    assert_eq!(crate::kernel::Kernel::lambda(&k), l, "{}", stringify!($v));
+                    for u in [0.5, 2.0, 7.0] {
+                        let ratio = crate::kernel::Kernel::pair_rate(&k, u)
+                            / crate::kernel::Kernel::pair_rate(&k, 1.0);
+                        let want = libm::pow(u, l);
+                        assert!((ratio - want).abs() <= 1e-12 * want, "{}", stringify!($v));
+                    }
+                }
             })*
         };
     }

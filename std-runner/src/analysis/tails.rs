@@ -23,10 +23,10 @@ pub struct TailFit {
 }
 
 /// GRW (16)'s asymptotic tail exponent of the heated gas, `1 + lambda/2`, for the scene's
-/// kernel.
-pub fn reference_exponent(scene: &crate::scene::Scene) -> f64 {
-    let (_, lambda) = scene.physics().kernel.rate_constants();
-    1.0 + lambda / 2.0
+/// kernel; `None` for a kernel that is not a power law (GRW (16) is of `|u|^lambda`).
+pub fn reference_exponent(scene: &crate::scene::Scene) -> Option<f64> {
+    let lambda = scene.physics().kernel.exponent()?;
+    Some(1.0 + lambda / 2.0)
 }
 
 /// The points `(k, x_k, y_k)` of GRW Section 4.3 (k0 = 1, shells k = 2..K, 1-based as GRW),

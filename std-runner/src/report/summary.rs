@@ -139,11 +139,15 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             Some(f) => {
                 let _ = writeln!(
                     s,
-                    "\ntail (GRW Section 4.3, k0 = 1, {} shells): exponent {:.3} +- {:.3}; GRW (16), the asymptote of the heated gas: 1 + lambda/2 = {} (the interval is the fit's; whether the shells reach the asymptote is checked below)",
+                    "\ntail (GRW Section 4.3, k0 = 1, {} shells): exponent {:.3} +- {:.3}; {} (the interval is the fit's; whether the shells reach the asymptote is checked below)",
                     f.points.len(),
                     f.slope,
                     f.slope_ci,
-                    crate::analysis::tails::reference_exponent(scene)
+                    match crate::analysis::tails::reference_exponent(scene) {
+                        Some(e) =>
+                            format!("GRW (16), the asymptote of the heated gas: 1 + lambda/2 = {e}"),
+                        None => "GRW (16) is of a power-law kernel, which this one is not".into(),
+                    }
                 );
             }
             None => {
@@ -304,8 +308,11 @@ fn units(scene: &Scene, stats: &RunStats) -> String {
             stats.times[0],
             (2.0 * t).sqrt()
         ));
-        if scene.physics().species.is_empty() {
-            let (gc, lambda) = scene.physics().kernel.rate_constants();
+        // The Maxwellian collision rate of a power-law kernel.
+        if let (true, Some((gc, lambda))) = (
+            scene.physics().species.is_empty(),
+            scene.physics().kernel.power_law(),
+        ) {
             let omega = gdsmc_theory::balance::collision_rate(scene.dimension(), gc, lambda, t);
             line.push_str(&format!(
                 ", collision rate {omega:.4} per particle (Maxwellian), mean free time {:.4}",

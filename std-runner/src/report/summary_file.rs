@@ -138,8 +138,9 @@ pub struct Tail {
     pub slope_ci: f64,
     /// Shells in the fit.
     pub shells_used: usize,
-    /// The exponent GRW (16) predicts for the scene's kernel.
-    pub reference_exponent_grw_16: f64,
+    /// The exponent GRW (16) predicts for the scene's kernel (null for a kernel that is not a
+    /// power law).
+    pub reference_exponent_grw_16: Option<f64>,
     /// The fit of the inner and outer halves (whether the tail is asymptotic).
     pub halves: Option<Halves>,
 }

@@ -40,11 +40,18 @@ pub struct CoolingRates {
 }
 
 impl CoolingRates {
+    /// The kernel's exponent: a rate of velocities stored rescaled by `scale` is
+    /// `scale^lambda` times the stored one.
+    pub fn lambda(&self) -> f64 {
+        self.lambda
+    }
+
     /// The rates of a mixture scene (`None` for one species).
     pub fn new(scene: &crate::scene::Scene) -> Option<Self> {
         let ph = scene.physics();
         let species = *scene.model().species()?;
-        let (_, lambda) = ph.kernel.rate_constants();
+        // The estimate's rates are `strength |u|^lambda`: a power-law kernel's.
+        let lambda = ph.kernel.exponent()?;
         let pairs = pair_kernels(ph, &species)?
             .into_iter()
             .map(|(strength, alpha)| Pair {

@@ -300,8 +300,7 @@ fn cooling_rates(
     scale: f64,
     rng: &mut Xoshiro256PlusPlus,
 ) -> Vec<f64> {
-    let (_, lambda) = scene.physics().kernel.rate_constants();
-    let unit = libm::pow(scale, lambda);
+    let unit = libm::pow(scale, c.lambda());
     let rates = c.rates(p, scene.collisional_pairs(), rng);
     let n: usize = scene.physics().species.iter().map(|s| s.count).sum();
     let (mut t, mut dt) = (0.0, 0.0);

@@ -105,7 +105,9 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     let t_end = scene.times().last().copied().unwrap_or(0.0);
     let m = scene.ensembles() as f64;
     let t0 = gdsmc_theory::initial::initial_temperature(scene);
-    let (gc, lambda) = p.kernel.rate_constants();
+    // A kernel that is no power law is estimated with the hard spheres' growth with speed: the
+    // estimate is an order of magnitude for the work limit, not a reference.
+    let (gc, lambda) = (p.kernel.strength(), p.kernel.exponent().unwrap_or(1.0));
     let alpha = typical_alpha(scene);
     // A rough gas: its noise on rotation heats it too (through the collisions), its start
     // rotational temperature is energy the translation can take, and the tangential

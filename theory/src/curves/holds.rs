@@ -1,7 +1,10 @@
-//! What physics a reference holds for ([`Holds`]): the particles and each axis' values, as
-//! [`super::registry`] declares them.
+//! What physics a reference holds for ([`Holds`]): predicates over what the core declares of
+//! the scene's physics (the engine's own smooth-translation rule, the kernel's exponent, the
+//! drive's heating, the scheme's process), never a list of kinds that a new variant would
+//! silently miss. A scheme or a drive is classified by an exhaustive `match`, so a new one does
+//! not compile until it is.
 
-use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind};
+use gdsmc_core::physics::{DriveKind, SchemeKind};
 use gdsmc_scene::Scene;
 
 /// Which particles a reference holds for.
@@ -51,11 +54,86 @@ impl Particles {
     }
 }
 
-/// Which drives a reference holds for: by what the drive declares of its temperature law
-/// (`gdsmc_core::drive::Heating`, through the scene's validated model), or by kind where the
-/// reference is about one drive's physics.
-#[derive(Clone, Copy, Debug)]
-pub enum Drives {
+/// Which kernels a reference holds for, by what the kernel declares: its exponent when it is
+/// the power law `B = gamma C |u|^lambda` (`KernelChoice::exponent`, `None` for a kernel that
+/// is not one) and whether it collides as hard particles (the core's `Kernel::HARD`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kernels {
+    /// Every power-law kernel: the reference reads its exponent (the Maxwellian and Sonine
+    /// approximations, the collision rate).
+    PowerLaw,
+    /// The power laws with `lambda > 0`, whose temperature decays as a power of time (Haff's
+    /// law; the Maxwell kernel's is exact, GRW (13)).
+    PositivePower,
+    /// A kernel that does not depend on the speed (`lambda = 0`: Maxwell molecules, GRW (2),
+    /// or the VHS kernel at 0): the exact solutions of GRW, BRS and Bobylev et al.
+    Maxwell,
+    /// Hard particles with their impact law (the core's `Kernel::HARD`: MS's hard spheres and
+    /// disks).
+    Hard,
+}
+
+impl Kernels {
+    /// Whether `scene`'s kernel is one of these.
+    pub fn of(self, scene: &Scene) -> bool {
+        let k = scene.physics().kernel;
+        self.holds(k.kind().hard(), k.exponent())
+    }
+
+    /// Whether a kernel that is (or is not) `hard`, of power-law `exponent` (`None`: not a
+    /// power law), is one of these. Every variant reads a power law: a kernel without an
+    /// exponent is none of them, so it gets no power-law reference.
+    pub fn holds(self, hard: bool, exponent: Option<f64>) -> bool {
+        match self {
+            Kernels::PowerLaw => exponent.is_some(),
+            Kernels::PositivePower => exponent.is_some_and(|l| l > 0.0),
+            Kernels::Maxwell => exponent == Some(0.0),
+            Kernels::Hard => hard && exponent == Some(1.0),
+        }
+    }
+
+    /// Its words in docs/combinations.md.
+    fn words(self) -> &'static str {
+        match self {
+            Kernels::PowerLaw => "a power-law kernel",
+            Kernels::PositivePower => "a power-law kernel with lambda > 0",
+            Kernels::Maxwell => "a speed-independent kernel (lambda = 0)",
+            Kernels::Hard => "hard particles",
+        }
+    }
+}
+
+/// Which restitution laws a reference holds for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Laws {
+    /// A constant coefficient (`RestitutionLaw::constant`): the references' `alpha`.
+    Constant,
+}
+
+impl Laws {
+    /// Whether `scene`'s law is one of these.
+    pub fn of(self, scene: &Scene) -> bool {
+        match self {
+            Laws::Constant => scene.physics().restitution.constant().is_some(),
+        }
+    }
+
+    /// Its words in docs/combinations.md.
+    fn words(self) -> &'static str {
+        match self {
+            Laws::Constant => "constant restitution",
+        }
+    }
+}
+
+/// One kind of drive a reference holds for: by what the drive declares of its temperature law
+/// (`gdsmc_core::drive::Heating`, through the scene's validated model), or one drive where the
+/// reference is about that drive's own physics (a host medium's encounters, MS's white-noise
+/// and constant-force states).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Drive {
+    /// Every drive.
+    Any,
     /// Every drive that declares a linear temperature law (`Model::heating`): with the Maxwell
     /// kernel the temperature is then exact (GRW (13)). A new drive that declares its heating
     /// gets these references with no other change.
@@ -64,54 +142,101 @@ pub enum Drives {
     /// thermostat, a drag): it only rescales the velocities, so the reduced distribution is the
     /// freely cooling gas's (MS Section 2.2).
     Rescaling,
-    /// These drives (a reference about one drive's physics).
-    Kinds(&'static [DriveKind]),
+    /// A drive that does nothing (its declared law all zero): the freely cooling gas.
+    Free,
+    /// This drive (a reference about its own physics).
+    Is(DriveKind),
 }
 
-impl Drives {
-    /// Whether `scene`'s drive is one of these.
+impl Drive {
+    /// Whether `scene`'s drive is this.
     pub fn of(self, scene: &Scene) -> bool {
+        let heating = scene.model().heating();
         match self {
-            Drives::Linear => scene.model().heating().is_some(),
-            Drives::Rescaling => scene.model().heating().is_some_and(|h| h.a == 0.0),
-            Drives::Kinds(kinds) => kinds.contains(&scene.physics().drive.kind()),
+            Drive::Any => true,
+            Drive::Linear => heating.is_some(),
+            Drive::Rescaling => heating.is_some_and(|h| h.a == 0.0),
+            Drive::Free => heating.is_some_and(|h| h.a == 0.0 && h.b == 0.0 && h.p == 0.0),
+            Drive::Is(kind) => scene.physics().drive.kind() == kind,
         }
     }
 
-    /// Its words in docs/combinations.md (`None`: every drive).
-    fn words(self) -> Option<String> {
+    /// Its words in docs/combinations.md.
+    fn words(self) -> String {
         match self {
-            Drives::Linear => {
-                Some("a drive with a linear temperature law (declared heating)".into())
+            Drive::Any => "any drive".into(),
+            Drive::Linear => "a drive with a linear temperature law (declared heating)".into(),
+            Drive::Rescaling => {
+                "a drive that only rescales the velocities (declared heating, a = 0)".into()
             }
-            Drives::Rescaling => {
-                Some("a drive that only rescales the velocities (declared heating, a = 0)".into())
-            }
-            Drives::Kinds(kinds) if kinds.len() == DriveKind::ALL.len() => None,
-            Drives::Kinds(kinds) => Some(
-                kinds
-                    .iter()
-                    .map(|k| k.scene_name())
-                    .collect::<Vec<_>>()
-                    .join(" or "),
-            ),
+            Drive::Free => "no drive (declared heating all zero)".into(),
+            Drive::Is(kind) => kind.scene_name().into(),
         }
     }
 }
 
-/// The physics a reference holds for: each axis the values it holds at.
+/// Which schemes a reference holds for, by the process each scheme runs (classified by an
+/// exhaustive `match`: a new scheme is placed here before it compiles).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Schemes {
+    /// Every scheme.
+    Any,
+    /// The schemes whose exact means at finite n are known: the no-splitting process and its
+    /// Euler and Strang splittings (RW Algorithms 1-2).
+    ExactMeans,
+    /// The schemes whose n -> infinity limit is the Boltzmann equation's solution: all but
+    /// MS's time-stepped scheme, whose collisions are not the Markov process's.
+    Boltzmann,
+    /// The schemes whose particles weigh alike (all but the weighted one, whose finite-n means
+    /// carry `sum g^2`).
+    EqualWeights,
+    /// The weighted scheme alone.
+    Weighted,
+}
+
+impl Schemes {
+    /// Whether `scheme` is one of these.
+    pub fn holds(self, scheme: SchemeKind) -> bool {
+        let (exact_means, boltzmann, weighted) = match scheme {
+            SchemeKind::NoSplitting | SchemeKind::Euler | SchemeKind::Strang => (true, true, false),
+            SchemeKind::Weighted => (false, true, true),
+            SchemeKind::TimeStepped => (false, false, false),
+        };
+        match self {
+            Schemes::Any => true,
+            Schemes::ExactMeans => exact_means,
+            Schemes::Boltzmann => boltzmann,
+            Schemes::EqualWeights => !weighted,
+            Schemes::Weighted => weighted,
+        }
+    }
+
+    /// Its words in docs/combinations.md (`None`: every scheme).
+    fn words(self) -> Option<String> {
+        (self != Schemes::Any).then(|| {
+            SchemeKind::ALL
+                .iter()
+                .filter(|&&s| self.holds(s))
+                .map(|s| s.scene_name())
+                .collect::<Vec<_>>()
+                .join(" or ")
+        })
+    }
+}
+
+/// The physics a reference holds for: each axis a predicate over what the core declares.
 #[derive(Clone, Copy, Debug)]
 pub struct Holds {
     /// The particles.
     pub particles: Particles,
     /// The kernels.
-    pub kernels: &'static [KernelKind],
+    pub kernels: Kernels,
     /// The restitution laws.
-    pub laws: &'static [LawKind],
-    /// The drives.
-    pub drives: Drives,
+    pub laws: Laws,
+    /// The drives: any of these.
+    pub drives: &'static [Drive],
     /// The schemes.
-    pub schemes: &'static [SchemeKind],
+    pub schemes: Schemes,
     /// The dimensions.
     pub dimensions: &'static [usize],
     /// A condition on parameters the axes do not show (a host medium's kernel), in words; a
@@ -122,37 +247,81 @@ pub struct Holds {
 impl Holds {
     /// Whether the axes hold for `scene` (its `when`, if any, is the builder's).
     pub fn of(&self, scene: &Scene) -> bool {
-        let ph = scene.physics();
         self.particles.of(scene)
-            && self.kernels.contains(&ph.kernel.kind())
-            && self.laws.contains(&ph.restitution.kind())
-            && self.drives.of(scene)
-            && self.schemes.contains(&ph.scheme.kind())
+            && self.kernels.of(scene)
+            && self.laws.of(scene)
+            && self.drives.iter().any(|d| d.of(scene))
+            && self.schemes.holds(scene.physics().scheme.kind())
             && self.dimensions.contains(&scene.dimension())
     }
 
     /// Its words: the particles, then each axis it restricts.
     pub fn words(&self) -> String {
-        fn axis<T: Copy + PartialEq>(
-            of: &[T],
-            all: &[T],
-            name: impl Fn(T) -> &'static str,
-        ) -> Option<String> {
-            (of.len() < all.len())
-                .then(|| of.iter().map(|&k| name(k)).collect::<Vec<_>>().join(" or "))
+        let mut w = vec![
+            self.particles.words().to_string(),
+            self.kernels.words().to_string(),
+            self.laws.words().to_string(),
+        ];
+        if self.drives != [Drive::Any] {
+            w.push(
+                self.drives
+                    .iter()
+                    .map(|d| d.words())
+                    .collect::<Vec<_>>()
+                    .join(" or "),
+            );
         }
-        let mut w = vec![self.particles.words().to_string()];
-        w.extend(axis(self.kernels, KernelKind::ALL, |k| k.scene_name()));
-        w.extend(axis(self.laws, LawKind::ALL, |k| match k {
-            LawKind::Constant => "constant restitution",
-            LawKind::ImpactSpeed => "impact-speed law",
-        }));
-        w.extend(self.drives.words());
-        w.extend(axis(self.schemes, SchemeKind::ALL, |k| k.scene_name()));
+        w.extend(self.schemes.words());
         if self.dimensions.len() == 1 {
             w.push(format!("d = {}", self.dimensions[0]));
         }
         w.extend(self.when.map(str::to_string));
         w.join("; ")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A kernel that is not a power law (a capped or tabulated kernel declares no exponent)
+    /// holds for no kernel axis, hard or not; each axis holds where its words say.
+    #[test]
+    fn a_kernel_without_an_exponent_holds_for_no_reference() {
+        let all = [
+            Kernels::PowerLaw,
+            Kernels::PositivePower,
+            Kernels::Maxwell,
+            Kernels::Hard,
+        ];
+        for k in all {
+            assert!(!k.holds(false, None) && !k.holds(true, None), "{k:?}");
+        }
+        let at = |hard, l| all.map(|k| k.holds(hard, Some(l)));
+        assert_eq!(at(false, 0.0), [true, false, true, false]);
+        assert_eq!(at(false, 0.5), [true, true, false, false]);
+        assert_eq!(at(true, 1.0), [true, true, false, true]);
+        assert_eq!(at(false, 1.0), [true, true, false, false]);
+    }
+
+    /// Every scheme is placed by [`Schemes::holds`] as the references need it: the exact
+    /// means of the no-splitting process and its splittings, the Boltzmann limit of all but
+    /// MS's time-stepped scheme.
+    #[test]
+    fn the_schemes_are_placed() {
+        use SchemeKind as S;
+        let of = |s| {
+            [
+                Schemes::ExactMeans,
+                Schemes::Boltzmann,
+                Schemes::EqualWeights,
+                Schemes::Weighted,
+            ]
+            .map(|x| x.holds(s))
+        };
+        assert_eq!(of(S::NoSplitting), [true, true, true, false]);
+        assert_eq!(of(S::Strang), [true, true, true, false]);
+        assert_eq!(of(S::Weighted), [false, true, false, true]);
+        assert_eq!(of(S::TimeStepped), [false, false, true, false]);
     }
 }

@@ -4,7 +4,7 @@
 
 use super::{Kind, ReferenceCurve};
 use crate::mixture::MaxwellMixture;
-use gdsmc_scene::{DriveChoice, DriveKind, Scene, SchemeChoice};
+use gdsmc_scene::{DriveChoice, Scene, SchemeChoice};
 use std::sync::Arc;
 
 /// Per species `k`: the exact finite-n mean of `T_sk` (Maxwell kernel, no drive), the
@@ -27,16 +27,10 @@ fn approximation(scene: &Scene) -> Option<crate::mixture::MaxwellianApproximatio
     if ph.rotation.is_some() || ph.dimension != gdsmc_core::physics::DimensionChoice::Three {
         return None;
     }
-    // Nor does it know a drive but white noise and the Gaussian thermostat (which scales every
-    // species alike): a host medium, the constant force or a Langevin bath move each
-    // species' temperature.
-    if !matches!(
-        ph.drive.kind(),
-        DriveKind::None | DriveKind::WhiteNoise | DriveKind::Gaussian
-    ) {
-        return None;
-    }
-    let (_, lambda) = ph.kernel.rate_constants();
+    // Nor does it know a drive but white noise and one that only rescales (the registry's
+    // declarations say which of them each reference takes: a host medium, the constant force
+    // or a Langevin bath move each species' temperature their own way).
+    let (_, lambda) = ph.kernel.power_law()?;
     let sp = scene.model().species()?;
     let (kappa, alpha) = crate::pairs::pair_kernels(ph, sp)?.into_iter().unzip();
     let heated = matches!(ph.drive, DriveChoice::WhiteNoise(_));
@@ -65,15 +59,9 @@ const ROUGH_SPECIES_REFERENCES: [&str; gdsmc_core::mixture::MAX_SPECIES] =
 pub fn rough_mixture_approximation(
     scene: &Scene,
 ) -> Option<crate::rough_mixture::RoughMixtureApproximation> {
-    // The thermostat on translation alone moves the cooling state's theta, and a host medium
-    // or the constant force every temperature: the approximation (noise and collisions) follows neither, so it
-    // draws nothing there.
-    if !matches!(
-        scene.physics().drive.kind(),
-        DriveKind::None | DriveKind::WhiteNoise
-    ) {
-        return None;
-    }
+    // The approximation follows noise and collisions alone: the registry declares it for no
+    // drive and white noise (a thermostat on translation alone moves the cooling state's theta,
+    // and a host medium or the constant force every temperature).
     // The approximation takes each pair's constant alpha; under the impact-speed law alpha
     // follows each collision's impact speed, which it does not: no curve.
     scene.physics().restitution.constant()?;
@@ -83,7 +71,7 @@ pub fn rough_mixture_approximation(
         model.rough_pair_laws()?,
         model.pair_cross_sections()?,
     );
-    let (strength, lambda) = scene.physics().kernel.rate_constants();
+    let (strength, lambda) = scene.physics().kernel.power_law()?;
     let ns = sp.len();
     let masses: Vec<f64> = (0..ns).map(|s| sp.mass(s)).collect();
     let inertia: Vec<f64> = (0..ns)

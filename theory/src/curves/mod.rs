@@ -4,7 +4,7 @@
 
 use crate::exact::{HostMediumMaxwell, MaxwellTemperature};
 use crate::initial::{initial_sampler, initial_temperature};
-use gdsmc_scene::{BackgroundKernel, DriveChoice, KernelKind, Scene, SchemeChoice};
+use gdsmc_scene::{BackgroundKernel, DriveChoice, Scene};
 
 mod cooling;
 pub mod holds;
@@ -62,8 +62,10 @@ fn smooth_maxwell(scene: &Scene) -> Option<(f64, f64, f64)> {
         return None; // a one-species solution of smooth particles
     }
     let alpha = scene.physics().restitution.constant()?;
+    // A kernel that does not depend on the speed (the Maxwell kernel, or VHS at lambda = 0):
+    // `B = gamma C` (GRW (2)), whose moment equations close.
     let k = scene.physics().kernel;
-    (k.kind() == KernelKind::Maxwell).then(|| (alpha, k.gamma(), k.c()))
+    (k.exponent() == Some(0.0)).then(|| (alpha, k.gamma(), k.c()))
 }
 
 /// The exact temperature of the Maxwell gas (GRW (13)), when the scene is one.
@@ -115,8 +117,8 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
     }
     use crate::hydro::{Closure, HydroModel};
     let k = scene.physics().kernel;
-    if k.kind() != KernelKind::HardSpheres {
-        return None;
+    if !k.kind().hard() {
+        return None; // the closures' integrals are hard spheres'
     }
     let (gamma, c) = (k.gamma(), k.c());
     let DriveChoice::HostMedium {
@@ -151,7 +153,7 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
 pub fn maxwell_cumulant(scene: &Scene) -> Option<crate::maxwell_cumulant::MaxwellCumulant> {
     use crate::maxwell_cumulant::{MaxwellCumulant, moment_ratio};
     let (alpha, gamma, c) = smooth_maxwell(scene)?;
-    if matches!(scene.physics().scheme, SchemeChoice::TimeStepped(_)) {
+    if !holds::Schemes::Boltzmann.holds(scene.physics().scheme.kind()) {
         return None;
     }
     let heating = scene.model().heating()?;

@@ -6,9 +6,9 @@
 //! combination, and the tests hold each builder to its declaration (every combination it
 //! declares gets its curves) and each shipped scene's description to what its run attaches.
 
-pub use super::holds::{Drives, Holds, Particles};
+pub use super::holds::{Drive, Holds, Kernels, Laws, Particles, Schemes};
 use super::{Kind, ReferenceCurve, cooling, mixture, rough, single, sonine};
-use gdsmc_core::physics::{DriveKind, KernelKind, LawKind, SchemeKind, SchemeKind as S};
+use gdsmc_core::physics::DriveKind;
 use gdsmc_scene::Scene;
 
 /// One reference: its declaration and the builder of its curves.
@@ -47,33 +47,25 @@ pub fn cites(text: &str, word: &str) -> bool {
     })
 }
 
-const ANY_KERNEL: &[KernelKind] = KernelKind::ALL;
-const ANY_SCHEME: &[SchemeKind] = SchemeKind::ALL;
 const ANY_D: &[usize] = &[2, 3];
-const CONSTANT: &[LawKind] = &[LawKind::Constant];
-const MAXWELL: &[KernelKind] = &[KernelKind::Maxwell];
-const HARD: &[KernelKind] = &[KernelKind::HardSpheres];
+/// Every drive.
+const ANY_DRIVE: &[Drive] = &[Drive::Any];
 /// The drives that heat linearly: those that declare it (the core's
 /// [`gdsmc_core::drive::Heating`]), not a list of kinds.
-const LINEAR: Drives = Drives::Linear;
-/// The schemes whose exact means at n are known: the no-splitting process and its splittings.
-const EXACT_MEANS: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang];
-/// The schemes whose n -> infinity limit is the Boltzmann equation's solution.
-const BOLTZMANN: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang, S::Weighted];
-/// Every scheme but the weighted one (whose finite-n means carry `sum g^2`).
-const EQUAL_WEIGHTS: &[SchemeKind] = &[S::NoSplitting, S::Euler, S::Strang, S::TimeStepped];
+const LINEAR: &[Drive] = &[Drive::Linear];
 /// The cooling state: a drive that only rescales the velocities (no drive, the Gaussian
-/// thermostat: its steady state in reduced units, MS Section 2.2), as the drive declares it.
-const COOLING: Drives = Drives::Rescaling;
+/// thermostat, a drag: its steady state in reduced units, MS Section 2.2), as the drive
+/// declares it.
+const COOLING: &[Drive] = &[Drive::Rescaling];
 
 /// A one-species smooth gas's axes with the constant restitution of the Sonine estimates.
-const fn hard_smooth(drives: Drives, dimensions: &'static [usize]) -> Holds {
+const fn hard_smooth(drives: &'static [Drive], dimensions: &'static [usize]) -> Holds {
     Holds {
         particles: Particles::Smooth,
-        kernels: HARD,
-        laws: CONSTANT,
+        kernels: Kernels::Hard,
+        laws: Laws::Constant,
         drives,
-        schemes: ANY_SCHEME,
+        schemes: Schemes::Any,
         dimensions,
         when: None,
     }
@@ -82,21 +74,21 @@ const fn hard_smooth(drives: Drives, dimensions: &'static [usize]) -> Holds {
 /// The one-species smooth Maxwell gas in a Maxwell host medium (BRS (14)-(17)).
 const MAXWELL_HOST: Holds = Holds {
     particles: Particles::SmoothTranslation,
-    kernels: MAXWELL,
-    laws: CONSTANT,
-    drives: Drives::Kinds(&[DriveKind::HostMedium]),
-    schemes: ANY_SCHEME,
+    kernels: Kernels::Maxwell,
+    laws: Laws::Constant,
+    drives: &[Drive::Is(DriveKind::HostMedium)],
+    schemes: Schemes::Any,
     dimensions: ANY_D,
     when: Some("a Maxwell host medium"),
 };
 
 /// The one-species smooth Maxwell gas under a linearly heating drive (GRW (13)-(14)), run by
 /// `schemes`.
-const fn maxwell_linear(schemes: &'static [SchemeKind]) -> Holds {
+const fn maxwell_linear(schemes: Schemes) -> Holds {
     Holds {
         particles: Particles::SmoothTranslation,
-        kernels: MAXWELL,
-        laws: CONSTANT,
+        kernels: Kernels::Maxwell,
+        laws: Laws::Constant,
         drives: LINEAR,
         schemes,
         dimensions: ANY_D,
@@ -106,12 +98,12 @@ const fn maxwell_linear(schemes: &'static [SchemeKind]) -> Holds {
 
 /// A one-species smooth gas of kernels `kernels`, a constant coefficient, any drive and the
 /// schemes `schemes` in d = 2 and 3, observing its cooling (`observe.collisional_pairs`).
-const fn smooth_cooling(kernels: &'static [KernelKind], schemes: &'static [SchemeKind]) -> Holds {
+const fn smooth_cooling(kernels: Kernels, schemes: Schemes) -> Holds {
     Holds {
         particles: Particles::Smooth,
         kernels,
-        laws: CONSTANT,
-        drives: Drives::Kinds(DriveKind::ALL),
+        laws: Laws::Constant,
+        drives: ANY_DRIVE,
         schemes,
         dimensions: ANY_D,
         when: Some("observe.collisional_pairs > 0"),
@@ -125,10 +117,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Approximation,
         holds: Holds {
             particles: Particles::Rough,
-            kernels: ANY_KERNEL,
-            laws: CONSTANT,
+            kernels: Kernels::PowerLaw,
+            laws: Laws::Constant,
             drives: LINEAR,
-            schemes: ANY_SCHEME,
+            schemes: Schemes::Any,
             dimensions: ANY_D,
             when: None,
         },
@@ -141,10 +133,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Approximation,
         holds: Holds {
             particles: Particles::Smooth,
-            kernels: &[KernelKind::HardSpheres, KernelKind::Vhs],
-            laws: CONSTANT,
+            kernels: Kernels::PositivePower,
+            laws: Laws::Constant,
             drives: LINEAR,
-            schemes: ANY_SCHEME,
+            schemes: Schemes::Any,
             dimensions: ANY_D,
             when: None,
         },
@@ -171,7 +163,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (10)",
         kind: Kind::Approximation,
-        holds: hard_smooth(Drives::Kinds(&[DriveKind::WhiteNoise]), ANY_D),
+        holds: hard_smooth(&[Drive::Is(DriveKind::WhiteNoise)], ANY_D),
         columns: &["a2_ms10"],
         cites: &[],
         curves: sonine::a2_ms10,
@@ -179,7 +171,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (32)",
         kind: Kind::Approximation,
-        holds: hard_smooth(Drives::Kinds(&[DriveKind::WhiteNoise]), ANY_D),
+        holds: hard_smooth(&[Drive::Is(DriveKind::WhiteNoise)], ANY_D),
         columns: &["a2_ms32"],
         cites: &[],
         curves: sonine::a2_ms32,
@@ -187,7 +179,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (50)",
         kind: Kind::Approximation,
-        holds: hard_smooth(Drives::Kinds(&[DriveKind::ConstantForce]), ANY_D),
+        holds: hard_smooth(&[Drive::Is(DriveKind::ConstantForce)], ANY_D),
         columns: &["a2_ms50"],
         cites: &[],
         curves: sonine::a2_ms50,
@@ -195,7 +187,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "MS (76)",
         kind: Kind::Approximation,
-        holds: hard_smooth(Drives::Kinds(&[DriveKind::ConstantForce]), &[3]),
+        holds: hard_smooth(&[Drive::Is(DriveKind::ConstantForce)], &[3]),
         columns: &["a2_ms76"],
         cites: &[],
         curves: sonine::a2_ms76,
@@ -205,10 +197,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Limit,
         holds: Holds {
             particles: Particles::SmoothTranslation,
-            kernels: MAXWELL,
-            laws: CONSTANT,
+            kernels: Kernels::Maxwell,
+            laws: Laws::Constant,
             drives: LINEAR,
-            schemes: BOLTZMANN,
+            schemes: Schemes::Boltzmann,
             dimensions: ANY_D,
             when: None,
         },
@@ -221,10 +213,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Approximation,
         holds: Holds {
             particles: Particles::SmoothTranslation,
-            kernels: HARD,
-            laws: CONSTANT,
-            drives: Drives::Kinds(&[DriveKind::HostMedium]),
-            schemes: ANY_SCHEME,
+            kernels: Kernels::Hard,
+            laws: Laws::Constant,
+            drives: &[Drive::Is(DriveKind::HostMedium)],
+            schemes: Schemes::Any,
             dimensions: &[3],
             when: Some("a hard-sphere host medium"),
         },
@@ -256,7 +248,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "GRW (13)-(14)",
         kind: Kind::Limit,
-        holds: maxwell_linear(ANY_SCHEME),
+        holds: maxwell_linear(Schemes::Any),
         columns: &["T_exact", "T_bulk_exact"],
         cites: &["GRW (13)"],
         curves: single::grw_limit,
@@ -264,7 +256,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "GRW (13)-(14) at finite n",
         kind: Kind::MeanAtN,
-        holds: maxwell_linear(EXACT_MEANS),
+        holds: maxwell_linear(Schemes::ExactMeans),
         columns: &["T_mean_n", "T_bulk_mean_n"],
         cites: &[],
         curves: single::grw_mean_at_n,
@@ -275,7 +267,7 @@ pub const REFERENCES: &[Reference] = &[
         // Where the drive adds no heat of its own (docs/weighted.md).
         holds: Holds {
             drives: COOLING,
-            ..maxwell_linear(&[SchemeKind::Weighted])
+            ..maxwell_linear(Schemes::Weighted)
         },
         columns: &["T_mean_n", "T_bulk_mean_n"],
         cites: &[],
@@ -286,10 +278,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Approximation,
         holds: Holds {
             particles: Particles::SmoothMixture,
-            kernels: ANY_KERNEL,
-            laws: CONSTANT,
-            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise, DriveKind::Gaussian]),
-            schemes: ANY_SCHEME,
+            kernels: Kernels::PowerLaw,
+            laws: Laws::Constant,
+            drives: &[Drive::Rescaling, Drive::Is(DriveKind::WhiteNoise)],
+            schemes: Schemes::Any,
             dimensions: &[3],
             when: None,
         },
@@ -307,10 +299,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::MeanAtN,
         holds: Holds {
             particles: Particles::SmoothMixture,
-            kernels: MAXWELL,
-            laws: CONSTANT,
-            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise]),
-            schemes: EXACT_MEANS,
+            kernels: Kernels::Maxwell,
+            laws: Laws::Constant,
+            drives: &[Drive::Free, Drive::Is(DriveKind::WhiteNoise)],
+            schemes: Schemes::ExactMeans,
             dimensions: &[3],
             when: None,
         },
@@ -329,10 +321,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Limit,
         holds: Holds {
             particles: Particles::SmoothMixture,
-            kernels: MAXWELL,
-            laws: CONSTANT,
-            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise]),
-            schemes: ANY_SCHEME,
+            kernels: Kernels::Maxwell,
+            laws: Laws::Constant,
+            drives: &[Drive::Free, Drive::Is(DriveKind::WhiteNoise)],
+            schemes: Schemes::Any,
             dimensions: &[3],
             when: None,
         },
@@ -350,10 +342,10 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Approximation,
         holds: Holds {
             particles: Particles::RoughMixture,
-            kernels: ANY_KERNEL,
-            laws: CONSTANT,
-            drives: Drives::Kinds(&[DriveKind::None, DriveKind::WhiteNoise]),
-            schemes: ANY_SCHEME,
+            kernels: Kernels::PowerLaw,
+            laws: Laws::Constant,
+            drives: &[Drive::Free, Drive::Is(DriveKind::WhiteNoise)],
+            schemes: Schemes::Any,
             dimensions: ANY_D,
             when: None,
         },
@@ -374,7 +366,7 @@ pub const REFERENCES: &[Reference] = &[
         id: "zeta* of the Maxwell kernel",
         kind: Kind::MeanAtN,
         // Equal weights: `n/(n - 1)` is their `W^2/(W^2 - sum g^2)` (core/tests/weighted.rs).
-        holds: smooth_cooling(MAXWELL, EQUAL_WEIGHTS),
+        holds: smooth_cooling(Kernels::Maxwell, Schemes::EqualWeights),
         columns: &["zeta_star_exact"],
         cites: &[],
         curves: cooling::maxwell,
@@ -382,7 +374,7 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "zeta* of hard particles at a Maxwellian",
         kind: Kind::Approximation,
-        holds: smooth_cooling(HARD, ANY_SCHEME),
+        holds: smooth_cooling(Kernels::Hard, Schemes::Any),
         columns: &["zeta_star_MA"],
         cites: &[],
         curves: cooling::hard_maxwellian,
@@ -413,6 +405,17 @@ mod tests {
         assert!(!cites("a2_sonine_x", "a2_sonine"));
     }
 
+    /// No reference holds for a kernel that is not a power law: each declares a kernel axis,
+    /// and none of those takes a kernel without an exponent ([`Kernels::holds`]).
+    #[test]
+    fn no_reference_holds_for_a_kernel_without_an_exponent() {
+        for r in REFERENCES {
+            for hard in [false, true] {
+                assert!(!r.holds.kernels.holds(hard, None), "{}", r.id);
+            }
+        }
+    }
+
     #[test]
     fn every_reference_is_declared_once() {
         let mut ids: Vec<&str> = REFERENCES.iter().map(|r| r.id).collect();
@@ -421,10 +424,7 @@ mod tests {
         assert_eq!(ids.len(), REFERENCES.len());
         for r in REFERENCES {
             for axis in [
-                r.holds.kernels.is_empty(),
-                r.holds.laws.is_empty(),
-                matches!(r.holds.drives, Drives::Kinds(k) if k.is_empty()),
-                r.holds.schemes.is_empty(),
+                r.holds.drives.is_empty(),
                 r.holds.dimensions.is_empty(),
                 r.columns.is_empty(),
             ] {

@@ -10,7 +10,7 @@ use gdsmc_scene::Scene;
 pub fn rough_approximation(scene: &Scene) -> Option<crate::rough::RoughApproximation> {
     let r = scene.physics().rotation?;
     let alpha = scene.physics().restitution.constant()?;
-    let (strength, lambda) = scene.physics().kernel.rate_constants();
+    let (strength, lambda) = scene.physics().kernel.power_law()?;
     // The constant force's work depends on `E|v - V|` (MS (14)), which the approximation
     // does not follow, nor does it a host medium's encounters: no curve (they heat otherwise
     // than linearly).

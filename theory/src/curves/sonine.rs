@@ -4,23 +4,27 @@
 //! state (MS (50), (76)). All are approximations: shown beside the run, not judged. Each is a
 //! builder of [`super::registry`], called where its declaration holds.
 
+use super::holds::Drive;
 use super::{Kind, ReferenceCurve};
 use crate::balance::{EnergyBalance, cooling_constant, sonine_factor};
 use crate::columns::name;
 use crate::exact::sonine;
 use crate::initial::initial_temperature;
-use gdsmc_scene::{DriveKind, KernelKind, Scene};
+use gdsmc_scene::{DriveKind, Scene};
 use std::sync::Arc;
 
 /// The first-Sonine `a2` of a hard-particle gas's steady state under its drive, with the
-/// equation it is: MS (5) for the cooling state and the Gaussian thermostat, MS (10) for white
-/// noise (both in `d` dimensions); none for a drive whose state MS do not give.
+/// equation it is: MS (5) for the cooling state (a drive that only rescales the velocities, as
+/// it declares: none, the Gaussian thermostat, a drag; MS Section 2.2), MS (10) for white noise
+/// (both in `d` dimensions); none for a drive whose state MS do not give.
 fn state_a2(scene: &Scene, alpha: f64) -> Option<(f64, &'static str)> {
     let d = scene.dimension() as f64;
-    match scene.physics().drive.kind() {
-        DriveKind::None | DriveKind::Gaussian => Some((sonine::a2_cooling_in(d, alpha), "MS (5)")),
-        DriveKind::WhiteNoise => Some((sonine::a2_white_noise_10_in(d, alpha), "MS (10)")),
-        _ => None,
+    if Drive::Rescaling.of(scene) {
+        Some((sonine::a2_cooling_in(d, alpha), "MS (5)"))
+    } else if Drive::Is(DriveKind::WhiteNoise).of(scene) {
+        Some((sonine::a2_white_noise_10_in(d, alpha), "MS (10)"))
+    } else {
+        None
     }
 }
 
@@ -32,8 +36,11 @@ pub(super) fn curves(scene: &Scene) -> Vec<ReferenceCurve> {
     let (Some(alpha), Some(heating)) = (ph.restitution.constant(), scene.model().heating()) else {
         return Vec::new();
     };
-    let (gc, lambda) = ph.kernel.rate_constants();
-    let hard = ph.kernel.kind() == KernelKind::HardSpheres;
+    // Power-law results: a kernel that is no power law has none.
+    let Some((gc, lambda)) = ph.kernel.power_law() else {
+        return Vec::new();
+    };
+    let hard = ph.kernel.kind().hard();
     let kappa = cooling_constant(scene.dimension(), hard, gc, lambda, alpha);
     let t_end = scene.times().last().copied().unwrap_or(1.0);
     let balance = EnergyBalance {
