@@ -145,6 +145,18 @@
 // Most species pairs, `GDSMC_MAX_SPECIES (GDSMC_MAX_SPECIES + 1) / 2`.
 #define GDSMC_MAX_PAIRS 10
 
+// `gdsmc_reference.kind`: the exact ensemble mean at the configuration's n (and scheme); a
+// run's mean must lie within its interval of it.
+#define GDSMC_REFERENCE_MEAN_AT_N 0
+
+// `gdsmc_reference.kind`: an exact solution of the Boltzmann equation (n -> infinity); a mean
+// at finite n lies O(1/n) from it.
+#define GDSMC_REFERENCE_LIMIT 1
+
+// `gdsmc_reference.kind`: an approximation (Sonine, Maxwellian, a hydrodynamic closure):
+// shown, not judged.
+#define GDSMC_REFERENCE_APPROXIMATION 2
+
 // The largest stream a configuration may name (`config.stream`).
 #define GDSMC_MAX_STREAM (1 << 20)
 
@@ -176,6 +188,12 @@ typedef enum {
     // gdsmc_sim_advance would take more work (candidate events, background events, particle
     // updates) than the simulation's limit (gdsmc_sim_set_work_limit); nothing was run.
     GDSMC_TOO_MUCH_WORK = 11,
+    // No reference of that name holds for this configuration (gdsmc_reference_find).
+    GDSMC_NOT_FOUND = 12,
+    // A reference's arithmetic cannot hold at some of the asked times (its closed form leaves
+    // the range of double there): the values are filled, NaN at those times, and the message
+    // names them. Never a wrong number.
+    GDSMC_NOT_COMPUTABLE = 13,
 } gdsmc_status;
 
 // A simulation: `n` particles, its engine, generator and current time. Opaque to C.
@@ -389,6 +407,31 @@ typedef struct {
     double scheme_params[GDSMC_MAX_SCHEME_PARAMS];
 } gdsmc_config;
 
+// A running ensemble mean: initialise with zeros (`gdsmc_mean acc = {0};`), add one value per
+// ensemble with gdsmc_mean_add, read with gdsmc_mean_interval. Plain data: copy it freely.
+typedef struct {
+    // Values added.
+    uint64_t count;
+    // Their mean.
+    double mean;
+    // The sum of their squared deviations from the mean (Welford's `M2`).
+    double m2;
+} gdsmc_mean;
+
+// One reference curve of a configuration.
+typedef struct {
+    // Its column name (`T_mean_n`), NUL-terminated, in static storage (never free it).
+    const char *name;
+    // The observable it is the reference of (`T`, `T_bulk`, `a2`), static as `name`.
+    const char *of;
+    // Its paper and equation, static as `name`.
+    const char *source;
+    // What it is to a run's means: GDSMC_REFERENCE_MEAN_AT_N, _LIMIT or _APPROXIMATION.
+    uint32_t kind;
+    // How many of the asked times its arithmetic cannot hold at (their values are NaN).
+    size_t not_computable;
+} gdsmc_reference;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -510,6 +553,65 @@ gdsmc_status gdsmc_config_default(gdsmc_config *out);
 // # Safety
 // `config` must be NULL or point to a gdsmc_config; `out` NULL or writable for one pointer.
 gdsmc_status gdsmc_sim_create(const gdsmc_config *config, gdsmc_sim **out);
+
+// Adds one ensemble's value `x` to `*acc`. GDSMC_NON_FINITE for a NaN or infinite `x` (the
+// accumulator is unchanged then).
+//
+// # Safety
+// `acc` NULL or a readable and writable gdsmc_mean.
+gdsmc_status gdsmc_mean_add(gdsmc_mean *acc, double x);
+
+// `*mean` = the mean of the values added to `*acc`, `*half_width` = the half-width of its
+// 99.9% confidence interval, `t sqrt(s^2 / M)` with Student's t quantile of `M - 1` degrees
+// of freedom at the two-sided level of 3.2 normal sigma (3.446 at M = 40; 3.2 as M grows),
+// as `gdsmc run` computes it. GDSMC_INVALID_ARGUMENT below two values (no variance).
+//
+// # Safety
+// `acc` NULL or a readable gdsmc_mean; `mean` and `half_width` NULL or writable.
+gdsmc_status gdsmc_mean_interval(const gdsmc_mean *acc, double *mean, double *half_width);
+
+// `*count` = how many reference curves hold for `*config` observed at `times[0..n_times]`
+// (finite, from 0 on, increasing), as `gdsmc run` writes them beside its means: the exact
+// solutions, the exact means at the configuration's n and the approximations whose physics
+// the configuration is (none for a physics no reference holds for). Fails with
+// GDSMC_INVALID_ARGUMENT naming the field or the times.
+//
+// # Safety
+// `config` NULL or a readable gdsmc_config; `times` NULL or `n_times` readable doubles;
+// `count` NULL or writable.
+gdsmc_status gdsmc_reference_count(const gdsmc_config *config,
+                                   const double *times,
+                                   size_t n_times,
+                                   size_t *count);
+
+// Reference `index` (from 0, below gdsmc_reference_count's count, in the order of the
+// command's columns) of `*config` observed at `times[0..n_times]`: its description in `*out`
+// and its values at the times in `values[0..n_times]`, equal to the command's column to the
+// bit. GDSMC_NOT_COMPUTABLE when its arithmetic cannot hold at some times (`*out` and the
+// values are filled, NaN there, `out->not_computable` counting them).
+//
+// # Safety
+// As gdsmc_reference_count; `out` NULL or writable for one gdsmc_reference; `values` NULL or
+// writable for `n_times` doubles.
+gdsmc_status gdsmc_reference_get(const gdsmc_config *config,
+                                 const double *times,
+                                 size_t n_times,
+                                 size_t index,
+                                 gdsmc_reference *out,
+                                 double *values);
+
+// The reference named `name` (a column name: `T_mean_n`, `T_exact`, `a2_exact`) of `*config`
+// observed at `times[0..n_times]`, as gdsmc_reference_get; GDSMC_NOT_FOUND, naming those that
+// hold, when none of that name holds for this physics.
+//
+// # Safety
+// As gdsmc_reference_get; `name` NULL or a NUL-terminated string.
+gdsmc_status gdsmc_reference_find(const gdsmc_config *config,
+                                  const double *times,
+                                  size_t n_times,
+                                  const char *name,
+                                  gdsmc_reference *out,
+                                  double *values);
 
 // For the allocation-free variant: the number of bytes and the alignment a caller buffer must
 // have to hold a simulation of `n` particles (the handle's header followed by the particles).

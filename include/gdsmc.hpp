@@ -105,6 +105,67 @@ private:
     gdsmc_sim *sim_ = nullptr;
 };
 
+// One reference curve of a configuration at the asked times (gdsmc_reference_get): its
+// column name, the observable it is of, its paper and equation, its kind
+// (GDSMC_REFERENCE_MEAN_AT_N, _LIMIT, _APPROXIMATION), its values, and how many of them its
+// arithmetic cannot hold at (NaN there: flagged, not thrown).
+struct Reference {
+    std::string name, of, source;
+    uint32_t kind = 0;
+    std::vector<double> values;
+    std::size_t not_computable = 0;
+};
+
+namespace detail {
+inline Reference reference(gdsmc_status s, const gdsmc_reference &r, std::vector<double> v,
+                           const char *call) {
+    if (s != GDSMC_NOT_COMPUTABLE) check(s, call);
+    return Reference{r.name, r.of, r.source, r.kind, std::move(v), r.not_computable};
+}
+}  // namespace detail
+
+// Every reference that holds for `c` observed at `times`, as `gdsmc run` writes them beside its
+// means (the same code: equal to its columns to the bit).
+inline std::vector<Reference> references(const gdsmc_config &c, const std::vector<double> &times) {
+    std::size_t count = 0;
+    check(gdsmc_reference_count(&c, times.data(), times.size(), &count), "gdsmc_reference_count");
+    std::vector<Reference> out;
+    for (std::size_t k = 0; k < count; ++k) {
+        gdsmc_reference r;
+        std::vector<double> v(times.size());
+        gdsmc_status s = gdsmc_reference_get(&c, times.data(), times.size(), k, &r, v.data());
+        out.push_back(detail::reference(s, r, std::move(v), "gdsmc_reference_get"));
+    }
+    return out;
+}
+
+// The reference named `name` (`T_mean_n`, `T_exact`, ...); throws GDSMC_NOT_FOUND when none of
+// that name holds for `c`.
+inline Reference reference(const gdsmc_config &c, const std::vector<double> &times,
+                           const std::string &name) {
+    gdsmc_reference r;
+    std::vector<double> v(times.size());
+    gdsmc_status s =
+        gdsmc_reference_find(&c, times.data(), times.size(), name.c_str(), &r, v.data());
+    return detail::reference(s, r, std::move(v), "gdsmc_reference_find");
+}
+
+// An ensemble mean with the 99.9% interval `gdsmc run` reports (gdsmc_mean_add,
+// gdsmc_mean_interval): add one value per ensemble, then read {mean, half-width}.
+class Mean {
+public:
+    void add(double x) { check(gdsmc_mean_add(&m_, x), "gdsmc_mean_add"); }
+    std::pair<double, double> interval() const {
+        double mean = 0, half = 0;
+        check(gdsmc_mean_interval(&m_, &mean, &half), "gdsmc_mean_interval");
+        return {mean, half};
+    }
+    uint64_t count() const noexcept { return m_.count; }
+
+private:
+    gdsmc_mean m_{};
+};
+
 }  // namespace gdsmc
 
 #endif  // GDSMC_HPP

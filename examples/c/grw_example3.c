@@ -2,11 +2,12 @@
  * GRW Example 3 from C: the heated Maxwell gas (alpha = 1/2, beta = 1, gamma = 4,
  * C0 = 1/(4 pi)) relaxing from T = 1 to T_inf = 8/3. Runs M independent ensembles (streams
  * 0..M-1 of one seed, as `gdsmc run` does) and prints the mean temperature with its 99.9%
- * confidence half-width beside the exact GRW (13): T(t) = 8/3 + (1 - 8/3) exp(-3t/4).
- * The half-width is Student's t for M - 1 = 39 degrees of freedom at the level of 3.2 normal
- * sigma (3.446, as `gdsmc run` computes it) times the standard error; the finite-n bias of T
- * (order T/n, 6e-4 at n = 4096) is ten times smaller. The program exits with 1 when a point
- * misses its interval (nine points at 99.9% each: a correct engine fails about one seed in 80).
+ * confidence half-width (gdsmc_mean_interval: Student's t for M - 1 degrees of freedom at the
+ * level of 3.2 normal sigma, as `gdsmc run` computes it) beside the exact mean at this n,
+ * GRW (13)-(14) at finite n (gdsmc_reference_find: the column `T_mean_n` that `gdsmc run`
+ * writes, to the bit) and the Boltzmann limit GRW (13), T(t) = 8/3 + (1 - 8/3) exp(-3t/4).
+ * The program exits with 1 when a point misses its interval of the exact mean (nine points
+ * at 99.9% each: a correct engine fails about one seed in 80).
  *
  * Build (from the repository root, after `cargo build --release -p gdsmc-ffi`):
  *   cc -std=c11 examples/c/grw_example3.c -Iinclude target/release/libgdsmc.a -lm -lpthread -ldl \
@@ -19,8 +20,6 @@
 
 #define M 40
 #define STEPS 8
-/* Student's t quantile, 39 degrees of freedom, two-sided level 1 - 1.374e-3 (3.2 sigma). */
-#define T_QUANTILE 3.446
 
 static int check(gdsmc_status s, const char *what) {
     if (s != GDSMC_OK) {
@@ -33,7 +32,9 @@ static int check(gdsmc_status s, const char *what) {
 }
 
 int main(void) {
-    double sum[STEPS + 1] = {0}, sum2[STEPS + 1] = {0};
+    gdsmc_mean temperature[STEPS + 1] = {{0}};
+    double times[STEPS + 1], mean_at_n[STEPS + 1], limit[STEPS + 1];
+    for (int i = 0; i <= STEPS; i++) times[i] = (double)i;
     gdsmc_config cfg;
     if (check(gdsmc_config_default(&cfg), "gdsmc_config_default")) return 1;
     cfg.n = 4096; /* the defaults are GRW Example 3 */
@@ -45,21 +46,27 @@ int main(void) {
         if (check(gdsmc_sim_create(&cfg, &sim), "gdsmc_sim_create")) return 1;
         for (int i = 0; i <= STEPS; i++) {
             gdsmc_observables o;
-            if (check(gdsmc_sim_advance(sim, (double)i, &o), "gdsmc_sim_advance")) return 1;
-            sum[i] += o.temperature;
-            sum2[i] += o.temperature * o.temperature;
+            if (check(gdsmc_sim_advance(sim, times[i], &o), "gdsmc_sim_advance")) return 1;
+            if (check(gdsmc_mean_add(&temperature[i], o.temperature), "gdsmc_mean_add")) return 1;
         }
         if (check(gdsmc_sim_destroy(&sim), "gdsmc_sim_destroy")) return 1;
     }
-    printf("%6s %12s %12s %12s\n", "t", "T", "99.9% CI", "T exact");
+    /* The references gdsmc run writes beside its means, computed by the same code. */
+    gdsmc_reference at_n, boltzmann;
+    if (check(gdsmc_reference_find(&cfg, times, STEPS + 1, "T_mean_n", &at_n, mean_at_n),
+              "gdsmc_reference_find T_mean_n") ||
+        check(gdsmc_reference_find(&cfg, times, STEPS + 1, "T_exact", &boltzmann, limit),
+              "gdsmc_reference_find T_exact"))
+        return 1;
+    printf("%s, %s (%s)\n", at_n.name, boltzmann.name, at_n.source);
+    printf("%6s %12s %12s %12s %12s\n", "t", "T", "99.9% CI", at_n.name, boltzmann.name);
     int outside = 0;
     for (int i = 0; i <= STEPS; i++) {
-        double mean = sum[i] / M;
-        double var = (sum2[i] - M * mean * mean) / (M - 1);
-        double ci = T_QUANTILE * sqrt(var / M);
-        double exact = 8.0 / 3.0 + (1.0 - 8.0 / 3.0) * exp(-0.75 * i);
-        printf("%6.2f %12.6f %12.6f %12.6f\n", (double)i, mean, ci, exact);
-        outside += fabs(mean - exact) > ci;
+        double mean, ci;
+        if (check(gdsmc_mean_interval(&temperature[i], &mean, &ci), "gdsmc_mean_interval"))
+            return 1;
+        printf("%6.2f %12.6f %12.6f %12.6f %12.6f\n", times[i], mean, ci, mean_at_n[i], limit[i]);
+        outside += fabs(mean - mean_at_n[i]) > ci;
     }
     printf("%d of %d points outside the 99.9%% confidence interval\n", outside, STEPS + 1);
     return outside > 0;

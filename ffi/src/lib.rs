@@ -32,8 +32,12 @@ mod guard;
 pub use guard::fault;
 #[cfg(feature = "std")]
 mod heap;
+#[cfg(feature = "std")]
+mod mean;
 mod observables;
 mod physics;
+#[cfg(feature = "std")]
+mod reference;
 mod sim;
 mod status;
 #[cfg(feature = "std")]
@@ -44,7 +48,11 @@ pub use codes::*;
 pub use config::*;
 #[cfg(feature = "std")]
 pub use heap::*;
+#[cfg(feature = "std")]
+pub use mean::*;
 pub use observables::*;
+#[cfg(feature = "std")]
+pub use reference::*;
 pub use sim::*;
 pub use status::*;
 #[cfg(feature = "std")]

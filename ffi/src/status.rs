@@ -34,6 +34,12 @@ pub enum gdsmc_status {
     /// gdsmc_sim_advance would take more work (candidate events, background events, particle
     /// updates) than the simulation's limit (gdsmc_sim_set_work_limit); nothing was run.
     GDSMC_TOO_MUCH_WORK = 11,
+    /// No reference of that name holds for this configuration (gdsmc_reference_find).
+    GDSMC_NOT_FOUND = 12,
+    /// A reference's arithmetic cannot hold at some of the asked times (its closed form leaves
+    /// the range of double there): the values are filled, NaN at those times, and the message
+    /// names them. Never a wrong number.
+    GDSMC_NOT_COMPUTABLE = 13,
 }
 
 /// Most bytes a message keeps (longer ones are cut at a character boundary).

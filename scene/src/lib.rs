@@ -36,6 +36,7 @@
 
 mod error;
 mod histograms;
+mod of_physics;
 mod overrides;
 mod read;
 pub mod schema;

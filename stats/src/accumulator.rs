@@ -4,6 +4,16 @@
 
 use crate::level::multiplier;
 
+/// Welford's step: `x`, the `count`-th value, moves the running `mean` and the sum of squared
+/// deviations `m2` (the one arithmetic of every ensemble mean: [`Accumulator::push`] and the C
+/// ABI's `gdsmc_mean_add`).
+#[inline]
+pub fn welford(count: u64, mean: &mut f64, m2: &mut f64, x: f64) {
+    let d = x - *mean;
+    *mean += d / count as f64;
+    *m2 += d * (x - *mean);
+}
+
 /// Running mean and sum of squared deviations of a vector of quantities.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Accumulator {
@@ -41,11 +51,8 @@ impl Accumulator {
     pub fn push(&mut self, xs: &[f64]) {
         assert_eq!(xs.len(), self.mean.len());
         self.count += 1;
-        let k = self.count as f64;
         for ((m, s), &x) in self.mean.iter_mut().zip(self.m2.iter_mut()).zip(xs) {
-            let d = x - *m;
-            *m += d / k;
-            *s += d * (x - *m);
+            welford(self.count, m, s, x);
         }
     }
 

@@ -12,7 +12,7 @@ pub mod covariance;
 pub mod level;
 pub mod sample;
 
-pub use accumulator::Accumulator;
+pub use accumulator::{Accumulator, welford};
 pub use covariance::Covariance;
 pub use level::{KNOWN, LAMBDA_999, dof, family, joint, level_999, miss, multiplier, quantile_t};
 pub use sample::{Sample, mean_ci, ratio_of_means};

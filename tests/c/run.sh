@@ -26,6 +26,7 @@ LINK="target/release/libgdsmc.a -lm -lpthread -ldl"
 cc -std=c11 -Wall -Wextra -Werror examples/c/grw_example3.c -Iinclude $LINK -o target/c/grw_example3
 cc -std=c11 -Wall -Wextra -Werror tests/c/bad_args.c -Iinclude $LINK -o target/c/bad_args
 cc -std=c11 -Wall -Wextra -Werror tests/c/same_as_command.c -Iinclude $LINK -o target/c/same_as_command
+cc -std=c11 -Wall -Wextra -Werror tests/c/references_as_command.c -Iinclude $LINK -o target/c/references_as_command
 c++ -std=c++17 -Wall -Wextra -Werror examples/cpp/grw_example3.cpp -Iinclude $LINK -o target/c/grw_example3_cpp
 # The shared library links too.
 cc -std=c11 examples/c/grw_example3.c -Iinclude -Ltarget/release -lgdsmc -lm -o target/c/grw_example3_shared
@@ -40,6 +41,8 @@ $VG ./target/c/bad_args
 $VG ./target/c/grw_example3 > /dev/null
 echo "valgrind: no errors, no leaks"
 
-# The same numbers as the command (MS time-stepped scheme, BRS impact-speed law).
+# The same numbers as the command (MS time-stepped scheme, BRS impact-speed law), and the
+# same references.
 cargo build --release -p gdsmc
 bash tests/c/same_as_command.sh
+bash tests/c/references_as_command.sh

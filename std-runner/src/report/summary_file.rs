@@ -99,9 +99,13 @@ pub struct ReferenceError {
     /// The 99.9% half-width there, on the same scale.
     #[serde(rename = "Conf_end")]
     pub conf_end: f64,
-    /// The largest error over the observation times.
+    /// The largest error over the observation times where the reference is computable (null
+    /// when it is at none).
     #[serde(rename = "E_max")]
     pub e_max: f64,
+    /// The observation times where the reference is not computable (its arithmetic leaves the
+    /// range of f64 there; the column holds NaN): flagged, never an error of 0.
+    pub not_computable: usize,
     /// The time of the largest error.
     #[serde(rename = "t_of_E_max")]
     pub t_of_e_max: f64,
@@ -327,12 +331,16 @@ impl ReferenceError {
     fn of(stats: &RunStats, r: &ReferenceCurve) -> Self {
         let last = stats.times.len() - 1;
         let col = stats.col(r.of).expect("reference of a known column");
-        let (mut e_max, mut t_at) = (0.0f64, 0.0);
+        let (mut e_max, mut t_at, mut not_computable) = (f64::NAN, f64::NAN, 0);
         for (ti, &t) in stats.times.iter().enumerate() {
             let exact = (r.curve)(t);
+            if !exact.is_finite() {
+                not_computable += 1;
+                continue;
+            }
             let d = (stats.mean(ti, col) - exact).abs();
             let e = if exact != 0.0 { d / exact.abs() } else { d };
-            if e > e_max {
+            if e_max.is_nan() || e > e_max {
                 e_max = e;
                 t_at = t;
             }
@@ -350,6 +358,7 @@ impl ReferenceError {
             e_end: (stats.mean(last, col) - exact_end).abs() / scale,
             conf_end: stats.ci(last, col) / scale,
             e_max,
+            not_computable,
             t_of_e_max: t_at,
         }
     }
