@@ -11,6 +11,7 @@ its 99.9% confidence interval, beside the exact or hydrodynamic reference where 
 >>> r = gdsmc.run(scene, n=1024, ensembles=100, seed=1)
 >>> r.times, r.mean["T"], r.ci["T"], r.references["T_exact"]    # numpy arrays
 >>> r.to_pandas()                                               # observables.csv as a DataFrame
+>>> gdsmc.theory.references(scene, n=1024)["T_mean_n"]           # the references, without a run
 
 A run releases the GIL; Ctrl-C (KeyboardInterrupt) lets the running ensembles finish and
 raises :class:`Interrupted`, whose ``result`` holds the finished ones (exactly the result of a
@@ -27,7 +28,7 @@ from typing import Callable, Dict, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _gdsmc, _plot, _state
+from . import _gdsmc, _plot, _state, theory
 from ._progress import _progress, _set_total, _TextBar  # noqa: F401 (the tests use them)
 from ._gdsmc import STREAM_VERSION, RunError, Scene, SceneError, __version__
 from ._state import State, read_state
@@ -45,6 +46,7 @@ __all__ = [
     "sweep",
     "Swept",
     "reproduce",
+    "theory",
     "__version__",
     "STREAM_VERSION",
 ]

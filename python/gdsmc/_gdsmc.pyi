@@ -82,6 +82,9 @@ def sweep(
     allow_long: bool = False,
     total: Optional[Callable[[int], Any]] = None,
 ) -> Tuple[str, str, int, bool]: ...
+def references(
+    scene: Scene, times: Optional[List[float]] = None, n: Optional[int] = None
+) -> Tuple[List[float], List[Tuple[str, str, str, str, List[float]]]]: ...
 def reproduce(
     names: List[str], quick: bool = True, threads: int = 0, seed: int = 1
 ) -> Tuple[str, List[str], List[str]]: ...

@@ -8,6 +8,7 @@ mod result;
 mod scene;
 mod state;
 mod sweep;
+mod theory;
 
 use pyo3::prelude::*;
 
@@ -78,5 +79,6 @@ fn _gdsmc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(state::read_state, m)?)?;
     m.add_function(wrap_pyfunction!(result::reproduce, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(theory::references, m)?)?;
     Ok(())
 }

@@ -4,11 +4,11 @@
 
 use crate::scene::Scene;
 use crate::to_py;
-use gdsmc_theory::curves::for_scene;
 use gdsmc_runner::report;
 use gdsmc_runner::run::state::{StateHeader, StateReader, StateWriter};
 use gdsmc_runner::run::{self as runner, RunStats};
 use gdsmc_runner::scene as sc;
+use gdsmc_theory::curves::for_scene;
 use pyo3::prelude::*;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};

@@ -345,3 +345,36 @@ def test_sweep_takes_the_scene_table_and_refuses_bad_values():
         gdsmc.sweep(scene, "collisions.restitution=0:1:x", n=64, ensembles=2)
     with pytest.raises(gdsmc.SceneError, match="point 1"):
         gdsmc.sweep(scene, {"collisions.restitution": [0.5, 1.5]}, n=64, ensembles=2)
+
+
+@pytest.mark.parametrize(
+    "name,n",
+    [("grw-example3", 300), ("ms-white-noise", 256), ("brs-example2", 128), ("mixture-maxwell", 200)],
+)
+def test_theory_gives_the_commands_reference_columns_without_a_run(tmp_path, name, n):
+    """gdsmc.theory.references: every reference column of `gdsmc run`, to the bit, with
+    nothing run (the exact means at n, the limits, the approximations)."""
+    out = command(tmp_path, SCENES / f"{name}.toml", "--n", str(n), "--ensembles", "2")
+    with open(out / "observables.csv") as f:
+        table = list(csv.DictReader(f))
+    refs = gdsmc.theory.references(SCENES / f"{name}.toml", n=n)
+    assert len(refs) > 0
+    assert np.array_equal(refs.times, [float(r["t"]) for r in table])
+    for name_ in refs:
+        written = np.array([float(r[name_]) for r in table])
+        assert np.array_equal(refs[name_], written, equal_nan=True), name_
+        assert refs.kind[name_] in ("mean_at_n", "limit", "approximation")
+        assert refs.of[name_] in table[0]
+
+
+def test_theory_flags_what_it_cannot_compute_and_refuses_bad_times():
+    scene = gdsmc.Scene.from_file(SCENES / "grw-example3.toml").set("collisions.gamma", 1e-300)
+    with pytest.warns(UserWarning, match="a2_exact is not computable here"):
+        refs = gdsmc.theory.references(scene, times=[0.0, 1.0, 8.0], n=64)
+    assert refs.not_computable["a2_exact"] == 3
+    assert np.all(np.isnan(refs["a2_exact"]))
+    assert np.array_equal(refs["T_exact"], [1.0, 3.0, 17.0])
+    with pytest.raises(KeyError, match="T_bulk_sonine"):
+        refs["T_bulk_sonine"]
+    with pytest.raises(gdsmc.SceneError, match="times"):
+        gdsmc.theory.references(scene, times=[0.0, 2.0, 1.0])
