@@ -3,7 +3,7 @@
 //! each loop's own kernel and map, against values derived independently of that code:
 //!
 //! - the Maxwell kernel: `zeta* = (1 - alpha^2)/4 n/(n - 1)` in every state and dimension
-//!   (reference/curves/cooling.rs) and `nu = (n - 1)/n 4 pi gamma C` exactly;
+//!   (theory/src/curves/cooling.rs) and `nu = (n - 1)/n 4 pi gamma C` exactly;
 //! - hard particles at the initial Maxwellian (temperatures `T_t`, and `T_r` for rough ones):
 //!   a collision loses on average `(1 - alpha^2) T_t` of translational energy (smooth), and
 //!   `(1 - alpha^2) T_t + (1 - beta^2)(kappa T_t + T_r)/(1 + kappa)` (rough spheres) or

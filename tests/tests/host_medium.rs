@@ -66,7 +66,7 @@ fn temperature_follows_brs_15_at_large_n() {
     }
 }
 
-/// The exact finite-n mean of T_bulk (reference/exact.rs, the closed second-moment system) at
+/// The exact finite-n mean of T_bulk (theory/src/exact.rs, the closed second-moment system) at
 /// n = 4 and 16, where its bias against BRS (15) is 25% and 6% at t = 0: every one of 9 times
 /// of BRS Examples 1-3 within the joint 99.9% range of the 3 x 2 x 9 means (Student t,
 /// Bonferroni over the 54), and the check shown able to fail: BRS (15) itself, the n = infinity

@@ -110,7 +110,7 @@ fn collisions_per_particle_have_the_maxwell_rate() {
     );
 }
 
-/// The heated Maxwell gas's exact `a2(t)` (reference/maxwell_cumulant.rs: the moment equations
+/// The heated Maxwell gas's exact `a2(t)` (theory/src/maxwell_cumulant.rs: the moment equations
 /// with the white noise's kicks, `mu_4' = -A mu_4 + K b_4 mu_2^2 + 4 (d + 2) beta mu_2`),
 /// GRW Example 3 (d = 3) and in disks, at n = 4096 where the O(1/n) of a mean at finite n is
 /// a small part of the interval: within the 99.9% interval jointly over four times

@@ -197,7 +197,7 @@ fn the_weighted_cooling_gas_has_the_exact_a2() {
     }
 }
 
-/// The white-noise-heated Maxwell gas's exact a2(t) (reference/maxwell_cumulant.rs, GRW
+/// The white-noise-heated Maxwell gas's exact a2(t) (theory/src/maxwell_cumulant.rs, GRW
 /// Example 3) under weights (`n0 = 1024`, the shipped weighted settings): within the 99.9%
 /// interval jointly over three times, the interval 10% of a2 or less; the cooling state's
 /// solution (no kicks) is refused at t = 8.

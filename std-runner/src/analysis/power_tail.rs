@@ -32,7 +32,7 @@ pub const EXACT: &str = "tail_exponent_exact";
 
 /// Where the exact root comes from.
 pub const EXACT_SOURCE: &str =
-    "Ernst and Brito 2002, the root of lambda_s = s lambda_2 / 2 (reference/maxwell_cumulant.rs)";
+    "Ernst and Brito 2002, the root of lambda_s = s lambda_2 / 2 (theory/src/maxwell_cumulant.rs)";
 
 /// The largest 99.9% half-width over the mean of a resolved tail weight.
 pub const RESOLVED: f64 = 0.2;
@@ -97,7 +97,7 @@ impl PowerTail {
     #[must_use]
     pub fn words(&self) -> String {
         let exact = self.exact.map_or(String::new(), |e| {
-            format!("; exact root (Ernst and Brito 2002, reference/maxwell_cumulant.rs) {e:.4}")
+            format!("; exact root (Ernst and Brito 2002, theory/src/maxwell_cumulant.rs) {e:.4}")
         });
         let Some(m) = self.measured else {
             return format!(
@@ -142,7 +142,7 @@ impl PowerTail {
 /// time-stepped scheme).
 #[must_use]
 pub fn exact_exponent(scene: &Scene) -> Option<f64> {
-    // The same model as the exact a2 of reference/maxwell_cumulant.rs.
+    // The same model as the exact a2 of theory/src/maxwell_cumulant.rs.
     gdsmc_theory::curves::maxwell_cumulant(scene)?;
     let heating = scene.model().heating()?;
     let alpha = scene.physics().restitution.constant()?;

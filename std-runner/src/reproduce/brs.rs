@@ -97,7 +97,7 @@ fn table(
             .fold(0.0, f64::max);
         let our_conf = width(sd_abs, n_rep as f64);
         // The exact relative bias of the ensemble mean at each time (the closed moment
-        // system of reference/exact.rs) and our spread of one ensemble.
+        // system of theory/src/exact.rs) and our spread of one ensemble.
         let law = MaxLaw::over(s.times(), &rel, |t| {
             (h.finite_n_bulk_mean(n, t) - h.temperature(t)) / h.temperature(t)
         });
@@ -137,7 +137,7 @@ fn table(
             "Err = max over the 513 points t_i = i/512 of |T(t_i) - mean| / T(t_i), the \
              temperature about the bulk velocity against the exact BRS (15). The ensemble \
              mean's bias at every n is exact: for Maxwell kernels in a Maxwell host medium the \
-             n-grain second moments obey a closed linear system (reference/exact.rs, \
+             n-grain second moments obey a closed linear system (theory/src/exact.rs, \
              HostMediumMaxwell::finite_n_bulk_mean; -1/n relative at t = 0), so both figures \
              are judged against the exact largest bias, within the largest noise over the 513 \
              times (Bonferroni): ours from more ensembles than BRS ran, BRS's from our spread \

@@ -193,7 +193,7 @@ fn table(
              times on [0, 8] (GRW do not state their grid); GRW ran {PAPER_ENSEMBLES} ensembles \
              per row. E_max (GRW (29)) is judged against its exact expectation: the ensemble \
              mean's bias is known exactly, (T0 (1 - e^(-kt)) + 2 beta (t - (1 - e^(-kt))/k))/n \
-             relative (reference/exact.rs), and the noise moves the largest error by at most \
+             relative (theory/src/exact.rs), and the noise moves the largest error by at most \
              the largest noise over the times (Bonferroni bound, bounds.rs). GRW give no \
              interval, so their noise is ours rescaled to {PAPER_ENSEMBLES} ensembles. GRW's \
              E_max lie about 10% above the exact value (5.9/n against 5.39/n at t = 8, as RW's \

@@ -66,7 +66,7 @@ pub(super) fn hard_maxwellian(scene: &Scene) -> Vec<ReferenceCurve> {
 mod tests {
     use crate::balance::{collision_rate, cooling_constant};
 
-    /// The energy balance's Maxwellian cooling constant (reference/balance.rs, derived there
+    /// The energy balance's Maxwellian cooling constant (theory/src/balance.rs, derived there
     /// from the scattering of GRW (3)) over its Maxwellian collision rate is the `zeta*` these
     /// references state: `(1 - alpha^2)/d` for hard particles, `(1 - alpha^2)/4` for the
     /// Maxwell kernel (n -> infinity), in d = 2 and 3.

@@ -53,7 +53,7 @@ fn approximation(scene: &Scene) -> Option<crate::mixture::MaxwellianApproximatio
 const ROUGH_SPECIES_REFERENCES: [&str; gdsmc_core::mixture::MAX_SPECIES] =
     ["theta_s0_MA", "theta_s1_MA", "theta_s2_MA", "theta_s3_MA"];
 
-/// The Maxwellian approximation of a rough mixture scene (`reference/rough_mixture.rs`),
+/// The Maxwellian approximation of a rough mixture scene (`theory/src/rough_mixture.rs`),
 /// from the validated model: mole fractions, masses, each pair's law (alpha, beta, the
 /// partners' kappa) and cross section, the kernel, each species' white noise.
 pub fn rough_mixture_approximation(
@@ -162,7 +162,7 @@ pub(super) fn garzo_dufty_curves(scene: &Scene) -> Vec<ReferenceCurve> {
         .collect()
 }
 
-/// The closed second moments of the Maxwell mixture (`reference/mixture`) and its mole
+/// The closed second moments of the Maxwell mixture (`theory/src/mixture`) and its mole
 /// fractions, for a scene the approximation's reading of holds for.
 fn maxwell_mixture(scene: &Scene) -> Option<(Arc<MaxwellMixture>, Vec<f64>)> {
     let ma = approximation(scene)?;

@@ -146,7 +146,7 @@ pub fn hydro_models(scene: &Scene) -> Option<[crate::hydro::HydroModel; 2]> {
 }
 
 /// The Boltzmann limit of `a2(t)` of the smooth one-species Maxwell gas
-/// (`reference/maxwell_cumulant.rs`) under every drive that heats linearly: cooling, white
+/// (`theory/src/maxwell_cumulant.rs`) under every drive that heats linearly: cooling, white
 /// noise, the Gaussian thermostat (which leaves it as cooling has it) and the Langevin
 /// thermostat, when the scene is one; not for MS's time-stepped scheme, whose collisions are
 /// not the Maxwell process's.

@@ -6,7 +6,7 @@ use crate::columns::name;
 use crate::initial::initial_temperature;
 use gdsmc_scene::Scene;
 
-/// The Maxwellian approximation of a rough gas (`reference/rough.rs`), when the scene is one.
+/// The Maxwellian approximation of a rough gas (`theory/src/rough.rs`), when the scene is one.
 pub fn rough_approximation(scene: &Scene) -> Option<crate::rough::RoughApproximation> {
     let r = scene.physics().rotation?;
     let alpha = scene.physics().restitution.constant()?;

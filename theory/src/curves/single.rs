@@ -16,7 +16,7 @@ pub(super) fn a2_exact(scene: &Scene) -> Vec<ReferenceCurve> {
         .map(|m| ReferenceCurve {
             name: "a2_exact",
             of: name::A2,
-            source: "the inelastic Maxwell gas's moment equations (Bobylev, Carrillo and Gamba 2000; Santos 2003 for d = 2), a2(t) in the Boltzmann limit; derived in reference/maxwell_cumulant.rs",
+            source: "the inelastic Maxwell gas's moment equations (Bobylev, Carrillo and Gamba 2000; Santos 2003 for d = 2), a2(t) in the Boltzmann limit; derived in theory/src/maxwell_cumulant.rs",
             kind: Kind::Limit,
             curve: Box::new(move |t| m.at(t)),
         })

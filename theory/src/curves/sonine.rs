@@ -1,5 +1,5 @@
 //! The curves of the smooth gas's energy balance and Sonine estimates: Haff's law and its
-//! heated forms (`reference/balance.rs`) for `T_bulk`, and MS's first-Sonine `a2` of the
+//! heated forms (`theory/src/balance.rs`) for `T_bulk`, and MS's first-Sonine `a2` of the
 //! cooling state (MS (5), (40)), the white-noise state (MS (10), (32)) and the constant-force
 //! state (MS (50), (76)). All are approximations: shown beside the run, not judged. Each is a
 //! builder of [`super::registry`], called where its declaration holds.
@@ -76,7 +76,7 @@ pub(super) fn curves(scene: &Scene) -> Vec<ReferenceCurve> {
     }
     push(
         "T_bulk_MA",
-        "Haff's law: the energy balance at a Maxwellian's cooling rate, the drive's heating added (reference/balance.rs); an approximation",
+        "Haff's law: the energy balance at a Maxwellian's cooling rate, the drive's heating added (theory/src/balance.rs); an approximation",
         balance,
     );
     out

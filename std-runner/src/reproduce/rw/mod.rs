@@ -133,7 +133,7 @@ fn table1(o: &Options, seed: u64) -> Result<Table, Error> {
             "Raw temperature (RW (23)) against RW (28) at the observation times 0, 0.25, ..., 8; \
              RW: N = {PAPER_ENSEMBLES} ensembles. E_end and E_max are judged against their \
              exact expectation (the ensemble mean's bias is known exactly: 5.39/n relative at \
-             t = 8, reference/exact.rs), ours with our interval, RW's with RW's own stated \
+             t = 8, theory/src/exact.rs), ours with our interval, RW's with RW's own stated \
              interval: {CONF_IS_A_WIDTH}. Conf_end is shown beside ours, the width of a \
              {PAPER_ENSEMBLES}-ensemble interval at t = 8 read the same way: {}. With so wide \
              an interval RW's figures for n >= 4096 cannot be judged (uninformative). RW's \
@@ -220,7 +220,7 @@ fn table2(o: &Options, seed: u64) -> Result<Table, Error> {
         notes: format!(
             "dt = 8/K, observed at the K + 1 grid times; raw temperature against RW (28). \
              Judged against the exact E_max of the splitting schemes' ensemble mean \
-             (reference/exact.rs, splitting_bulk_mean plus the raw-temperature term), with the \
+             (theory/src/exact.rs, splitting_bulk_mean plus the raw-temperature term), with the \
              Bonferroni bound of the largest noise over the K + 1 times (bounds.rs). RW give no \
              interval for Table 2, so RW's noise is ours rescaled to their N = \
              {PAPER_ENSEMBLES} (their default); no allowance is borrowed from Table 1."

@@ -193,7 +193,7 @@ fn steady_notes(extra: &str) -> String {
         "One ensemble of n = 65536 as RW; the raw temperature averaged over s = 8, 10, ..., 136 \
          with its 99.9% half-width from the spread of those points (widened for their lag-1 \
          autocorrelation, Student t over the points). Both figures are judged against the exact \
-         mean of RW (23)'s raw temperature average (finite n, time step; reference/exact.rs) \
+         mean of RW (23)'s raw temperature average (finite n, time step; theory/src/exact.rs) \
          with the estimator's own scatter: ours is the same estimator (one ensemble, the same \
          n, scheme and points), so our half-width is the range of both figures. RW's Conf is \
          shown beside ours read as RW define it, \"the width of the confidence interval\" (RW \
