@@ -81,10 +81,14 @@ fn every_chart_of_every_shipped_scene_is_readable() {
             power.as_ref(),
         );
         for &col in &st.names {
-            assert!(
+            // Disks move in the plane: no chart of their V_z, which is 0 by construction.
+            let flat = s.dimension() == 2 && col == gdsmc_runner::run::columns::name::V_Z;
+            assert_eq!(
                 all.iter().any(|(stem, c)| stem == col && c.is_ok()),
-                "{}: no chart of {col}",
-                s.name()
+                !flat,
+                "{}: a chart of {col} {}",
+                s.name(),
+                if flat { "drawn" } else { "missing" }
             );
         }
         for (stem, chart) in &all {

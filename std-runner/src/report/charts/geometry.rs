@@ -14,6 +14,9 @@ pub const MIN_BAND_PX: f64 = (LINE_WIDTH + 4) as f64;
 /// Largest relative luminance of a line on the white canvas (pure green's is 0.72: it
 /// vanishes in grey scale and in print).
 pub const MAX_LINE_LUMINANCE: f64 = 0.6;
+/// Longest tick label, characters: what the 80 px beside an axis hold, and what a tick between
+/// its neighbours on the x axis can take without overprinting them.
+pub const MAX_TICK_CHARS: usize = 10;
 /// Smallest luminance difference that tells two lines of the same dash apart in grey scale.
 pub const MIN_LUMINANCE_STEP: f64 = 0.3;
 
@@ -100,6 +103,8 @@ pub struct Geometry {
     pub data: Vec<(i32, i32)>,
     /// The tallest extent of the confidence band in pixels, when a band is drawn.
     pub band_px: Option<f64>,
+    /// Every tick label drawn on the axes.
+    pub ticks: Vec<String>,
 }
 
 impl Geometry {
@@ -118,6 +123,7 @@ impl Geometry {
             },
             data: Vec::new(),
             band_px: None,
+            ticks: Vec::new(),
         }
     }
 
@@ -128,7 +134,7 @@ impl Geometry {
     /// grey scale cannot tell apart (luminances closer than [`MIN_LUMINANCE_STEP`]), an axis
     /// label longer than its panel (so it overprints its neighbour's), a solid line drawn over
     /// a dashed one (hiding it where they meet), an axis label that is only a symbol (no word
-    /// of four letters or more).
+    /// of four letters or more), a tick label longer than [`MAX_TICK_CHARS`].
     pub fn objections(&self) -> Vec<String> {
         let mut out = Vec::new();
         if self.plots.is_empty() {
@@ -148,6 +154,16 @@ impl Geometry {
             .find(|&&d| !self.plots.iter().any(|p| p.contains(d)))
         {
             out.push(format!("data at {d:?} outside the plotting areas"));
+        }
+        if let Some(t) = self
+            .ticks
+            .iter()
+            .find(|t| t.chars().count() > MAX_TICK_CHARS)
+        {
+            out.push(format!(
+                "the tick label \"{t}\" is longer than {MAX_TICK_CHARS} characters: it overprints \
+                 its neighbours"
+            ));
         }
         if let Some(px) = self.band_px
             && px < MIN_BAND_PX
@@ -278,6 +294,7 @@ mod tests {
             },
             data: vec![(150, 200)],
             band_px: Some(4.0),
+            ticks: vec!["0.5".into(), "1".into()],
         }
     }
 
@@ -317,6 +334,9 @@ mod tests {
         let mut hidden = g.clone();
         hidden.layers.swap(0, 1);
         assert!(hidden.objections()[0].contains("drawn over the dashed \"T_exact\""));
+        let mut zero = g.clone();
+        zero.ticks.push("-0.000000000000000111022302463".into());
+        assert!(zero.objections()[0].contains("overprints its neighbours"));
         let mut long = g.clone();
         long.axes[0].1 = "a temperature label much longer than the panel is tall ".repeat(2);
         assert!(long.objections()[0].contains("longer than its panel's height"));

@@ -75,7 +75,8 @@ impl Scale {
     /// The value a drawn coordinate stands for, as a tick label.
     fn label(self, c: f64) -> String {
         if !self.log {
-            return format!("{}", (c * 1e6).round() / 1e6);
+            // `+ 0.0`: a tick at -1e-16 rounds to -0, printed "-0".
+            return format!("{}", (c * 1e6).round() / 1e6 + 0.0);
         }
         // Decades only: a tick between them stays a grid line without words.
         if (c - c.round()).abs() < 1e-9 {
@@ -386,7 +387,7 @@ pub fn chart(
     Ok(Chart { svg, geometry })
 }
 
-/// Every observable's chart, `(file stem, chart)`, in the order of the columns; `title`
+/// Every observable's chart (but `V_z` for disks), `(file stem, chart)`, in the order of the columns; `title`
 /// (the physics, size, ensembles) heads each, the observable names its y axis.
 pub fn charts(
     title: &str,
@@ -396,6 +397,10 @@ pub fn charts(
 ) -> Vec<(String, Result<Chart, String>)> {
     let mut out = Vec::new();
     for (col, &name) in stats.names.iter().enumerate() {
+        // Disks move in the plane: V_z is 0 by construction, a chart of nothing.
+        if stats.dimension == 2 && name == crate::run::columns::name::V_Z {
+            continue;
+        }
         let these: Vec<&ReferenceCurve> = refs.iter().filter(|r| r.of == name).collect();
         out.push((name.to_string(), chart(stats, labels, col, title, &these)));
     }
