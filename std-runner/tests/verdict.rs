@@ -172,3 +172,28 @@ fn references_at_the_edge_of_their_numbers_are_right_or_flagged() {
         }
     }
 }
+
+/// The summary leads with the granular temperature about the flow: a cooling gas's table has
+/// `T_bulk` first and no raw `T` (frozen at the initial sample's centre-of-mass energy while
+/// `T_bulk` falls by decades), and where a reference is of the raw `T` (GRW's estimator) it
+/// follows `T_bulk`.
+#[test]
+fn the_summary_leads_with_the_temperature_about_the_flow() {
+    let head = |out: &str| {
+        let i = out.find("\n       t ").expect("the time table");
+        out[i + 1..].lines().next().unwrap().to_string()
+    };
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/hcs-hard-spheres.toml");
+    let mut s = scene::load(&path).unwrap();
+    s.set_n(64).unwrap();
+    s.set_ensembles(3).unwrap();
+    let st = gdsmc_runner::run::run(&s, 0, &|_| {}).unwrap();
+    let h = head(&text(&s, &st, &for_scene(&s)));
+    let cols: Vec<&str> = h.split_whitespace().collect();
+    assert_eq!(cols[1], name::T_BULK, "{h}");
+    assert!(!cols.contains(&name::T), "{h}");
+    let (s, st) = grw3();
+    let h = head(&text(&s, &st, &for_scene(&s)));
+    let at = |c: &str| h.find(&format!(" {c} +- ")).unwrap_or(usize::MAX);
+    assert!(at(name::T_BULK) < at(name::T) && at(name::T) < usize::MAX, "{h}");
+}

@@ -103,9 +103,10 @@ function fromLink() {
   $("sets").value = q.getAll("set").join("\n");
 }
 
-// The charts shown live: the temperature, a2 and the distribution when there is one.
+// The charts shown live: the temperature about the flow (the granular temperature; the raw T
+// keeps the initial sample's centre-of-mass energy), a2 and the distribution when there is one.
 function liveStems(charts) {
-  const want = ["T", "a2", "reduced", "T_bulk", "v4"];
+  const want = ["T_bulk", "a2", "reduced", "T", "v4"];
   const stems = want.filter((s) => s in charts);
   for (const s of Object.keys(charts)) if (stems.length < 3 && !stems.includes(s)) stems.push(s);
   return stems.slice(0, 3);

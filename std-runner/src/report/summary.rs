@@ -52,7 +52,15 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         );
     }
     let mixture = !scene.physics().species.is_empty();
-    let mut shown = vec![name::T, name::T_BULK, name::A2, name::CRIT];
+    // The granular temperature is the one about the flow (`T_bulk`): it leads. The raw `T`
+    // (about zero velocity) keeps the initial sample's centre-of-mass energy, frozen while a
+    // cooling gas's `T_bulk` falls by decades (6.3e-4 against 1e-10 in hcs-hard-spheres): it is
+    // shown only where a reference is of it, a paper's estimator defined on it (GRW's).
+    let raw_judged = refs.iter().any(|r| r.of == name::T);
+    let mut shown = vec![name::T_BULK, name::A2, name::CRIT];
+    if raw_judged {
+        shown.insert(1, name::T);
+    }
     if mixture {
         let cols = crate::run::columns::SPECIES_COLUMNS;
         let _ = write!(s, "species   ");
@@ -227,8 +235,8 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         // falling: a window mean of them is no state; only the scale-free quantities settle.
         let cooling = scene.physics().cools_freely();
         let mut names = vec![
-            name::T,
             name::T_BULK,
+            name::T,
             name::A2,
             name::A3,
             name::CRIT,
@@ -272,7 +280,7 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         }
         let names: Vec<&str> = names
             .into_iter()
-            .filter(|n| stats.col(n).is_some())
+            .filter(|n| stats.col(n).is_some() && (*n != name::T || raw_judged))
             .collect();
         let width = names.iter().map(|n| n.len()).max().unwrap_or(0).max(8);
         let window = &stats.times[st.first..];
