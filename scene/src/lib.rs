@@ -31,8 +31,7 @@
 //! key=value`, `--n`, `--ensembles`, `--seed`) are applied to the text and validated the same
 //! way ([`Override`]).
 //!
-//! The crate depends on the core, serde and toml only, so the command, the C ABI and other
-//! front ends read scenes alike.
+//! On the core, serde and toml only: the command, the C ABI and other front ends read alike.
 
 mod error;
 mod histograms;

@@ -195,5 +195,8 @@ fn the_summary_leads_with_the_temperature_about_the_flow() {
     let (s, st) = grw3();
     let h = head(&text(&s, &st, &for_scene(&s)));
     let at = |c: &str| h.find(&format!(" {c} +- ")).unwrap_or(usize::MAX);
-    assert!(at(name::T_BULK) < at(name::T) && at(name::T) < usize::MAX, "{h}");
+    assert!(
+        at(name::T_BULK) < at(name::T) && at(name::T) < usize::MAX,
+        "{h}"
+    );
 }

@@ -56,6 +56,15 @@ pub fn collision_rate(d: usize, gc: f64, lambda: f64, t: f64) -> f64 {
     4.0 * PI * gc * libm::pow(4.0 * t, 0.5 * lambda) * gamma((df + lambda) / 2.0) / gamma(df / 2.0)
 }
 
+/// The kinetic theory's collision frequency of hard spheres, `nu_0 = (16/5) sqrt(pi) n sigma^2
+/// sqrt(T/m)` (Garzó and Dufty 1999; Brey, Dufty and Santos; the shear-viscosity frequency of
+/// the Boltzmann equation), in the units of [`collision_rate`]: `4/5` of the Maxwellian
+/// collision rate at `T` (`4 sqrt(pi) n sigma^2 sqrt(T/m)`). The literature reduces the cooling
+/// rate by it: `zeta* = zeta / nu_0 = 5/12 (1 - alpha^2)(1 + 3 a2/16)` to first Sonine order.
+pub fn nu0_hard_spheres(gc: f64, t: f64) -> f64 {
+    0.8 * collision_rate(3, gc, 1.0, t)
+}
+
 /// The first Sonine correction `1 + 3 a2 / 16` of a hard-particle gas's cooling rate (van
 /// Noije and Ernst 1998, any `d`).
 pub fn sonine_factor(a2: f64) -> f64 {

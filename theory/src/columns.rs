@@ -87,6 +87,13 @@ pub const COOLING_COLUMNS: [&str; gdsmc_core::mixture::MAX_SPECIES + 1] =
 /// the flow (translation and rotation) and `zeta_star = zeta / nu`.
 pub const CLOSING_COLUMNS: [&str; 3] = ["nu", "zeta", "zeta_star"];
 
+/// After [`CLOSING_COLUMNS`], for smooth hard spheres of one species: the cooling rate reduced
+/// as the kinetic-theory literature reduces it, `zeta_star_nu0 = zeta / nu_0` with `nu_0 =
+/// (16/5) sqrt(pi) n sigma^2 sqrt(T_bulk/m)` (Garzó and Dufty 1999; `balance::nu0_hard_spheres`)
+/// at the observation's `T_bulk`: `5/12 (1 - alpha^2)(1 + 3 a2/16)` to first Sonine order, where
+/// `zeta_star` (by the measured collision frequency) is `(1 - alpha^2)/3` at a Maxwellian.
+pub const LITERATURE_ZETA_STAR: &str = "zeta_star_nu0";
+
 /// A rough mixture's rotational temperature `T_rot_mix = sum_s x_s T_rot,s` (after the
 /// species' translational columns).
 pub const ROUGH_MIXTURE_TEMPERATURE: &str = "T_rot_mix";

@@ -12,6 +12,9 @@ pub struct Collisional {
     pub mixture_rates: bool,
     /// [`super::columns::CLOSING_COLUMNS`]: every gas.
     pub cooling: bool,
+    /// [`gdsmc_theory::columns::LITERATURE_ZETA_STAR`] after them: smooth hard spheres of one
+    /// species (the literature's `nu_0` is theirs).
+    pub nu0: bool,
 }
 
 /// What `observe.collisional_pairs` adds for `scene` ([`Collisional`]).
@@ -31,5 +34,6 @@ pub fn collisional(scene: &crate::scene::Scene) -> Collisional {
             && smooth_spheres
             && crate::run::cooling::CoolingRates::new(scene).is_some(),
         cooling: on,
+        nu0: on && ph.species.is_empty() && smooth_spheres && ph.kernel.kind().hard(),
     }
 }

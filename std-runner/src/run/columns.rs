@@ -2,8 +2,8 @@
 
 use gdsmc_core::moments::Observables;
 pub use gdsmc_theory::columns::{
-    CLOSING_COLUMNS, COLLISIONAL, COOLING_COLUMNS, MIXTURE_TEMPERATURE, ROUGH_COLUMNS,
-    ROUGH_MIXTURE_TEMPERATURE, ROUGH_SPECIES_COLUMNS, SPECIES_COLUMNS, name,
+    CLOSING_COLUMNS, COLLISIONAL, COOLING_COLUMNS, LITERATURE_ZETA_STAR, MIXTURE_TEMPERATURE,
+    ROUGH_COLUMNS, ROUGH_MIXTURE_TEMPERATURE, ROUGH_SPECIES_COLUMNS, SPECIES_COLUMNS, name,
 };
 
 /// One observable column of observables.csv.
@@ -173,6 +173,9 @@ pub fn names(scene: &crate::scene::Scene) -> Vec<&'static str> {
     if coll.cooling {
         v.extend(CLOSING_COLUMNS);
     }
+    if coll.nu0 {
+        v.push(LITERATURE_ZETA_STAR);
+    }
     v
 }
 
@@ -233,6 +236,10 @@ pub fn axis_label_in(name: &str, species: &[String]) -> String {
         "nu" => ("collision frequency nu = ds/dt", "(1/scene time unit)"),
         "zeta" => ("cooling rate zeta = -(dE/dt)_coll/E", "(1/scene time unit)"),
         "zeta_star" => ("reduced cooling rate zeta* = zeta/nu", NONE),
+        LITERATURE_ZETA_STAR => (
+            "reduced cooling rate zeta* = zeta/nu_0 (Garzó and Dufty's nu_0)",
+            NONE,
+        ),
         name::TAIL_EXPONENT => ("power-law tail exponent s of P(c >= x) ~ x^-s", NONE),
         _ => return species_label(name, species).unwrap_or_else(|| name.to_string()),
     };

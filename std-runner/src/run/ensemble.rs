@@ -270,6 +270,13 @@ fn observe<E: EventLoop>(
         if coll.cooling {
             let c = engine.cooling(p, scene.collisional_pairs(), &mut diag);
             out.extend([c.frequency, c.zeta(), c.zeta_star]);
+            if coll.nu0 {
+                let nu0 = gdsmc_theory::balance::nu0_hard_spheres(
+                    scene.physics().kernel.strength(),
+                    obs.t_bulk,
+                );
+                out.push(c.zeta() / nu0);
+            }
         }
     }
     // The state at the last observation, for a continuation.

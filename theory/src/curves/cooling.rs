@@ -62,9 +62,29 @@ pub(super) fn hard_maxwellian(scene: &Scene) -> Vec<ReferenceCurve> {
     )]
 }
 
+/// `zeta_star_nu0_sonine = 5/12 (1 - alpha^2)(1 + 3 a2/16)`: the literature's reduced cooling
+/// rate of hard spheres (`zeta / nu_0`, Garzó and Dufty 1999; the column
+/// `zeta_star_nu0`) to first Sonine order, at the state's `a2` (MS (5) for a drive that only
+/// rescales, MS (10) for white noise: `super::sonine::state_a2`). An approximation.
+pub(super) fn literature_sonine(scene: &Scene) -> Vec<ReferenceCurve> {
+    let Some(a) = alpha(scene) else {
+        return Vec::new();
+    };
+    let Some((a2, _)) = super::sonine::state_a2(scene, a) else {
+        return Vec::new();
+    };
+    vec![ReferenceCurve {
+        name: "zeta_star_nu0_sonine",
+        of: crate::columns::LITERATURE_ZETA_STAR,
+        source: "zeta* = zeta/nu_0 of hard spheres to first Sonine order, 5/12 (1 - alpha^2)(1 + 3 a2/16) (Garzó and Dufty 1999; a2 of MS (5) or (10))",
+        kind: Kind::Approximation,
+        curve: Box::new(move |_| 5.0 / 12.0 * (1.0 - a * a) * crate::balance::sonine_factor(a2)),
+    }]
+}
+
 #[cfg(test)]
 mod tests {
-    use crate::balance::{collision_rate, cooling_constant};
+    use crate::balance::{collision_rate, cooling_constant, nu0_hard_spheres};
 
     /// The energy balance's Maxwellian cooling constant (theory/src/balance.rs, derived there
     /// from the scattering of GRW (3)) over its Maxwellian collision rate is the `zeta*` these
@@ -87,5 +107,10 @@ mod tests {
                 "d = {d}"
             );
         }
+        // The literature's zeta* of hard spheres at a Maxwellian: the Maxwellian cooling rate
+        // over nu_0 is 5/12 (1 - alpha^2) (Garzó and Dufty 1999).
+        let literature =
+            cooling_constant(3, true, gc, 1.0, alpha) * t.sqrt() / nu0_hard_spheres(gc, t);
+        assert!((literature - 5.0 / 12.0 * (1.0 - alpha * alpha)).abs() < 1e-12);
     }
 }

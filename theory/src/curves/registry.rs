@@ -372,6 +372,18 @@ pub const REFERENCES: &[Reference] = &[
         curves: cooling::maxwell,
     },
     Reference {
+        id: "zeta* = zeta/nu_0 to first Sonine order",
+        kind: Kind::Approximation,
+        holds: Holds {
+            dimensions: &[3],
+            drives: &[Drive::Rescaling, Drive::Is(DriveKind::WhiteNoise)],
+            ..smooth_cooling(Kernels::Hard, Schemes::Any)
+        },
+        columns: &["zeta_star_nu0_sonine"],
+        cites: &[],
+        curves: cooling::literature_sonine,
+    },
+    Reference {
         id: "zeta* of hard particles at a Maxwellian",
         kind: Kind::Approximation,
         holds: smooth_cooling(Kernels::Hard, Schemes::Any),

@@ -17,7 +17,7 @@ use std::sync::Arc;
 /// equation it is: MS (5) for the cooling state (a drive that only rescales the velocities, as
 /// it declares: none, the Gaussian thermostat, a drag; MS Section 2.2), MS (10) for white noise
 /// (both in `d` dimensions); none for a drive whose state MS do not give.
-fn state_a2(scene: &Scene, alpha: f64) -> Option<(f64, &'static str)> {
+pub(super) fn state_a2(scene: &Scene, alpha: f64) -> Option<(f64, &'static str)> {
     let d = scene.dimension() as f64;
     if Drive::Rescaling.of(scene) {
         Some((sonine::a2_cooling_in(d, alpha), "MS (5)"))
