@@ -42,6 +42,31 @@ class State:
         """Ensembles (records) in the file."""
         return self.velocities.shape[0]
 
+    def to_xarray(self):
+        """The state as an xarray Dataset (needs xarray): ``velocities`` over ``(ensemble,
+        particle, component)``, ``s`` over ``ensemble``, ``spins`` for rough particles, the
+        time and the header's scalars as attributes; ``ds.to_netcdf(path)`` writes it where a
+        NetCDF backend is installed."""
+        try:
+            import xarray as xr
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("to_xarray() needs xarray: pip install xarray") from e
+        comps = ["x", "y", "z"][: self.velocities.shape[2]]
+        data = {
+            "velocities": (("ensemble", "particle", "component"), self.velocities),
+            "s": (("ensemble",), self.s),
+        }
+        coords = {"component": comps}
+        if self.spins is not None:
+            data["spins"] = (("ensemble", "particle", "spin_component"), self.spins)
+            coords["spin_component"] = ["x", "y", "z"]
+        attrs = {"time": self.time}
+        attrs.update(
+            {k: v for k, v in self.header.items() if isinstance(v, (int, float, str, bool))}
+        )
+        attrs = {k: (int(v) if isinstance(v, bool) else v) for k, v in attrs.items()}
+        return xr.Dataset(data, coords=coords, attrs=attrs)
+
     def __repr__(self) -> str:
         return (
             f"State({self.header['scene']!r} at t={self.time}: "

@@ -73,6 +73,28 @@ class References:
     def __repr__(self) -> str:
         return f"References({', '.join(self.names)} at {len(self.times)} times)"
 
+    def to_xarray(self):
+        """The references as an xarray Dataset over ``t``, each with its ``of``, ``source``,
+        ``kind`` and ``not_computable`` as attributes (needs xarray)."""
+        try:
+            import xarray as xr
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("to_xarray() needs xarray: pip install xarray") from e
+        data = {
+            n: (
+                "t",
+                self.values[n],
+                {
+                    "of": self.of[n],
+                    "source": self.source[n],
+                    "kind": self.kind[n],
+                    "not_computable": self.not_computable[n],
+                },
+            )
+            for n in self.names
+        }
+        return xr.Dataset(data, coords={"t": self.times})
+
     def to_pandas(self):
         """The references as a DataFrame indexed by time (needs pandas)."""
         try:

@@ -175,3 +175,31 @@ def test_snapshots_are_the_particles_the_observables_come_from(tmp_path):
     files = [p for _, p in r._raw.snapshot_files()]
     del r, snap
     assert not any(Path(p).exists() for p in files)
+
+
+def test_to_xarray_holds_the_tables_and_the_state(tmp_path):
+    """Result, Swept, References and State as xarray Datasets: the same numbers as the
+    tables, the intervals and sources named, a NetCDF round trip where a backend exists."""
+    xr = pytest.importorskip("xarray")
+    r = gdsmc.run(SCENES / "grw-example3.toml", n=200, ensembles=6, seed=3,
+                  snapshots=[8.0])
+    ds = r.to_xarray()
+    assert np.array_equal(ds["t"].values, r.times)
+    assert np.array_equal(ds["T_bulk"].values, r.mean["T_bulk"])
+    assert np.array_equal(ds["T_bulk_ci"].values, r.ci["T_bulk"])
+    assert ds["T_bulk"].attrs["ci"] == "T_bulk_ci"
+    assert np.array_equal(ds["T_mean_n"].values, r.references["T_mean_n"])
+    assert "GRW" in ds["T_exact"].attrs["source"]
+    assert ds.attrs["ensembles"] == 6 and ds.attrs["scene"] == "grw-example3"
+    refs = gdsmc.theory.references(SCENES / "grw-example3.toml", n=200).to_xarray()
+    assert np.array_equal(refs["T_mean_n"].values, r.references["T_mean_n"])
+    assert refs["T_mean_n"].attrs["kind"] == "mean_at_n"
+    st = r.snapshot(8.0).to_xarray()
+    assert st["velocities"].shape == (6, 200, 3)
+    assert np.array_equal(st["velocities"].values, r.velocities(8.0))
+    assert st.attrs["time"] == 8.0
+    s = gdsmc.sweep(SCENES / "grw-example3.toml", {"collisions.restitution": [0.4, 0.6]},
+                    n=100, ensembles=3)
+    sw = s.to_xarray()
+    assert np.array_equal(sw["collisions.restitution"].values, [0.4, 0.6])
+    assert np.array_equal(sw["a2"].values, s.mean["a2"])

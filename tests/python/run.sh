@@ -13,6 +13,6 @@ python3 -m venv --clear "$V"
 # The extension's Rust build shares the workspace's target directory (its artifacts).
 CARGO_TARGET_DIR=$PWD/target "$V/bin/pip" install --disable-pip-version-check ./python
 "$V/bin/pip" install --quiet --disable-pip-version-check \
-    pytest nbclient nbformat ipykernel matplotlib pandas tqdm
+    pytest nbclient nbformat ipykernel matplotlib pandas tqdm xarray
 "$V/bin/python" -c "import gdsmc; print('gdsmc', gdsmc.__version__, 'imported from', gdsmc.__file__)"
 GDSMC_BIN=$PWD/target/release/gdsmc "$V/bin/pytest" -q python/tests
