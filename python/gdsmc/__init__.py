@@ -28,7 +28,7 @@ from typing import Callable, Dict, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _gdsmc, _plot, _state, theory
+from . import _gdsmc, _plot, _state, _xr, theory
 from ._progress import _progress, _set_total, _TextBar  # noqa: F401 (the tests use them)
 from ._gdsmc import STREAM_VERSION, RunError, Scene, SceneError, __version__
 from ._state import State, read_state
@@ -72,15 +72,6 @@ def _parse_csv(text: str) -> Dict[str, np.ndarray]:
             [float(r[j]) if r[j] != "" else np.nan for r in body], dtype=np.float64
         )
     return cols
-
-
-def _xarray():
-    """The xarray module (needs xarray: ``pip install xarray``, or the ``xarray`` extra)."""
-    try:
-        import xarray as xr
-    except ImportError as e:  # pragma: no cover - depends on the environment
-        raise ImportError("to_xarray() needs xarray: pip install xarray") from e
-    return xr
 
 
 def _data_frame(table):
@@ -165,27 +156,10 @@ class Result:
 
     def to_xarray(self):
         """The run as an xarray Dataset over the coordinate ``t``: per observable its mean
-        (attribute ``ci``: the name of the variable holding the 99.9% half-width,
-        ``NAME_ci``), every reference column (attribute ``source``), and as attributes the
-        scene, n, ensembles, seed and the versions (``ds.to_netcdf(path)`` writes NetCDF where
-        a NetCDF backend is installed). Needs xarray."""
-        xr = _xarray()
-        data = {}
-        for c in self.columns:
-            data[c] = ("t", self.mean[c], {"ci": f"{c}_ci", "level": "99.9% (3.2 sigma)"})
-            data[f"{c}_ci"] = ("t", self.ci[c], {"half_width_of": c})
-        sources = {}
-        for c in self.columns:
-            sources.update(self.references_of(c))
-        for r, v in self.references.items():
-            data[r] = ("t", v, {"source": sources.get(r, "")})
-        attrs = {
-            k: self.summary[k]
-            for k in ("n", "ensembles", "seed", "stream_version", "gdsmc_version")
-            if k in self.summary
-        }
-        attrs["scene"] = str(self.summary.get("scene", ""))
-        return xr.Dataset(data, coords={"t": self.times}, attrs=attrs)
+        (attribute ``ci``: the variable ``NAME_ci`` with the 99.9% half-width), every reference
+        column (attribute ``source``), the scene, n, ensembles, seed and versions as attributes
+        (``ds.to_netcdf(path)`` writes NetCDF where a backend is installed). Needs xarray."""
+        return _xr.result(self)
 
     def references_of(self, name: str) -> Dict[str, str]:
         """The references of observable ``name`` that the run attached, with their sources
@@ -367,14 +341,9 @@ class Swept:
         return _data_frame(self.table)
 
     def to_xarray(self):
-        """sweep.csv as an xarray Dataset over the dimension ``point`` (needs xarray): every
-        column a variable, the varied keys also coordinates of ``point``."""
-        xr = _xarray()
-        point = np.arange(len(self.table.get("point", [])))
-        coords = {"point": point}
-        coords.update({k: ("point", self.table[k]) for k in self.keys if k in self.table})
-        data = {c: ("point", v) for c, v in self.table.items() if c not in coords}
-        return xr.Dataset(data, coords=coords, attrs={"scene": str(self.json.get("scene", ""))})
+        """sweep.csv as an xarray Dataset over the dimension ``point``, the varied keys also
+        its coordinates (needs xarray)."""
+        return _xr.swept(self)
 
     def plot(self, name: str = "a2", x: Optional[str] = None, ax=None):
         """Draws observable ``name`` at every point as the command's sweep chart does (needs

@@ -9,7 +9,7 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
-from . import _gdsmc
+from . import _gdsmc, _xr
 
 
 class State:
@@ -47,10 +47,7 @@ class State:
         particle, component)``, ``s`` over ``ensemble``, ``spins`` for rough particles, the
         time and the header's scalars as attributes; ``ds.to_netcdf(path)`` writes it where a
         NetCDF backend is installed."""
-        try:
-            import xarray as xr
-        except ImportError as e:  # pragma: no cover - depends on the environment
-            raise ImportError("to_xarray() needs xarray: pip install xarray") from e
+        xr = _xr.module()
         comps = ["x", "y", "z"][: self.velocities.shape[2]]
         data = {
             "velocities": (("ensemble", "particle", "component"), self.velocities),

@@ -21,7 +21,7 @@ from typing import Dict, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _gdsmc
+from . import _gdsmc, _xr
 from ._gdsmc import Scene
 
 __all__ = ["References", "references"]
@@ -76,10 +76,7 @@ class References:
     def to_xarray(self):
         """The references as an xarray Dataset over ``t``, each with its ``of``, ``source``,
         ``kind`` and ``not_computable`` as attributes (needs xarray)."""
-        try:
-            import xarray as xr
-        except ImportError as e:  # pragma: no cover - depends on the environment
-            raise ImportError("to_xarray() needs xarray: pip install xarray") from e
+        xr = _xr.module()
         data = {
             n: (
                 "t",
