@@ -1,18 +1,19 @@
 //! # gdsmc
 //!
 //! The runner of the gdsmc DSMC engine: scenes (the `gdsmc-scene` crate), ensembles over all
-//! cores with deterministic streams, statistics with 99.9% confidence intervals, exact
-//! references and output files. The `gdsmc` command is a thin shell over this library.
+//! cores with deterministic streams, statistics with 99.9% confidence intervals, the references
+//! beside them (the `gdsmc-theory` crate) and output files. The `gdsmc` command is a thin shell
+//! over this library.
 //!
 //! The modules depend on each other in one direction:
-//! [`run`] (ensembles, statistics) <- [`mod@reference`] (exact and hydrodynamic curves) <-
-//! [`analysis`] (tails, distributions, warnings) <- [`report`] (output sets, charts, summary)
-//! <- [`mod@bench`] (speed), [`job`] (a run from the loaded scene to the written outputs: journal,
-//! shards, MPI, output set; the command's `run` and `merge` and the Python package call it)
-//! <- [`sweep`] (a parameter study: many journaled runs into one table);
-//! [`reproduce`] (the papers' tables) needs [`run`] and [`mod@reference`] only. Beneath them all, [`files`]: writing and reading files safely (never through a link,
-//! never over what gdsmc did not write), and [`watch`]: what the caller sees of a running job
-//! and how it stops one.
+//! [`run`] (ensembles, statistics) <- [`analysis`] (tails, distributions, warnings) <-
+//! [`report`] (output sets, charts, summary) <- [`mod@bench`] (speed), [`job`] (a run from the
+//! loaded scene to the written outputs: journal, shards, MPI, output set; the command's `run`
+//! and `merge` and the Python package call it) <- [`sweep`] (a parameter study: many journaled
+//! runs into one table); [`reproduce`] (the papers' tables) needs [`run`] only. Every module
+//! takes the exact and hydrodynamic curves from `gdsmc-theory`. Beneath them all, [`files`]:
+//! writing and reading files safely (never through a link, never over what gdsmc did not
+//! write), and [`watch`]: what the caller sees of a running job and how it stops one.
 
 #![deny(unsafe_code)]
 

@@ -31,5 +31,6 @@ mod steady_summary;
 mod stepped;
 mod sweep;
 mod sweep_charts;
+mod sweep_docs;
 mod sweep_shards;
 mod verdict;
