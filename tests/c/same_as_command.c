@@ -11,32 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "gdsmc.h"
-
-static int check(gdsmc_status s, const char *what) {
-    if (s != GDSMC_OK) {
-        char msg[512];
-        gdsmc_last_error(msg, sizeof msg);
-        fprintf(stderr, "%s failed (status %d): %s\n", what, (int)s, msg);
-        return 1;
-    }
-    return 0;
-}
-
-static char *read_file(const char *path) {
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = malloc((size_t)len + 1);
-    if (text && fread(text, 1, (size_t)len, f) != (size_t)len) {
-        free(text);
-        text = NULL;
-    }
-    if (text) text[len] = '\0';
-    fclose(f);
-    return text;
-}
+#include "scene_file.h"
 
 int main(int argc, char **argv) {
     if (argc != 2) {
