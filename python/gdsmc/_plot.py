@@ -2,6 +2,7 @@
 its 99.9% band or interval, and every reference of the observable (``Result.plot``,
 ``Swept.plot``)."""
 
+import textwrap
 from typing import Optional
 
 import numpy as np
@@ -16,6 +17,23 @@ def _pyplot():
             "plot() needs matplotlib: pip install matplotlib (or 'gdsmc[notebook]')"
         ) from e
     return plt
+
+
+def _legend_below(ax):
+    """The legend under the plotting area, each entry wrapped to 60 characters, as the
+    command's charts put theirs in a band below the data: never over the data, and inside the
+    figure once laid out (a reference's whole description once ran past the figure)."""
+    handles, labels = ax.get_legend_handles_labels()
+    labels = [textwrap.fill(label, 60) for label in labels]
+    ax.legend(
+        handles,
+        labels,
+        fontsize="small",
+        loc="upper center",
+        bbox_to_anchor=(0.5, -0.16),
+        frameon=False,
+    )
+    ax.figure.tight_layout()
 
 
 def _log_steps(x: np.ndarray) -> bool:
@@ -57,7 +75,7 @@ def result(r, name: str, ax=None, axis: str = "time"):
         "collisions per particle s" if axis == "collisions" else "time t (scene units)"
     )
     ax.set_ylabel(name)
-    ax.legend(fontsize="small")
+    _legend_below(ax)
     return ax
 
 
@@ -114,5 +132,5 @@ def swept(s, name: str, x: Optional[str] = None, ax=None):
             )
     ax.set_xlabel(x)
     ax.set_ylabel(name)
-    ax.legend(fontsize="small")
+    _legend_below(ax)
     return ax

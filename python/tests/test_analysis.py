@@ -85,13 +85,36 @@ def test_plot_draws_the_mean_band_and_references():
     )
     ax = s.plot("T")
     assert len(ax.containers) == 2  # one error-bar series per drive.beta
-    legend = " ".join(t.get_text() for t in ax.get_legend().get_texts())
+    legend = " ".join(t.get_text().replace("\n", " ") for t in ax.get_legend().get_texts())
     # Each reference's source once, with the first group's curve, not once per series.
     assert legend.count("(GRW (13)-(14))") == 1, legend
     assert legend.count("(exact ensemble mean") == 1, legend
     assert legend.count("T_exact") == 2 and legend.count("T_mean_n") == 2, legend
     with pytest.raises(ValueError, match="numeric varied key"):
         s.plot("T", x="seed")
+
+
+def test_plot_legends_stay_off_the_data_and_inside_the_figure():
+    """The legend sits below the plotting area, its entries wrapped: it overlaps neither the
+    data nor the figure's edge, even with a reference's whole description (a2_exact's is 180
+    characters; it once ran past the figure and over the curves)."""
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    r = gdsmc.run(SCENES / "grw-example3.toml", n=64, ensembles=4, seed=2)
+    s = gdsmc.sweep(SCENES / "grw-example3.toml", {"collisions.restitution": [0.5, 0.8]},
+                    n=64, ensembles=2)
+    for ax in (r.plot("a2"), s.plot("T")):
+        fig = ax.figure
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        legend = ax.get_legend().get_window_extent(renderer)
+        plot = ax.get_window_extent(renderer)
+        page = fig.bbox
+        assert not legend.overlaps(plot), (legend, plot)
+        assert page.x0 <= legend.x0 and legend.x1 <= page.x1, (legend, page)
+        assert page.y0 <= legend.y0 and legend.y1 <= page.y1, (legend, page)
+        assert all(len(line) <= 60 for t in ax.get_legend().get_texts()
+                   for line in t.get_text().split("\n"))
 
 
 def test_integers_errors_and_the_sweep_total_in_pythons_words():
