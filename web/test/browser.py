@@ -93,7 +93,7 @@ def browse(chromium, url, reports, timeout):
         args = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
                 "--no-first-run", "--disable-background-networking",
                 "--disable-component-update", "--disable-sync", "--mute-audio",
-                "--disable-dev-shm-usage",
+                "--disable-dev-shm-usage", "--window-size=1280,900",
                 f"--user-data-dir={profile}", "--remote-debugging-port=0", url]
         p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         try:
@@ -209,6 +209,18 @@ def main():
             failures.append(f"{name}: the run's address does not set the page up for the same keys")
         if not all(got["charts_live"][:2]):
             failures.append(f"{name}: the live charts were not drawn")
+        # Readable at 1280 px: no sideways scrolling, every live chart's smallest text (its
+        # ticks) at 9 px or more as drawn, and a Watch list of every chart of the run.
+        lay = got["layout"]
+        if lay["page"] > lay["window"]:
+            failures.append(f"{name}: the page is {lay['page']} px wide in a {lay['window']} px window")
+        for k, c in enumerate(lay["charts"]):
+            if c["smallest_text"] < 9.0:
+                failures.append(
+                    f"{name}: live chart {k} drawn {c['drawn']:.0f} px wide, its smallest text "
+                    f"{c['smallest_text']:.1f} px (unreadable under 9)")
+        if lay["watch"] < 3:
+            failures.append(f"{name}: the Watch list offers {lay['watch']} charts")
         # The command's merged scene file reproduces the page's run: parsed, it is the same.
         if not case.get("stop"):
             merged = out.parent / "merged.toml"

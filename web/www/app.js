@@ -103,16 +103,29 @@ function fromLink() {
   $("sets").value = q.getAll("set").join("\n");
 }
 
-// The charts shown live: the temperature about the flow (the granular temperature; the raw T
-// keeps the initial sample's centre-of-mass energy), a2 and the distribution when there is one.
+// The charts shown live: the one the user watches (the Watch list, every chart of the run),
+// then the temperature about the flow (the granular temperature; the raw T keeps the initial
+// sample's centre-of-mass energy), a2 and the distribution when there is one.
 function liveStems(charts) {
-  const want = ["T_bulk", "a2", "reduced", "T", "v4"];
-  const stems = want.filter((s) => s in charts);
+  const watch = $("watch");
+  const names = Object.keys(charts);
+  if (watch.options.length !== names.length || [...watch.options].some((o, i) => o.value !== names[i])) {
+    const chosen = watch.value;
+    watch.textContent = "";
+    for (const n of names) watch.append(new Option(n, n));
+    watch.value = names.includes(chosen) ? chosen : (names.includes("T_bulk") ? "T_bulk" : names[0]);
+    $("watching").hidden = false;
+  }
+  const want = [watch.value, "T_bulk", "a2", "reduced", "T", "v4"];
+  const stems = [...new Set(want)].filter((s) => s in charts);
   for (const s of Object.keys(charts)) if (stems.length < 3 && !stems.includes(s)) stems.push(s);
   return stems.slice(0, 3);
 }
 
+let lastCharts = null;
+
 function drawLive(charts) {
+  lastCharts = charts;
   liveStems(charts).forEach((stem, i) => { $(`chart-${i}`).innerHTML = charts[stem]; });
 }
 
@@ -193,10 +206,29 @@ $("scene").onchange = showScene;
 $("kernel").onchange = () => showParams($("kernel"), "kernels", "collisions", $("kernel-params"));
 $("drive").onchange = () => showParams($("drive"), "drives", "drive", $("drive-params"));
 $("run").onclick = start;
+$("watch").onchange = () => { if (lastCharts) drawLive(lastCharts); };
 $("stop").onclick = () => worker.postMessage({ type: "stop" });
 
 // --- test mode (web/test/browser.py): #test runs the cases of cases.json through the form
 // and posts what the page showed to /report -----------------------------------------------
+
+// What a reader sees at this window's width: the page's own width against the window's (no
+// sideways scrolling), and each live chart's drawn width and its smallest text in pixels (its
+// tick labels' font size scaled as the chart is).
+function layout() {
+  const charts = [0, 1, 2].map((i) => $(`chart-${i}`).querySelector("svg")).filter(Boolean);
+  return {
+    window: window.innerWidth,
+    page: document.documentElement.scrollWidth,
+    charts: charts.map((svg) => {
+      const drawn = svg.getBoundingClientRect().width;
+      const own = Number(svg.getAttribute("width"));
+      const sizes = [...svg.querySelectorAll("text")].map((t) => Number(t.getAttribute("font-size")));
+      return { drawn, smallest_text: Math.min(...sizes) * drawn / own };
+    }),
+    watch: $("watch").options.length,
+  };
+}
 
 async function runTests() {
   const cases = await (await fetch("cases.json")).json();
@@ -238,6 +270,7 @@ async function runTests() {
       wall_seconds: m.wall_seconds || 0,
       workers: m.workers || 0,
       charts_live: [0, 1, 2].map((i) => $(`chart-${i}`).innerHTML.startsWith("<svg")),
+      layout: layout(),
     });
   }
   await fetch("report", { method: "POST", body: JSON.stringify(results) });
