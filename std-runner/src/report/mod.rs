@@ -7,6 +7,7 @@ pub mod set;
 pub mod summary;
 pub mod summary_file;
 mod verdict;
+pub(crate) use verdict::num;
 
 use crate::error::Error;
 use crate::files::write_atomic;

@@ -144,7 +144,7 @@ verdict    each mean against the reference that applies at this n, at all {nt} o
 /// A figure of the summary: six decimals where that keeps six significant digits' worth
 /// (`1e-3 <= |x| < 1e7`, or 0), scientific notation otherwise (a cooling gas's `T = 3e-12`
 /// would print as 0.000000).
-pub(super) fn num(x: f64) -> String {
+pub(crate) fn num(x: f64) -> String {
     if x == 0.0 || (x.abs() >= 1e-3 && x.abs() < 1e7) || !x.is_finite() {
         format!("{x:.6}")
     } else {

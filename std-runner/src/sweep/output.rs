@@ -110,9 +110,16 @@ pub(super) fn summary(results: &[PointResult]) -> String {
             .filter_map(|n| p.observables.iter().find(|o| o.0 == *n))
             .map(|(name, mean, ci)| {
                 let r = p.references.iter().find(|r| r.of == *name);
+                // The summary's figures: a cooling gas's T_bulk of 1e-10 printed 0.00000.
+                let num = crate::report::num;
                 match r {
-                    Some(r) => format!("{name} = {mean:.5} ± {ci:.2e} ({} {:.5})", r.name, r.value),
-                    None => format!("{name} = {mean:.5} ± {ci:.2e}"),
+                    Some(r) => format!(
+                        "{name} = {} ± {ci:.2e} ({} {})",
+                        num(*mean),
+                        r.name,
+                        num(r.value)
+                    ),
+                    None => format!("{name} = {} ± {ci:.2e}", num(*mean)),
                 }
             })
             .collect();
