@@ -19,15 +19,10 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: %s SCENE.toml [N] < times\n", argv[0]);
         return 2;
     }
-    char *text = read_file(argv[1]);
-    if (!text) {
-        fprintf(stderr, "cannot read %s\n", argv[1]);
-        return 2;
-    }
     gdsmc_config cfg;
-    gdsmc_status s = gdsmc_config_from_toml(text, &cfg);
-    free(text);
-    if (check(s, "gdsmc_config_from_toml")) return 1;
+    int bad = config_of(argv[1], &cfg);
+    if (bad) return bad;
+    gdsmc_status s;
     if (argc == 3) cfg.n = strtoull(argv[2], NULL, 10);
     size_t cap = 64, nt = 0;
     double *times = malloc(cap * sizeof *times);

@@ -18,15 +18,10 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: %s SCENE.toml < times\n", argv[0]);
         return 2;
     }
-    char *text = read_file(argv[1]);
-    if (!text) {
-        fprintf(stderr, "cannot read %s\n", argv[1]);
-        return 2;
-    }
     gdsmc_config cfg;
-    gdsmc_status s = gdsmc_config_from_toml(text, &cfg);
-    free(text);
-    if (check(s, "gdsmc_config_from_toml")) return 1;
+    int bad = config_of(argv[1], &cfg);
+    if (bad) return bad;
+    gdsmc_status s;
     gdsmc_sim *sim = NULL;
     if (check(gdsmc_sim_create(&cfg, &sim), "gdsmc_sim_create")) return 1;
     char line[128];

@@ -35,4 +35,17 @@ static char *read_file(const char *path) {
     return text;
 }
 
+/* `*cfg` from the scene file at `path` (gdsmc_config_from_toml): 0, or 2 when the file cannot
+ * be read, 1 when gdsmc refuses it (the message printed). */
+static int config_of(const char *path, gdsmc_config *cfg) {
+    char *text = read_file(path);
+    if (!text) {
+        fprintf(stderr, "cannot read %s\n", path);
+        return 2;
+    }
+    gdsmc_status s = gdsmc_config_from_toml(text, cfg);
+    free(text);
+    return check(s, "gdsmc_config_from_toml");
+}
+
 #endif
