@@ -10,7 +10,9 @@
 //! every nearer window ([`measured`]). For
 //! the smooth inelastic Maxwell gas cooling freely (or under a thermostat that scales every
 //! velocity alike: the Gaussian one, the Langevin drag with a bath at zero) the exponent is
-//! judged against the exact root `s(alpha)` of Ernst and Brito 2002
+//! judged against the exact root `s(alpha)` of the model gdsmc runs, GRW (3)'s scattering form
+//! with `e` uniform (found by Ernst and Brito 2002's method; in d = 3 their impact-form model
+//! has other roots)
 //! ([`gdsmc_theory::maxwell_cumulant::tail_exponent`]), extrapolated from the local
 //! slopes. The slope approaches the root from below about as `x^-2` (measured on weighted
 //! particles, docs/weighted.md "The cooling state's tail exponent": `x^2 (s - s(x))` goes from
@@ -32,7 +34,7 @@ pub const EXACT: &str = "tail_exponent_exact";
 
 /// Where the exact root comes from.
 pub const EXACT_SOURCE: &str =
-    "Ernst and Brito 2002, the root of lambda_s = s lambda_2 / 2 (theory/src/maxwell_cumulant.rs)";
+    "the root of lambda_s = s lambda_2 / 2 (Ernst and Brito 2002's method) for the model gdsmc runs, GRW (3)'s scattering form with e uniform (Bobylev, Carrillo and Gamba); in d = 3 not Ernst and Brito's impact form, whose roots differ (theory/src/maxwell_cumulant.rs)";
 
 /// The largest 99.9% half-width over the mean of a resolved tail weight.
 pub const RESOLVED: f64 = 0.2;
@@ -97,7 +99,9 @@ impl PowerTail {
     #[must_use]
     pub fn words(&self) -> String {
         let exact = self.exact.map_or(String::new(), |e| {
-            format!("; exact root (Ernst and Brito 2002, theory/src/maxwell_cumulant.rs) {e:.4}")
+            format!(
+                "; exact root of GRW (3)'s scattering form (e uniform; Ernst and Brito 2002's method, in d = 3 not their impact form; theory/src/maxwell_cumulant.rs) {e:.4}"
+            )
         });
         let Some(m) = self.measured else {
             return format!(

@@ -24,7 +24,7 @@ pub fn power_tail(scene: &str, t: &PowerTail) -> Result<Chart, String> {
     }];
     if let Some(s) = t.exact {
         series.push(Series {
-            label: format!("exact s = {s:.4} (Ernst and Brito 2002)"),
+            label: format!("exact s = {s:.4} (GRW (3)'s scattering form, e uniform)"),
             points: vec![(first.0, s, 0.0), (last.0, s, 0.0)],
             style: Style::Dashed,
             color: BLACK,
