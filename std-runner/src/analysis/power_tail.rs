@@ -33,8 +33,7 @@ pub const EXPONENT: &str = gdsmc_theory::columns::name::TAIL_EXPONENT;
 pub const EXACT: &str = "tail_exponent_exact";
 
 /// Where the exact root comes from.
-pub const EXACT_SOURCE: &str =
-    "the root of lambda_s = s lambda_2 / 2 (Ernst and Brito 2002's method) for the model gdsmc runs, GRW (3)'s scattering form with e uniform (Bobylev, Carrillo and Gamba); in d = 3 not Ernst and Brito's impact form, whose roots differ (theory/src/maxwell_cumulant.rs)";
+pub const EXACT_SOURCE: &str = "the root of lambda_s = s lambda_2 / 2 (Ernst and Brito 2002's method) for the model gdsmc runs, GRW (3)'s scattering form with e uniform (Bobylev, Carrillo and Gamba); in d = 3 not Ernst and Brito's impact form, whose roots differ (theory/src/maxwell_cumulant.rs)";
 
 /// The largest 99.9% half-width over the mean of a resolved tail weight.
 pub const RESOLVED: f64 = 0.2;
