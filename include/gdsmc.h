@@ -114,7 +114,7 @@
 // `scheme_params[1]` of GDSMC_SCHEME_WEIGHTED: the transfer of a collision into the tail (at least kappa) (1, a finite number >= 0; default 7).
 #define GDSMC_WEIGHTED_TAIL_KAPPA 1
 
-// `scheme_params[2]` of GDSMC_SCHEME_WEIGHTED: where the tail starts, in thermal speeds sqrt(T) (1, a finite number > 0; default 3).
+// `scheme_params[2]` of GDSMC_SCHEME_WEIGHTED: where the tail starts, in units of sqrt(T) about the flow (a velocity component's standard deviation) (1, a finite number > 0; default 3).
 #define GDSMC_WEIGHTED_TAIL_SPEED 2
 
 // `scheme_params[3]` of GDSMC_SCHEME_WEIGHTED: the particles the buffers hold, times particles.n (1, a number in [2, 64]; default 4).
@@ -401,6 +401,10 @@ typedef struct {
     // scheme: one species), one species or a mixture, with the start and
     // background drifts in the plane.
     uint32_t dimension;
+    // Nonzero: the sample's mean velocity (each species') starts at the distribution's
+    // exactly, the draws shifted onto it (zero total momentum about the drift); 0: `n`
+    // independent draws (the default, GRW (27), which GRW's finite-n means assume).
+    uint32_t exact_momentum;
     // The parameters of GDSMC_SCHEME_WEIGHTED in its order (`GDSMC_WEIGHTED_<PARAMETER>` is
     // each one's place, e.g. `scheme_params[GDSMC_WEIGHTED_SPLIT]`; the defaults are the
     // scene's); the other schemes' are `dt` and `step_factor`.

@@ -9,8 +9,8 @@ configuration of CONFIGS, one thread each, the configurations interleaved round 
 (round r runs every configuration once, with seed 1000 r + k, before round r + 1 starts), and
 times each `gdsmc run` by its CPU time (user + system of the child, os.wait4). Each run's
 reduced-speed histogram has 4 shells to `c = 8/sqrt(2)` (`c = |v - V|/sqrt(2 T)`), so its edges
-are 2, 4, 6, 8 thermal speeds `sqrt(T)` and its last bin is the weight beyond 8 thermal
-speeds, averaged over the steady observations (t >= 4) in each ensemble: `P(|c| > 8)` with
+are 2, 4, 6, 8 `sqrt(T)` and its last bin is the weight beyond 8
+`sqrt(T)`, averaged over the steady observations (t >= 4) in each ensemble: `P(|c| > 8)` with
 its 99.9% half-width over ensembles (Student-t; the runner's). `P(|c| > 6)` and `P(|c| > 4)`
 are sums of bins; their half-widths are bounded by the sum of the bins' (the bins' covariance
 is not in the output: a bound, wider than the interval, the same rule for both schemes).
@@ -100,7 +100,7 @@ def run_one(gdsmc, label, n, m, sets, seed, workdir):
 
 
 def tails_of(rows):
-    """`{c: (P(|c| > c thermal speeds), its half-width or a bound, exact)}` from the rows of a
+    """`{c: (P(|v - V| > c sqrt(T)), its half-width or a bound, exact)}` from the rows of a
     reduced.csv with 4 shells to `8/sqrt(2)` and the bin beyond: the bins from the one that
     starts at `c/sqrt(2)` on (the half-widths summed: a bound unless it is the last bin)."""
     edges = [float(r["c_lo"]) for r in rows]
@@ -110,7 +110,7 @@ def tails_of(rows):
     for c in THERMAL:
         first = min(range(len(edges)), key=lambda k: abs(edges[k] - c / math.sqrt(2.0)))
         if abs(edges[first] - c / math.sqrt(2.0)) > 1e-9 * c:
-            sys.exit(f"no bin starts at {c} thermal speeds: {edges}")
+            sys.exit(f"no bin starts at {c} sqrt(T): {edges}")
         tails[c] = (sum(f[first:]), sum(ci[first:]), first == len(f) - 1)
     return tails
 
@@ -132,8 +132,8 @@ def svg(points, path):
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" '
            'font-family="sans-serif" font-size="12">',
            f'<rect width="{w}" height="{h}" fill="white"/>',
-           f'<text x="{(w - legend) / 2}" y="20" text-anchor="middle">P(|c| &gt; 8 thermal '
-           'speeds), GRW Example 3: standard error against CPU time</text>']
+           f'<text x="{(w - legend) / 2}" y="20" text-anchor="middle">P(|v - V| &gt; 8 '
+           'sqrt(T)), GRW Example 3: standard error against CPU time</text>']
     for e in range(x0, x1 + 1):
         out.append(f'<line x1="{sx(e)}" y1="{sy(y0)}" x2="{sx(e)}" y2="{sy(y1)}" stroke="#ddd"/>')
         out.append(f'<text x="{sx(e)}" y="{h - m + 18}" text-anchor="middle">1e{e}</text>')

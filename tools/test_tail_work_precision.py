@@ -11,7 +11,7 @@ import tail_work_precision as t
 
 r = 8.0 / math.sqrt(2.0)
 rows = [{"c_lo": repr(r * k / 4), "f": repr(10.0 ** -k), "f_ci": repr(0.1 * 10.0 ** -k)}
-        for k in range(5)]  # bins [0,2), [2,4), [4,6), [6,8) thermal speeds and beyond 8
+        for k in range(5)]  # bins [0,2), [2,4), [4,6), [6,8) sqrt(T) and beyond 8
 tails = t.tails_of(rows)
 assert abs(tails[8][0] - 1e-4) < 1e-18 and tails[8][2], tails[8]
 assert abs(tails[6][0] - (1e-3 + 1e-4)) < 1e-15 and not tails[6][2], tails[6]

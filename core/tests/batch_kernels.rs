@@ -220,7 +220,7 @@ fn bulk_temperature_keeps_its_digits_under_a_large_drift() {
 
 /// The raw sums `sum v v^T`, `sum v |v|^2`, `sum |v|^4`, `sum |v|^6` that the kernels rebuild
 /// from the central ones ([`raw_from_central`]) against the same sums taken directly, for a gas
-/// at rest and one drifting at 30 thermal speeds, both kernels: each within a rounding bound
+/// at rest and one drifting at 30 sqrt(T), both kernels: each within a rounding bound
 /// (1e-13 of the sum of the terms' magnitudes per particle). A wrong coefficient in the
 /// expansion is off by a fraction of the sum itself.
 #[test]

@@ -135,7 +135,7 @@ fn the_weighted_maxwell_gas_cools_at_grws_exact_rate() {
     };
     check::<Spheres>(33, equal_shells);
     // A transfer that moves whole weights in the core and an eighth of the lighter partner's
-    // into the tail beyond 2 thermal speeds (its outcomes thinned by (1 + kappa)/(1 + 7)).
+    // into the tail beyond 2 sqrt(T) (its outcomes thinned by (1 + kappa)/(1 + 7)).
     let tail = Transfer::with_tail(0.0, 7.0, 2.0).unwrap();
     check_with::<Spheres>(34, (tail, equal_shells));
     check_with::<Disks>(35, (tail, Reduction::Cells { group: 4 }));
@@ -304,10 +304,10 @@ fn the_weighted_cooling_rate_is_the_maxwell_gas_exact_one() {
 }
 
 /// A cooling gas of hard spheres on weighted particles (alpha = 0.3, `n0 = 128`, `kappa` 1 in
-/// the core and 7 beyond 3 thermal speeds, the allocated reduction) runs to t = 20, where its
+/// the core and 7 beyond 3 sqrt(T), the allocated reduction) runs to t = 20, where its
 /// temperature has fallen 2500-fold, with every velocity and weight finite and no weight
 /// below [`LIGHTEST`]`/(1 + kappa_max)`. It failed in every one of 20 seeds before (t = 4-28):
-/// a light particle at a few thermal speeds, halved by each of its ever more frequent
+/// a light particle at a few sqrt(T), halved by each of its ever more frequent
 /// collisions, fell below 1e-300 and to 0, and the global scale of a reduction's correction
 /// walked such particles out to overflow.
 #[test]

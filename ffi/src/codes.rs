@@ -88,7 +88,7 @@ pub const GDSMC_WEIGHTED_KAPPA: usize = 0;
 /// `scheme_params[1]` of GDSMC_SCHEME_WEIGHTED: the transfer of a collision into the tail (at least kappa) (1, a finite number >= 0; default 7).
 pub const GDSMC_WEIGHTED_TAIL_KAPPA: usize = 1;
 
-/// `scheme_params[2]` of GDSMC_SCHEME_WEIGHTED: where the tail starts, in thermal speeds sqrt(T) (1, a finite number > 0; default 3).
+/// `scheme_params[2]` of GDSMC_SCHEME_WEIGHTED: where the tail starts, in units of sqrt(T) about the flow (a velocity component's standard deviation) (1, a finite number > 0; default 3).
 pub const GDSMC_WEIGHTED_TAIL_SPEED: usize = 2;
 
 /// `scheme_params[3]` of GDSMC_SCHEME_WEIGHTED: the particles the buffers hold, times particles.n (1, a number in [2, 64]; default 4).

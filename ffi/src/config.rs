@@ -137,6 +137,10 @@ pub struct gdsmc_config {
     /// scheme: one species), one species or a mixture, with the start and
     /// background drifts in the plane.
     pub dimension: u32,
+    /// Nonzero: the sample's mean velocity (each species') starts at the distribution's
+    /// exactly, the draws shifted onto it (zero total momentum about the drift); 0: `n`
+    /// independent draws (the default, GRW (27), which GRW's finite-n means assume).
+    pub exact_momentum: u32,
     /// The parameters of GDSMC_SCHEME_WEIGHTED in its order (`GDSMC_WEIGHTED_<PARAMETER>` is
     /// each one's place, e.g. `scheme_params[GDSMC_WEIGHTED_SPLIT]`; the defaults are the
     /// scene's); the other schemes' are `dt` and `step_factor`.
@@ -221,6 +225,7 @@ impl gdsmc_config {
             pair_tangential_restitution_set: 0,
             pair_tangential_restitution: [SMOOTH.beta; GDSMC_MAX_PAIRS],
             dimension: 3,
+            exact_momentum: 0,
             scheme_params: scheme_defaults(),
         }
     }

@@ -7,8 +7,8 @@ use crate::config::*;
 use crate::status::{Failure, Msg, fail, gdsmc_status, msg};
 use gdsmc_core::physics::{
     BackgroundKernel, Component, DimensionChoice, DriveChoice, DriveKind, KernelChoice, KernelKind,
-    LawKind, Model, Param, Physics, PhysicsError, RestitutionLaw, RotationChoice, SchemeChoice,
-    SchemeKind, SpeciesChoice,
+    LawKind, Model, Momentum, Param, Physics, PhysicsError, RestitutionLaw, RotationChoice,
+    SchemeChoice, SchemeKind, SpeciesChoice,
 };
 
 // The C header's codes are generated from the core's kinds (`src/codes.rs`, checked by
@@ -206,6 +206,11 @@ impl gdsmc_config {
                 ));
             }
         };
+        physics.momentum = if self.exact_momentum != 0 {
+            Momentum::Exact
+        } else {
+            Momentum::Drawn
+        };
         if self.rough != 0 {
             physics.rotation = Some(RotationChoice {
                 beta: self.tangential_restitution,
@@ -290,6 +295,7 @@ impl gdsmc_config {
             cfg.species_beta[k] = s.beta;
         }
         cfg.dimension = p.dimension.d() as u32;
+        cfg.exact_momentum = u32::from(p.momentum == Momentum::Exact);
         if let Some(r) = p.rotation {
             cfg.rough = 1;
             cfg.tangential_restitution = r.beta;

@@ -122,7 +122,7 @@ fn a_continuation_starts_where_the_saved_run_stopped() {
     }
 }
 
-/// docs/state.md's own commands at n = 64: a cooling gas followed to T_bulk = 1e-10 is stored
+/// docs/state.md's own commands at n = 64 (from a drawn start): a cooling gas followed to T_bulk = 1e-10 is stored
 /// rescaled about its bulk velocity, and a state holds physical velocities, whose peculiar
 /// parts beside the bulk velocity `V` keep only their leading digits: a relative rounding of
 /// `delta = eps |V| / sqrt(T_bulk)`. So the continuation's first observation is the saved run's
@@ -134,15 +134,24 @@ fn a_continuation_starts_where_the_saved_run_stopped() {
 fn a_rescaled_cooling_gas_continues_within_its_rounding() {
     let r = root("rescaled");
     let saved = r.join("hcs.gdsmc-state");
-    job("hcs-hard-spheres", &[], &r.join("a"), (None, Some(&saved)))
-        .run(&Quiet::default())
-        .unwrap();
+    // A drawn start: the gas carries the bulk velocity whose rounding is the bound below
+    // (the shipped scene starts with exact momentum, `V` about 1e-17).
+    let drawn = "particles.momentum=drawn";
+    job(
+        "hcs-hard-spheres",
+        &[drawn],
+        &r.join("a"),
+        (None, Some(&saved)),
+    )
+    .run(&Quiet::default())
+    .unwrap();
     let (ha, a) = table(&r.join("a"));
     let last = &a[a.len() - 1];
     let t_end = last[0].clone();
     let later = [
         format!("observe.t_start={t_end}"),
         "observe.t_end=200000".to_string(),
+        drawn.to_string(),
     ];
     let later: Vec<&str> = later.iter().map(String::as_str).collect();
     job(

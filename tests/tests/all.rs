@@ -23,6 +23,7 @@ mod linear_heating;
 mod maxwell_relaxation;
 mod mixture;
 mod mixture_steady;
+mod momentum;
 mod mutated_scenes;
 mod power_tail;
 mod rough;

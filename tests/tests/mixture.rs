@@ -12,6 +12,7 @@ use gdsmc_core::mixture::{
     Species,
 };
 use gdsmc_core::particles::{Particle, Particles};
+use gdsmc_core::physics::Momentum;
 use gdsmc_core::restitution::Constant;
 use gdsmc_core::rng::{Streams, stream};
 use gdsmc_core::sample::Maxwellian;
@@ -101,6 +102,7 @@ pub(super) fn maxwell_mixture(counts: [usize; 2]) -> MaxwellMixture {
         alpha: vec![0.9, 0.6, 0.8],
         temperatures: vec![1.0, 2.0],
         beta: vec![],
+        momentum: Momentum::Drawn,
     }
 }
 

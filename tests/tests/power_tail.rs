@@ -71,7 +71,7 @@ fn the_cooling_states_tail_exponent_is_the_exact_root() {
 
 /// On weighted particles (`scenes/hcs-maxwell-tail-weighted.toml`: the weight windows, the
 /// far tail averaged over t in [20, 30]) the local slopes are resolved to the last window
-/// `[10, 20]` of the histogram (28 thermal speeds), and the exponent extrapolated from them
+/// `[10, 20]` of the histogram (28 sqrt(T)), and the exponent extrapolated from them
 /// holds the root at alpha = 1/2 in d = 3 and at alpha = 0.1 in d = 2 with an interval under
 /// 3% of it, refusing the other dimension's root. `n0 = 1024`, 24 ensembles. With the shells
 /// up to the fastest particle (before `windows::REACH`), the windows resolved only `[3, 6]`

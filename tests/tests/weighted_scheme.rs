@@ -230,7 +230,7 @@ fn the_weighted_heated_gas_has_the_exact_a2() {
 
 /// The shipped weighted heated scene (GRW Example 3 on weighted particles with the weight
 /// windows) and equal weights at n = 4096 agree on the steady tail where equal weights
-/// resolve it: the weight beyond 4 and beyond 6 thermal speeds `sqrt(T)` (the reduced
+/// resolve it: the weight beyond 4 and beyond 6 `sqrt(T)` (the reduced
 /// histogram's shells of `c = |v - V|/sqrt(2 T)` from `4/sqrt(2)` and `6/sqrt(2)`, averaged
 /// over t in [4, 8] in each ensemble), each difference within the joint 99.9% interval of the
 /// two (Bonferroni over the two thresholds; a sum of shells' half-widths bounds its own).

@@ -3,6 +3,7 @@
 
 use crate::mutation::{Reference, mutated};
 use gdsmc_core::drive::Heating;
+use gdsmc_core::physics::Momentum;
 
 /// GRW (13)-(14) / RW (24)-(25): the temperature of the heated Maxwell gas, `B = gamma C_0`,
 /// `T(t) = T_inf + (T_0 - T_inf) exp(-k t)`, `k = gamma pi C_0 (1 - alpha^2)`,
@@ -99,8 +100,21 @@ impl MaxwellTemperature {
     /// `U = E|P|^2/(d n)` obeys `U' = a + p U` ([`Heating`]; the Langevin bath's drag makes `P`
     /// decay), and this is `U(t)/n`.
     pub fn bulk_to_raw(&self, n: usize, t: f64) -> f64 {
+        self.bulk_to_raw_from(Momentum::Drawn, n, t)
+    }
+
+    /// [`Self::bulk_to_raw`] for a sample whose momentum starts as `momentum` says: drawn,
+    /// `U(0) = T_0`; exact ([`Momentum::Exact`], the sample's mean velocity is the
+    /// distribution's), `U(0) = 0`, so that only the kicks' random walk is left,
+    /// `U(t) = 2 beta t` for white noise (`U' = a + p U` from 0). The shift does not change
+    /// `T_bulk`, so [`Self::finite_n_bulk_mean`] holds for both starts.
+    pub fn bulk_to_raw_from(&self, momentum: Momentum, n: usize, t: f64) -> f64 {
+        let u0 = match momentum {
+            Momentum::Drawn => self.t0,
+            Momentum::Exact => 0.0,
+        };
         // `U' = a + p U`, accurate at every rate.
-        let u = self.heating.evolve(self.t0, self.heating.p, t);
+        let u = self.heating.evolve(u0, self.heating.p, t);
         mutated(Reference::BulkToRaw, u / n as f64)
     }
 

@@ -14,6 +14,7 @@ use super::build::{Begun, Build, MixtureBuild, RoughBuild, SmoothBuild, built, w
 use super::engine::{ByDrive, ByKernel, ByLaw, Engine, RoughPairs, SmoothPairs};
 use super::kinds::declared_drives;
 use super::model::Model;
+use super::momentum::{Momentum, set_mean};
 use super::parts::{DriveModel, KernelModel, LawModel};
 use crate::drive::{Drive, NoDrive};
 use crate::engine::EngineError;
@@ -28,7 +29,8 @@ use core::marker::PhantomData;
 
 impl Model {
     /// Draws every particle's velocity from the initial distribution (one uniform for the
-    /// component, then the Maxwellian; particle by particle) and sets its last-kick time to
+    /// component, then the Maxwellian; particle by particle), with [`Momentum::Exact`] shifts
+    /// them (each species' sample) onto the distribution's mean, and sets its last-kick time to
     /// `t0`; rough particles' rim velocities come from the spin stream (`spin_stream`), so
     /// `rng` advances exactly as for smooth particles. Fails with
     /// [`EngineError::ParticleCount`] unless `p` holds `n` particles.
@@ -52,6 +54,11 @@ impl Model {
                 for q in &mut p.as_mut_slice()[mx.species.range(s)] {
                     let v = mx.starts[s].sample(rng);
                     *q = Particle::new(if disks { Vec3::new(v.x, v.y, 0.0) } else { v }, t0);
+                }
+                if self.momentum == Momentum::Exact {
+                    let d = mx.starts[s].drift();
+                    let target = if disks { Vec3::new(d.x, d.y, 0.0) } else { d };
+                    set_mean(&mut p.as_mut_slice()[mx.species.range(s)], target);
                 }
             }
             if let Some(r) = &mx.rotation {
@@ -87,6 +94,10 @@ impl Model {
             for q in p.as_mut_slice() {
                 q.vz = 0.0;
             }
+        }
+        if self.momentum == Momentum::Exact {
+            // The drifts lie in the plane for disks (validated), so the mean is the plane's.
+            set_mean(p.as_mut_slice(), self.initial().mean());
         }
         if let Some(r) = &self.rough {
             // The rim velocities from their own Maxwellian (disks keep its z component, their

@@ -52,6 +52,7 @@ mod kernels;
 mod kinds;
 mod laws;
 pub mod model;
+mod momentum;
 mod parts;
 mod rotation;
 mod schemes;
@@ -65,6 +66,7 @@ pub use kernels::KernelChoice;
 pub use kinds::{DriveKind, KernelKind, LawKind, SchemeKind};
 pub use laws::MAX_LAW_PARAMS;
 pub use model::Model;
+pub use momentum::Momentum;
 
 pub use crate::drive::MAX_DRIVE_PARAMS;
 pub use crate::geometry::DimensionChoice;
@@ -300,6 +302,9 @@ pub struct Physics {
     /// degree of freedom and `kappa` in (0, 1]; a mixture of disks has the pair cross section
     /// `(d_s + d_t)/2` (a length) where spheres have its square.
     pub dimension: DimensionChoice,
+    /// How the sample's total momentum starts ([`Momentum`]: independent draws, the default,
+    /// or the distribution's mean exactly).
+    pub momentum: Momentum,
 }
 
 impl Physics {
@@ -342,6 +347,7 @@ impl Physics {
             pair_tangential_restitution: heapless::Vec::new(),
             rotation: None,
             dimension: DimensionChoice::Three,
+            momentum: Momentum::Drawn,
         }
     }
 

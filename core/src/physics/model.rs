@@ -26,6 +26,7 @@ pub struct Model {
     pub(super) mixture: Option<super::species::Kept>,
     pub(super) rough: Option<super::rotation::RoughModel>,
     pub(super) dimension: super::DimensionChoice,
+    pub(super) momentum: super::Momentum,
     /// Hard spheres with no drive run on the sum-form majorant ([`crate::engine::SumNoSplitting`]);
     /// false: on `Umax` ([`crate::engine::NoSplitting`]), for comparisons.
     pub(super) sum_form: bool,
@@ -69,6 +70,7 @@ impl Model {
             mixture,
             rough,
             dimension,
+            momentum: physics.momentum,
             sum_form: true,
         })
     }
@@ -83,6 +85,11 @@ impl Model {
     /// The dimension (spheres or disks).
     pub fn dimension(&self) -> super::DimensionChoice {
         self.dimension
+    }
+
+    /// How the sample's total momentum starts.
+    pub fn momentum(&self) -> super::Momentum {
+        self.momentum
     }
 
     /// Particles per system.

@@ -51,7 +51,7 @@ const WEIGHTED: [ParamSpec; WEIGHTED_PARAMS] = [
     ParamSpec {
         name: "tail_speed",
         rule: Rule::Positive,
-        words: "where the tail starts, in thermal speeds sqrt(T)",
+        words: "where the tail starts, in units of sqrt(T) about the flow (a velocity component's standard deviation)",
         unit: "1",
         default: Some(3.0),
         example: 3.0,

@@ -88,7 +88,7 @@ fn by_speed(group: &mut [Particle], flow: Vec3) {
 /// keep their velocities, and the rest carry the correction ([`Tally::conserve`]): a global
 /// scale about the mean moves a far, light record by its distance times `lambda - 1`, and
 /// repeated reductions walked such records of a cooling hard-sphere gas (a light particle
-/// at a few times the thermal speed, kept there by the weight transfer) out to overflow.
+/// at a few times `sqrt(T)`, kept there by the weight transfer) out to overflow.
 const FAR: Real = 3.0;
 
 /// A weighted mean and spread accumulated one point at a time (West's weighted form of

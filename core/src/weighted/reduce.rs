@@ -120,7 +120,7 @@ impl Reduction {
 
 /// Reduces the weighted particles `p` (all at time `t`) toward `target` particles: sorted by speed about the flow and cut into
 /// `shells` shells of equal width in speed up to the fastest (or to
-/// [`super::windows::REACH`] thermal speeds, the last shell holding the particles beyond), shell `s` of weight `W_s` is
+/// [`super::windows::REACH`] `sqrt(T)`, the last shell holding the particles beyond), shell `s` of weight `W_s` is
 /// given `K_s = target (phi / S + (1 - phi) W_s^q / sum W^q)` particles (`q` the `exponent`,
 /// `phi` the `floor`, `S` the occupied shells; super::windows::Allocation), so each particle it keeps
 /// weighs about `w_s = W_s / K_s`; its particles are split into cells of nearby velocities

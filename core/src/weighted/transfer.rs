@@ -10,7 +10,7 @@ use crate::vec3::Vec3;
 /// equal: GRW's process), `kappa > 0` leaves a share `kappa/(1 + kappa)` of it behind.
 ///
 /// With a tail ([`Transfer::with_tail`]) `kappa` depends on the collision's outcome: a
-/// collision that sends a partner beyond `speed` thermal speeds from the flow moves
+/// collision that sends a partner beyond `speed sqrt(T)` from the flow moves
 /// `min(g_i, g_j)/(1 + kappa_tail)`, any other `min/(1 + kappa)`. The rate of each outcome is
 /// then `(1 + kappa(outcome)) max(g_i, g_j) B / n0`, so the rate times the weight moved stays
 /// `g_i g_j B / n0` outcome by outcome: the same Boltzmann operator, with the tail reached by
@@ -19,7 +19,7 @@ use crate::vec3::Vec3;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transfer {
     kappa: Real,
-    /// `(kappa_tail, speed)`: the tail's `kappa` and where it starts, in thermal speeds.
+    /// `(kappa_tail, speed)`: the tail's `kappa` and where it starts, in units of `sqrt(T)`.
     tail: Option<(Real, Real)>,
 }
 
@@ -30,7 +30,7 @@ impl Transfer {
     }
 
     /// `kappa` in the core and `kappa_tail >= kappa` for a collision that sends a partner
-    /// beyond `speed > 0` thermal speeds `sqrt(T)` from the flow (finite values), else `None`.
+    /// beyond `speed > 0` `sqrt(T)` from the flow (finite values), else `None`.
     pub fn with_tail(kappa: Real, kappa_tail: Real, speed: Real) -> Option<Self> {
         let ok = kappa_tail.is_finite() && kappa_tail >= kappa && speed.is_finite() && speed > 0.0;
         if !ok {

@@ -26,20 +26,20 @@ use crate::vec3::Vec3;
 /// The most speed shells an allocation cuts ([`Allocation`]).
 pub const MAX_SHELLS: usize = 64;
 
-/// How far the speed shells reach about the flow, in thermal speeds `sqrt(<|v - V|^2>/d)`
+/// How far the speed shells reach about the flow, in units of `sqrt(T) = sqrt(<|v - V|^2>/d)`
 /// (the weighted mean): the shells are of equal width up to the fastest particle or to this,
 /// whichever is nearer, and a particle beyond is in the last shell.
 ///
 /// Up to the fastest alone, the shells were as wide as the tail was long. In the inelastic
 /// Maxwell gas's cooling state, whose tail is a power law `c^-(d + s)` (Ernst and Brito 2002),
 /// the light particles the windows make reach far beyond the speeds a run observes (the weight
-/// beyond 28 thermal speeds was about 3e-10 of the whole), and the 32 shells then put the
+/// beyond 28 sqrt(T) was about 3e-10 of the whole), and the 32 shells then put the
 /// tail's first decades of probability into one or two shells of one share each: the local
 /// slope over `[x, 2x]` was resolved only to `x = 3` (`c = |v - V|/sqrt(2 T)`; at alpha = 1/2,
 /// d = 3), 8% below the exact root, and 15-80 times less efficient than equal weights. Up to
-/// 32 thermal speeds (the shells a thermal speed wide) it is resolved to `x = 10`, and the
+/// 32 sqrt(T) (the shells `sqrt(T)` wide) it is resolved to `x = 10`, and the
 /// exponent extrapolated from it is within 0.3% of the root (docs/weighted.md "The cooling
-/// state's tail exponent"). Runs whose fastest particle stays within 32 thermal speeds are
+/// state's tail exponent"). Runs whose fastest particle stays within 32 sqrt(T) are
 /// unchanged bit for bit (GRW Example 3's heated tail; Example 6's reaches beyond).
 pub const REACH: Real = 32.0;
 
@@ -66,7 +66,7 @@ pub struct Allocation {
 
 impl Allocation {
     /// The allocation of the `(speed about flow, weight)` of every particle, the fastest at
-    /// `fastest` and their thermal speed `thermal` (the shells reach the nearer of `fastest`
+    /// `fastest` and their `sqrt(T)`, `thermal` (the shells reach the nearer of `fastest`
     /// and [`REACH`] `thermal`).
     pub(crate) fn measure(
         particles: impl Iterator<Item = (Real, Real)>,
@@ -217,7 +217,7 @@ mod tests {
         assert_eq!(&c.each[..4], &[0.5; 4]);
     }
 
-    /// The shells reach [`REACH`] thermal speeds when the fastest particle is farther: a light
+    /// The shells reach [`REACH`] `sqrt(T)` when the fastest particle is farther: a light
     /// particle far out no longer widens every shell, and it shares the last shell's share.
     #[test]
     fn the_shells_reach_so_many_thermal_speeds() {
@@ -228,7 +228,7 @@ mod tests {
             (1000.0, 1.0),
             (6, 32, 0.0, 0.0),
         );
-        assert_eq!(a.per, 32.0 / REACH, "shells of a thermal speed");
+        assert_eq!(a.per, 32.0 / REACH, "shells sqrt(T) wide");
         assert_eq!(a.shell(2.5), 2);
         assert_eq!(a.shell(1000.0), 31, "beyond the reach: the last shell");
         assert_eq!(a.weights[31], 1e-9);

@@ -154,6 +154,10 @@ fn config(u: &mut Unstructured<'_>) -> gdsmc_config {
             }
         }
     }
+    // The start with exact momentum now and then (any nonzero value means it).
+    if u.ratio(1u8, 8u8).unwrap_or(false) {
+        c.exact_momentum = u.arbitrary().unwrap_or(1);
+    }
     c
 }
 

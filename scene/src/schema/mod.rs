@@ -185,6 +185,11 @@ pub struct ParticlesSpec {
     /// The dimension: 3 (spheres, the default) or 2 (disks: velocities in a plane).
     #[serde(default)]
     pub dimension: Option<Spanned<i64>>,
+    /// How the sample's total momentum starts: `"drawn"` (the default: independent draws) or
+    /// `"exact"` (the draws shifted onto the distribution's mean,
+    /// [`gdsmc_core::physics::Momentum`]).
+    #[serde(default)]
+    pub momentum: Option<Spanned<String>>,
 }
 
 fn default_n() -> Spanned<usize> {
@@ -197,6 +202,7 @@ impl Default for ParticlesSpec {
             n: default_n(),
             initial: InitialSpec::default(),
             dimension: None,
+            momentum: None,
         }
     }
 }

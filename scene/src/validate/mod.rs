@@ -83,6 +83,7 @@ impl SceneFile {
         let mixture = species::mixture(&mut ctx, self, n)?;
         let dimension = particles::dimension(&mut ctx, &self.particles)?;
         let rotation = rotation::rotation(&mut ctx, &self.rotation, dimension);
+        let momentum = particles::momentum(&ctx, &self.particles)?;
         let physics = Physics {
             n,
             initial,
@@ -95,6 +96,7 @@ impl SceneFile {
             pair_tangential_restitution: mixture.pair_tangential_restitution,
             rotation,
             dimension,
+            momentum,
         };
         let model = physics.validate().map_err(|e| ctx.physics_error(e))?;
         if dimension == gdsmc_core::physics::DimensionChoice::Two {

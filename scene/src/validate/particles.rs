@@ -3,7 +3,7 @@
 use super::Ctx;
 use crate::error::Error;
 use crate::schema::{InitialKind, ParticlesSpec, one};
-use gdsmc_core::physics::{Component, DimensionChoice, MAX_COMPONENTS, Param};
+use gdsmc_core::physics::{Component, DimensionChoice, MAX_COMPONENTS, Momentum, Param};
 use toml::Spanned;
 
 type Initial = heapless::Vec<Component, MAX_COMPONENTS>;
@@ -26,6 +26,31 @@ pub(super) fn dimension(ctx: &mut Ctx<'_>, spec: &ParticlesSpec) -> Result<Dimen
             "particles.dimension",
             format!("must be 2 (disks) or 3 (spheres), got {other}"),
         ),
+    }
+}
+
+/// How the sample's momentum starts (`momentum = "drawn"` or `"exact"`; absent: drawn).
+pub(super) fn momentum(ctx: &Ctx<'_>, spec: &ParticlesSpec) -> Result<Momentum, Error> {
+    let Some(m) = &spec.momentum else {
+        return Ok(Momentum::Drawn);
+    };
+    match Momentum::ALL
+        .iter()
+        .find(|k| k.scene_name() == m.get_ref().as_str())
+    {
+        Some(&k) => Ok(k),
+        None => {
+            let words: Vec<_> = Momentum::ALL.iter().map(|k| k.scene_name()).collect();
+            ctx.invalid(
+                m.span(),
+                "particles.momentum",
+                format!(
+                    "unknown momentum `{}`, expected one of `{}`",
+                    m.get_ref(),
+                    words.join("`, `")
+                ),
+            )
+        }
     }
 }
 

@@ -51,11 +51,21 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
             "particles  disks (d = 2): velocities in a plane, T per degree of freedom = <|c|^2>/2, a2 = <c^4>/(8 T^2) - 1"
         );
     }
+    let momentum = scene.physics().momentum;
+    if momentum == gdsmc_core::physics::Momentum::Exact {
+        let _ = writeln!(
+            s,
+            "start      {} (particles.momentum = \"{}\")",
+            momentum.words(),
+            momentum.scene_name()
+        );
+    }
     let mixture = !scene.physics().species.is_empty();
     // The granular temperature is the one about the flow (`T_bulk`): it leads. The raw `T`
-    // (about zero velocity) keeps the initial sample's centre-of-mass energy, frozen while a
-    // cooling gas's `T_bulk` falls by decades (6.3e-4 against 1e-10 in hcs-hard-spheres): it is
-    // shown only where a reference is of it, a paper's estimator defined on it (GRW's).
+    // (about zero velocity) of a drawn start keeps the sample's centre-of-mass energy, frozen
+    // while a cooling gas's `T_bulk` falls by decades (6.3e-4 against 1e-10 in hcs-hard-spheres
+    // before it started with exact momentum): it is shown only where a reference is of it, a
+    // paper's estimator defined on it (GRW's).
     let raw_judged = refs.iter().any(|r| r.of == name::T);
     let mut shown = vec![name::T_BULK, name::A2, name::CRIT];
     if raw_judged {

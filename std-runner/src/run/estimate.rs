@@ -173,7 +173,7 @@ pub fn estimate(scene: &Scene) -> WorkEstimate {
     } else {
         temperature
     };
-    // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) thermal speeds. The rates are the core's
+    // Umax = 2 max |v - V|: about sqrt(2 ln n + 3) sqrt(T). The rates are the core's
     // (its majorant and background bounds), from the validated physics.
     let model = scene.model();
     let umax = 2.0 * (temperature * (2.0 * libm::log(n) + 3.0)).sqrt();

@@ -175,6 +175,7 @@ fn maxwell_mixture(scene: &Scene) -> Option<(Arc<MaxwellMixture>, Vec<f64>)> {
         alpha: ma.alpha,
         temperatures: ph.species.iter().map(|s| s.temperature).collect(),
         beta: ma.beta,
+        momentum: ph.momentum,
     });
     Some((exact, fractions))
 }

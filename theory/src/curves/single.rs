@@ -134,14 +134,14 @@ pub(super) fn grw_limit(scene: &Scene) -> Vec<ReferenceCurve> {
 
 /// GRW (13)-(14)'s exact ensemble means at this n (and time step): the scheme's whole
 /// systematic error, for `T_bulk` and for the raw `T` (which adds the random walk of the bulk
-/// velocity, `bulk_to_raw`, and the initial drift). None for MS's time-stepped scheme, whose
+/// velocity, `bulk_to_raw_from` the scene's start of momentum, and the initial drift). None for MS's time-stepped scheme, whose
 /// collisions are not the Maxwell process's, nor for weighted particles under a drive that
 /// heats them by itself.
 pub(super) fn grw_mean_at_n(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some(mt) = maxwell_temperature(scene) else {
         return Vec::new();
     };
-    let (n, v0) = (scene.n(), drift(scene));
+    let (n, v0, momentum) = (scene.n(), drift(scene), scene.physics().momentum);
     let finite: Arc<dyn Fn(f64) -> f64 + Send + Sync> = match scene.physics().scheme {
         SchemeChoice::NoSplitting => Arc::new(move |t| mt.finite_n_bulk_mean(n, t)),
         SchemeChoice::Euler(dt) => Arc::new(move |t| mt.splitting_bulk_mean(n, dt, false, t)),
@@ -161,7 +161,9 @@ pub(super) fn grw_mean_at_n(scene: &Scene) -> Vec<ReferenceCurve> {
             of: name::T,
             source: "exact ensemble mean at this n and scheme",
             kind: Kind::MeanAtN,
-            curve: Box::new(move |t| raw(t) + mt.bulk_to_raw(n, t) + v0 * mt.drift_factor(t)),
+            curve: Box::new(move |t| {
+                raw(t) + mt.bulk_to_raw_from(momentum, n, t) + v0 * mt.drift_factor(t)
+            }),
         },
         ReferenceCurve {
             name: "T_bulk_mean_n",

@@ -107,6 +107,7 @@ mod tests {
             alpha: vec![0.9, 0.6, 0.8],
             temperatures: vec![1.0, 2.0],
             beta: vec![],
+            momentum: gdsmc_core::physics::Momentum::Drawn,
         };
         let t = exact.temperatures_at(200.0, true);
         let approx = MaxwellianApproximation {

@@ -25,6 +25,7 @@
 //! `3 N_s T_s / m_s = A_s - 2 sum_r m_r P_sr / M + N_s sum_{r,q} m_r m_q P_rq / M^2`.
 
 use gdsmc_core::mixture::pair_index;
+use gdsmc_core::physics::Momentum;
 
 /// An inelastic Maxwell mixture with a Maxwellian start of zero mean.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,6 +43,10 @@ pub struct MaxwellMixture {
     /// White-noise strength of each species (GRW (18): every particle's `<|v|^2>` grows by
     /// `6 beta_s` per unit time, so `A_s` and `|Q_s|^2` by `6 beta_s N_s`); empty: none.
     pub beta: Vec<f64>,
+    /// How the sample's momentum starts: independent draws, or each species' sample shifted
+    /// onto the distribution's mean (zero here), which starts `P_st` at 0 and `A_s` at
+    /// `3 (N_s - 1) T_s / m_s`.
+    pub momentum: Momentum,
 }
 
 impl MaxwellMixture {
@@ -131,13 +136,21 @@ impl MaxwellMixture {
         m
     }
 
-    /// The expected state `X(0)`: `E A_s = E |Q_s|^2 = 3 N_s T_s / m_s`, `E P_st = 0`.
+    /// The expected state `X(0)`: drawn, `E A_s = E |Q_s|^2 = 3 N_s T_s / m_s`, `E P_st = 0`
+    /// (`s != t`); exact momentum, `Q_s = 0`, so `P_st = 0` and `E A_s = 3 (N_s - 1) T_s / m_s`
+    /// (the sum of squares about the sample's mean).
     fn initial(&self) -> Vec<f64> {
         let mut x = vec![0.0; self.dim()];
         for s in 0..self.species() {
-            let v = 3.0 * self.counts[s] as f64 * self.temperatures[s] / self.masses[s];
-            x[s] = v;
-            x[self.p(s, s)] = v;
+            let per = 3.0 * self.temperatures[s] / self.masses[s];
+            let n = self.counts[s] as f64;
+            match self.momentum {
+                Momentum::Drawn => {
+                    x[s] = n * per;
+                    x[self.p(s, s)] = n * per;
+                }
+                Momentum::Exact => x[s] = (n - 1.0) * per,
+            }
         }
         x
     }

@@ -1,6 +1,7 @@
 //! The exact second moments of a Maxwell mixture against one species and their own limits.
 
 use super::*;
+use gdsmc_core::physics::Momentum;
 
 /// One species of `n` particles, unit mass, start temperature 1.5.
 fn one_species(n: usize, alpha: f64, kappa: f64, beta: f64) -> MaxwellMixture {
@@ -11,6 +12,7 @@ fn one_species(n: usize, alpha: f64, kappa: f64, beta: f64) -> MaxwellMixture {
         alpha: vec![alpha],
         temperatures: vec![1.5],
         beta: vec![beta],
+        momentum: Momentum::Drawn,
     }
 }
 
@@ -99,6 +101,7 @@ fn two_equal_species_are_one() {
         alpha: vec![alpha; 3],
         temperatures: vec![1.0, 1.0],
         beta: vec![],
+        momentum: Momentum::Drawn,
     };
     for &t in &[0.5, 1.5] {
         let ts = mix.temperatures_at(t, false);
@@ -109,6 +112,7 @@ fn two_equal_species_are_one() {
             alpha: vec![alpha],
             temperatures: vec![1.0],
             beta: vec![],
+            momentum: Momentum::Drawn,
         }
         .temperatures_at(t, false)[0];
         let mixed = (4.0 * ts[0] + 6.0 * ts[1]) / 10.0;

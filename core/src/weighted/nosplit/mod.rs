@@ -9,7 +9,7 @@
 //! with probability `max(g_i, g_j)/g_max` times the kernel's acceptance (GRW (20)). A transfer
 //! whose `kappa` depends on the outcome ([`Transfer::with_tail`]) bounds with its largest,
 //! and thins an outcome by `(1 + kappa(outcome))/(1 + kappa_max)` once it is drawn; its
-//! thermal speed is the temperature about `vref` at the last refresh of the bounds. With no
+//! scale `sqrt(T)` is from the temperature about `vref` at the last refresh of the bounds. With no
 //! drive the bound covers every velocity a collision makes (`Umax` grows to cover it, `g_max`
 //! never grows in a collision), so no pair overshoots and the process has no time-step error.
 //! When after a collision the buffer could not take the next one's particles, the system is
@@ -59,7 +59,7 @@ use crate::vec3::Vec3;
 /// A pair whose lighter partner weighs less than this (a particle of the start weighs 1)
 /// moves it whole (`kappa = 0`, at its rate: the outcome thinned by `1/(1 + kappa_max)`), so
 /// no lineage of ever lighter remainders is left at one velocity: a light particle of a
-/// cooling hard-sphere gas at a few thermal speeds, halved by every collision it had
+/// cooling hard-sphere gas at a few sqrt(T), halved by every collision it had
 /// (`kappa = 1`), fell to 1e-170 and below, collided ever more often for its speed, and its
 /// weight underflowed to 0 (a non-finite mean followed). Far below any weight that counts:
 /// `n0` sums to 16 digits.
@@ -80,7 +80,7 @@ pub struct WeightedNoSplitting<K, A, D, G> {
     /// The bounds: `Umax` about `vref`, and the largest weight.
     umax: Real,
     vref: Vec3,
-    /// The temperature about `vref` at the last refresh (a tail's thermal speed).
+    /// The temperature about `vref` at the last refresh (a tail's scale `sqrt(T)`).
     tref: Real,
     gmax: Real,
     t: Real,
@@ -361,7 +361,7 @@ impl<K: Kernel, A: Restitution, D: Drive, G: Geometry> WeightedNoSplitting<K, A,
     }
 
     /// The `kappa` of the outcome `(a, b)` ([`Transfer::with_tail`]: the tail's when a partner
-    /// lands beyond its speed from `vref`, in thermal speeds of the last refresh; 0 for a pair
+    /// lands beyond its speed from `vref`, in units of `sqrt(T)` of the last refresh; 0 for a pair
     /// whose lighter partner weighs less than [`LIGHTEST`]), or `None` when the outcome is
     /// thinned away, with probability `1 - (1 + kappa)/(1 + kappa_max)`.
     fn outcome_kappa<R: Rng + ?Sized>(

@@ -5,8 +5,8 @@
 //! of the thin shells move with them: with the shells' width (the fastest particle's speed
 //! over their number) and with the few particles a far shell holds. A particle that was
 //! within its window may then be far over it. Split only when an event next touched it, it
-//! was first kicked whole: a particle near 8 thermal speeds of GRW Example 3, a few times
-//! over its share, kicked a third of a thermal speed out, landed where it weighed hundreds
+//! was first kicked whole: a particle near 8 sqrt(T) of GRW Example 3, a few times
+//! over its share, kicked a third of sqrt(T) out, landed where it weighed hundreds
 //! of shares, and those arrivals made most of the variance of the weight found there (and
 //! the rare rounds whose variance was ten to a hundred times the median). So every refresh
 //! passes every particle through the new windows. A particle not touched since its last kick
@@ -88,7 +88,7 @@ mod tests {
     use crate::weighted::{Reduction, Transfer};
 
     /// A refresh passes every particle through the windows it measures: 64 particles of a
-    /// Maxwellian and one of weight 20 at 6 thermal speeds, windows turned on after the start
+    /// Maxwellian and one of weight 20 at 6 sqrt(T), windows turned on after the start
     /// (so the first refresh measures them); after it every particle is within its window and
     /// the heavy one was cut. Fails when the refresh leaves the particles to the next event
     /// that touches them (checked).
