@@ -102,6 +102,9 @@ pub struct Scene {
     species_names: Vec<String>,
     /// The mole fractions of a mixture's species, as written (normalized when counted).
     species_fractions: Vec<f64>,
+    /// What the scene derived from other keys, in words (`gamma C` from
+    /// `collisions.diameter` and `density`).
+    derived: Vec<String>,
 }
 
 impl PartialEq for Scene {
@@ -125,6 +128,7 @@ impl PartialEq for Scene {
             seed,
             species_names,
             species_fractions,
+            derived: _,
         } = self;
         (
             name,
@@ -263,6 +267,12 @@ impl Scene {
     #[must_use]
     pub fn species_fractions(&self) -> &[f64] {
         &self.species_fractions
+    }
+
+    /// What the scene derived from other keys, in words, for the summary (the kernel's
+    /// strength from `collisions.diameter` and `collisions.density`).
+    pub fn derived(&self) -> &[String] {
+        &self.derived
     }
 
     /// Sets the number of ensembles, validated as `run.ensembles` is (at least 1).

@@ -38,6 +38,7 @@ impl Scene {
             marginal_histogram: None,
             ensembles: 1,
             seed: 0,
+            derived: Vec::new(),
         };
         scene.set_times(times)?;
         Ok(scene)

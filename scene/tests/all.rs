@@ -7,6 +7,7 @@ mod kinds;
 mod mixture_scenes;
 mod rough_scenes;
 mod scene_errors;
+mod size;
 mod sweep_table;
 mod weighted_scenes;
 

@@ -178,6 +178,34 @@ impl Trajectory {
 mod tests {
     use super::*;
 
+    /// A scene's `collisions.diameter` and `density` give the kinetic theory's collision
+    /// frequency of hard particles at a Maxwellian: `4 sqrt(pi) n sigma^2 sqrt(T/m)` for spheres
+    /// (Chapman and Cowling), `2 sqrt(pi) n sigma sqrt(T/m)` for disks (the 2D cross-section
+    /// `2 sigma` times `<|u|> = sqrt(pi T/m)`), written here from those formulas, not from the
+    /// scene crate's.
+    #[test]
+    fn a_scenes_diameter_and_density_give_the_kinetic_theorys_collision_frequency() {
+        let (sigma, n, t) = (0.7, 1.9, 2.5);
+        for d in [3usize, 2] {
+            let text = format!(
+                "[particles]\nn = 64\ndimension = {d}\n[collisions]\nkernel = \"hard-spheres\"\n\
+                 diameter = {sigma}\ndensity = {n}\nrestitution = 0.9\n[drive]\nkind = \"none\"\n\
+                 [observe]\nt_end = 1.0\nintervals = 1\n"
+            );
+            let scene = gdsmc_scene::parse(std::path::Path::new("s.toml"), &text).unwrap();
+            let gc = scene.physics().kernel.strength();
+            let omega = collision_rate(d, gc, 1.0, t);
+            let kinetic = match d {
+                3 => 4.0 * PI.sqrt() * n * sigma * sigma * t.sqrt(),
+                _ => 2.0 * PI.sqrt() * n * sigma * t.sqrt(),
+            };
+            assert!(
+                (omega / kinetic - 1.0).abs() < 1e-14,
+                "d = {d}: {omega} against {kinetic}"
+            );
+        }
+    }
+
     fn cooling(kappa: f64, q: f64, a: f64, b: f64) -> EnergyBalance {
         EnergyBalance {
             t0: 1.0,

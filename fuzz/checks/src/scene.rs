@@ -58,7 +58,15 @@ pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::ne
             }
         }
     }
-    let mut collisions = vec!["kernel", "gamma", "c", "restitution", "impact_speed_law"];
+    let mut collisions = vec![
+        "kernel",
+        "gamma",
+        "c",
+        "diameter",
+        "density",
+        "restitution",
+        "impact_speed_law",
+    ];
     for k in KernelKind::ALL {
         for p in k.params() {
             if !collisions.contains(&p.name) {

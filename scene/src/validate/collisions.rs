@@ -5,25 +5,32 @@ use super::Ctx;
 use super::declared::Table;
 use crate::error::Error;
 use crate::schema::CollisionsSpec;
-use gdsmc_core::physics::{KernelChoice, LawKind, Param, RestitutionLaw};
+use gdsmc_core::physics::{DimensionChoice, KernelChoice, LawKind, Param, RestitutionLaw};
 
-/// The keys of `[collisions]` with every kernel (a kernel's own follow them).
-pub const COMMON_KEYS: [&str; 6] = [
+/// The keys of `[collisions]` with every kernel (a kernel's own follow them; `diameter` and
+/// `density` are for hard particles, `super::size`).
+pub const COMMON_KEYS: [&str; 8] = [
     "kernel",
     "gamma",
     "c",
+    "diameter",
+    "density",
     "restitution",
     "impact_speed_law",
     "pair_restitution",
 ];
 
-/// The kernel and the restitution law, with the keys that hold their parameters.
+/// The kernel and the restitution law, with the keys that hold their parameters, and the
+/// words of a strength derived from `diameter` and `density` (`super::size`).
 pub(super) fn collisions(
     ctx: &mut Ctx<'_>,
     c: &CollisionsSpec,
-) -> Result<(KernelChoice, RestitutionLaw), Error> {
+    dimension: DimensionChoice,
+    mixture: bool,
+) -> Result<(KernelChoice, RestitutionLaw, Option<String>), Error> {
     ctx.holds(Param::Gamma, "collisions.gamma", c.gamma.span());
     ctx.holds(Param::C, "collisions.c", c.c.span());
+    let derived = super::size::derived(ctx, c, dimension, mixture)?;
     let kind = *c.kernel.get_ref();
     let table = Table {
         name: "collisions",
@@ -40,7 +47,11 @@ pub(super) fn collisions(
     let whose = format!("[collisions] with {}", table.kind_words);
     table.only(ctx, &keys, std::iter::empty(), &whose)?;
     let values = table.declared(ctx, specs, |i| Param::Kernel(kind, i))?;
-    let kernel = KernelChoice::new(kind, *c.gamma.get_ref(), *c.c.get_ref(), &values)
+    let (gamma, cc) = match &derived {
+        Some(d) => (1.0, d.strength),
+        None => (*c.gamma.get_ref(), *c.c.get_ref()),
+    };
+    let kernel = KernelChoice::new(kind, gamma, cc, &values)
         .expect("a kernel takes one value per parameter");
     if let (Some(r), Some(_)) = (&c.restitution, &c.pair_restitution) {
         return ctx.invalid(
@@ -97,5 +108,5 @@ pub(super) fn collisions(
             );
         }
     };
-    Ok((kernel, law))
+    Ok((kernel, law, derived.map(|d| d.words)))
 }

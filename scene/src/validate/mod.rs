@@ -12,6 +12,7 @@ pub(crate) mod observe;
 mod particles;
 mod rotation;
 pub(crate) mod scheme;
+pub mod size;
 pub mod species;
 pub(crate) mod sweep;
 
@@ -76,12 +77,19 @@ impl SceneFile {
     pub fn validate(&self, path: &Path, text: &str) -> Result<Scene, Error> {
         let mut ctx = Ctx::new(path, text);
         let (n, initial) = particles::particles(&mut ctx, &self.particles)?;
-        let (kernel, restitution) = collisions::collisions(&mut ctx, &self.collisions)?;
+        let dimension = particles::dimension(&mut ctx, &self.particles)?;
+        let (kernel, restitution, derived) = collisions::collisions(
+            &mut ctx,
+            &self.collisions,
+            dimension,
+            self.species
+                .as_ref()
+                .is_some_and(|s| !s.get_ref().is_empty()),
+        )?;
         let drive = drive::drive(&mut ctx, &self.drive)?;
         let times = observe::times(&ctx, &self.observe)?;
         let scheme = scheme::scheme(&mut ctx, &self.scheme)?;
         let mixture = species::mixture(&mut ctx, self, n)?;
-        let dimension = particles::dimension(&mut ctx, &self.particles)?;
         let rotation = rotation::rotation(&mut ctx, &self.rotation, dimension);
         let momentum = particles::momentum(&ctx, &self.particles)?;
         let physics = Physics {
@@ -133,6 +141,7 @@ impl SceneFile {
             seed,
             species_names: mixture.names,
             species_fractions: mixture.fractions,
+            derived: derived.into_iter().collect(),
         })
     }
 }

@@ -37,6 +37,9 @@ pub fn text(scene: &Scene, stats: &RunStats, refs: &[ReferenceCurve]) -> String 
         c.collisions as f64 / stats.wall.as_secs_f64().max(1e-9)
     );
     let _ = writeln!(s, "{}", units(scene, stats));
+    for d in scene.derived() {
+        let _ = writeln!(s, "derived    {d}");
+    }
     if c.background > 0 {
         let _ = writeln!(
             s,
