@@ -10,8 +10,8 @@
 #
 #   bash embedded/run.sh                 build, run, compare
 #   bash embedded/run.sh --figures       also print the figures table (markdown)
-#   bash embedded/run.sh --update-readme also write that table into README.md
-#   bash embedded/run.sh --check-readme  fail when README.md's table is not the measured one
+#   bash embedded/run.sh --update-readme also write that table into docs/guide.md
+#   bash embedded/run.sh --check-readme  fail when docs/guide.md's table is not the measured one
 set -euo pipefail
 cd "$(dirname "$0")"
 MODE="${1:-}"
@@ -20,7 +20,7 @@ TARGET=thumbv7em-none-eabihf
 M4=target/$TARGET/release/gdsmc-firmware
 M7=target/m7/$TARGET/release/gdsmc-firmware
 
-# The sizes in README's table must not depend on where the repository or the cargo registry
+# The sizes in docs/guide.md's table must not depend on where the repository or the cargo registry
 # lie. Source paths end up in the binaries (panic locations): mapped to fixed names. And cargo
 # hashes the absolute path of a path dependency outside this workspace (../core) into its
 # symbol names, whose order moves code by tens of bytes (the same source gave 370,160 bytes
@@ -135,19 +135,19 @@ case "$MODE" in
         python3 - "$MODE" "$TABLE" <<'PY'
 import sys
 mode, table = sys.argv[1], sys.argv[2]
-path = "../README.md"
+path = "../docs/guide.md"
 text = open(path).read()
 start, end = "<!-- embedded-figures:start -->\n", "<!-- embedded-figures:end -->"
 a, b = text.index(start) + len(start), text.index(end)
 if mode == "--update-readme":
     open(path, "w").write(text[:a] + table + "\n" + text[b:])
-    print("README.md: figures table updated")
+    print("docs/guide.md: figures table updated")
 elif text[a:b].strip() != table.strip():
-    print("README.md's embedded figures differ from the measured ones; run bash embedded/run.sh --update-readme", file=sys.stderr)
+    print("docs/guide.md's embedded figures differ from the measured ones; run bash embedded/run.sh --update-readme", file=sys.stderr)
     print(table, file=sys.stderr)
     sys.exit(1)
 else:
-    print("README.md's embedded figures are the measured ones")
+    print("docs/guide.md's embedded figures are the measured ones")
 PY
         ;;
     *) echo "unknown option $MODE" >&2; exit 2 ;;
