@@ -42,6 +42,9 @@
 // Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)). Its parameters in `kernel_params`: GDSMC_VHS_LAMBDA.
 #define GDSMC_KERNEL_VHS 2
 
+// Ernst and Brito's inelastic Maxwell model in its impact form, `B = gamma C` with the impact direction uniform (`e` of GRW (3) its reflection; in `d = 2` the Maxwell kernel's law).
+#define GDSMC_KERNEL_MAXWELL_IMPACT 3
+
 // A constant restitution coefficient alpha (`restitution`).
 #define GDSMC_RESTITUTION_CONSTANT 0
 

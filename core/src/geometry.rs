@@ -10,7 +10,9 @@
 //!   kernels (isotropic scattering); for hard particles the reflection of `u_hat` at an impact
 //!   direction with density proportional to `u_hat . n`, which is uniform in d = 3 but not in
 //!   d = 2: there the impact parameter `b` is uniform on `(-1, 1)`, `n = sqrt(1 - b^2) u_hat +
-//!   b u_perp` and `e = (2b^2 - 1) u_hat - 2b sqrt(1 - b^2) u_perp`;
+//!   b u_perp` and `e = (2b^2 - 1) u_hat - 2b sqrt(1 - b^2) u_perp`; for the impact form of
+//!   the inelastic Maxwell model the reflection at a uniform `n`, not uniform in d = 3 and
+//!   uniform in d = 2 (the reflection doubles a uniform angle);
 //! - the white-noise kick GRW (18) acts on `d` components;
 //! - temperatures and cumulants count `d` degrees of freedom: `T = <|c|^2>/d`, MS (3)
 //!   `a2 = <c^4>/(d(d+2) T^2) - 1` ([`crate::moments::Observables::of_dim`]).
@@ -109,7 +111,11 @@ impl Geometry for Spheres {
     }
 
     #[inline(always)]
-    fn scattering<K: Kernel, R: Rng + ?Sized>(_u: Vec3, rng: &mut R) -> Vec3 {
+    fn scattering<K: Kernel, R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
+        if K::UNIFORM_IMPACT {
+            // The reflection of `u_hat` at a uniform impact direction (the impact form).
+            return crate::collision::scattering_direction_from_impact(u, unit_sphere(rng));
+        }
         unit_sphere(rng)
     }
 
@@ -162,6 +168,8 @@ impl Geometry for Disks {
     #[inline(always)]
     fn scattering<K: Kernel, R: Rng + ?Sized>(u: Vec3, rng: &mut R) -> Vec3 {
         if !K::HARD {
+            // Isotropic scattering; the impact form's reflection of `u_hat` at a uniform `n`
+            // doubles a uniform angle, so its `e` is uniform too (module docs).
             return unit_circle(rng);
         }
         match plane_frame(u) {

@@ -16,6 +16,9 @@ pub const GDSMC_KERNEL_HARD_SPHERES: u32 = 1;
 /// Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5)). Its parameters in `kernel_params`: GDSMC_VHS_LAMBDA.
 pub const GDSMC_KERNEL_VHS: u32 = 2;
 
+/// Ernst and Brito's inelastic Maxwell model in its impact form, `B = gamma C` with the impact direction uniform (`e` of GRW (3) its reflection; in `d = 2` the Maxwell kernel's law).
+pub const GDSMC_KERNEL_MAXWELL_IMPACT: u32 = 3;
+
 /// A constant restitution coefficient alpha (`restitution`).
 pub const GDSMC_RESTITUTION_CONSTANT: u32 = 0;
 

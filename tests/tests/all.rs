@@ -20,6 +20,7 @@ mod host_medium;
 mod impact_speed;
 mod langevin;
 mod linear_heating;
+mod maxwell_impact;
 mod maxwell_relaxation;
 mod mixture;
 mod mixture_steady;

@@ -1,6 +1,6 @@
 //! The inelastic Maxwell gas's cooling state has a power-law tail `F(c) ~ c^-(d + s)` whose
 //! exponent is the exact root `s(alpha)` of Ernst and Brito 2002
-//! (theory/src/maxwell_cumulant.rs `tail_exponent`): the runner's measurement of it
+//! (theory/src/maxwell_form.rs `Form::tail_exponent`): the runner's measurement of it
 //! (analysis/power_tail.rs: the local slopes of the reduced cumulative tail over the farthest
 //! window `[x, 2x]` resolved with every nearer one and over `[x/2, x]`, extrapolated past
 //! their `x^-2` approach, its 99.9% interval by the delta method) holds it in d = 3 and in the
@@ -11,9 +11,14 @@
 //! seeds. Each check is the verdict's own 99.9% interval; the two dimensions' checks of a test
 //! together are at 99.8%.
 
-use gdsmc_runner::analysis::power_tail::{PowerTail, measure};
-use gdsmc_theory::maxwell_cumulant::tail_exponent;
+use gdsmc_runner::analysis::power_tail::{JUDGED_FROM, PowerTail, measure};
+use gdsmc_theory::maxwell_form::Form;
 use gdsmc_validation::*;
+
+/// The scattering form's root (GRW (3), `e` uniform: the shipped Maxwell scenes' model).
+fn tail_exponent(d: usize, alpha: f64) -> f64 {
+    Form::Scattering.tail_exponent(d, alpha)
+}
 
 /// The shipped Maxwell cooling scene at `alpha` in dimension `d`, its reduced tail in 80
 /// shells to `c = 20` averaged over t in [10, 30] (the scaled state is reached by t = 10).
@@ -44,7 +49,14 @@ fn assert_holds_the_root(t: &PowerTail, (d, alpha): (usize, f64), from: f64, rel
         "d = {d}: the window {m:?} is pre-asymptotic"
     );
     assert!(ci < rel * exact, "d = {d}: uninformative {m:?}");
-    assert_eq!(t.agrees(), Some(true), "d = {d}: {m:?} against {exact}");
+    if m.from >= JUDGED_FROM {
+        assert_eq!(t.agrees(), Some(true), "d = {d}: {m:?} against {exact}");
+    } else {
+        // Nearer, the runner shows the exponent without a verdict (pre-asymptotic); the
+        // estimator still holds the root here.
+        assert_eq!(t.agrees(), None, "d = {d}: a pre-asymptotic window judged");
+        assert!((v - exact).abs() <= ci, "d = {d}: {m:?} against {exact}");
+    }
     let other = tail_exponent(5 - d, alpha);
     assert!((v - other).abs() > ci, "d = {d}: {m:?} holds {other} too");
 }

@@ -17,6 +17,8 @@ pub mod hydro;
 pub mod impact_speed;
 pub mod initial;
 pub mod maxwell_cumulant;
+pub mod maxwell_form;
+pub mod maxwell_impact;
 pub mod maxwell_temperature;
 pub mod mixture;
 pub mod mutation;

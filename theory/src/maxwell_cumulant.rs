@@ -43,7 +43,8 @@
 //! between `v` and `e`; the moment `mu_p` decays at `K lambda_p`, `lambda_p = 2 (1 -
 //! E_e[rho_1^p + rho_2^p])` to leading order (exact for `p = 2, 4`: the coefficients above),
 //! and the scaled moment of order `p` is finite while `lambda_p > p lambda_2 / 2`. The
-//! [`tail_exponent`] `s` is where they meet. So `a2` exists for every alpha (`s > 4`), but its
+//! tail exponent `s` is where they meet (`crate::maxwell_form::Form::tail_exponent`).
+//! So `a2` exists for every alpha (`s > 4`), but its
 //! estimate from a sample has a finite variance only where `s > 8`, and at finite `n` the
 //! tail is cut near `c ~ n^(1/s)`, a deviation of `a2` of order `n^-((s - 4)/s)`, not `1/n`.
 
@@ -71,43 +72,34 @@ pub fn cooling_state_a2(d: usize, alpha: f64) -> f64 {
     2.0 * (df + 1.0) * (1.0 - alpha).powi(2) / (3.0 * df - 5.0 + (df + 1.0) * alpha * (2.0 - alpha))
 }
 
-/// The tail exponent `s(alpha)` of the cooling state (module docs): the root above 2 of
-/// `lambda_p = p lambda_2 / 2` (found by bisection on `[2, 200]`, `lambda_p` by the midpoint
-/// rule on 20,000 cells of the direction's cosine, or of its angle on the circle).
-#[must_use]
-pub fn tail_exponent(d: usize, alpha: f64) -> f64 {
-    let l2 = (1.0 - alpha * alpha) / 2.0;
-    let gap = |p: f64| asymptotic_rate(d, alpha, p) - p * l2 / 2.0;
-    let (mut lo, mut hi) = (2.0 + 1e-9, 200.0);
-    if gap(hi) >= 0.0 {
-        return f64::INFINITY; // the elastic gas: no power-law tail
-    }
-    for _ in 0..80 {
-        let mid = 0.5 * (lo + hi);
-        if gap(mid) > 0.0 { lo = mid } else { hi = mid }
-    }
-    0.5 * (lo + hi)
-}
-
 /// `lambda_p = 2 (1 - E_e[rho_1^p + rho_2^p])` of the module docs.
 #[must_use]
 pub fn asymptotic_rate(d: usize, alpha: f64, p: f64) -> f64 {
-    const CELLS: usize = 20_000;
     let (a, b) = ((3.0 - alpha) / 4.0, (1.0 + alpha) / 4.0);
+    let mean = over_directions(d, |cos| {
+        let r1 = a * a + b * b + 2.0 * a * b * cos;
+        let r2 = (2.0 * b * b * (1.0 - cos)).max(0.0);
+        libm::pow(r1, p / 2.0) + libm::pow(r2, p / 2.0)
+    });
+    2.0 * (1.0 - mean)
+}
+
+/// The mean of `f(cos)` over a direction uniform on the unit sphere (`d = 3`: the cosine to a
+/// fixed axis uniform on `[-1, 1]`) or circle (`d = 2`: the angle uniform), by the midpoint
+/// rule on 20,000 cells.
+pub(crate) fn over_directions(d: usize, f: impl Fn(f64) -> f64) -> f64 {
+    const CELLS: usize = 20_000;
     let mut sum = 0.0;
     for i in 0..CELLS {
         let x = (i as f64 + 0.5) / CELLS as f64;
-        // e uniform: the cosine is uniform on a sphere, the angle on a circle.
         let cos = if d == 2 {
             libm::cos(std::f64::consts::PI * x)
         } else {
             2.0 * x - 1.0
         };
-        let r1 = a * a + b * b + 2.0 * a * b * cos;
-        let r2 = (2.0 * b * b * (1.0 - cos)).max(0.0);
-        sum += libm::pow(r1, p / 2.0) + libm::pow(r2, p / 2.0);
+        sum += f(cos);
     }
-    2.0 * (1.0 - sum / CELLS as f64)
+    sum / CELLS as f64
 }
 
 /// `a2(t)` of the module from a start with `mu_4 / mu_2^2 = r_0`, under a drive that heats
@@ -149,21 +141,23 @@ impl MaxwellCumulant {
             b: 0.0,
             p: 0.0,
         };
-        Self::heated(d, alpha, (gamma, c0), (1.0, r0), none).expect("no kicks: no resonance")
+        let c = coefficients(d, alpha);
+        Self::heated(d, c, (gamma, c0), (1.0, r0), none).expect("no kicks: no resonance")
     }
 
-    /// As [`Self::new`] from the temperature `t0` about the bulk velocity and `r0`, under the
-    /// drive's heating `h` (type docs); `None` where the solution has no steady state to relax
-    /// to (`a > 0` with `k <= 0`) or a forcing rate meets `A`.
+    /// As [`Self::new`] for a model of moment coefficients `(lambda_2, lambda_4, b_4)` (this
+    /// module's [`coefficients`], or the impact form's, `crate::maxwell_form::Form`), from the
+    /// temperature `t0` about the bulk velocity and `r0`, under the drive's heating `h` (type
+    /// docs); `None` where the solution has no steady state to relax to (`a > 0` with
+    /// `k <= 0`) or a forcing rate meets `A`.
     #[must_use]
     pub fn heated(
         d: usize,
-        alpha: f64,
+        (l2, l4, b4): (f64, f64, f64),
         (gamma, c0): (f64, f64),
         (t0, r0): (f64, f64),
         h: Heating,
     ) -> Option<Self> {
-        let (l2, l4, b4) = coefficients(d, alpha);
         let df = d as f64;
         let kk = 2.0 * std::f64::consts::PI * gamma * c0;
         let (k, a4) = (kk * l2 - h.b, kk * l4 - 2.0 * h.b);
@@ -312,7 +306,7 @@ mod tests {
                 );
             }
         }
-        let s = |d, a| tail_exponent(d, a);
+        let s = |d, a| crate::maxwell_form::Form::Scattering.tail_exponent(d, a);
         assert!(s(3, 0.4) < 8.0 && s(3, 0.5) > 8.0);
         assert!(s(2, 0.5) < 8.0 && s(2, 0.6) > 8.0);
         assert!((s(2, 0.1) - 4.544).abs() < 1e-3 && (s(3, 0.1) - 5.154).abs() < 1e-3);
@@ -388,7 +382,9 @@ mod tests {
                     2.0,
                 ),
             ] {
-                let m = MaxwellCumulant::heated(d, alpha, (gamma, c0), (t0, r0), h).unwrap();
+                let m =
+                    MaxwellCumulant::heated(d, coefficients(d, alpha), (gamma, c0), (t0, r0), h)
+                        .unwrap();
                 let temp = MaxwellTemperature::new(t0, alpha, 0.0, gamma, c0).with_heating(h);
                 let mu2 = |t: f64| df * temp.at(t);
                 let mu4 = |t: f64| (m.at(t) + 1.0) * (df + 2.0) / df * mu2(t) * mu2(t);
@@ -411,7 +407,9 @@ mod tests {
                 b: 0.3,
                 p: 0.0,
             };
-            let g = MaxwellCumulant::heated(d, alpha, (gamma, c0), (2.0, 1.7), gauss).unwrap();
+            let g =
+                MaxwellCumulant::heated(d, coefficients(d, alpha), (gamma, c0), (2.0, 1.7), gauss)
+                    .unwrap();
             let cooling = MaxwellCumulant::new(d, alpha, gamma, c0, 1.7);
             assert!((g.at(1.5) - cooling.at(1.5)).abs() < 1e-12);
         }
@@ -424,6 +422,9 @@ mod tests {
             b: 2.0 * kk * l2,
             p: 0.0,
         };
-        assert!(MaxwellCumulant::heated(3, 0.5, (gamma, c0), (1.0, 1.0), runaway).is_none());
+        assert!(
+            MaxwellCumulant::heated(3, coefficients(3, 0.5), (gamma, c0), (1.0, 1.0), runaway)
+                .is_none()
+        );
     }
 }

@@ -12,11 +12,13 @@
 pub mod declared;
 pub mod hard_spheres;
 pub mod maxwell;
+pub mod maxwell_impact;
 pub mod vhs;
 
 pub use declared::{Declared, MAX_KERNEL_PARAMS, ParamSpec};
 pub use hard_spheres::HardSpheres;
 pub use maxwell::Maxwell;
+pub use maxwell_impact::MaxwellImpact;
 pub use vhs::Vhs;
 
 use crate::math::{Real, sqrt};
@@ -61,6 +63,12 @@ pub trait Kernel: Copy + core::fmt::Debug {
     /// (hard disks) it does not ([`crate::geometry::Disks`]), while the Maxwell and VHS
     /// kernels keep isotropic scattering.
     const HARD: bool = false;
+
+    /// True for the impact form of the inelastic Maxwell model ([`MaxwellImpact`]): the
+    /// impact direction `n` is uniform and `e` of GRW (3) its reflection of `u_hat`, which is
+    /// not uniform in d = 3; false for GRW (3)'s scattering form, `e` uniform (the Maxwell and
+    /// VHS kernels), and for hard particles, whose `n` follows `HARD`'s impact law.
+    const UNIFORM_IMPACT: bool = false;
 
     /// `int_{S^2} B de <= B_max = 4 pi gamma C_lambda Umax^lambda`: GRW (19), RW (7), (19).
     fn b_max(&self, umax: Real) -> Real;

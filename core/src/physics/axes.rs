@@ -36,6 +36,15 @@ macro_rules! kernel_table {
                 "vhs",
                 "Variable hard spheres, `B = gamma C |u|^lambda` (GRW (5))."
             ),
+            MaxwellImpact(
+                3,
+                "maxwell-impact",
+                crate::kernel::MaxwellImpact,
+                "maxwell-impact",
+                "Ernst and Brito's inelastic Maxwell model in its impact form, `B = gamma C` with \
+the impact direction uniform (`e` of GRW (3) its reflection; in `d = 2` the \
+Maxwell kernel's law)."
+            ),
         }
     };
 }

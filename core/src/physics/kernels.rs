@@ -51,6 +51,13 @@ impl KernelChoice {
         Self::written(KernelKind::Maxwell, gamma, c, 0.0)
     }
 
+    /// Ernst and Brito's inelastic Maxwell model, impact form: `B = gamma C_0`, the impact
+    /// direction uniform ([`crate::kernel::MaxwellImpact`]).
+    #[must_use]
+    pub const fn maxwell_impact(gamma: Real, c: Real) -> Self {
+        Self::written(KernelKind::MaxwellImpact, gamma, c, 0.0)
+    }
+
     /// Hard spheres `B = gamma C_1 |u|` (GRW (4); hard disks in `d = 2`).
     #[must_use]
     pub const fn hard_spheres(gamma: Real, c: Real) -> Self {

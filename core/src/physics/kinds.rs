@@ -109,6 +109,15 @@ macro_rules! kernel_kind {
                 }
             }
 
+            /// Whether its impact direction is uniform (`Kernel::UNIFORM_IMPACT`: the impact
+            /// form of the inelastic Maxwell model, whose `e` is not uniform in d = 3).
+            #[must_use]
+            pub fn uniform_impact(self) -> bool {
+                match self {
+                    $(KernelKind::$v => <$t as crate::kernel::Kernel>::UNIFORM_IMPACT,)*
+                }
+            }
+
             /// The exponent `lambda` of `|u|^lambda` these values of its parameters give, when
             /// the kernel is that power law (`None` for one that is not).
             #[must_use]

@@ -304,6 +304,22 @@ pub(crate) fn smooth_limit<K: crate::kernel::Kernel, G: Geometry>(eta_t: Real) -
     collides_smooth(K::HARD, G::CHOICE, eta_t)
 }
 
+/// The impact direction of a rough pair of relative velocity `u` under kernel `K`: the
+/// hard-particle impact law ([`Geometry::impact`], density proportional to `u_hat . n`) for
+/// every kernel but the inelastic Maxwell model's impact form, whose `n` is uniform
+/// ([`crate::kernel::MaxwellImpact`]; turned to face the approach, `u . n >= 0`).
+#[inline(always)]
+pub(crate) fn impact_of<K: crate::kernel::Kernel, G: Geometry, R: Rng + ?Sized>(
+    u: Vec3,
+    rng: &mut R,
+) -> Vec3 {
+    if K::UNIFORM_IMPACT {
+        let n = G::direction(rng);
+        return if u.dot(n) < 0.0 { -n } else { n };
+    }
+    G::impact(u, rng)
+}
+
 /// The rule of the engine's `smooth_limit` for a kernel that is `hard` (hard spheres or disks) in
 /// `dimension`: the one statement of where a rough gas's translation is the smooth gas's, for
 /// the engine (above, at compile time) and for whatever must know it at run time (a reference
@@ -342,7 +358,7 @@ impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
         }
     }
 
-    /// The impact direction of `G` ([`Geometry::impact`]) and [`RoughMap::collide`] on the
+    /// The impact direction of `K` and `G` (`impact_of`) and [`RoughMap::collide`] on the
     /// velocities and rim velocities; with `beta = -1` the smooth collision itself
     /// (`smooth_limit`).
     #[inline(always)]
@@ -359,7 +375,7 @@ impl<A: Restitution> crate::engine::CollisionMap for RoughMap<A> {
                 .law
                 .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
         }
-        let nrm = G::impact(vi - vj, rng);
+        let nrm = impact_of::<K, G, R>(vi - vj, rng);
         let after = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
         store(p, (i, j), after)
     }

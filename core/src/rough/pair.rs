@@ -234,7 +234,7 @@ impl<A: Restitution> CollisionMap for RoughPair<A> {
                 .smooth
                 .collide_pair::<K, G, R>(p, (i, j), (vi, vj), rng, counts);
         }
-        let nrm = G::impact(vi - vj, rng);
+        let nrm = super::map::impact_of::<K, G, R>(vi - vj, rng);
         let after = self.collide_counting(vi, p.spin(i), vj, p.spin(j), nrm, counts);
         store(p, (i, j), after)
     }

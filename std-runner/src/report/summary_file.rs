@@ -202,8 +202,14 @@ pub struct PowerTail {
     /// The exact exponent, when the scene's model has one.
     pub exact: Option<f64>,
     /// The verdict: the exact root within the extrapolated exponent's interval (none without
-    /// both or when the interval is as wide as the value).
+    /// both, when the interval is as wide as the value or when the window is pre-asymptotic).
     pub agrees: Option<bool>,
+    /// The extrapolated window lies nearer than `x = 7`, where no verdict is given
+    /// ([`crate::analysis::power_tail::JUDGED_FROM`]).
+    pub pre_asymptotic: bool,
+    /// The form of the inelastic Maxwell model the exact root is of (`"scattering"`: GRW (3),
+    /// `e` uniform; `"impact"`: Ernst and Brito's, `n` uniform).
+    pub form: &'static str,
     /// The file holding every window's slope.
     pub file: &'static str,
 }
@@ -299,6 +305,11 @@ impl Summary {
                 extrapolated_window: t.judged.map(|j| [j.from, j.to]),
                 exact: t.exact,
                 agrees: t.agrees(),
+                pre_asymptotic: t.pre_asymptotic(),
+                form: match t.form {
+                    gdsmc_theory::maxwell_form::Form::Scattering => "scattering",
+                    gdsmc_theory::maxwell_form::Form::Impact => "impact",
+                },
                 file: "power_tail.csv",
             }),
             thermostat: gdsmc_theory::thermostat::GaussianBalance::of(scene).map(|b| Thermostat {

@@ -156,7 +156,7 @@ pub fn references(scene: &crate::scene::Scene) -> Vec<ReferenceValue> {
         name: power::EXACT,
         of: power::EXPONENT,
         kind: Kind::Limit,
-        source: power::EXACT_SOURCE,
+        source: power::exact_source(gdsmc_theory::maxwell_form::Form::of(scene)),
         value: s,
     }));
     all

@@ -6,7 +6,9 @@
 //!   `-(1 - alpha^2) |u|^2 / 8` on average and every pair collides at the same rate, while the
 //!   uniform pairs' `<|u|^2>` is `4 n/(n - 1)` times the energy per particle about the flow:
 //!   `zeta* = (1 - alpha^2)/4 n/(n - 1)` for every state, in any dimension and under any drive
-//!   (the drive is not a collision). Exact at n, as the estimate's mean.
+//!   (the drive is not a collision). Exact at n, as the estimate's mean. The impact form
+//!   (`n` uniform) loses `(1 - alpha^2) |u|^2 / (4 d)`: `zeta* = (1 - alpha^2)/(2 d) n/(n - 1)`;
+//!   both are `lambda_2 / 2 n/(n - 1)` of their form (`crate::maxwell_form::Form`).
 //! - Hard particles at a Maxwellian of temperature `T`: over collisions (weighted by
 //!   `|u . n|`) the normal relative speed has `<(u . n)^2> = 4 T`, so a collision loses
 //!   `(1 - alpha^2) T` and `zeta* = (1 - alpha^2)/d`. The Maxwellian approximation (MS (5)'s
@@ -33,13 +35,15 @@ fn alpha(scene: &Scene) -> Option<f64> {
         .flatten()
 }
 
-/// `zeta_star_exact = (1 - alpha^2)/4 n/(n - 1)` of the Maxwell kernel (module docs).
+/// `zeta_star_exact = lambda_2 / 2 n/(n - 1)` of the Maxwell model's form: `(1 - alpha^2)/4`
+/// for GRW (3)'s scattering form, `(1 - alpha^2)/(2 d)` for the impact form (module docs).
 pub(super) fn maxwell(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some(a) = alpha(scene) else {
         return Vec::new();
     };
     let n = scene.n() as f64;
-    let value = (1.0 - a * a) / 4.0 * n / (n - 1.0);
+    let l2 = crate::maxwell_form::Form::of(scene).lambda2(scene.dimension(), a);
+    let value = l2 / 2.0 * n / (n - 1.0);
     vec![constant(
         "zeta_star_exact",
         "zeta* of the Maxwell kernel",

@@ -66,8 +66,17 @@ pub enum Kernels {
     /// law; the Maxwell kernel's is exact, GRW (13)).
     PositivePower,
     /// A kernel that does not depend on the speed (`lambda = 0`: Maxwell molecules, GRW (2),
-    /// or the VHS kernel at 0): the exact solutions of GRW, BRS and Bobylev et al.
+    /// the VHS kernel at 0, or the impact form of the inelastic Maxwell model): the exact
+    /// solutions whose builders read the model's form (`crate::maxwell_form::Form`: GRW (13)'s
+    /// temperature with the form's decay rate, the Maxwell gas's `zeta*`).
     Maxwell,
+    /// A speed-independent kernel of GRW (3)'s scattering form (`e` uniform; not the core's
+    /// `Kernel::UNIFORM_IMPACT`): the exact solutions derived for it alone (Bobylev, Carrillo
+    /// and Gamba's `a2`, BRS's host medium, the Maxwell mixture's moments).
+    MaxwellScattering,
+    /// The impact form of the inelastic Maxwell model (`Kernel::UNIFORM_IMPACT`, `n` uniform):
+    /// the exact solutions derived for it (`theory/src/maxwell_impact.rs`).
+    MaxwellImpact,
     /// Hard particles with their impact law (the core's `Kernel::HARD`: MS's hard spheres and
     /// disks).
     Hard,
@@ -77,17 +86,20 @@ impl Kernels {
     /// Whether `scene`'s kernel is one of these.
     pub fn of(self, scene: &Scene) -> bool {
         let k = scene.physics().kernel;
-        self.holds(k.kind().hard(), k.exponent())
+        self.holds(k.kind().hard(), k.kind().uniform_impact(), k.exponent())
     }
 
-    /// Whether a kernel that is (or is not) `hard`, of power-law `exponent` (`None`: not a
-    /// power law), is one of these. Every variant reads a power law: a kernel without an
-    /// exponent is none of them, so it gets no power-law reference.
-    pub fn holds(self, hard: bool, exponent: Option<f64>) -> bool {
+    /// Whether a kernel that is (or is not) `hard`, whose impact direction is (or is not)
+    /// uniform (`impact`), of power-law `exponent` (`None`: not a power law), is one of these.
+    /// Every variant reads a power law: a kernel without an exponent is none of them, so it
+    /// gets no power-law reference.
+    pub fn holds(self, hard: bool, impact: bool, exponent: Option<f64>) -> bool {
         match self {
             Kernels::PowerLaw => exponent.is_some(),
             Kernels::PositivePower => exponent.is_some_and(|l| l > 0.0),
             Kernels::Maxwell => exponent == Some(0.0),
+            Kernels::MaxwellScattering => !impact && exponent == Some(0.0),
+            Kernels::MaxwellImpact => impact && exponent == Some(0.0),
             Kernels::Hard => hard && exponent == Some(1.0),
         }
     }
@@ -97,7 +109,9 @@ impl Kernels {
         match self {
             Kernels::PowerLaw => "a power-law kernel",
             Kernels::PositivePower => "a power-law kernel with lambda > 0",
-            Kernels::Maxwell => "a speed-independent kernel (lambda = 0)",
+            Kernels::Maxwell => "a speed-independent kernel (lambda = 0), either form",
+            Kernels::MaxwellScattering => "a speed-independent kernel of GRW (3)'s form, e uniform",
+            Kernels::MaxwellImpact => "the inelastic Maxwell model's impact form, n uniform",
             Kernels::Hard => "hard particles",
         }
     }
@@ -292,16 +306,36 @@ mod tests {
             Kernels::PowerLaw,
             Kernels::PositivePower,
             Kernels::Maxwell,
+            Kernels::MaxwellScattering,
+            Kernels::MaxwellImpact,
             Kernels::Hard,
         ];
         for k in all {
-            assert!(!k.holds(false, None) && !k.holds(true, None), "{k:?}");
+            for (hard, impact) in [(false, false), (true, false), (false, true)] {
+                assert!(!k.holds(hard, impact, None), "{k:?}");
+            }
         }
-        let at = |hard, l| all.map(|k| k.holds(hard, Some(l)));
-        assert_eq!(at(false, 0.0), [true, false, true, false]);
-        assert_eq!(at(false, 0.5), [true, true, false, false]);
-        assert_eq!(at(true, 1.0), [true, true, false, true]);
-        assert_eq!(at(false, 1.0), [true, true, false, false]);
+        let at = |hard, impact, l| all.map(|k| k.holds(hard, impact, Some(l)));
+        assert_eq!(
+            at(false, false, 0.0),
+            [true, false, true, true, false, false]
+        );
+        assert_eq!(
+            at(false, true, 0.0),
+            [true, false, true, false, true, false]
+        );
+        assert_eq!(
+            at(false, false, 0.5),
+            [true, true, false, false, false, false]
+        );
+        assert_eq!(
+            at(true, false, 1.0),
+            [true, true, false, false, false, true]
+        );
+        assert_eq!(
+            at(false, false, 1.0),
+            [true, true, false, false, false, false]
+        );
     }
 
     /// Every scheme is placed by [`Schemes::holds`] as the references need it: the exact

@@ -4,6 +4,7 @@
 
 use crate::exact::{HostMediumMaxwell, MaxwellTemperature};
 use crate::initial::{initial_sampler, initial_temperature};
+use crate::maxwell_form::Form;
 use gdsmc_scene::{BackgroundKernel, DriveChoice, Scene};
 
 mod cooling;
@@ -75,7 +76,13 @@ pub fn maxwell_temperature(scene: &Scene) -> Option<MaxwellTemperature> {
     // Every drive that heats linearly (the core's declaration: none, white noise, the Gaussian
     // and Langevin thermostats, ...) has it exact.
     let heating = scene.model().heating()?;
-    Some(MaxwellTemperature::new(t0, alpha, 0.0, gamma, c).with_heating(heating))
+    // The energy's decay rate `2 pi gamma C lambda_2` of the model's form (GRW (13): the
+    // scattering form's `lambda_2 = (1 - alpha^2)/2`; the impact form's `(1 - alpha^2)/d`).
+    let l2 = Form::of(scene).lambda2(scene.dimension(), alpha);
+    Some(MaxwellTemperature {
+        k: 2.0 * std::f64::consts::PI * gamma * c * l2,
+        ..MaxwellTemperature::new(t0, alpha, 0.0, gamma, c).with_heating(heating)
+    })
 }
 
 /// The exact BRS (14)-(17) solution, when the scene is a Maxwell gas in a Maxwell host medium.
@@ -160,5 +167,6 @@ pub fn maxwell_cumulant(scene: &Scene) -> Option<crate::maxwell_cumulant::Maxwel
     let d = scene.dimension();
     let r0 = moment_ratio(&initial_sampler(scene), d);
     let t0 = initial_temperature(scene);
-    MaxwellCumulant::heated(d, alpha, (gamma, c), (t0, r0), heating)
+    let coefficients = Form::of(scene).coefficients(d, alpha);
+    MaxwellCumulant::heated(d, coefficients, (gamma, c), (t0, r0), heating)
 }

@@ -74,7 +74,7 @@ const fn hard_smooth(drives: &'static [Drive], dimensions: &'static [usize]) -> 
 /// The one-species smooth Maxwell gas in a Maxwell host medium (BRS (14)-(17)).
 const MAXWELL_HOST: Holds = Holds {
     particles: Particles::SmoothTranslation,
-    kernels: Kernels::Maxwell,
+    kernels: Kernels::MaxwellScattering,
     laws: Laws::Constant,
     drives: &[Drive::Is(DriveKind::HostMedium)],
     schemes: Schemes::Any,
@@ -91,6 +91,19 @@ const fn maxwell_linear(schemes: Schemes) -> Holds {
         laws: Laws::Constant,
         drives: LINEAR,
         schemes,
+        dimensions: ANY_D,
+        when: None,
+    }
+}
+
+/// The Maxwell gas's `a2(t)` in the Boltzmann limit, of the model's form `kernels`.
+const fn maxwell_a2(kernels: Kernels) -> Holds {
+    Holds {
+        particles: Particles::SmoothTranslation,
+        kernels,
+        laws: Laws::Constant,
+        drives: LINEAR,
+        schemes: Schemes::Boltzmann,
         dimensions: ANY_D,
         when: None,
     }
@@ -195,15 +208,15 @@ pub const REFERENCES: &[Reference] = &[
     Reference {
         id: "Bobylev, Carrillo and Gamba 2000",
         kind: Kind::Limit,
-        holds: Holds {
-            particles: Particles::SmoothTranslation,
-            kernels: Kernels::Maxwell,
-            laws: Laws::Constant,
-            drives: LINEAR,
-            schemes: Schemes::Boltzmann,
-            dimensions: ANY_D,
-            when: None,
-        },
+        holds: maxwell_a2(Kernels::MaxwellScattering),
+        columns: &["a2_exact"],
+        cites: &[],
+        curves: single::a2_exact,
+    },
+    Reference {
+        id: "the impact form's a2 (Ernst and Brito 2002; Santos 2003)",
+        kind: Kind::Limit,
+        holds: maxwell_a2(Kernels::MaxwellImpact),
         columns: &["a2_exact"],
         cites: &["Santos 2003"],
         curves: single::a2_exact,
@@ -299,7 +312,7 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::MeanAtN,
         holds: Holds {
             particles: Particles::SmoothMixture,
-            kernels: Kernels::Maxwell,
+            kernels: Kernels::MaxwellScattering,
             laws: Laws::Constant,
             drives: &[Drive::Free, Drive::Is(DriveKind::WhiteNoise)],
             schemes: Schemes::ExactMeans,
@@ -321,7 +334,7 @@ pub const REFERENCES: &[Reference] = &[
         kind: Kind::Limit,
         holds: Holds {
             particles: Particles::SmoothMixture,
-            kernels: Kernels::Maxwell,
+            kernels: Kernels::MaxwellScattering,
             laws: Laws::Constant,
             drives: &[Drive::Free, Drive::Is(DriveKind::WhiteNoise)],
             schemes: Schemes::Any,
@@ -422,8 +435,8 @@ mod tests {
     #[test]
     fn no_reference_holds_for_a_kernel_without_an_exponent() {
         for r in REFERENCES {
-            for hard in [false, true] {
-                assert!(!r.holds.kernels.holds(hard, None), "{}", r.id);
+            for (hard, impact) in [(false, false), (true, false), (false, true)] {
+                assert!(!r.holds.kernels.holds(hard, impact, None), "{}", r.id);
             }
         }
     }

@@ -12,11 +12,19 @@ use std::sync::Arc;
 
 /// The Boltzmann limit of the Maxwell gas's `a2(t)` (`a2_exact`).
 pub(super) fn a2_exact(scene: &Scene) -> Vec<ReferenceCurve> {
+    let source = match crate::maxwell_form::Form::of(scene) {
+        crate::maxwell_form::Form::Scattering => {
+            "the inelastic Maxwell gas's moment equations in GRW (3)'s scattering form, e uniform (Bobylev, Carrillo and Gamba 2000; Santos 2003 for d = 2), a2(t) in the Boltzmann limit; derived in theory/src/maxwell_cumulant.rs"
+        }
+        crate::maxwell_form::Form::Impact => {
+            "the inelastic Maxwell model's moment equations in Ernst and Brito's impact form, n uniform (Santos 2003's cooling state), a2(t) in the Boltzmann limit; derived in theory/src/maxwell_impact.rs"
+        }
+    };
     maxwell_cumulant(scene)
         .map(|m| ReferenceCurve {
             name: "a2_exact",
             of: name::A2,
-            source: "the inelastic Maxwell gas's moment equations (Bobylev, Carrillo and Gamba 2000; Santos 2003 for d = 2), a2(t) in the Boltzmann limit; derived in theory/src/maxwell_cumulant.rs",
+            source,
             kind: Kind::Limit,
             curve: Box::new(move |t| m.at(t)),
         })
@@ -114,18 +122,24 @@ pub(super) fn grw_limit(scene: &Scene) -> Vec<ReferenceCurve> {
     // GRW (13)-(14) hold per degree of freedom in any dimension (the derivation in
     // `exact.rs` counts d components; disks keep it with d = 2).
     let v0 = drift(scene);
+    let source = match crate::maxwell_form::Form::of(scene) {
+        crate::maxwell_form::Form::Scattering => "GRW (13)-(14)",
+        crate::maxwell_form::Form::Impact => {
+            "GRW (13)-(14)'s law at the impact form's rate 2 pi gamma C (1 - alpha^2)/d (Ernst and Brito's model, theory/src/maxwell_impact.rs)"
+        }
+    };
     vec![
         ReferenceCurve {
             name: "T_exact",
             of: name::T,
-            source: "GRW (13)-(14)",
+            source,
             kind: Kind::Limit,
             curve: Box::new(move |t| mt.at(t) + v0 * mt.drift_factor(t)),
         },
         ReferenceCurve {
             name: "T_bulk_exact",
             of: name::T_BULK,
-            source: "GRW (13)-(14)",
+            source,
             kind: Kind::Limit,
             curve: Box::new(move |t| mt.at(t)),
         },
