@@ -56,13 +56,16 @@ pub fn collision_rate(d: usize, gc: f64, lambda: f64, t: f64) -> f64 {
     4.0 * PI * gc * libm::pow(4.0 * t, 0.5 * lambda) * gamma((df + lambda) / 2.0) / gamma(df / 2.0)
 }
 
-/// The kinetic theory's collision frequency of hard spheres, `nu_0 = (16/5) sqrt(pi) n sigma^2
-/// sqrt(T/m)` (Garzó and Dufty 1999; Brey, Dufty and Santos; the shear-viscosity frequency of
-/// the Boltzmann equation), in the units of [`collision_rate`]: `4/5` of the Maxwellian
-/// collision rate at `T` (`4 sqrt(pi) n sigma^2 sqrt(T/m)`). The literature reduces the cooling
-/// rate by it: `zeta* = zeta / nu_0 = 5/12 (1 - alpha^2)(1 + 3 a2/16)` to first Sonine order.
-pub fn nu0_hard_spheres(gc: f64, t: f64) -> f64 {
-    0.8 * collision_rate(3, gc, 1.0, t)
+/// The kinetic theory's collision frequency of hard particles, `nu_0 = 4 Omega_d / (sqrt(pi)
+/// (d + 2)) n sigma^(d - 1) sqrt(T/m)` (`Omega_d = 2 pi^(d/2) / Gamma(d/2)`; Garzó and Dufty
+/// 1999 for spheres, `(16/5) sqrt(pi) n sigma^2 sqrt(T/m)`, and Garzó's d-dimensional form;
+/// the shear-viscosity frequency of the Boltzmann equation), in the units of
+/// [`collision_rate`]: `4/(d + 2)` of the Maxwellian collision rate at `T` (spheres `4
+/// sqrt(pi) n sigma^2 sqrt(T/m)`, 4/5 of it; disks `2 sqrt(pi) n sigma sqrt(T/m)`, all of it).
+/// The literature reduces the cooling rate by it: `zeta* = zeta / nu_0 = (d + 2)/(4 d)
+/// (1 - alpha^2)(1 + 3 a2/16)` to first Sonine order (5/12 for spheres, 1/2 for disks).
+pub fn nu0_hard(d: usize, gc: f64, t: f64) -> f64 {
+    4.0 / (d as f64 + 2.0) * collision_rate(d, gc, 1.0, t)
 }
 
 /// The first Sonine correction `1 + 3 a2 / 16` of a hard-particle gas's cooling rate (van

@@ -12,8 +12,8 @@ pub struct Collisional {
     pub mixture_rates: bool,
     /// [`super::columns::CLOSING_COLUMNS`]: every gas.
     pub cooling: bool,
-    /// [`gdsmc_theory::columns::LITERATURE_ZETA_STAR`] after them: smooth hard spheres of one
-    /// species (the literature's `nu_0` is theirs).
+    /// [`gdsmc_theory::columns::LITERATURE_ZETA_STAR`] after them: smooth hard spheres or
+    /// disks of one species (the literature's `nu_0` is theirs).
     pub nu0: bool,
 }
 
@@ -34,6 +34,6 @@ pub fn collisional(scene: &crate::scene::Scene) -> Collisional {
             && smooth_spheres
             && crate::run::cooling::CoolingRates::new(scene).is_some(),
         cooling: on,
-        nu0: on && ph.species.is_empty() && smooth_spheres && ph.kernel.kind().hard(),
+        nu0: on && ph.species.is_empty() && ph.rotation.is_none() && ph.kernel.kind().hard(),
     }
 }

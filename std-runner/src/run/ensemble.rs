@@ -271,7 +271,8 @@ fn observe<E: EventLoop>(
             let c = engine.cooling(p, scene.collisional_pairs(), &mut diag);
             out.extend([c.frequency, c.zeta(), c.zeta_star]);
             if coll.nu0 {
-                let nu0 = gdsmc_theory::balance::nu0_hard_spheres(
+                let nu0 = gdsmc_theory::balance::nu0_hard(
+                    scene.dimension(),
                     scene.physics().kernel.strength(),
                     obs.t_bulk,
                 );

@@ -66,10 +66,11 @@ pub(super) fn hard_maxwellian(scene: &Scene) -> Vec<ReferenceCurve> {
     )]
 }
 
-/// `zeta_star_nu0_sonine = 5/12 (1 - alpha^2)(1 + 3 a2/16)`: the literature's reduced cooling
-/// rate of hard spheres (`zeta / nu_0`, Garzó and Dufty 1999; the column
-/// `zeta_star_nu0`) to first Sonine order, at the state's `a2` (MS (5) for a drive that only
-/// rescales, MS (10) for white noise: `super::sonine::state_a2`). An approximation.
+/// `zeta_star_nu0_sonine = (d + 2)/(4 d) (1 - alpha^2)(1 + 3 a2/16)`: the literature's
+/// reduced cooling rate of hard particles (`zeta / nu_0`, Garzó and Dufty 1999 for spheres,
+/// 5/12; Garzó's d-dimensional form, 1/2 for disks; the column `zeta_star_nu0`) to first
+/// Sonine order, at the state's `a2` (MS (5) for a drive that only rescales, MS (10) for white
+/// noise, in `d` dimensions: `super::sonine::state_a2`). An approximation.
 pub(super) fn literature_sonine(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some(a) = alpha(scene) else {
         return Vec::new();
@@ -77,18 +78,21 @@ pub(super) fn literature_sonine(scene: &Scene) -> Vec<ReferenceCurve> {
     let Some((a2, _)) = super::sonine::state_a2(scene, a) else {
         return Vec::new();
     };
+    let d = scene.dimension() as f64;
     vec![ReferenceCurve {
         name: "zeta_star_nu0_sonine",
         of: crate::columns::LITERATURE_ZETA_STAR,
-        source: "zeta* = zeta/nu_0 of hard spheres to first Sonine order, 5/12 (1 - alpha^2)(1 + 3 a2/16) (Garzó and Dufty 1999; a2 of MS (5) or (10))",
+        source: "zeta* = zeta/nu_0 of hard particles to first Sonine order, (d + 2)/(4 d) (1 - alpha^2)(1 + 3 a2/16) (Garzó and Dufty 1999: 5/12 for spheres; 1/2 for disks; a2 of MS (5) or (10))",
         kind: Kind::Approximation,
-        curve: Box::new(move |_| 5.0 / 12.0 * (1.0 - a * a) * crate::balance::sonine_factor(a2)),
+        curve: Box::new(move |_| {
+            (d + 2.0) / (4.0 * d) * (1.0 - a * a) * crate::balance::sonine_factor(a2)
+        }),
     }]
 }
 
 #[cfg(test)]
 mod tests {
-    use crate::balance::{collision_rate, cooling_constant, nu0_hard_spheres};
+    use crate::balance::{collision_rate, cooling_constant, nu0_hard};
 
     /// The energy balance's Maxwellian cooling constant (theory/src/balance.rs, derived there
     /// from the scattering of GRW (3)) over its Maxwellian collision rate is the `zeta*` these
@@ -111,10 +115,23 @@ mod tests {
                 "d = {d}"
             );
         }
-        // The literature's zeta* of hard spheres at a Maxwellian: the Maxwellian cooling rate
-        // over nu_0 is 5/12 (1 - alpha^2) (Garzó and Dufty 1999).
-        let literature =
-            cooling_constant(3, true, gc, 1.0, alpha) * t.sqrt() / nu0_hard_spheres(gc, t);
-        assert!((literature - 5.0 / 12.0 * (1.0 - alpha * alpha)).abs() < 1e-12);
+        // The literature's zeta* of hard particles at a Maxwellian: the Maxwellian cooling
+        // rate over nu_0 is 5/12 (1 - alpha^2) for spheres (Garzó and Dufty 1999), 1/2 (1 -
+        // alpha^2) for disks ((d + 2)/(4 d)).
+        for (d, want) in [(3, 5.0 / 12.0), (2, 0.5)] {
+            let literature =
+                cooling_constant(d, true, gc, 1.0, alpha) * t.sqrt() / nu0_hard(d, gc, t);
+            assert!(
+                (literature - want * (1.0 - alpha * alpha)).abs() < 1e-12,
+                "d = {d}"
+            );
+        }
+        // nu_0 = 4 Omega_d / (sqrt(pi) (d + 2)) n sigma^(d-1) sqrt(T) with 4 pi gamma C the
+        // pair rate's cross-section (pi sigma^2 n for spheres, 2 sigma n for disks).
+        let pi = std::f64::consts::PI;
+        let spheres = 16.0 * pi / (pi.sqrt() * 5.0) * (4.0 * gc) * t.sqrt();
+        let disks = 8.0 * pi / (pi.sqrt() * 4.0) * (2.0 * pi * gc) * t.sqrt();
+        assert!((nu0_hard(3, gc, t) / spheres - 1.0).abs() < 1e-12);
+        assert!((nu0_hard(2, gc, t) / disks - 1.0).abs() < 1e-12);
     }
 }

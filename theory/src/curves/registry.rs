@@ -388,7 +388,6 @@ pub const REFERENCES: &[Reference] = &[
         id: "zeta* = zeta/nu_0 to first Sonine order",
         kind: Kind::Approximation,
         holds: Holds {
-            dimensions: &[3],
             drives: &[Drive::Rescaling, Drive::Is(DriveKind::WhiteNoise)],
             ..smooth_cooling(Kernels::Hard, Schemes::Any)
         },
