@@ -1,5 +1,5 @@
 //! A shipped scene's description cites only references its run attaches: every reference of
-//! the registry (theory/src/curves/registry.rs) that a description names by its
+//! the registry (theory/src/curves/registry/) that a description names by its
 //! id, one of its columns or its words is given to that scene's run by some attached
 //! reference that answers to the same name, with at least one curve.
 

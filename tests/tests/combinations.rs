@@ -316,7 +316,7 @@ fn generate() -> String {
         out,
         "\n## References\n\nThe references the runner attaches to a run (the numbers in \
          brackets above: every reference whose declaration in \
-         theory/src/curves/registry.rs holds for the combination and gives a \
+         theory/src/curves/registry/ holds for the combination and gives a \
          curve, for GRW Example 3's scene given that physics), each with what it is to the \
          run: the exact ensemble mean at n is judged by the verdict; a Boltzmann limit or an \
          approximation is shown beside the run, not judged.\n"

@@ -1,7 +1,7 @@
 //! The inelastic Maxwell gas's cooling state has a power-law tail `F(c) ~ c^-(d + s)` whose
 //! exponent is the exact root `s(alpha)` of Ernst and Brito 2002
 //! (theory/src/maxwell_form.rs `Form::tail_exponent`): the runner's measurement of it
-//! (analysis/power_tail.rs: the local slopes of the reduced cumulative tail over the farthest
+//! (analysis/power_tail/: the local slopes of the reduced cumulative tail over the farthest
 //! window `[x, 2x]` resolved with every nearer one and over `[x/2, x]`, extrapolated past
 //! their `x^-2` approach, its 99.9% interval by the delta method) holds it in d = 3 and in the
 //! plane, and refuses the other dimension's root.

@@ -136,7 +136,7 @@ pub fn window(scene: &crate::scene::Scene) -> (Window, std::ops::Range<usize>) {
 /// Each reference that applies to `scene`, averaged over its window ([`window`]); with a
 /// reduced histogram, the exact root of its power-law tail where one holds (shown, not
 /// judged: the root is the asymptote the local slopes reach, from which the measured exponent
-/// is extrapolated, analysis/power_tail.rs).
+/// is extrapolated, analysis/power_tail/).
 pub fn references(scene: &crate::scene::Scene) -> Vec<ReferenceValue> {
     use crate::analysis::power_tail as power;
     let (_, span) = window(scene);
@@ -168,7 +168,7 @@ impl PointResult {
     /// its interval, as summary.json's `steady_state`), else the last observation; and each
     /// reference averaged over the same observation times. With a reduced histogram of a
     /// model with a power-law tail, its extrapolated exponent (`tail_exponent`) beside the exact
-    /// root (`tail_exponent_exact`, analysis/power_tail.rs).
+    /// root (`tail_exponent_exact`, analysis/power_tail/).
     pub fn of(p: &PointScene, stats: &RunStats) -> Self {
         let last = stats.times.len() - 1;
         let (window, _) = window(&p.source.scene);

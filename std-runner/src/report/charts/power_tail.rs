@@ -1,4 +1,4 @@
-//! The reduced tail's local slopes (analysis/power_tail.rs): `s(x)` over each window `[x, 2x]`
+//! The reduced tail's local slopes (analysis/power_tail/): `s(x)` over each window `[x, 2x]`
 //! resolved with every nearer one, with its 99.9% bars, and the exact root where one holds.
 
 use super::frame::Chart;
