@@ -37,4 +37,5 @@ mod thermostats_ms;
 mod time_stepped;
 mod timings;
 mod weighted_scheme;
+mod words;
 mod work_limits;
