@@ -120,7 +120,7 @@ static void toml_errors(void) {
     /* A kernel's keys are its declaration's: one it does not have is named with those it has. */
     const char *not_its = "[collisions]\nkernel = \"maxwell\"\nrestitution = 0.5\nlambda = 0.5\n[observe]\nt_end = 1.0\n";
     STATUS(gdsmc_config_from_toml(not_its, &c), GDSMC_INVALID_ARGUMENT,
-           "<toml>:4: `collisions.lambda` is not a key of [collisions] with kernel = \"maxwell\" (its keys: kernel, gamma, c, restitution, impact_speed_law, pair_restitution)");
+           "<toml>:4: `collisions.lambda` is not a key of [collisions] with kernel = \"maxwell\" (its keys: kernel, gamma, c, diameter, density, restitution, impact_speed_law, pair_restitution)");
     const char *good =
         "[particles]\nn = 100\n[collisions]\nkernel = \"hard-spheres\"\ngamma = 4.0\nrestitution = 0.5\n"
         "[drive]\nkind = \"white-noise\"\nbeta = 0.125\n[observe]\nt_end = 2.0\n[run]\nseed = 9\n";
