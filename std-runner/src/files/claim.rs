@@ -179,9 +179,14 @@ impl Claim {
             path: path.clone(),
             source,
         };
-        self.file.set_len(0).map_err(&werr)?;
+        // Written over the old text in place and cut after, never cut first: a kill between
+        // an emptying `set_len(0)` and the write left an empty claim, and the staging
+        // directory it had named no claim named any more (seen once in CI's kill test). At
+        // every instant the file is the old text, or the new one, or the new one followed by
+        // the old one's tail, whose fields come after the new ones (`field` takes the first).
         self.file.rewind().map_err(&werr)?;
         self.file.write_all(text.as_bytes()).map_err(&werr)?;
+        self.file.set_len(text.len() as u64).map_err(&werr)?;
         // The staging name must be on disk before the directory is: else a crash could
         // leave a directory no claim names.
         self.file.sync_data().map_err(werr)
