@@ -59,6 +59,7 @@ pub(crate) use read::toml_of;
 pub use read::{MAX_LINE_CHARS, MAX_SCENE_BYTES, cut_lines, load, parse, read, sweep_plan};
 pub use schema::SceneFile;
 pub use validate::DEFAULT_STEP_FACTOR;
+pub use validate::collisions::COMMON_KEYS as COLLISION_KEYS;
 
 /// A validated scene, ready to run.
 #[derive(Debug, Clone)]

@@ -58,15 +58,8 @@ pub static KEYS: LazyLock<Vec<(&'static str, Vec<&'static str>)>> = LazyLock::ne
             }
         }
     }
-    let mut collisions = vec![
-        "kernel",
-        "gamma",
-        "c",
-        "diameter",
-        "density",
-        "restitution",
-        "impact_speed_law",
-    ];
+    // Every kernel's common keys, as the scene crate declares them.
+    let mut collisions = gdsmc_scene::COLLISION_KEYS.to_vec();
     for k in KernelKind::ALL {
         for p in k.params() {
             if !collisions.contains(&p.name) {

@@ -4,7 +4,7 @@
 //! at the key and line of the parameter it names. Rules about observing and running (times,
 //! histograms, ensembles) are the scene's own and checked here.
 
-mod collisions;
+pub(crate) mod collisions;
 mod ctx;
 mod declared;
 mod drive;
