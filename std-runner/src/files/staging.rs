@@ -87,6 +87,29 @@ pub fn mark(dir: &Path, token: &str) -> std::io::Result<()> {
     f.sync_data()
 }
 
+/// Removes the staging directory `dir` with its marker last: everything else first, so that
+/// a kill in the middle leaves a directory that still proves itself gdsmc's and the next run
+/// removes (`remove_dir_all` takes the entries in any order, the marker perhaps first).
+pub fn remove_marked(dir: &Path) {
+    if let Ok(entries) = std::fs::read_dir(dir) {
+        for e in entries.flatten() {
+            if e.file_name() == MARKER {
+                continue;
+            }
+            let p = e.path();
+            match e.file_type() {
+                Ok(t) if t.is_dir() => {
+                    let _ = std::fs::remove_dir_all(&p);
+                }
+                _ => {
+                    let _ = std::fs::remove_file(&p);
+                }
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(dir);
+}
+
 /// Whether `name` is a staging name of the place whose staging names begin with `prefix`
 /// (`.NAME.partial-`): the prefix, then a process id, then at most one `-K`, digits only.
 pub fn is_staging_name(name: &str, prefix: &str) -> bool {

@@ -185,7 +185,7 @@ impl OutputSet {
         {
             match staging::proven(&left.dir, &prefix, left.token.as_deref()) {
                 Ok(()) => {
-                    let _ = std::fs::remove_dir_all(&left.dir);
+                    staging::remove_marked(&left.dir);
                 }
                 Err(why) => notes.push(format!(
                     "warning: {} names {} as the staging directory of an earlier run, but {why}: \
@@ -310,7 +310,7 @@ impl OutputSet {
                 .map_err(|e| write_err(target)(e.into()))?;
             unmark();
             crate::files::sync_dir(parent)?;
-            let _ = std::fs::remove_dir_all(staging);
+            staging::remove_marked(staging);
             Ok(())
         }
         #[cfg(not(target_os = "linux"))]
@@ -329,7 +329,7 @@ impl OutputSet {
 impl Drop for OutputSet {
     fn drop(&mut self) {
         if !self.committed {
-            let _ = std::fs::remove_dir_all(&self.staging);
+            staging::remove_marked(&self.staging);
         }
     }
 }
